@@ -1,0 +1,176 @@
+//! Bridges reduced to one modal model.
+//!
+//! Every bridge type (today the beam; the plate and imported FE models follow)
+//! becomes a [`ModalBridge`]: natural frequencies, modal damping ratios and
+//! mass-normalised mode shapes that can be evaluated (value and slope) at any
+//! point. Solvers see only this; a bridge never knows which vehicle crosses it.
+
+pub mod beam;
+pub mod eigen;
+pub mod hermite;
+
+use std::f64::consts::PI;
+
+use thiserror::Error;
+
+use self::beam::BeamModel;
+use self::hermite::HermiteField;
+use crate::scenario::resolved::{Bridge, Modes};
+
+/// Errors while building a bridge model.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum BridgeError {
+    /// The mass matrix is not positive definite (a non-positive mass).
+    #[error("the bridge mass matrix is not positive definite")]
+    MassNotPositive,
+    /// The stiffness matrix is singular or indefinite.
+    #[error("the bridge stiffness matrix is not positive definite (is the bridge supported?)")]
+    StiffnessNotPositive,
+    /// The eigen solver did not converge.
+    #[error("the eigenvalue solver did not converge")]
+    EigenFailed,
+    /// More modes requested than the mesh has.
+    #[error("{requested} modes requested but the mesh has only {available}")]
+    TooManyModes {
+        /// Requested count.
+        requested: usize,
+        /// Available modes (free dofs).
+        available: usize,
+    },
+    /// No mode lies below the requested maximum frequency.
+    #[error("no mode has a frequency at most {max_frequency} Hz; the first is {first:.4} Hz")]
+    NoModeBelow {
+        /// Requested cut-off, Hz.
+        max_frequency: f64,
+        /// Lowest natural frequency, Hz.
+        first: f64,
+    },
+}
+
+/// A bridge as the solvers see it: modal coordinates q with
+/// q̈ᵢ + 2ζᵢωᵢ q̇ᵢ + ωᵢ² qᵢ = Σ_c φᵢ(x_c) f_c (unit modal masses), where f_c
+/// are upward point forces at the contact points.
+#[derive(Debug, Clone)]
+pub struct ModalBridge {
+    /// Total length from entrance to exit, m.
+    pub length: f64,
+    /// Support positions, m (span ends).
+    pub supports: Vec<f64>,
+    /// Natural circular frequencies ωᵢ of the kept modes, rad/s, ascending.
+    pub circular_frequencies: Vec<f64>,
+    /// Modal damping ratios ζᵢ, dimensionless.
+    pub damping_ratios: Vec<f64>,
+    /// Number of modes the discretisation offers.
+    pub available_modes: usize,
+    /// Mass-normalised mode shapes (1/√kg), one component per kept mode.
+    shapes: HermiteField,
+    /// The finite-element model, kept for static influence lines.
+    model: BeamModel,
+}
+
+impl ModalBridge {
+    /// Builds the modal model of a resolved bridge description.
+    ///
+    /// Cost: assembling is O(elements); the dense eigen solve O(dofs³).
+    pub fn build(bridge: &Bridge) -> Result<Self, BridgeError> {
+        match bridge {
+            Bridge::Beam(beam) => {
+                let model = BeamModel::new(beam);
+                let available = model.free_dofs();
+                let (mut omegas, vectors) = model.eigen()?;
+                let count = select_count(&beam.modes, &omegas)?;
+                omegas.truncate(count);
+                let shapes = model.shapes(&vectors, count);
+                let damping_ratios = omegas.iter().map(|&w| beam.damping.ratio_at(w)).collect();
+                let mut supports = vec![0.0];
+                let mut x = 0.0;
+                for span in &beam.spans {
+                    x += span;
+                    supports.push(x);
+                }
+                Ok(Self {
+                    length: x,
+                    supports,
+                    circular_frequencies: omegas,
+                    damping_ratios,
+                    available_modes: available,
+                    shapes,
+                    model,
+                })
+            }
+        }
+    }
+
+    /// Number of kept modes.
+    pub fn mode_count(&self) -> usize {
+        self.circular_frequencies.len()
+    }
+
+    /// Natural frequencies of the kept modes, Hz.
+    pub fn frequencies(&self) -> Vec<f64> {
+        self.circular_frequencies
+            .iter()
+            .map(|w| w / (2.0 * PI))
+            .collect()
+    }
+
+    /// Whether `x` (m) lies on the deck.
+    #[inline]
+    pub fn is_on(&self, x: f64) -> bool {
+        (0.0..=self.length).contains(&x)
+    }
+
+    /// Mode values φᵢ(x) (1/√kg) of every kept mode at `x`; zero off the bridge.
+    #[inline]
+    pub fn mode_values(&self, x: f64, values: &mut [f64]) {
+        self.shapes.values_at(x, values);
+    }
+
+    /// Mode values and slopes dφᵢ/dx (1/(m√kg)) at `x`; zero off the bridge.
+    #[inline]
+    pub fn mode_values_and_slopes(&self, x: f64, values: &mut [f64], slopes: &mut [f64]) {
+        self.shapes.values_and_slopes_at(x, values, slopes);
+    }
+
+    /// Static deflection influence line of point `x_point`: G(ξ), m/N, the
+    /// downward deflection at `x_point` due to a unit downward load at ξ,
+    /// from the full finite-element stiffness (no modal truncation).
+    pub fn influence_line(&self, x_point: f64) -> Result<HermiteField, BridgeError> {
+        self.model.influence_line(x_point)
+    }
+
+    /// Node positions of the underlying mesh, m.
+    pub fn node_x(&self) -> &[f64] {
+        self.shapes.node_x()
+    }
+}
+
+/// Number of modes kept under a selection: the lowest `count`, and/or all
+/// modes up to `max_frequency`; when both are given the smaller set wins.
+fn select_count(modes: &Modes, omegas: &[f64]) -> Result<usize, BridgeError> {
+    let available = omegas.len();
+    let mut count = available;
+    if let Some(requested) = modes.count {
+        if requested > available {
+            return Err(BridgeError::TooManyModes {
+                requested,
+                available,
+            });
+        }
+        count = requested;
+    }
+    if let Some(max_frequency) = modes.max_frequency {
+        let below = omegas
+            .iter()
+            .take_while(|&&w| w / (2.0 * PI) <= max_frequency)
+            .count();
+        if below == 0 {
+            return Err(BridgeError::NoModeBelow {
+                max_frequency,
+                first: omegas[0] / (2.0 * PI),
+            });
+        }
+        count = count.min(below);
+    }
+    Ok(count)
+}

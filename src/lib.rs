@@ -1,0 +1,20 @@
+//! vbi — declarative vehicle–bridge interaction dynamics.
+//!
+//! A scene flows one way through the stages: load ([`scenario`]) → build
+//! ([`model`], [`bridge`], [`vehicle`], [`surface`]) → solve ([`solve`]) →
+//! record ([`record`]) → report ([`report`]). [`run`] strings them together.
+//! Units are SI throughout; vertical quantities are positive upward and
+//! contact forces positive in compression.
+
+#![warn(missing_docs)]
+
+pub mod bridge;
+pub mod model;
+pub mod record;
+pub mod report;
+pub mod run;
+pub mod scenario;
+pub mod schema;
+pub mod solve;
+pub mod surface;
+pub mod vehicle;

@@ -1,0 +1,126 @@
+//! The build stage: a resolved scenario becomes the numerical model the
+//! solvers integrate — one modal bridge, the vehicle models, the surface
+//! profile and the time grid.
+
+use thiserror::Error;
+
+use crate::bridge::{BridgeError, ModalBridge};
+use crate::scenario::resolved::Scenario;
+use crate::surface::Profile;
+use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
+
+/// Errors of the build stage.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum BuildError {
+    /// The bridge could not be built.
+    #[error(transparent)]
+    Bridge(#[from] BridgeError),
+    /// A vehicle could not be built.
+    #[error(transparent)]
+    Vehicle(#[from] VehicleError),
+}
+
+/// Identifies one wheel: vehicle index and wheel index within it (from 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct WheelRef {
+    /// Vehicle index from 0.
+    pub vehicle: usize,
+    /// Wheel index within the vehicle from 0.
+    pub wheel: usize,
+}
+
+/// Everything the time integration needs.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The modal bridge.
+    pub bridge: ModalBridge,
+    /// The vehicles, in scenario order.
+    pub vehicles: Vec<VehicleModel>,
+    /// The surface under the wheels.
+    pub profile: Profile,
+    /// Every wheel of every vehicle, flattened in vehicle order.
+    pub wheels: Vec<WheelRef>,
+    /// Static wheel loads on level ground, N, per flattened wheel: the load of
+    /// a moving force, or the contact force of the vehicle's static equilibrium.
+    pub static_wheel_loads: Vec<f64>,
+    /// Time step, s.
+    pub time_step: f64,
+    /// Number of steps.
+    pub steps: usize,
+    /// Newmark β.
+    pub beta: f64,
+    /// Newmark γ.
+    pub gamma: f64,
+}
+
+impl Model {
+    /// Builds the model. `bridge` is the modal bridge made while resolving
+    /// (modes must be known to fill defaults), so it is not built twice.
+    pub fn build(scenario: &Scenario, bridge: ModalBridge) -> Result<Self, BuildError> {
+        let vehicles: Vec<VehicleModel> = scenario
+            .vehicles
+            .iter()
+            .map(|v| VehicleModel::build(v, scenario.gravity))
+            .collect();
+        let mut wheels = Vec::new();
+        let mut static_wheel_loads = Vec::new();
+        for (v, vehicle) in vehicles.iter().enumerate() {
+            let (_, forces) = vehicle.static_equilibrium(v + 1)?;
+            for (w, wheel) in vehicle.wheels.iter().enumerate() {
+                wheels.push(WheelRef {
+                    vehicle: v,
+                    wheel: w,
+                });
+                static_wheel_loads.push(match wheel.kind {
+                    WheelKind::Load(load) => load,
+                    WheelKind::Dof(_) => forces[w],
+                });
+            }
+        }
+        let end_time = end_time(scenario, &vehicles, bridge.length);
+        let time_step = scenario.solver.time_step;
+        // A step count that reaches the end time; the last step may overshoot
+        // by less than one step.
+        let steps = (end_time / time_step - 1e-9).ceil().max(1.0) as usize;
+        Ok(Self {
+            bridge,
+            vehicles,
+            profile: Profile::build(&scenario.surface),
+            wheels,
+            static_wheel_loads,
+            time_step,
+            steps,
+            beta: scenario.solver.newmark.beta,
+            gamma: scenario.solver.newmark.gamma,
+        })
+    }
+
+    /// Position of a flattened wheel at time `t`, m.
+    #[inline]
+    pub fn wheel_position(&self, wheel: usize, t: f64) -> f64 {
+        let r = self.wheels[wheel];
+        self.vehicles[r.vehicle].wheel_position(r.wheel, t)
+    }
+
+    /// Flattened index of (vehicle, wheel), both from 0.
+    pub fn wheel_index(&self, vehicle: usize, wheel: usize) -> Option<usize> {
+        self.wheels
+            .iter()
+            .position(|r| r.vehicle == vehicle && r.wheel == wheel)
+    }
+
+    /// Simulated duration, s.
+    pub fn end_time(&self) -> f64 {
+        self.steps as f64 * self.time_step
+    }
+}
+
+/// Time when the last axle of the last vehicle leaves the bridge, plus the
+/// requested free vibration, s.
+pub fn end_time(scenario: &Scenario, vehicles: &[VehicleModel], length: f64) -> f64 {
+    let last_exit = vehicles
+        .iter()
+        .map(|v| v.exit_time(length))
+        .fold(0.0, f64::max);
+    last_exit + scenario.solver.free_vibration
+}

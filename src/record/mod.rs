@@ -1,0 +1,200 @@
+//! The record stage: samples the requested quantities at every step into
+//! preallocated columns, and alongside each bridge displacement the static
+//! response of the same load set crossing (the DAF reference).
+
+use crate::bridge::BridgeError;
+use crate::bridge::hermite::HermiteField;
+use crate::model::Model;
+use crate::scenario::resolved::{Quantity, Record};
+use crate::solve::{Observer, StepView};
+
+/// What the summary reports as "position" of an extreme value: the position
+/// of a wheel (its vehicle's front axle minus its offset) at that time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PositionRef {
+    /// Vehicle index from 0.
+    pub vehicle: usize,
+    /// Distance behind the front axle, m.
+    pub offset: f64,
+}
+
+/// How a column is computed each step.
+#[derive(Debug, Clone)]
+enum Probe {
+    /// φᵢ(x) at the point; w = Σ φᵢ qᵢ. With the static influence line.
+    BridgeDisplacement {
+        shape: Vec<f64>,
+        influence: HermiteField,
+    },
+    /// ẅ = Σ φᵢ q̈ᵢ.
+    BridgeAcceleration { shape: Vec<f64> },
+    /// Flattened wheel index.
+    ContactForce { wheel: usize },
+    /// Vehicle and DOF; displacement from static equilibrium.
+    VehicleDisplacement { vehicle: usize, dof: usize },
+    /// Vehicle and DOF.
+    VehicleAcceleration { vehicle: usize, dof: usize },
+}
+
+/// One recorded time history.
+#[derive(Debug, Clone)]
+pub struct Column {
+    /// Name from the scenario.
+    pub name: String,
+    /// The quantity.
+    pub quantity: Quantity,
+    /// Unit of the values.
+    pub unit: &'static str,
+    /// Sampled values, one per step (including t = 0).
+    pub values: Vec<f64>,
+    /// For bridge displacements: the static crossing response at the same
+    /// point, m (positive upward).
+    pub static_values: Option<Vec<f64>>,
+    /// Whose position the summary reports with each extreme.
+    pub position: PositionRef,
+    probe: Probe,
+}
+
+/// All recorded columns with their common time axis.
+#[derive(Debug, Clone, Default)]
+pub struct History {
+    /// Time of each sample, s.
+    pub time: Vec<f64>,
+    /// The columns in scenario order.
+    pub columns: Vec<Column>,
+}
+
+/// Samples columns each step; see [`History`].
+#[derive(Debug)]
+pub struct Recorder<'m> {
+    model: &'m Model,
+    history: History,
+}
+
+impl<'m> Recorder<'m> {
+    /// Prepares the probes of `records` (already validated against the model).
+    pub fn new(model: &'m Model, records: &[Record]) -> Result<Self, BridgeError> {
+        let modes = model.bridge.mode_count();
+        let capacity = model.steps + 1;
+        let lead = PositionRef {
+            vehicle: 0,
+            offset: 0.0,
+        };
+        let mut columns = Vec::with_capacity(records.len());
+        for record in records {
+            let vehicle = record.vehicle.map_or(0, |v| v - 1);
+            let (probe, unit, position) = match record.quantity {
+                Quantity::BridgeDisplacement | Quantity::BridgeAcceleration => {
+                    let x = record.x.unwrap_or(0.0);
+                    let mut shape = vec![0.0; modes];
+                    model.bridge.mode_values(x, &mut shape);
+                    if record.quantity == Quantity::BridgeDisplacement {
+                        let influence = model.bridge.influence_line(x)?;
+                        (Probe::BridgeDisplacement { shape, influence }, "m", lead)
+                    } else {
+                        (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
+                    }
+                }
+                Quantity::ContactForce => {
+                    let wheel = record.wheel.map_or(0, |w| w - 1);
+                    let flat = model
+                        .wheel_index(vehicle, wheel)
+                        .expect("wheel numbers were validated when resolving");
+                    let offset = model.vehicles[vehicle].wheels[wheel].offset;
+                    (
+                        Probe::ContactForce { wheel: flat },
+                        "N",
+                        PositionRef { vehicle, offset },
+                    )
+                }
+                Quantity::VehicleDisplacement | Quantity::VehicleAcceleration => {
+                    let dof = record
+                        .dof
+                        .as_deref()
+                        .and_then(|d| {
+                            model.vehicles[vehicle]
+                                .dof_names
+                                .iter()
+                                .position(|n| *n == d)
+                        })
+                        .expect("DOF names were validated when resolving");
+                    let position = PositionRef {
+                        vehicle,
+                        offset: 0.0,
+                    };
+                    if record.quantity == Quantity::VehicleDisplacement {
+                        (Probe::VehicleDisplacement { vehicle, dof }, "m", position)
+                    } else {
+                        (
+                            Probe::VehicleAcceleration { vehicle, dof },
+                            "m/s^2",
+                            position,
+                        )
+                    }
+                }
+            };
+            let static_values = matches!(probe, Probe::BridgeDisplacement { .. })
+                .then(|| Vec::with_capacity(capacity));
+            columns.push(Column {
+                name: record.name.clone(),
+                quantity: record.quantity,
+                unit,
+                values: Vec::with_capacity(capacity),
+                static_values,
+                position,
+                probe,
+            });
+        }
+        Ok(Self {
+            model,
+            history: History {
+                time: Vec::with_capacity(capacity),
+                columns,
+            },
+        })
+    }
+
+    /// The recorded history.
+    pub fn finish(self) -> History {
+        self.history
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+impl Observer for Recorder<'_> {
+    fn observe(&mut self, view: &StepView<'_>) {
+        self.history.time.push(view.time);
+        let model = self.model;
+        for column in &mut self.history.columns {
+            let value = match &column.probe {
+                Probe::BridgeDisplacement { shape, influence } => {
+                    // Static crossing: each wheel's static load at its
+                    // current position through the FE influence line.
+                    let static_w: f64 = view
+                        .wheel_positions
+                        .iter()
+                        .zip(&model.static_wheel_loads)
+                        .map(|(&x, &load)| -load * influence.value_at(x))
+                        .sum();
+                    if let Some(s) = column.static_values.as_mut() {
+                        s.push(static_w);
+                    }
+                    dot(shape, view.modal_displacement)
+                }
+                Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::ContactForce { wheel } => view.contact_forces[*wheel],
+                Probe::VehicleDisplacement { vehicle, dof } => {
+                    let state = &view.vehicles[*vehicle];
+                    state.displacement[*dof] - state.static_displacement[*dof]
+                }
+                Probe::VehicleAcceleration { vehicle, dof } => {
+                    view.vehicles[*vehicle].acceleration[*dof]
+                }
+            };
+            column.values.push(value);
+        }
+    }
+}

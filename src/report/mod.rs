@@ -1,0 +1,122 @@
+//! The report stage: summary.json, the CSV time history and the resolved
+//! scenario, each written whole or not at all.
+
+pub mod summary;
+pub mod yaml;
+
+use std::fs;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use crate::record::History;
+
+/// Errors writing results.
+#[derive(Debug, Error)]
+pub enum ReportError {
+    /// A file could not be written.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: io::Error,
+    },
+}
+
+/// Writes `contents` to `path` atomically: a temporary file in the same
+/// folder, then a rename, so readers never see a partial file.
+pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
+    let io_err = |source| ReportError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let file_name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{file_name}.tmp{}", std::process::id()));
+    let result = (|| {
+        let mut file = fs::File::create(&tmp)?;
+        file.write_all(contents)?;
+        file.sync_all()?;
+        fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = fs::remove_file(&tmp);
+    }
+    result.map_err(io_err)
+}
+
+/// The time history as CSV: `time` then one column per recorded quantity
+/// (`name`), and `name_static` after each bridge displacement. Values in SI
+/// units, shortest round-trip formatting.
+pub fn history_csv(history: &History) -> Vec<u8> {
+    let mut out = csv::Writer::from_writer(Vec::with_capacity(
+        history.time.len() * 16 * (1 + history.columns.len()),
+    ));
+    let mut header = vec!["time".to_string()];
+    for c in &history.columns {
+        header.push(c.name.clone());
+        if c.static_values.is_some() {
+            header.push(format!("{}_static", c.name));
+        }
+    }
+    out.write_record(&header).expect("writing to memory");
+    let mut row: Vec<String> = Vec::with_capacity(header.len());
+    for (i, t) in history.time.iter().enumerate() {
+        row.clear();
+        row.push(number(*t));
+        for c in &history.columns {
+            row.push(number(c.values[i]));
+            if let Some(s) = &c.static_values {
+                row.push(number(s[i]));
+            }
+        }
+        out.write_record(&row).expect("writing to memory");
+    }
+    out.into_inner().expect("writing to memory")
+}
+
+/// Shortest round-trip text of `x`: plain notation for moderate magnitudes,
+/// exponent notation for very small or large ones, and `0` for ±0.
+pub fn number(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else if (1e-4..1e15).contains(&x.abs()) {
+        x.to_string()
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Mode shapes sampled at the mesh nodes and mid-element points as CSV:
+/// `x` then `mode1`, `mode2`, … (mass-normalised, 1/√kg).
+pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
+    let modes = bridge.mode_count();
+    let mut out = String::from("x");
+    for i in 1..=modes {
+        out.push_str(&format!(",mode{i}"));
+    }
+    out.push('\n');
+    let nodes = bridge.node_x();
+    let mut values = vec![0.0; modes];
+    let mut points = Vec::with_capacity(2 * nodes.len());
+    for (i, &x) in nodes.iter().enumerate() {
+        if i > 0 {
+            points.push(0.5 * (nodes[i - 1] + x));
+        }
+        points.push(x);
+    }
+    for x in points {
+        bridge.mode_values(x, &mut values);
+        out.push_str(&number(x));
+        for v in &values {
+            out.push(',');
+            out.push_str(&number(*v));
+        }
+        out.push('\n');
+    }
+    out
+}

@@ -1,0 +1,171 @@
+//! summary.json: extremes of every recorded quantity and run metadata.
+
+use serde::Serialize;
+
+use crate::model::Model;
+use crate::record::{Column, History};
+use crate::scenario::resolved::Quantity;
+
+/// An extreme value and where it happened.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Extreme {
+    /// The value, in the column's unit.
+    pub value: f64,
+    /// Time, s.
+    pub time: f64,
+    /// Position along the bridge of the reference wheel at that time, m (see
+    /// `position_of`).
+    pub position: f64,
+}
+
+/// Statistics of one recorded quantity.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct QuantitySummary {
+    /// Column name.
+    pub name: String,
+    /// Quantity.
+    pub quantity: Quantity,
+    /// Unit.
+    pub unit: &'static str,
+    /// What `position` refers to.
+    pub position_of: String,
+    /// Largest value.
+    pub max: Extreme,
+    /// Smallest value.
+    pub min: Extreme,
+    /// Largest absolute value (signed value reported).
+    pub max_abs: Extreme,
+    /// Bridge displacements: largest absolute static crossing response at the
+    /// same point, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub static_max_abs: Option<Extreme>,
+    /// Bridge displacements: dynamic amplification factor
+    /// max|w_dynamic| / max|w_static| at this point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub daf: Option<f64>,
+}
+
+/// Metadata of the run.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct RunInfo {
+    /// vbi version.
+    pub vbi_version: &'static str,
+    /// Solver method.
+    pub solver: &'static str,
+    /// Wall time of build + solve + record, s.
+    pub wall_time: f64,
+    /// Number of time steps.
+    pub steps: usize,
+    /// Time step, s.
+    pub time_step: f64,
+    /// Simulated duration, s.
+    pub end_time: f64,
+    /// Bridge modes used.
+    pub modes_used: usize,
+    /// Modes the bridge discretisation offers.
+    pub modes_available: usize,
+    /// Natural frequencies of the modes used, Hz.
+    pub frequencies: Vec<f64>,
+    /// How the DAF's static reference is computed.
+    pub static_reference: &'static str,
+}
+
+/// The whole summary.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Summary {
+    /// Scenario name.
+    pub scenario: String,
+    /// Run metadata.
+    pub run: RunInfo,
+    /// One entry per recorded quantity, in scenario order.
+    pub quantities: Vec<QuantitySummary>,
+}
+
+/// Static reference used for DAFs.
+pub const STATIC_REFERENCE: &str = "quasi-static crossing of the same wheels with their static \
+loads on level ground (moving-force loads, or the vehicle's static contact forces), deflection \
+from the full finite-element stiffness via influence lines (no inertia, no modal truncation), \
+at the same point and times";
+
+fn extreme(
+    model: &Model,
+    column: &Column,
+    time: &[f64],
+    values: &[f64],
+    pick: impl Fn(f64, f64) -> bool,
+) -> Extreme {
+    let mut best = 0;
+    for (i, &v) in values.iter().enumerate() {
+        if pick(v, values[best]) {
+            best = i;
+        }
+    }
+    let t = time[best];
+    let p = column.position;
+    Extreme {
+        value: values[best],
+        time: t,
+        position: model.vehicles[p.vehicle].front_position(t) - p.offset,
+    }
+}
+
+impl Summary {
+    /// Builds the summary of a finished run.
+    pub fn new(name: &str, model: &Model, history: &History, wall_time: f64) -> Self {
+        let quantities = history
+            .columns
+            .iter()
+            .map(|column| {
+                let t = &history.time;
+                let max = extreme(model, column, t, &column.values, |a, b| a > b);
+                let min = extreme(model, column, t, &column.values, |a, b| a < b);
+                let max_abs = extreme(model, column, t, &column.values, |a, b| a.abs() > b.abs());
+                let static_max_abs = column
+                    .static_values
+                    .as_ref()
+                    .map(|s| extreme(model, column, t, s, |a, b| a.abs() > b.abs()));
+                let daf = static_max_abs
+                    .as_ref()
+                    .filter(|s| s.value != 0.0)
+                    .map(|s| max_abs.value.abs() / s.value.abs());
+                let p = column.position;
+                let position_of = if p.offset == 0.0 {
+                    format!("front axle of vehicle {}", p.vehicle + 1)
+                } else {
+                    format!(
+                        "wheel {:.3} m behind the front axle of vehicle {}",
+                        p.offset,
+                        p.vehicle + 1
+                    )
+                };
+                QuantitySummary {
+                    name: column.name.clone(),
+                    quantity: column.quantity,
+                    unit: column.unit,
+                    position_of,
+                    max,
+                    min,
+                    max_abs,
+                    static_max_abs,
+                    daf,
+                }
+            })
+            .collect();
+        Self {
+            scenario: name.to_string(),
+            run: RunInfo {
+                vbi_version: env!("CARGO_PKG_VERSION"),
+                solver: "coupled",
+                wall_time,
+                steps: model.steps,
+                time_step: model.time_step,
+                end_time: model.end_time(),
+                modes_used: model.bridge.mode_count(),
+                modes_available: model.bridge.available_modes,
+                frequencies: model.bridge.frequencies(),
+                static_reference: STATIC_REFERENCE,
+            },
+            quantities,
+        }
+    }
+}

@@ -1,0 +1,111 @@
+//! The scenario format: loading with source locations, semantic checks,
+//! defaults.
+//!
+//! Data flow: text → [`yaml::parse`] (a position-marked tree) →
+//! [`de::from_node`] (serde types in [`raw`], tagged unions dispatched on
+//! `type` without losing positions) → [`resolve`] (checks and defaults) →
+//! [`resolved::Scenario`].
+
+#[allow(missing_docs)]
+pub mod de;
+#[allow(missing_docs)]
+pub mod diagnostic;
+pub mod raw;
+pub mod resolve;
+pub mod resolved;
+#[allow(missing_docs)]
+pub mod yaml;
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+pub use self::diagnostic::Diagnostic;
+use self::raw::ScenarioRaw;
+use self::resolved::Scenario;
+use self::yaml::Location;
+use crate::bridge::ModalBridge;
+
+/// A scenario that passed every check, with the bridge's modal model built
+/// while resolving.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    /// The resolved scenario.
+    pub scenario: Scenario,
+    /// The modal bridge.
+    pub bridge: ModalBridge,
+}
+
+/// Why a scenario could not be loaded.
+#[derive(Debug, Error)]
+pub enum LoadError {
+    /// The file could not be read.
+    #[error("{}: cannot read: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// The file is not a valid scenario.
+    #[error("{}", Diagnostics(.0))]
+    Invalid(Vec<Diagnostic>),
+}
+
+struct Diagnostics<'a>(&'a [Diagnostic]);
+
+impl fmt::Display for Diagnostics<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, d) in self.0.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{d}")?;
+        }
+        Ok(())
+    }
+}
+
+/// Reads and resolves a scenario file.
+pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
+    let source = std::fs::read_to_string(path).map_err(|source| LoadError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    load_str(&source, &path.display().to_string())
+}
+
+/// Parses a scenario's text into its raw form; `file` labels diagnostics.
+pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), LoadError> {
+    let invalid = |loc: Location, message: String| {
+        LoadError::Invalid(vec![Diagnostic::new(file, source, loc, message)])
+    };
+    let node = match yaml::parse(source) {
+        Ok(Some(node)) => node,
+        Ok(None) => {
+            return Err(invalid(
+                Location { line: 1, col: 1 },
+                "the file is empty; a scenario needs at least `name`, `bridge` and `vehicles`"
+                    .into(),
+            ));
+        }
+        Err(e) => return Err(invalid(e.loc, format!("YAML syntax error: {}", e.message))),
+    };
+    match de::from_node::<ScenarioRaw>(&node) {
+        Ok(raw) => Ok((raw, node)),
+        Err(e) => Err(invalid(e.loc.unwrap_or(node.loc), e.message)),
+    }
+}
+
+/// Parses and resolves a scenario from text; `file` labels diagnostics.
+pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
+    let (raw, node) = parse_raw(source, file)?;
+    let mut checker = resolve::Checker::new(file, source, &node);
+    match resolve::resolve(&raw, &mut checker) {
+        Some((scenario, bridge)) if checker.diagnostics.is_empty() => {
+            Ok(Loaded { scenario, bridge })
+        }
+        _ => Err(LoadError::Invalid(checker.diagnostics)),
+    }
+}

@@ -1,0 +1,288 @@
+//! The scenario format as written by the user: serde + schemars types.
+//!
+//! These are the "low" arguments (ripgrep's `lowargs`): optional fields stay
+//! `Option`, nothing is checked beyond syntax and types. [`super::resolve`]
+//! turns them into the validated [`super::resolved::Scenario`]. Every field's
+//! doc comment becomes its description in the JSON Schema, so each states its
+//! unit. Tagged unions are dispatched on a `type` key by our own deserializer
+//! ([`super::de`]), which keeps source locations; `#[schemars(tag = "type")]`
+//! makes the schema describe the same shape.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+/// One vehicle–bridge interaction scene: a bridge, the vehicles crossing it,
+/// the surface they ride on, the contact model, the solver and what to record.
+///
+/// Conventions: SI units throughout. Vertical displacements, velocities and
+/// accelerations are positive UPWARD (a sagging bridge has negative
+/// deflection); roughness is positive upward (a bump); contact forces are
+/// positive in compression (wheel pressing on the deck). x runs along the
+/// bridge from the entrance (x = 0) to the exit.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioRaw {
+    /// Short name of the scene, used in reports.
+    pub name: String,
+    /// Free text describing the scene and its source.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// Gravitational acceleration, m/s². Default 9.81.
+    #[serde(default)]
+    pub gravity: Option<f64>,
+    /// The bridge.
+    pub bridge: BridgeRaw,
+    /// The vehicles crossing the bridge (at least one).
+    pub vehicles: Vec<VehicleRaw>,
+    /// The road or rail surface profile. Default: smooth.
+    #[serde(default)]
+    pub surface: Option<SurfaceRaw>,
+    /// The wheel–bridge contact model. Default: permanent contact.
+    #[serde(default)]
+    pub contact: Option<ContactRaw>,
+    /// Time integration settings. Defaults: coupled solver, average-acceleration Newmark.
+    #[serde(default)]
+    pub solver: Option<SolverRaw>,
+    /// What to record. Default: bridge displacement at the middle of every
+    /// span and the contact force of every wheel.
+    #[serde(default)]
+    pub record: Option<Vec<RecordRaw>>,
+}
+
+/// The bridge model.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+#[schemars(tag = "type")]
+pub enum BridgeRaw {
+    /// Euler–Bernoulli beam, simply supported or continuous over pinned
+    /// supports, discretised with Hermite-cubic finite elements and reduced to
+    /// mass-normalised modes.
+    Beam(BeamRaw),
+}
+
+/// Euler–Bernoulli beam bridge.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BeamRaw {
+    /// Span lengths, m, from the entrance. One span = simply supported; several
+    /// = continuous over pinned intermediate supports.
+    pub spans: Vec<f64>,
+    /// Bending stiffness EI, N·m².
+    pub bending_stiffness: f64,
+    /// Mass per unit length m, kg/m.
+    pub mass_per_length: f64,
+    /// Hermite-cubic finite elements per span. Default 20.
+    #[serde(default)]
+    pub elements_per_span: Option<usize>,
+    /// Which modes the modal superposition keeps. Default: the first 10 (or all
+    /// the mesh has, if fewer).
+    #[serde(default)]
+    pub modes: Option<ModesRaw>,
+    /// Structural damping. Default: 0 (undamped).
+    #[serde(default)]
+    pub damping: Option<DampingRaw>,
+}
+
+/// Mode selection: by count, by maximum frequency, or both (the stricter wins).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ModesRaw {
+    /// Keep the lowest `count` modes.
+    #[serde(default)]
+    pub count: Option<usize>,
+    /// Keep every mode whose natural frequency is at most this, Hz.
+    #[serde(default)]
+    pub max_frequency: Option<f64>,
+}
+
+/// Structural damping of the bridge.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum DampingRaw {
+    /// The same modal damping ratio ζ for every mode.
+    Modal {
+        /// Damping ratio ζ (fraction of critical, dimensionless), e.g. 0.02.
+        ratio: f64,
+    },
+    /// Rayleigh damping C = a₀M + a₁K with the given ratio at two frequencies;
+    /// mode i then has ζᵢ = a₀/(2ωᵢ) + a₁ωᵢ/2.
+    Rayleigh {
+        /// The two frequencies where the damping ratio is matched, Hz.
+        frequencies: [f64; 2],
+        /// Damping ratio ζ at both frequencies (dimensionless).
+        ratio: f64,
+    },
+}
+
+/// A vehicle crossing the bridge. Its reference point is its FRONT axle; the
+/// other axles follow at their offsets behind it.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+#[schemars(tag = "type")]
+pub enum VehicleRaw {
+    /// A set of constant vertical axle loads at fixed spacings (no inertia).
+    MovingForce(MovingForceRaw),
+    /// Moving oscillator: sprung mass on a spring–damper over a wheel mass
+    /// (the LCP paper's Fig. 1). `unsprung_mass: 0` is the 1-DOF sprung mass
+    /// on a massless wheel (Yang & Yau 1997).
+    Oscillator(OscillatorRaw),
+}
+
+/// Where and how fast a vehicle travels.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MovingForceRaw {
+    /// Axle loads, N (downward, positive), front axle first.
+    pub loads: Vec<f64>,
+    /// Distances between consecutive axles, m; one fewer than `loads`.
+    #[serde(default)]
+    pub axle_spacings: Option<Vec<f64>>,
+    /// Constant speed, m/s.
+    pub speed: f64,
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Give this or `start_position`, not both.
+    #[serde(default)]
+    pub entry_time: Option<f64>,
+    /// Position of the front axle at t = 0, m (≤ 0: on the approach).
+    #[serde(default)]
+    pub start_position: Option<f64>,
+}
+
+/// Moving oscillator parameters.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct OscillatorRaw {
+    /// Sprung (body) mass, kg.
+    pub sprung_mass: f64,
+    /// Unsprung (wheel) mass, kg. Default 0: a massless wheel.
+    #[serde(default)]
+    pub unsprung_mass: Option<f64>,
+    /// Suspension stiffness, N/m.
+    pub stiffness: f64,
+    /// Suspension damping, N·s/m. Default 0.
+    #[serde(default)]
+    pub damping: Option<f64>,
+    /// Constant speed, m/s.
+    pub speed: f64,
+    /// Time at which the wheel reaches the bridge entrance, s. Default 0.
+    /// Give this or `start_position`, not both.
+    #[serde(default)]
+    pub entry_time: Option<f64>,
+    /// Position of the wheel at t = 0, m (≤ 0: on the approach).
+    #[serde(default)]
+    pub start_position: Option<f64>,
+}
+
+/// Surface profile (roughness) under the wheels. It starts at the bridge
+/// entrance and continues past the exit; the approach is smooth.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum SurfaceRaw {
+    /// Perfectly smooth surface.
+    Smooth,
+    /// r(x) = amplitude · sin(2π x / wavelength + phase) for x ≥ 0, positive upward.
+    Harmonic {
+        /// Amplitude, m.
+        amplitude: f64,
+        /// Wavelength, m.
+        wavelength: f64,
+        /// Phase at the entrance, rad. Default 0.
+        #[serde(default)]
+        phase: Option<f64>,
+    },
+}
+
+/// Wheel–bridge contact model.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum ContactRaw {
+    /// Every wheel follows the bridge surface at all times; the contact force
+    /// may become negative (tension), which flags where separation would occur.
+    Permanent,
+}
+
+/// Time integration settings.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SolverRaw {
+    /// Solution method. Default `coupled`.
+    #[serde(default)]
+    pub method: Option<SolverMethod>,
+    /// Time step, s. Default: min(1e-3, 1 / (20 f_max)) where f_max is the
+    /// highest bridge frequency kept.
+    #[serde(default)]
+    pub time_step: Option<f64>,
+    /// Newmark parameters. Default β = 1/4, γ = 1/2 (average acceleration,
+    /// unconditionally stable, no numerical damping).
+    #[serde(default)]
+    pub newmark: Option<NewmarkRaw>,
+    /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
+    #[serde(default)]
+    pub free_vibration: Option<f64>,
+}
+
+/// Solution method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SolverMethod {
+    /// Vehicle and modal bridge equations solved together at every step, the
+    /// contact forces eliminated through the step's contact compliance.
+    Coupled,
+}
+
+/// Newmark-β parameters.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NewmarkRaw {
+    /// β (dimensionless). Default 0.25.
+    #[serde(default)]
+    pub beta: Option<f64>,
+    /// γ (dimensionless). Default 0.5.
+    #[serde(default)]
+    pub gamma: Option<f64>,
+}
+
+/// One recorded quantity (a column of the time history).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RecordRaw {
+    /// Column name in the CSV and key in summary.json.
+    pub name: String,
+    /// What is recorded.
+    pub quantity: Quantity,
+    /// Position along the bridge, m (bridge quantities).
+    #[serde(default)]
+    pub x: Option<f64>,
+    /// Vehicle number, counted from 1 in the order of `vehicles` (vehicle
+    /// quantities and contact forces). Default 1.
+    #[serde(default)]
+    pub vehicle: Option<usize>,
+    /// Wheel number within the vehicle, counted from 1 front to rear (contact forces).
+    #[serde(default)]
+    pub wheel: Option<usize>,
+    /// Vehicle degree of freedom by name, e.g. `sprung` or `wheel` for the oscillator
+    /// (vehicle quantities).
+    #[serde(default)]
+    pub dof: Option<String>,
+}
+
+/// Recordable quantities.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// Bridge vertical displacement at `x`, m, positive upward. The summary also
+    /// gives the static crossing response and the DAF at that point.
+    BridgeDisplacement,
+    /// Bridge vertical acceleration at `x`, m/s², positive upward.
+    BridgeAcceleration,
+    /// Contact force of a wheel, N, positive in compression.
+    ContactForce,
+    /// Vehicle DOF displacement from its static equilibrium on the rigid flat
+    /// approach, m (or rad), positive upward.
+    VehicleDisplacement,
+    /// Vehicle DOF acceleration, m/s² (or rad/s²), positive upward.
+    VehicleAcceleration,
+}

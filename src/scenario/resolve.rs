@@ -1,0 +1,618 @@
+//! Semantic checks and defaults: [`ScenarioRaw`] → [`Scenario`].
+//!
+//! Every problem is reported with the location of the offending key (or, if
+//! the key is absent, of the section that lacks it), and all problems found
+//! are reported together, like a compiler.
+
+use super::diagnostic::Diagnostic;
+use super::raw::{self, ScenarioRaw};
+use super::resolved::*;
+use super::yaml::{Location, Node, PathSeg};
+use crate::bridge::beam::BeamModel;
+use crate::bridge::{BridgeError, ModalBridge};
+
+/// Default number of modes when the scene does not say.
+pub const DEFAULT_MODE_COUNT: usize = 10;
+/// Default finite elements per span.
+pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
+/// Default gravitational acceleration, m/s².
+pub const DEFAULT_GRAVITY: f64 = 9.81;
+/// Largest number of time steps a run may take.
+pub const MAX_STEPS: f64 = 2.0e8;
+
+/// Collects diagnostics while resolving one file.
+pub(super) struct Checker<'a> {
+    file: &'a str,
+    source: &'a str,
+    root: &'a Node,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Parses "vehicles[0].speed" into path segments.
+fn parse_path(path: &str) -> Vec<PathSeg<'_>> {
+    let mut segs = Vec::new();
+    for part in path.split('.') {
+        let (key, rest) = part.split_once('[').unwrap_or((part, ""));
+        if !key.is_empty() {
+            segs.push(PathSeg::Key(key));
+        }
+        for idx in rest.split('[') {
+            if let Ok(i) = idx.trim_end_matches(']').parse() {
+                segs.push(PathSeg::Index(i));
+            }
+        }
+    }
+    segs
+}
+
+impl<'a> Checker<'a> {
+    pub(super) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
+        Self {
+            file,
+            source,
+            root,
+            diagnostics: Vec::new(),
+        }
+    }
+
+    fn location(&self, path: &str) -> Location {
+        self.root.locate(&parse_path(path))
+    }
+
+    /// Records an error at `path`.
+    fn error(&mut self, path: &str, message: impl Into<String>) {
+        let loc = self.location(path);
+        self.diagnostics
+            .push(Diagnostic::new(self.file, self.source, loc, message));
+    }
+
+    fn positive(&mut self, path: &str, value: f64, what: &str) {
+        if value <= 0.0 {
+            self.error(path, format!("{what} must be positive, got {value}"));
+        }
+    }
+
+    fn non_negative(&mut self, path: &str, value: f64, what: &str) {
+        if value < 0.0 {
+            self.error(path, format!("{what} must not be negative, got {value}"));
+        }
+    }
+}
+
+/// Resolves a parsed scenario. Returns the scenario with every default filled
+/// in and the modal bridge built on the way (mode selection and the default
+/// time step depend on the natural frequencies).
+pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenario, ModalBridge)> {
+    if raw.name.trim().is_empty() {
+        ck.error("name", "`name` must not be empty");
+    }
+    let gravity = raw.gravity.unwrap_or(DEFAULT_GRAVITY);
+    ck.positive("gravity", gravity, "gravity");
+
+    let bridge = resolve_bridge(&raw.bridge, ck);
+    let vehicles = resolve_vehicles(&raw.vehicles, ck);
+    let surface = resolve_surface(raw.surface.as_ref(), ck);
+    let contact = match raw.contact {
+        None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
+    };
+    let solver_raw = raw.solver.clone().unwrap_or(raw::SolverRaw {
+        method: None,
+        time_step: None,
+        newmark: None,
+        free_vibration: None,
+    });
+    let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
+        beta: None,
+        gamma: None,
+    });
+    let newmark = Newmark {
+        beta: newmark_raw.beta.unwrap_or(0.25),
+        gamma: newmark_raw.gamma.unwrap_or(0.5),
+    };
+    ck.positive("solver.newmark.beta", newmark.beta, "Newmark β");
+    if newmark.gamma < 0.5 {
+        ck.error(
+            "solver.newmark.gamma",
+            format!(
+                "Newmark γ must be at least 0.5 (below it the scheme amplifies every mode), got {}",
+                newmark.gamma
+            ),
+        );
+    }
+    let free_vibration = solver_raw.free_vibration.unwrap_or(0.0);
+    ck.non_negative(
+        "solver.free_vibration",
+        free_vibration,
+        "free-vibration time",
+    );
+    if let Some(dt) = solver_raw.time_step {
+        ck.positive("solver.time_step", dt, "time step");
+    }
+
+    // The bridge is built only from a valid description.
+    let (bridge, vehicles) = (bridge?, vehicles?);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    let modal = match ModalBridge::build(&bridge) {
+        Ok(m) => m,
+        Err(e) => {
+            let path = match e {
+                BridgeError::TooManyModes { .. } => "bridge.modes.count",
+                BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",
+                _ => "bridge",
+            };
+            ck.error(path, e.to_string());
+            return None;
+        }
+    };
+
+    // Default step: a tenth of… resolve the highest kept mode with 20 steps
+    // per period, and never coarser than 1 ms.
+    let highest = modal.frequencies().last().copied().unwrap_or(1.0);
+    let time_step = solver_raw
+        .time_step
+        .unwrap_or_else(|| (0.05 / highest).min(1e-3));
+    let length = modal.length;
+    let last_exit = vehicles
+        .iter()
+        .map(|v| v.entry_time() + (length + v.length()) / v.speed())
+        .fold(0.0, f64::max);
+    let steps = (last_exit + free_vibration) / time_step;
+    if steps > MAX_STEPS {
+        ck.error(
+            "solver.time_step",
+            format!("the run would take {steps:.3e} steps (more than {MAX_STEPS:.0e}); use a larger time step"),
+        );
+    }
+
+    let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, ck);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    let scenario = Scenario {
+        name: raw.name.clone(),
+        description: raw.description.clone(),
+        gravity,
+        bridge,
+        vehicles,
+        surface,
+        contact,
+        solver: Solver {
+            method: solver_raw.method.unwrap_or(SolverMethod::Coupled),
+            time_step,
+            newmark,
+            free_vibration,
+        },
+        record,
+    };
+    Some((scenario, modal))
+}
+
+fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> {
+    match raw {
+        raw::BridgeRaw::Beam(b) => {
+            let before = ck.diagnostics.len();
+            if b.spans.is_empty() {
+                ck.error("bridge.spans", "`spans` needs at least one span length");
+            }
+            for (i, &s) in b.spans.iter().enumerate() {
+                ck.positive(&format!("bridge.spans[{i}]"), s, "a span length");
+            }
+            ck.positive(
+                "bridge.bending_stiffness",
+                b.bending_stiffness,
+                "bending stiffness",
+            );
+            ck.positive(
+                "bridge.mass_per_length",
+                b.mass_per_length,
+                "mass per length",
+            );
+            let elements_per_span = b.elements_per_span.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
+            if !(1..=10_000).contains(&elements_per_span) {
+                ck.error(
+                    "bridge.elements_per_span",
+                    format!(
+                        "elements per span must be between 1 and 10000, got {elements_per_span}"
+                    ),
+                );
+            }
+            let total_dofs = b.spans.len() * elements_per_span * 2;
+            if total_dofs > 20_000 {
+                ck.error(
+                    "bridge.elements_per_span",
+                    format!("{total_dofs} degrees of freedom is more than the dense beam solver takes (20000)"),
+                );
+            }
+            let modes = match &b.modes {
+                None => Modes {
+                    count: None,
+                    max_frequency: None,
+                },
+                Some(m) => {
+                    if m.count.is_none() && m.max_frequency.is_none() {
+                        ck.error(
+                            "bridge.modes",
+                            "`modes` needs `count`, `max_frequency` or both",
+                        );
+                    }
+                    if m.count == Some(0) {
+                        ck.error("bridge.modes.count", "at least one mode is needed");
+                    }
+                    if let Some(f) = m.max_frequency {
+                        ck.positive("bridge.modes.max_frequency", f, "maximum frequency");
+                    }
+                    Modes {
+                        count: m.count,
+                        max_frequency: m.max_frequency,
+                    }
+                }
+            };
+            let damping = match &b.damping {
+                None => Damping::Modal { ratio: 0.0 },
+                Some(raw::DampingRaw::Modal { ratio }) => {
+                    check_ratio(ck, "bridge.damping.ratio", *ratio);
+                    Damping::Modal { ratio: *ratio }
+                }
+                Some(raw::DampingRaw::Rayleigh { frequencies, ratio }) => {
+                    check_ratio(ck, "bridge.damping.ratio", *ratio);
+                    for (i, &f) in frequencies.iter().enumerate() {
+                        ck.positive(
+                            &format!("bridge.damping.frequencies[{i}]"),
+                            f,
+                            "a Rayleigh frequency",
+                        );
+                    }
+                    if frequencies[0] == frequencies[1] {
+                        ck.error(
+                            "bridge.damping.frequencies",
+                            "the two Rayleigh frequencies must differ",
+                        );
+                    }
+                    Damping::Rayleigh {
+                        frequencies: *frequencies,
+                        ratio: *ratio,
+                    }
+                }
+            };
+            if ck.diagnostics.len() > before {
+                return None;
+            }
+            let mut beam = Beam {
+                spans: b.spans.clone(),
+                bending_stiffness: b.bending_stiffness,
+                mass_per_length: b.mass_per_length,
+                elements_per_span,
+                modes,
+                damping,
+            };
+            if beam.modes.count.is_none() && beam.modes.max_frequency.is_none() {
+                beam.modes.count = Some(DEFAULT_MODE_COUNT.min(BeamModel::free_dofs_of(&beam)));
+            }
+            Some(Bridge::Beam(beam))
+        }
+    }
+}
+
+fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
+    if !(0.0..1.0).contains(&ratio) {
+        ck.error(
+            path,
+            format!("a damping ratio must be in [0, 1), got {ratio}"),
+        );
+    }
+}
+
+/// Entry time from `entry_time` / `start_position` (front axle at t = 0).
+fn entry_time(
+    ck: &mut Checker<'_>,
+    at: &str,
+    speed: f64,
+    entry_time: Option<f64>,
+    start_position: Option<f64>,
+) -> f64 {
+    match (entry_time, start_position) {
+        (Some(_), Some(_)) => {
+            ck.error(
+                &format!("{at}.start_position"),
+                "give `entry_time` or `start_position`, not both",
+            );
+            0.0
+        }
+        (Some(t), None) => {
+            ck.non_negative(&format!("{at}.entry_time"), t, "entry time");
+            t
+        }
+        (None, Some(x)) => {
+            if x > 0.0 {
+                ck.error(
+                    &format!("{at}.start_position"),
+                    format!("the vehicle must start on the approach (start_position ≤ 0), got {x}"),
+                );
+            }
+            if speed > 0.0 { -x / speed } else { 0.0 }
+        }
+        (None, None) => 0.0,
+    }
+}
+
+fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Vec<Vehicle>> {
+    let before = ck.diagnostics.len();
+    if raws.is_empty() {
+        ck.error("vehicles", "`vehicles` needs at least one vehicle");
+    }
+    let mut out = Vec::with_capacity(raws.len());
+    for (i, raw) in raws.iter().enumerate() {
+        let at = format!("vehicles[{i}]");
+        match raw {
+            raw::VehicleRaw::MovingForce(v) => {
+                ck.positive(&format!("{at}.speed"), v.speed, "speed");
+                if v.loads.is_empty() {
+                    ck.error(
+                        &format!("{at}.loads"),
+                        "`loads` needs at least one axle load",
+                    );
+                }
+                for (k, &p) in v.loads.iter().enumerate() {
+                    ck.positive(&format!("{at}.loads[{k}]"), p, "an axle load");
+                }
+                let spacings = v.axle_spacings.clone().unwrap_or_default();
+                if spacings.len() + 1 != v.loads.len().max(1) {
+                    let path = if v.axle_spacings.is_some() {
+                        format!("{at}.axle_spacings")
+                    } else {
+                        at.clone()
+                    };
+                    ck.error(
+                        &path,
+                        format!(
+                            "{} axle loads need {} axle spacings, found {}",
+                            v.loads.len(),
+                            v.loads.len().saturating_sub(1),
+                            spacings.len()
+                        ),
+                    );
+                }
+                for (k, &s) in spacings.iter().enumerate() {
+                    ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
+                }
+                let entry = entry_time(ck, &at, v.speed, v.entry_time, v.start_position);
+                out.push(Vehicle::MovingForce(MovingForce {
+                    loads: v.loads.clone(),
+                    axle_spacings: spacings,
+                    speed: v.speed,
+                    entry_time: entry,
+                }));
+            }
+            raw::VehicleRaw::Oscillator(v) => {
+                ck.positive(&format!("{at}.speed"), v.speed, "speed");
+                ck.positive(&format!("{at}.sprung_mass"), v.sprung_mass, "sprung mass");
+                let unsprung = v.unsprung_mass.unwrap_or(0.0);
+                ck.non_negative(&format!("{at}.unsprung_mass"), unsprung, "unsprung mass");
+                ck.positive(
+                    &format!("{at}.stiffness"),
+                    v.stiffness,
+                    "suspension stiffness",
+                );
+                let damping = v.damping.unwrap_or(0.0);
+                ck.non_negative(&format!("{at}.damping"), damping, "suspension damping");
+                let entry = entry_time(ck, &at, v.speed, v.entry_time, v.start_position);
+                out.push(Vehicle::Oscillator(Oscillator {
+                    sprung_mass: v.sprung_mass,
+                    unsprung_mass: unsprung,
+                    stiffness: v.stiffness,
+                    damping,
+                    speed: v.speed,
+                    entry_time: entry,
+                }));
+            }
+        }
+    }
+    (ck.diagnostics.len() == before).then_some(out)
+}
+
+fn resolve_surface(raw: Option<&raw::SurfaceRaw>, ck: &mut Checker<'_>) -> Surface {
+    match raw {
+        None | Some(raw::SurfaceRaw::Smooth) => Surface::Smooth,
+        Some(raw::SurfaceRaw::Harmonic {
+            amplitude,
+            wavelength,
+            phase,
+        }) => {
+            ck.non_negative("surface.amplitude", *amplitude, "roughness amplitude");
+            ck.positive("surface.wavelength", *wavelength, "roughness wavelength");
+            Surface::Harmonic {
+                amplitude: *amplitude,
+                wavelength: *wavelength,
+                phase: phase.unwrap_or(0.0),
+            }
+        }
+    }
+}
+
+/// DOF names of a resolved vehicle, as the vehicle module defines them.
+fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
+    match vehicle {
+        Vehicle::MovingForce(_) => &[],
+        Vehicle::Oscillator(_) => &["sprung", "wheel"],
+    }
+}
+
+fn wheel_count(vehicle: &Vehicle) -> usize {
+    match vehicle {
+        Vehicle::MovingForce(v) => v.loads.len(),
+        Vehicle::Oscillator(_) => 1,
+    }
+}
+
+fn resolve_records(
+    raws: Option<&[raw::RecordRaw]>,
+    bridge: &Bridge,
+    vehicles: &[Vehicle],
+    ck: &mut Checker<'_>,
+) -> Vec<Record> {
+    let Some(raws) = raws else {
+        return default_records(bridge, vehicles);
+    };
+    let length = bridge.length();
+    let mut out = Vec::with_capacity(raws.len());
+    for (i, r) in raws.iter().enumerate() {
+        let at = format!("record[{i}]");
+        if r.name.trim().is_empty() || r.name == "time" || r.name.ends_with("_static") {
+            ck.error(
+                &format!("{at}.name"),
+                format!(
+                    "`{}` cannot be a column name (empty, `time`, or ending in `_static`)",
+                    r.name
+                ),
+            );
+        }
+        if raws[..i].iter().any(|o| o.name == r.name) {
+            ck.error(
+                &format!("{at}.name"),
+                format!("duplicate record name `{}`", r.name),
+            );
+        }
+        let q = r.quantity;
+        let is_bridge = matches!(
+            q,
+            Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+        );
+        let is_vehicle_dof = matches!(
+            q,
+            Quantity::VehicleDisplacement | Quantity::VehicleAcceleration
+        );
+        let quantity_name = serde_json::to_value(q)
+            .ok()
+            .and_then(|v| v.as_str().map(String::from))
+            .unwrap_or_default();
+        let unused = |field: &str| format!("`{field}` is not used by `{quantity_name}`");
+        if is_bridge {
+            match r.x {
+                None => ck.error(
+                    &at,
+                    format!("`{quantity_name}` needs `x`, the position along the bridge in m"),
+                ),
+                Some(x) if !(0.0..=length).contains(&x) => ck.error(
+                    &format!("{at}.x"),
+                    format!("x = {x} m is off the bridge, which runs from 0 to {length} m"),
+                ),
+                _ => {}
+            }
+            if r.vehicle.is_some() {
+                ck.error(&format!("{at}.vehicle"), unused("vehicle"));
+            }
+        } else if r.x.is_some() {
+            ck.error(&format!("{at}.x"), unused("x"));
+        }
+        if q != Quantity::ContactForce && r.wheel.is_some() {
+            ck.error(&format!("{at}.wheel"), unused("wheel"));
+        }
+        if !is_vehicle_dof && r.dof.is_some() {
+            ck.error(&format!("{at}.dof"), unused("dof"));
+        }
+        let mut vehicle = None;
+        if !is_bridge {
+            let v = r.vehicle.unwrap_or(1);
+            if v == 0 || v > vehicles.len() {
+                ck.error(
+                    &format!("{at}.vehicle"),
+                    format!(
+                        "vehicle {v} does not exist; vehicles are numbered 1 to {}",
+                        vehicles.len()
+                    ),
+                );
+            } else {
+                vehicle = Some(v);
+            }
+        }
+        let mut wheel = None;
+        if q == Quantity::ContactForce {
+            let w = r.wheel.unwrap_or(1);
+            if let Some(v) = vehicle {
+                let n = wheel_count(&vehicles[v - 1]);
+                if w == 0 || w > n {
+                    ck.error(
+                        &format!("{at}.wheel"),
+                        format!("wheel {w} does not exist; vehicle {v} has wheels 1 to {n}"),
+                    );
+                }
+            }
+            wheel = Some(w);
+        }
+        if is_vehicle_dof {
+            if let Some(v) = vehicle {
+                let names = dof_names(&vehicles[v - 1]);
+                match &r.dof {
+                    None if names.is_empty() => ck.error(
+                        &at,
+                        format!(
+                            "vehicle {v} ({}) has no degrees of freedom",
+                            vehicles[v - 1].type_name()
+                        ),
+                    ),
+                    None => ck.error(
+                        &at,
+                        format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
+                    ),
+                    Some(d) if !names.contains(&d.as_str()) => ck.error(
+                        &format!("{at}.dof"),
+                        if names.is_empty() {
+                            format!(
+                                "vehicle {v} ({}) has no degrees of freedom",
+                                vehicles[v - 1].type_name()
+                            )
+                        } else {
+                            format!(
+                                "unknown DOF `{d}` of vehicle {v}; expected one of {}",
+                                names.join(", ")
+                            )
+                        },
+                    ),
+                    _ => {}
+                }
+            }
+        }
+        out.push(Record {
+            name: r.name.clone(),
+            quantity: q,
+            x: r.x,
+            vehicle,
+            wheel,
+            dof: r.dof.clone(),
+        });
+    }
+    out
+}
+
+/// Displacement at the middle of every span and every wheel's contact force.
+fn default_records(bridge: &Bridge, vehicles: &[Vehicle]) -> Vec<Record> {
+    let mut out = Vec::new();
+    let Bridge::Beam(beam) = bridge;
+    let mut start = 0.0;
+    for (i, span) in beam.spans.iter().enumerate() {
+        out.push(Record {
+            name: format!("span{}_midspan", i + 1),
+            quantity: Quantity::BridgeDisplacement,
+            x: Some(start + span / 2.0),
+            vehicle: None,
+            wheel: None,
+            dof: None,
+        });
+        start += span;
+    }
+    for (v, vehicle) in vehicles.iter().enumerate() {
+        for w in 0..wheel_count(vehicle) {
+            out.push(Record {
+                name: format!("vehicle{}_wheel{}_force", v + 1, w + 1),
+                quantity: Quantity::ContactForce,
+                x: None,
+                vehicle: Some(v + 1),
+                wheel: Some(w + 1),
+                dof: None,
+            });
+        }
+    }
+    out
+}

@@ -1,0 +1,255 @@
+//! The validated scenario with every default filled in (ripgrep's `hiargs`).
+//!
+//! Everything after loading sees only these types. They serialise to the same
+//! shape as the input format, so the resolved scenario written next to the
+//! results can be run again as it is.
+
+use serde::Serialize;
+
+pub use super::raw::{Quantity, SolverMethod};
+
+/// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Scenario {
+    /// Short name of the scene.
+    pub name: String,
+    /// Free text describing the scene.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    /// Gravitational acceleration, m/s².
+    pub gravity: f64,
+    /// The bridge.
+    pub bridge: Bridge,
+    /// The vehicles, in input order.
+    pub vehicles: Vec<Vehicle>,
+    /// The surface profile.
+    pub surface: Surface,
+    /// The contact model.
+    pub contact: Contact,
+    /// Time integration settings.
+    pub solver: Solver,
+    /// Recorded quantities.
+    pub record: Vec<Record>,
+}
+
+/// The bridge model.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Bridge {
+    /// Euler–Bernoulli beam.
+    Beam(Beam),
+}
+
+impl Bridge {
+    /// Total length from the entrance to the exit, m.
+    pub fn length(&self) -> f64 {
+        match self {
+            Bridge::Beam(beam) => beam.spans.iter().sum(),
+        }
+    }
+}
+
+/// Euler–Bernoulli beam bridge.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Beam {
+    /// Span lengths, m.
+    pub spans: Vec<f64>,
+    /// Bending stiffness EI, N·m².
+    pub bending_stiffness: f64,
+    /// Mass per unit length, kg/m.
+    pub mass_per_length: f64,
+    /// Finite elements per span.
+    pub elements_per_span: usize,
+    /// Mode selection.
+    pub modes: Modes,
+    /// Structural damping.
+    pub damping: Damping,
+}
+
+/// Mode selection; at least one is set.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Modes {
+    /// Keep the lowest `count` modes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<usize>,
+    /// Keep modes up to this frequency, Hz.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_frequency: Option<f64>,
+}
+
+/// Structural damping.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Damping {
+    /// Same ratio for every mode.
+    Modal {
+        /// Damping ratio, dimensionless.
+        ratio: f64,
+    },
+    /// Rayleigh damping matched at two frequencies.
+    Rayleigh {
+        /// Frequencies, Hz.
+        frequencies: [f64; 2],
+        /// Damping ratio at both, dimensionless.
+        ratio: f64,
+    },
+}
+
+impl Damping {
+    /// Damping ratio of a mode with circular frequency `omega` (rad/s).
+    ///
+    /// Rayleigh: ζ(ω) = a₀/(2ω) + a₁ω/2 with a₀, a₁ solved so that ζ(ω₁) =
+    /// ζ(ω₂) = ζ: a₀ = 2ζω₁ω₂/(ω₁+ω₂), a₁ = 2ζ/(ω₁+ω₂) (Chopra, Dynamics of
+    /// Structures, eq. 11.4.9).
+    pub fn ratio_at(&self, omega: f64) -> f64 {
+        match *self {
+            Damping::Modal { ratio } => ratio,
+            Damping::Rayleigh { frequencies, ratio } => {
+                let w1 = 2.0 * std::f64::consts::PI * frequencies[0];
+                let w2 = 2.0 * std::f64::consts::PI * frequencies[1];
+                let a0 = 2.0 * ratio * w1 * w2 / (w1 + w2);
+                let a1 = 2.0 * ratio / (w1 + w2);
+                a0 / (2.0 * omega) + a1 * omega / 2.0
+            }
+        }
+    }
+}
+
+/// A vehicle.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Vehicle {
+    /// Constant axle loads.
+    MovingForce(MovingForce),
+    /// Two-mass oscillator.
+    Oscillator(Oscillator),
+}
+
+impl Vehicle {
+    /// Constant speed, m/s.
+    pub fn speed(&self) -> f64 {
+        match self {
+            Vehicle::MovingForce(v) => v.speed,
+            Vehicle::Oscillator(v) => v.speed,
+        }
+    }
+    /// Time at which the front axle reaches the entrance, s.
+    pub fn entry_time(&self) -> f64 {
+        match self {
+            Vehicle::MovingForce(v) => v.entry_time,
+            Vehicle::Oscillator(v) => v.entry_time,
+        }
+    }
+    /// Distance from the front axle back to the rear axle, m.
+    pub fn length(&self) -> f64 {
+        match self {
+            Vehicle::MovingForce(v) => v.axle_spacings.iter().sum(),
+            Vehicle::Oscillator(_) => 0.0,
+        }
+    }
+    /// Type name as written in the format.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Vehicle::MovingForce(_) => "moving_force",
+            Vehicle::Oscillator(_) => "oscillator",
+        }
+    }
+}
+
+/// Constant axle loads.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MovingForce {
+    /// Axle loads, N, front first.
+    pub loads: Vec<f64>,
+    /// Spacings between consecutive axles, m.
+    pub axle_spacings: Vec<f64>,
+    /// Speed, m/s.
+    pub speed: f64,
+    /// Time the front axle reaches x = 0, s.
+    pub entry_time: f64,
+}
+
+/// Two-mass oscillator.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Oscillator {
+    /// Sprung mass, kg.
+    pub sprung_mass: f64,
+    /// Unsprung mass, kg.
+    pub unsprung_mass: f64,
+    /// Suspension stiffness, N/m.
+    pub stiffness: f64,
+    /// Suspension damping, N·s/m.
+    pub damping: f64,
+    /// Speed, m/s.
+    pub speed: f64,
+    /// Time the wheel reaches x = 0, s.
+    pub entry_time: f64,
+}
+
+/// Surface profile.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Surface {
+    /// Smooth.
+    Smooth,
+    /// r(x) = amplitude · sin(2πx/wavelength + phase), x ≥ 0.
+    Harmonic {
+        /// m
+        amplitude: f64,
+        /// m
+        wavelength: f64,
+        /// rad
+        phase: f64,
+    },
+}
+
+/// Contact model.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Contact {
+    /// Wheels always follow the surface.
+    Permanent,
+}
+
+/// Time integration settings.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Solver {
+    /// Method.
+    pub method: SolverMethod,
+    /// Time step, s.
+    pub time_step: f64,
+    /// Newmark parameters.
+    pub newmark: Newmark,
+    /// Free vibration after the last axle leaves, s.
+    pub free_vibration: f64,
+}
+
+/// Newmark-β parameters.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Newmark {
+    /// β.
+    pub beta: f64,
+    /// γ.
+    pub gamma: f64,
+}
+
+/// One recorded quantity.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Record {
+    /// Column name.
+    pub name: String,
+    /// Quantity.
+    pub quantity: Quantity,
+    /// Position along the bridge, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub x: Option<f64>,
+    /// Vehicle number from 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vehicle: Option<usize>,
+    /// Wheel number from 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wheel: Option<usize>,
+    /// Vehicle DOF name.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dof: Option<String>,
+}

@@ -1,0 +1,850 @@
+//! A position-marked YAML tree built from `saphyr-parser` events.
+//!
+//! Off-the-shelf serde YAML front ends buffer internally tagged enums and lose
+//! source positions on the way, so an error inside a `bridge:` section would be
+//! reported at the wrong place. We therefore parse into our own tree in which
+//! every node (and every mapping key) remembers where it was written, and
+//! deserialize from that tree (see `super::de`).
+//!
+//! The tree deliberately supports only the YAML subset a scenario file needs:
+//! one document, no tags, no merge keys, no complex keys. Everything else is
+//! rejected with a located [`SyntaxError`] instead of being half-supported.
+
+use saphyr_parser::{Event, Marker, Parser, ScalarStyle, Span};
+use std::collections::HashMap;
+
+/// Deepest nesting we accept. Deserialization and `Drop` recurse once per
+/// level, so a cap keeps hostile inputs like `[[[[...` from blowing the stack.
+const MAX_DEPTH: usize = 128;
+/// Upper bound on nodes after alias expansion, against "billion laughs" inputs.
+const MAX_NODES: usize = 1_000_000;
+
+/// 1-based line and column of a node or key in the source text.
+///
+/// Columns count Unicode scalar values (chars), not bytes, like rustc.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Default)]
+pub struct Location {
+    pub line: usize,
+    pub col: usize,
+}
+
+impl std::fmt::Display for Location {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}:{}", self.line, self.col)
+    }
+}
+
+impl Location {
+    /// saphyr markers have a 1-based line but a 0-based column.
+    fn from_marker(m: &Marker) -> Self {
+        Location {
+            line: m.line().max(1),
+            col: m.col() + 1,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NodeKind {
+    /// `~`, `null`, `Null`, `NULL` or an empty plain scalar.
+    Null,
+    /// `plain` is false for quoted and block scalars, which are always strings.
+    Scalar {
+        text: String,
+        plain: bool,
+    },
+    Sequence(Vec<Node>),
+    /// (key node, value node) pairs in source order.
+    Mapping(Vec<(Node, Node)>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Node {
+    pub kind: NodeKind,
+    pub loc: Location,
+}
+
+#[derive(Debug, Clone, thiserror::Error)]
+#[error("{message}")]
+pub struct SyntaxError {
+    pub loc: Location,
+    pub message: String,
+}
+
+/// One step of a path into the tree, see [`Node::locate`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PathSeg<'a> {
+    Key(&'a str),
+    Index(usize),
+}
+
+/// A plain scalar resolved with the YAML 1.2 core schema.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Resolved<'a> {
+    Null,
+    Bool(bool),
+    Int(i128),
+    /// Integer syntax whose value does not fit in an `i128`.
+    IntOverflow,
+    /// May be non-finite (`.inf`, `.nan`, or an overflowing literal like `1e400`).
+    Float(f64),
+    Str(&'a str),
+}
+
+impl Node {
+    /// The value stored under `key` if `self` is a mapping with that (scalar) key.
+    pub fn get(&self, key: &str) -> Option<&Node> {
+        self.entry(key).map(|(_, v)| v)
+    }
+
+    /// Where `key` itself is written, if `self` is a mapping containing it.
+    pub fn key_loc(&self, key: &str) -> Option<Location> {
+        self.entry(key).map(|(k, _)| k.loc)
+    }
+
+    fn entry(&self, key: &str) -> Option<&(Node, Node)> {
+        match &self.kind {
+            NodeKind::Mapping(entries) => entries.iter().find(|(k, _)| k.as_str() == Some(key)),
+            _ => None,
+        }
+    }
+
+    /// Text of a scalar (plain or quoted); `None` for null and collections.
+    pub fn as_str(&self) -> Option<&str> {
+        match &self.kind {
+            NodeKind::Scalar { text, .. } => Some(text),
+            _ => None,
+        }
+    }
+
+    /// Location of the deepest existing node along `path`.
+    ///
+    /// Semantic checks that run after deserialization know *which* field is
+    /// wrong but not where it was written; this maps the field path back to the
+    /// source. If a step is missing we stop at the enclosing collection, which
+    /// is where the user would have to add the entry.
+    pub fn locate(&self, path: &[PathSeg]) -> Location {
+        let mut node = self;
+        for seg in path {
+            let next = match (seg, &node.kind) {
+                (PathSeg::Key(k), NodeKind::Mapping(_)) => node.get(k),
+                (PathSeg::Index(i), NodeKind::Sequence(items)) => items.get(*i),
+                _ => None,
+            };
+            match next {
+                Some(n) => node = n,
+                None => break,
+            }
+        }
+        node.loc
+    }
+
+    /// Convert to JSON with core-schema resolution, for JSON Schema validation.
+    ///
+    /// Non-finite floats have no JSON representation and become their source
+    /// text as a string; null keys become the key `"null"`.
+    pub fn to_json(&self) -> serde_json::Value {
+        use serde_json::Value;
+        match &self.kind {
+            NodeKind::Null => Value::Null,
+            NodeKind::Scalar { text, plain: false } => Value::String(text.clone()),
+            NodeKind::Scalar { text, plain: true } => match resolve_plain(text) {
+                Resolved::Null => Value::Null,
+                Resolved::Bool(b) => Value::Bool(b),
+                Resolved::Int(i) => {
+                    if let Ok(v) = i64::try_from(i) {
+                        Value::from(v)
+                    } else if let Ok(v) = u64::try_from(i) {
+                        Value::from(v)
+                    } else {
+                        float_json(i as f64, text)
+                    }
+                }
+                Resolved::IntOverflow => float_json(text.parse().unwrap_or(f64::NAN), text),
+                Resolved::Float(f) => float_json(f, text),
+                Resolved::Str(s) => Value::String(s.to_owned()),
+            },
+            NodeKind::Sequence(items) => Value::Array(items.iter().map(Node::to_json).collect()),
+            NodeKind::Mapping(entries) => Value::Object(
+                entries
+                    .iter()
+                    .map(|(k, v)| (k.as_str().unwrap_or("null").to_owned(), v.to_json()))
+                    .collect(),
+            ),
+        }
+    }
+}
+
+fn float_json(f: f64, text: &str) -> serde_json::Value {
+    serde_json::Number::from_f64(f)
+        .map(serde_json::Value::Number)
+        .unwrap_or_else(|| serde_json::Value::String(text.to_owned()))
+}
+
+/// Resolve a plain scalar's text with the YAML 1.2 core schema (spec 10.3.2).
+pub fn resolve_plain(text: &str) -> Resolved<'_> {
+    match text {
+        "" | "~" | "null" | "Null" | "NULL" => return Resolved::Null,
+        "true" | "True" | "TRUE" => return Resolved::Bool(true),
+        "false" | "False" | "FALSE" => return Resolved::Bool(false),
+        ".nan" | ".NaN" | ".NAN" => return Resolved::Float(f64::NAN),
+        _ => {}
+    }
+    let (neg, unsigned) = match text.as_bytes()[0] {
+        b'-' => (true, &text[1..]),
+        b'+' => (false, &text[1..]),
+        _ => (false, text),
+    };
+    if matches!(unsigned, ".inf" | ".Inf" | ".INF") {
+        return Resolved::Float(if neg {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        });
+    }
+    let radix = |digits: &str, radix: u32| {
+        if !digits.is_empty() && digits.chars().all(|c| c.is_digit(radix)) {
+            Some(i128::from_str_radix(digits, radix).map_or(Resolved::IntOverflow, Resolved::Int))
+        } else {
+            None
+        }
+    };
+    // Core schema: hex and octal ints carry no sign.
+    let based = if let Some(d) = text.strip_prefix("0x") {
+        radix(d, 16)
+    } else if let Some(d) = text.strip_prefix("0o") {
+        radix(d, 8)
+    } else {
+        None
+    };
+    if let Some(r) = based {
+        return r;
+    }
+    if !unsigned.is_empty() && unsigned.bytes().all(|b| b.is_ascii_digit()) {
+        return text.parse().map_or(Resolved::IntOverflow, Resolved::Int);
+    }
+    if is_core_float(unsigned) {
+        // Our grammar is a subset of what `f64::from_str` accepts.
+        if let Ok(f) = text.parse::<f64>() {
+            return Resolved::Float(f);
+        }
+    }
+    Resolved::Str(text)
+}
+
+/// `( \. [0-9]+ | [0-9]+ ( \. [0-9]* )? ) ( [eE] [-+]? [0-9]+ )?` (sign stripped).
+fn is_core_float(s: &str) -> bool {
+    let b = s.as_bytes();
+    let digits = |mut i: usize| {
+        let start = i;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        (i, i - start)
+    };
+    let (mut i, int_digits) = digits(0);
+    if i < b.len() && b[i] == b'.' {
+        let (j, frac_digits) = digits(i + 1);
+        if int_digits == 0 && frac_digits == 0 {
+            return false;
+        }
+        i = j;
+    } else if int_digits == 0 {
+        return false;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        i += 1;
+        if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+            i += 1;
+        }
+        let (j, exp_digits) = digits(i);
+        if exp_digits == 0 {
+            return false;
+        }
+        i = j;
+    }
+    i == b.len()
+}
+
+/// A finished node plus the bookkeeping needed to bound alias expansion.
+#[derive(Clone)]
+struct Built {
+    node: Node,
+    height: usize,
+    size: usize,
+}
+
+enum Content {
+    Seq(Vec<Node>),
+    Map {
+        entries: Vec<(Node, Node)>,
+        key: Option<Node>,
+        /// key text -> where it was first defined, for duplicate detection.
+        seen: HashMap<String, Location>,
+    },
+}
+
+struct Frame {
+    loc: Location,
+    anchor: usize,
+    /// Flow collections (`[`/`{`) get a hint on syntax errors: unclosed brackets
+    /// are reported by saphyr at EOF, far away from the bracket.
+    flow: bool,
+    height: usize,
+    size: usize,
+    content: Content,
+}
+
+struct Builder<'s> {
+    source: &'s str,
+    stack: Vec<Frame>,
+    anchors: HashMap<usize, Built>,
+    root: Option<Built>,
+    nodes: usize,
+    documents: usize,
+}
+
+fn err(loc: Location, message: impl Into<String>) -> SyntaxError {
+    SyntaxError {
+        loc,
+        message: message.into(),
+    }
+}
+
+impl Builder<'_> {
+    fn open(&mut self, span: &Span, anchor: usize, content: Content) -> Result<(), SyntaxError> {
+        let loc = Location::from_marker(&span.start);
+        if self.stack.len() >= MAX_DEPTH {
+            return Err(err(
+                loc,
+                format!("nesting deeper than {MAX_DEPTH} levels is not supported"),
+            ));
+        }
+        let flow = span.end.index() > span.start.index();
+        self.stack.push(Frame {
+            loc,
+            anchor,
+            flow,
+            height: 0,
+            size: 0,
+            content,
+        });
+        Ok(())
+    }
+
+    fn close(&mut self) -> Result<(), SyntaxError> {
+        let Some(frame) = self.stack.pop() else {
+            return Ok(());
+        };
+        let kind = match frame.content {
+            Content::Seq(items) => NodeKind::Sequence(items),
+            Content::Map { entries, .. } => NodeKind::Mapping(entries),
+        };
+        let node = Node {
+            kind,
+            loc: frame.loc,
+        };
+        let built = Built {
+            node,
+            height: frame.height + 1,
+            size: frame.size + 1,
+        };
+        self.finish(built, frame.anchor)
+    }
+
+    /// Register a completed node: remember its anchor and attach it to its parent.
+    fn finish(&mut self, built: Built, anchor: usize) -> Result<(), SyntaxError> {
+        self.nodes += 1;
+        if anchor > 0 {
+            self.anchors.insert(anchor, built.clone());
+        }
+        self.attach(built)
+    }
+
+    fn alias(&mut self, span: &Span, id: usize) -> Result<(), SyntaxError> {
+        let loc = Location::from_marker(&span.start);
+        let Some(target) = self.anchors.get(&id) else {
+            return Err(err(
+                loc,
+                "alias refers to an anchor whose node is not complete yet (recursive alias)",
+            ));
+        };
+        if self.stack.len() + target.height > MAX_DEPTH {
+            return Err(err(
+                loc,
+                format!("alias expands to nesting deeper than {MAX_DEPTH} levels"),
+            ));
+        }
+        self.nodes += target.size;
+        if self.nodes > MAX_NODES {
+            return Err(err(
+                loc,
+                format!("aliases expand to more than {MAX_NODES} nodes"),
+            ));
+        }
+        let mut built = target.clone();
+        built.node.loc = loc;
+        self.attach(built)
+    }
+
+    fn attach(&mut self, built: Built) -> Result<(), SyntaxError> {
+        let Some(frame) = self.stack.last_mut() else {
+            self.root = Some(built);
+            return Ok(());
+        };
+        frame.height = frame.height.max(built.height);
+        frame.size += built.size;
+        match &mut frame.content {
+            Content::Seq(items) => items.push(built.node),
+            Content::Map { entries, key, seen } => match key.take() {
+                Some(k) => entries.push((k, built.node)),
+                None => {
+                    let k = built.node;
+                    let text = match &k.kind {
+                        NodeKind::Null => "null",
+                        NodeKind::Scalar { text, plain } => {
+                            if *plain && text == "<<" {
+                                return Err(err(k.loc, "merge keys (`<<`) are not supported"));
+                            }
+                            text.as_str()
+                        }
+                        NodeKind::Sequence(_) | NodeKind::Mapping(_) => {
+                            return Err(err(
+                                k.loc,
+                                "mapping keys must be scalars, not sequences or mappings",
+                            ));
+                        }
+                    };
+                    if let Some(first) = seen.get(text) {
+                        let msg = format!(
+                            "duplicate key `{text}` (first defined at line {})",
+                            first.line
+                        );
+                        return Err(err(k.loc, msg));
+                    }
+                    seen.insert(text.to_owned(), k.loc);
+                    *key = Some(k);
+                }
+            },
+        }
+        Ok(())
+    }
+
+    fn event(&mut self, ev: Event<'_>, span: &Span) -> Result<(), SyntaxError> {
+        let loc = Location::from_marker(&span.start);
+        let tagged = matches!(
+            &ev,
+            Event::Scalar(_, _, _, Some(_))
+                | Event::SequenceStart(_, Some(_))
+                | Event::MappingStart(_, Some(_))
+        );
+        if tagged {
+            return Err(err(loc, "YAML tags are not supported"));
+        }
+        match ev {
+            Event::DocumentStart(_) => {
+                self.documents += 1;
+                if self.documents > 1 {
+                    return Err(err(loc, "only one YAML document per file is allowed"));
+                }
+            }
+            Event::Scalar(text, style, anchor, _) => {
+                let plain = style == ScalarStyle::Plain;
+                let implicit_null = text == "~";
+                let kind = if plain && matches!(resolve_plain(&text), Resolved::Null) {
+                    NodeKind::Null
+                } else {
+                    NodeKind::Scalar {
+                        text: text.into_owned(),
+                        plain,
+                    }
+                };
+                let built = Built {
+                    node: Node { kind, loc },
+                    height: 1,
+                    size: 1,
+                };
+                // A document that is only `---` (or `---` `...`) yields an
+                // implicit `~` that is not in the source: treat it like an empty file.
+                let empty_root = self.stack.is_empty()
+                    && plain
+                    && implicit_null
+                    && (span.start.index() == span.end.index()
+                        || self.source.chars().nth(span.start.index()) != Some('~'));
+                if !empty_root {
+                    self.finish(built, anchor)?;
+                }
+            }
+            Event::Alias(id) => self.alias(span, id)?,
+            Event::SequenceStart(anchor, _) => self.open(span, anchor, Content::Seq(Vec::new()))?,
+            Event::MappingStart(anchor, _) => {
+                let content = Content::Map {
+                    entries: Vec::new(),
+                    key: None,
+                    seen: HashMap::new(),
+                };
+                self.open(span, anchor, content)?
+            }
+            Event::SequenceEnd | Event::MappingEnd => self.close()?,
+            Event::Nothing | Event::StreamStart | Event::StreamEnd | Event::DocumentEnd => {}
+        }
+        Ok(())
+    }
+
+    /// Add the innermost open flow collection to a scanner error: saphyr
+    /// reports an unclosed `[` at the end of the file, not at the bracket.
+    fn scan_error_message(&self, info: &str) -> String {
+        let mut msg = format!("YAML syntax error: {info}");
+        if let Some(frame) = self.stack.iter().rev().find(|f| f.flow) {
+            let bracket = if matches!(frame.content, Content::Seq(_)) {
+                '['
+            } else {
+                '{'
+            };
+            msg.push_str(&format!(
+                " (inside the `{bracket}` opened at line {}, column {})",
+                frame.loc.line, frame.loc.col
+            ));
+        }
+        msg
+    }
+}
+
+/// Parse one YAML document. `Ok(None)` for an empty/whitespace/comment-only document.
+pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
+    let mut parser = Parser::new_from_str(source);
+    let mut builder = Builder {
+        source,
+        stack: Vec::new(),
+        anchors: HashMap::new(),
+        root: None,
+        nodes: 0,
+        documents: 0,
+    };
+    while let Some(next) = parser.next_event() {
+        match next {
+            Ok((ev, span)) => builder.event(ev, &span)?,
+            Err(e) => {
+                let loc = Location::from_marker(e.marker());
+                return Err(err(loc, builder.scan_error_message(e.info())));
+            }
+        }
+    }
+    Ok(builder.root.map(|b| b.node))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn at(line: usize, col: usize) -> Location {
+        Location { line, col }
+    }
+
+    fn doc(src: &str) -> Node {
+        parse(src).expect("valid YAML").expect("non-empty document")
+    }
+
+    fn syntax_err(src: &str) -> SyntaxError {
+        parse(src).expect_err("expected a syntax error")
+    }
+
+    #[test]
+    fn locations_are_one_based() {
+        let n = doc("name: demo\nbridge:\n  type: beam\n  spans: [20.0, 30]\n");
+        assert_eq!(n.loc, at(1, 1));
+        assert_eq!(n.key_loc("bridge"), Some(at(2, 1)));
+        let bridge = n.get("bridge").unwrap();
+        assert_eq!(bridge.loc, at(3, 3));
+        assert_eq!(bridge.key_loc("spans"), Some(at(4, 3)));
+        let spans = bridge.get("spans").unwrap();
+        assert_eq!(spans.loc, at(4, 10));
+        let NodeKind::Sequence(items) = &spans.kind else {
+            panic!("not a sequence")
+        };
+        assert_eq!(items[1].loc, at(4, 17));
+        assert_eq!(n.get("name").unwrap().loc, at(1, 7));
+    }
+
+    #[test]
+    fn columns_count_chars_and_crlf_is_one_break() {
+        let n = doc("a: 1\r\nbé: ü\r\nc: 3");
+        assert_eq!(n.key_loc("bé"), Some(at(2, 1)));
+        assert_eq!(n.get("bé").unwrap().loc, at(2, 5));
+        assert_eq!(n.get("c").unwrap().loc, at(3, 4));
+    }
+
+    #[test]
+    fn scalar_kinds() {
+        let n = doc("a: ~\nb: null\nc: NULL\nd:\ne: 'x'\nf: \"1\"\ng: |\n  text\nh: 12\n");
+        for k in ["a", "b", "c", "d"] {
+            assert_eq!(n.get(k).unwrap().kind, NodeKind::Null, "key {k}");
+        }
+        let scalar = |k: &str| n.get(k).unwrap().kind.clone();
+        assert_eq!(
+            scalar("e"),
+            NodeKind::Scalar {
+                text: "x".into(),
+                plain: false
+            }
+        );
+        assert_eq!(
+            scalar("f"),
+            NodeKind::Scalar {
+                text: "1".into(),
+                plain: false
+            }
+        );
+        assert_eq!(
+            scalar("g"),
+            NodeKind::Scalar {
+                text: "text\n".into(),
+                plain: false
+            }
+        );
+        assert_eq!(
+            scalar("h"),
+            NodeKind::Scalar {
+                text: "12".into(),
+                plain: true
+            }
+        );
+    }
+
+    #[test]
+    fn empty_documents_are_none() {
+        for src in [
+            "",
+            "   \n\n",
+            "# only a comment\n",
+            "---\n",
+            "--- # c\n...\n",
+        ] {
+            assert_eq!(parse(src).unwrap(), None, "{src:?}");
+        }
+        assert_eq!(parse("~").unwrap().unwrap().kind, NodeKind::Null);
+    }
+
+    #[test]
+    fn aliases_clone_the_anchored_node() {
+        let n = doc("base: &b {type: beam, spans: [1]}\ncopy: *b\nk: &s hello\nl: *s\n");
+        let base = n.get("base").unwrap();
+        let copy = n.get("copy").unwrap();
+        assert_eq!(copy.kind, base.kind);
+        assert_eq!(copy.loc, at(2, 7));
+        assert_eq!(n.get("l").unwrap().as_str(), Some("hello"));
+        assert_eq!(n.get("l").unwrap().loc, at(4, 4));
+    }
+
+    #[test]
+    fn only_one_document() {
+        let e = syntax_err("a: 1\n---\nb: 2\n");
+        assert_eq!(e.loc, at(2, 1));
+        assert_eq!(e.message, "only one YAML document per file is allowed");
+    }
+
+    #[test]
+    fn duplicate_keys() {
+        let e = syntax_err("a: 1\nb:\n  x: 1\n  y: 2\n  x: 3\n");
+        assert_eq!(e.loc, at(5, 3));
+        assert_eq!(e.message, "duplicate key `x` (first defined at line 3)");
+        let e = syntax_err("{a: 1, 'a': 2}");
+        assert_eq!(
+            (e.loc, e.message.as_str()),
+            (at(1, 8), "duplicate key `a` (first defined at line 1)")
+        );
+        // The same key in different mappings is fine.
+        doc("- x: 1\n- x: 2\n");
+    }
+
+    #[test]
+    fn unsupported_features() {
+        let e = syntax_err("a: 1\n? [x]\n: 2\n");
+        assert_eq!(e.loc, at(2, 3));
+        assert!(e.message.contains("keys must be scalars"), "{}", e.message);
+        let e = syntax_err("a: !foo x\n");
+        assert_eq!(
+            (e.loc, e.message.as_str()),
+            (at(1, 9), "YAML tags are not supported")
+        );
+        let e = syntax_err("a: !!str 1\n");
+        assert_eq!(e.message, "YAML tags are not supported");
+        let e = syntax_err("- !!map {a: 1}\n");
+        assert_eq!(e.message, "YAML tags are not supported");
+        let e = syntax_err("base: &b {x: 1}\nc:\n  <<: *b\n");
+        assert_eq!(
+            (e.loc, e.message.as_str()),
+            (at(3, 3), "merge keys (`<<`) are not supported")
+        );
+        // A quoted `<<` is an ordinary key.
+        assert!(doc("'<<': 1").get("<<").is_some());
+    }
+
+    #[test]
+    fn scanner_errors_are_located() {
+        let e = syntax_err("a: [1, 2\nb: 3\n");
+        let want = "YAML syntax error: illegal placement of ':' indicator \
+                    (inside the `[` opened at line 1, column 4)";
+        assert_eq!((e.loc, e.message.as_str()), (at(2, 2), want));
+        let e = syntax_err("a: [1, 2\n");
+        let want = "YAML syntax error: while parsing a flow sequence, expected ',' or ']' \
+                    (inside the `[` opened at line 1, column 4)";
+        assert_eq!((e.loc, e.message.as_str()), (at(2, 1), want));
+        let e = syntax_err("a: b: c\n");
+        assert_eq!(e.loc, at(1, 5));
+        assert_eq!(
+            e.message,
+            "YAML syntax error: mapping values are not allowed in this context"
+        );
+        let e = syntax_err("a: *nope\n");
+        assert_eq!(e.loc, at(1, 4));
+        let e = syntax_err("- &a [*a]\n");
+        assert!(e.message.contains("recursive alias"), "{}", e.message);
+    }
+
+    #[test]
+    fn nesting_and_alias_bombs_are_bounded() {
+        let deep = format!("{}x", "- ".repeat(10_000));
+        let e = syntax_err(&deep);
+        assert!(e.message.contains("nesting deeper"), "{}", e.message);
+        // saphyr has its own (smaller) limit for flow collections.
+        let e = syntax_err(&"[".repeat(10_000));
+        assert!(e.message.contains("recursion limit"), "{}", e.message);
+        let mut chain = String::from("a0: &a0 [0]\n");
+        for i in 1..200 {
+            chain.push_str(&format!("a{i}: &a{i} [*a{}]\n", i - 1));
+        }
+        assert!(syntax_err(&chain).message.contains("nesting deeper"));
+        let mut bomb = String::from("a: &a [x, x, x, x, x, x, x, x, x, x]\n");
+        for c in 'b'..='j' {
+            let prev = (c as u8 - 1) as char;
+            bomb.push_str(&format!("{c}: &{c} [*{prev}, *{prev}, *{prev}, *{prev}, *{prev}, *{prev}, *{prev}, *{prev}, *{prev}, *{prev}]\n"));
+        }
+        assert!(syntax_err(&bomb).message.contains("more than"));
+    }
+
+    #[test]
+    fn locate_paths() {
+        let n = doc("bridge:\n  type: beam\n  spans: [1, 2]\nvehicles:\n  - speed: 3\n");
+        use PathSeg::{Index, Key};
+        assert_eq!(n.locate(&[]), at(1, 1));
+        assert_eq!(
+            n.locate(&[Key("bridge"), Key("spans"), Index(1)]),
+            at(3, 14)
+        );
+        assert_eq!(
+            n.locate(&[Key("vehicles"), Index(0), Key("speed")]),
+            at(5, 12)
+        );
+        // Missing final key: the enclosing mapping.
+        assert_eq!(
+            n.locate(&[Key("vehicles"), Index(0), Key("mass")]),
+            at(5, 5)
+        );
+        // Missing index and wrong kinds stop where the path breaks.
+        assert_eq!(n.locate(&[Key("vehicles"), Index(7), Key("x")]), at(5, 3));
+        assert_eq!(n.locate(&[Key("bridge"), Index(0)]), at(2, 3));
+        assert_eq!(n.get("nope"), None);
+        assert_eq!(n.key_loc("nope"), None);
+    }
+
+    #[test]
+    fn core_schema_resolution() {
+        let cases: &[(&str, Resolved)] = &[
+            ("12", Resolved::Int(12)),
+            ("-3", Resolved::Int(-3)),
+            ("+1", Resolved::Int(1)),
+            ("007", Resolved::Int(7)),
+            ("0x1F", Resolved::Int(31)),
+            ("0o17", Resolved::Int(15)),
+            ("1.5", Resolved::Float(1.5)),
+            ("1e5", Resolved::Float(1e5)),
+            ("1.0e-4", Resolved::Float(1e-4)),
+            (".5", Resolved::Float(0.5)),
+            ("-.5E+1", Resolved::Float(-5.0)),
+            ("2.", Resolved::Float(2.0)),
+            (".inf", Resolved::Float(f64::INFINITY)),
+            ("-.Inf", Resolved::Float(f64::NEG_INFINITY)),
+            ("True", Resolved::Bool(true)),
+            ("FALSE", Resolved::Bool(false)),
+            ("Null", Resolved::Null),
+            (
+                "99999999999999999999999999999999999999999",
+                Resolved::IntOverflow,
+            ),
+            ("yes", Resolved::Str("yes")),
+            ("0x", Resolved::Str("0x")),
+            ("0x+1", Resolved::Str("0x+1")),
+            ("-0x1", Resolved::Str("-0x1")),
+            ("1e", Resolved::Str("1e")),
+            (".", Resolved::Str(".")),
+            ("inf", Resolved::Str("inf")),
+            ("nan", Resolved::Str("nan")),
+            ("1_000", Resolved::Str("1_000")),
+            ("tRUE", Resolved::Str("tRUE")),
+            ("-", Resolved::Str("-")),
+        ];
+        for (text, want) in cases {
+            assert_eq!(resolve_plain(text), *want, "{text}");
+        }
+        assert!(matches!(resolve_plain(".NaN"), Resolved::Float(f) if f.is_nan()));
+    }
+
+    #[test]
+    fn to_json_uses_core_schema() {
+        let n = doc(concat!(
+            "a: [1, -2, 0x10, 1.5, 1e3, .inf, -.inf, .nan, 1e400]\n",
+            "b: {t: true, f: False, n: ~, e: , s: '12', p: hello, big: 18446744073709551615}\n",
+            "c: 99999999999999999999999\n",
+        ));
+        let want = json!({
+            "a": [1, -2, 16, 1.5, 1000.0, ".inf", "-.inf", ".nan", "1e400"],
+            "b": {"t": true, "f": false, "n": null, "e": null, "s": "12", "p": "hello",
+                  "big": 18446744073709551615u64},
+            "c": 1e23,
+        });
+        assert_eq!(n.to_json(), want);
+    }
+
+    /// Tiny deterministic PRNG so the fuzz tests need no extra dependency.
+    fn lcg(state: &mut u64) -> u64 {
+        *state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        *state >> 33
+    }
+
+    #[test]
+    fn fuzz_random_bytes_never_panic() {
+        let alphabet = b"ab:-[]{},&*!|>'\"#?~ \n\t\r.0123456789e%<@`";
+        let mut state = 42;
+        for _ in 0..3000 {
+            let len = (lcg(&mut state) % 60) as usize;
+            let bytes: Vec<u8> = (0..len)
+                .map(|_| {
+                    let r = lcg(&mut state) as usize;
+                    if r.is_multiple_of(10) {
+                        (r >> 8) as u8
+                    } else {
+                        alphabet[(r >> 8) % alphabet.len()]
+                    }
+                })
+                .collect();
+            let text = String::from_utf8_lossy(&bytes);
+            if let Ok(Some(n)) = parse(&text) {
+                let _ = n.to_json();
+            }
+        }
+    }
+
+    #[test]
+    fn fuzz_truncated_documents_never_panic() {
+        let src = "name: \"démo\"\nbridge: &b\n  type: beam # comment\n  spans: [20.0, {a: 1}]\n\
+                   vehicles:\n  - type: oscillator\n    speed: |\n      x\n  - *b\n...\n";
+        for (i, _) in src.char_indices() {
+            let _ = parse(&src[..i]);
+            let _ = parse(&src[i..]);
+        }
+    }
+}

@@ -1,0 +1,100 @@
+//! Time integration of the vehicle–bridge system.
+//!
+//! The solver meets bridge and vehicles only through the contact points:
+//! at each step both subsystems are advanced by Newmark with the contact
+//! forces as unknowns, the wheel-to-surface gaps are expressed through those
+//! forces (the step's contact compliance), and the contact model closes the
+//! system. [`coupled`] enforces permanent contact.
+
+pub mod coupled;
+pub mod dense;
+pub mod newmark;
+
+use nalgebra::DVector;
+use thiserror::Error;
+
+use crate::model::Model;
+
+/// Errors of the solve stage.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum SolveError {
+    /// The state became non-finite.
+    #[error("the solution diverged at t = {time:.6} s (step {step}; {positions}): {cause}")]
+    Diverged {
+        /// Time, s.
+        time: f64,
+        /// Step number.
+        step: usize,
+        /// Vehicle front positions, formatted.
+        positions: String,
+        /// Likely cause.
+        cause: String,
+    },
+    /// The contact compliance matrix is singular.
+    #[error("the contact system is singular at t = {time:.6} s: {reason}")]
+    SingularContact {
+        /// Time, s.
+        time: f64,
+        /// Explanation.
+        reason: String,
+    },
+}
+
+/// Dynamic state of one vehicle.
+#[derive(Debug, Clone)]
+pub struct VehicleState {
+    /// Displacements, m (rad), absolute (including the static sag).
+    pub displacement: DVector<f64>,
+    /// Velocities, m/s.
+    pub velocity: DVector<f64>,
+    /// Accelerations, m/s².
+    pub acceleration: DVector<f64>,
+    /// Static equilibrium displacements on level ground, m: the reference
+    /// from which recorded vehicle displacements are measured.
+    pub static_displacement: DVector<f64>,
+}
+
+/// What an observer sees after each step (and at t = 0).
+#[derive(Debug)]
+pub struct StepView<'a> {
+    /// Step number, 0 for the initial state.
+    pub step: usize,
+    /// Time, s.
+    pub time: f64,
+    /// Modal displacements q, √kg·m.
+    pub modal_displacement: &'a [f64],
+    /// Modal accelerations q̈.
+    pub modal_acceleration: &'a [f64],
+    /// Vehicle states.
+    pub vehicles: &'a [VehicleState],
+    /// Contact force per flattened wheel, N, compression positive.
+    pub contact_forces: &'a [f64],
+    /// Position of each flattened wheel, m.
+    pub wheel_positions: &'a [f64],
+}
+
+/// Receives every step's state (the record stage).
+pub trait Observer {
+    /// Called at t = 0 and after every step.
+    fn observe(&mut self, view: &StepView<'_>);
+}
+
+/// Progress reporting: called with (steps done, total steps) now and then.
+pub type Progress<'a> = &'a mut dyn FnMut(usize, usize);
+
+/// Formats vehicle front positions at time `t` for error messages.
+pub(crate) fn describe_positions(model: &Model, t: f64) -> String {
+    model
+        .vehicles
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            format!(
+                "vehicle {} front at x = {:.3} m",
+                i + 1,
+                v.front_position(t)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}

@@ -1,0 +1,148 @@
+//! Vehicles reduced to one form: mass, damping and stiffness matrices over the
+//! vehicle's degrees of freedom, and the wheels that touch the surface.
+//!
+//! A vehicle never knows which bridge it is on: the solver meets it only
+//! through its wheels (position along the bridge and, for wheels with a
+//! degree of freedom, which DOF follows the surface).
+
+pub mod moving_force;
+pub mod oscillator;
+
+use nalgebra::{DMatrix, DVector};
+use thiserror::Error;
+
+use crate::scenario::resolved::Vehicle;
+
+/// Errors while building a vehicle model.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum VehicleError {
+    /// The vehicle cannot stand in static equilibrium on its wheels.
+    #[error("vehicle {vehicle}: no static equilibrium on level ground (is every body supported?)")]
+    NoStaticEquilibrium {
+        /// Vehicle number from 1.
+        vehicle: usize,
+    },
+}
+
+/// How a wheel interacts with the surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum WheelKind {
+    /// A constant downward load, N (moving force; no inertia).
+    Load(f64),
+    /// The vehicle DOF (index) that is the wheel's vertical displacement; its
+    /// contact force is found by the contact model.
+    Dof(usize),
+}
+
+/// One wheel (or axle) of a vehicle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Wheel {
+    /// Distance behind the vehicle's front axle, m (≥ 0).
+    pub offset: f64,
+    /// Load or degree of freedom.
+    pub kind: WheelKind,
+}
+
+/// A vehicle as the solvers see it.
+///
+/// Equations of motion, vertical DOFs positive upward:
+/// M ü + C u̇ + K u = f_g + Σ_w e_w λ_w, where f_g are the gravity loads
+/// (N, negative), λ_w the contact force of wheel w (N, compression positive,
+/// pushing the wheel up) and e_w the unit vector of the wheel's DOF.
+#[derive(Debug, Clone)]
+pub struct VehicleModel {
+    /// Names of the DOFs, as used by `record: … dof:`.
+    pub dof_names: Vec<&'static str>,
+    /// Mass matrix, kg (kg·m² for rotations).
+    pub mass: DMatrix<f64>,
+    /// Damping matrix, N·s/m.
+    pub damping: DMatrix<f64>,
+    /// Stiffness matrix, N/m.
+    pub stiffness: DMatrix<f64>,
+    /// Gravity loads on the DOFs, N (negative: downward).
+    pub gravity_load: DVector<f64>,
+    /// Wheels, front first.
+    pub wheels: Vec<Wheel>,
+    /// Constant speed, m/s.
+    pub speed: f64,
+    /// Time the front axle reaches the entrance x = 0, s.
+    pub entry_time: f64,
+}
+
+impl VehicleModel {
+    /// Builds the model of a resolved vehicle.
+    pub fn build(vehicle: &Vehicle, gravity: f64) -> Self {
+        match vehicle {
+            Vehicle::MovingForce(v) => moving_force::build(v),
+            Vehicle::Oscillator(v) => oscillator::build(v, gravity),
+        }
+    }
+
+    /// Number of degrees of freedom.
+    pub fn dofs(&self) -> usize {
+        self.dof_names.len()
+    }
+
+    /// Front-axle position at time `t`, m.
+    #[inline]
+    pub fn front_position(&self, t: f64) -> f64 {
+        self.speed * (t - self.entry_time)
+    }
+
+    /// Position of wheel `w` at time `t`, m.
+    #[inline]
+    pub fn wheel_position(&self, w: usize, t: f64) -> f64 {
+        self.front_position(t) - self.wheels[w].offset
+    }
+
+    /// Time at which the last wheel leaves a bridge of length `length`, s.
+    pub fn exit_time(&self, length: f64) -> f64 {
+        let rear = self.wheels.iter().map(|w| w.offset).fold(0.0, f64::max);
+        self.entry_time + (length + rear) / self.speed
+    }
+
+    /// Static equilibrium on rigid level ground: DOF displacements u₀ (m) and
+    /// the wheel contact forces λ₀ (N), from
+    /// [K −E; Eᵀ 0] [u₀; λ₀] = [f_g; 0] (wheel DOFs held at zero).
+    /// Load wheels carry their load. `number` is the vehicle number for errors.
+    pub fn static_equilibrium(
+        &self,
+        number: usize,
+    ) -> Result<(DVector<f64>, Vec<f64>), VehicleError> {
+        let n = self.dofs();
+        let contact_dofs: Vec<(usize, usize)> = self
+            .wheels
+            .iter()
+            .enumerate()
+            .filter_map(|(w, wheel)| match wheel.kind {
+                WheelKind::Dof(d) => Some((w, d)),
+                WheelKind::Load(_) => None,
+            })
+            .collect();
+        let size = n + contact_dofs.len();
+        let mut system = DMatrix::<f64>::zeros(size, size);
+        let mut rhs = DVector::<f64>::zeros(size);
+        system.view_mut((0, 0), (n, n)).copy_from(&self.stiffness);
+        rhs.rows_mut(0, n).copy_from(&self.gravity_load);
+        for (k, &(_, dof)) in contact_dofs.iter().enumerate() {
+            system[(dof, n + k)] = -1.0;
+            system[(n + k, dof)] = 1.0;
+        }
+        let solution = system
+            .lu()
+            .solve(&rhs)
+            .filter(|s| s.iter().all(|v| v.is_finite()))
+            .ok_or(VehicleError::NoStaticEquilibrium { vehicle: number })?;
+        let displacement = solution.rows(0, n).into_owned();
+        let mut forces = vec![0.0; self.wheels.len()];
+        for (w, wheel) in self.wheels.iter().enumerate() {
+            if let WheelKind::Load(load) = wheel.kind {
+                forces[w] = load;
+            }
+        }
+        for (k, &(w, _)) in contact_dofs.iter().enumerate() {
+            forces[w] = solution[n + k];
+        }
+        Ok((displacement, forces))
+    }
+}

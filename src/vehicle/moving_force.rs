@@ -1,0 +1,36 @@
+//! Moving constant forces: axle loads at fixed spacings, no inertia
+//! (Frýba, Vibration of Solids and Structures under Moving Loads, ch. 1).
+
+use nalgebra::{DMatrix, DVector};
+
+use super::{VehicleModel, Wheel, WheelKind};
+use crate::scenario::resolved::MovingForce;
+
+/// A load set has no degrees of freedom; each axle is a [`WheelKind::Load`].
+pub fn build(v: &MovingForce) -> VehicleModel {
+    let mut offset = 0.0;
+    let wheels = v
+        .loads
+        .iter()
+        .enumerate()
+        .map(|(i, &load)| {
+            if i > 0 {
+                offset += v.axle_spacings[i - 1];
+            }
+            Wheel {
+                offset,
+                kind: WheelKind::Load(load),
+            }
+        })
+        .collect();
+    VehicleModel {
+        dof_names: Vec::new(),
+        mass: DMatrix::zeros(0, 0),
+        damping: DMatrix::zeros(0, 0),
+        stiffness: DMatrix::zeros(0, 0),
+        gravity_load: DVector::zeros(0),
+        wheels,
+        speed: v.speed,
+        entry_time: v.entry_time,
+    }
+}

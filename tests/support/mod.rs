@@ -1,0 +1,3 @@
+//! Independent reference solutions shared by the physics tests.
+
+pub mod reference;
