@@ -30,6 +30,18 @@ pub fn shape_functions(xi: f64, h: f64) -> ([f64; 4], [f64; 4]) {
     (values, slopes)
 }
 
+/// Second x-derivatives of the Hermite shape functions (1/m² for the value
+/// dofs, 1/m for the rotation dofs).
+#[inline]
+pub fn shape_curvatures(xi: f64, h: f64) -> [f64; 4] {
+    [
+        (-6.0 + 12.0 * xi) / (h * h),
+        (-4.0 + 6.0 * xi) / h,
+        (6.0 - 12.0 * xi) / (h * h),
+        (-2.0 + 6.0 * xi) / h,
+    ]
+}
+
 /// A field with `components` values per node on a beam mesh.
 #[derive(Debug, Clone)]
 pub struct HermiteField {
@@ -146,6 +158,41 @@ impl HermiteField {
         }
     }
 
+    /// Writes values, slopes (1/m) and curvatures (d²/dx², 1/m²) at `x`;
+    /// zeros off the mesh. The curvature of a Hermite cubic is linear within
+    /// an element and may jump at nodes; at a node the element to the right is used.
+    #[inline]
+    pub fn values_slopes_curvatures_at(
+        &self,
+        x: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        let Some((element, xi, h)) = self.locate(x) else {
+            values.fill(0.0);
+            slopes.fill(0.0);
+            curvatures.fill(0.0);
+            return;
+        };
+        let (n, dn) = shape_functions(xi, h);
+        let ddn = shape_curvatures(xi, h);
+        let k = self.components;
+        let base = 2 * element * k;
+        for c in 0..k {
+            let dofs = [
+                self.nodal[base + c],
+                self.nodal[base + k + c],
+                self.nodal[base + 2 * k + c],
+                self.nodal[base + 3 * k + c],
+            ];
+            values[c] = n[0] * dofs[0] + n[1] * dofs[1] + n[2] * dofs[2] + n[3] * dofs[3];
+            slopes[c] = dn[0] * dofs[0] + dn[1] * dofs[1] + dn[2] * dofs[2] + dn[3] * dofs[3];
+            curvatures[c] =
+                ddn[0] * dofs[0] + ddn[1] * dofs[1] + ddn[2] * dofs[2] + ddn[3] * dofs[3];
+        }
+    }
+
     /// Value of a single-component field at `x` (0 off the mesh).
     #[inline]
     pub fn value_at(&self, x: f64) -> f64 {
@@ -163,6 +210,7 @@ mod tests {
     /// A cubic is reproduced exactly by Hermite interpolation.
     #[test]
     fn cubic_is_exact() {
+        let ddf = |x: f64| 1.8 * x - 4.0;
         let f = |x: f64| 0.3 * x * x * x - 2.0 * x * x + x - 4.0;
         let df = |x: f64| 0.9 * x * x - 4.0 * x + 1.0;
         let field = HermiteField::from_fn(vec![0.0, 1.5, 2.0, 4.0], 1, |n, _| {
@@ -175,6 +223,9 @@ mod tests {
             field.values_and_slopes_at(x, &mut v, &mut s);
             assert!((v[0] - f(x)).abs() < 1e-12, "x={x}");
             assert!((s[0] - df(x)).abs() < 1e-12, "x={x}");
+            let mut c = [0.0];
+            field.values_slopes_curvatures_at(x, &mut v, &mut s, &mut c);
+            assert!((c[0] - ddf(x)).abs() < 1e-11, "x={x}");
         }
         assert_eq!(field.value_at(-0.1), 0.0);
         assert_eq!(field.value_at(4.1), 0.0);

@@ -132,6 +132,20 @@ impl ModalBridge {
         self.shapes.values_and_slopes_at(x, values, slopes);
     }
 
+    /// Mode values, slopes and curvatures d²φᵢ/dx² (1/(m²√kg)) at `x`; zero
+    /// off the bridge.
+    #[inline]
+    pub fn mode_values_slopes_curvatures(
+        &self,
+        x: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        self.shapes
+            .values_slopes_curvatures_at(x, values, slopes, curvatures);
+    }
+
     /// Static deflection influence line of point `x_point`: G(ξ), m/N, the
     /// downward deflection at `x_point` due to a unit downward load at ξ,
     /// from the full finite-element stiffness (no modal truncation).

@@ -541,37 +541,35 @@ fn resolve_records(
             }
             wheel = Some(w);
         }
-        if is_vehicle_dof {
-            if let Some(v) = vehicle {
-                let names = dof_names(&vehicles[v - 1]);
-                match &r.dof {
-                    None if names.is_empty() => ck.error(
-                        &at,
+        if let (true, Some(v)) = (is_vehicle_dof, vehicle) {
+            let names = dof_names(&vehicles[v - 1]);
+            match &r.dof {
+                None if names.is_empty() => ck.error(
+                    &at,
+                    format!(
+                        "vehicle {v} ({}) has no degrees of freedom",
+                        vehicles[v - 1].type_name()
+                    ),
+                ),
+                None => ck.error(
+                    &at,
+                    format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
+                ),
+                Some(d) if !names.contains(&d.as_str()) => ck.error(
+                    &format!("{at}.dof"),
+                    if names.is_empty() {
                         format!(
                             "vehicle {v} ({}) has no degrees of freedom",
                             vehicles[v - 1].type_name()
-                        ),
-                    ),
-                    None => ck.error(
-                        &at,
-                        format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
-                    ),
-                    Some(d) if !names.contains(&d.as_str()) => ck.error(
-                        &format!("{at}.dof"),
-                        if names.is_empty() {
-                            format!(
-                                "vehicle {v} ({}) has no degrees of freedom",
-                                vehicles[v - 1].type_name()
-                            )
-                        } else {
-                            format!(
-                                "unknown DOF `{d}` of vehicle {v}; expected one of {}",
-                                names.join(", ")
-                            )
-                        },
-                    ),
-                    _ => {}
-                }
+                        )
+                    } else {
+                        format!(
+                            "unknown DOF `{d}` of vehicle {v}; expected one of {}",
+                            names.join(", ")
+                        )
+                    },
+                ),
+                _ => {}
             }
         }
         out.push(Record {

@@ -1,29 +1,28 @@
 //! Coupled vehicle–bridge integration with permanent wheel contact.
 //!
-//! Per Newmark step (constants in [`super::newmark`]):
-//! 1. Predictors without contact forces: bridge q*ᵢ = R̂ᵢ/k̂ᵢ with the diagonal
-//!    modal effective stiffness k̂ᵢ = ωᵢ² + a₀ + 2a₁ζᵢωᵢ and the moving loads in
-//!    R̂; each vehicle u* = K̂ᵥ⁻¹ R̂ᵥ.
-//! 2. With contact forces λ (compression positive) the end-of-step states are
-//!    q = q* − D Φᵀλ (D = diag(1/k̂ᵢ), Φ the mode values at the wheels) and
-//!    u = u* + Hλ (H = K̂ᵥ⁻¹E, E the wheel DOF selector), so the gaps
-//!    g = u_w − Φq − r are affine in λ: g = g* + Wλ with the contact
-//!    compliance W = EᵀH + ΦDΦᵀ (symmetric positive definite, m/N).
-//! 3. Permanent contact: g = 0, i.e. Wλ = −g*, solved by Cholesky.
-//! This is the Lagrange-multiplier form of the LCP separation paper's
-//! uncoupled subsystems (its Section 3) with equality instead of
-//! complementarity, so the unilateral models reuse steps 1–2 unchanged.
-//! Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) + O(wheels³); no allocation.
+//! The wheel DOFs are eliminated by the contact kinematics, as in the
+//! "traditional permanent contact model" of the LCP separation paper
+//! (Section 2) and Yang & Yau (1997): a wheel at x(t) = v t + x₀ on a deck
+//! with deflection w = Σ φᵢ(x) qᵢ and roughness r(x) moves with
+//! u_w = φ·q + r,  u̇_w = φ·q̇ + v(φ′·q + r′),
+//! ü_w = φ·q̈ + 2v φ′·q̇ + v²(φ″·q + r″).
+//! Newmark (average acceleration by default) advances the modal coordinates q
+//! and the vehicles' free DOFs together. Per step the unknowns are condensed
+//! onto the contact forces λ (compression positive): the bridge gives
+//! q = q* − DΦᵀλ with D = diag(1/k̂ᵢ), k̂ᵢ = ωᵢ² + a₀ + 2a₁ζᵢωᵢ, so every
+//! wheel's kinematics is affine in λ; each vehicle's wheel rows
+//! ([`super::partition`]) then close the system (I − A)λ = b, one small
+//! dense solve per step. Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) +
+//! O(wheels³); nothing is allocated in the loop.
 
-use nalgebra::{DMatrix, DVector};
-
-use super::dense::cholesky_solve;
+use super::dense::lu_solve;
 use super::newmark::Newmark;
+use super::partition::Partition;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
-/// A wheel whose contact force is an unknown of the step.
+/// A wheel that rides the surface through a vehicle DOF.
 #[derive(Debug, Clone, Copy)]
 struct ContactWheel {
     /// Flattened wheel index.
@@ -32,23 +31,39 @@ struct ContactWheel {
     vehicle: usize,
     /// The wheel's DOF in its vehicle.
     dof: usize,
-    /// Column of this wheel in its vehicle's H.
-    column: usize,
+    /// Vehicle speed, m/s.
+    speed: f64,
 }
 
-/// Per-vehicle constant step matrices.
+/// Mode shape data of one contact point at the current step.
 #[derive(Debug, Clone)]
-struct VehicleStep {
-    /// K̂⁻¹, the inverse effective stiffness, m/N.
-    effective_flexibility: DMatrix<f64>,
-    /// H = K̂⁻¹E: DOF response to a unit contact force at each contact wheel, m/N.
-    contact_response: DMatrix<f64>,
-    /// Work vectors: effective load R̂ and the history combinations.
-    effective_load: DVector<f64>,
-    inertia_history: DVector<f64>,
-    damping_history: DVector<f64>,
-    /// Predictor u*.
-    predictor: DVector<f64>,
+struct ContactShapes {
+    values: Vec<f64>,
+    slopes: Vec<f64>,
+    curvatures: Vec<f64>,
+    /// φ/k̂, elementwise.
+    scaled: Vec<f64>,
+    /// P₁ = a₁φ + vφ′ and P₂ = a₀φ + 2va₁φ′ + v²φ″: the velocity and
+    /// acceleration rows acting on q_{n+1}.
+    velocity_row: Vec<f64>,
+    acceleration_row: Vec<f64>,
+}
+
+impl ContactShapes {
+    fn new(modes: usize) -> Self {
+        Self {
+            values: vec![0.0; modes],
+            slopes: vec![0.0; modes],
+            curvatures: vec![0.0; modes],
+            scaled: vec![0.0; modes],
+            velocity_row: vec![0.0; modes],
+            acceleration_row: vec![0.0; modes],
+        }
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// Integrates the model with permanent contact, calling `observer` at t = 0
@@ -62,7 +77,7 @@ pub fn run(
     let bridge = &model.bridge;
     let modes = bridge.mode_count();
 
-    // Bridge modal effective stiffness and damping coefficients 2ζω.
+    // Bridge: 2ζω and the modal effective flexibility 1/k̂.
     let modal_damping: Vec<f64> = bridge
         .circular_frequencies
         .iter()
@@ -76,64 +91,54 @@ pub fn run(
         .map(|(w, c)| 1.0 / (w * w + nm.a0 + nm.a1 * c))
         .collect();
 
-    // Contact wheels and load wheels.
-    let mut contacts = Vec::new();
+    // Contact wheels, load wheels, and each vehicle's partition.
+    let mut contacts: Vec<ContactWheel> = Vec::new();
     let mut load_wheels = Vec::new();
+    let mut wheel_dofs: Vec<Vec<usize>> = vec![Vec::new(); model.vehicles.len()];
     for (flat, r) in model.wheels.iter().enumerate() {
-        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
+        let vehicle = &model.vehicles[r.vehicle];
+        match vehicle.wheels[r.wheel].kind {
             WheelKind::Dof(dof) => {
-                let column = contacts
-                    .iter()
-                    .filter(|c: &&ContactWheel| c.vehicle == r.vehicle)
-                    .count();
                 contacts.push(ContactWheel {
                     wheel: flat,
                     vehicle: r.vehicle,
                     dof,
-                    column,
+                    speed: vehicle.speed,
                 });
+                wheel_dofs[r.vehicle].push(dof);
             }
             WheelKind::Load(load) => load_wheels.push((flat, load)),
         }
     }
     let nc = contacts.len();
+    // Global contact index of each vehicle's local wheels.
+    let contact_of: Vec<Vec<usize>> = (0..model.vehicles.len())
+        .map(|v| (0..nc).filter(|&c| contacts[c].vehicle == v).collect())
+        .collect();
 
-    // Vehicle states (static equilibrium on level ground) and step matrices.
     let mut states = Vec::with_capacity(model.vehicles.len());
-    let mut steps = Vec::with_capacity(model.vehicles.len());
+    let mut partitions = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
         let n = vehicle.dofs();
         let (static_displacement, _) = vehicle
             .static_equilibrium(v + 1)
             .expect("static equilibrium was checked when the model was built");
-        let effective = &vehicle.stiffness + &vehicle.mass * nm.a0 + &vehicle.damping * nm.a1;
-        let effective_flexibility =
-            effective
-                .try_inverse()
-                .ok_or_else(|| SolveError::SingularContact {
-                    time: 0.0,
-                    reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-                })?;
-        let vehicle_contacts: Vec<&ContactWheel> =
-            contacts.iter().filter(|c| c.vehicle == v).collect();
-        let mut contact_response = DMatrix::zeros(n, vehicle_contacts.len());
-        for c in &vehicle_contacts {
-            contact_response.set_column(c.column, &effective_flexibility.column(c.dof));
-        }
+        let partition = Partition::new(vehicle, wheel_dofs[v].clone(), &nm).ok_or_else(|| {
+            SolveError::SingularContact {
+                time: 0.0,
+                reason: format!(
+                    "vehicle {} has a singular effective stiffness once its wheels are held",
+                    v + 1
+                ),
+            }
+        })?;
         states.push(VehicleState {
             displacement: static_displacement.clone(),
-            velocity: DVector::zeros(n),
-            acceleration: DVector::zeros(n),
+            velocity: nalgebra::DVector::zeros(n),
+            acceleration: nalgebra::DVector::zeros(n),
             static_displacement,
         });
-        steps.push(VehicleStep {
-            effective_flexibility,
-            contact_response,
-            effective_load: DVector::zeros(n),
-            inertia_history: DVector::zeros(n),
-            damping_history: DVector::zeros(n),
-            predictor: DVector::zeros(n),
-        });
+        partitions.push(partition);
     }
 
     // Bridge state and work arrays.
@@ -141,9 +146,14 @@ pub fn run(
     let mut qd = vec![0.0; modes];
     let mut qdd = vec![0.0; modes];
     let mut q_star = vec![0.0; modes];
+    let mut inertia_history = vec![0.0; modes];
+    let mut damping_history = vec![0.0; modes];
     let mut phi_work = vec![0.0; modes];
-    let mut phi_contacts = vec![0.0; nc * modes];
-    let mut compliance = vec![0.0; nc * nc];
+    let mut shapes: Vec<ContactShapes> = (0..nc).map(|_| ContactShapes::new(modes)).collect();
+    // Wheel kinematics b + Sλ: displacement, velocity, acceleration.
+    let mut base = vec![[0.0f64; 3]; nc];
+    let mut sens = vec![[0.0f64; 3]; nc * nc];
+    let mut system = vec![0.0; nc * nc];
     let mut lambda = vec![0.0; nc];
     let nw = model.wheels.len();
     let mut contact_forces = model.static_wheel_loads.clone();
@@ -166,10 +176,11 @@ pub fn run(
             *x = model.wheel_position(w, t);
         }
 
-        // 1. Bridge predictor: R̂ = F + inertia and damping history; F from loads.
+        // Bridge predictor q* = (hₐ + 2ζω h_v + F_loads)/k̂.
         for i in 0..modes {
-            q_star[i] = nm.inertia_history(q[i], qd[i], qdd[i])
-                + modal_damping[i] * nm.damping_history(q[i], qd[i], qdd[i]);
+            inertia_history[i] = nm.inertia_history(q[i], qd[i], qdd[i]);
+            damping_history[i] = nm.damping_history(q[i], qd[i], qdd[i]);
+            q_star[i] = inertia_history[i] + modal_damping[i] * damping_history[i];
         }
         for &(flat, load) in &load_wheels {
             let x = wheel_positions[flat];
@@ -184,93 +195,119 @@ pub fn run(
             q_star[i] *= modal_flexibility[i];
         }
 
-        // Vehicle predictors u* = K̂⁻¹ (f_g + M h_m + C h_c).
-        for ((vehicle, state), vs) in model.vehicles.iter().zip(&states).zip(steps.iter_mut()) {
-            for k in 0..vehicle.dofs() {
-                let (u, v, a) = (
-                    state.displacement[k],
-                    state.velocity[k],
-                    state.acceleration[k],
-                );
-                vs.inertia_history[k] = nm.inertia_history(u, v, a);
-                vs.damping_history[k] = nm.damping_history(u, v, a);
-            }
-            vs.effective_load.copy_from(&vehicle.gravity_load);
-            vs.effective_load
-                .gemv(1.0, &vehicle.mass, &vs.inertia_history, 1.0);
-            vs.effective_load
-                .gemv(1.0, &vehicle.damping, &vs.damping_history, 1.0);
-            vs.predictor
-                .gemv(1.0, &vs.effective_flexibility, &vs.effective_load, 0.0);
-        }
-
-        // 2. Gaps without contact forces and the contact compliance W.
+        // Wheel kinematics at λ = 0 and their sensitivities to λ.
         for (c, contact) in contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
-            let phi = &mut phi_contacts[c * modes..(c + 1) * modes];
-            bridge.mode_values(x, phi);
-            let bridge_w: f64 = phi.iter().zip(&q_star).map(|(p, q)| p * q).sum();
-            lambda[c] = -(steps[contact.vehicle].predictor[contact.dof]
-                - bridge_w
-                - model.profile.elevation(x));
+            let v = contact.speed;
+            let s = &mut shapes[c];
+            bridge.mode_values_slopes_curvatures(
+                x,
+                &mut s.values,
+                &mut s.slopes,
+                &mut s.curvatures,
+            );
+            for i in 0..modes {
+                s.scaled[i] = s.values[i] * modal_flexibility[i];
+                s.velocity_row[i] = nm.a1 * s.values[i] + v * s.slopes[i];
+                s.acceleration_row[i] =
+                    nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
+            }
+            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            base[c] = [
+                dot(&s.values, &q_star) + r,
+                dot(&s.velocity_row, &q_star) - dot(&s.values, &damping_history) + v * dr,
+                dot(&s.acceleration_row, &q_star)
+                    - dot(&s.values, &inertia_history)
+                    - 2.0 * v * dot(&s.slopes, &damping_history)
+                    + v * v * ddr,
+            ];
         }
-        for a in 0..nc {
-            for b in 0..=a {
-                let pa = &phi_contacts[a * modes..(a + 1) * modes];
-                let pb = &phi_contacts[b * modes..(b + 1) * modes];
-                let mut w: f64 = (0..modes)
-                    .map(|i| pa[i] * pb[i] * modal_flexibility[i])
-                    .sum();
-                let (ca, cb) = (contacts[a], contacts[b]);
-                if ca.vehicle == cb.vehicle {
-                    w += steps[ca.vehicle].contact_response[(ca.dof, cb.column)];
-                }
-                compliance[a * nc + b] = w;
-                compliance[b * nc + a] = w;
+        for c in 0..nc {
+            for d in 0..nc {
+                let (sc, sd) = (&shapes[c], &shapes[d]);
+                sens[c * nc + d] = [
+                    -dot(&sc.values, &sd.scaled),
+                    -dot(&sc.velocity_row, &sd.scaled),
+                    -dot(&sc.acceleration_row, &sd.scaled),
+                ];
             }
         }
 
-        // 3. Permanent contact: W λ = −g*.
-        if nc > 0 && !cholesky_solve(&mut compliance, &mut lambda, nc) {
+        // Wheel rows of each vehicle: λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W → (I − A)λ = b.
+        for (v, partition) in partitions.iter_mut().enumerate() {
+            let state = &states[v];
+            partition.begin_step(
+                &nm,
+                &state.displacement,
+                &state.velocity,
+                &state.acceleration,
+            );
+            for (a, &c) in contact_of[v].iter().enumerate() {
+                let mut rhs = partition.base_forces[a];
+                for (b, &cb) in contact_of[v].iter().enumerate() {
+                    let (m, k, u) = (
+                        partition.condensed_mass[(a, b)],
+                        partition.condensed_damping[(a, b)],
+                        partition.condensed_stiffness[(a, b)],
+                    );
+                    rhs += m * base[cb][2] + k * base[cb][1] + u * base[cb][0];
+                }
+                lambda[c] = rhs;
+                for d in 0..nc {
+                    let mut a_cd = 0.0;
+                    for (b, &cb) in contact_of[v].iter().enumerate() {
+                        let s = sens[cb * nc + d];
+                        a_cd += partition.condensed_mass[(a, b)] * s[2]
+                            + partition.condensed_damping[(a, b)] * s[1]
+                            + partition.condensed_stiffness[(a, b)] * s[0];
+                    }
+                    system[c * nc + d] = if c == d { 1.0 - a_cd } else { -a_cd };
+                }
+            }
+        }
+        if nc > 0 && !lu_solve(&mut system, &mut lambda, nc) {
             return Err(SolveError::SingularContact {
                 time: t,
-                reason: "the contact compliance matrix is not positive definite".into(),
+                reason: "the condensed contact system is singular".into(),
             });
         }
 
-        // Correct the predictors and finish the Newmark step.
-        for c in 0..nc {
-            let phi = &phi_contacts[c * modes..(c + 1) * modes];
+        // Bridge: q = q* − DΦᵀλ, then Newmark velocity and acceleration.
+        for (c, s) in shapes.iter().enumerate() {
             for i in 0..modes {
-                q_star[i] -= modal_flexibility[i] * phi[i] * lambda[c];
+                q_star[i] -= s.scaled[i] * lambda[c];
             }
         }
         for i in 0..modes {
-            let a_new = nm.acceleration(q_star[i], q[i], qd[i], qdd[i]);
-            qd[i] = nm.velocity(qd[i], qdd[i], a_new);
-            qdd[i] = a_new;
             q[i] = q_star[i];
+            qdd[i] = nm.a0 * q[i] - inertia_history[i];
+            qd[i] = nm.a1 * q[i] - damping_history[i];
         }
+        // Wheels follow the surface exactly; then the free DOFs.
         for (c, contact) in contacts.iter().enumerate() {
-            let vs = &mut steps[contact.vehicle];
-            vs.predictor
-                .axpy(lambda[c], &vs.contact_response.column(contact.column), 1.0);
-        }
-        for (state, vs) in states.iter_mut().zip(&steps) {
-            for k in 0..state.displacement.len() {
-                let (u, vel, acc) = (
-                    state.displacement[k],
-                    state.velocity[k],
-                    state.acceleration[k],
-                );
-                let a_new = nm.acceleration(vs.predictor[k], u, vel, acc);
-                state.velocity[k] = nm.velocity(vel, acc, a_new);
-                state.acceleration[k] = a_new;
-                state.displacement[k] = vs.predictor[k];
-            }
-        }
-        for (c, contact) in contacts.iter().enumerate() {
+            let s = &shapes[c];
+            let x = wheel_positions[contact.wheel];
+            let v = contact.speed;
+            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            let (w, wx, wxx) = (
+                dot(&s.values, &q),
+                dot(&s.slopes, &q),
+                dot(&s.curvatures, &q),
+            );
+            let state = &mut states[contact.vehicle];
+            state.displacement[contact.dof] = w + r;
+            state.velocity[contact.dof] = dot(&s.values, &qd) + v * (wx + dr);
+            state.acceleration[contact.dof] =
+                dot(&s.values, &qdd) + 2.0 * v * dot(&s.slopes, &qd) + v * v * (wxx + ddr);
             contact_forces[contact.wheel] = lambda[c];
+        }
+        for (state, partition) in states.iter_mut().zip(partitions.iter_mut()) {
+            partition.finish_step(
+                &nm,
+                &mut state.displacement,
+                &mut state.velocity,
+                &mut state.acceleration,
+            );
         }
 
         let health: f64 = q.iter().sum::<f64>() + lambda.iter().sum::<f64>();
@@ -279,7 +316,9 @@ pub fn run(
                 time: t,
                 step,
                 positions: describe_positions(model, t),
-                cause: "the state is no longer finite; the time step may be too large or the Newmark parameters unstable (β < γ/2)".into(),
+                cause: "the state is no longer finite; the time step may be too large or the \
+                        Newmark parameters unstable (β < γ/2)"
+                    .into(),
             });
         }
 

@@ -6,9 +6,12 @@
 //! forces (the step's contact compliance), and the contact model closes the
 //! system. [`coupled`] enforces permanent contact.
 
+#![allow(clippy::needless_range_loop)] // numeric kernels index several arrays in step
+
 pub mod coupled;
 pub mod dense;
 pub mod newmark;
+pub mod partition;
 
 use nalgebra::DVector;
 use thiserror::Error;

@@ -55,6 +55,29 @@ impl Profile {
             } => amplitude * (wavenumber * x + phase).sin(),
         }
     }
+
+    /// Elevation r (m), slope dr/dx (dimensionless) and curvature d²r/dx²
+    /// (1/m) at `x`. The harmonic profile's slope jumps at the entrance unless
+    /// its phase is ±π/2: a kink the wheels feel as a step in vertical velocity.
+    #[inline]
+    pub fn elevation_slope_curvature(&self, x: f64) -> (f64, f64, f64) {
+        match *self {
+            Profile::Smooth => (0.0, 0.0, 0.0),
+            Profile::Harmonic { .. } if x < 0.0 => (0.0, 0.0, 0.0),
+            Profile::Harmonic {
+                amplitude,
+                wavenumber,
+                phase,
+            } => {
+                let (s, c) = (wavenumber * x + phase).sin_cos();
+                (
+                    amplitude * s,
+                    amplitude * wavenumber * c,
+                    -amplitude * wavenumber * wavenumber * s,
+                )
+            }
+        }
+    }
 }
 
 #[cfg(test)]

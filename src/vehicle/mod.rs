@@ -110,6 +110,17 @@ impl VehicleModel {
         number: usize,
     ) -> Result<(DVector<f64>, Vec<f64>), VehicleError> {
         let n = self.dofs();
+        if n == 0 {
+            let forces = self
+                .wheels
+                .iter()
+                .map(|w| match w.kind {
+                    WheelKind::Load(load) => load,
+                    WheelKind::Dof(_) => 0.0,
+                })
+                .collect();
+            return Ok((DVector::zeros(0), forces));
+        }
         let contact_dofs: Vec<(usize, usize)> = self
             .wheels
             .iter()

@@ -1,0 +1,154 @@
+//! A vehicle's matrices split into wheel DOFs W (those that ride the surface)
+//! and free DOFs F, with the free DOFs condensed for one Newmark step.
+//!
+//! With Newmark (ü = a₀u − hₐ, u̇ = a₁u − h_v at t_{n+1}) the free rows give
+//! u_F = K̂_FF⁻¹ [R̂_F − (M_FW ü_W + C_FW u̇_W + K_FW u_W)],
+//! R̂_F = f_g,F + M_FF hₐ,F + C_FF h_v,F, and the wheel rows give the contact
+//! forces λ_W = λ⁰_W + M̃ ü_W + C̃ u̇_W + K̃ u_W with T = K̂_WF K̂_FF⁻¹,
+//! M̃ = M_WW − T M_FW, C̃ = C_WW − T C_FW, K̃ = K_WW − T K_FW and
+//! λ⁰_W = T R̂_F − M_WF hₐ,F − C_WF h_v,F − f_g,W. All matrices here are
+//! constant over the run; per step only vectors change.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::newmark::Newmark;
+use crate::vehicle::VehicleModel;
+
+/// Constant condensed matrices of one vehicle, and its step work vectors.
+#[derive(Debug, Clone)]
+pub struct Partition {
+    /// Wheel DOF indices, in the vehicle's contact-wheel order.
+    pub wheel_dofs: Vec<usize>,
+    /// Free DOF indices.
+    pub free_dofs: Vec<usize>,
+    /// K̂_FF⁻¹, m/N.
+    effective_flexibility: DMatrix<f64>,
+    mass_ff: DMatrix<f64>,
+    damping_ff: DMatrix<f64>,
+    mass_fw: DMatrix<f64>,
+    damping_fw: DMatrix<f64>,
+    stiffness_fw: DMatrix<f64>,
+    mass_wf: DMatrix<f64>,
+    damping_wf: DMatrix<f64>,
+    /// T = K̂_WF K̂_FF⁻¹.
+    transfer: DMatrix<f64>,
+    /// M̃, C̃, K̃: wheel-row operators on the wheel kinematics.
+    pub condensed_mass: DMatrix<f64>,
+    /// C̃.
+    pub condensed_damping: DMatrix<f64>,
+    /// K̃.
+    pub condensed_stiffness: DMatrix<f64>,
+    gravity_f: DVector<f64>,
+    gravity_w: DVector<f64>,
+    // Work vectors.
+    inertia_history: DVector<f64>,
+    damping_history: DVector<f64>,
+    effective_load: DVector<f64>,
+    coupling: DVector<f64>,
+    /// λ⁰_W of the current step, N.
+    pub base_forces: DVector<f64>,
+    free_solution: DVector<f64>,
+}
+
+fn select(m: &DMatrix<f64>, rows: &[usize], cols: &[usize]) -> DMatrix<f64> {
+    DMatrix::from_fn(rows.len(), cols.len(), |i, j| m[(rows[i], cols[j])])
+}
+
+impl Partition {
+    /// Splits `vehicle` with the given wheel DOFs; `None` if K̂_FF is singular.
+    pub fn new(vehicle: &VehicleModel, wheel_dofs: Vec<usize>, nm: &Newmark) -> Option<Self> {
+        let n = vehicle.dofs();
+        let free_dofs: Vec<usize> = (0..n).filter(|d| !wheel_dofs.contains(d)).collect();
+        let (w, f) = (&wheel_dofs[..], &free_dofs[..]);
+        let effective = &vehicle.stiffness + &vehicle.mass * nm.a0 + &vehicle.damping * nm.a1;
+        let effective_flexibility = select(&effective, f, f).try_inverse()?;
+        let transfer = select(&effective, w, f) * &effective_flexibility;
+        let mass_fw = select(&vehicle.mass, f, w);
+        let damping_fw = select(&vehicle.damping, f, w);
+        let stiffness_fw = select(&vehicle.stiffness, f, w);
+        let condensed_mass = select(&vehicle.mass, w, w) - &transfer * &mass_fw;
+        let condensed_damping = select(&vehicle.damping, w, w) - &transfer * &damping_fw;
+        let condensed_stiffness = select(&vehicle.stiffness, w, w) - &transfer * &stiffness_fw;
+        let pick = |v: &DVector<f64>, idx: &[usize]| DVector::from_fn(idx.len(), |i, _| v[idx[i]]);
+        Some(Self {
+            mass_ff: select(&vehicle.mass, f, f),
+            damping_ff: select(&vehicle.damping, f, f),
+            mass_wf: select(&vehicle.mass, w, f),
+            damping_wf: select(&vehicle.damping, w, f),
+            gravity_f: pick(&vehicle.gravity_load, f),
+            gravity_w: pick(&vehicle.gravity_load, w),
+            inertia_history: DVector::zeros(f.len()),
+            damping_history: DVector::zeros(f.len()),
+            effective_load: DVector::zeros(f.len()),
+            coupling: DVector::zeros(f.len()),
+            base_forces: DVector::zeros(w.len()),
+            free_solution: DVector::zeros(f.len()),
+            effective_flexibility,
+            mass_fw,
+            damping_fw,
+            stiffness_fw,
+            transfer,
+            condensed_mass,
+            condensed_damping,
+            condensed_stiffness,
+            wheel_dofs,
+            free_dofs,
+        })
+    }
+
+    /// Starts a step from the state at tₙ: forms R̂_F and λ⁰_W.
+    pub fn begin_step(
+        &mut self,
+        nm: &Newmark,
+        displacement: &DVector<f64>,
+        velocity: &DVector<f64>,
+        acceleration: &DVector<f64>,
+    ) {
+        for (k, &d) in self.free_dofs.iter().enumerate() {
+            let (u, v, a) = (displacement[d], velocity[d], acceleration[d]);
+            self.inertia_history[k] = nm.inertia_history(u, v, a);
+            self.damping_history[k] = nm.damping_history(u, v, a);
+        }
+        self.effective_load.copy_from(&self.gravity_f);
+        self.effective_load
+            .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
+        self.effective_load
+            .gemv(1.0, &self.damping_ff, &self.damping_history, 1.0);
+        self.base_forces.copy_from(&self.gravity_w);
+        self.base_forces
+            .gemv(1.0, &self.transfer, &self.effective_load, -1.0);
+        self.base_forces
+            .gemv(-1.0, &self.mass_wf, &self.inertia_history, 1.0);
+        self.base_forces
+            .gemv(-1.0, &self.damping_wf, &self.damping_history, 1.0);
+    }
+
+    /// Finishes the step: with the wheel DOFs' new displacement, velocity and
+    /// acceleration already in the state, solves the free DOFs and writes
+    /// their Newmark velocity and acceleration.
+    pub fn finish_step(
+        &mut self,
+        nm: &Newmark,
+        displacement: &mut DVector<f64>,
+        velocity: &mut DVector<f64>,
+        acceleration: &mut DVector<f64>,
+    ) {
+        self.coupling.copy_from(&self.effective_load);
+        for (j, &d) in self.wheel_dofs.iter().enumerate() {
+            let (u, v, a) = (displacement[d], velocity[d], acceleration[d]);
+            for i in 0..self.free_dofs.len() {
+                self.coupling[i] -= self.mass_fw[(i, j)] * a
+                    + self.damping_fw[(i, j)] * v
+                    + self.stiffness_fw[(i, j)] * u;
+            }
+        }
+        self.free_solution
+            .gemv(1.0, &self.effective_flexibility, &self.coupling, 0.0);
+        for (k, &d) in self.free_dofs.iter().enumerate() {
+            let u_new = self.free_solution[k];
+            acceleration[d] = nm.a0 * u_new - self.inertia_history[k];
+            velocity[d] = nm.a1 * u_new - self.damping_history[k];
+            displacement[d] = u_new;
+        }
+    }
+}
