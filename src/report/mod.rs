@@ -26,7 +26,9 @@ pub enum ReportError {
 }
 
 /// Writes `contents` to `path` atomically: a temporary file in the same
-/// folder, then a rename, so readers never see a partial file.
+/// folder, then a rename, so readers never see a partial file. (No fsync:
+/// it would cost more than the whole run of a small scene, and a crash
+/// still leaves either the old file or the new one.)
 pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
     let io_err = |source| ReportError::Io {
         path: path.to_path_buf(),
@@ -40,7 +42,6 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
     let result = (|| {
         let mut file = fs::File::create(&tmp)?;
         file.write_all(contents)?;
-        file.sync_all()?;
         fs::rename(&tmp, path)
     })();
     if result.is_err() {
@@ -51,11 +52,14 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
 
 /// The time history as CSV: `time` then one column per recorded quantity
 /// (`name`), and `name_static` after each bridge displacement. Values in SI
-/// units, shortest round-trip formatting.
+/// units, shortest round-trip formatting (ryu), so a reader gets the exact f64.
 pub fn history_csv(history: &History) -> Vec<u8> {
-    let mut out = csv::Writer::from_writer(Vec::with_capacity(
-        history.time.len() * 16 * (1 + history.columns.len()),
-    ));
+    let width = 1 + history
+        .columns
+        .iter()
+        .map(|c| 1 + usize::from(c.static_values.is_some()))
+        .sum::<usize>();
+    let mut out = csv::Writer::from_writer(Vec::with_capacity(history.time.len() * width * 20));
     let mut header = vec!["time".to_string()];
     for c in &history.columns {
         header.push(c.name.clone());
@@ -64,17 +68,20 @@ pub fn history_csv(history: &History) -> Vec<u8> {
         }
     }
     out.write_record(&header).expect("writing to memory");
-    let mut row: Vec<String> = Vec::with_capacity(header.len());
-    for (i, t) in history.time.iter().enumerate() {
-        row.clear();
-        row.push(number(*t));
+    let mut buffer = ryu::Buffer::new();
+    let mut field = |out: &mut csv::Writer<Vec<u8>>, x: f64| {
+        let text = if x == 0.0 { "0" } else { buffer.format(x) };
+        out.write_field(text).expect("writing to memory");
+    };
+    for (i, &t) in history.time.iter().enumerate() {
+        field(&mut out, t);
         for c in &history.columns {
-            row.push(number(c.values[i]));
+            field(&mut out, c.values[i]);
             if let Some(s) = &c.static_values {
-                row.push(number(s[i]));
+                field(&mut out, s[i]);
             }
         }
-        out.write_record(&row).expect("writing to memory");
+        out.write_record(None::<&[u8]>).expect("writing to memory");
     }
     out.into_inner().expect("writing to memory")
 }
