@@ -38,7 +38,7 @@ enum Command {
     },
     /// Print the JSON Schema of the scenario format.
     Schema,
-    /// Natural frequencies (and, with --out, mode shapes) of a scene's bridge.
+    /// Natural frequencies (and, with --shapes, mode shapes) of a scene's bridge.
     Modes {
         /// The scenario file.
         file: PathBuf,

@@ -69,11 +69,37 @@ impl fmt::Display for Diagnostics<'_> {
 
 /// Reads and resolves a scenario file.
 pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
-    let source = std::fs::read_to_string(path).map_err(|source| LoadError::Io {
+    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
         path: path.to_path_buf(),
         source,
     })?;
-    load_str(&source, &path.display().to_string())
+    let file = path.display().to_string();
+    match String::from_utf8(bytes) {
+        Ok(source) => load_str(&source, &file),
+        Err(e) => Err(not_utf8(&file, e.as_bytes(), e.utf8_error().valid_up_to())),
+    }
+}
+
+/// A located error at the first byte that is not UTF-8 (e.g. a file saved
+/// as Latin-1), instead of an unlocated read error.
+fn not_utf8(file: &str, bytes: &[u8], valid_up_to: usize) -> LoadError {
+    let valid = String::from_utf8_lossy(&bytes[..valid_up_to]);
+    // Count line breaks like the YAML scanner: `\n`, `\r\n` and a lone `\r`.
+    let line = 1 + valid.matches('\n').count() + valid.matches('\r').count()
+        - valid.matches("\r\n").count();
+    let line_start = valid.rfind(['\n', '\r']).map_or(0, |i| i + 1);
+    let col = valid[line_start..].chars().count() + 1;
+    let source = String::from_utf8_lossy(bytes);
+    let message = format!(
+        "the file is not valid UTF-8 (byte 0x{:02X}); save it with UTF-8 encoding",
+        bytes[valid_up_to]
+    );
+    LoadError::Invalid(vec![Diagnostic::new(
+        file,
+        &source,
+        Location { line, col },
+        message,
+    )])
 }
 
 /// Parses a scenario's text into its raw form; `file` labels diagnostics.
@@ -89,6 +115,10 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
                 "the file is empty; a scenario needs at least `name`, `bridge` and `vehicles`"
                     .into(),
             ));
+        }
+        // Scanner errors already say "YAML syntax error"; say it once.
+        Err(e) if e.message.starts_with("YAML syntax error") => {
+            return Err(invalid(e.loc, e.message));
         }
         Err(e) => return Err(invalid(e.loc, format!("YAML syntax error: {}", e.message))),
     };

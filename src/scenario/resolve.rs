@@ -516,12 +516,13 @@ fn resolve_records(
         if !is_bridge {
             let v = r.vehicle.unwrap_or(1);
             if v == 0 || v > vehicles.len() {
+                let numbered = match vehicles.len() {
+                    1 => "the scene has only vehicle 1".to_owned(),
+                    n => format!("vehicles are numbered 1 to {n}"),
+                };
                 ck.error(
                     &format!("{at}.vehicle"),
-                    format!(
-                        "vehicle {v} does not exist; vehicles are numbered 1 to {}",
-                        vehicles.len()
-                    ),
+                    format!("vehicle {v} does not exist; {numbered}"),
                 );
             } else {
                 vehicle = Some(v);
@@ -533,9 +534,14 @@ fn resolve_records(
             if let Some(v) = vehicle {
                 let n = wheel_count(&vehicles[v - 1]);
                 if w == 0 || w > n {
+                    let kind = vehicles[v - 1].type_name();
+                    let wheels = match n {
+                        1 => "only wheel 1".to_owned(),
+                        n => format!("wheels 1 to {n}"),
+                    };
                     ck.error(
                         &format!("{at}.wheel"),
-                        format!("wheel {w} does not exist; vehicle {v} has wheels 1 to {n}"),
+                        format!("wheel {w} does not exist; vehicle {v} ({kind}) has {wheels}"),
                     );
                 }
             }

@@ -1,0 +1,365 @@
+//! The command line end to end: `run` and its output files, the resolved
+//! scenario round trip, `modes`, `schema`, help and usage errors.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn manifest_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A scratch folder under the system temp dir, unique per process and test,
+/// removed on drop.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-cli-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("run vbi")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+fn assert_exit(out: &Output, code: i32) {
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "stdout:\n{}\nstderr:\n{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(!text(&out.stderr).contains("panicked"));
+}
+
+/// The Yang & Yau sprung-mass scenario with a 1 ms step (900 steps), copied
+/// into `dir`.
+fn quick_yang_yau(dir: &Scratch) -> PathBuf {
+    let src = std::fs::read_to_string(manifest_dir().join("scenarios/yang-yau-sprung-mass.yaml"))
+        .expect("read scenario");
+    assert!(src.contains("time_step: 1.0e-4"), "scenario changed");
+    let quick = src.replace("time_step: 1.0e-4", "time_step: 1.0e-3");
+    let path = dir.path("yang-yau.yaml");
+    std::fs::write(&path, quick).expect("write scenario");
+    path
+}
+
+fn run_quiet(scenario: &Path, out_dir: &Path, cwd: &Path) -> Output {
+    vbi(
+        &[
+            "run".as_ref(),
+            scenario.as_os_str(),
+            "--out".as_ref(),
+            out_dir.as_os_str(),
+            "--quiet".as_ref(),
+        ],
+        cwd,
+    )
+}
+
+fn read_json(path: &Path) -> Value {
+    let text = std::fs::read_to_string(path).expect("read summary.json");
+    serde_json::from_str(&text).expect("summary.json is valid JSON")
+}
+
+fn file_names(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("read dir")
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn run_writes_summary_history_and_resolved_scenario() {
+    let scratch = Scratch::new("run-writes");
+    let scenario = quick_yang_yau(&scratch);
+    let out_dir = scratch.path("out");
+    let out = run_quiet(&scenario, &out_dir, &scratch.0);
+    assert_exit(&out, 0);
+    assert_eq!(text(&out.stderr), "", "--quiet prints nothing on stderr");
+    assert_eq!(text(&out.stdout), "", "run prints nothing on stdout");
+    // Exactly the three results: no temporary files left from atomic writes.
+    assert_eq!(
+        file_names(&out_dir),
+        ["history.csv", "resolved.yaml", "summary.json"]
+    );
+
+    let summary = read_json(&out_dir.join("summary.json"));
+    assert_eq!(summary["scenario"], "yang-yau-sprung-mass");
+    let steps = summary["run"]["steps"].as_u64().expect("run.steps") as usize;
+    // 25 m at 100 km/h is 0.9 s; 1 ms steps.
+    assert_eq!(steps, 900);
+    assert_eq!(summary["run"]["time_step"], 1.0e-3);
+    let quantities = summary["quantities"].as_array().expect("quantities");
+    let names: Vec<&str> = quantities
+        .iter()
+        .map(|q| q["name"].as_str().expect("quantity name"))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "midspan",
+            "midspan_acceleration",
+            "body",
+            "body_acceleration",
+            "contact_force"
+        ]
+    );
+
+    let history = std::fs::read_to_string(out_dir.join("history.csv")).expect("history.csv");
+    let mut lines = history.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    assert_eq!(header[0], "time");
+    for name in &names {
+        assert!(header.contains(name), "{name} not in {header:?}");
+    }
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), steps + 1, "one row per step plus t = 0");
+    for row in &rows {
+        let fields: Vec<&str> = row.split(',').collect();
+        assert_eq!(fields.len(), header.len(), "{row}");
+        for f in fields {
+            let v: f64 = f.parse().unwrap_or_else(|_| panic!("not a number: {f}"));
+            assert!(v.is_finite(), "{row}");
+        }
+    }
+    let first_time: f64 = rows[0].split(',').next().unwrap().parse().unwrap();
+    let last_time: f64 = rows[steps].split(',').next().unwrap().parse().unwrap();
+    assert_eq!(first_time, 0.0);
+    assert!((last_time - 0.9).abs() < 1e-9, "{last_time}");
+
+    let resolved = std::fs::read_to_string(out_dir.join("resolved.yaml")).expect("resolved.yaml");
+    assert!(
+        resolved.contains("name: \"yang-yau-sprung-mass\""),
+        "{resolved}"
+    );
+    assert!(resolved.contains("time_step: 0.001"), "{resolved}");
+}
+
+/// Every number in `a` and `b` equal, except `run.wall_time`.
+fn assert_same_summary(mut a: Value, mut b: Value) {
+    for v in [&mut a, &mut b] {
+        let run = v["run"].as_object_mut().expect("run");
+        assert!(run.remove("wall_time").is_some(), "no run.wall_time");
+    }
+    assert_eq!(a, b);
+}
+
+#[test]
+fn resolved_scenario_checks_runs_and_resolves_to_itself() {
+    let scratch = Scratch::new("resolved-round-trip");
+    let scenario = quick_yang_yau(&scratch);
+    let first = scratch.path("first");
+    assert_exit(&run_quiet(&scenario, &first, &scratch.0), 0);
+    let resolved = first.join("resolved.yaml");
+
+    let out = vbi(&["check".as_ref(), resolved.as_os_str()], &scratch.0);
+    assert_exit(&out, 0);
+    assert_eq!(text(&out.stdout), format!("{}: ok\n", resolved.display()));
+
+    let second = scratch.path("second");
+    assert_exit(&run_quiet(&resolved, &second, &scratch.0), 0);
+    assert_same_summary(
+        read_json(&first.join("summary.json")),
+        read_json(&second.join("summary.json")),
+    );
+    // Resolving a resolved scenario changes nothing, and the results are the same.
+    let read = |dir: &Path, name: &str| std::fs::read_to_string(dir.join(name)).unwrap();
+    assert_eq!(
+        read(&first, "resolved.yaml"),
+        read(&second, "resolved.yaml")
+    );
+    assert_eq!(read(&first, "history.csv"), read(&second, "history.csv"));
+}
+
+#[test]
+fn run_without_quiet_reports_on_stderr() {
+    let scratch = Scratch::new("run-loud");
+    let scenario = quick_yang_yau(&scratch);
+    let out_dir = scratch.path("out");
+    let out = vbi(
+        &[
+            "run".as_ref(),
+            scenario.as_os_str(),
+            "--out".as_ref(),
+            out_dir.as_os_str(),
+        ],
+        &scratch.0,
+    );
+    assert_exit(&out, 0);
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.contains("yang-yau-sprung-mass: 900 steps"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("midspan"), "{stderr}");
+    assert!(
+        stderr.contains(&format!("results in {}", out_dir.display())),
+        "{stderr}"
+    );
+    assert!(out_dir.join("summary.json").is_file());
+}
+
+/// f₁ = (π/L)² √(EI/m) / (2π) for a simply supported Euler–Bernoulli beam.
+fn first_frequency(length: f64, ei: f64, m: f64) -> f64 {
+    use std::f64::consts::PI;
+    (PI / length).powi(2) * (ei / m).sqrt() / (2.0 * PI)
+}
+
+#[test]
+fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
+    let scratch = Scratch::new("modes");
+    let scenario = manifest_dir().join("scenarios/yang-yau-sprung-mass.yaml");
+    let shapes = scratch.path("shapes.csv");
+    let out = vbi(
+        &[
+            "modes".as_ref(),
+            scenario.as_os_str(),
+            "--shapes".as_ref(),
+            shapes.as_os_str(),
+        ],
+        &scratch.0,
+    );
+    assert_exit(&out, 0);
+    let stdout = text(&out.stdout);
+    let mut lines = stdout.lines();
+    assert_eq!(
+        lines.next(),
+        Some("yang-yau-sprung-mass: 10 modes used of 40 available")
+    );
+    let header: Vec<&str> = lines.next().unwrap().split_whitespace().collect();
+    assert_eq!(header, ["mode", "frequency_Hz", "period_s", "damping"]);
+    let table: Vec<Vec<f64>> = lines
+        .by_ref()
+        .take(10)
+        .map(|l| l.split_whitespace().map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(table.len(), 10, "{stdout}");
+    for (i, row) in table.iter().enumerate() {
+        assert_eq!(row[0], (i + 1) as f64);
+        // Both printed with 6 decimals.
+        assert!(
+            (row[2] - 1.0 / row[1]).abs() <= 5.1e-7,
+            "period = 1/f: {row:?}"
+        );
+        assert_eq!(row[3], 0.0, "undamped");
+        if i > 0 {
+            assert!(row[1] > table[i - 1][1], "ascending frequencies");
+        }
+    }
+    let f1 = table[0][1];
+    assert_eq!(format!("{f1:.4}"), "4.7779");
+    let closed_form = first_frequency(25.0, 8.323e9, 2303.0);
+    assert_eq!(format!("{closed_form:.4}"), "4.7779");
+    assert!(
+        (f1 - closed_form).abs() / closed_form < 1e-5,
+        "{f1} vs {closed_form}"
+    );
+    assert_eq!(
+        lines.next(),
+        Some(format!("mode shapes written to {}", shapes.display()).as_str())
+    );
+
+    let csv = std::fs::read_to_string(&shapes).expect("shapes CSV");
+    let mut rows = csv.lines();
+    let header: Vec<&str> = rows.next().unwrap().split(',').collect();
+    let want: Vec<String> = std::iter::once("x".to_owned())
+        .chain((1..=10).map(|i| format!("mode{i}")))
+        .collect();
+    assert_eq!(header, want);
+    let values: Vec<Vec<f64>> = rows
+        .map(|r| r.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert!(values.len() >= 21, "at least the 21 mesh nodes");
+    assert!(values.iter().all(|r| r.len() == 11));
+    assert_eq!(values[0][0], 0.0);
+    assert_eq!(values.last().unwrap()[0], 25.0);
+    // Pinned ends: every mode vanishes at both supports.
+    for r in [&values[0], values.last().unwrap()] {
+        assert!(r[1..].iter().all(|v| v.abs() < 1e-12), "{r:?}");
+    }
+    assert!(values.iter().flatten().all(|v| v.is_finite()));
+}
+
+#[test]
+fn schema_output_equals_the_committed_schema() {
+    let out = vbi(&["schema"], manifest_dir());
+    assert_exit(&out, 0);
+    let committed = std::fs::read_to_string(manifest_dir().join("schema/vbi.schema.json"))
+        .expect("schema/vbi.schema.json");
+    assert!(
+        text(&out.stdout) == committed,
+        "`vbi schema` differs from schema/vbi.schema.json; regenerate it with \
+         `vbi schema > schema/vbi.schema.json`"
+    );
+    let _: Value = serde_json::from_str(&committed).expect("the schema is JSON");
+}
+
+#[test]
+fn help_and_version_exit_zero() {
+    for args in [
+        &["--help"][..],
+        &["help"],
+        &["run", "--help"],
+        &["check", "--help"],
+        &["modes", "--help"],
+        &["schema", "--help"],
+    ] {
+        let out = vbi(args, manifest_dir());
+        assert_exit(&out, 0);
+        assert!(text(&out.stdout).contains("Usage: vbi"), "{args:?}");
+    }
+    let out = vbi(&["run", "--help"], manifest_dir());
+    let help = text(&out.stdout);
+    assert!(help.contains("--out") && help.contains("--quiet"), "{help}");
+    let out = vbi(&["--version"], manifest_dir());
+    assert_exit(&out, 0);
+    assert_eq!(
+        text(&out.stdout),
+        format!("vbi {}\n", env!("CARGO_PKG_VERSION"))
+    );
+}
+
+#[test]
+fn usage_errors_exit_two() {
+    for args in [
+        &["frobnicate"][..],
+        &[],
+        &["check"],
+        &["run"],
+        &["run", "scenarios/yang-yau-sprung-mass.yaml", "--bogus"],
+        &["modes"],
+    ] {
+        let out = vbi(args, manifest_dir());
+        assert_exit(&out, 2);
+        assert!(text(&out.stderr).contains("Usage"), "{args:?}");
+    }
+    let out = vbi(&["frobnicate"], manifest_dir());
+    assert!(text(&out.stderr).contains("unrecognized subcommand 'frobnicate'"));
+}
