@@ -16,6 +16,7 @@
 //! O(wheels³); nothing is allocated in the loop.
 
 use super::dense::lu_solve;
+use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::partition::Partition;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
@@ -77,19 +78,7 @@ pub fn run(
     let bridge = &model.bridge;
     let modes = bridge.mode_count();
 
-    // Bridge: 2ζω and the modal effective flexibility 1/k̂.
-    let modal_damping: Vec<f64> = bridge
-        .circular_frequencies
-        .iter()
-        .zip(&bridge.damping_ratios)
-        .map(|(w, z)| 2.0 * z * w)
-        .collect();
-    let modal_flexibility: Vec<f64> = bridge
-        .circular_frequencies
-        .iter()
-        .zip(&modal_damping)
-        .map(|(w, c)| 1.0 / (w * w + nm.a0 + nm.a1 * c))
-        .collect();
+    let mut modal = ModalStep::new(bridge, &nm);
 
     // Contact wheels, load wheels, and each vehicle's partition.
     let mut contacts: Vec<ContactWheel> = Vec::new();
@@ -141,14 +130,7 @@ pub fn run(
         partitions.push(partition);
     }
 
-    // Bridge state and work arrays.
-    let mut q = vec![0.0; modes];
-    let mut qd = vec![0.0; modes];
-    let mut qdd = vec![0.0; modes];
-    let mut q_star = vec![0.0; modes];
-    let mut inertia_history = vec![0.0; modes];
-    let mut damping_history = vec![0.0; modes];
-    let mut phi_work = vec![0.0; modes];
+    // Work arrays.
     let mut shapes: Vec<ContactShapes> = (0..nc).map(|_| ContactShapes::new(modes)).collect();
     // Wheel kinematics b + Sλ: displacement, velocity, acceleration.
     let mut base = vec![[0.0f64; 3]; nc];
@@ -162,8 +144,8 @@ pub fn run(
     observer.observe(&StepView {
         step: 0,
         time: 0.0,
-        modal_displacement: &q,
-        modal_acceleration: &qdd,
+        modal_displacement: &modal.displacement,
+        modal_acceleration: &modal.acceleration,
         vehicles: &states,
         contact_forces: &contact_forces,
         wheel_positions: &wheel_positions,
@@ -176,24 +158,18 @@ pub fn run(
             *x = model.wheel_position(w, t);
         }
 
-        // Bridge predictor q* = (hₐ + 2ζω h_v + F_loads)/k̂.
-        for i in 0..modes {
-            inertia_history[i] = nm.inertia_history(q[i], qd[i], qdd[i]);
-            damping_history[i] = nm.damping_history(q[i], qd[i], qdd[i]);
-            q_star[i] = inertia_history[i] + modal_damping[i] * damping_history[i];
-        }
-        for &(flat, load) in &load_wheels {
-            let x = wheel_positions[flat];
-            if bridge.is_on(x) {
-                bridge.mode_values(x, &mut phi_work);
-                for i in 0..modes {
-                    q_star[i] -= load * phi_work[i];
-                }
-            }
-        }
-        for i in 0..modes {
-            q_star[i] *= modal_flexibility[i];
-        }
+        modal.predict(
+            &nm,
+            bridge,
+            load_wheels
+                .iter()
+                .map(|&(flat, load)| (wheel_positions[flat], load)),
+        );
+        let (q_star, inertia_history, damping_history) = (
+            &modal.predictor,
+            &modal.inertia_history,
+            &modal.damping_history,
+        );
 
         // Wheel kinematics at λ = 0 and their sensitivities to λ.
         for (c, contact) in contacts.iter().enumerate() {
@@ -207,18 +183,18 @@ pub fn run(
                 &mut s.curvatures,
             );
             for i in 0..modes {
-                s.scaled[i] = s.values[i] * modal_flexibility[i];
+                s.scaled[i] = s.values[i] * modal.flexibility[i];
                 s.velocity_row[i] = nm.a1 * s.values[i] + v * s.slopes[i];
                 s.acceleration_row[i] =
                     nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
             }
             let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
             base[c] = [
-                dot(&s.values, &q_star) + r,
-                dot(&s.velocity_row, &q_star) - dot(&s.values, &damping_history) + v * dr,
-                dot(&s.acceleration_row, &q_star)
-                    - dot(&s.values, &inertia_history)
-                    - 2.0 * v * dot(&s.slopes, &damping_history)
+                dot(&s.values, q_star) + r,
+                dot(&s.velocity_row, q_star) - dot(&s.values, damping_history) + v * dr,
+                dot(&s.acceleration_row, q_star)
+                    - dot(&s.values, inertia_history)
+                    - 2.0 * v * dot(&s.slopes, damping_history)
                     + v * v * ddr,
             ];
         }
@@ -274,15 +250,10 @@ pub fn run(
 
         // Bridge: q = q* − DΦᵀλ, then Newmark velocity and acceleration.
         for (c, s) in shapes.iter().enumerate() {
-            for i in 0..modes {
-                q_star[i] -= s.scaled[i] * lambda[c];
-            }
+            modal.apply_contact(&s.scaled, lambda[c]);
         }
-        for i in 0..modes {
-            q[i] = q_star[i];
-            qdd[i] = nm.a0 * q[i] - inertia_history[i];
-            qd[i] = nm.a1 * q[i] - damping_history[i];
-        }
+        modal.finish(&nm);
+        let (q, qd, qdd) = (&modal.displacement, &modal.velocity, &modal.acceleration);
         // Wheels follow the surface exactly; then the free DOFs.
         for (c, contact) in contacts.iter().enumerate() {
             let s = &shapes[c];
@@ -296,9 +267,9 @@ pub fn run(
             );
             let state = &mut states[contact.vehicle];
             state.displacement[contact.dof] = w + r;
-            state.velocity[contact.dof] = dot(&s.values, &qd) + v * (wx + dr);
+            state.velocity[contact.dof] = dot(&s.values, qd) + v * (wx + dr);
             state.acceleration[contact.dof] =
-                dot(&s.values, &qdd) + 2.0 * v * dot(&s.slopes, &qd) + v * v * (wxx + ddr);
+                dot(&s.values, qdd) + 2.0 * v * dot(&s.slopes, qd) + v * v * (wxx + ddr);
             contact_forces[contact.wheel] = lambda[c];
         }
         for (state, partition) in states.iter_mut().zip(partitions.iter_mut()) {
@@ -310,7 +281,7 @@ pub fn run(
             );
         }
 
-        let health: f64 = q.iter().sum::<f64>() + lambda.iter().sum::<f64>();
+        let health: f64 = modal.health() + lambda.iter().sum::<f64>();
         if !health.is_finite() {
             return Err(SolveError::Diverged {
                 time: t,
@@ -325,8 +296,8 @@ pub fn run(
         observer.observe(&StepView {
             step,
             time: t,
-            modal_displacement: &q,
-            modal_acceleration: &qdd,
+            modal_displacement: &modal.displacement,
+            modal_acceleration: &modal.acceleration,
             vehicles: &states,
             contact_forces: &contact_forces,
             wheel_positions: &wheel_positions,
