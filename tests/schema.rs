@@ -1,0 +1,379 @@
+//! The JSON Schema of the scenario format: the committed copy is current, it
+//! is a valid draft 2020-12 schema with a description on every property,
+//! every example scenario validates against it and declares it for editors,
+//! and it rejects invalid documents.
+
+use std::path::{Path, PathBuf};
+
+use jsonschema::Validator;
+use serde_json::Value;
+
+const MODELINE: &str = "# yaml-language-server: $schema=../schema/vbi.schema.json";
+const DRAFT_2020_12: &str = "https://json-schema.org/draft/2020-12/schema";
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn committed_schema_path() -> PathBuf {
+    root().join("schema").join("vbi.schema.json")
+}
+
+fn schema() -> Value {
+    serde_json::from_str(&vbi::schema::schema_json()).expect("schema_json() is JSON")
+}
+
+fn validator() -> Validator {
+    jsonschema::draft202012::new(&schema())
+        .unwrap_or_else(|e| panic!("the schema does not compile as draft 2020-12: {e}"))
+}
+
+/// Every `*.yaml` / `*.yml` file in `scenarios/`, sorted by name.
+fn scenario_files() -> Vec<PathBuf> {
+    let dir = root().join("scenarios");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
+        .map(|entry| entry.expect("directory entry").path())
+        .filter(|p| {
+            p.is_file()
+                && p.extension()
+                    .is_some_and(|ext| ext == "yaml" || ext == "yml")
+        })
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no scenarios found in {}", dir.display());
+    files
+}
+
+/// YAML text to JSON the way the schema sees it (core-schema scalars).
+fn yaml_to_json(source: &str, what: &str) -> Value {
+    vbi::scenario::yaml::parse(source)
+        .unwrap_or_else(|e| panic!("{what}: YAML syntax error: {e:?}"))
+        .map_or(Value::Null, |node| node.to_json())
+}
+
+/// Validation errors of `instance`, one line each (`/json/pointer: message`).
+fn errors(validator: &Validator, instance: &Value) -> Vec<String> {
+    validator
+        .iter_errors(instance)
+        .map(|e| format!("{}: {e}", e.instance_path()))
+        .collect()
+}
+
+// ---------------------------------------------------------------------------
+// (a) the committed copy is current
+// ---------------------------------------------------------------------------
+
+#[test]
+fn committed_schema_is_current() {
+    let path = committed_schema_path();
+    let committed = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    let generated = vbi::schema::schema_json();
+    if committed != generated {
+        let first = committed
+            .lines()
+            .zip(generated.lines())
+            .position(|(a, b)| a != b)
+            .map_or_else(
+                || "lengths differ".to_string(),
+                |i| {
+                    format!(
+                        "first difference at line {}:\n  committed: {}\n  generated: {}",
+                        i + 1,
+                        committed.lines().nth(i).unwrap_or_default(),
+                        generated.lines().nth(i).unwrap_or_default()
+                    )
+                },
+            );
+        panic!(
+            "schema/vbi.schema.json is out of date with the scenario types ({first}).\n\
+             Regenerate it with:\n    cargo run --release -- schema > schema/vbi.schema.json"
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// (b), (c) every scenario validates and declares the schema
+// ---------------------------------------------------------------------------
+
+#[test]
+fn every_scenario_is_valid_against_the_schema() {
+    let validator = validator();
+    let mut failures = Vec::new();
+    for path in scenario_files() {
+        let name = path.display().to_string();
+        let source =
+            std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {name}: {e}"));
+        let instance = yaml_to_json(&source, &name);
+        for error in errors(&validator, &instance) {
+            failures.push(format!("{name}: {error}"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "scenarios invalid against the schema:\n  {}",
+        failures.join("\n  ")
+    );
+}
+
+#[test]
+fn every_scenario_declares_the_schema_on_its_first_line() {
+    let mut failures = Vec::new();
+    for path in scenario_files() {
+        let source = std::fs::read_to_string(&path)
+            .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+        let first = source.lines().next().unwrap_or_default();
+        if first.trim_end_matches('\r') != MODELINE {
+            failures.push(format!("{}: first line is {first:?}", path.display()));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "every scenario must start with the line\n{MODELINE}\n\
+         (editors autocomplete and check from it):\n  {}",
+        failures.join("\n  ")
+    );
+}
+
+// ---------------------------------------------------------------------------
+// (d) the schema rejects invalid documents
+// ---------------------------------------------------------------------------
+
+/// A small valid scene; each case below breaks it in one way.
+const VALID: &str = "\
+name: minimal
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 3.2e9
+  mass_per_length: 2000.0
+vehicles:
+  - type: moving_force
+    loads: [100000.0]
+    speed: 20.0
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 10.0}
+";
+
+#[test]
+fn the_base_document_of_the_invalid_cases_is_valid() {
+    let instance = yaml_to_json(VALID, "base document");
+    let found = errors(&validator(), &instance);
+    assert!(found.is_empty(), "base document rejected: {found:#?}");
+}
+
+#[test]
+fn invalid_documents_are_rejected() {
+    let cases: &[(&str, &str, &str)] = &[
+        (
+            "unknown top-level key",
+            "name: minimal\n",
+            "name: minimal\ncolour: red\n",
+        ),
+        (
+            "unknown key in the bridge",
+            "  mass_per_length: 2000.0\n",
+            "  mass_per_length: 2000.0\n  colour: red\n",
+        ),
+        (
+            "unknown key in a vehicle",
+            "    speed: 20.0\n",
+            "    speed: 20.0\n    colour: red\n",
+        ),
+        (
+            "misspelt key",
+            "  bending_stiffness: 3.2e9\n",
+            "  bending_stifness: 3.2e9\n",
+        ),
+        (
+            "wrong type: string for a number",
+            "speed: 20.0",
+            "speed: fast",
+        ),
+        (
+            "wrong type: number for a list",
+            "spans: [20.0]",
+            "spans: 20.0",
+        ),
+        (
+            "wrong type: list item",
+            "loads: [100000.0]",
+            "loads: [heavy]",
+        ),
+        (
+            "wrong type: string for a name",
+            "name: minimal",
+            "name: [minimal]",
+        ),
+        ("missing bridge type", "  type: beam\n", ""),
+        (
+            "missing vehicle type",
+            "  - type: moving_force\n    loads",
+            "  - loads",
+        ),
+        ("unknown bridge type", "type: beam", "type: suspension"),
+        (
+            "unknown vehicle type",
+            "type: moving_force",
+            "type: hovercraft",
+        ),
+        ("unknown quantity", "bridge_displacement", "bridge_colour"),
+        ("missing required field", "  spans: [20.0]\n", ""),
+        ("missing name", "name: minimal\n", ""),
+        ("missing bridge", "bridge:", "brige:"),
+        ("document is not a mapping", VALID, "- just\n- a list\n"),
+    ];
+    let validator = validator();
+    let mut accepted = Vec::new();
+    for (what, from, to) in cases {
+        assert!(VALID.contains(from), "case {what:?}: {from:?} not in VALID");
+        let source = VALID.replacen(from, to, 1);
+        let instance = yaml_to_json(&source, what);
+        if validator.is_valid(&instance) {
+            accepted.push(format!("{what}:\n{source}"));
+        }
+    }
+    assert!(
+        accepted.is_empty(),
+        "the schema accepts invalid documents:\n{}",
+        accepted.join("\n")
+    );
+}
+
+// ---------------------------------------------------------------------------
+// (e) the schema itself: draft 2020-12, resolvable, documented
+// ---------------------------------------------------------------------------
+
+#[test]
+fn schema_is_valid_draft_2020_12() {
+    let schema = schema();
+    assert_eq!(
+        schema.get("$schema").and_then(Value::as_str),
+        Some(DRAFT_2020_12),
+        "the schema must declare draft 2020-12"
+    );
+    if let Err(e) = jsonschema::draft202012::meta::validate(&schema) {
+        panic!(
+            "the schema is not a valid draft 2020-12 schema: {e} at {}",
+            e.instance_path()
+        );
+    }
+    // It compiles, and every local reference points at something.
+    let _ = validator();
+    let mut refs = Vec::new();
+    collect_refs(&schema, &mut refs);
+    assert!(!refs.is_empty(), "expected $defs references in the schema");
+    let dangling: Vec<&String> = refs
+        .iter()
+        .filter(|r| {
+            r.strip_prefix('#')
+                .is_none_or(|pointer| schema.pointer(pointer).is_none())
+        })
+        .collect();
+    assert!(dangling.is_empty(), "unresolvable $ref: {dangling:?}");
+}
+
+fn collect_refs(value: &Value, out: &mut Vec<String>) {
+    match value {
+        Value::Object(map) => {
+            if let Some(Value::String(r)) = map.get("$ref") {
+                out.push(r.clone());
+            }
+            map.values().for_each(|v| collect_refs(v, out));
+        }
+        Value::Array(items) => items.iter().for_each(|v| collect_refs(v, out)),
+        _ => {}
+    }
+}
+
+/// Keywords whose value is one subschema.
+const SUBSCHEMA: &[&str] = &[
+    "additionalProperties",
+    "items",
+    "contains",
+    "not",
+    "if",
+    "then",
+    "else",
+    "propertyNames",
+    "unevaluatedItems",
+    "unevaluatedProperties",
+];
+/// Keywords whose value is a list of subschemas.
+const SUBSCHEMA_LIST: &[&str] = &["allOf", "anyOf", "oneOf", "prefixItems"];
+/// Keywords whose value maps names to subschemas (other than `properties`).
+const SUBSCHEMA_MAP: &[&str] = &[
+    "$defs",
+    "definitions",
+    "patternProperties",
+    "dependentSchemas",
+];
+
+/// Walks the schema and lists (JSON pointer, property schema) of every
+/// property without a non-empty description.
+fn undocumented_properties(schema: &Value, pointer: &str, out: &mut Vec<String>) {
+    let Value::Object(map) = schema else {
+        return;
+    };
+    for (key, value) in map {
+        let here = format!("{pointer}/{key}");
+        if key == "properties" {
+            let Value::Object(properties) = value else {
+                continue;
+            };
+            for (name, property) in properties {
+                let at = format!("{here}/{name}");
+                let documented = property
+                    .get("description")
+                    .and_then(Value::as_str)
+                    .is_some_and(|d| !d.trim().is_empty());
+                if !documented {
+                    out.push(format!("{at}  {property}"));
+                }
+                undocumented_properties(property, &at, out);
+            }
+        } else if SUBSCHEMA.contains(&key.as_str()) {
+            undocumented_properties(value, &here, out);
+        } else if SUBSCHEMA_LIST.contains(&key.as_str()) {
+            if let Value::Array(items) = value {
+                for (i, item) in items.iter().enumerate() {
+                    undocumented_properties(item, &format!("{here}/{i}"), out);
+                }
+            }
+        } else if SUBSCHEMA_MAP.contains(&key.as_str())
+            && let Value::Object(entries) = value
+        {
+            for (name, entry) in entries {
+                undocumented_properties(entry, &format!("{here}/{name}"), out);
+            }
+        }
+    }
+}
+
+#[test]
+fn every_property_has_a_description() {
+    let schema = schema();
+    let mut missing = Vec::new();
+    undocumented_properties(&schema, "#", &mut missing);
+    assert!(
+        missing.is_empty(),
+        "{} schema propert{} without a description (the doc comment of the field \
+         becomes the description; say the unit there):\n  {}",
+        missing.len(),
+        if missing.len() == 1 { "y" } else { "ies" },
+        missing.join("\n  ")
+    );
+}
+
+#[test]
+fn the_description_walk_finds_an_undocumented_property() {
+    let schema = serde_json::json!({
+        "properties": {"a": {"description": "documented", "type": "number"}},
+        "$defs": {"D": {"oneOf": [{"properties": {"b": {"type": "string"}}}]}}
+    });
+    let mut missing = Vec::new();
+    undocumented_properties(&schema, "#", &mut missing);
+    assert_eq!(missing.len(), 1, "{missing:?}");
+    assert!(missing[0].starts_with("#/$defs/D/oneOf/0/properties/b "));
+}
