@@ -5,7 +5,7 @@
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
-use crate::scenario::resolved::Scenario;
+use crate::scenario::resolved::{Contact, Scenario};
 use crate::surface::Profile;
 use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
 
@@ -29,6 +29,41 @@ pub struct WheelRef {
     pub wheel: usize,
 }
 
+/// The wheel–surface contact law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ContactLaw {
+    /// Wheels held to the surface (bilateral).
+    Permanent,
+    /// Unilateral, rigid: gap ≥ 0, force ≥ 0, gap·force = 0.
+    Rigid,
+    /// Unilateral, force = k δ for compression δ > 0.
+    Elastic {
+        /// k, N/m.
+        stiffness: f64,
+    },
+    /// Unilateral, force = C δ^1.5 for compression δ > 0.
+    Hertz {
+        /// C, N/m^1.5.
+        coefficient: f64,
+    },
+}
+
+impl ContactLaw {
+    /// Compression δ (m) that carries a force `force` (N ≥ 0).
+    pub fn compression(&self, force: f64) -> f64 {
+        match *self {
+            ContactLaw::Permanent | ContactLaw::Rigid => 0.0,
+            ContactLaw::Elastic { stiffness } => force / stiffness,
+            ContactLaw::Hertz { coefficient } => (force.max(0.0) / coefficient).powf(2.0 / 3.0),
+        }
+    }
+
+    /// Whether wheels may separate.
+    pub fn is_unilateral(&self) -> bool {
+        !matches!(self, ContactLaw::Permanent)
+    }
+}
+
 /// Everything the time integration needs.
 #[derive(Debug, Clone)]
 pub struct Model {
@@ -38,6 +73,8 @@ pub struct Model {
     pub vehicles: Vec<VehicleModel>,
     /// The surface under the wheels.
     pub profile: Profile,
+    /// The contact law.
+    pub contact: ContactLaw,
     /// Every wheel of every vehicle, flattened in vehicle order.
     pub wheels: Vec<WheelRef>,
     /// Static wheel loads on level ground, N, per flattened wheel: the load of
@@ -51,6 +88,8 @@ pub struct Model {
     pub beta: f64,
     /// Newmark γ.
     pub gamma: f64,
+    /// HHT α (0 = plain Newmark).
+    pub alpha: f64,
 }
 
 impl Model {
@@ -62,10 +101,16 @@ impl Model {
             .iter()
             .map(|v| VehicleModel::build(v, scenario.gravity))
             .collect();
+        let contact = match scenario.contact {
+            Contact::Permanent => ContactLaw::Permanent,
+            Contact::Rigid => ContactLaw::Rigid,
+            Contact::Elastic { stiffness } => ContactLaw::Elastic { stiffness },
+            Contact::Hertz { coefficient } => ContactLaw::Hertz { coefficient },
+        };
         let mut wheels = Vec::new();
         let mut static_wheel_loads = Vec::new();
         for (v, vehicle) in vehicles.iter().enumerate() {
-            let (_, forces) = vehicle.static_equilibrium(v + 1)?;
+            let (_, forces) = vehicle.static_equilibrium(v + 1, &|f| contact.compression(f))?;
             for (w, wheel) in vehicle.wheels.iter().enumerate() {
                 wheels.push(WheelRef {
                     vehicle: v,
@@ -86,12 +131,14 @@ impl Model {
             bridge,
             vehicles,
             profile: Profile::build(&scenario.surface),
+            contact,
             wheels,
             static_wheel_loads,
             time_step,
             steps,
             beta: scenario.solver.newmark.beta,
             gamma: scenario.solver.newmark.gamma,
+            alpha: scenario.solver.newmark.alpha,
         })
     }
 
@@ -107,6 +154,13 @@ impl Model {
         self.wheels
             .iter()
             .position(|r| r.vehicle == vehicle && r.wheel == wheel)
+    }
+
+    /// Static equilibrium of vehicle `v` under this model's contact law.
+    pub fn static_state(&self, v: usize) -> (nalgebra::DVector<f64>, Vec<f64>) {
+        self.vehicles[v]
+            .static_equilibrium(v + 1, &|f| self.contact.compression(f))
+            .expect("static equilibrium was checked when the model was built")
     }
 
     /// Simulated duration, s.

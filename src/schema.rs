@@ -19,9 +19,8 @@ pub fn schema_json() -> String {
 fn describe_tags(value: &mut Value) {
     match value {
         Value::Object(map) => {
-            if let Some(Value::Object(tag)) = map
-                .get_mut("properties")
-                .and_then(|p| p.get_mut("type"))
+            if let Some(Value::Object(tag)) =
+                map.get_mut("properties").and_then(|p| p.get_mut("type"))
                 && !tag.contains_key("description")
                 && let Some(Value::String(variant)) = tag.get("const").cloned()
             {

@@ -30,6 +30,8 @@ enum Probe {
     BridgeAcceleration { shape: Vec<f64> },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
+    /// Flattened wheel index.
+    ContactGap { wheel: usize },
     /// Vehicle and DOF; displacement from static equilibrium.
     VehicleDisplacement { vehicle: usize, dof: usize },
     /// Vehicle and DOF.
@@ -62,6 +64,40 @@ pub struct History {
     pub time: Vec<f64>,
     /// The columns in scenario order.
     pub columns: Vec<Column>,
+    /// Separation statistics of every wheel with a DOF, under unilateral
+    /// contact (empty under permanent contact).
+    pub separation: Vec<WheelSeparation>,
+}
+
+/// Gap above which a wheel with zero contact force counts as separated, m.
+/// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
+pub const SEPARATION_GAP: f64 = 1e-9;
+
+/// Loss of contact of one wheel over a run.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct WheelSeparation {
+    /// Vehicle number from 1.
+    pub vehicle: usize,
+    /// Wheel number from 1.
+    pub wheel: usize,
+    /// Whether the wheel ever lost contact.
+    pub separated: bool,
+    /// Number of contact-loss episodes.
+    pub episodes: usize,
+    /// Time of the first loss of contact, s.
+    pub first_loss_time: Option<f64>,
+    /// Position of the wheel at the first loss, m.
+    pub first_loss_position: Option<f64>,
+    /// Total time separated, s (steps separated × Δt).
+    pub time_separated: f64,
+    /// Largest gap between wheel and surface, m (0 if never separated).
+    pub max_gap: f64,
+    /// Time of the largest gap, s.
+    pub max_gap_time: Option<f64>,
+    #[serde(skip)]
+    flat: usize,
+    #[serde(skip)]
+    apart: bool,
 }
 
 /// Samples columns each step; see [`History`].
@@ -95,17 +131,18 @@ impl<'m> Recorder<'m> {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
                 }
-                Quantity::ContactForce => {
+                Quantity::ContactForce | Quantity::ContactGap => {
                     let wheel = record.wheel.map_or(0, |w| w - 1);
                     let flat = model
                         .wheel_index(vehicle, wheel)
                         .expect("wheel numbers were validated when resolving");
                     let offset = model.vehicles[vehicle].wheels[wheel].offset;
-                    (
-                        Probe::ContactForce { wheel: flat },
-                        "N",
-                        PositionRef { vehicle, offset },
-                    )
+                    let position = PositionRef { vehicle, offset };
+                    if record.quantity == Quantity::ContactForce {
+                        (Probe::ContactForce { wheel: flat }, "N", position)
+                    } else {
+                        (Probe::ContactGap { wheel: flat }, "m", position)
+                    }
                 }
                 Quantity::VehicleDisplacement | Quantity::VehicleAcceleration => {
                     let dof = record
@@ -145,11 +182,40 @@ impl<'m> Recorder<'m> {
                 probe,
             });
         }
+        let separation = if model.contact.is_unilateral() {
+            model
+                .wheels
+                .iter()
+                .enumerate()
+                .filter(|(_, r)| {
+                    matches!(
+                        model.vehicles[r.vehicle].wheels[r.wheel].kind,
+                        crate::vehicle::WheelKind::Dof(_)
+                    )
+                })
+                .map(|(flat, r)| WheelSeparation {
+                    vehicle: r.vehicle + 1,
+                    wheel: r.wheel + 1,
+                    separated: false,
+                    episodes: 0,
+                    first_loss_time: None,
+                    first_loss_position: None,
+                    time_separated: 0.0,
+                    max_gap: 0.0,
+                    max_gap_time: None,
+                    flat,
+                    apart: false,
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
         Ok(Self {
             model,
             history: History {
                 time: Vec::with_capacity(capacity),
                 columns,
+                separation,
             },
         })
     }
@@ -167,6 +233,29 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 impl Observer for Recorder<'_> {
     fn observe(&mut self, view: &StepView<'_>) {
         self.history.time.push(view.time);
+        let dt = self.model.time_step;
+        for wheel in &mut self.history.separation {
+            let gap = view.contact_gaps[wheel.flat];
+            let apart = view.contact_forces[wheel.flat] <= 0.0 && gap > SEPARATION_GAP;
+            if apart {
+                if !wheel.apart {
+                    wheel.episodes += 1;
+                    if wheel.first_loss_time.is_none() {
+                        wheel.first_loss_time = Some(view.time);
+                        wheel.first_loss_position = Some(view.wheel_positions[wheel.flat]);
+                    }
+                }
+                wheel.separated = true;
+                if view.step > 0 {
+                    wheel.time_separated += dt;
+                }
+                if gap > wheel.max_gap {
+                    wheel.max_gap = gap;
+                    wheel.max_gap_time = Some(view.time);
+                }
+            }
+            wheel.apart = apart;
+        }
         let model = self.model;
         for column in &mut self.history.columns {
             let value = match &column.probe {
@@ -186,6 +275,7 @@ impl Observer for Recorder<'_> {
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
+                Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
                 Probe::VehicleDisplacement { vehicle, dof } => {
                     let state = &view.vehicles[*vehicle];
                     state.displacement[*dof] - state.static_displacement[*dof]

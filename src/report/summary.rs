@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::model::Model;
-use crate::record::{Column, History};
+use crate::record::{Column, History, WheelSeparation};
 use crate::scenario::resolved::Quantity;
 
 /// An extreme value and where it happened.
@@ -52,6 +52,8 @@ pub struct RunInfo {
     pub vbi_version: &'static str,
     /// Solver method.
     pub solver: &'static str,
+    /// Contact model.
+    pub contact: &'static str,
     /// Wall time of build + solve + record, s.
     pub wall_time: f64,
     /// Number of time steps.
@@ -79,6 +81,11 @@ pub struct Summary {
     pub run: RunInfo,
     /// One entry per recorded quantity, in scenario order.
     pub quantities: Vec<QuantitySummary>,
+    /// Under unilateral contact: loss of contact of every wheel with a DOF
+    /// (a wheel counts as separated while its force is 0 and its gap exceeds
+    /// 1e-9 m).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub separation: Vec<WheelSeparation>,
 }
 
 /// Static reference used for DAFs.
@@ -155,7 +162,17 @@ impl Summary {
             scenario: name.to_string(),
             run: RunInfo {
                 vbi_version: env!("CARGO_PKG_VERSION"),
-                solver: "coupled",
+                solver: if model.contact.is_unilateral() {
+                    "lcp"
+                } else {
+                    "coupled"
+                },
+                contact: match model.contact {
+                    crate::model::ContactLaw::Permanent => "permanent",
+                    crate::model::ContactLaw::Rigid => "rigid",
+                    crate::model::ContactLaw::Elastic { .. } => "elastic",
+                    crate::model::ContactLaw::Hertz { .. } => "hertz",
+                },
                 wall_time,
                 steps: model.steps,
                 time_step: model.time_step,
@@ -166,6 +183,7 @@ impl Summary {
                 static_reference: STATIC_REFERENCE,
             },
             quantities,
+            separation: history.separation.clone(),
         }
     }
 }

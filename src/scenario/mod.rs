@@ -124,8 +124,35 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
     };
     match de::from_node::<ScenarioRaw>(&node) {
         Ok(raw) => Ok((raw, node)),
-        Err(e) => Err(invalid(e.loc.unwrap_or(node.loc), e.message)),
+        Err(e) => Err(invalid(e.loc.unwrap_or(node.loc), plain_words(&e.message))),
     }
+}
+
+/// Replaces Rust type names in serde's messages with words a user knows:
+/// `struct OscillatorRaw` → `a mapping`, `f64` → `a number`, `usize` → `a
+/// whole number`.
+fn plain_words(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(i) = rest.find("struct ") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + "struct ".len()..];
+        let end = after
+            .find(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .unwrap_or(after.len());
+        out.push_str(if &after[..end] == "ScenarioRaw" {
+            "a mapping with the scenario's keys (name, bridge, vehicles, …)"
+        } else {
+            "a mapping"
+        });
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    let mut out = out.replace("expected f64", "expected a number");
+    for int in ["usize", "u64", "u32", "u16", "u8", "i64", "i32"] {
+        out = out.replace(&format!("expected {int}"), "expected a whole number");
+    }
+    out
 }
 
 /// Parses and resolves a scenario from text; `file` labels diagnostics.

@@ -201,22 +201,69 @@ pub enum SurfaceRaw {
 pub enum ContactRaw {
     /// Every wheel follows the bridge surface at all times; the contact force
     /// may become negative (tension), which flags where separation would occur.
+    /// Solved by `method: coupled`.
     Permanent,
+    /// Rigid unilateral contact: at every wheel gap ≥ 0, force ≥ 0 and
+    /// gap · force = 0, solved as a linear complementarity problem per step
+    /// (`method: lcp`; the LCP separation paper, Section 3). A wheel that
+    /// lands again gets a force constant over that step; there is no impact model.
+    Rigid,
+    /// Elastic unilateral contact: a linear tensionless spring under each wheel,
+    /// force = stiffness · compression when compressed, else 0 (the LCP paper's
+    /// Section 4 relaxation form; `method: lcp`). Give `stiffness` or `stiffness_ratio`.
+    Elastic {
+        /// Contact spring stiffness per wheel, N/m.
+        #[serde(default)]
+        stiffness: Option<f64>,
+        /// Contact-to-suspension stiffness ratio k_c / k_v (dimensionless); the
+        /// stiffness is this times the suspension stiffness of the oscillator(s),
+        /// which must then all have the same suspension stiffness.
+        #[serde(default)]
+        stiffness_ratio: Option<f64>,
+    },
+    /// Hertzian wheel–rail contact: force = C · compression^1.5 when compressed,
+    /// else 0 (`method: lcp`, with Newton iterations on the linearised law per
+    /// step). Give `coefficient`, or `wheel_radius` to compute it.
+    Hertz {
+        /// Hertz coefficient C, N/m^1.5.
+        #[serde(default)]
+        coefficient: Option<f64>,
+        /// Wheel rolling radius, m; C = G^-1.5 with the contact constant
+        /// G = 4.57e-8 R^-0.149 m/N^(2/3) for a worn (LM) tread or
+        /// G = 3.86e-8 R^-0.115 for a conical tread (Zhai, Vehicle–Track Coupled
+        /// Dynamics, 2020, §2.4.1).
+        #[serde(default)]
+        wheel_radius: Option<f64>,
+        /// Tread profile for `wheel_radius`: `worn` (default) or `conical`.
+        #[serde(default)]
+        profile: Option<TreadProfile>,
+    },
+}
+
+/// Wheel tread profile, for the Hertz contact constant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum TreadProfile {
+    /// Worn (LM) tread: G = 4.57e-8 R^-0.149.
+    Worn,
+    /// Conical tread: G = 3.86e-8 R^-0.115.
+    Conical,
 }
 
 /// Time integration settings.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SolverRaw {
-    /// Solution method. Default `coupled`.
+    /// Solution method. Default: `coupled` for permanent contact, `lcp` for
+    /// unilateral contact (rigid, elastic, Hertz).
     #[serde(default)]
     pub method: Option<SolverMethod>,
     /// Time step, s. Default: min(1e-3, 1 / (20 f_max)) where f_max is the
     /// highest bridge frequency kept.
     #[serde(default)]
     pub time_step: Option<f64>,
-    /// Newmark parameters. Default β = 1/4, γ = 1/2 (average acceleration,
-    /// unconditionally stable, no numerical damping).
+    /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
+    /// acceleration: unconditionally stable, second order, no numerical damping).
     #[serde(default)]
     pub newmark: Option<NewmarkRaw>,
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
@@ -228,21 +275,32 @@ pub struct SolverRaw {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum SolverMethod {
-    /// Vehicle and modal bridge equations solved together at every step, the
-    /// contact forces eliminated through the step's contact compliance.
+    /// Permanent contact: vehicle and modal bridge equations solved together at
+    /// every step, the wheel DOFs eliminated by the contact kinematics.
     Coupled,
+    /// Unilateral contact: bridge and vehicles advanced as uncoupled subsystems,
+    /// the contact forces found from a linear complementarity problem per step
+    /// (Lemke's method).
+    Lcp,
 }
 
-/// Newmark-β parameters.
+/// Newmark-β parameters, with the Hilber–Hughes–Taylor α for numerical
+/// damping of the highest frequencies.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct NewmarkRaw {
-    /// β (dimensionless). Default 0.25.
+    /// β (dimensionless). Default 0.25, or (1 − α)²/4 when `alpha` is given.
     #[serde(default)]
     pub beta: Option<f64>,
-    /// γ (dimensionless). Default 0.5.
+    /// γ (dimensionless). Default 0.5, or 1/2 − α when `alpha` is given.
     #[serde(default)]
     pub gamma: Option<f64>,
+    /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark). A
+    /// negative α (e.g. −0.05) keeps second order and unconditional stability
+    /// and damps the highest modes, which quiets the ringing of wheels held to
+    /// the surface (rigid contact).
+    #[serde(default)]
+    pub alpha: Option<f64>,
 }
 
 /// One recorded quantity (a column of the time history).
@@ -280,6 +338,10 @@ pub enum Quantity {
     BridgeAcceleration,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,
+    /// Gap between a wheel and the surface under it, m: positive when the wheel
+    /// is lifted off (separated); negative is the compression of an elastic or
+    /// Hertz contact; 0 under permanent contact.
+    ContactGap,
     /// Vehicle DOF displacement from its static equilibrium on the rigid flat
     /// approach, m (or rad), positive upward.
     VehicleDisplacement,

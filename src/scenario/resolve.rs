@@ -92,9 +92,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let bridge = resolve_bridge(&raw.bridge, ck);
     let vehicles = resolve_vehicles(&raw.vehicles, ck);
     let surface = resolve_surface(raw.surface.as_ref(), ck);
-    let contact = match raw.contact {
-        None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
-    };
+    let contact = resolve_contact(raw.contact.as_ref(), &raw.vehicles, ck);
     let solver_raw = raw.solver.clone().unwrap_or(raw::SolverRaw {
         method: None,
         time_step: None,
@@ -104,10 +102,19 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
         gamma: None,
+        alpha: None,
     });
+    let alpha = newmark_raw.alpha.unwrap_or(0.0);
+    if !(-1.0 / 3.0..=0.0).contains(&alpha) {
+        ck.error(
+            "solver.newmark.alpha",
+            format!("HHT α must be in [−1/3, 0], got {alpha}"),
+        );
+    }
     let newmark = Newmark {
-        beta: newmark_raw.beta.unwrap_or(0.25),
-        gamma: newmark_raw.gamma.unwrap_or(0.5),
+        beta: newmark_raw.beta.unwrap_or((1.0 - alpha).powi(2) / 4.0),
+        gamma: newmark_raw.gamma.unwrap_or(0.5 - alpha),
+        alpha,
     };
     ck.positive("solver.newmark.beta", newmark.beta, "Newmark β");
     if newmark.gamma < 0.5 {
@@ -159,6 +166,16 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         .map(|v| v.entry_time() + (length + v.length()) / v.speed())
         .fold(0.0, f64::max);
     let steps = (last_exit + free_vibration) / time_step;
+    if steps < 10.0 {
+        ck.error(
+            "solver.time_step",
+            format!(
+                "a time step of {time_step} s gives only {} step(s) over the {:.4} s run; use at most a tenth of it",
+                steps.ceil(),
+                last_exit + free_vibration
+            ),
+        );
+    }
     if steps > MAX_STEPS {
         ck.error(
             "solver.time_step",
@@ -166,7 +183,8 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         );
     }
 
-    let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, ck);
+    let method = resolve_method(solver_raw.method, &contact, ck);
+    let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -179,7 +197,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         surface,
         contact,
         solver: Solver {
-            method: solver_raw.method.unwrap_or(SolverMethod::Coupled),
+            method,
             time_step,
             newmark,
             free_vibration,
@@ -196,8 +214,21 @@ fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> 
             if b.spans.is_empty() {
                 ck.error("bridge.spans", "`spans` needs at least one span length");
             }
+            let longest = b.spans.iter().copied().fold(0.0, f64::max);
             for (i, &s) in b.spans.iter().enumerate() {
                 ck.positive(&format!("bridge.spans[{i}]"), s, "a span length");
+                if s > 0.0 && s < 1e-3 * longest {
+                    ck.error(
+                        &format!("bridge.spans[{i}]"),
+                        format!("a span of {s} m is less than 1/1000 of the longest ({longest} m); the model would be ill-conditioned"),
+                    );
+                }
+            }
+            if longest > 1e5 {
+                ck.error(
+                    "bridge.spans",
+                    format!("a span of {longest} m is longer than 100 km"),
+                );
             }
             ck.positive(
                 "bridge.bending_stiffness",
@@ -295,6 +326,148 @@ fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> 
     }
 }
 
+/// The contact model; elastic stiffness from a ratio, Hertz coefficient from
+/// the wheel radius.
+fn resolve_contact(
+    raw: Option<&raw::ContactRaw>,
+    vehicles: &[raw::VehicleRaw],
+    ck: &mut Checker<'_>,
+) -> Contact {
+    match raw {
+        None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
+        Some(raw::ContactRaw::Rigid) => Contact::Rigid,
+        Some(raw::ContactRaw::Elastic {
+            stiffness,
+            stiffness_ratio,
+        }) => {
+            let stiffness = match (stiffness, stiffness_ratio) {
+                (Some(k), None) => {
+                    ck.positive("contact.stiffness", *k, "contact stiffness");
+                    *k
+                }
+                (None, Some(ratio)) => {
+                    ck.positive("contact.stiffness_ratio", *ratio, "contact stiffness ratio");
+                    let suspension: Vec<f64> = vehicles
+                        .iter()
+                        .filter_map(|v| match v {
+                            raw::VehicleRaw::Oscillator(o) => Some(o.stiffness),
+                            _ => None,
+                        })
+                        .collect();
+                    let all_oscillators = suspension.len() == vehicles.len();
+                    if suspension.is_empty()
+                        || !all_oscillators
+                        || suspension.iter().any(|&k| k != suspension[0])
+                    {
+                        ck.error(
+                            "contact.stiffness_ratio",
+                            "`stiffness_ratio` needs every vehicle to be an oscillator with the same suspension stiffness; give `stiffness` in N/m instead",
+                        );
+                        0.0
+                    } else {
+                        ratio * suspension[0]
+                    }
+                }
+                (Some(_), Some(_)) => {
+                    ck.error(
+                        "contact.stiffness_ratio",
+                        "give `stiffness` or `stiffness_ratio`, not both",
+                    );
+                    0.0
+                }
+                (None, None) => {
+                    ck.error(
+                        "contact",
+                        "elastic contact needs `stiffness` (N/m) or `stiffness_ratio`",
+                    );
+                    0.0
+                }
+            };
+            Contact::Elastic { stiffness }
+        }
+        Some(raw::ContactRaw::Hertz {
+            coefficient,
+            wheel_radius,
+            profile,
+        }) => {
+            let coefficient = match (coefficient, wheel_radius) {
+                (Some(c), None) => {
+                    ck.positive("contact.coefficient", *c, "Hertz coefficient");
+                    if profile.is_some() {
+                        ck.error(
+                            "contact.profile",
+                            "`profile` only applies with `wheel_radius`",
+                        );
+                    }
+                    *c
+                }
+                (None, Some(r)) => {
+                    ck.positive("contact.wheel_radius", *r, "wheel radius");
+                    hertz_coefficient(*r, profile.unwrap_or(raw::TreadProfile::Worn))
+                }
+                (Some(_), Some(_)) => {
+                    ck.error(
+                        "contact.wheel_radius",
+                        "give `coefficient` or `wheel_radius`, not both",
+                    );
+                    0.0
+                }
+                (None, None) => {
+                    ck.error(
+                        "contact",
+                        "Hertz contact needs `coefficient` (N/m^1.5) or `wheel_radius` (m)",
+                    );
+                    0.0
+                }
+            };
+            Contact::Hertz { coefficient }
+        }
+    }
+}
+
+/// Hertz coefficient C = G^-1.5 (N/m^1.5) of a wheel of rolling radius `radius`
+/// (m) on a rail, from the contact constant G (m/N^(2/3)) of Zhai, Vehicle–Track
+/// Coupled Dynamics (2020), §2.4.1: worn tread G = 4.57e-8 R^-0.149, conical
+/// tread G = 3.86e-8 R^-0.115.
+pub fn hertz_coefficient(radius: f64, profile: raw::TreadProfile) -> f64 {
+    let g = match profile {
+        raw::TreadProfile::Worn => 4.57e-8 * radius.powf(-0.149),
+        raw::TreadProfile::Conical => 3.86e-8 * radius.powf(-0.115),
+    };
+    g.powf(-1.5)
+}
+
+/// The solution method: by default the one the contact model needs.
+fn resolve_method(
+    method: Option<SolverMethod>,
+    contact: &Contact,
+    ck: &mut Checker<'_>,
+) -> SolverMethod {
+    let needed = if contact.is_unilateral() {
+        SolverMethod::Lcp
+    } else {
+        SolverMethod::Coupled
+    };
+    match method {
+        None => needed,
+        Some(m) if m == needed => m,
+        Some(SolverMethod::Coupled) => {
+            ck.error(
+                "solver.method",
+                "`method: coupled` keeps every wheel in permanent contact; unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
+            );
+            needed
+        }
+        Some(SolverMethod::Lcp) => {
+            ck.error(
+                "solver.method",
+                "`method: lcp` solves unilateral contact; with `contact: {type: permanent}` use `method: coupled`",
+            );
+            needed
+        }
+    }
+}
+
 fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
     if !(0.0..1.0).contains(&ratio) {
         ck.error(
@@ -337,6 +510,20 @@ fn entry_time(
     }
 }
 
+/// Highest vehicle speed accepted, m/s (beyond any vehicle; keeps the time
+/// grid and the contact kinematics meaningful).
+pub const MAX_SPEED: f64 = 1000.0;
+
+fn check_speed(ck: &mut Checker<'_>, at: &str, speed: f64) {
+    ck.positive(&format!("{at}.speed"), speed, "speed");
+    if speed > MAX_SPEED {
+        ck.error(
+            &format!("{at}.speed"),
+            format!("a speed of {speed} m/s is above {MAX_SPEED} m/s"),
+        );
+    }
+}
+
 fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Vec<Vehicle>> {
     let before = ck.diagnostics.len();
     if raws.is_empty() {
@@ -347,7 +534,7 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
         let at = format!("vehicles[{i}]");
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
-                ck.positive(&format!("{at}.speed"), v.speed, "speed");
+                check_speed(ck, &at, v.speed);
                 if v.loads.is_empty() {
                     ck.error(
                         &format!("{at}.loads"),
@@ -386,7 +573,7 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
                 }));
             }
             raw::VehicleRaw::Oscillator(v) => {
-                ck.positive(&format!("{at}.speed"), v.speed, "speed");
+                check_speed(ck, &at, v.speed);
                 ck.positive(&format!("{at}.sprung_mass"), v.sprung_mass, "sprung mass");
                 let unsprung = v.unsprung_mass.unwrap_or(0.0);
                 ck.non_negative(&format!("{at}.unsprung_mass"), unsprung, "unsprung mass");
@@ -450,10 +637,11 @@ fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
     bridge: &Bridge,
     vehicles: &[Vehicle],
+    contact: &Contact,
     ck: &mut Checker<'_>,
 ) -> Vec<Record> {
     let Some(raws) = raws else {
-        return default_records(bridge, vehicles);
+        return default_records(bridge, vehicles, contact);
     };
     let length = bridge.length();
     let mut out = Vec::with_capacity(raws.len());
@@ -506,7 +694,8 @@ fn resolve_records(
         } else if r.x.is_some() {
             ck.error(&format!("{at}.x"), unused("x"));
         }
-        if q != Quantity::ContactForce && r.wheel.is_some() {
+        let is_wheel = matches!(q, Quantity::ContactForce | Quantity::ContactGap);
+        if !is_wheel && r.wheel.is_some() {
             ck.error(&format!("{at}.wheel"), unused("wheel"));
         }
         if !is_vehicle_dof && r.dof.is_some() {
@@ -529,7 +718,7 @@ fn resolve_records(
             }
         }
         let mut wheel = None;
-        if q == Quantity::ContactForce {
+        if is_wheel {
             let w = r.wheel.unwrap_or(1);
             if let Some(v) = vehicle {
                 let n = wheel_count(&vehicles[v - 1]);
@@ -590,8 +779,9 @@ fn resolve_records(
     out
 }
 
-/// Displacement at the middle of every span and every wheel's contact force.
-fn default_records(bridge: &Bridge, vehicles: &[Vehicle]) -> Vec<Record> {
+/// Displacement at the middle of every span and every wheel's contact force
+/// (and, with unilateral contact, every contact wheel's gap).
+fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> Vec<Record> {
     let mut out = Vec::new();
     let Bridge::Beam(beam) = bridge;
     let mut start = 0.0;
@@ -616,6 +806,16 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle]) -> Vec<Record> {
                 wheel: Some(w + 1),
                 dof: None,
             });
+            if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
+                out.push(Record {
+                    name: format!("vehicle{}_wheel{}_gap", v + 1, w + 1),
+                    quantity: Quantity::ContactGap,
+                    x: None,
+                    vehicle: Some(v + 1),
+                    wheel: Some(w + 1),
+                    dof: None,
+                });
+            }
         }
     }
     out

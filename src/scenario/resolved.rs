@@ -209,6 +209,25 @@ pub enum Surface {
 pub enum Contact {
     /// Wheels always follow the surface.
     Permanent,
+    /// Rigid unilateral contact.
+    Rigid,
+    /// Tensionless linear spring per wheel.
+    Elastic {
+        /// N/m.
+        stiffness: f64,
+    },
+    /// Hertz law force = C δ^1.5.
+    Hertz {
+        /// N/m^1.5.
+        coefficient: f64,
+    },
+}
+
+impl Contact {
+    /// Whether wheels may separate.
+    pub fn is_unilateral(&self) -> bool {
+        !matches!(self, Contact::Permanent)
+    }
 }
 
 /// Time integration settings.
@@ -231,6 +250,8 @@ pub struct Newmark {
     pub beta: f64,
     /// γ.
     pub gamma: f64,
+    /// HHT α (0 = plain Newmark).
+    pub alpha: f64,
 }
 
 /// One recorded quantity.

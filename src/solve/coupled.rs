@@ -42,7 +42,7 @@ struct ContactShapes {
     values: Vec<f64>,
     slopes: Vec<f64>,
     curvatures: Vec<f64>,
-    /// φ/k̂, elementwise.
+    /// (1+α)φ/k̂, elementwise: modal response to a unit contact force.
     scaled: Vec<f64>,
     /// P₁ = a₁φ + vφ′ and P₂ = a₀φ + 2va₁φ′ + v²φ″: the velocity and
     /// acceleration rows acting on q_{n+1}.
@@ -74,7 +74,7 @@ pub fn run(
     observer: &mut dyn Observer,
     progress: Progress<'_>,
 ) -> Result<(), SolveError> {
-    let nm = Newmark::new(model.beta, model.gamma, model.time_step);
+    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
     let modes = bridge.mode_count();
 
@@ -109,9 +109,7 @@ pub fn run(
     let mut partitions = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
         let n = vehicle.dofs();
-        let (static_displacement, _) = vehicle
-            .static_equilibrium(v + 1)
-            .expect("static equilibrium was checked when the model was built");
+        let (static_displacement, _) = model.static_state(v);
         let partition = Partition::new(vehicle, wheel_dofs[v].clone(), &nm).ok_or_else(|| {
             SolveError::SingularContact {
                 time: 0.0,
@@ -139,6 +137,7 @@ pub fn run(
     let mut lambda = vec![0.0; nc];
     let nw = model.wheels.len();
     let mut contact_forces = model.static_wheel_loads.clone();
+    let contact_gaps = vec![0.0; nw];
     let mut wheel_positions: Vec<f64> = (0..nw).map(|w| model.wheel_position(w, 0.0)).collect();
 
     observer.observe(&StepView {
@@ -148,6 +147,7 @@ pub fn run(
         modal_acceleration: &modal.acceleration,
         vehicles: &states,
         contact_forces: &contact_forces,
+        contact_gaps: &contact_gaps,
         wheel_positions: &wheel_positions,
     });
 
@@ -183,7 +183,7 @@ pub fn run(
                 &mut s.curvatures,
             );
             for i in 0..modes {
-                s.scaled[i] = s.values[i] * modal.flexibility[i];
+                s.scaled[i] = s.values[i] * modal.contact_flexibility[i];
                 s.velocity_row[i] = nm.a1 * s.values[i] + v * s.slopes[i];
                 s.acceleration_row[i] =
                     nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
@@ -217,6 +217,9 @@ pub fn run(
                 &state.displacement,
                 &state.velocity,
                 &state.acceleration,
+                contact_of[v]
+                    .iter()
+                    .map(|&c| contact_forces[contacts[c].wheel]),
             );
             for (a, &c) in contact_of[v].iter().enumerate() {
                 let mut rhs = partition.base_forces[a];
@@ -250,7 +253,7 @@ pub fn run(
 
         // Bridge: q = q* − DΦᵀλ, then Newmark velocity and acceleration.
         for (c, s) in shapes.iter().enumerate() {
-            modal.apply_contact(&s.scaled, lambda[c]);
+            modal.apply_contact(&s.values, lambda[c]);
         }
         modal.finish(&nm);
         let (q, qd, qdd) = (&modal.displacement, &modal.velocity, &modal.acceleration);
@@ -260,11 +263,7 @@ pub fn run(
             let x = wheel_positions[contact.wheel];
             let v = contact.speed;
             let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
-            let (w, wx, wxx) = (
-                dot(&s.values, &q),
-                dot(&s.slopes, &q),
-                dot(&s.curvatures, &q),
-            );
+            let (w, wx, wxx) = (dot(&s.values, q), dot(&s.slopes, q), dot(&s.curvatures, q));
             let state = &mut states[contact.vehicle];
             state.displacement[contact.dof] = w + r;
             state.velocity[contact.dof] = dot(&s.values, qd) + v * (wx + dr);
@@ -300,6 +299,7 @@ pub fn run(
             modal_acceleration: &modal.acceleration,
             vehicles: &states,
             contact_forces: &contact_forces,
+            contact_gaps: &contact_gaps,
             wheel_positions: &wheel_positions,
         });
         if step % report_every == 0 || step == model.steps {

@@ -10,9 +10,11 @@
 
 pub mod coupled;
 pub mod dense;
+pub mod lcp;
 pub mod modal;
 pub mod newmark;
 pub mod partition;
+pub mod unilateral;
 
 use nalgebra::DVector;
 use thiserror::Error;
@@ -33,6 +35,16 @@ pub enum SolveError {
         positions: String,
         /// Likely cause.
         cause: String,
+    },
+    /// The contact problem has no solution or did not converge.
+    #[error("the contact problem failed at t = {time:.6} s ({positions}): {reason}")]
+    Contact {
+        /// Time, s.
+        time: f64,
+        /// Vehicle front positions, formatted.
+        positions: String,
+        /// Explanation.
+        reason: String,
     },
     /// The contact compliance matrix is singular.
     #[error("the contact system is singular at t = {time:.6} s: {reason}")]
@@ -73,6 +85,9 @@ pub struct StepView<'a> {
     pub vehicles: &'a [VehicleState],
     /// Contact force per flattened wheel, N, compression positive.
     pub contact_forces: &'a [f64],
+    /// Wheel-to-surface gap per flattened wheel, m: positive = lifted off,
+    /// negative = contact compression; 0 for loads and permanent contact.
+    pub contact_gaps: &'a [f64],
     /// Position of each flattened wheel, m.
     pub wheel_positions: &'a [f64],
 }
@@ -81,6 +96,19 @@ pub struct StepView<'a> {
 pub trait Observer {
     /// Called at t = 0 and after every step.
     fn observe(&mut self, view: &StepView<'_>);
+}
+
+/// Integrates the model with the solver its contact law needs.
+pub fn run(
+    model: &Model,
+    observer: &mut dyn Observer,
+    progress: Progress<'_>,
+) -> Result<(), SolveError> {
+    if model.contact.is_unilateral() {
+        unilateral::run(model, observer, progress)
+    } else {
+        coupled::run(model, observer, progress)
+    }
 }
 
 /// Progress reporting: called with (steps done, total steps) now and then.

@@ -16,8 +16,16 @@ use crate::bridge::ModalBridge;
 pub struct ModalStep {
     /// 2ζᵢωᵢ, 1/s.
     modal_damping: Vec<f64>,
+    /// ωᵢ², 1/s².
+    stiffness: Vec<f64>,
+    /// (1+α)/k̂ᵢ: modal displacement per unit modal contact force.
+    pub contact_flexibility: Vec<f64>,
     /// 1/k̂ᵢ.
-    pub flexibility: Vec<f64>,
+    flexibility: Vec<f64>,
+    /// Modal force of the previous step (loads and contacts), Fₙ.
+    previous_force: Vec<f64>,
+    /// Modal force being assembled for this step, F_{n+1}.
+    current_force: Vec<f64>,
     /// Modal displacements q.
     pub displacement: Vec<f64>,
     /// Modal velocities q̇.
@@ -43,15 +51,20 @@ impl ModalStep {
             .zip(&bridge.damping_ratios)
             .map(|(w, z)| 2.0 * z * w)
             .collect();
-        let flexibility = bridge
-            .circular_frequencies
+        let stiffness: Vec<f64> = bridge.circular_frequencies.iter().map(|w| w * w).collect();
+        let flexibility: Vec<f64> = stiffness
             .iter()
             .zip(&modal_damping)
-            .map(|(w, c)| 1.0 / (w * w + nm.a0 + nm.a1 * c))
+            .map(|(k, c)| 1.0 / (nm.a0 + nm.weight() * (nm.a1 * c + k)))
             .collect();
+        let contact_flexibility = flexibility.iter().map(|f| nm.weight() * f).collect();
         Self {
             modal_damping,
+            stiffness,
+            contact_flexibility,
             flexibility,
+            previous_force: vec![0.0; modes],
+            current_force: vec![0.0; modes],
             displacement: vec![0.0; modes],
             velocity: vec![0.0; modes],
             acceleration: vec![0.0; modes],
@@ -70,32 +83,36 @@ impl ModalStep {
         bridge: &ModalBridge,
         loads: impl Iterator<Item = (f64, f64)>,
     ) {
-        for i in 0..self.predictor.len() {
-            let (q, v, a) = (self.displacement[i], self.velocity[i], self.acceleration[i]);
-            self.inertia_history[i] = nm.inertia_history(q, v, a);
-            self.damping_history[i] = nm.damping_history(q, v, a);
-            self.predictor[i] =
-                self.inertia_history[i] + self.modal_damping[i] * self.damping_history[i];
-        }
+        self.current_force.fill(0.0);
         for (x, load) in loads {
             if bridge.is_on(x) {
                 bridge.mode_values(x, &mut self.shape_work);
-                for (p, phi) in self.predictor.iter_mut().zip(&self.shape_work) {
-                    *p -= load * phi;
+                for (f, phi) in self.current_force.iter_mut().zip(&self.shape_work) {
+                    *f -= load * phi;
                 }
             }
         }
-        for (p, f) in self.predictor.iter_mut().zip(&self.flexibility) {
-            *p *= f;
+        let (w, alpha) = (nm.weight(), nm.alpha);
+        for i in 0..self.predictor.len() {
+            let (q, v, a) = (self.displacement[i], self.velocity[i], self.acceleration[i]);
+            let c = self.modal_damping[i];
+            self.inertia_history[i] = nm.inertia_history(q, v, a);
+            self.damping_history[i] = nm.damping_history(q, v, a);
+            self.predictor[i] = (w * self.current_force[i] - alpha * self.previous_force[i]
+                + self.inertia_history[i]
+                + w * c * self.damping_history[i]
+                + alpha * (c * v + self.stiffness[i] * q))
+                * self.flexibility[i];
         }
     }
 
-    /// Applies a contact force `force` (N, compression) at a point whose mode
-    /// values divided by k̂ are `scaled_shape`.
+    /// Applies a contact force `force` (N, compression) at a point with mode
+    /// values `shape`.
     #[inline]
-    pub fn apply_contact(&mut self, scaled_shape: &[f64], force: f64) {
-        for (p, s) in self.predictor.iter_mut().zip(scaled_shape) {
-            *p -= s * force;
+    pub fn apply_contact(&mut self, shape: &[f64], force: f64) {
+        for i in 0..self.predictor.len() {
+            self.predictor[i] -= self.contact_flexibility[i] * shape[i] * force;
+            self.current_force[i] -= shape[i] * force;
         }
     }
 
@@ -107,6 +124,7 @@ impl ModalStep {
             self.acceleration[i] = nm.a0 * q - self.inertia_history[i];
             self.velocity[i] = nm.a1 * q - self.damping_history[i];
         }
+        std::mem::swap(&mut self.previous_force, &mut self.current_force);
     }
 
     /// Sum of the state, for a cheap finiteness check.

@@ -1,12 +1,19 @@
 //! Newmark-β time integration constants (Newmark 1959; Bathe, Finite Element
-//! Procedures, Table 9.3).
+//! Procedures, Table 9.3) with the Hilber–Hughes–Taylor α modification
+//! (Hilber, Hughes & Taylor 1977; Hughes, The Finite Element Method, §9.3.3).
 //!
-//! For M ü + C u̇ + K u = F at t_{n+1} = t_n + Δt:
-//! K̂ = K + a₀M + a₁C,
-//! R̂ = F_{n+1} + M(a₀uₙ + a₂u̇ₙ + a₃üₙ) + C(a₁uₙ + a₄u̇ₙ + a₅üₙ),
-//! ü_{n+1} = a₀(u_{n+1} − uₙ) − a₂u̇ₙ − a₃üₙ,  u̇_{n+1} = u̇ₙ + a₆üₙ + a₇ü_{n+1}.
+//! HHT-α writes the equations of motion at t_{n+1+α} = t_{n+1} + αΔt,
+//! α ∈ [−1/3, 0] (α = 0 is plain Newmark):
+//! M ü_{n+1} + (1+α)(C u̇_{n+1} + K u_{n+1}) − α(C u̇ₙ + K uₙ) = (1+α)F_{n+1} − αFₙ,
+//! with the Newmark relations ü_{n+1} = a₀u_{n+1} − hₐ, u̇_{n+1} = a₁u_{n+1} − h_v,
+//! hₐ = a₀uₙ + a₂u̇ₙ + a₃üₙ, h_v = a₁uₙ + a₄u̇ₙ + a₅üₙ. Hence
+//! K̂ = a₀M + (1+α)(a₁C + K) and
+//! R̂ = (1+α)F_{n+1} − αFₙ + M hₐ + (1+α)C h_v + α(C u̇ₙ + K uₙ).
+//! With β = (1−α)²/4, γ = 1/2 − α the scheme is second order, unconditionally
+//! stable, and damps the highest frequencies (spectral radius (1+α)/(1−α) at
+//! ωΔt → ∞), which quiets the ringing of constrained wheel DOFs.
 
-/// The integration constants of one (β, γ, Δt).
+/// The integration constants of one (β, γ, α, Δt).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Newmark {
     /// 1/(βΔt²), 1/s².
@@ -25,11 +32,13 @@ pub struct Newmark {
     pub a6: f64,
     /// γΔt, s.
     pub a7: f64,
+    /// HHT α (≤ 0; 0 = plain Newmark).
+    pub alpha: f64,
 }
 
 impl Newmark {
-    /// Constants for parameters `beta`, `gamma` and step `dt` (s).
-    pub fn new(beta: f64, gamma: f64, dt: f64) -> Self {
+    /// Constants for parameters `beta`, `gamma`, HHT `alpha` and step `dt` (s).
+    pub fn new(beta: f64, gamma: f64, alpha: f64, dt: f64) -> Self {
         Self {
             a0: 1.0 / (beta * dt * dt),
             a1: gamma / (beta * dt),
@@ -39,7 +48,14 @@ impl Newmark {
             a5: dt / 2.0 * (gamma / beta - 2.0),
             a6: dt * (1.0 - gamma),
             a7: gamma * dt,
+            alpha,
         }
+    }
+
+    /// Weight 1 + α of the end-of-step elastic, damping and external forces.
+    #[inline]
+    pub fn weight(&self) -> f64 {
+        1.0 + self.alpha
     }
 
     /// History part of the effective load's inertia term, a₀u + a₂u̇ + a₃ü.

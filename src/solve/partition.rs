@@ -1,13 +1,16 @@
 //! A vehicle's matrices split into wheel DOFs W (those that ride the surface)
-//! and free DOFs F, with the free DOFs condensed for one Newmark step.
+//! and free DOFs F, with the free DOFs condensed for one HHT-α Newmark step
+//! (w = 1 + α; constants in [`super::newmark`]).
 //!
-//! With Newmark (ü = a₀u − hₐ, u̇ = a₁u − h_v at t_{n+1}) the free rows give
-//! u_F = K̂_FF⁻¹ [R̂_F − (M_FW ü_W + C_FW u̇_W + K_FW u_W)],
-//! R̂_F = f_g,F + M_FF hₐ,F + C_FF h_v,F, and the wheel rows give the contact
-//! forces λ_W = λ⁰_W + M̃ ü_W + C̃ u̇_W + K̃ u_W with T = K̂_WF K̂_FF⁻¹,
-//! M̃ = M_WW − T M_FW, C̃ = C_WW − T C_FW, K̃ = K_WW − T K_FW and
-//! λ⁰_W = T R̂_F − M_WF hₐ,F − C_WF h_v,F − f_g,W. All matrices here are
-//! constant over the run; per step only vectors change.
+//! With ü = a₀u − hₐ and u̇ = a₁u − h_v at t_{n+1}, the free rows give
+//! u_F = K̂_FF⁻¹ [R̂_F − M_FW ü_W − w(C_FW u̇_W + K_FW u_W)],
+//! K̂ = a₀M + w(a₁C + K), R̂_F = f_g,F + M_FF hₐ,F + w C_FF h_v,F + α(C_F· u̇ₙ + K_F· uₙ),
+//! and the wheel rows give the contact forces
+//! w λ_W = λ⁰ + M̃ ü_W + C̃ u̇_W + K̃ u_W, with T = K̂_WF K̂_FF⁻¹,
+//! M̃ = M_WW − T M_FW, C̃ = w(C_WW − T C_FW), K̃ = w(K_WW − T K_FW) and
+//! λ⁰ = T R̂_F − M_WF hₐ,F − w C_WF h_v,F − α(C_W· u̇ₙ + K_W· uₙ) − f_g,W + α λₙ.
+//! The stored M̃, C̃, K̃ and λ⁰ are divided by w, so they give λ_W directly.
+//! All matrices are constant over the run; per step only vectors change.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -30,22 +33,29 @@ pub struct Partition {
     stiffness_fw: DMatrix<f64>,
     mass_wf: DMatrix<f64>,
     damping_wf: DMatrix<f64>,
+    /// Rows F (resp. W) of C and K over all DOFs, for the α terms.
+    damping_f_all: DMatrix<f64>,
+    stiffness_f_all: DMatrix<f64>,
+    damping_w_all: DMatrix<f64>,
+    stiffness_w_all: DMatrix<f64>,
     /// T = K̂_WF K̂_FF⁻¹.
     transfer: DMatrix<f64>,
-    /// M̃, C̃, K̃: wheel-row operators on the wheel kinematics.
+    /// M̃/w: contact force per unit wheel acceleration, kg.
     pub condensed_mass: DMatrix<f64>,
-    /// C̃.
+    /// C̃/w, N·s/m.
     pub condensed_damping: DMatrix<f64>,
-    /// K̃.
+    /// K̃/w, N/m.
     pub condensed_stiffness: DMatrix<f64>,
     gravity_f: DVector<f64>,
     gravity_w: DVector<f64>,
+    weight: f64,
+    alpha: f64,
     // Work vectors.
     inertia_history: DVector<f64>,
     damping_history: DVector<f64>,
     effective_load: DVector<f64>,
     coupling: DVector<f64>,
-    /// λ⁰_W of the current step, N.
+    /// λ⁰/w of the current step, N.
     pub base_forces: DVector<f64>,
     free_solution: DVector<f64>,
 }
@@ -58,15 +68,18 @@ impl Partition {
     /// Splits `vehicle` with the given wheel DOFs; `None` if K̂_FF is singular.
     pub fn new(vehicle: &VehicleModel, wheel_dofs: Vec<usize>, nm: &Newmark) -> Option<Self> {
         let n = vehicle.dofs();
+        let all: Vec<usize> = (0..n).collect();
         let free_dofs: Vec<usize> = (0..n).filter(|d| !wheel_dofs.contains(d)).collect();
         let (w, f) = (&wheel_dofs[..], &free_dofs[..]);
-        let effective = &vehicle.stiffness + &vehicle.mass * nm.a0 + &vehicle.damping * nm.a1;
+        let weight = nm.weight();
+        let effective =
+            &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * weight;
         let effective_flexibility = select(&effective, f, f).try_inverse()?;
         let transfer = select(&effective, w, f) * &effective_flexibility;
         let mass_fw = select(&vehicle.mass, f, w);
         let damping_fw = select(&vehicle.damping, f, w);
         let stiffness_fw = select(&vehicle.stiffness, f, w);
-        let condensed_mass = select(&vehicle.mass, w, w) - &transfer * &mass_fw;
+        let condensed_mass = (select(&vehicle.mass, w, w) - &transfer * &mass_fw) / weight;
         let condensed_damping = select(&vehicle.damping, w, w) - &transfer * &damping_fw;
         let condensed_stiffness = select(&vehicle.stiffness, w, w) - &transfer * &stiffness_fw;
         let pick = |v: &DVector<f64>, idx: &[usize]| DVector::from_fn(idx.len(), |i, _| v[idx[i]]);
@@ -75,8 +88,14 @@ impl Partition {
             damping_ff: select(&vehicle.damping, f, f),
             mass_wf: select(&vehicle.mass, w, f),
             damping_wf: select(&vehicle.damping, w, f),
+            damping_f_all: select(&vehicle.damping, f, &all),
+            stiffness_f_all: select(&vehicle.stiffness, f, &all),
+            damping_w_all: select(&vehicle.damping, w, &all),
+            stiffness_w_all: select(&vehicle.stiffness, w, &all),
             gravity_f: pick(&vehicle.gravity_load, f),
             gravity_w: pick(&vehicle.gravity_load, w),
+            weight,
+            alpha: nm.alpha,
             inertia_history: DVector::zeros(f.len()),
             damping_history: DVector::zeros(f.len()),
             effective_load: DVector::zeros(f.len()),
@@ -96,31 +115,51 @@ impl Partition {
         })
     }
 
-    /// Starts a step from the state at tₙ: forms R̂_F and λ⁰_W.
+    /// Starts a step from the state at tₙ and the wheels' contact forces λₙ
+    /// (N, in wheel order): forms R̂_F and λ⁰/w.
     pub fn begin_step(
         &mut self,
         nm: &Newmark,
         displacement: &DVector<f64>,
         velocity: &DVector<f64>,
         acceleration: &DVector<f64>,
+        previous_forces: impl Iterator<Item = f64>,
     ) {
         for (k, &d) in self.free_dofs.iter().enumerate() {
             let (u, v, a) = (displacement[d], velocity[d], acceleration[d]);
             self.inertia_history[k] = nm.inertia_history(u, v, a);
             self.damping_history[k] = nm.damping_history(u, v, a);
         }
+        let (w, alpha) = (self.weight, self.alpha);
         self.effective_load.copy_from(&self.gravity_f);
         self.effective_load
             .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
         self.effective_load
-            .gemv(1.0, &self.damping_ff, &self.damping_history, 1.0);
+            .gemv(w, &self.damping_ff, &self.damping_history, 1.0);
+        if alpha != 0.0 {
+            self.effective_load
+                .gemv(alpha, &self.damping_f_all, velocity, 1.0);
+            self.effective_load
+                .gemv(alpha, &self.stiffness_f_all, displacement, 1.0);
+        }
+        // λ⁰ = T R̂_F − M_WF hₐ − w C_WF h_v − α(C_W·u̇ₙ + K_W·uₙ) − f_g,W + αλₙ.
         self.base_forces.copy_from(&self.gravity_w);
         self.base_forces
             .gemv(1.0, &self.transfer, &self.effective_load, -1.0);
         self.base_forces
             .gemv(-1.0, &self.mass_wf, &self.inertia_history, 1.0);
         self.base_forces
-            .gemv(-1.0, &self.damping_wf, &self.damping_history, 1.0);
+            .gemv(-w, &self.damping_wf, &self.damping_history, 1.0);
+        if alpha != 0.0 {
+            self.base_forces
+                .gemv(-alpha, &self.damping_w_all, velocity, 1.0);
+            self.base_forces
+                .gemv(-alpha, &self.stiffness_w_all, displacement, 1.0);
+            for (b, force) in self.base_forces.iter_mut().zip(previous_forces) {
+                *b += alpha * force;
+            }
+        }
+        self.base_forces /= w;
     }
 
     /// Finishes the step: with the wheel DOFs' new displacement, velocity and
@@ -133,13 +172,13 @@ impl Partition {
         velocity: &mut DVector<f64>,
         acceleration: &mut DVector<f64>,
     ) {
+        let w = self.weight;
         self.coupling.copy_from(&self.effective_load);
         for (j, &d) in self.wheel_dofs.iter().enumerate() {
             let (u, v, a) = (displacement[d], velocity[d], acceleration[d]);
             for i in 0..self.free_dofs.len() {
                 self.coupling[i] -= self.mass_fw[(i, j)] * a
-                    + self.damping_fw[(i, j)] * v
-                    + self.stiffness_fw[(i, j)] * u;
+                    + w * (self.damping_fw[(i, j)] * v + self.stiffness_fw[(i, j)] * u);
             }
         }
         self.free_solution

@@ -101,24 +101,30 @@ impl VehicleModel {
         self.entry_time + (length + rear) / self.speed
     }
 
-    /// Static equilibrium on rigid level ground: DOF displacements u₀ (m) and
-    /// the wheel contact forces λ₀ (N), from
-    /// [K −E; Eᵀ 0] [u₀; λ₀] = [f_g; 0] (wheel DOFs held at zero).
-    /// Load wheels carry their load. `number` is the vehicle number for errors.
+    /// Static equilibrium on level ground: DOF displacements u₀ (m) and the
+    /// wheel contact forces λ₀ (N). `compression(λ)` is the contact law's
+    /// compression δ (m) under a force λ (0 for rigid or permanent contact);
+    /// each contact wheel then sits at u_w = −δ(λ). Solves
+    /// [K −E; Eᵀ F] [u₀; λ₀] = [f_g; 0] with the secant flexibility
+    /// F = diag(δ(λ)/λ), iterated for a nonlinear law (Hertz: converges in a
+    /// few passes; the vehicles here are statically determinate on their
+    /// wheels, so λ₀ does not depend on F at all). Load wheels carry their
+    /// load. `number` is the vehicle number for errors.
     pub fn static_equilibrium(
         &self,
         number: usize,
+        compression: &dyn Fn(f64) -> f64,
     ) -> Result<(DVector<f64>, Vec<f64>), VehicleError> {
         let n = self.dofs();
+        let mut forces: Vec<f64> = self
+            .wheels
+            .iter()
+            .map(|w| match w.kind {
+                WheelKind::Load(load) => load,
+                WheelKind::Dof(_) => 0.0,
+            })
+            .collect();
         if n == 0 {
-            let forces = self
-                .wheels
-                .iter()
-                .map(|w| match w.kind {
-                    WheelKind::Load(load) => load,
-                    WheelKind::Dof(_) => 0.0,
-                })
-                .collect();
             return Ok((DVector::zeros(0), forces));
         }
         let contact_dofs: Vec<(usize, usize)> = self
@@ -131,28 +137,44 @@ impl VehicleModel {
             })
             .collect();
         let size = n + contact_dofs.len();
-        let mut system = DMatrix::<f64>::zeros(size, size);
-        let mut rhs = DVector::<f64>::zeros(size);
-        system.view_mut((0, 0), (n, n)).copy_from(&self.stiffness);
-        rhs.rows_mut(0, n).copy_from(&self.gravity_load);
-        for (k, &(_, dof)) in contact_dofs.iter().enumerate() {
-            system[(dof, n + k)] = -1.0;
-            system[(n + k, dof)] = 1.0;
-        }
-        let solution = system
-            .lu()
-            .solve(&rhs)
-            .filter(|s| s.iter().all(|v| v.is_finite()))
-            .ok_or(VehicleError::NoStaticEquilibrium { vehicle: number })?;
-        let displacement = solution.rows(0, n).into_owned();
-        let mut forces = vec![0.0; self.wheels.len()];
-        for (w, wheel) in self.wheels.iter().enumerate() {
-            if let WheelKind::Load(load) = wheel.kind {
-                forces[w] = load;
+        let mut flexibility = vec![0.0; contact_dofs.len()];
+        let mut displacement = DVector::zeros(n);
+        for _pass in 0..50 {
+            let mut system = DMatrix::<f64>::zeros(size, size);
+            let mut rhs = DVector::<f64>::zeros(size);
+            system.view_mut((0, 0), (n, n)).copy_from(&self.stiffness);
+            rhs.rows_mut(0, n).copy_from(&self.gravity_load);
+            for (k, &(_, dof)) in contact_dofs.iter().enumerate() {
+                system[(dof, n + k)] = -1.0;
+                system[(n + k, dof)] = 1.0;
+                system[(n + k, n + k)] = flexibility[k];
+            }
+            let solution = system
+                .lu()
+                .solve(&rhs)
+                .filter(|s| s.iter().all(|v| v.is_finite()))
+                .ok_or(VehicleError::NoStaticEquilibrium { vehicle: number })?;
+            displacement = solution.rows(0, n).into_owned();
+            let mut change = 0.0f64;
+            for (k, &(w, _)) in contact_dofs.iter().enumerate() {
+                let force = solution[n + k];
+                change = change.max((force - forces[w]).abs());
+                forces[w] = force;
+                let updated = if force > 0.0 {
+                    compression(force) / force
+                } else {
+                    0.0
+                };
+                change = change.max((updated - flexibility[k]).abs() * force.abs());
+                flexibility[k] = updated;
+            }
+            let scale = forces.iter().fold(0.0f64, |m, f| m.max(f.abs())).max(1.0);
+            if change <= 1e-13 * scale {
+                break;
             }
         }
-        for (k, &(w, _)) in contact_dofs.iter().enumerate() {
-            forces[w] = solution[n + k];
+        if contact_dofs.iter().any(|&(w, _)| forces[w] < 0.0) {
+            return Err(VehicleError::NoStaticEquilibrium { vehicle: number });
         }
         Ok((displacement, forces))
     }

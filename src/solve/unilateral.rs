@@ -1,0 +1,343 @@
+//! Unilateral wheel contact as a linear complementarity problem per Newmark
+//! step (the LCP separation paper, Sections 3–4).
+//!
+//! Bridge and vehicles are advanced as uncoupled subsystems whose end-of-step
+//! states are affine in the contact forces λ (N, compression positive):
+//! q = q* − DΦᵀλ (see [`super::modal`]) and u = u* + Hλ with
+//! H = K̂ᵥ⁻¹E (E selects each wheel's DOF). The gap of wheel c,
+//! g_c = u_wc − φ_c·q − r(x_c) (m, positive = lifted off), is therefore
+//! g = g* + Wλ with the contact compliance W = EᵀH + ΦDΦᵀ (m/N, symmetric
+//! positive definite). The contact law closes the step:
+//! - rigid: λ ≥ 0, g ≥ 0, λ·g = 0 — LCP(W, g*) (the paper's Eq. for the rigid model);
+//! - elastic, tensionless spring k: λ = k·max(0, −g), i.e. s = λ/k + g ≥ 0,
+//!   λ ≥ 0, λ·s = 0 — LCP(W + I/k, g*) (its relaxation form, Section 4);
+//! - Hertz, λ = C·max(0, −g)^1.5: Newton on the law linearised at the
+//!   compression δₖ, λ ≈ Cδₖ^1.5 + bₖ(δ − δₖ) with bₖ = 1.5Cδₖ^0.5, which is
+//!   LCP(W + I/bₖ, g* + δₖ/3), repeated until λ settles.
+//!
+//! One formulation covers every combination of wheels in and out of contact:
+//! no trial and error over contact states. A wheel that lands again gets the
+//! force the LCP gives, constant over that step; there is no impact model
+//! (the paper's assumption), so the rigid model's landing velocity is simply
+//! absorbed over one step. Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) plus
+//! the LCP (Lemke, O(wheels²) per pivot); nothing is allocated in the loop.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::lcp::{LcpWorkspace, solve as solve_lcp};
+use super::modal::ModalStep;
+use super::newmark::Newmark;
+use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
+use crate::model::{ContactLaw, Model};
+use crate::vehicle::WheelKind;
+
+/// Newton iterations allowed per step for the Hertz law.
+pub const HERTZ_MAX_ITERATIONS: usize = 50;
+/// Relative change of the contact forces that ends the Hertz iterations.
+pub const HERTZ_TOLERANCE: f64 = 1e-10;
+
+#[derive(Debug, Clone, Copy)]
+struct ContactWheel {
+    wheel: usize,
+    vehicle: usize,
+    dof: usize,
+    /// Column of this wheel in its vehicle's H.
+    column: usize,
+}
+
+#[derive(Debug, Clone)]
+struct VehicleStep {
+    effective_flexibility: DMatrix<f64>,
+    contact_response: DMatrix<f64>,
+    effective_load: DVector<f64>,
+    inertia_history: DVector<f64>,
+    damping_history: DVector<f64>,
+    predictor: DVector<f64>,
+}
+
+/// Integrates the model with unilateral contact.
+pub fn run(
+    model: &Model,
+    observer: &mut dyn Observer,
+    progress: Progress<'_>,
+) -> Result<(), SolveError> {
+    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+    let bridge = &model.bridge;
+    let modes = bridge.mode_count();
+    let mut modal = ModalStep::new(bridge, &nm);
+
+    let mut contacts: Vec<ContactWheel> = Vec::new();
+    let mut load_wheels = Vec::new();
+    let mut columns = vec![0usize; model.vehicles.len()];
+    for (flat, r) in model.wheels.iter().enumerate() {
+        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
+            WheelKind::Dof(dof) => {
+                contacts.push(ContactWheel {
+                    wheel: flat,
+                    vehicle: r.vehicle,
+                    dof,
+                    column: columns[r.vehicle],
+                });
+                columns[r.vehicle] += 1;
+            }
+            WheelKind::Load(load) => load_wheels.push((flat, load)),
+        }
+    }
+    let nc = contacts.len();
+
+    let mut states = Vec::with_capacity(model.vehicles.len());
+    let mut steps = Vec::with_capacity(model.vehicles.len());
+    for (v, vehicle) in model.vehicles.iter().enumerate() {
+        let n = vehicle.dofs();
+        let (static_displacement, _) = model.static_state(v);
+        let effective =
+            &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
+        let effective_flexibility =
+            effective
+                .try_inverse()
+                .ok_or_else(|| SolveError::SingularContact {
+                    time: 0.0,
+                    reason: format!("vehicle {} has a singular effective stiffness", v + 1),
+                })?;
+        let mut contact_response = DMatrix::zeros(n, columns[v]);
+        for c in contacts.iter().filter(|c| c.vehicle == v) {
+            contact_response.set_column(
+                c.column,
+                &(effective_flexibility.column(c.dof) * nm.weight()),
+            );
+        }
+        states.push(VehicleState {
+            displacement: static_displacement.clone(),
+            velocity: DVector::zeros(n),
+            acceleration: DVector::zeros(n),
+            static_displacement,
+        });
+        steps.push(VehicleStep {
+            effective_flexibility,
+            contact_response,
+            effective_load: DVector::zeros(n),
+            inertia_history: DVector::zeros(n),
+            damping_history: DVector::zeros(n),
+            predictor: DVector::zeros(n),
+        });
+    }
+
+    // Work arrays.
+    let mut shapes = vec![0.0; nc * modes];
+    let mut scaled = vec![0.0; nc * modes];
+    let mut free_gap = vec![0.0; nc];
+    let mut compliance = vec![0.0; nc * nc];
+    let mut lcp_matrix = vec![0.0; nc * nc];
+    let mut lcp_vector = vec![0.0; nc];
+    let mut lambda = vec![0.0; nc];
+    let mut previous = vec![0.0; nc];
+    let mut workspace = LcpWorkspace::new(nc.max(1));
+    let nw = model.wheels.len();
+    let mut contact_forces = model.static_wheel_loads.clone();
+    let mut contact_gaps = vec![0.0; nw];
+    for c in &contacts {
+        contact_gaps[c.wheel] = -model.contact.compression(contact_forces[c.wheel]);
+    }
+    let mut wheel_positions: Vec<f64> = (0..nw).map(|w| model.wheel_position(w, 0.0)).collect();
+
+    observer.observe(&StepView {
+        step: 0,
+        time: 0.0,
+        modal_displacement: &modal.displacement,
+        modal_acceleration: &modal.acceleration,
+        vehicles: &states,
+        contact_forces: &contact_forces,
+        contact_gaps: &contact_gaps,
+        wheel_positions: &wheel_positions,
+    });
+
+    let report_every = (model.steps / 200).max(1);
+    for step in 1..=model.steps {
+        let t = step as f64 * model.time_step;
+        for (w, x) in wheel_positions.iter_mut().enumerate() {
+            *x = model.wheel_position(w, t);
+        }
+        modal.predict(
+            &nm,
+            bridge,
+            load_wheels
+                .iter()
+                .map(|&(flat, load)| (wheel_positions[flat], load)),
+        );
+        // Vehicle predictors u* = K̂⁻¹R̂ with
+        // R̂ = f_g − αEλₙ + M hₐ + (1+α)C h_v + α(C u̇ₙ + K uₙ).
+        for ((vehicle, state), vs) in model.vehicles.iter().zip(&states).zip(steps.iter_mut()) {
+            for k in 0..vehicle.dofs() {
+                let (u, v, a) = (
+                    state.displacement[k],
+                    state.velocity[k],
+                    state.acceleration[k],
+                );
+                vs.inertia_history[k] = nm.inertia_history(u, v, a);
+                vs.damping_history[k] = nm.damping_history(u, v, a);
+            }
+            vs.effective_load.copy_from(&vehicle.gravity_load);
+            vs.effective_load
+                .gemv(1.0, &vehicle.mass, &vs.inertia_history, 1.0);
+            vs.effective_load
+                .gemv(nm.weight(), &vehicle.damping, &vs.damping_history, 1.0);
+            if nm.alpha != 0.0 {
+                vs.effective_load
+                    .gemv(nm.alpha, &vehicle.damping, &state.velocity, 1.0);
+                vs.effective_load
+                    .gemv(nm.alpha, &vehicle.stiffness, &state.displacement, 1.0);
+            }
+        }
+        if nm.alpha != 0.0 {
+            for contact in &contacts {
+                steps[contact.vehicle].effective_load[contact.dof] -=
+                    nm.alpha * contact_forces[contact.wheel];
+            }
+        }
+        for vs in steps.iter_mut() {
+            vs.predictor
+                .gemv(1.0, &vs.effective_flexibility, &vs.effective_load, 0.0);
+        }
+
+        // Free gaps g* and the contact compliance W.
+        for (c, contact) in contacts.iter().enumerate() {
+            let x = wheel_positions[contact.wheel];
+            let phi = &mut shapes[c * modes..(c + 1) * modes];
+            bridge.mode_values(x, phi);
+            let scaled_c = &mut scaled[c * modes..(c + 1) * modes];
+            for i in 0..modes {
+                scaled_c[i] = phi[i] * modal.contact_flexibility[i];
+            }
+            let deck: f64 = phi.iter().zip(&modal.predictor).map(|(p, q)| p * q).sum();
+            free_gap[c] =
+                steps[contact.vehicle].predictor[contact.dof] - deck - model.profile.elevation(x);
+        }
+        for a in 0..nc {
+            for b in 0..=a {
+                let pa = &shapes[a * modes..(a + 1) * modes];
+                let sb = &scaled[b * modes..(b + 1) * modes];
+                let mut w: f64 = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
+                let (ca, cb) = (contacts[a], contacts[b]);
+                if ca.vehicle == cb.vehicle {
+                    w += steps[ca.vehicle].contact_response[(ca.dof, cb.column)];
+                }
+                compliance[a * nc + b] = w;
+                compliance[b * nc + a] = w;
+            }
+        }
+
+        // The contact law.
+        if nc > 0 {
+            let fail = |reason: String| SolveError::Contact {
+                time: t,
+                positions: describe_positions(model, t),
+                reason,
+            };
+            match model.contact {
+                ContactLaw::Rigid | ContactLaw::Elastic { .. } => {
+                    lcp_matrix.copy_from_slice(&compliance);
+                    if let ContactLaw::Elastic { stiffness } = model.contact {
+                        for c in 0..nc {
+                            lcp_matrix[c * nc + c] += 1.0 / stiffness;
+                        }
+                    }
+                    solve_lcp(&lcp_matrix, &free_gap, &mut lambda, &mut workspace)
+                        .map_err(|e| fail(e.to_string()))?;
+                }
+                ContactLaw::Hertz { coefficient } => {
+                    previous.copy_from_slice(&lambda);
+                    let mut converged = false;
+                    for _ in 0..HERTZ_MAX_ITERATIONS {
+                        lcp_matrix.copy_from_slice(&compliance);
+                        for c in 0..nc {
+                            // Linearise at the compression of the current iterate,
+                            // floored at a small fraction of the static one so the
+                            // tangent stiffness never vanishes.
+                            let static_compression = model
+                                .contact
+                                .compression(model.static_wheel_loads[contacts[c].wheel]);
+                            let delta = model
+                                .contact
+                                .compression(previous[c])
+                                .max(1e-3 * static_compression)
+                                .max(1e-12);
+                            let tangent = 1.5 * coefficient * delta.sqrt();
+                            lcp_matrix[c * nc + c] += 1.0 / tangent;
+                            lcp_vector[c] = free_gap[c] + delta / 3.0;
+                        }
+                        solve_lcp(&lcp_matrix, &lcp_vector, &mut lambda, &mut workspace)
+                            .map_err(|e| fail(e.to_string()))?;
+                        let scale = lambda
+                            .iter()
+                            .chain(&previous)
+                            .fold(1.0f64, |m, f| m.max(f.abs()));
+                        let change = lambda
+                            .iter()
+                            .zip(&previous)
+                            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+                        previous.copy_from_slice(&lambda);
+                        if change <= HERTZ_TOLERANCE * scale {
+                            converged = true;
+                            break;
+                        }
+                    }
+                    if !converged {
+                        return Err(fail(format!(
+                            "the Hertz contact iterations did not converge in {HERTZ_MAX_ITERATIONS} steps; \
+                             reduce the time step"
+                        )));
+                    }
+                }
+                ContactLaw::Permanent => unreachable!("permanent contact uses the coupled solver"),
+            }
+        }
+
+        // Gaps with the forces, then both subsystems finish the step.
+        for (c, contact) in contacts.iter().enumerate() {
+            let row = &compliance[c * nc..(c + 1) * nc];
+            contact_gaps[contact.wheel] =
+                free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
+            contact_forces[contact.wheel] = lambda[c];
+            modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
+            let vs = &mut steps[contact.vehicle];
+            vs.predictor
+                .axpy(lambda[c], &vs.contact_response.column(contact.column), 1.0);
+        }
+        modal.finish(&nm);
+        for (state, vs) in states.iter_mut().zip(&steps) {
+            for k in 0..state.displacement.len() {
+                let u_new = vs.predictor[k];
+                let a_new = nm.a0 * u_new - vs.inertia_history[k];
+                state.velocity[k] = nm.a1 * u_new - vs.damping_history[k];
+                state.acceleration[k] = a_new;
+                state.displacement[k] = u_new;
+            }
+        }
+
+        let health: f64 = modal.health() + lambda.iter().sum::<f64>();
+        if !health.is_finite() {
+            return Err(SolveError::Diverged {
+                time: t,
+                step,
+                positions: describe_positions(model, t),
+                cause: "the state is no longer finite; the time step may be too large for the \
+                        contact stiffness, or the Newmark parameters unstable (β < γ/2)"
+                    .into(),
+            });
+        }
+        observer.observe(&StepView {
+            step,
+            time: t,
+            modal_displacement: &modal.displacement,
+            modal_acceleration: &modal.acceleration,
+            vehicles: &states,
+            contact_forces: &contact_forces,
+            contact_gaps: &contact_gaps,
+            wheel_positions: &wheel_positions,
+        });
+        if step % report_every == 0 || step == model.steps {
+            progress(step, model.steps);
+        }
+    }
+    Ok(())
+}
