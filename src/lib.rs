@@ -16,5 +16,6 @@ pub mod run;
 pub mod scenario;
 pub mod schema;
 pub mod solve;
+pub mod study;
 pub mod surface;
 pub mod vehicle;

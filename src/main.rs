@@ -91,12 +91,12 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
         bar.set_message(scenario.name.clone());
         bar
     };
-    let mut progress = |done: usize, total: usize| {
+    let progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let outcome = match vbi::run::simulate(loaded, &mut progress) {
-        Ok(o) => o,
+    let results = match vbi::run::execute(loaded, &progress) {
+        Ok(r) => r,
         Err(e) => {
             bar.abandon();
             eprintln!("error: {}: {e}", file.display());
@@ -104,6 +104,26 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
         }
     };
     bar.finish_and_clear();
+    let outcome = match results {
+        vbi::run::Results::Scene(outcome) => outcome,
+        vbi::run::Results::SeparationMap(map) => {
+            if let Err(e) = vbi::run::write_study(&out, &scenario, &map) {
+                eprintln!("error: {e}");
+                return ExitCode::from(EXIT_FAILED);
+            }
+            if !quiet {
+                eprintln!(
+                    "{}: separation map of {} points, {} separated, {:.2} s",
+                    scenario.name,
+                    map.points.len(),
+                    map.separated_count(),
+                    map.wall_time
+                );
+                eprintln!("results in {}", out.display());
+            }
+            return ExitCode::SUCCESS;
+        }
+    };
     if let Err(e) = vbi::run::write_results(&out, &scenario, &outcome) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);

@@ -104,7 +104,7 @@ impl Model {
         let contact = match scenario.contact {
             Contact::Permanent => ContactLaw::Permanent,
             Contact::Rigid => ContactLaw::Rigid,
-            Contact::Elastic { stiffness } => ContactLaw::Elastic { stiffness },
+            Contact::Elastic { stiffness, .. } => ContactLaw::Elastic { stiffness },
             Contact::Hertz { coefficient } => ContactLaw::Hertz { coefficient },
         };
         let mut wheels = Vec::new();

@@ -10,7 +10,9 @@ use crate::record::{History, Recorder};
 use crate::report::summary::Summary;
 use crate::report::{self, ReportError};
 use crate::scenario::Loaded;
+use crate::scenario::resolved::{Scenario, Study};
 use crate::solve::{self, Progress, SolveError};
+use crate::study::separation_map::{self, SeparationMap};
 
 /// Errors of a run after loading.
 #[derive(Debug, Error)]
@@ -24,6 +26,116 @@ pub enum RunError {
     /// Writing results failed.
     #[error(transparent)]
     Report(#[from] ReportError),
+    /// A plot could not be drawn.
+    #[error(transparent)]
+    Plot(#[from] crate::report::plot::PlotError),
+}
+
+/// What a scenario file produces: one scene, or a study.
+#[derive(Debug, Clone)]
+pub enum Results {
+    /// A single scene.
+    Scene(Box<Outcome>),
+    /// A separation map.
+    SeparationMap(SeparationMap),
+}
+
+/// Runs the scenario's study if it has one, else the scene.
+/// `progress` gets (done, total) in steps (scene) or grid points (study).
+pub fn execute(
+    loaded: Loaded,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Results, RunError> {
+    match &loaded.scenario.study {
+        Some(Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        }) => Ok(Results::SeparationMap(separation_map::run(
+            &loaded.scenario,
+            &loaded.bridge,
+            velocity_ratio,
+            mass_ratio,
+            progress,
+        )?)),
+        None => Ok(Results::Scene(Box::new(simulate(loaded, &mut |d, t| {
+            progress(d, t)
+        })?))),
+    }
+}
+
+/// Summary of a separation-map study.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct StudySummary {
+    /// Scenario name.
+    pub scenario: String,
+    /// Study type.
+    pub study: &'static str,
+    /// vbi version.
+    pub vbi_version: &'static str,
+    /// Wall time of all points, s.
+    pub wall_time: f64,
+    /// Number of grid points.
+    pub points: usize,
+    /// Points where the wheel lost contact.
+    pub separated: usize,
+    /// Velocity ratios swept.
+    pub velocity_ratios: Vec<f64>,
+    /// Mass ratios swept.
+    pub mass_ratios: Vec<f64>,
+}
+
+/// Writes a study's `summary.json`, `study.csv`, `separation_map.png` and
+/// `resolved.yaml` into `out`.
+pub fn write_study(out: &Path, scenario: &Scenario, map: &SeparationMap) -> Result<(), RunError> {
+    create_out(out)?;
+    let summary = StudySummary {
+        scenario: scenario.name.clone(),
+        study: "separation_map",
+        vbi_version: env!("CARGO_PKG_VERSION"),
+        wall_time: map.wall_time,
+        points: map.points.len(),
+        separated: map.separated_count(),
+        velocity_ratios: map.velocity_ratios.clone(),
+        mass_ratios: map.mass_ratios.clone(),
+    };
+    report::write_atomic(&out.join("study.csv"), &map.to_csv())?;
+    let state: Vec<bool> = map.points.iter().map(|p| p.separated).collect();
+    crate::report::plot::binary_map(
+        &out.join("separation_map.png"),
+        &format!("{}: wheel–bridge separation", scenario.name),
+        "velocity ratio v / (2 f1 L)",
+        "vehicle-to-bridge mass ratio (ms + mu) / (m L)",
+        &map.velocity_ratios,
+        &map.mass_ratios,
+        &state,
+        "separated",
+        "no separation",
+    )?;
+    report::write_atomic(
+        &out.join("resolved.yaml"),
+        resolved_yaml(scenario).as_bytes(),
+    )?;
+    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
+    report::write_atomic(&out.join("summary.json"), text.as_bytes())?;
+    Ok(())
+}
+
+fn create_out(out: &Path) -> Result<(), RunError> {
+    std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
+        path: out.to_path_buf(),
+        source,
+    })?;
+    Ok(())
+}
+
+/// The resolved scenario as YAML, with a header line.
+pub fn resolved_yaml(scenario: &Scenario) -> String {
+    let resolved = serde_json::to_value(scenario).expect("scenario serialises");
+    format!(
+        "# Resolved by vbi {}: the scene as run, every default filled in.\n{}",
+        env!("CARGO_PKG_VERSION"),
+        report::yaml::to_yaml(&resolved)
+    )
 }
 
 /// Results of one scene.
@@ -56,23 +168,11 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
 
 /// Writes `summary.json`, `history.csv` and `resolved.yaml` into `out`
 /// (created if needed), each atomically.
-pub fn write_results(
-    out: &Path,
-    scenario: &crate::scenario::resolved::Scenario,
-    outcome: &Outcome,
-) -> Result<(), RunError> {
-    std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
-        path: out.to_path_buf(),
-        source,
-    })?;
+pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Result<(), RunError> {
+    create_out(out)?;
     let summary =
         serde_json::to_string_pretty(&outcome.summary).expect("summary serialises") + "\n";
-    let resolved = serde_json::to_value(scenario).expect("scenario serialises");
-    let yaml = format!(
-        "# Resolved by vbi {}: the scene as run, every default filled in.\n{}",
-        env!("CARGO_PKG_VERSION"),
-        report::yaml::to_yaml(&resolved)
-    );
+    let yaml = resolved_yaml(scenario);
     report::write_atomic(
         &out.join("history.csv"),
         &report::history_csv(&outcome.history),

@@ -30,6 +30,8 @@ use std::path::{Path, PathBuf};
 use serde_json::Value;
 use vbi::record::History;
 use vbi::run::Outcome;
+use vbi::run::Results;
+use vbi::study::separation_map::SeparationMap;
 
 /// Significant digits kept in the snapshots.
 const DIGITS: i32 = 6;
@@ -281,6 +283,60 @@ fn insta_settings() -> insta::Settings {
 
 /// Runs `f` and turns a panic (a failed snapshot assertion, a crashed run)
 /// into its message, so that one failure does not hide the others.
+/// Runs the study of a scenario that has one (None for plain scenes).
+fn study(path: &Path) -> Option<Result<SeparationMap, String>> {
+    let loaded = vbi::scenario::load_file(path).ok()?;
+    loaded.scenario.study.as_ref()?;
+    Some(match catch(|| vbi::run::execute(loaded, &|_, _| {})) {
+        Ok(Ok(Results::SeparationMap(map))) => Ok(map),
+        Ok(Ok(Results::Scene(_))) => Err("a study scenario ran as a scene".into()),
+        Ok(Err(e)) => Err(format!("study failed: {e}")),
+        Err(e) => Err(e),
+    })
+}
+
+/// A separation map as (the map drawn in text with its counts, a table of
+/// every point rounded to 6 significant digits).
+fn study_snapshots(map: &SeparationMap) -> (String, String) {
+    let mut summary = format!(
+        "points: {}\nseparated: {}\nrows: velocity ratio (top = first); columns: mass ratio (left = first); X = separated\n",
+        map.points.len(),
+        map.separated_count()
+    );
+    let columns = map.mass_ratios.len();
+    for (i, a) in map.velocity_ratios.iter().enumerate() {
+        let row: String = map.points[i * columns..(i + 1) * columns]
+            .iter()
+            .map(|p| if p.separated { 'X' } else { '.' })
+            .collect();
+        summary.push_str(&format!("{:>10} {row}\n", significant(*a)));
+    }
+    let gap_exp = quantum_exponent(map.points.iter().fold(0.0f64, |m, p| m.max(p.max_gap)));
+    let force_exp = quantum_exponent(
+        map.points
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p.min_contact_force.abs())),
+    );
+    let mut table = String::from(
+        "velocity_ratio mass_ratio separated episodes first_loss_position max_gap min_contact_force\n",
+    );
+    for p in &map.points {
+        table.push_str(&format!(
+            "{} {} {} {} {} {} {}\n",
+            significant(p.velocity_ratio),
+            significant(p.mass_ratio),
+            p.separated,
+            p.episodes,
+            p.first_loss_position
+                .map(|x| significant(x).to_string())
+                .unwrap_or_else(|| "-".into()),
+            quantise(p.max_gap, gap_exp),
+            quantise(p.min_contact_force, force_exp),
+        ));
+    }
+    (summary, table)
+}
+
 fn catch<T>(f: impl FnOnce() -> T) -> Result<T, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).map_err(|payload| {
         payload
@@ -298,6 +354,27 @@ fn golden_scenarios() {
     let mut failures = Vec::new();
     for path in &files {
         let name = stem(path);
+        if let Some(map) = study(path) {
+            let (summary, table) = match map {
+                Ok(map) => study_snapshots(&map),
+                Err(e) => {
+                    failures.push(format!("{name}: {e}"));
+                    continue;
+                }
+            };
+            settings.bind(|| {
+                if let Err(e) =
+                    catch(|| insta::assert_snapshot!(format!("{name}-summary"), summary))
+                {
+                    failures.push(format!("{name}-summary: {e}"));
+                }
+                if let Err(e) = catch(|| insta::assert_snapshot!(format!("{name}-history"), table))
+                {
+                    failures.push(format!("{name}-history: {e}"));
+                }
+            });
+            continue;
+        }
         let outcome = match catch(|| run(path)).and_then(|r| r) {
             Ok(outcome) => outcome,
             Err(e) => {

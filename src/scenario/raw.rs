@@ -47,6 +47,57 @@ pub struct ScenarioRaw {
     /// span and the contact force of every wheel.
     #[serde(default)]
     pub record: Option<Vec<RecordRaw>>,
+    /// A study over many variants of this scene instead of one run.
+    #[serde(default)]
+    pub study: Option<StudyRaw>,
+}
+
+/// A study: many runs derived from the scene.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+#[schemars(tag = "type")]
+pub enum StudyRaw {
+    /// Separation map (the LCP separation paper's Fig. 6): the scene's single
+    /// oscillator, given with `dimensionless`, is run over a grid of velocity
+    /// ratio × vehicle-to-bridge mass ratio with its other ratios fixed; each
+    /// point is marked separated if any wheel loses contact. Needs unilateral
+    /// contact. Writes study.csv and separation_map.png.
+    SeparationMap(SeparationMapRaw),
+}
+
+/// Grid of a separation map.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SeparationMapRaw {
+    /// Velocity ratios α = v / (2 f₁ L) to sweep (dimensionless).
+    pub velocity_ratio: GridRaw,
+    /// Vehicle-to-bridge mass ratios (m_s + m_u) / (m L) to sweep (dimensionless).
+    pub mass_ratio: GridRaw,
+}
+
+/// Evenly spaced values from `from` to `to` inclusive.
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GridRaw {
+    /// First value.
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Number of values (≥ 1; 1 gives `from` only).
+    #[schemars(range(min = 1))]
+    pub count: usize,
+}
+
+impl GridRaw {
+    /// The values.
+    pub fn values(&self) -> Vec<f64> {
+        if self.count <= 1 {
+            return vec![self.from];
+        }
+        (0..self.count)
+            .map(|i| self.from + (self.to - self.from) * i as f64 / (self.count - 1) as f64)
+            .collect()
+    }
 }
 
 /// The bridge model.
@@ -149,22 +200,26 @@ pub struct MovingForceRaw {
     pub start_position: Option<f64>,
 }
 
-/// Moving oscillator parameters.
+/// Moving oscillator parameters: physical, or derived from the LCP separation
+/// paper's dimensionless groups with `dimensionless`.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct OscillatorRaw {
-    /// Sprung (body) mass, kg.
-    pub sprung_mass: f64,
+    /// Sprung (body) mass, kg. Required unless `dimensionless` is given.
+    #[serde(default)]
+    pub sprung_mass: Option<f64>,
     /// Unsprung (wheel) mass, kg. Default 0: a massless wheel.
     #[serde(default)]
     pub unsprung_mass: Option<f64>,
-    /// Suspension stiffness, N/m.
-    pub stiffness: f64,
+    /// Suspension stiffness, N/m. Required unless `dimensionless` is given.
+    #[serde(default)]
+    pub stiffness: Option<f64>,
     /// Suspension damping, N·s/m. Default 0.
     #[serde(default)]
     pub damping: Option<f64>,
-    /// Constant speed, m/s.
-    pub speed: f64,
+    /// Constant speed, m/s. Required unless `dimensionless` is given.
+    #[serde(default)]
+    pub speed: Option<f64>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
@@ -172,6 +227,33 @@ pub struct OscillatorRaw {
     /// Position of the wheel at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
     pub start_position: Option<f64>,
+    /// Derive masses, stiffness, damping and speed from dimensionless groups
+    /// relative to the bridge (its first natural frequency f₁, length L and
+    /// mass per length m). Physical fields given as well must agree with the
+    /// derived values (the resolved scenario lists both).
+    #[serde(default)]
+    pub dimensionless: Option<DimensionlessRaw>,
+}
+
+/// The dimensionless groups of the LCP separation paper's Table 1 (standard
+/// definitions; its formulas were lost in extraction).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DimensionlessRaw {
+    /// Velocity ratio α = v / (2 f₁ L) (dimensionless; 1 = the critical speed
+    /// of the moving-force resonance).
+    pub velocity_ratio: f64,
+    /// Vehicle-to-bridge mass ratio (m_s + m_u) / (m L) (dimensionless).
+    pub mass_ratio: f64,
+    /// Unsprung-to-sprung mass ratio m_u / m_s (dimensionless). Default 0.
+    #[serde(default)]
+    pub unsprung_ratio: Option<f64>,
+    /// Bridge-to-vehicle frequency ratio f₁ / f_v with f_v = √(k/m_s) / 2π
+    /// (dimensionless).
+    pub frequency_ratio: f64,
+    /// Vehicle damping ratio ζ_v = c / (2√(k m_s)) (dimensionless). Default 0.
+    #[serde(default)]
+    pub damping_ratio: Option<f64>,
 }
 
 /// Surface profile (roughness) under the wheels. It starts at the bridge
@@ -263,7 +345,8 @@ pub struct SolverRaw {
     #[serde(default)]
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
-    /// acceleration: unconditionally stable, second order, no numerical damping).
+    /// acceleration: unconditionally stable, second order, no numerical
+    /// damping); with rigid contact α = −0.05 (HHT).
     #[serde(default)]
     pub newmark: Option<NewmarkRaw>,
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
@@ -295,10 +378,10 @@ pub struct NewmarkRaw {
     /// γ (dimensionless). Default 0.5, or 1/2 − α when `alpha` is given.
     #[serde(default)]
     pub gamma: Option<f64>,
-    /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark). A
-    /// negative α (e.g. −0.05) keeps second order and unconditional stability
-    /// and damps the highest modes, which quiets the ringing of wheels held to
-    /// the surface (rigid contact).
+    /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark), except
+    /// −0.05 with rigid contact when β and γ are not given. A negative α keeps
+    /// second order and unconditional stability and damps the highest modes,
+    /// which quiets the ringing of wheels held to the surface (rigid contact).
     #[serde(default)]
     pub alpha: Option<f64>,
 }

@@ -4,6 +4,7 @@
 //! the key is absent, of the section that lacks it), and all problems found
 //! are reported together, like a compiler.
 
+use super::derive::{derive_dimensionless, resolve_contact, resolve_method, resolve_study};
 use super::diagnostic::Diagnostic;
 use super::raw::{self, ScenarioRaw};
 use super::resolved::*;
@@ -17,6 +18,8 @@ pub const DEFAULT_MODE_COUNT: usize = 10;
 pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
 /// Default gravitational acceleration, m/s².
 pub const DEFAULT_GRAVITY: f64 = 9.81;
+/// HHT α used by default with rigid unilateral contact.
+pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
 /// Largest number of time steps a run may take.
 pub const MAX_STEPS: f64 = 2.0e8;
 
@@ -60,19 +63,19 @@ impl<'a> Checker<'a> {
     }
 
     /// Records an error at `path`.
-    fn error(&mut self, path: &str, message: impl Into<String>) {
+    pub(super) fn error(&mut self, path: &str, message: impl Into<String>) {
         let loc = self.location(path);
         self.diagnostics
             .push(Diagnostic::new(self.file, self.source, loc, message));
     }
 
-    fn positive(&mut self, path: &str, value: f64, what: &str) {
+    pub(super) fn positive(&mut self, path: &str, value: f64, what: &str) {
         if value <= 0.0 {
             self.error(path, format!("{what} must be positive, got {value}"));
         }
     }
 
-    fn non_negative(&mut self, path: &str, value: f64, what: &str) {
+    pub(super) fn non_negative(&mut self, path: &str, value: f64, what: &str) {
         if value < 0.0 {
             self.error(path, format!("{what} must not be negative, got {value}"));
         }
@@ -92,7 +95,6 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let bridge = resolve_bridge(&raw.bridge, ck);
     let vehicles = resolve_vehicles(&raw.vehicles, ck);
     let surface = resolve_surface(raw.surface.as_ref(), ck);
-    let contact = resolve_contact(raw.contact.as_ref(), &raw.vehicles, ck);
     let solver_raw = raw.solver.clone().unwrap_or(raw::SolverRaw {
         method: None,
         time_step: None,
@@ -104,7 +106,17 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         gamma: None,
         alpha: None,
     });
-    let alpha = newmark_raw.alpha.unwrap_or(0.0);
+    // Rigid contact holds wheel DOFs to the surface through multipliers, which
+    // average-acceleration Newmark leaves ringing (a persistent alternating
+    // error in the wheel acceleration and force); a little HHT damping
+    // removes it at second order. Every other model defaults to α = 0.
+    let rigid = matches!(raw.contact, Some(raw::ContactRaw::Rigid));
+    let default_alpha = if rigid && newmark_raw.beta.is_none() && newmark_raw.gamma.is_none() {
+        DEFAULT_RIGID_ALPHA
+    } else {
+        0.0
+    };
+    let alpha = newmark_raw.alpha.unwrap_or(default_alpha);
     if !(-1.0 / 3.0..=0.0).contains(&alpha) {
         ck.error(
             "solver.newmark.alpha",
@@ -137,7 +149,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     }
 
     // The bridge is built only from a valid description.
-    let (bridge, vehicles) = (bridge?, vehicles?);
+    let (bridge, mut vehicles) = (bridge?, vehicles?);
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -153,6 +165,12 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
             return None;
         }
     };
+    derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
+    let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    let study = resolve_study(raw.study.as_ref(), &vehicles, &contact, ck);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
 
     // Default step: a tenth of… resolve the highest kept mode with 20 steps
     // per period, and never coarser than 1 ms.
@@ -203,6 +221,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
             free_vibration,
         },
         record,
+        study,
     };
     Some((scenario, modal))
 }
@@ -326,149 +345,7 @@ fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> 
     }
 }
 
-/// The contact model; elastic stiffness from a ratio, Hertz coefficient from
-/// the wheel radius.
-fn resolve_contact(
-    raw: Option<&raw::ContactRaw>,
-    vehicles: &[raw::VehicleRaw],
-    ck: &mut Checker<'_>,
-) -> Contact {
-    match raw {
-        None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
-        Some(raw::ContactRaw::Rigid) => Contact::Rigid,
-        Some(raw::ContactRaw::Elastic {
-            stiffness,
-            stiffness_ratio,
-        }) => {
-            let stiffness = match (stiffness, stiffness_ratio) {
-                (Some(k), None) => {
-                    ck.positive("contact.stiffness", *k, "contact stiffness");
-                    *k
-                }
-                (None, Some(ratio)) => {
-                    ck.positive("contact.stiffness_ratio", *ratio, "contact stiffness ratio");
-                    let suspension: Vec<f64> = vehicles
-                        .iter()
-                        .filter_map(|v| match v {
-                            raw::VehicleRaw::Oscillator(o) => Some(o.stiffness),
-                            _ => None,
-                        })
-                        .collect();
-                    let all_oscillators = suspension.len() == vehicles.len();
-                    if suspension.is_empty()
-                        || !all_oscillators
-                        || suspension.iter().any(|&k| k != suspension[0])
-                    {
-                        ck.error(
-                            "contact.stiffness_ratio",
-                            "`stiffness_ratio` needs every vehicle to be an oscillator with the same suspension stiffness; give `stiffness` in N/m instead",
-                        );
-                        0.0
-                    } else {
-                        ratio * suspension[0]
-                    }
-                }
-                (Some(_), Some(_)) => {
-                    ck.error(
-                        "contact.stiffness_ratio",
-                        "give `stiffness` or `stiffness_ratio`, not both",
-                    );
-                    0.0
-                }
-                (None, None) => {
-                    ck.error(
-                        "contact",
-                        "elastic contact needs `stiffness` (N/m) or `stiffness_ratio`",
-                    );
-                    0.0
-                }
-            };
-            Contact::Elastic { stiffness }
-        }
-        Some(raw::ContactRaw::Hertz {
-            coefficient,
-            wheel_radius,
-            profile,
-        }) => {
-            let coefficient = match (coefficient, wheel_radius) {
-                (Some(c), None) => {
-                    ck.positive("contact.coefficient", *c, "Hertz coefficient");
-                    if profile.is_some() {
-                        ck.error(
-                            "contact.profile",
-                            "`profile` only applies with `wheel_radius`",
-                        );
-                    }
-                    *c
-                }
-                (None, Some(r)) => {
-                    ck.positive("contact.wheel_radius", *r, "wheel radius");
-                    hertz_coefficient(*r, profile.unwrap_or(raw::TreadProfile::Worn))
-                }
-                (Some(_), Some(_)) => {
-                    ck.error(
-                        "contact.wheel_radius",
-                        "give `coefficient` or `wheel_radius`, not both",
-                    );
-                    0.0
-                }
-                (None, None) => {
-                    ck.error(
-                        "contact",
-                        "Hertz contact needs `coefficient` (N/m^1.5) or `wheel_radius` (m)",
-                    );
-                    0.0
-                }
-            };
-            Contact::Hertz { coefficient }
-        }
-    }
-}
-
-/// Hertz coefficient C = G^-1.5 (N/m^1.5) of a wheel of rolling radius `radius`
-/// (m) on a rail, from the contact constant G (m/N^(2/3)) of Zhai, Vehicle–Track
-/// Coupled Dynamics (2020), §2.4.1: worn tread G = 4.57e-8 R^-0.149, conical
-/// tread G = 3.86e-8 R^-0.115.
-pub fn hertz_coefficient(radius: f64, profile: raw::TreadProfile) -> f64 {
-    let g = match profile {
-        raw::TreadProfile::Worn => 4.57e-8 * radius.powf(-0.149),
-        raw::TreadProfile::Conical => 3.86e-8 * radius.powf(-0.115),
-    };
-    g.powf(-1.5)
-}
-
-/// The solution method: by default the one the contact model needs.
-fn resolve_method(
-    method: Option<SolverMethod>,
-    contact: &Contact,
-    ck: &mut Checker<'_>,
-) -> SolverMethod {
-    let needed = if contact.is_unilateral() {
-        SolverMethod::Lcp
-    } else {
-        SolverMethod::Coupled
-    };
-    match method {
-        None => needed,
-        Some(m) if m == needed => m,
-        Some(SolverMethod::Coupled) => {
-            ck.error(
-                "solver.method",
-                "`method: coupled` keeps every wheel in permanent contact; unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
-            );
-            needed
-        }
-        Some(SolverMethod::Lcp) => {
-            ck.error(
-                "solver.method",
-                "`method: lcp` solves unilateral contact; with `contact: {type: permanent}` use `method: coupled`",
-            );
-            needed
-        }
-    }
-}
-
-fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
+pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
     if !(0.0..1.0).contains(&ratio) {
         ck.error(
             path,
@@ -514,7 +391,7 @@ fn entry_time(
 /// grid and the contact kinematics meaningful).
 pub const MAX_SPEED: f64 = 1000.0;
 
-fn check_speed(ck: &mut Checker<'_>, at: &str, speed: f64) {
+pub(super) fn check_speed(ck: &mut Checker<'_>, at: &str, speed: f64) {
     ck.positive(&format!("{at}.speed"), speed, "speed");
     if speed > MAX_SPEED {
         ck.error(
@@ -573,25 +450,53 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
                 }));
             }
             raw::VehicleRaw::Oscillator(v) => {
-                check_speed(ck, &at, v.speed);
-                ck.positive(&format!("{at}.sprung_mass"), v.sprung_mass, "sprung mass");
                 let unsprung = v.unsprung_mass.unwrap_or(0.0);
+                let damping = v.damping.unwrap_or(0.0);
+                if v.dimensionless.is_some() {
+                    // Derived once the bridge's first frequency is known.
+                    out.push(Vehicle::Oscillator(Oscillator {
+                        sprung_mass: 0.0,
+                        unsprung_mass: 0.0,
+                        stiffness: 0.0,
+                        damping: 0.0,
+                        speed: 0.0,
+                        entry_time: 0.0,
+                        dimensionless: None,
+                    }));
+                    continue;
+                }
+                let mut required = |field: &str, value: Option<f64>| {
+                    value.unwrap_or_else(|| {
+                        ck.error(
+                            &at,
+                            format!("an oscillator needs `{field}` (or `dimensionless`)"),
+                        );
+                        0.0
+                    })
+                };
+                let (sprung, stiffness, speed) = (
+                    required("sprung_mass", v.sprung_mass),
+                    required("stiffness", v.stiffness),
+                    required("speed", v.speed),
+                );
+                check_speed(ck, &at, speed);
+                ck.positive(&format!("{at}.sprung_mass"), sprung, "sprung mass");
                 ck.non_negative(&format!("{at}.unsprung_mass"), unsprung, "unsprung mass");
                 ck.positive(
                     &format!("{at}.stiffness"),
-                    v.stiffness,
+                    stiffness,
                     "suspension stiffness",
                 );
-                let damping = v.damping.unwrap_or(0.0);
                 ck.non_negative(&format!("{at}.damping"), damping, "suspension damping");
-                let entry = entry_time(ck, &at, v.speed, v.entry_time, v.start_position);
+                let entry = entry_time(ck, &at, speed, v.entry_time, v.start_position);
                 out.push(Vehicle::Oscillator(Oscillator {
-                    sprung_mass: v.sprung_mass,
+                    sprung_mass: sprung,
                     unsprung_mass: unsprung,
-                    stiffness: v.stiffness,
+                    stiffness,
                     damping,
-                    speed: v.speed,
+                    speed,
                     entry_time: entry,
+                    dimensionless: None,
                 }));
             }
         }

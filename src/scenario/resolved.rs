@@ -6,7 +6,7 @@
 
 use serde::Serialize;
 
-pub use super::raw::{Quantity, SolverMethod};
+pub use super::raw::{GridRaw as Grid, Quantity, SolverMethod};
 
 /// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -30,6 +30,59 @@ pub struct Scenario {
     pub solver: Solver,
     /// Recorded quantities.
     pub record: Vec<Record>,
+    /// A study over variants of the scene.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub study: Option<Study>,
+}
+
+/// A study over variants of the scene.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Study {
+    /// Separation map over velocity ratio × mass ratio.
+    SeparationMap {
+        /// Velocity ratios swept.
+        velocity_ratio: Grid,
+        /// Mass ratios swept.
+        mass_ratio: Grid,
+    },
+}
+
+/// Dimensionless groups of an oscillator (see the raw format).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Dimensionless {
+    /// v / (2 f₁ L).
+    pub velocity_ratio: f64,
+    /// (m_s + m_u) / (m L).
+    pub mass_ratio: f64,
+    /// m_u / m_s.
+    pub unsprung_ratio: f64,
+    /// f₁ / f_v.
+    pub frequency_ratio: f64,
+    /// c / (2√(k m_s)).
+    pub damping_ratio: f64,
+}
+
+impl Dimensionless {
+    /// Physical oscillator parameters for a bridge with first natural
+    /// frequency `f1` (Hz), length `length` (m) and mass per length `mass`
+    /// (kg/m): m_s + m_u = μ m L, m_u = r m_s, k = m_s (2π f₁/ρ_f)²,
+    /// c = 2ζ√(k m_s), v = 2α f₁ L.
+    pub fn derive(&self, f1: f64, length: f64, mass: f64, entry_time: f64) -> Oscillator {
+        let total = self.mass_ratio * mass * length;
+        let sprung_mass = total / (1.0 + self.unsprung_ratio);
+        let vehicle_frequency = f1 / self.frequency_ratio;
+        let stiffness = sprung_mass * (2.0 * std::f64::consts::PI * vehicle_frequency).powi(2);
+        Oscillator {
+            sprung_mass,
+            unsprung_mass: self.unsprung_ratio * sprung_mass,
+            stiffness,
+            damping: 2.0 * self.damping_ratio * (stiffness * sprung_mass).sqrt(),
+            speed: 2.0 * self.velocity_ratio * f1 * length,
+            entry_time,
+            dimensionless: Some(*self),
+        }
+    }
 }
 
 /// The bridge model.
@@ -184,6 +237,9 @@ pub struct Oscillator {
     pub speed: f64,
     /// Time the wheel reaches x = 0, s.
     pub entry_time: f64,
+    /// The dimensionless groups these values were derived from, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dimensionless: Option<Dimensionless>,
 }
 
 /// Surface profile.
@@ -215,6 +271,9 @@ pub enum Contact {
     Elastic {
         /// N/m.
         stiffness: f64,
+        /// k_c / k_v when the stiffness was derived from the suspension's.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        stiffness_ratio: Option<f64>,
     },
     /// Hertz law force = C δ^1.5.
     Hertz {

@@ -18,8 +18,11 @@
 //! One formulation covers every combination of wheels in and out of contact:
 //! no trial and error over contact states. A wheel that lands again gets the
 //! force the LCP gives, constant over that step; there is no impact model
-//! (the paper's assumption), so the rigid model's landing velocity is simply
-//! absorbed over one step. Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) plus
+//! (the paper's assumption). For rigid contact the landing is made perfectly
+//! inelastic: the landed wheel's vertical velocity is set to the surface's,
+//! so the step's impulse stops it instead of the trapezoidal rule bouncing it
+//! back. Elastic and Hertz contact need no such rule: the spring carries the
+//! landing, and being undamped it returns the energy (restitution 1). Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) plus
 //! the LCP (Lemke, O(wheels²) per pivot); nothing is allocated in the loop.
 
 use nalgebra::{DMatrix, DVector};
@@ -29,6 +32,7 @@ use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
 use crate::model::{ContactLaw, Model};
+use crate::record::SEPARATION_GAP;
 use crate::vehicle::WheelKind;
 
 /// Newton iterations allowed per step for the Hertz law.
@@ -124,6 +128,9 @@ pub fn run(
 
     // Work arrays.
     let mut shapes = vec![0.0; nc * modes];
+    let (mut landing_values, mut landing_slopes) = (vec![0.0; modes], vec![0.0; modes]);
+    // Whether each contact wheel was off the surface after the previous step.
+    let mut was_apart = vec![false; nc];
     let mut scaled = vec![0.0; nc * modes];
     let mut free_gap = vec![0.0; nc];
     let mut compliance = vec![0.0; nc * nc];
@@ -312,6 +319,28 @@ pub fn run(
                 state.acceleration[k] = a_new;
                 state.displacement[k] = u_new;
             }
+        }
+        // Rigid landing is perfectly inelastic: a wheel that was off the
+        // surface and carries force again leaves the step with the surface's
+        // vertical velocity, φ·q̇ + v(φ′·q + r′). Without this the
+        // displacement-level constraint and the energy-conserving trapezoidal
+        // rule return the landing velocity as a rebound (restitution 1), and
+        // a wheel chatters for ever after one kink in the profile.
+        for (c, contact) in contacts.iter().enumerate() {
+            let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
+            if model.contact == ContactLaw::Rigid && was_apart[c] && lambda[c] > 0.0 {
+                let x = wheel_positions[contact.wheel];
+                bridge.mode_values_and_slopes(x, &mut landing_values, &mut landing_slopes);
+                let v = model.vehicles[contact.vehicle].speed;
+                let (_, dr, _) = model.profile.elevation_slope_curvature(x);
+                let mut surface_velocity = v * dr;
+                for i in 0..modes {
+                    surface_velocity += landing_values[i] * modal.velocity[i]
+                        + v * landing_slopes[i] * modal.displacement[i];
+                }
+                states[contact.vehicle].velocity[contact.dof] = surface_velocity;
+            }
+            was_apart[c] = apart;
         }
 
         let health: f64 = modal.health() + lambda.iter().sum::<f64>();

@@ -1,0 +1,334 @@
+//! The parts of resolving that need the built bridge or the resolved
+//! vehicles: oscillators from dimensionless groups, the contact model (an
+//! elastic stiffness from a ratio, a Hertz coefficient from a wheel radius),
+//! the solver method the contact needs, and studies.
+
+use super::raw;
+use super::resolve::Checker;
+use super::resolved::*;
+use crate::bridge::ModalBridge;
+
+/// Relative difference below which a given value agrees with a derived one.
+const AGREEMENT: f64 = 1e-9;
+
+/// Checks that an optional given value agrees with a derived one.
+fn agree(ck: &mut Checker<'_>, path: &str, given: Option<f64>, derived: f64, what: &str) {
+    if let Some(g) = given
+        && (g - derived).abs() > AGREEMENT * derived.abs().max(g.abs())
+    {
+        ck.error(
+            path,
+            format!("{what} {g} disagrees with the {derived} derived from the dimensionless groups; give one or the other"),
+        );
+    }
+}
+
+/// Fills in oscillators given by dimensionless groups, now that the bridge's
+/// first natural frequency f₁ is known (LCP separation paper, Table 1).
+pub(super) fn derive_dimensionless(
+    raws: &[raw::VehicleRaw],
+    vehicles: &mut [Vehicle],
+    bridge: &Bridge,
+    modal: &ModalBridge,
+    ck: &mut Checker<'_>,
+) {
+    let Bridge::Beam(beam) = bridge;
+    let f1 = modal.frequencies()[0];
+    for (i, (raw, vehicle)) in raws.iter().zip(vehicles.iter_mut()).enumerate() {
+        let raw::VehicleRaw::Oscillator(o) = raw else {
+            continue;
+        };
+        let Some(d) = &o.dimensionless else { continue };
+        let at = format!("vehicles[{i}]");
+        let groups = Dimensionless {
+            velocity_ratio: d.velocity_ratio,
+            mass_ratio: d.mass_ratio,
+            unsprung_ratio: d.unsprung_ratio.unwrap_or(0.0),
+            frequency_ratio: d.frequency_ratio,
+            damping_ratio: d.damping_ratio.unwrap_or(0.0),
+        };
+        let dpath = |field: &str| format!("{at}.dimensionless.{field}");
+        ck.positive(
+            &dpath("velocity_ratio"),
+            groups.velocity_ratio,
+            "velocity ratio",
+        );
+        ck.positive(&dpath("mass_ratio"), groups.mass_ratio, "mass ratio");
+        ck.non_negative(
+            &dpath("unsprung_ratio"),
+            groups.unsprung_ratio,
+            "unsprung ratio",
+        );
+        ck.positive(
+            &dpath("frequency_ratio"),
+            groups.frequency_ratio,
+            "frequency ratio",
+        );
+        super::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
+        let mut derived = groups.derive(f1, modal.length, beam.mass_per_length, 0.0);
+        super::resolve::check_speed(ck, &at, derived.speed);
+        agree(
+            ck,
+            &format!("{at}.sprung_mass"),
+            o.sprung_mass,
+            derived.sprung_mass,
+            "sprung_mass",
+        );
+        agree(
+            ck,
+            &format!("{at}.unsprung_mass"),
+            o.unsprung_mass,
+            derived.unsprung_mass,
+            "unsprung_mass",
+        );
+        agree(
+            ck,
+            &format!("{at}.stiffness"),
+            o.stiffness,
+            derived.stiffness,
+            "stiffness",
+        );
+        agree(
+            ck,
+            &format!("{at}.damping"),
+            o.damping,
+            derived.damping,
+            "damping",
+        );
+        agree(ck, &format!("{at}.speed"), o.speed, derived.speed, "speed");
+        derived.entry_time = match (o.entry_time, o.start_position) {
+            (Some(_), Some(_)) => {
+                ck.error(
+                    &format!("{at}.start_position"),
+                    "give `entry_time` or `start_position`, not both",
+                );
+                0.0
+            }
+            (Some(t), None) => {
+                ck.non_negative(&format!("{at}.entry_time"), t, "entry time");
+                t
+            }
+            (None, Some(x)) => {
+                if x > 0.0 {
+                    ck.error(
+                        &format!("{at}.start_position"),
+                        format!(
+                            "the vehicle must start on the approach (start_position ≤ 0), got {x}"
+                        ),
+                    );
+                }
+                if derived.speed > 0.0 {
+                    -x / derived.speed
+                } else {
+                    0.0
+                }
+            }
+            (None, None) => 0.0,
+        };
+        *vehicle = Vehicle::Oscillator(derived);
+    }
+}
+
+/// The contact model; an elastic stiffness from a ratio to the suspension
+/// stiffness, a Hertz coefficient from the wheel radius.
+pub(super) fn resolve_contact(
+    raw: Option<&raw::ContactRaw>,
+    vehicles: &[Vehicle],
+    ck: &mut Checker<'_>,
+) -> Contact {
+    match raw {
+        None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
+        Some(raw::ContactRaw::Rigid) => Contact::Rigid,
+        Some(raw::ContactRaw::Elastic {
+            stiffness,
+            stiffness_ratio,
+        }) => {
+            let Some(ratio) = stiffness_ratio else {
+                let Some(k) = stiffness else {
+                    ck.error(
+                        "contact",
+                        "elastic contact needs `stiffness` (N/m) or `stiffness_ratio`",
+                    );
+                    return Contact::Elastic {
+                        stiffness: 0.0,
+                        stiffness_ratio: None,
+                    };
+                };
+                ck.positive("contact.stiffness", *k, "contact stiffness");
+                return Contact::Elastic {
+                    stiffness: *k,
+                    stiffness_ratio: None,
+                };
+            };
+            ck.positive("contact.stiffness_ratio", *ratio, "contact stiffness ratio");
+            let suspension: Vec<f64> = vehicles
+                .iter()
+                .filter_map(|v| match v {
+                    Vehicle::Oscillator(o) => Some(o.stiffness),
+                    _ => None,
+                })
+                .collect();
+            if suspension.is_empty()
+                || suspension.len() != vehicles.len()
+                || suspension.iter().any(|&k| k != suspension[0])
+            {
+                ck.error(
+                    "contact.stiffness_ratio",
+                    "`stiffness_ratio` needs every vehicle to be an oscillator with the same suspension stiffness; give `stiffness` in N/m instead",
+                );
+                return Contact::Elastic {
+                    stiffness: 0.0,
+                    stiffness_ratio: None,
+                };
+            }
+            let derived = ratio * suspension[0];
+            if let Some(k) = stiffness
+                && (k - derived).abs() > AGREEMENT * derived.abs()
+            {
+                ck.error(
+                    "contact.stiffness",
+                    format!("stiffness {k} disagrees with stiffness_ratio × suspension stiffness = {derived}; give one or the other"),
+                );
+            }
+            Contact::Elastic {
+                stiffness: derived,
+                stiffness_ratio: Some(*ratio),
+            }
+        }
+        Some(raw::ContactRaw::Hertz {
+            coefficient,
+            wheel_radius,
+            profile,
+        }) => {
+            let coefficient = match (coefficient, wheel_radius) {
+                (Some(c), None) => {
+                    ck.positive("contact.coefficient", *c, "Hertz coefficient");
+                    if profile.is_some() {
+                        ck.error(
+                            "contact.profile",
+                            "`profile` only applies with `wheel_radius`",
+                        );
+                    }
+                    *c
+                }
+                (None, Some(r)) => {
+                    ck.positive("contact.wheel_radius", *r, "wheel radius");
+                    hertz_coefficient(*r, profile.unwrap_or(raw::TreadProfile::Worn))
+                }
+                (Some(_), Some(_)) => {
+                    ck.error(
+                        "contact.wheel_radius",
+                        "give `coefficient` or `wheel_radius`, not both",
+                    );
+                    0.0
+                }
+                (None, None) => {
+                    ck.error(
+                        "contact",
+                        "Hertz contact needs `coefficient` (N/m^1.5) or `wheel_radius` (m)",
+                    );
+                    0.0
+                }
+            };
+            Contact::Hertz { coefficient }
+        }
+    }
+}
+
+/// Hertz coefficient C = G^-1.5 (N/m^1.5) of a wheel of rolling radius
+/// `radius` (m) on a rail, from the contact constant G (m/N^(2/3)) of Zhai,
+/// Vehicle–Track Coupled Dynamics (2020), §2.4.1: worn tread
+/// G = 4.57e-8 R^-0.149, conical tread G = 3.86e-8 R^-0.115.
+pub fn hertz_coefficient(radius: f64, profile: raw::TreadProfile) -> f64 {
+    let g = match profile {
+        raw::TreadProfile::Worn => 4.57e-8 * radius.powf(-0.149),
+        raw::TreadProfile::Conical => 3.86e-8 * radius.powf(-0.115),
+    };
+    g.powf(-1.5)
+}
+
+/// The solution method: by default the one the contact model needs.
+pub(super) fn resolve_method(
+    method: Option<SolverMethod>,
+    contact: &Contact,
+    ck: &mut Checker<'_>,
+) -> SolverMethod {
+    let needed = if contact.is_unilateral() {
+        SolverMethod::Lcp
+    } else {
+        SolverMethod::Coupled
+    };
+    match method {
+        None => needed,
+        Some(m) if m == needed => m,
+        Some(SolverMethod::Coupled) => {
+            ck.error(
+                "solver.method",
+                "`method: coupled` keeps every wheel in permanent contact; unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
+            );
+            needed
+        }
+        Some(SolverMethod::Lcp) => {
+            ck.error(
+                "solver.method",
+                "`method: lcp` solves unilateral contact; with `contact: {type: permanent}` use `method: coupled`",
+            );
+            needed
+        }
+    }
+}
+
+fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &raw::GridRaw) {
+    ck.positive(&format!("{path}.from"), grid.from, "a grid start");
+    ck.positive(&format!("{path}.to"), grid.to, "a grid end");
+    if grid.to < grid.from {
+        ck.error(
+            &format!("{path}.to"),
+            format!("`to` ({}) is below `from` ({})", grid.to, grid.from),
+        );
+    }
+    if !(1..=500).contains(&grid.count) {
+        ck.error(
+            &format!("{path}.count"),
+            format!("a grid needs 1 to 500 values, got {}", grid.count),
+        );
+    }
+}
+
+/// A study and its requirements on the scene.
+pub(super) fn resolve_study(
+    raw: Option<&raw::StudyRaw>,
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    ck: &mut Checker<'_>,
+) -> Option<Study> {
+    match raw? {
+        raw::StudyRaw::SeparationMap(map) => {
+            check_grid(ck, "study.velocity_ratio", &map.velocity_ratio);
+            check_grid(ck, "study.mass_ratio", &map.mass_ratio);
+            let dimensionless_oscillator = matches!(
+                vehicles,
+                [Vehicle::Oscillator(Oscillator {
+                    dimensionless: Some(_),
+                    ..
+                })]
+            );
+            if !dimensionless_oscillator {
+                ck.error(
+                    "vehicles",
+                    "a separation map needs exactly one vehicle: an oscillator given with `dimensionless`",
+                );
+            }
+            if !contact.is_unilateral() {
+                ck.error(
+                    "study",
+                    "a separation map needs unilateral contact: `contact: {type: rigid}`, `elastic` or `hertz`",
+                );
+            }
+            Some(Study::SeparationMap {
+                velocity_ratio: map.velocity_ratio.clone(),
+                mass_ratio: map.mass_ratio.clone(),
+            })
+        }
+    }
+}
