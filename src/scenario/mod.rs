@@ -8,7 +8,7 @@
 
 #[allow(missing_docs)]
 pub mod de;
-mod derive;
+pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod raw;
