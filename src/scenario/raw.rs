@@ -287,8 +287,10 @@ pub enum ContactRaw {
     Permanent,
     /// Rigid unilateral contact: at every wheel gap ≥ 0, force ≥ 0 and
     /// gap · force = 0, solved as a linear complementarity problem per step
-    /// (`method: lcp`; the LCP separation paper, Section 3). A wheel that
-    /// lands again gets a force constant over that step; there is no impact model.
+    /// (`method: lcp`; the LCP separation paper, Section 3). Reattachment: a
+    /// wheel that lands again gets the force the LCP gives, constant over that
+    /// step (no impact model), and leaves the step with the surface's vertical
+    /// velocity (perfectly inelastic landing). Defaults to HHT α = −0.05.
     Rigid,
     /// Elastic unilateral contact: a linear tensionless spring under each wheel,
     /// force = stiffness · compression when compressed, else 0 (the LCP paper's
