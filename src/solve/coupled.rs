@@ -16,10 +16,11 @@
 //! O(wheels³); nothing is allocated in the loop.
 
 use super::dense::lu_solve;
+use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::partition::Partition;
-use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
+use super::{Observer, Progress, SolveError, StepView, VehicleState};
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
@@ -151,6 +152,7 @@ pub fn run(
         wheel_positions: &wheel_positions,
     });
 
+    let guard = Guard::new(model);
     let report_every = (model.steps / 200).max(1);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
@@ -280,17 +282,7 @@ pub fn run(
             );
         }
 
-        let health: f64 = modal.health() + lambda.iter().sum::<f64>();
-        if !health.is_finite() {
-            return Err(SolveError::Diverged {
-                time: t,
-                step,
-                positions: describe_positions(model, t),
-                cause: "the state is no longer finite; the time step may be too large or the \
-                        Newmark parameters unstable (β < γ/2)"
-                    .into(),
-            });
-        }
+        guard.check(model, &modal, &states, &lambda, t, step)?;
 
         observer.observe(&StepView {
             step,

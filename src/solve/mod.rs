@@ -10,6 +10,7 @@
 
 pub mod coupled;
 pub mod dense;
+pub mod guard;
 pub mod lcp;
 pub mod modal;
 pub mod newmark;

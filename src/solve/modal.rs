@@ -127,6 +127,17 @@ impl ModalStep {
         std::mem::swap(&mut self.previous_force, &mut self.current_force);
     }
 
+    /// Modal energy ½Σ(q̇² + ω²q²), J (unit modal masses).
+    pub fn energy(&self) -> f64 {
+        0.5 * self
+            .velocity
+            .iter()
+            .zip(&self.displacement)
+            .zip(&self.stiffness)
+            .map(|((v, q), k)| v * v + k * q * q)
+            .sum::<f64>()
+    }
+
     /// Sum of the state, for a cheap finiteness check.
     pub fn health(&self) -> f64 {
         self.displacement.iter().sum::<f64>() + self.velocity.iter().sum::<f64>()

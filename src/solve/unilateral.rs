@@ -27,6 +27,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use super::guard::Guard;
 use super::lcp::{LcpWorkspace, solve as solve_lcp};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
@@ -158,6 +159,7 @@ pub fn run(
         wheel_positions: &wheel_positions,
     });
 
+    let guard = Guard::new(model);
     let report_every = (model.steps / 200).max(1);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
@@ -343,17 +345,8 @@ pub fn run(
             was_apart[c] = apart;
         }
 
-        let health: f64 = modal.health() + lambda.iter().sum::<f64>();
-        if !health.is_finite() {
-            return Err(SolveError::Diverged {
-                time: t,
-                step,
-                positions: describe_positions(model, t),
-                cause: "the state is no longer finite; the time step may be too large for the \
-                        contact stiffness, or the Newmark parameters unstable (β < γ/2)"
-                    .into(),
-            });
-        }
+        guard.check(model, &modal, &states, &lambda, t, step)?;
+
         observer.observe(&StepView {
             step,
             time: t,

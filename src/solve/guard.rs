@@ -1,0 +1,143 @@
+//! The divergence guard: stops a run whose state stops being finite or whose
+//! mechanical energy grows without bound, with a message that says when,
+//! where the vehicles were, and the likely cause.
+//!
+//! Energy: E = ½Σᵢ(q̇ᵢ² + ωᵢ²qᵢ²) (bridge, unit modal masses) +
+//! Σᵥ[½u̇ᵀMu̇ + ½(u − u₀)ᵀK(u − u₀)] (vehicles, about their static
+//! equilibrium), J. Its scale, E_ref = ½(ΣP)²·Σᵢ max|φᵢ|²/ωᵢ² (the largest
+//! static modal strain energy the wheel loads P could store) + Σᵥ ½mᵥ(1 m/s)²
+//! (a vehicle bouncing at 1 m/s) + ½Σ m_w (v a k)² (wheels following the
+//! roughness), bounds any physical response by a small factor; a run is
+//! stopped when E exceeds [`ENERGY_LIMIT`] × E_ref. Cost O(modes + Σ dofᵥ²)
+//! per step.
+
+use super::modal::ModalStep;
+use super::{SolveError, VehicleState, describe_positions};
+use crate::model::Model;
+use crate::surface::Profile;
+
+/// Multiple of the energy scale at which a run counts as diverged.
+pub const ENERGY_LIMIT: f64 = 1e6;
+
+/// Precomputed scale and stability facts of one model.
+#[derive(Debug, Clone)]
+pub struct Guard {
+    energy_scale: f64,
+    cause: String,
+}
+
+impl Guard {
+    /// Prepares the guard for `model`.
+    pub fn new(model: &Model) -> Self {
+        let bridge = &model.bridge;
+        let total_load: f64 = model.static_wheel_loads.iter().map(|p| p.abs()).sum();
+        // Largest |φᵢ| over the mesh nodes (mode shapes peak near nodes of a
+        // fine mesh; this is a scale, not an exact bound).
+        let modes = bridge.mode_count();
+        let mut peak = vec![0.0f64; modes];
+        let mut values = vec![0.0; modes];
+        for &x in bridge.node_x() {
+            bridge.mode_values(x, &mut values);
+            for (p, v) in peak.iter_mut().zip(&values) {
+                *p = p.max(v.abs());
+            }
+        }
+        let static_energy: f64 = peak
+            .iter()
+            .zip(&bridge.circular_frequencies)
+            .map(|(p, w)| p * p / (w * w).max(1e-12))
+            .sum::<f64>()
+            * 0.5
+            * total_load
+            * total_load;
+        let (amplitude, wavenumber) = match model.profile {
+            Profile::Smooth => (0.0, 0.0),
+            Profile::Harmonic {
+                amplitude,
+                wavenumber,
+                ..
+            } => (amplitude, wavenumber),
+        };
+        let vehicle_energy: f64 = model
+            .vehicles
+            .iter()
+            .map(|v| {
+                let mass: f64 = v.mass.diagonal().iter().sum();
+                let rough = v.speed * amplitude * wavenumber;
+                0.5 * mass * (1.0 + rough * rough)
+            })
+            .sum();
+        let (beta, gamma, alpha) = (model.beta, model.gamma, model.alpha);
+        let cause = if 2.0 * beta >= gamma {
+            format!(
+                "the Newmark parameters (β = {beta}, γ = {gamma}, α = {alpha}) are unconditionally \
+                 stable, so look for a contact stiffness or Hertz law the time step of {} s cannot \
+                 follow, or a physically unstable scene",
+                model.time_step
+            )
+        } else {
+            let limit = 1.0 / (0.5 * gamma - beta).sqrt();
+            let highest = bridge.circular_frequencies.last().copied().unwrap_or(0.0);
+            format!(
+                "β = {beta}, γ = {gamma} is only conditionally stable (ωΔt ≤ {limit:.3}); the highest \
+                 bridge mode has ωΔt = {:.3}: reduce the time step below {:.3e} s or use β ≥ γ/2",
+                highest * model.time_step,
+                limit / highest.max(1e-12)
+            )
+        };
+        Self {
+            energy_scale: (static_energy + vehicle_energy).max(f64::MIN_POSITIVE),
+            cause,
+        }
+    }
+
+    /// Mechanical energy of the current state, J.
+    pub fn energy(model: &Model, modal: &ModalStep, states: &[VehicleState]) -> f64 {
+        let mut energy = modal.energy();
+        for (vehicle, state) in model.vehicles.iter().zip(states) {
+            let n = vehicle.dofs();
+            for i in 0..n {
+                let di = state.displacement[i] - state.static_displacement[i];
+                for j in 0..n {
+                    let dj = state.displacement[j] - state.static_displacement[j];
+                    energy += 0.5
+                        * (state.velocity[i] * vehicle.mass[(i, j)] * state.velocity[j]
+                            + di * vehicle.stiffness[(i, j)] * dj);
+                }
+            }
+        }
+        energy
+    }
+
+    /// Checks the state after step `step` at time `t` (s).
+    pub fn check(
+        &self,
+        model: &Model,
+        modal: &ModalStep,
+        states: &[VehicleState],
+        forces: &[f64],
+        t: f64,
+        step: usize,
+    ) -> Result<(), SolveError> {
+        let energy = Self::energy(model, modal, states);
+        let finite = energy.is_finite() && forces.iter().all(|f| f.is_finite());
+        if finite && energy <= ENERGY_LIMIT * self.energy_scale {
+            return Ok(());
+        }
+        let what = if finite {
+            format!(
+                "the mechanical energy grew to {energy:.3e} J, {:.1e} times its physical scale of {:.3e} J",
+                energy / self.energy_scale,
+                self.energy_scale
+            )
+        } else {
+            "the state is no longer finite".to_string()
+        };
+        Err(SolveError::Diverged {
+            time: t,
+            step,
+            positions: describe_positions(model, t),
+            cause: format!("{what}; {}", self.cause),
+        })
+    }
+}
