@@ -62,6 +62,8 @@ pub struct ModalBridge {
     pub damping_ratios: Vec<f64>,
     /// Number of modes the discretisation offers.
     pub available_modes: usize,
+    /// How the kept modes were chosen, in words (for the summary).
+    pub selection: String,
     /// Mass-normalised mode shapes (1/√kg), one component per kept mode.
     shapes: HermiteField,
     /// The finite-element model, kept for static influence lines.
@@ -94,11 +96,26 @@ impl ModalBridge {
                     circular_frequencies: omegas,
                     damping_ratios,
                     available_modes: available,
+                    selection: match (beam.modes.count, beam.modes.max_frequency) {
+                        (Some(n), None) => format!("requested: the lowest {n} modes"),
+                        (None, Some(f)) => format!("requested: every mode up to {f} Hz"),
+                        (Some(n), Some(f)) => format!("requested: the lowest {n} modes, up to {f} Hz"),
+                        (None, None) => "every mode the mesh offers".into(),
+                    },
                     shapes,
                     model,
                 })
             }
         }
+    }
+
+    /// Keeps only the lowest `count` modes, recording why.
+    pub fn truncate(&mut self, count: usize, selection: String) {
+        let count = count.clamp(1, self.mode_count());
+        self.circular_frequencies.truncate(count);
+        self.damping_ratios.truncate(count);
+        self.shapes = self.shapes.truncated(count);
+        self.selection = selection;
     }
 
     /// Number of kept modes.

@@ -66,6 +66,8 @@ pub struct RunInfo {
     pub modes_used: usize,
     /// Modes the bridge discretisation offers.
     pub modes_available: usize,
+    /// How the modes were chosen and why.
+    pub modes_selection: String,
     /// Natural frequencies of the modes used, Hz.
     pub frequencies: Vec<f64>,
     /// How the DAF's static reference is computed.
@@ -179,6 +181,7 @@ impl Summary {
                 end_time: model.end_time(),
                 modes_used: model.bridge.mode_count(),
                 modes_available: model.bridge.available_modes,
+                modes_selection: model.bridge.selection.clone(),
                 frequencies: model.bridge.frequencies(),
                 static_reference: STATIC_REFERENCE,
             },

@@ -6,6 +6,7 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
+pub mod content;
 #[allow(missing_docs)]
 pub mod de;
 pub mod derive;

@@ -125,8 +125,12 @@ pub struct BeamRaw {
     /// Hermite-cubic finite elements per span. Default 20.
     #[serde(default)]
     pub elements_per_span: Option<usize>,
-    /// Which modes the modal superposition keeps. Default: the first 10 (or all
-    /// the mesh has, if fewer).
+    /// Which modes the modal superposition keeps. Default: automatic — every
+    /// mode up to 4 × the highest frequency the scene excites (vehicle natural
+    /// frequencies incl. wheel hop on an elastic contact, axle passing v/d,
+    /// span crossing v/2L, roughness v/λ), and at least 3 per span; the
+    /// resolved scenario gives the cut-off as `max_frequency` and the summary
+    /// says why.
     #[serde(default)]
     pub modes: Option<ModesRaw>,
     /// Structural damping. Default: 0 (undamped).
@@ -342,8 +346,9 @@ pub struct SolverRaw {
     /// unilateral contact (rigid, elastic, Hertz).
     #[serde(default)]
     pub method: Option<SolverMethod>,
-    /// Time step, s. Default: min(1e-3, 1 / (20 f_max)) where f_max is the
-    /// highest bridge frequency kept.
+    /// Time step, s. Default: 1 / (20 f_max), f_max the highest bridge mode kept
+    /// or frequency excited (see `bridge.modes`), and at most 1/200 of the
+    /// shortest crossing.
     #[serde(default)]
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average

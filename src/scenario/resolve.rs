@@ -4,16 +4,14 @@
 //! the key is absent, of the section that lacks it), and all problems found
 //! are reported together, like a compiler.
 
+use super::content;
 use super::derive::{derive_dimensionless, resolve_contact, resolve_method, resolve_study};
 use super::diagnostic::Diagnostic;
 use super::raw::{self, ScenarioRaw};
 use super::resolved::*;
 use super::yaml::{Location, Node, PathSeg};
-use crate::bridge::beam::BeamModel;
 use crate::bridge::{BridgeError, ModalBridge};
 
-/// Default number of modes when the scene does not say.
-pub const DEFAULT_MODE_COUNT: usize = 10;
 /// Default finite elements per span.
 pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
 /// Default gravitational acceleration, m/s².
@@ -149,11 +147,11 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     }
 
     // The bridge is built only from a valid description.
-    let (bridge, mut vehicles) = (bridge?, vehicles?);
+    let (mut bridge, mut vehicles) = (bridge?, vehicles?);
     if !ck.diagnostics.is_empty() {
         return None;
     }
-    let modal = match ModalBridge::build(&bridge) {
+    let mut modal = match ModalBridge::build(&bridge) {
         Ok(m) => m,
         Err(e) => {
             let path = match e {
@@ -167,18 +165,30 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    let Bridge::Beam(beam) = &mut bridge;
+    let excitations = content::excitations(&vehicles, &contact, &surface, &beam.spans, gravity);
+    if beam.modes.count.is_none() && beam.modes.max_frequency.is_none() {
+        // Automatic: keep the modes this scene excites; write the cut-off back
+        // so the resolved scenario reproduces the choice.
+        let (count, cutoff, reason) = content::mode_cutoff(&modal, beam.spans.len(), &excitations);
+        modal.truncate(count, reason);
+        beam.modes.max_frequency = Some(cutoff);
+    }
     let study = resolve_study(raw.study.as_ref(), &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
     }
 
-    // Default step: a tenth of… resolve the highest kept mode with 20 steps
-    // per period, and never coarser than 1 ms.
+    // Default step: resolve the highest frequency kept or excited.
     let highest = modal.frequencies().last().copied().unwrap_or(1.0);
+    let length = modal.length;
+    let shortest_crossing = vehicles
+        .iter()
+        .map(|v| (length + v.length()) / v.speed())
+        .fold(f64::INFINITY, f64::min);
     let time_step = solver_raw
         .time_step
-        .unwrap_or_else(|| (0.05 / highest).min(1e-3));
-    let length = modal.length;
+        .unwrap_or_else(|| content::time_step(highest, &excitations, shortest_crossing));
     let last_exit = vehicles
         .iter()
         .map(|v| v.entry_time() + (length + v.length()) / v.speed())
@@ -329,7 +339,7 @@ fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> 
             if ck.diagnostics.len() > before {
                 return None;
             }
-            let mut beam = Beam {
+            let beam = Beam {
                 spans: b.spans.clone(),
                 bending_stiffness: b.bending_stiffness,
                 mass_per_length: b.mass_per_length,
@@ -337,9 +347,6 @@ fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> 
                 modes,
                 damping,
             };
-            if beam.modes.count.is_none() && beam.modes.max_frequency.is_none() {
-                beam.modes.count = Some(DEFAULT_MODE_COUNT.min(BeamModel::free_dofs_of(&beam)));
-            }
             Some(Bridge::Beam(beam))
         }
     }

@@ -1,0 +1,174 @@
+//! The frequency content of a scene, for the automatic defaults: which bridge
+//! modes to keep and which time step to take.
+//!
+//! A mode well above every excitation frequency responds quasi-statically, so
+//! it only adds its static share. The excitation comes from the vehicles'
+//! own natural frequencies (suspension; wheel hop on an elastic or Hertz
+//! contact), the passing of axles (v / spacing), the crossing of each span
+//! (v / 2L_span) and the roughness (v / λ). The default keeps every mode up to
+//! [`SAFETY`] × the highest excitation frequency, and never fewer than
+//! [`MODES_PER_SPAN`] per span, because the static deflection under a moving
+//! point load converges like Σ 1/j⁴ over the modes of each span: 5 per span
+//! leave Σ_{j>5} 1/j⁴ ≈ 0.1 % of the deflection under a wheel anywhere on the
+//! span (3 would leave 0.6 %, felt in the vehicle's response). The default step resolves the highest
+//! frequency kept or excited with [`STEPS_PER_PERIOD`] steps.
+
+use std::f64::consts::PI;
+
+use nalgebra::DMatrix;
+
+use super::resolved::{Contact, Surface, Vehicle};
+use crate::bridge::ModalBridge;
+use crate::vehicle::{VehicleModel, WheelKind};
+
+/// Cut-off frequency over the highest excitation frequency.
+pub const SAFETY: f64 = 4.0;
+/// Fewest modes kept per span.
+pub const MODES_PER_SPAN: usize = 5;
+/// Steps per period of the highest frequency, for the default time step.
+pub const STEPS_PER_PERIOD: f64 = 20.0;
+
+/// One source of excitation and its frequency.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Excitation {
+    /// What it is, in words.
+    pub source: String,
+    /// Frequency, Hz.
+    pub frequency: f64,
+}
+
+/// Natural frequencies (Hz) of a vehicle with its wheels on springs of
+/// stiffness `wheel_stiffness` (N/m), or held fixed when `None`. Massless
+/// DOFs are condensed out statically; then K φ = ω² M φ by Cholesky of M.
+pub fn vehicle_frequencies(vehicle: &VehicleModel, wheel_stiffness: Option<f64>) -> Vec<f64> {
+    let n = vehicle.dofs();
+    let wheel_dofs: Vec<usize> = vehicle
+        .wheels
+        .iter()
+        .filter_map(|w| match w.kind {
+            WheelKind::Dof(d) => Some(d),
+            WheelKind::Load(_) => None,
+        })
+        .collect();
+    let mut stiffness = vehicle.stiffness.clone();
+    let mut keep: Vec<usize> = (0..n).collect();
+    match wheel_stiffness {
+        Some(k) => wheel_dofs.iter().for_each(|&d| stiffness[(d, d)] += k),
+        None => keep.retain(|d| !wheel_dofs.contains(d)),
+    }
+    let massive: Vec<usize> = keep.iter().copied().filter(|&d| vehicle.mass[(d, d)] > 0.0).collect();
+    let massless: Vec<usize> = keep.iter().copied().filter(|&d| vehicle.mass[(d, d)] <= 0.0).collect();
+    if massive.is_empty() {
+        return Vec::new();
+    }
+    let pick = |m: &DMatrix<f64>, r: &[usize], c: &[usize]| DMatrix::from_fn(r.len(), c.len(), |i, j| m[(r[i], c[j])]);
+    let mut k_mm = pick(&stiffness, &massive, &massive);
+    if !massless.is_empty() {
+        let k_00 = pick(&stiffness, &massless, &massless);
+        let k_m0 = pick(&stiffness, &massive, &massless);
+        if let Some(inverse) = k_00.try_inverse() {
+            k_mm -= &k_m0 * inverse * k_m0.transpose();
+        }
+    }
+    let m_mm = pick(&vehicle.mass, &massive, &massive);
+    let Some(cholesky) = m_mm.cholesky() else { return Vec::new() };
+    let l_inv = cholesky.l().try_inverse().unwrap_or_else(|| DMatrix::identity(massive.len(), massive.len()));
+    let a = &l_inv * k_mm * l_inv.transpose();
+    let a = (&a + a.transpose()) * 0.5;
+    let mut frequencies: Vec<f64> = a
+        .symmetric_eigenvalues()
+        .iter()
+        .map(|&l| l.max(0.0).sqrt() / (2.0 * PI))
+        .collect();
+    frequencies.sort_by(f64::total_cmp);
+    frequencies
+}
+
+/// Every excitation frequency of the scene on this bridge.
+pub fn excitations(
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    surface: &Surface,
+    spans: &[f64],
+    gravity: f64,
+) -> Vec<Excitation> {
+    let mut out = Vec::new();
+    for (i, vehicle) in vehicles.iter().enumerate() {
+        let n = i + 1;
+        let model = VehicleModel::build(vehicle, gravity);
+        let v = vehicle.speed();
+        let shortest = spans.iter().copied().fold(f64::INFINITY, f64::min);
+        out.push(Excitation {
+            source: format!("vehicle {n} crossing the shortest span (v / 2L)"),
+            frequency: v / (2.0 * shortest),
+        });
+        let spacings = model.wheels.windows(2).map(|w| w[1].offset - w[0].offset).filter(|&d| d > 0.0);
+        if let Some(spacing) = spacings.fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.min(d)))) {
+            out.push(Excitation {
+                source: format!("vehicle {n} axle passing (v / spacing)"),
+                frequency: v / spacing,
+            });
+        }
+        let wheel_stiffness = match *contact {
+            Contact::Permanent | Contact::Rigid => None,
+            Contact::Elastic { stiffness, .. } => Some(stiffness),
+            Contact::Hertz { coefficient } => {
+                // Tangent stiffness at the static wheel load P: dF/dδ = 1.5 C^(2/3) P^(1/3).
+                let load = model.gravity_load.iter().map(|f| -f).sum::<f64>() / model.wheels.len().max(1) as f64;
+                Some(1.5 * coefficient.powf(2.0 / 3.0) * load.max(0.0).powf(1.0 / 3.0))
+            }
+        };
+        if let Some(&top) = vehicle_frequencies(&model, wheel_stiffness).last() {
+            out.push(Excitation {
+                source: format!(
+                    "vehicle {n} highest natural frequency{}",
+                    if wheel_stiffness.is_some() { " (wheel hop on the contact spring)" } else { "" }
+                ),
+                frequency: top,
+            });
+        }
+        if let Surface::Harmonic { wavelength, .. } = *surface {
+            out.push(Excitation {
+                source: format!("vehicle {n} over the roughness (v / λ)"),
+                frequency: v / wavelength,
+            });
+        }
+    }
+    out
+}
+
+/// The automatic mode cut-off: the count to keep and the reason, in words.
+pub fn mode_cutoff(bridge: &ModalBridge, spans: usize, excitations: &[Excitation]) -> (usize, f64, String) {
+    let frequencies = bridge.frequencies();
+    let top = excitations
+        .iter()
+        .max_by(|a, b| a.frequency.total_cmp(&b.frequency))
+        .cloned()
+        .unwrap_or(Excitation { source: "none".into(), frequency: 0.0 });
+    let dynamic_cut = SAFETY * top.frequency;
+    let minimum = (MODES_PER_SPAN * spans).min(frequencies.len());
+    let shape_cut = frequencies[minimum.max(1) - 1];
+    let cut = dynamic_cut.max(shape_cut);
+    let count = frequencies.iter().take_while(|&&f| f <= cut * (1.0 + 1e-12)).count().max(1);
+    let reason = if dynamic_cut >= shape_cut {
+        format!(
+            "automatic: {count} modes up to {cut:.2} Hz = {SAFETY} × {:.2} Hz, the highest excitation ({})",
+            top.frequency, top.source
+        )
+    } else {
+        format!(
+            "automatic: {count} modes, at least {MODES_PER_SPAN} per span for the quasi-static shape \
+             (up to {cut:.2} Hz; {SAFETY} × the highest excitation, {:.2} Hz from {}, needs fewer)",
+            top.frequency, top.source
+        )
+    };
+    (count, cut, reason)
+}
+
+/// The automatic time step: [`STEPS_PER_PERIOD`] steps per period of the
+/// highest frequency kept or excited, and at least 200 steps over the
+/// shortest crossing, s.
+pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossing: f64) -> f64 {
+    let top = excitations.iter().map(|e| e.frequency).fold(highest_mode, f64::max);
+    (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / 200.0)
+}
