@@ -99,7 +99,11 @@ fn rigid_lcp_reproduces_coupled_for_a_massless_wheel() {
             .iter()
             .zip(&b[..10])
             .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-        let floor = if name.contains("acceleration") { 1e-6 } else { 1e-12 };
+        let floor = if name.contains("acceleration") {
+            1e-6
+        } else {
+            1e-12
+        };
         assert!(
             early < floor * max_abs(b),
             "{name}: first 10 steps differ by {early:e}"
@@ -472,7 +476,11 @@ fn several_vehicles_on_a_continuous_beam() {
     let coupled = run_text(&scene("{type: permanent}"));
     for contact in ["{type: rigid}", "{type: elastic, stiffness: 1.0e10}"] {
         let unilateral = run_text(&scene(contact));
-        assert_eq!(unilateral.summary.separation.len(), 2, "two wheels with DOFs");
+        assert_eq!(
+            unilateral.summary.separation.len(),
+            2,
+            "two wheels with DOFs"
+        );
         for wheel in &unilateral.summary.separation {
             assert!(wheel.max_gap < 1e-6, "{contact}: {wheel:?}");
         }
