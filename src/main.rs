@@ -46,6 +46,25 @@ enum Command {
         #[arg(long)]
         shapes: Option<PathBuf>,
     },
+    /// Speed against error: the scene at finer and coarser time steps and
+    /// mode counts, each recorded quantity's error against the finest run,
+    /// and the wall time of each; writes converge.csv and converge.png.
+    Converge {
+        /// The scenario file.
+        file: PathBuf,
+        /// Largest acceptable error for the "cheapest" choice: 1% or 0.01.
+        #[arg(long, default_value = "1%", allow_hyphen_values = true, value_parser = vbi::study::converge::parse_tolerance)]
+        tolerance: f64,
+        /// Runs on the time-step ladder (the scenario's step × 1, 2, 4, …).
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=16))]
+        levels: u32,
+        /// Output folder. Default: results/<scenario name>-converge.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// No progress and no closing message (the table is still printed).
+        #[arg(long, short)]
+        quiet: bool,
+    },
 }
 
 const EXIT_FAILED: u8 = 1;
@@ -61,6 +80,13 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Command::Modes { file, shapes } => modes(&file, shapes.as_deref()),
+        Command::Converge {
+            file,
+            tolerance,
+            levels,
+            out,
+            quiet,
+        } => converge(&file, tolerance, levels as usize, out, quiet),
     }
 }
 
@@ -201,4 +227,160 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
         println!("mode shapes written to {}", path.display());
     }
     ExitCode::SUCCESS
+}
+
+fn converge(
+    file: &Path,
+    tolerance: f64,
+    levels: usize,
+    out: Option<PathBuf>,
+    quiet: bool,
+) -> ExitCode {
+    use vbi::study::converge::{self as study, ConvergeError, Options};
+    let loaded = match scenario::load_file(file) {
+        Ok(l) => l,
+        Err(e) => return load_error(&e),
+    };
+    let name = loaded.scenario.name.clone();
+    let out = out.unwrap_or_else(|| Path::new("results").join(format!("{name}-converge")));
+    if loaded.scenario.study.is_some() && !quiet {
+        eprintln!(
+            "note: {}: the study section is ignored; converging the base scene",
+            file.display()
+        );
+    }
+    let bar = if quiet {
+        ProgressBar::hidden()
+    } else {
+        let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+        bar.set_style(
+            ProgressStyle::with_template("{spinner} run {pos}/{len} {msg}")
+                .expect("valid template"),
+        );
+        bar
+    };
+    let mut progress = |index: usize, total: usize, label: &str| {
+        bar.set_length(total as u64);
+        bar.set_position(index as u64 + 1);
+        bar.set_message(label.to_string());
+    };
+    let options = Options { levels, tolerance };
+    let study = match study::converge(&loaded, &options, &mut progress) {
+        Ok(s) => s,
+        Err(e) => {
+            bar.abandon();
+            eprintln!("error: {}: {e}", file.display());
+            let code = match e {
+                ConvergeError::Options(_) => EXIT_INVALID,
+                _ => EXIT_FAILED,
+            };
+            return ExitCode::from(code);
+        }
+    };
+    bar.finish_and_clear();
+    print_convergence(&study);
+    let written = std::fs::create_dir_all(&out)
+        .map_err(|e| format!("cannot create {}: {e}", out.display()))
+        .and_then(|()| {
+            vbi::report::write_atomic(&out.join("converge.csv"), &study.to_csv())
+                .map_err(|e| e.to_string())
+        })
+        .and_then(|()| {
+            study
+                .plot(&out.join("converge.png"))
+                .map_err(|e| e.to_string())
+        });
+    if let Err(e) = written {
+        eprintln!("error: {e}");
+        return ExitCode::from(EXIT_FAILED);
+    }
+    if !quiet {
+        eprintln!("results in {}", out.display());
+    }
+    ExitCode::SUCCESS
+}
+
+/// The study as a table on stdout: one row per run, then the observed
+/// orders and the cheapest run within tolerance.
+fn print_convergence(study: &vbi::study::converge::Convergence) {
+    use vbi::study::converge::short;
+    let percent = |e: Option<f64>| e.map_or("-".to_string(), |e| format!("{:.4}", 100.0 * e));
+    let reference = &study.reference;
+    let rows: Vec<(String, &vbi::study::converge::RunReport, String, String)> = std::iter::once((
+        format!("{} (reference)", reference.label),
+        reference,
+        "-".to_string(),
+        "-".to_string(),
+    ))
+    .chain(study.runs.iter().map(|r| {
+        let errors = (percent(r.worst_max_abs()), percent(r.worst_rms()));
+        (r.label.clone(), r, errors.0, errors.1)
+    }))
+    .collect();
+    let width = rows.iter().map(|r| r.0.len()).max().unwrap_or(0).max(3);
+    println!(
+        "{}: convergence against {}",
+        study.scenario, reference.label
+    );
+    println!(
+        "{:<width$} {:>10} {:>6} {:>10} {:>14} {:>14}",
+        "run", "dt_s", "modes", "wall_ms", "max_abs_err_%", "rms_err_%"
+    );
+    for (label, run, max_abs, rms) in &rows {
+        let wall = run
+            .wall_time
+            .map_or("-".to_string(), |t| format!("{:.2}", 1e3 * t));
+        print!(
+            "{label:<width$} {:>10} {:>6} {wall:>10} {max_abs:>14} {rms:>14}",
+            short(run.time_step),
+            run.modes,
+        );
+        match &run.errors {
+            Err(message) => println!("  failed: {message}"),
+            Ok(_) => println!(),
+        }
+    }
+    let names = study.quantities();
+    if study.orders.is_empty() {
+        println!("observed order: none (fewer than two successful time-step runs)");
+    } else {
+        let col = names.iter().map(|n| n.len()).max().unwrap_or(0).max(6);
+        println!("observed order p = log2(e(2h)/e(h)) of the max-abs error:");
+        print!("{:<24}", "dt halving");
+        for n in &names {
+            print!(" {n:>col$}");
+        }
+        println!();
+        let mut pairs: Vec<(f64, f64)> = study
+            .orders
+            .iter()
+            .map(|o| (o.coarse_step, o.fine_step))
+            .collect();
+        pairs.dedup();
+        for (coarse, fine) in pairs {
+            let pair = format!(
+                "{} -> {}",
+                vbi::study::converge::short(coarse),
+                vbi::study::converge::short(fine)
+            );
+            print!("{pair:<24}");
+            for n in &names {
+                let p = study
+                    .orders
+                    .iter()
+                    .find(|o| o.coarse_step == coarse && o.quantity == *n)
+                    .map_or("-".to_string(), |o| format!("{:.3}", o.order));
+                print!(" {p:>col$}");
+            }
+            println!();
+        }
+        if let Some(m) = study.median_order {
+            println!("median observed order: {m:.3}");
+        }
+    }
+    let tolerance = vbi::study::converge::percent(study.tolerance);
+    match study.cheapest_run() {
+        Some(run) => println!("cheapest within {tolerance} %: {}", run.label),
+        None => println!("cheapest within {tolerance} %: none (every run's error exceeds it)"),
+    }
 }

@@ -56,12 +56,22 @@ pub fn vehicle_frequencies(vehicle: &VehicleModel, wheel_stiffness: Option<f64>)
         Some(k) => wheel_dofs.iter().for_each(|&d| stiffness[(d, d)] += k),
         None => keep.retain(|d| !wheel_dofs.contains(d)),
     }
-    let massive: Vec<usize> = keep.iter().copied().filter(|&d| vehicle.mass[(d, d)] > 0.0).collect();
-    let massless: Vec<usize> = keep.iter().copied().filter(|&d| vehicle.mass[(d, d)] <= 0.0).collect();
+    let massive: Vec<usize> = keep
+        .iter()
+        .copied()
+        .filter(|&d| vehicle.mass[(d, d)] > 0.0)
+        .collect();
+    let massless: Vec<usize> = keep
+        .iter()
+        .copied()
+        .filter(|&d| vehicle.mass[(d, d)] <= 0.0)
+        .collect();
     if massive.is_empty() {
         return Vec::new();
     }
-    let pick = |m: &DMatrix<f64>, r: &[usize], c: &[usize]| DMatrix::from_fn(r.len(), c.len(), |i, j| m[(r[i], c[j])]);
+    let pick = |m: &DMatrix<f64>, r: &[usize], c: &[usize]| {
+        DMatrix::from_fn(r.len(), c.len(), |i, j| m[(r[i], c[j])])
+    };
     let mut k_mm = pick(&stiffness, &massive, &massive);
     if !massless.is_empty() {
         let k_00 = pick(&stiffness, &massless, &massless);
@@ -71,8 +81,13 @@ pub fn vehicle_frequencies(vehicle: &VehicleModel, wheel_stiffness: Option<f64>)
         }
     }
     let m_mm = pick(&vehicle.mass, &massive, &massive);
-    let Some(cholesky) = m_mm.cholesky() else { return Vec::new() };
-    let l_inv = cholesky.l().try_inverse().unwrap_or_else(|| DMatrix::identity(massive.len(), massive.len()));
+    let Some(cholesky) = m_mm.cholesky() else {
+        return Vec::new();
+    };
+    let l_inv = cholesky
+        .l()
+        .try_inverse()
+        .unwrap_or_else(|| DMatrix::identity(massive.len(), massive.len()));
     let a = &l_inv * k_mm * l_inv.transpose();
     let a = (&a + a.transpose()) * 0.5;
     let mut frequencies: Vec<f64> = a
@@ -102,8 +117,14 @@ pub fn excitations(
             source: format!("vehicle {n} crossing the shortest span (v / 2L)"),
             frequency: v / (2.0 * shortest),
         });
-        let spacings = model.wheels.windows(2).map(|w| w[1].offset - w[0].offset).filter(|&d| d > 0.0);
-        if let Some(spacing) = spacings.fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.min(d)))) {
+        let spacings = model
+            .wheels
+            .windows(2)
+            .map(|w| w[1].offset - w[0].offset)
+            .filter(|&d| d > 0.0);
+        if let Some(spacing) =
+            spacings.fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.min(d))))
+        {
             out.push(Excitation {
                 source: format!("vehicle {n} axle passing (v / spacing)"),
                 frequency: v / spacing,
@@ -114,7 +135,8 @@ pub fn excitations(
             Contact::Elastic { stiffness, .. } => Some(stiffness),
             Contact::Hertz { coefficient } => {
                 // Tangent stiffness at the static wheel load P: dF/dδ = 1.5 C^(2/3) P^(1/3).
-                let load = model.gravity_load.iter().map(|f| -f).sum::<f64>() / model.wheels.len().max(1) as f64;
+                let load = model.gravity_load.iter().map(|f| -f).sum::<f64>()
+                    / model.wheels.len().max(1) as f64;
                 Some(1.5 * coefficient.powf(2.0 / 3.0) * load.max(0.0).powf(1.0 / 3.0))
             }
         };
@@ -122,7 +144,11 @@ pub fn excitations(
             out.push(Excitation {
                 source: format!(
                     "vehicle {n} highest natural frequency{}",
-                    if wheel_stiffness.is_some() { " (wheel hop on the contact spring)" } else { "" }
+                    if wheel_stiffness.is_some() {
+                        " (wheel hop on the contact spring)"
+                    } else {
+                        ""
+                    }
                 ),
                 frequency: top,
             });
@@ -138,18 +164,29 @@ pub fn excitations(
 }
 
 /// The automatic mode cut-off: the count to keep and the reason, in words.
-pub fn mode_cutoff(bridge: &ModalBridge, spans: usize, excitations: &[Excitation]) -> (usize, f64, String) {
+pub fn mode_cutoff(
+    bridge: &ModalBridge,
+    spans: usize,
+    excitations: &[Excitation],
+) -> (usize, f64, String) {
     let frequencies = bridge.frequencies();
     let top = excitations
         .iter()
         .max_by(|a, b| a.frequency.total_cmp(&b.frequency))
         .cloned()
-        .unwrap_or(Excitation { source: "none".into(), frequency: 0.0 });
+        .unwrap_or(Excitation {
+            source: "none".into(),
+            frequency: 0.0,
+        });
     let dynamic_cut = SAFETY * top.frequency;
     let minimum = (MODES_PER_SPAN * spans).min(frequencies.len());
     let shape_cut = frequencies[minimum.max(1) - 1];
     let cut = dynamic_cut.max(shape_cut);
-    let count = frequencies.iter().take_while(|&&f| f <= cut * (1.0 + 1e-12)).count().max(1);
+    let count = frequencies
+        .iter()
+        .take_while(|&&f| f <= cut * (1.0 + 1e-12))
+        .count()
+        .max(1);
     let reason = if dynamic_cut >= shape_cut {
         format!(
             "automatic: {count} modes up to {cut:.2} Hz = {SAFETY} × {:.2} Hz, the highest excitation ({})",
@@ -169,6 +206,9 @@ pub fn mode_cutoff(bridge: &ModalBridge, spans: usize, excitations: &[Excitation
 /// highest frequency kept or excited, and at least 200 steps over the
 /// shortest crossing, s.
 pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossing: f64) -> f64 {
-    let top = excitations.iter().map(|e| e.frequency).fold(highest_mode, f64::max);
+    let top = excitations
+        .iter()
+        .map(|e| e.frequency)
+        .fold(highest_mode, f64::max);
     (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / 200.0)
 }

@@ -13,6 +13,7 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod raw;
+mod records;
 pub mod resolve;
 pub mod resolved;
 #[allow(missing_docs)]

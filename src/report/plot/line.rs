@@ -1,0 +1,253 @@
+//! Line charts: series, axes (linear or logarithmic), legend placement.
+
+use super::*;
+pub(super) fn render_line_chart(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    log_x: bool,
+    log_y: bool,
+) -> Result<Rendered, PlotError> {
+    for s in series {
+        if s.x.len() != s.y.len() {
+            return Err(PlotError::InvalidInput(format!(
+                "series '{}': x has {} points but y has {}",
+                s.label,
+                s.x.len(),
+                s.y.len()
+            )));
+        }
+    }
+    let ok_x = |v: f64| if log_x { usable_log(v) } else { usable(v) };
+    let ok_y = |v: f64| if log_y { usable_log(v) } else { usable(v) };
+    // Runs of consecutive valid points, per series.
+    let runs: Vec<Vec<Vec<(f64, f64)>>> = series
+        .iter()
+        .map(|s| {
+            let mut runs = Vec::new();
+            let mut cur = Vec::new();
+            for (&x, &y) in s.x.iter().zip(s.y) {
+                if ok_x(x) && ok_y(y) {
+                    cur.push((x, y));
+                } else if !cur.is_empty() {
+                    runs.push(std::mem::take(&mut cur));
+                }
+            }
+            if !cur.is_empty() {
+                runs.push(cur);
+            }
+            runs
+        })
+        .collect();
+    let points = runs.iter().flatten().flatten();
+    let (x_lo, x_hi) = min_max(points.clone().map(|p| p.0));
+    let (y_lo, y_hi) = min_max(points.map(|p| p.1));
+
+    let x_range = if log_x {
+        log_range(x_lo, x_hi)
+    } else {
+        linear_range(x_lo, x_hi, 0.0)
+    };
+    let y_range = if log_y {
+        log_range(y_lo, y_hi)
+    } else {
+        linear_range(y_lo, y_hi, 0.05)
+    };
+    let labels = LineChartText {
+        title,
+        x_label,
+        y_label,
+        log_x,
+        log_y,
+    };
+    render(|root| match (log_x, log_y) {
+        (false, false) => draw_line_chart(
+            root,
+            RangedCoordf64::from(x_range.clone()),
+            RangedCoordf64::from(y_range.clone()),
+            &labels,
+            series,
+            &runs,
+        ),
+        (true, false) => draw_line_chart(
+            root,
+            LogCoord::from(x_range.clone().log_scale()),
+            RangedCoordf64::from(y_range.clone()),
+            &labels,
+            series,
+            &runs,
+        ),
+        (false, true) => draw_line_chart(
+            root,
+            RangedCoordf64::from(x_range.clone()),
+            LogCoord::from(y_range.clone().log_scale()),
+            &labels,
+            series,
+            &runs,
+        ),
+        (true, true) => draw_line_chart(
+            root,
+            LogCoord::from(x_range.clone().log_scale()),
+            LogCoord::from(y_range.clone().log_scale()),
+            &labels,
+            series,
+            &runs,
+        ),
+    })
+}
+
+pub(super) struct LineChartText<'a> {
+    title: &'a str,
+    x_label: &'a str,
+    y_label: &'a str,
+    log_x: bool,
+    log_y: bool,
+}
+
+pub(super) fn draw_line_chart<X, Y>(
+    root: &Area<'_>,
+    x_coord: X,
+    y_coord: Y,
+    text: &LineChartText,
+    series: &[Series],
+    runs: &[Vec<Vec<(f64, f64)>>],
+) -> Result<Geometry, PlotError>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    let x_fmt = tick_formatter(&x_coord.range(), text.log_x);
+    let y_fmt = tick_formatter(&y_coord.range(), text.log_y);
+    let area = with_title(root, text.title)?;
+    let mut chart = ChartBuilder::on(&area)
+        .margin(15)
+        .margin_right(30)
+        .x_label_area_size(60)
+        .y_label_area_size(95)
+        .build_cartesian_2d(x_coord, y_coord)
+        .map_err(draw_err)?;
+    chart
+        .configure_mesh()
+        .x_desc(text.x_label)
+        .y_desc(text.y_label)
+        .x_labels(10)
+        .y_labels(10)
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .label_style(font(LABEL_SIZE))
+        .axis_desc_style(font(DESC_SIZE))
+        .bold_line_style(RGBColor(200, 200, 200).stroke_width(1))
+        .light_line_style(RGBColor(235, 235, 235).stroke_width(1))
+        .draw()
+        .map_err(draw_err)?;
+
+    let mut any_label = false;
+    for (k, (s, runs)) in series.iter().zip(runs).enumerate() {
+        let colour = PALETTE[k % PALETTE.len()];
+        let style = colour.stroke_width(2);
+        if !s.label.is_empty() {
+            any_label = true;
+            // An empty series carries the legend entry, so that series without any
+            // valid point still appear in the legend.
+            chart
+                .draw_series(LineSeries::new(std::iter::empty(), style))
+                .map_err(draw_err)?
+                .label(s.label)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+        }
+        for run in runs {
+            // A run that lands on one pixel (a single point, or points closer than a
+            // pixel) would be invisible as a line: draw it as a dot.
+            let Some(&p0) = run.first() else { continue };
+            let first = chart.backend_coord(&p0);
+            if run.iter().all(|p| chart.backend_coord(p) == first) {
+                chart
+                    .draw_series(std::iter::once(Circle::new(p0, 3, colour.filled())))
+                    .map_err(draw_err)?;
+            } else {
+                chart
+                    .draw_series(LineSeries::new(run.iter().copied(), style))
+                    .map_err(draw_err)?;
+            }
+        }
+    }
+    if any_label {
+        let position = legend_position(&chart, series, runs)?;
+        chart
+            .configure_series_labels()
+            .position(position)
+            .label_font(font(LEGEND_SIZE))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .margin(10)
+            .draw()
+            .map_err(draw_err)?;
+    }
+    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+    Ok(Geometry {
+        px_x,
+        px_y,
+        ..Geometry::default()
+    })
+}
+
+/// The plotting-area corner where the legend box covers the least of the lines.
+pub(super) fn legend_position<X, Y>(
+    chart: &ChartContext<'_, BitMapBackend<'_>, Cartesian2d<X, Y>>,
+    series: &[Series],
+    runs: &[Vec<Vec<(f64, f64)>>],
+) -> Result<SeriesLabelPosition, PlotError>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    // Same box size as plotters' legend: text block + 30 px sample + 2 × margin (10).
+    let style = font(LEGEND_SIZE);
+    let mut text = MultiLineText::<_, &str>::new((0, 0), &style);
+    for s in series.iter().filter(|s| !s.label.is_empty()) {
+        text.push_line(s.label);
+    }
+    let (tw, th) = text.estimate_dimension().map_err(draw_err)?;
+    let (w, h) = (tw + 30 + 20, th + 20);
+    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+    let (aw, ah) = (px_x.end - px_x.start, px_y.end - px_y.start);
+    let candidates = [
+        (SeriesLabelPosition::UpperRight, aw - w - 5, 5),
+        (SeriesLabelPosition::UpperLeft, 5, 5),
+        (SeriesLabelPosition::LowerRight, aw - w - 5, ah - h - 5),
+        (SeriesLabelPosition::LowerLeft, 5, ah - h - 5),
+    ];
+    let mut hits = [0usize; 4];
+    let mut count = |p: (i32, i32)| {
+        let (x, y) = (p.0 - px_x.start, p.1 - px_y.start);
+        for (hit, (_, cx, cy)) in hits.iter_mut().zip(&candidates) {
+            if x >= *cx && x <= cx + w && y >= *cy && y <= cy + h {
+                *hit += 1;
+            }
+        }
+    };
+    for run in runs.iter().flatten() {
+        let pixels: Vec<(i32, i32)> = run.iter().map(|p| chart.backend_coord(p)).collect();
+        if let [p] = pixels[..] {
+            count(p);
+        }
+        // Sample each segment every few pixels so that long straight segments count.
+        for seg in pixels.windows(2) {
+            let (a, b) = (seg[0], seg[1]);
+            let len = f64::from((b.0 - a.0).abs().max((b.1 - a.1).abs()));
+            let steps = ((len / 4.0).ceil() as i32).clamp(1, 400);
+            for k in 0..steps {
+                let t = f64::from(k) / f64::from(steps);
+                count((
+                    a.0 + (f64::from(b.0 - a.0) * t).round() as i32,
+                    a.1 + (f64::from(b.1 - a.1) * t).round() as i32,
+                ));
+            }
+        }
+    }
+    let best = (0..candidates.len())
+        .min_by_key(|&k| (hits[k], k))
+        .unwrap_or(0);
+    Ok(candidates[best].0.clone())
+}

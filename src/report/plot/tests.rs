@@ -1,0 +1,621 @@
+//! Unit tests of the parent module.
+
+use super::*;
+
+const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
+
+/// A fresh folder under the system temp dir, removed when dropped.
+struct TestDir(PathBuf);
+
+impl std::ops::Deref for TestDir {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for TestDir {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for TestDir {
+    fn drop(&mut self) {
+        let _ = fs::remove_dir_all(&self.0);
+    }
+}
+
+fn test_dir(name: &str) -> TestDir {
+    let dir = std::env::temp_dir().join(format!("helper_plot_{}_{name}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    TestDir(dir)
+}
+
+/// Checks signature and IHDR size; returns the decoded RGB pixels.
+fn check_png(path: &Path) -> Vec<u8> {
+    let bytes = fs::read(path).unwrap();
+    assert!(bytes.len() > 33, "file too short");
+    assert_eq!(bytes[..8], PNG_SIGNATURE);
+    assert_eq!(&bytes[12..16], b"IHDR");
+    let w = u32::from_be_bytes(bytes[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(bytes[20..24].try_into().unwrap());
+    assert_eq!((w, h), (WIDTH, HEIGHT));
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    buf.truncate(info.buffer_size());
+    buf
+}
+
+fn pixel(rgb: &[u8], x: i32, y: i32) -> (u8, u8, u8) {
+    let k = (y as usize * WIDTH as usize + x as usize) * 3;
+    (rgb[k], rgb[k + 1], rgb[k + 2])
+}
+
+/// Pixel of a data point on a linear map chart.
+fn to_pixel(g: &Geometry, x: f64, y: f64) -> (i32, i32) {
+    let fx = (x - g.x.start) / (g.x.end - g.x.start);
+    let fy = (y - g.y.start) / (g.y.end - g.y.start);
+    let px = g.px_x.start as f64 + fx * (g.px_x.end - g.px_x.start) as f64;
+    let py = g.px_y.end as f64 - fy * (g.px_y.end - g.px_y.start) as f64;
+    (px.round() as i32, py.round() as i32)
+}
+
+fn colour_tuple(c: RGBColor) -> (u8, u8, u8) {
+    (c.0, c.1, c.2)
+}
+
+fn leftovers(dir: &Path) -> Vec<PathBuf> {
+    fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "tmp"))
+        .collect()
+}
+
+#[test]
+fn line_chart_writes_png() {
+    let dir = test_dir("line");
+    let x: Vec<f64> = (0..200).map(|k| k as f64 * 0.05).collect();
+    let y1: Vec<f64> = x.iter().map(|t| t.sin()).collect();
+    let y2: Vec<f64> = x.iter().map(|t| 0.5 * (2.0 * t).cos()).collect();
+    let path = dir.join("line.png");
+    line_chart(
+        &path,
+        "Midspan response",
+        "time t [s]",
+        "displacement w [mm]",
+        &[
+            Series {
+                label: "sin",
+                x: &x,
+                y: &y1,
+            },
+            Series {
+                label: "cos",
+                x: &x,
+                y: &y2,
+            },
+        ],
+        false,
+        false,
+    )
+    .unwrap();
+    let rgb = check_png(&path);
+    // First palette colour is present (the line was drawn).
+    let blue = colour_tuple(PALETTE[0]);
+    assert!(rgb.chunks(3).any(|p| (p[0], p[1], p[2]) == blue));
+    assert!(leftovers(&dir).is_empty());
+}
+
+#[test]
+fn line_chart_log_log() {
+    let dir = test_dir("loglog");
+    let f: Vec<f64> = (0..100).map(|k| 0.1 * 1.08f64.powi(k)).collect();
+    let psd: Vec<f64> = f.iter().map(|f| 1e-3 / (1.0 + f * f)).collect();
+    let path = dir.join("psd.png");
+    line_chart(
+        &path,
+        "PSD",
+        "f [Hz]",
+        "S [m²/Hz]",
+        &[Series {
+            label: "S",
+            x: &f,
+            y: &psd,
+        }],
+        true,
+        true,
+    )
+    .unwrap();
+    check_png(&path);
+}
+
+#[test]
+fn line_chart_edge_cases_do_not_panic() {
+    let dir = test_dir("line_edges");
+    let nan = f64::NAN;
+    let inf = f64::INFINITY;
+    let cases: Vec<(Vec<f64>, Vec<f64>)> = vec![
+        (vec![], vec![]),
+        (vec![1.0], vec![2.0]),
+        (vec![1.0, 2.0, 3.0], vec![5.0, 5.0, 5.0]),
+        (vec![nan, inf, -inf], vec![nan, 1.0, 2.0]),
+        (
+            vec![0.0, 1.0, 2.0, 3.0, 4.0],
+            vec![1.0, nan, 3.0, -inf, 0.0],
+        ),
+        (vec![-1.0, 0.0, 1.0, 10.0], vec![-5.0, 0.0, 2.0, 20.0]),
+        (vec![0.0, 0.0], vec![0.0, 0.0]),
+        (vec![1e-310, 1e300, 1e308], vec![1e-310, -1e300, f64::MAX]),
+        (vec![1.0, 1.0 + 1e-15], vec![3.0, 3.0 + 1e-15]),
+    ];
+    let mut k = 0;
+    for (x, y) in &cases {
+        for (log_x, log_y) in [(false, false), (true, false), (false, true), (true, true)] {
+            let path = dir.join(format!("edge{k}.png"));
+            k += 1;
+            line_chart(
+                &path,
+                "edge",
+                "x",
+                "y",
+                &[Series { label: "s", x, y }],
+                log_x,
+                log_y,
+            )
+            .unwrap();
+            check_png(&path);
+        }
+    }
+    // No series at all, and an unlabelled one, and an empty title.
+    line_chart(&dir.join("none.png"), "", "", "", &[], true, false).unwrap();
+    line_chart(
+        &dir.join("nolabel.png"),
+        "t",
+        "x",
+        "y",
+        &[Series {
+            label: "",
+            x: &[1.0, 2.0],
+            y: &[1.0, 2.0],
+        }],
+        false,
+        false,
+    )
+    .unwrap();
+    // Mismatched lengths: an error, no file.
+    let bad = dir.join("bad.png");
+    let err = line_chart(
+        &bad,
+        "t",
+        "x",
+        "y",
+        &[Series {
+            label: "s",
+            x: &[1.0],
+            y: &[],
+        }],
+        false,
+        false,
+    );
+    assert!(matches!(err, Err(PlotError::InvalidInput(_))));
+    assert!(!bad.exists());
+}
+
+#[test]
+fn binary_map_cells_have_expected_colours() {
+    let dir = test_dir("binary");
+    // Non-uniform x spacing; only cell (1, 1) is separated.
+    let xs = [10.0, 20.0, 40.0];
+    let ys = [0.1, 0.2, 0.3];
+    let mut state = vec![false; 9];
+    state[ys.len() + 1] = true;
+    let r = render_binary_map(
+        "map",
+        "v [m/s]",
+        "r [-]",
+        &xs,
+        &ys,
+        &state,
+        "separated",
+        "in contact",
+    )
+    .unwrap();
+    let g = &r.geometry;
+    // Cell (1, 1) spans x 15..30, y 0.15..0.25.
+    let (px, py) = to_pixel(g, 22.5, 0.2);
+    assert_eq!(pixel(&r.rgb, px, py), colour_tuple(TRUE_COLOUR));
+    // Cell (2, 2) spans x 30..50, y 0.25..0.35: white.
+    let (px, py) = to_pixel(g, 45.0, 0.32);
+    assert_eq!(pixel(&r.rgb, px, py), colour_tuple(FALSE_COLOUR));
+    // The edge between cells (0, 1) and (1, 1) is halfway (x = 15): just right of
+    // it is grey, just left of it is white.
+    let (px_edge, py) = to_pixel(g, 15.0, 0.2);
+    assert_eq!(pixel(&r.rgb, px_edge + 3, py), colour_tuple(TRUE_COLOUR));
+    assert_eq!(pixel(&r.rgb, px_edge - 3, py), colour_tuple(FALSE_COLOUR));
+
+    // The file version decodes to the same pixels.
+    let path = dir.join("binary.png");
+    binary_map(
+        &path,
+        "map",
+        "v [m/s]",
+        "r [-]",
+        &xs,
+        &ys,
+        &state,
+        "separated",
+        "in contact",
+    )
+    .unwrap();
+    let rgb = check_png(&path);
+    assert_eq!(rgb, r.rgb);
+}
+
+#[test]
+fn binary_map_edge_cases() {
+    let dir = test_dir("binary_edges");
+    // Single cell, separated: the whole plotting area is grey in its middle.
+    let r = render_binary_map("one", "x", "y", &[5.0], &[0.0], &[true], "sep", "").unwrap();
+    let g = &r.geometry;
+    let (px, py) = to_pixel(g, 5.0, 0.0);
+    assert_eq!(pixel(&r.rgb, px, py), colour_tuple(TRUE_COLOUR));
+    // Empty grid, decreasing axis, and errors.
+    binary_map(
+        &dir.join("empty.png"),
+        "e",
+        "x",
+        "y",
+        &[],
+        &[],
+        &[],
+        "a",
+        "b",
+    )
+    .unwrap();
+    binary_map(
+        &dir.join("dec.png"),
+        "d",
+        "x",
+        "y",
+        &[3.0, 2.0, 1.0],
+        &[1.0],
+        &[true, false, true],
+        "a",
+        "b",
+    )
+    .unwrap();
+    check_png(&dir.join("dec.png"));
+    let e = binary_map(
+        &dir.join("x.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, 2.0],
+        &[1.0],
+        &[true],
+        "a",
+        "b",
+    );
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+    let e = binary_map(
+        &dir.join("x.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, f64::NAN],
+        &[1.0],
+        &[true, true],
+        "a",
+        "b",
+    );
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+    let e = binary_map(
+        &dir.join("x.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, 3.0, 2.0],
+        &[1.0],
+        &[true; 3],
+        "a",
+        "b",
+    );
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+    let e = binary_map(
+        &dir.join("x.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, 1.0],
+        &[1.0],
+        &[true; 2],
+        "a",
+        "b",
+    );
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+    assert!(!dir.join("x.png").exists());
+}
+
+#[test]
+fn heat_map_writes_png_with_colours() {
+    let dir = test_dir("heat");
+    let xs: Vec<f64> = (0..8).map(|k| 10.0 + 5.0 * k as f64).collect();
+    let ys = [1.0, 2.0, 3.0, 4.0, 5.0];
+    let values: Vec<f64> = (0..xs.len() * ys.len())
+        .map(|k| 1.0 + 0.01 * k as f64)
+        .collect();
+    let path = dir.join("heat.png");
+    heat_map(
+        &path,
+        "DAF",
+        "speed [m/s]",
+        "roughness class",
+        &xs,
+        &ys,
+        &values,
+        "DAF [-]",
+    )
+    .unwrap();
+    let rgb = check_png(&path);
+    let r = render_heat_map(
+        "DAF",
+        "speed [m/s]",
+        "roughness class",
+        &xs,
+        &ys,
+        &values,
+        "DAF [-]",
+    )
+    .unwrap();
+    assert_eq!(rgb, r.rgb);
+    // Lowest value (cell (0, 0)) is the start of the colour map, highest the end.
+    let (px, py) = to_pixel(&r.geometry, xs[0], ys[0]);
+    assert_eq!(pixel(&rgb, px, py), (68, 1, 84));
+    let (px, py) = to_pixel(&r.geometry, xs[7], ys[4]);
+    assert_eq!(pixel(&rgb, px, py), (253, 231, 37));
+}
+
+#[test]
+fn heat_map_edge_cases() {
+    let dir = test_dir("heat_edges");
+    let nan = f64::NAN;
+    // All equal, all NaN, single cell, mixed non-finite, empty.
+    heat_map(
+        &dir.join("eq.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, 2.0],
+        &[1.0, 2.0],
+        &[3.0; 4],
+        "v",
+    )
+    .unwrap();
+    let r = render_heat_map("t", "x", "y", &[1.0, 2.0], &[1.0], &[nan, nan], "v").unwrap();
+    let (px, py) = to_pixel(&r.geometry, 1.0, 1.0);
+    assert_eq!(pixel(&r.rgb, px, py), (255, 255, 255));
+    heat_map(
+        &dir.join("one.png"),
+        "t",
+        "x",
+        "y",
+        &[7.0],
+        &[0.5],
+        &[1.2],
+        "v",
+    )
+    .unwrap();
+    heat_map(
+        &dir.join("mixed.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0, 2.0, 4.0],
+        &[1.0],
+        &[f64::INFINITY, 2.0, -f64::INFINITY],
+        "v",
+    )
+    .unwrap();
+    heat_map(&dir.join("empty.png"), "t", "x", "y", &[], &[1.0], &[], "v").unwrap();
+    for f in ["eq.png", "one.png", "mixed.png", "empty.png"] {
+        check_png(&dir.join(f));
+    }
+    let e = heat_map(
+        &dir.join("bad.png"),
+        "t",
+        "x",
+        "y",
+        &[1.0],
+        &[1.0],
+        &[1.0, 2.0],
+        "v",
+    );
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+}
+
+#[test]
+fn missing_folder_is_an_error_and_leaves_nothing() {
+    let dir = test_dir("missing");
+    let path = dir.join("no_such_folder").join("x.png");
+    let e = line_chart(&path, "t", "x", "y", &[], false, false);
+    assert!(matches!(e, Err(PlotError::Io { .. })), "{e:?}");
+    let e = binary_map(&path, "t", "x", "y", &[1.0], &[1.0], &[true], "a", "b");
+    assert!(matches!(e, Err(PlotError::Io { .. })));
+    let e = heat_map(&path, "t", "x", "y", &[1.0], &[1.0], &[1.0], "v");
+    assert!(matches!(e, Err(PlotError::Io { .. })));
+    assert!(!path.exists());
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 0);
+    // A path without a file name.
+    let e = line_chart(Path::new("/"), "t", "x", "y", &[], false, false);
+    assert!(matches!(e, Err(PlotError::InvalidInput(_))));
+}
+
+#[test]
+fn failed_rename_removes_the_temporary_file() {
+    let dir = test_dir("rename");
+    // The target is a non-empty folder: the temporary file is written, but the
+    // rename onto the folder fails.
+    let target = dir.join("taken.png");
+    fs::create_dir(&target).unwrap();
+    fs::write(target.join("keep"), b"x").unwrap();
+    let e = heat_map(&target, "t", "x", "y", &[1.0], &[1.0], &[1.0], "v");
+    assert!(matches!(e, Err(PlotError::Io { .. })), "{e:?}");
+    assert!(leftovers(&dir).is_empty());
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
+    assert!(target.join("keep").exists());
+}
+
+#[test]
+fn overwrites_existing_file_and_leaves_no_temporary() {
+    let dir = test_dir("overwrite");
+    let path = dir.join("a.png");
+    fs::write(&path, b"old").unwrap();
+    line_chart(&path, "t", "x", "y", &[], false, false).unwrap();
+    check_png(&path);
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
+}
+
+#[test]
+fn tick_labels_read_well() {
+    let f = tick_formatter(&(0.0..1.0), false);
+    assert_eq!(f(&0.2), "0.2");
+    assert_eq!(f(&0.30000000000000004), "0.3");
+    assert_eq!(f(&-1e-17), "0");
+    let f = tick_formatter(&(0.0..200.0), false);
+    assert_eq!(f(&150.0), "150");
+    let f = tick_formatter(&(1e-4..5e-4), false);
+    assert_eq!(f(&2e-4), "2e-4");
+    let f = tick_formatter(&(1e-6..1e2), true);
+    assert_eq!(f(&1e-6), "10⁻⁶");
+    assert_eq!(f(&10.0), "10¹");
+    assert_eq!(f(&1.0), "10⁰");
+    assert_eq!(f(&2e-5), "2×10⁻⁵");
+    let f = tick_formatter(&(0.01..1e3), true);
+    assert_eq!(f(&0.01), "0.01");
+    assert_eq!(f(&1000.0), "1000");
+}
+
+#[test]
+fn ranges_are_sane() {
+    assert_eq!(log_range(2.0, 5.0), 1.0..10.0);
+    assert_eq!(log_range(10.0, 10.0), 1.0..100.0);
+    assert_eq!(log_range(0.02, 300.0), 0.01..1000.0);
+    assert_eq!(linear_range(f64::NAN, f64::NAN, 0.05), 0.0..1.0);
+    let r = linear_range(5.0, 5.0, 0.05);
+    assert!(r.start < 5.0 && r.end > 5.0);
+    assert_eq!(viridis(0.0), RGBColor(68, 1, 84));
+    assert_eq!(viridis(1.0), RGBColor(253, 231, 37));
+    assert_eq!(viridis(f64::NAN), RGBColor(68, 1, 84));
+}
+
+/// Renders one sample of each chart to /tmp/plot_samples for a visual check.
+#[test]
+#[ignore = "writes sample images to /tmp/plot_samples"]
+fn render_samples() {
+    let dir = Path::new("/tmp/plot_samples");
+    fs::create_dir_all(dir).unwrap();
+    let t: Vec<f64> = (0..=500).map(|k| k as f64 * 0.004).collect();
+    let w1: Vec<f64> = t
+        .iter()
+        .map(|t| -2.1 * (std::f64::consts::PI * t / 2.0).sin() * (1.0 + 0.1 * (40.0 * t).sin()))
+        .collect();
+    let w2: Vec<f64> = t
+        .iter()
+        .map(|t| -1.8 * (std::f64::consts::PI * t / 2.0).sin())
+        .collect();
+    line_chart(
+        &dir.join("line.png"),
+        "Midspan displacement, v = 25 m/s",
+        "time t [s]",
+        "displacement w [mm]",
+        &[
+            Series {
+                label: "VBI (coupled)",
+                x: &t,
+                y: &w1,
+            },
+            Series {
+                label: "moving force",
+                x: &t,
+                y: &w2,
+            },
+        ],
+        false,
+        false,
+    )
+    .unwrap();
+    let f: Vec<f64> = (0..200).map(|k| 0.01 * 1.05f64.powi(k)).collect();
+    let psd_a: Vec<f64> = f
+        .iter()
+        .map(|f| 1e-4 * (0.1f64 / f.max(1e-9)).powi(2))
+        .collect();
+    let psd_c: Vec<f64> = f
+        .iter()
+        .map(|f| 1.6e-5 * (0.1f64 / f.max(1e-9)).powi(2))
+        .collect();
+    line_chart(
+        &dir.join("loglog.png"),
+        "Road roughness PSD (ISO 8608)",
+        "spatial frequency n [cycles/m]",
+        "G_d(n) [m³]",
+        &[
+            Series {
+                label: "class A",
+                x: &f,
+                y: &psd_c,
+            },
+            Series {
+                label: "class C",
+                x: &f,
+                y: &psd_a,
+            },
+        ],
+        true,
+        true,
+    )
+    .unwrap();
+    let speeds: Vec<f64> = (0..30).map(|k| 5.0 + 2.5 * k as f64).collect();
+    let damping = [0.0, 0.01, 0.02, 0.03, 0.05, 0.075, 0.1];
+    let mut state = Vec::new();
+    for &v in &speeds {
+        for &z in &damping {
+            state.push(v > 30.0 + 400.0 * z + 0.002 * (v - 40.0).powi(2));
+        }
+    }
+    binary_map(
+        &dir.join("binary.png"),
+        "Wheel–bridge separation",
+        "vehicle speed v [m/s]",
+        "damping ratio ζ [-]",
+        &speeds,
+        &damping,
+        &state,
+        "separated",
+        "in contact",
+    )
+    .unwrap();
+    let classes = [1.0, 2.0, 3.0, 4.0, 5.0];
+    let mut daf = Vec::new();
+    for &v in &speeds {
+        for &c in &classes {
+            daf.push(1.0 + 0.004 * v + 0.05 * c * c * (v / 80.0));
+        }
+    }
+    heat_map(
+        &dir.join("heat.png"),
+        "Dynamic amplification factor",
+        "vehicle speed v [m/s]",
+        "roughness class (1 = A … 5 = E)",
+        &speeds,
+        &classes,
+        &daf,
+        "DAF [-]",
+    )
+    .unwrap();
+}

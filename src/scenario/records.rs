@@ -1,0 +1,209 @@
+//! Resolving `record`: each recorded quantity checked against the bridge and
+//! the vehicles, and the default set when the scene gives none.
+
+use super::raw;
+use super::resolve::Checker;
+use super::resolved::*;
+
+/// DOF names of a resolved vehicle, as the vehicle module defines them.
+fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
+    match vehicle {
+        Vehicle::MovingForce(_) => &[],
+        Vehicle::Oscillator(_) => &["sprung", "wheel"],
+    }
+}
+
+fn wheel_count(vehicle: &Vehicle) -> usize {
+    match vehicle {
+        Vehicle::MovingForce(v) => v.loads.len(),
+        Vehicle::Oscillator(_) => 1,
+    }
+}
+
+pub(super) fn resolve_records(
+    raws: Option<&[raw::RecordRaw]>,
+    bridge: &Bridge,
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    ck: &mut Checker<'_>,
+) -> Vec<Record> {
+    let Some(raws) = raws else {
+        return default_records(bridge, vehicles, contact);
+    };
+    let length = bridge.length();
+    let mut out = Vec::with_capacity(raws.len());
+    for (i, r) in raws.iter().enumerate() {
+        let at = format!("record[{i}]");
+        if r.name.trim().is_empty() || r.name == "time" || r.name.ends_with("_static") {
+            ck.error(
+                &format!("{at}.name"),
+                format!(
+                    "`{}` cannot be a column name (empty, `time`, or ending in `_static`)",
+                    r.name
+                ),
+            );
+        }
+        if raws[..i].iter().any(|o| o.name == r.name) {
+            ck.error(
+                &format!("{at}.name"),
+                format!("duplicate record name `{}`", r.name),
+            );
+        }
+        let q = r.quantity;
+        let is_bridge = matches!(
+            q,
+            Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+        );
+        let is_vehicle_dof = matches!(
+            q,
+            Quantity::VehicleDisplacement | Quantity::VehicleAcceleration
+        );
+        let quantity_name = serde_json::to_value(q)
+            .ok()
+            .and_then(|v| v.as_str().map(String::from))
+            .unwrap_or_default();
+        let unused = |field: &str| format!("`{field}` is not used by `{quantity_name}`");
+        if is_bridge {
+            match r.x {
+                None => ck.error(
+                    &at,
+                    format!("`{quantity_name}` needs `x`, the position along the bridge in m"),
+                ),
+                Some(x) if !(0.0..=length).contains(&x) => ck.error(
+                    &format!("{at}.x"),
+                    format!("x = {x} m is off the bridge, which runs from 0 to {length} m"),
+                ),
+                _ => {}
+            }
+            if r.vehicle.is_some() {
+                ck.error(&format!("{at}.vehicle"), unused("vehicle"));
+            }
+        } else if r.x.is_some() {
+            ck.error(&format!("{at}.x"), unused("x"));
+        }
+        let is_wheel = matches!(q, Quantity::ContactForce | Quantity::ContactGap);
+        if !is_wheel && r.wheel.is_some() {
+            ck.error(&format!("{at}.wheel"), unused("wheel"));
+        }
+        if !is_vehicle_dof && r.dof.is_some() {
+            ck.error(&format!("{at}.dof"), unused("dof"));
+        }
+        let mut vehicle = None;
+        if !is_bridge {
+            let v = r.vehicle.unwrap_or(1);
+            if v == 0 || v > vehicles.len() {
+                let numbered = match vehicles.len() {
+                    1 => "the scene has only vehicle 1".to_owned(),
+                    n => format!("vehicles are numbered 1 to {n}"),
+                };
+                ck.error(
+                    &format!("{at}.vehicle"),
+                    format!("vehicle {v} does not exist; {numbered}"),
+                );
+            } else {
+                vehicle = Some(v);
+            }
+        }
+        let mut wheel = None;
+        if is_wheel {
+            let w = r.wheel.unwrap_or(1);
+            if let Some(v) = vehicle {
+                let n = wheel_count(&vehicles[v - 1]);
+                if w == 0 || w > n {
+                    let kind = vehicles[v - 1].type_name();
+                    let wheels = match n {
+                        1 => "only wheel 1".to_owned(),
+                        n => format!("wheels 1 to {n}"),
+                    };
+                    ck.error(
+                        &format!("{at}.wheel"),
+                        format!("wheel {w} does not exist; vehicle {v} ({kind}) has {wheels}"),
+                    );
+                }
+            }
+            wheel = Some(w);
+        }
+        if let (true, Some(v)) = (is_vehicle_dof, vehicle) {
+            let names = dof_names(&vehicles[v - 1]);
+            match &r.dof {
+                None if names.is_empty() => ck.error(
+                    &at,
+                    format!(
+                        "vehicle {v} ({}) has no degrees of freedom",
+                        vehicles[v - 1].type_name()
+                    ),
+                ),
+                None => ck.error(
+                    &at,
+                    format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
+                ),
+                Some(d) if !names.contains(&d.as_str()) => ck.error(
+                    &format!("{at}.dof"),
+                    if names.is_empty() {
+                        format!(
+                            "vehicle {v} ({}) has no degrees of freedom",
+                            vehicles[v - 1].type_name()
+                        )
+                    } else {
+                        format!(
+                            "unknown DOF `{d}` of vehicle {v}; expected one of {}",
+                            names.join(", ")
+                        )
+                    },
+                ),
+                _ => {}
+            }
+        }
+        out.push(Record {
+            name: r.name.clone(),
+            quantity: q,
+            x: r.x,
+            vehicle,
+            wheel,
+            dof: r.dof.clone(),
+        });
+    }
+    out
+}
+
+/// Displacement at the middle of every span and every wheel's contact force
+/// (and, with unilateral contact, every contact wheel's gap).
+fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> Vec<Record> {
+    let mut out = Vec::new();
+    let Bridge::Beam(beam) = bridge;
+    let mut start = 0.0;
+    for (i, span) in beam.spans.iter().enumerate() {
+        out.push(Record {
+            name: format!("span{}_midspan", i + 1),
+            quantity: Quantity::BridgeDisplacement,
+            x: Some(start + span / 2.0),
+            vehicle: None,
+            wheel: None,
+            dof: None,
+        });
+        start += span;
+    }
+    for (v, vehicle) in vehicles.iter().enumerate() {
+        for w in 0..wheel_count(vehicle) {
+            out.push(Record {
+                name: format!("vehicle{}_wheel{}_force", v + 1, w + 1),
+                quantity: Quantity::ContactForce,
+                x: None,
+                vehicle: Some(v + 1),
+                wheel: Some(w + 1),
+                dof: None,
+            });
+            if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
+                out.push(Record {
+                    name: format!("vehicle{}_wheel{}_gap", v + 1, w + 1),
+                    quantity: Quantity::ContactGap,
+                    x: None,
+                    vehicle: Some(v + 1),
+                    wheel: Some(w + 1),
+                    dof: None,
+                });
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,622 @@
+//! Convergence study: speed against error (`vbi converge`).
+//!
+//! One scene is run at a fine REFERENCE resolution and along two LADDERS of
+//! cheaper resolutions, and every recorded quantity of every run is compared
+//! with the reference:
+//!
+//! - reference: time step h_ref = Δt / 4 (Δt the scenario's step) and
+//!   N_ref = min(2 N, N_avail) modes (N the scenario's modes, N_avail all the
+//!   mesh offers);
+//! - time-step ladder: steps Δt, 2Δt, 4Δt, … (`levels` runs) at N_ref modes,
+//!   so its errors are those of the time integration alone;
+//! - mode ladder: N, N/2, N/4 modes (at least 1, duplicates and N_ref
+//!   dropped) at Δt, so its errors add modal truncation.
+//!
+//! Every ladder step is an integer multiple k of h_ref (powers of two, exact
+//! in floating point), so sample i of a run lies at the reference's sample
+//! i·k. Over the common samples S (the shorter run's duration), with e = u − u_ref,
+//!
+//! - max-abs error = max_S |e| / max_S |u_ref|,
+//! - RMS error = √(Σ_S e²) / √(Σ_S u_ref²),
+//!
+//! both dimensionless (a reference identically zero gives 0 for a zero error
+//! and +∞ otherwise). The observed order of accuracy of a time-step halving
+//! h → 2h is p = log₂(e(2h) / e(h)) with e the max-abs error; Newmark's
+//! average acceleration gives p → 2 in the asymptotic range. The reference's
+//! own error biases p slightly upward (for e ∝ h², by the factor
+//! (4h² − h_ref²)/(h² − h_ref²) inside the logarithm; p ≈ 2.07 at h = 4 h_ref).
+//!
+//! Runs go one after another (not in parallel) so their wall times do not
+//! compete; a run shorter than [`MIN_TIMING`] is repeated (at most
+//! [`MAX_REPEATS`] times) and the fastest time kept, which keeps the
+//! "cheapest" choice stable for runs of a few milliseconds. Everything but
+//! the wall times is deterministic.
+
+use std::path::Path;
+use std::time::Instant;
+
+use thiserror::Error;
+
+use crate::bridge::{BridgeError, ModalBridge};
+use crate::record::History;
+use crate::report::plot::{self, PlotError, Series};
+use crate::run::{self, Outcome, RunError};
+use crate::scenario::Loaded;
+use crate::scenario::resolved::{Bridge, Modes};
+
+/// The reference's time step is the scenario's divided by this.
+pub const REFERENCE_REFINEMENT: usize = 4;
+/// Default number of time-step ladder runs.
+pub const DEFAULT_LEVELS: usize = 5;
+/// Runs shorter than this (s) are repeated to time them.
+pub const MIN_TIMING: f64 = 0.05;
+/// Most timings of one run.
+pub const MAX_REPEATS: usize = 5;
+
+/// Settings of a convergence study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Runs on the time-step ladder: Δt·2⁰ … Δt·2^(levels−1); at least 1.
+    pub levels: usize,
+    /// Largest acceptable worst max-abs relative error (0.01 = 1 %).
+    pub tolerance: f64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            levels: DEFAULT_LEVELS,
+            tolerance: 0.01,
+        }
+    }
+}
+
+/// Why a study could not be carried out.
+#[derive(Debug, Error)]
+pub enum ConvergeError {
+    /// The options are out of range.
+    #[error("{0}")]
+    Options(String),
+    /// The reference bridge could not be built.
+    #[error("the reference bridge: {0}")]
+    Bridge(#[from] BridgeError),
+    /// The reference run failed, so nothing can be compared.
+    #[error("the reference run ({label}) failed: {source}")]
+    Reference {
+        /// Label of the reference run.
+        label: String,
+        /// The cause.
+        source: RunError,
+    },
+}
+
+/// Which set of runs a run belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ladder {
+    /// The finest run everything is compared with.
+    Reference,
+    /// Coarser time steps at the reference's mode count.
+    TimeStep,
+    /// Fewer modes at the scenario's time step.
+    Modes,
+}
+
+/// A time step (s) and a mode count.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Resolution {
+    /// Time step, s.
+    pub time_step: f64,
+    /// Bridge modes kept.
+    pub modes: usize,
+}
+
+impl Resolution {
+    /// E.g. `dt=1e-4 s, 10 modes`.
+    pub fn label(&self) -> String {
+        let plural = if self.modes == 1 { "" } else { "s" };
+        format!(
+            "dt={} s, {} mode{plural}",
+            short(self.time_step),
+            self.modes
+        )
+    }
+}
+
+/// `x` in exponent notation with at most 4 significant digits and no
+/// trailing zeros: 1e-4, 2.5e-5, 1.6e-3.
+pub fn short(x: f64) -> String {
+    let text = format!("{x:.3e}");
+    match text.split_once('e') {
+        Some((mantissa, exponent)) if mantissa.contains('.') => {
+            let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+            format!("{mantissa}e{exponent}")
+        }
+        _ => text,
+    }
+}
+
+/// A fraction as a percentage without trailing zeros: 0.01 → `1`,
+/// 0.005 → `0.5`, 0.07 → `7` (at most 6 decimals).
+pub fn percent(fraction: f64) -> String {
+    let text = format!("{:.6}", 100.0 * fraction);
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// Relative errors of one recorded quantity against the reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QuantityError {
+    /// Column name from the scenario.
+    pub name: String,
+    /// Unit of the quantity.
+    pub unit: &'static str,
+    /// max|e| / max|u_ref| over the common samples, dimensionless.
+    pub max_abs: f64,
+    /// √Σe² / √Σu_ref² over the common samples, dimensionless.
+    pub rms: f64,
+}
+
+/// One run of a study.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunReport {
+    /// E.g. `dt=2e-4 s, 20 modes`.
+    pub label: String,
+    /// Which ladder.
+    pub ladder: Ladder,
+    /// Time step, s.
+    pub time_step: f64,
+    /// Bridge modes kept.
+    pub modes: usize,
+    /// Steps integrated (None if the run failed).
+    pub steps: Option<usize>,
+    /// Fastest wall time of `run::simulate`, s (None if the run failed).
+    pub wall_time: Option<f64>,
+    /// Errors per recorded quantity in scenario order, or why the run failed.
+    pub errors: Result<Vec<QuantityError>, String>,
+}
+
+impl RunReport {
+    /// Largest max-abs relative error over the quantities (None if failed).
+    /// NaN compares as +∞, so a non-finite error never passes a tolerance.
+    pub fn worst_max_abs(&self) -> Option<f64> {
+        self.worst(|q| q.max_abs)
+    }
+
+    /// Largest RMS relative error over the quantities (None if failed).
+    pub fn worst_rms(&self) -> Option<f64> {
+        self.worst(|q| q.rms)
+    }
+
+    fn worst(&self, f: impl Fn(&QuantityError) -> f64) -> Option<f64> {
+        let errors = self.errors.as_ref().ok()?;
+        Some(errors.iter().map(f).fold(0.0, |worst, e| {
+            if e.is_nan() {
+                f64::INFINITY
+            } else {
+                worst.max(e)
+            }
+        }))
+    }
+}
+
+/// Observed order of one time-step halving for one quantity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Order {
+    /// Quantity name.
+    pub quantity: String,
+    /// The coarser step 2h, s.
+    pub coarse_step: f64,
+    /// The finer step h, s.
+    pub fine_step: f64,
+    /// p = log₂(e(2h) / e(h)) from the max-abs errors.
+    pub order: f64,
+}
+
+/// Result of a convergence study.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Convergence {
+    /// Scenario name.
+    pub scenario: String,
+    /// The reference run (its errors are zero by definition).
+    pub reference: RunReport,
+    /// The ladder runs: time-step ladder (finest first), then mode ladder
+    /// (most modes first).
+    pub runs: Vec<RunReport>,
+    /// Observed orders of every successive halving on the time-step ladder
+    /// with both errors finite and positive: halvings finest first, quantities
+    /// in scenario order.
+    pub orders: Vec<Order>,
+    /// Median of `orders` (None if there are none).
+    pub median_order: Option<f64>,
+    /// The tolerance used, dimensionless.
+    pub tolerance: f64,
+    /// Index into `runs` of the cheapest run within tolerance.
+    pub cheapest: Option<usize>,
+}
+
+/// The reference resolution and the ladder runs for a scene with time step
+/// `time_step` (s), `modes` modes kept and `available` modes offered.
+pub fn plan(
+    time_step: f64,
+    modes: usize,
+    available: usize,
+    levels: usize,
+) -> (Resolution, Vec<(Ladder, Resolution)>) {
+    let reference_modes = (2 * modes).min(available).max(modes);
+    let reference = Resolution {
+        time_step: time_step / REFERENCE_REFINEMENT as f64,
+        modes: reference_modes,
+    };
+    let mut ladder: Vec<(Ladder, Resolution)> = (0..levels)
+        .map(|level| {
+            let resolution = Resolution {
+                time_step: time_step * (1u64 << level) as f64,
+                modes: reference_modes,
+            };
+            (Ladder::TimeStep, resolution)
+        })
+        .collect();
+    let mut counts: Vec<usize> = vec![modes, (modes / 2).max(1), (modes / 4).max(1)];
+    counts.dedup();
+    for count in counts.into_iter().filter(|&c| c != reference_modes) {
+        let resolution = Resolution {
+            time_step,
+            modes: count,
+        };
+        ladder.push((Ladder::Modes, resolution));
+    }
+    (reference, ladder)
+}
+
+/// Runs the study. `progress` gets (run index from 0, number of runs, label)
+/// before each run, the reference first.
+pub fn converge(
+    loaded: &Loaded,
+    options: &Options,
+    progress: &mut dyn FnMut(usize, usize, &str),
+) -> Result<Convergence, ConvergeError> {
+    if options.levels == 0 {
+        return Err(ConvergeError::Options(
+            "levels must be at least 1".to_string(),
+        ));
+    }
+    if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+        return Err(ConvergeError::Options(format!(
+            "the tolerance must be a positive number, not {}",
+            options.tolerance
+        )));
+    }
+    let (reference_resolution, ladder) = plan(
+        loaded.scenario.solver.time_step,
+        loaded.bridge.mode_count(),
+        loaded.bridge.available_modes,
+        options.levels,
+    );
+    let total = 1 + ladder.len();
+    let label = reference_resolution.label();
+    progress(0, total, &label);
+    let reference_loaded = variant(loaded, reference_resolution)?;
+    let (outcome, wall_time) =
+        timed(&reference_loaded).map_err(|source| ConvergeError::Reference { label, source })?;
+    let reference_history = outcome.history;
+    let reference = report(
+        Ladder::Reference,
+        reference_resolution,
+        Some((outcome.model.steps, wall_time)),
+        Ok(relative_errors(&reference_history, &reference_history, 1)),
+    );
+
+    let mut runs = Vec::with_capacity(ladder.len());
+    for (index, &(kind, resolution)) in ladder.iter().enumerate() {
+        progress(index + 1, total, &resolution.label());
+        let stride = (resolution.time_step / reference_resolution.time_step).round() as usize;
+        let result = variant(loaded, resolution)
+            .map_err(|e| e.to_string())
+            .and_then(|l| timed(&l).map_err(|e| e.to_string()));
+        let run = match result {
+            Ok((outcome, wall_time)) => report(
+                kind,
+                resolution,
+                Some((outcome.model.steps, wall_time)),
+                Ok(relative_errors(
+                    &reference_history,
+                    &outcome.history,
+                    stride,
+                )),
+            ),
+            Err(message) => report(kind, resolution, None, Err(message)),
+        };
+        runs.push(run);
+    }
+    let orders = observed_orders(&runs);
+    let median_order = median(orders.iter().map(|o| o.order).collect());
+    let cheapest = cheapest_within(&runs, options.tolerance);
+    Ok(Convergence {
+        scenario: loaded.scenario.name.clone(),
+        reference,
+        runs,
+        orders,
+        median_order,
+        tolerance: options.tolerance,
+        cheapest,
+    })
+}
+
+/// A run's report; `cost` is (steps, wall time in s) of a successful run.
+fn report(
+    ladder: Ladder,
+    resolution: Resolution,
+    cost: Option<(usize, f64)>,
+    errors: Result<Vec<QuantityError>, String>,
+) -> RunReport {
+    RunReport {
+        label: resolution.label(),
+        ladder,
+        time_step: resolution.time_step,
+        modes: resolution.modes,
+        steps: cost.map(|c| c.0),
+        wall_time: cost.map(|c| c.1),
+        errors,
+    }
+}
+
+/// The scene at another resolution: the time step replaced, the lowest
+/// `modes` modes kept (any frequency cut-off dropped), the bridge rebuilt;
+/// a study section is dropped (the base scene is converged).
+fn variant(loaded: &Loaded, resolution: Resolution) -> Result<Loaded, BridgeError> {
+    let mut scenario = loaded.scenario.clone();
+    scenario.study = None;
+    scenario.solver.time_step = resolution.time_step;
+    let Bridge::Beam(beam) = &mut scenario.bridge;
+    beam.modes = Modes {
+        count: Some(resolution.modes),
+        max_frequency: None,
+    };
+    let bridge = ModalBridge::build(&scenario.bridge)?;
+    Ok(Loaded { scenario, bridge })
+}
+
+/// Runs `loaded`, repeating while the total stays under [`MIN_TIMING`] (at
+/// most [`MAX_REPEATS`] runs); returns the first outcome and the fastest
+/// wall time, s.
+fn timed(loaded: &Loaded) -> Result<(Outcome, f64), RunError> {
+    let mut first = None;
+    let mut fastest = f64::INFINITY;
+    let mut spent = 0.0;
+    for _ in 0..MAX_REPEATS {
+        let copy = loaded.clone();
+        let start = Instant::now();
+        let outcome = run::simulate(copy, &mut |_, _| {})?;
+        let elapsed = start.elapsed().as_secs_f64();
+        fastest = fastest.min(elapsed);
+        spent += elapsed;
+        first.get_or_insert(outcome);
+        if spent >= MIN_TIMING {
+            break;
+        }
+    }
+    Ok((first.expect("at least one run"), fastest))
+}
+
+/// Relative errors of every column of `run` against the same column of
+/// `reference`, comparing run sample i with reference sample i·`stride`
+/// over the samples both have (see the module documentation for the norms).
+/// Both histories must record the same quantities in the same order.
+pub fn relative_errors(reference: &History, run: &History, stride: usize) -> Vec<QuantityError> {
+    assert!(stride >= 1, "the stride is at least 1");
+    let common = run
+        .time
+        .len()
+        .min(reference.time.len().saturating_sub(1) / stride + 1);
+    debug_assert!((0..common).all(|i| {
+        let (t, t_ref) = (run.time[i], reference.time[i * stride]);
+        (t - t_ref).abs() <= 1e-9 * t_ref.abs().max(1.0)
+    }));
+    reference
+        .columns
+        .iter()
+        .zip(&run.columns)
+        .map(|(r, c)| {
+            debug_assert_eq!(r.name, c.name);
+            let (mut e_max, mut r_max, mut e_sq, mut r_sq) = (0.0f64, 0.0f64, 0.0, 0.0);
+            for i in 0..common {
+                let u_ref = r.values[i * stride];
+                let e = c.values[i] - u_ref;
+                // NaN-propagating maximum: a non-finite run never looks accurate.
+                if e.abs() > e_max || e.is_nan() {
+                    e_max = e.abs();
+                }
+                r_max = r_max.max(u_ref.abs());
+                e_sq += e * e;
+                r_sq += u_ref * u_ref;
+            }
+            QuantityError {
+                name: r.name.clone(),
+                unit: r.unit,
+                max_abs: ratio(e_max, r_max),
+                rms: ratio(e_sq.sqrt(), r_sq.sqrt()),
+            }
+        })
+        .collect()
+}
+
+/// a / b, with 0/0 = 0 and a/0 = +∞ for a > 0 (NaN stays NaN).
+fn ratio(a: f64, b: f64) -> f64 {
+    if b > 0.0 {
+        a / b
+    } else if a == 0.0 {
+        0.0
+    } else {
+        a / b.abs()
+    }
+}
+
+/// Observed orders p = log₂(e(2h)/e(h)) for every pair of successful
+/// time-step-ladder runs whose steps differ by a factor 2, per quantity,
+/// skipping pairs where either max-abs error is zero or not finite.
+pub fn observed_orders(runs: &[RunReport]) -> Vec<Order> {
+    let ladder: Vec<&RunReport> = runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::TimeStep)
+        .collect();
+    let mut orders = Vec::new();
+    for fine in &ladder {
+        let Some(coarse) = ladder
+            .iter()
+            .find(|c| (c.time_step / fine.time_step - 2.0).abs() < 1e-9)
+        else {
+            continue;
+        };
+        let (Ok(fine_errors), Ok(coarse_errors)) = (&fine.errors, &coarse.errors) else {
+            continue;
+        };
+        for (f, c) in fine_errors.iter().zip(coarse_errors) {
+            let usable = |e: f64| e.is_finite() && e > 0.0;
+            if usable(f.max_abs) && usable(c.max_abs) {
+                orders.push(Order {
+                    quantity: f.name.clone(),
+                    coarse_step: coarse.time_step,
+                    fine_step: fine.time_step,
+                    order: (c.max_abs / f.max_abs).log2(),
+                });
+            }
+        }
+    }
+    orders
+}
+
+/// Median of finite values (mean of the middle two for an even count).
+pub fn median(mut values: Vec<f64>) -> Option<f64> {
+    values.retain(|v| v.is_finite());
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(values[n / 2]),
+        _ => Some(0.5 * (values[n / 2 - 1] + values[n / 2])),
+    }
+}
+
+/// Index of the successful run with the smallest wall time among those whose
+/// worst max-abs relative error is at most `tolerance` (first on ties); None
+/// if no run qualifies.
+pub fn cheapest_within(runs: &[RunReport], tolerance: f64) -> Option<usize> {
+    runs.iter()
+        .enumerate()
+        .filter_map(|(i, r)| {
+            let worst = r.worst_max_abs()?;
+            (worst <= tolerance).then_some((i, r.wall_time?))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}
+
+/// Parses a tolerance: `1%` (percent) or `0.01` (a fraction); it must be
+/// positive and finite.
+pub fn parse_tolerance(text: &str) -> Result<f64, String> {
+    let trimmed = text.trim();
+    let (number, scale) = match trimmed.strip_suffix('%') {
+        Some(n) => (n.trim(), 0.01),
+        None => (trimmed, 1.0),
+    };
+    let bad = || {
+        format!("`{text}` is not a tolerance; give a percentage like 1% or a fraction like 0.01")
+    };
+    let value = number.parse::<f64>().map_err(|_| bad())? * scale;
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(format!("the tolerance must be positive, not `{text}`"))
+    }
+}
+
+impl Convergence {
+    /// The cheapest run within tolerance.
+    pub fn cheapest_run(&self) -> Option<&RunReport> {
+        self.cheapest.map(|i| &self.runs[i])
+    }
+
+    /// Names of the recorded quantities, in scenario order.
+    pub fn quantities(&self) -> Vec<&str> {
+        match &self.reference.errors {
+            Ok(errors) => errors.iter().map(|q| q.name.as_str()).collect(),
+            Err(_) => Vec::new(),
+        }
+    }
+
+    /// CSV, one row per ladder run × quantity: `label, time_step` (s),
+    /// `modes, steps, wall_time` (s), `quantity, max_abs_error, rms_error`
+    /// (dimensionless fractions), `failure` (the message of a failed run,
+    /// whose other measured fields are empty).
+    pub fn to_csv(&self) -> Vec<u8> {
+        let mut out = csv::Writer::from_writer(Vec::new());
+        let header =
+            "label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure";
+        out.write_record(header.split(','))
+            .expect("writing to memory");
+        let number = crate::report::number;
+        for run in &self.runs {
+            let head = [
+                run.label.clone(),
+                number(run.time_step),
+                run.modes.to_string(),
+                run.steps.map(|s| s.to_string()).unwrap_or_default(),
+                run.wall_time.map(number).unwrap_or_default(),
+            ];
+            for (q, name) in self.quantities().into_iter().enumerate() {
+                let (max_abs, rms, failure) = match &run.errors {
+                    Ok(errors) => (number(errors[q].max_abs), number(errors[q].rms), ""),
+                    Err(message) => (String::new(), String::new(), message.as_str()),
+                };
+                let tail = [name, &max_abs, &rms, failure];
+                out.write_record(head.iter().map(String::as_str).chain(tail))
+                    .expect("writing to memory");
+            }
+        }
+        out.into_inner().expect("writing to memory")
+    }
+
+    /// Log–log chart of max-abs relative error against wall time (s), one
+    /// series per quantity (the time-step ladder, a break, then the mode
+    /// ladder), and the tolerance as a horizontal line.
+    pub fn plot(&self, path: &Path) -> Result<(), PlotError> {
+        let names = self.quantities();
+        let mut data: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
+        for (q, name) in names.iter().enumerate() {
+            let (mut x, mut y) = (Vec::new(), Vec::new());
+            for ladder in [Ladder::TimeStep, Ladder::Modes] {
+                if !x.is_empty() {
+                    x.push(f64::NAN);
+                    y.push(f64::NAN);
+                }
+                for run in self.runs.iter().filter(|r| r.ladder == ladder) {
+                    if let (Some(t), Ok(errors)) = (run.wall_time, &run.errors) {
+                        x.push(t);
+                        y.push(errors[q].max_abs);
+                    }
+                }
+            }
+            data.push((name.to_string(), x, y));
+        }
+        let times: Vec<f64> = self.runs.iter().filter_map(|r| r.wall_time).collect();
+        if let (Some(lo), Some(hi)) = (
+            times.iter().copied().reduce(f64::min),
+            times.iter().copied().reduce(f64::max),
+        ) {
+            let label = format!("tolerance {} %", percent(self.tolerance));
+            data.push((label, vec![lo, hi], vec![self.tolerance; 2]));
+        }
+        let series: Vec<Series> = data
+            .iter()
+            .map(|(label, x, y)| Series { label, x, y })
+            .collect();
+        plot::line_chart(
+            path,
+            &format!("{}: error against wall time", self.scenario),
+            "wall time (s)",
+            "max-abs error / max |reference|",
+            &series,
+            true,
+            true,
+        )
+    }
+}

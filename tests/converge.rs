@@ -1,0 +1,341 @@
+//! `vbi converge`: observed order of the time-step ladder, monotone errors,
+//! the cheapest run within tolerance, failed runs, determinism, and the
+//! command line (files written, bad tolerance).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use vbi::scenario::{self, Loaded};
+use vbi::study::converge::{
+    self, Convergence, Ladder, Options, QuantityError, RunReport, cheapest_within, parse_tolerance,
+    plan,
+};
+
+/// The LCP paper's oscillator (with an unsprung mass) on a smooth, modally
+/// damped beam, 2 modes (so the reference keeps 4, up to 80 Hz) and a
+/// 0.25 ms step: the reference's highest mode has ωΔt = 0.03 and the ladder's
+/// coarsest (1 ms) 0.5, inside Newmark's asymptotic range.
+fn smooth_scene(time_step: f64, newmark: &str) -> String {
+    format!(
+        "name: smooth-two-modes
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 3.2423e9
+  mass_per_length: 2000.0
+  modes: {{count: 2}}
+  damping: {{type: modal, ratio: 0.02}}
+vehicles:
+  - type: oscillator
+    sprung_mass: 4000.0
+    unsprung_mass: 1000.0
+    stiffness: 4.0e6
+    damping: 2.53e4
+    speed: 25.0
+solver: {{method: coupled, time_step: {time_step}, free_vibration: 0.2{newmark}}}
+record:
+  - {{name: midspan, quantity: bridge_displacement, x: 10.0}}
+  - {{name: midspan_acceleration, quantity: bridge_acceleration, x: 10.0}}
+  - {{name: sprung, quantity: vehicle_displacement, dof: sprung}}
+  - {{name: sprung_acceleration, quantity: vehicle_acceleration, dof: sprung}}
+  - {{name: contact_force, quantity: contact_force, wheel: 1}}
+"
+    )
+}
+
+fn load(text: &str) -> Loaded {
+    scenario::load_str(text, "inline.yaml").expect("valid scene")
+}
+
+fn study(text: &str, levels: usize, tolerance: f64) -> Convergence {
+    let options = Options { levels, tolerance };
+    converge::converge(&load(text), &options, &mut |_, _, _| {}).expect("study runs")
+}
+
+fn time_step_runs(study: &Convergence) -> Vec<&RunReport> {
+    study
+        .runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::TimeStep)
+        .collect()
+}
+
+#[test]
+fn plan_refines_the_reference_and_builds_both_ladders() {
+    let (reference, ladder) = plan(1e-3, 10, 38, 3);
+    assert_eq!(reference.time_step, 2.5e-4);
+    assert_eq!(reference.modes, 20);
+    let steps: Vec<(Ladder, f64, usize)> = ladder
+        .iter()
+        .map(|(l, r)| (*l, r.time_step, r.modes))
+        .collect();
+    assert_eq!(
+        steps,
+        [
+            (Ladder::TimeStep, 1e-3, 20),
+            (Ladder::TimeStep, 2e-3, 20),
+            (Ladder::TimeStep, 4e-3, 20),
+            (Ladder::Modes, 1e-3, 10),
+            (Ladder::Modes, 1e-3, 5),
+            (Ladder::Modes, 1e-3, 2),
+        ]
+    );
+    // Every ladder step is an exact multiple of the reference step.
+    for (_, r) in &ladder {
+        let k = r.time_step / reference.time_step;
+        assert_eq!(k, k.round(), "{}", r.label());
+    }
+    // All modes already used: the reference keeps them, no duplicate runs.
+    let (reference, ladder) = plan(1e-4, 3, 3, 1);
+    assert_eq!(reference.modes, 3);
+    let modes: Vec<usize> = ladder.iter().map(|(_, r)| r.modes).collect();
+    assert_eq!(modes, [3, 1]);
+    assert_eq!(ladder[0].1.label(), "dt=1e-4 s, 3 modes");
+    assert_eq!(ladder[1].1.label(), "dt=1e-4 s, 1 mode");
+}
+
+#[test]
+fn tolerance_accepts_percent_or_fraction() {
+    assert_eq!(parse_tolerance("1%"), Ok(0.01));
+    assert_eq!(parse_tolerance("0.01"), Ok(0.01));
+    assert_eq!(parse_tolerance(" 2.5 % "), Ok(0.025));
+    for bad in ["abc", "", "%", "-1%", "0", "nan", "inf"] {
+        assert!(parse_tolerance(bad).is_err(), "{bad:?}");
+    }
+}
+
+#[test]
+fn newmark_average_acceleration_converges_at_second_order() {
+    let study = study(&smooth_scene(2.5e-4, ""), 3, 0.01);
+    assert_eq!(study.reference.label, "dt=6.25e-5 s, 4 modes");
+    // Two halvings × five quantities, all in the asymptotic range.
+    assert_eq!(study.orders.len(), 10, "{:#?}", study.orders);
+    for order in &study.orders {
+        assert!(
+            (order.order - 2.0).abs() <= 0.3,
+            "{} at {:e} -> {:e}: p = {:.3}",
+            order.quantity,
+            order.coarse_step,
+            order.fine_step,
+            order.order
+        );
+    }
+    let median = study.median_order.expect("orders");
+    assert!((median - 2.0).abs() <= 0.1, "median order {median}");
+}
+
+#[test]
+fn errors_fall_monotonically_along_the_time_step_ladder() {
+    let study = study(&smooth_scene(2.5e-4, ""), 4, 0.01);
+    let ladder = time_step_runs(&study);
+    assert_eq!(ladder.len(), 4);
+    for pair in ladder.windows(2) {
+        let (fine, coarse) = (pair[0], pair[1]);
+        assert_eq!(coarse.time_step, 2.0 * fine.time_step);
+        let fine_errors = fine.errors.as_ref().expect("run succeeded");
+        let coarse_errors = coarse.errors.as_ref().expect("run succeeded");
+        for (f, c) in fine_errors.iter().zip(coarse_errors) {
+            assert!(
+                f.max_abs < c.max_abs && f.rms < c.rms,
+                "{}: {} gives {:e}/{:e}, {} gives {:e}/{:e}",
+                f.name,
+                fine.label,
+                f.max_abs,
+                f.rms,
+                coarse.label,
+                c.max_abs,
+                c.rms
+            );
+            assert!(f.max_abs > 0.0, "{}: a coarser run differs", f.name);
+        }
+        assert!(fine.steps.unwrap() > coarse.steps.unwrap());
+    }
+    // The mode ladder's errors include modal truncation: 2 and 1 modes miss
+    // modes 3 and 4 of the reference.
+    assert!(
+        study
+            .runs
+            .iter()
+            .filter(|r| r.ladder == Ladder::Modes)
+            .all(|r| r.worst_max_abs().unwrap() > ladder[0].worst_max_abs().unwrap())
+    );
+}
+
+#[test]
+fn cheapest_within_tolerance_is_the_largest_step_that_meets_it() {
+    let first = study(&smooth_scene(2.5e-4, ""), 4, 1.0);
+    let ladder = time_step_runs(&first);
+    let worst: Vec<f64> = ladder.iter().map(|r| r.worst_max_abs().unwrap()).collect();
+    // A tolerance between the errors of the 2nd and 3rd rung (geometric mean).
+    let tolerance = (worst[1] * worst[2]).sqrt();
+    let study = study(&smooth_scene(2.5e-4, ""), 4, tolerance);
+    let expected = time_step_runs(&study)
+        .into_iter()
+        .filter(|r| r.worst_max_abs().unwrap() <= tolerance)
+        .max_by(|a, b| a.time_step.total_cmp(&b.time_step))
+        .expect("a run meets the tolerance");
+    let chosen = study.cheapest_run().expect("a run meets the tolerance");
+    assert_eq!(chosen.label, expected.label);
+    assert_eq!(chosen.label, "dt=5e-4 s, 4 modes");
+    // Tighter than every run's error: nothing qualifies.
+    let best = study
+        .runs
+        .iter()
+        .filter_map(RunReport::worst_max_abs)
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(cheapest_within(&study.runs, 0.5 * best), None);
+    let strict = converge::converge(
+        &load(&smooth_scene(2.5e-4, "")),
+        &Options {
+            levels: 2,
+            tolerance: 1e-12,
+        },
+        &mut |_, _, _| {},
+    )
+    .unwrap();
+    assert_eq!(strict.cheapest, None);
+}
+
+fn synthetic(label: &str, wall_time: f64, error: f64) -> RunReport {
+    RunReport {
+        label: label.into(),
+        ladder: Ladder::TimeStep,
+        time_step: 1e-3,
+        modes: 1,
+        steps: Some(10),
+        wall_time: Some(wall_time),
+        errors: Ok(vec![QuantityError {
+            name: "q".into(),
+            unit: "m",
+            max_abs: error,
+            rms: error,
+        }]),
+    }
+}
+
+#[test]
+fn cheapest_is_by_wall_time_and_ignores_failed_and_non_finite_runs() {
+    let mut failed = synthetic("failed", 0.1, 0.0);
+    failed.wall_time = None;
+    failed.steps = None;
+    failed.errors = Err("diverged".into());
+    let runs = vec![
+        synthetic("slow", 3.0, 0.001),
+        synthetic("fast", 1.0, 0.009),
+        synthetic("fastest but wrong", 0.5, 0.02),
+        synthetic("nan", 0.2, f64::NAN),
+        failed,
+    ];
+    assert_eq!(cheapest_within(&runs, 0.01), Some(1));
+    assert_eq!(cheapest_within(&runs, 0.005), Some(0));
+    assert_eq!(cheapest_within(&runs, 0.0005), None);
+    assert_eq!(runs[3].worst_max_abs(), Some(f64::INFINITY));
+    assert_eq!(runs[4].worst_max_abs(), None);
+}
+
+#[test]
+fn a_diverging_run_is_reported_as_failed() {
+    // β = 0.1, γ = 0.5 is stable only for ωΔt ≤ 2.58; the reference's
+    // 80 Hz mode (ω = 503 rad/s) breaks that from Δt = 8 ms on.
+    let text = smooth_scene(2.0e-3, ", newmark: {beta: 0.1, gamma: 0.5}");
+    let study = study(&text, 4, 0.01);
+    let ladder = time_step_runs(&study);
+    assert!(ladder[0].errors.is_ok(), "{:?}", ladder[0].errors);
+    let failed: Vec<&&RunReport> = ladder.iter().filter(|r| r.errors.is_err()).collect();
+    assert!(!failed.is_empty(), "the 8 and 16 ms runs should diverge");
+    for run in failed {
+        assert!(run.time_step >= 8e-3, "{}", run.label);
+        assert!(run.wall_time.is_none() && run.steps.is_none());
+        let message = run.errors.as_ref().unwrap_err();
+        assert!(message.contains("diverged"), "{message}");
+    }
+    let csv = String::from_utf8(study.to_csv()).unwrap();
+    assert!(csv.contains("diverged"), "{csv}");
+}
+
+#[test]
+fn the_table_is_deterministic_apart_from_wall_times() {
+    let strip = |mut s: Convergence| {
+        s.reference.wall_time = None;
+        for run in &mut s.runs {
+            run.wall_time = None;
+        }
+        s
+    };
+    let text = smooth_scene(5.0e-4, "");
+    let a = strip(study(&text, 3, 0.01));
+    let b = strip(study(&text, 3, 0.01));
+    assert_eq!(a, b);
+}
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("vbi-converge-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create scratch dir");
+    dir
+}
+
+fn vbi(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("run vbi")
+}
+
+#[test]
+fn cli_writes_csv_and_png() {
+    let dir = scratch("cli");
+    std::fs::write(dir.join("scene.yaml"), smooth_scene(1.0e-3, "")).unwrap();
+    let out = vbi(
+        &[
+            "converge",
+            "scene.yaml",
+            "--tolerance",
+            "5%",
+            "--levels",
+            "3",
+            "--out",
+            "conv",
+            "--quiet",
+        ],
+        &dir,
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("dt=2.5e-4 s, 4 modes (reference)"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("median observed order"), "{stdout}");
+    assert!(stdout.contains("cheapest within 5 %: "), "{stdout}");
+    let csv = std::fs::read_to_string(dir.join("conv/converge.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure")
+    );
+    // 3 time-step runs + 2 mode runs (2 and 1 modes), 5 quantities each.
+    assert_eq!(lines.count(), 5 * 5);
+    let png = std::fs::read(dir.join("conv/converge.png")).unwrap();
+    assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn cli_rejects_a_bad_tolerance() {
+    let dir = scratch("bad");
+    std::fs::write(dir.join("scene.yaml"), smooth_scene(1.0e-3, "")).unwrap();
+    for bad in ["abc", "-1%", "0"] {
+        let out = vbi(&["converge", "scene.yaml", "--tolerance", bad], &dir);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {stderr}");
+        assert!(stderr.contains("tolerance"), "{stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+    assert!(!dir.join("results").exists(), "nothing written");
+    let out = vbi(&["converge", "missing.yaml"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}
