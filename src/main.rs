@@ -201,10 +201,11 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
     };
     let bridge = &loaded.bridge;
     println!(
-        "{}: {} modes used of {} available",
+        "{}: {} modes used of {} available ({})",
         loaded.scenario.name,
         bridge.mode_count(),
-        bridge.available_modes
+        bridge.available_modes,
+        bridge.selection
     );
     println!(
         "{:>5} {:>14} {:>14} {:>12}",

