@@ -1,5 +1,7 @@
-//! Studies: many runs derived from one scene, run in parallel (rayon) and
-//! collected in grid order, so the results do not depend on the thread count.
+//! Studies: many runs derived from one scene. Separation maps run their grid
+//! points in parallel (rayon) and collect them in grid order, so the result
+//! does not depend on the thread count; convergence ladders run one after
+//! another so their wall times do not compete.
 
 pub mod converge;
 pub mod separation_map;
