@@ -96,35 +96,8 @@ pub(super) fn derive_dimensionless(
             "damping",
         );
         agree(ck, &format!("{at}.speed"), o.speed, derived.speed, "speed");
-        derived.entry_time = match (o.entry_time, o.start_position) {
-            (Some(_), Some(_)) => {
-                ck.error(
-                    &format!("{at}.start_position"),
-                    "give `entry_time` or `start_position`, not both",
-                );
-                0.0
-            }
-            (Some(t), None) => {
-                ck.non_negative(&format!("{at}.entry_time"), t, "entry time");
-                t
-            }
-            (None, Some(x)) => {
-                if x > 0.0 {
-                    ck.error(
-                        &format!("{at}.start_position"),
-                        format!(
-                            "the vehicle must start on the approach (start_position ≤ 0), got {x}"
-                        ),
-                    );
-                }
-                if derived.speed > 0.0 {
-                    -x / derived.speed
-                } else {
-                    0.0
-                }
-            }
-            (None, None) => 0.0,
-        };
+        derived.entry_time =
+            super::resolve::entry_time(ck, &at, derived.speed, o.entry_time, o.start_position);
         *vehicle = Vehicle::Oscillator(derived);
     }
 }

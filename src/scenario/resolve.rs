@@ -363,7 +363,7 @@ pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
 }
 
 /// Entry time from `entry_time` / `start_position` (front axle at t = 0).
-fn entry_time(
+pub(super) fn entry_time(
     ck: &mut Checker<'_>,
     at: &str,
     speed: f64,

@@ -109,8 +109,6 @@ pub fn run(
     let mut states = Vec::with_capacity(model.vehicles.len());
     let mut partitions = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
-        let n = vehicle.dofs();
-        let (static_displacement, _) = model.static_state(v);
         let partition = Partition::new(vehicle, wheel_dofs[v].clone(), &nm).ok_or_else(|| {
             SolveError::SingularContact {
                 time: 0.0,
@@ -120,12 +118,7 @@ pub fn run(
                 ),
             }
         })?;
-        states.push(VehicleState {
-            displacement: static_displacement.clone(),
-            velocity: nalgebra::DVector::zeros(n),
-            acceleration: nalgebra::DVector::zeros(n),
-            static_displacement,
-        });
+        states.push(VehicleState::at_rest(model, v));
         partitions.push(partition);
     }
 

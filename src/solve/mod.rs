@@ -71,6 +71,20 @@ pub struct VehicleState {
     pub static_displacement: DVector<f64>,
 }
 
+impl VehicleState {
+    /// Vehicle `v` of `model` at rest in static equilibrium on level ground.
+    pub fn at_rest(model: &Model, v: usize) -> Self {
+        let (static_displacement, _) = model.static_state(v);
+        let n = static_displacement.len();
+        Self {
+            displacement: static_displacement.clone(),
+            velocity: DVector::zeros(n),
+            acceleration: DVector::zeros(n),
+            static_displacement,
+        }
+    }
+}
+
 /// What an observer sees after each step (and at t = 0).
 #[derive(Debug)]
 pub struct StepView<'a> {

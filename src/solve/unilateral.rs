@@ -94,7 +94,6 @@ pub fn run(
     let mut steps = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
         let n = vehicle.dofs();
-        let (static_displacement, _) = model.static_state(v);
         let effective =
             &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
         let effective_flexibility =
@@ -111,12 +110,7 @@ pub fn run(
                 &(effective_flexibility.column(c.dof) * nm.weight()),
             );
         }
-        states.push(VehicleState {
-            displacement: static_displacement.clone(),
-            velocity: DVector::zeros(n),
-            acceleration: DVector::zeros(n),
-            static_displacement,
-        });
+        states.push(VehicleState::at_rest(model, v));
         steps.push(VehicleStep {
             effective_flexibility,
             contact_response,
@@ -203,8 +197,7 @@ pub fn run(
         }
         if nm.alpha != 0.0 {
             for (c, contact) in contacts.iter().enumerate() {
-                steps[contact.vehicle].effective_load[contact.dof] -=
-                    nm.alpha * carried[c];
+                steps[contact.vehicle].effective_load[contact.dof] -= nm.alpha * carried[c];
             }
         }
         for vs in steps.iter_mut() {
@@ -349,8 +342,11 @@ pub fn run(
                 let (_, dr, ddr) = model.profile.elevation_slope_curvature(x);
                 let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
                 for i in 0..modes {
-                    let (q, qd, qdd) =
-                        (modal.displacement[i], modal.velocity[i], modal.acceleration[i]);
+                    let (q, qd, qdd) = (
+                        modal.displacement[i],
+                        modal.velocity[i],
+                        modal.acceleration[i],
+                    );
                     velocity += landing_values[i] * qd + v * landing_slopes[i] * q;
                     acceleration += landing_values[i] * qdd
                         + 2.0 * v * landing_slopes[i] * qd
