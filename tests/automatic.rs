@@ -50,7 +50,13 @@ fn automatic_modes_keep_yang_yau_within_half_a_percent() {
         let automatic = run(&yang_yau("", step));
         let used = automatic.summary.run.modes_used;
         assert!(used < generous.summary.run.modes_used, "{used} modes");
-        assert!(automatic.summary.run.modes_selection.starts_with("automatic"));
+        assert!(
+            automatic
+                .summary
+                .run
+                .modes_selection
+                .starts_with("automatic")
+        );
         for (name, exact_peak) in [("midspan", deflection), ("body_acceleration", acceleration)] {
             let error = (peak(&automatic, name) - exact_peak).abs() / exact_peak;
             eprintln!(
@@ -84,7 +90,13 @@ fn cutoff_and_step_follow_the_excitation() {
     let cutoff = beam.modes.max_frequency.expect("written back");
     assert!(cutoff >= 4.0 * hop, "cut-off {cutoff} Hz");
     assert!(elastic.bridge.mode_count() > permanent.bridge.mode_count());
-    let top = elastic.bridge.frequencies().last().copied().unwrap().max(hop);
+    let top = elastic
+        .bridge
+        .frequencies()
+        .last()
+        .copied()
+        .unwrap()
+        .max(hop);
     assert!(elastic.scenario.solver.time_step <= 1.0 / (20.0 * top) * (1.0 + 1e-12));
     assert!(elastic.scenario.solver.time_step < permanent.scenario.solver.time_step);
 }

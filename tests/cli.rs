@@ -251,7 +251,9 @@ fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
     let mut lines = stdout.lines();
     assert_eq!(
         lines.next(),
-        Some("yang-yau-sprung-mass: 10 modes used of 40 available (requested: the lowest 10 modes)")
+        Some(
+            "yang-yau-sprung-mass: 10 modes used of 40 available (requested: the lowest 10 modes)"
+        )
     );
     let header: Vec<&str> = lines.next().unwrap().split_whitespace().collect();
     assert_eq!(header, ["mode", "frequency_Hz", "period_s", "damping"]);

@@ -99,7 +99,9 @@ impl ModalBridge {
                     selection: match (beam.modes.count, beam.modes.max_frequency) {
                         (Some(n), None) => format!("requested: the lowest {n} modes"),
                         (None, Some(f)) => format!("requested: every mode up to {f} Hz"),
-                        (Some(n), Some(f)) => format!("requested: the lowest {n} modes, up to {f} Hz"),
+                        (Some(n), Some(f)) => {
+                            format!("requested: the lowest {n} modes, up to {f} Hz")
+                        }
                         (None, None) => "every mode the mesh offers".into(),
                     },
                     shapes,
