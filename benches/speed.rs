@@ -1,0 +1,349 @@
+//! Speed benchmarks, printed as Markdown tables (see BENCHMARKS.md).
+//!
+//! ```sh
+//! cargo bench --bench speed              # every section
+//! cargo bench --bench speed -- step map  # only the sections whose name contains a word
+//! ```
+//!
+//! Sections: `step` (per-step cost of the coupled and LCP solvers on the same
+//! scene), `foundation` (the foundation scene end to end through the library)
+//! and `map` (40 × 40 separation maps, all threads and one thread).
+//!
+//! Every case is run once to warm up, then repeated N times with N chosen from
+//! the warm-up so that the case takes at least about `VBI_BENCH_SECONDS`
+//! (default 1 s) and at least 3 repetitions; median and minimum are reported.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use vbi::run::{Outcome, Results};
+use vbi::scenario::Loaded;
+use vbi::study::separation_map::SeparationMap;
+
+fn main() {
+    let filters: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    let wanted = |section: &str| filters.is_empty() || filters.iter().any(|f| section.contains(f));
+    let budget: f64 = std::env::var("VBI_BENCH_SECONDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1.0);
+
+    println!(
+        "vbi {} speed benchmark; {} rayon threads by default; target ≥ {budget} s per case\n",
+        env!("CARGO_PKG_VERSION"),
+        rayon::current_num_threads(),
+    );
+    if wanted("step") {
+        per_step(budget);
+    }
+    if wanted("foundation") {
+        foundation(budget);
+    }
+    if wanted("map") {
+        separation_maps(budget);
+    }
+}
+
+/// Path of a file in the crate's `scenarios/` folder.
+fn scenario_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join(name)
+}
+
+fn read_scenario(name: &str) -> String {
+    let path = scenario_path(name);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// Median and minimum of a sample.
+fn median_min(mut xs: Vec<f64>) -> (f64, f64) {
+    assert!(!xs.is_empty());
+    xs.sort_by(f64::total_cmp);
+    let n = xs.len();
+    let median = if n % 2 == 1 {
+        xs[n / 2]
+    } else {
+        0.5 * (xs[n / 2 - 1] + xs[n / 2])
+    };
+    (median, xs[0])
+}
+
+/// Repetitions for a case whose warm-up took `warmup` seconds.
+fn repetitions(warmup: f64, budget: f64) -> usize {
+    ((budget / warmup.max(1e-9)).ceil() as usize).clamp(3, 100_000)
+}
+
+/// Runs `f` once to warm up, then N times; returns the N values `f` reports
+/// (its own measure, in whatever unit).
+fn sample(budget: f64, mut f: impl FnMut() -> f64) -> Vec<f64> {
+    let start = Instant::now();
+    f();
+    let n = repetitions(start.elapsed().as_secs_f64(), budget);
+    (0..n).map(|_| f()).collect()
+}
+
+/// The scene text with its `contact:` line replaced by `contact` and any
+/// explicit `method:` in the solver line removed (the default follows the contact).
+fn with_contact(text: &str, contact: &str) -> String {
+    let mut replaced = false;
+    let out: Vec<String> = text
+        .lines()
+        .map(|line| {
+            if line.starts_with("contact:") {
+                replaced = true;
+                format!("contact: {contact}")
+            } else if line.starts_with("solver:") {
+                line.replace("method: coupled, ", "")
+                    .replace("method: lcp, ", "")
+            } else {
+                line.to_string()
+            }
+        })
+        .collect();
+    assert!(replaced, "no `contact:` line");
+    out.join("\n") + "\n"
+}
+
+fn load(text: &str, label: &str) -> Loaded {
+    vbi::scenario::load_str(text, label).unwrap_or_else(|e| panic!("{label}: {e}"))
+}
+
+fn simulate(loaded: &Loaded) -> Outcome {
+    vbi::run::simulate(loaded.clone(), &mut |_, _| {}).expect("simulation runs")
+}
+
+// ---------------------------------------------------------------------------
+// a. Per-step cost, coupled vs LCP on the same scene
+
+fn per_step(budget: f64) {
+    println!("## Unilateral contact (LCP) vs coupled, per step\n");
+    println!(
+        "Per-step cost = `summary.run.wall_time` (build + solve + record) / `steps`, \
+         library call `vbi::run::simulate` on a pre-loaded scene. The four contact variants \
+         of a scene run interleaved (one of each per round), so load from other work that \
+         varies over time affects them alike; the ratio is taken within each round \
+         (median over rounds), and as min / min.\n"
+    );
+    println!(
+        "| scene | contact | solver | steps | reps | median ns/step | min ns/step | \
+         lcp / coupled (median per round) | lcp / coupled (min / min) | contact-loss episodes |"
+    );
+    println!("|---|---|---|---:|---:|---:|---:|---:|---:|---:|");
+    let contacts = [
+        "{type: permanent}",
+        "{type: rigid}",
+        "{type: elastic, stiffness_ratio: 100.0}",
+        "{type: hertz, coefficient: 1.0e11}",
+    ];
+    for (file, label) in [
+        ("lcp-fig4-rigid.yaml", "fig4 (separates)"),
+        (
+            "lcp-oscillator-smooth.yaml",
+            "oscillator-smooth (no separation)",
+        ),
+    ] {
+        let text = read_scenario(file);
+        let loaded: Vec<Loaded> = contacts
+            .iter()
+            .map(|c| load(&with_contact(&text, c), file))
+            .collect();
+        // Warm-up: one run of each; it also gives the run facts.
+        let mut fastest = f64::INFINITY;
+        let facts: Vec<(usize, &'static str, usize)> = loaded
+            .iter()
+            .map(|l| {
+                let start = Instant::now();
+                let out = simulate(l);
+                fastest = fastest.min(start.elapsed().as_secs_f64());
+                let run = &out.summary.run;
+                let episodes = out.summary.separation.iter().map(|s| s.episodes).sum();
+                (run.steps, run.solver, episodes)
+            })
+            .collect();
+        // Every variant gets at least the budget.
+        let reps = repetitions(fastest, budget);
+        let mut samples = vec![Vec::with_capacity(reps); loaded.len()];
+        for _ in 0..reps {
+            for (l, sample) in loaded.iter().zip(&mut samples) {
+                let out = simulate(l);
+                sample.push(out.summary.run.wall_time / out.summary.run.steps as f64 * 1e9);
+            }
+        }
+        // Ratio per round (same moment, same machine state), then its median.
+        let round_ratios: Vec<f64> = samples
+            .iter()
+            .map(|s| {
+                let ratios = s.iter().zip(&samples[0]).map(|(x, r)| x / r).collect();
+                median_min(ratios).0
+            })
+            .collect();
+        let stats: Vec<(f64, f64)> = samples.into_iter().map(median_min).collect();
+        assert_eq!(facts[0].1, "coupled", "the first variant is the reference");
+        let ref_min = stats[0].1;
+        for (((contact, (steps, solver, episodes)), (median, min)), round_ratio) in
+            contacts.iter().zip(facts).zip(stats).zip(round_ratios)
+        {
+            let (ratio_rounds, ratio_min, episodes) = if solver == "coupled" {
+                (
+                    "1 (reference)".to_string(),
+                    "1".to_string(),
+                    "—".to_string(),
+                )
+            } else {
+                (
+                    format!("{round_ratio:.2}×"),
+                    format!("{:.2}×", min / ref_min),
+                    episodes.to_string(),
+                )
+            };
+            println!(
+                "| {label} | `{contact}` | {solver} | {steps} | {reps} | {median:.0} | {min:.0} | \
+                 {ratio_rounds} | {ratio_min} | {episodes} |"
+            );
+        }
+    }
+    println!();
+}
+
+// ---------------------------------------------------------------------------
+// b. Foundation scene end to end through the library
+
+fn foundation(budget: f64) {
+    println!("## Foundation scene end to end (library)\n");
+    let path = scenario_path("lcp-oscillator-smooth.yaml");
+    let out = std::env::temp_dir().join(format!("vbi-bench-foundation-{}", std::process::id()));
+    let mut run_wall = Vec::new();
+    let total = sample(budget, || {
+        let start = Instant::now();
+        let loaded = vbi::scenario::load_file(&path).expect("scene loads");
+        let scenario = loaded.scenario.clone();
+        let outcome = vbi::run::simulate(loaded, &mut |_, _| {}).expect("scene runs");
+        vbi::run::write_results(&out, &scenario, &outcome).expect("results written");
+        run_wall.push(outcome.summary.run.wall_time * 1e3);
+        start.elapsed().as_secs_f64() * 1e3
+    });
+    let _ = std::fs::remove_dir_all(&out);
+    run_wall.remove(0); // the warm-up
+    let reps = total.len();
+    let (median, min) = median_min(total);
+    let (run_median, run_min) = median_min(run_wall);
+    println!(
+        "`scenarios/lcp-oscillator-smooth.yaml`: load_file + simulate + write_results into a temp dir.\n"
+    );
+    println!("| part | reps | median ms | min ms |");
+    println!("|---|---:|---:|---:|");
+    println!("| load + simulate + write (whole) | {reps} | {median:.2} | {min:.2} |");
+    println!(
+        "| `run.wall_time` (build + solve + record) | {reps} | {run_median:.2} | {run_min:.2} |"
+    );
+    println!();
+    println!("Whole CLI process:\n");
+    println!("```sh");
+    println!("cargo build --release");
+    println!(
+        "hyperfine -N --warmup 5 --runs 50 \\\n  'target/release/vbi run scenarios/lcp-oscillator-smooth.yaml --out /tmp/bench-osc --quiet'"
+    );
+    println!("```\n");
+}
+
+// ---------------------------------------------------------------------------
+// c. Separation maps 40 × 40
+
+fn execute_map(loaded: &Loaded) -> SeparationMap {
+    match vbi::run::execute(loaded.clone(), &|_, _| {}).expect("study runs") {
+        Results::SeparationMap(map) => map,
+        Results::Scene(_) => panic!("expected a separation map"),
+    }
+}
+
+/// Whether two maps agree point by point: (same `separated` everywhere,
+/// every point bit-identical).
+fn compare(a: &SeparationMap, b: &SeparationMap) -> (bool, bool) {
+    assert_eq!(a.points.len(), b.points.len());
+    let separated = a
+        .points
+        .iter()
+        .zip(&b.points)
+        .all(|(p, q)| p.separated == q.separated);
+    (separated, a.points == b.points)
+}
+
+fn separation_maps(budget: f64) {
+    println!("## Separation map 40 × 40\n");
+    let threads = rayon::current_num_threads();
+    let single = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("one-thread pool");
+    println!(
+        "`vbi::run::execute` on a pre-loaded scene (both grids `count: 20` → `count: 40`); \
+         wall time of the whole map (`map.wall_time`).\n"
+    );
+    println!(
+        "| scene | points | separated | threads | reps | median s | min s | ms / point (median) | \
+         speed-up |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let mut agreements = Vec::new();
+    for file in ["lcp-fig6-smooth.yaml", "lcp-fig6-harmonic.yaml"] {
+        let text = read_scenario(file).replace("count: 20", "count: 40");
+        let loaded = load(&text, file);
+        let mut multi_map = None;
+        let multi = sample(budget, || {
+            let map = execute_map(&loaded);
+            let t = map.wall_time;
+            multi_map = Some(map);
+            t
+        });
+        let mut one_map = None;
+        let one = single.install(|| {
+            sample(budget, || {
+                let map = execute_map(&loaded);
+                let t = map.wall_time;
+                one_map = Some(map);
+                t
+            })
+        });
+        let (multi_map, one_map) = (multi_map.unwrap(), one_map.unwrap());
+        let points = multi_map.points.len();
+        let separated = multi_map.separated_count();
+        let (multi_median, multi_min) = median_min(multi.clone());
+        let (one_median, one_min) = median_min(one.clone());
+        let name = file.trim_end_matches(".yaml");
+        for (n, reps, median, min, speedup) in [
+            (
+                threads,
+                multi.len(),
+                multi_median,
+                multi_min,
+                one_median / multi_median,
+            ),
+            (1, one.len(), one_median, one_min, 1.0),
+        ] {
+            println!(
+                "| {name} 40×40 | {points} | {separated} | {n} | {reps} | {median:.2} | {min:.2} | \
+                 {:.2} | {speedup:.2}× |",
+                median / points as f64 * 1e3
+            );
+        }
+        agreements.push((name, compare(&multi_map, &one_map)));
+    }
+    println!();
+    for (name, (separated, identical)) in agreements {
+        println!(
+            "- {name}: {threads}-thread and 1-thread maps: `separated` {} at every point; \
+             all point fields {}.",
+            if separated { "identical" } else { "DIFFERS" },
+            if identical {
+                "bit-identical"
+            } else {
+                "not bit-identical"
+            },
+        );
+    }
+    println!();
+}
