@@ -138,6 +138,11 @@ pub fn run(
     let mut lambda = vec![0.0; nc];
     let mut previous = vec![0.0; nc];
     let mut workspace = LcpWorkspace::new(nc.max(1));
+    // Smallest compression a Hertz linearisation may use, per contact wheel, m.
+    let hertz_floor: Vec<f64> = contacts
+        .iter()
+        .map(|c| (1e-3 * model.contact.compression(model.static_wheel_loads[c.wheel])).max(1e-12))
+        .collect();
     let nw = model.wheels.len();
     let mut contact_forces = model.static_wheel_loads.clone();
     let mut contact_gaps = vec![0.0; nw];
@@ -257,16 +262,10 @@ pub fn run(
                         lcp_matrix.copy_from_slice(&compliance);
                         for c in 0..nc {
                             // Linearise at the compression of the current iterate,
-                            // floored at a small fraction of the static one so the
-                            // tangent stiffness never vanishes.
-                            let static_compression = model
-                                .contact
-                                .compression(model.static_wheel_loads[contacts[c].wheel]);
-                            let delta = model
-                                .contact
-                                .compression(previous[c])
-                                .max(1e-3 * static_compression)
-                                .max(1e-12);
+                            // δ = (λ/C)^(2/3), floored at a small fraction of the
+                            // static one so the tangent stiffness never vanishes.
+                            let ratio = previous[c].max(0.0) / coefficient;
+                            let delta = (ratio * ratio).cbrt().max(hertz_floor[c]);
                             let tangent = 1.5 * coefficient * delta.sqrt();
                             lcp_matrix[c * nc + c] += 1.0 / tangent;
                             lcp_vector[c] = free_gap[c] + delta / 3.0;
