@@ -107,6 +107,30 @@ pub struct StepView<'a> {
     pub wheel_positions: &'a [f64],
 }
 
+impl<'a> StepView<'a> {
+    /// The view of a state: modal coordinates from `modal`, the rest as given.
+    pub(crate) fn of(
+        step: usize,
+        time: f64,
+        modal: &'a modal::ModalStep,
+        vehicles: &'a [VehicleState],
+        contact_forces: &'a [f64],
+        contact_gaps: &'a [f64],
+        wheel_positions: &'a [f64],
+    ) -> Self {
+        Self {
+            step,
+            time,
+            modal_displacement: &modal.displacement,
+            modal_acceleration: &modal.acceleration,
+            vehicles,
+            contact_forces,
+            contact_gaps,
+            wheel_positions,
+        }
+    }
+}
+
 /// Receives every step's state (the record stage).
 pub trait Observer {
     /// Called at t = 0 and after every step.

@@ -151,16 +151,15 @@ pub fn run(
     }
     let mut wheel_positions: Vec<f64> = (0..nw).map(|w| model.wheel_position(w, 0.0)).collect();
 
-    observer.observe(&StepView {
-        step: 0,
-        time: 0.0,
-        modal_displacement: &modal.displacement,
-        modal_acceleration: &modal.acceleration,
-        vehicles: &states,
-        contact_forces: &contact_forces,
-        contact_gaps: &contact_gaps,
-        wheel_positions: &wheel_positions,
-    });
+    observer.observe(&StepView::of(
+        0,
+        0.0,
+        &modal,
+        &states,
+        &contact_forces,
+        &contact_gaps,
+        &wheel_positions,
+    ));
 
     let guard = Guard::new(model);
     let report_every = (model.steps / 200).max(1);
@@ -362,16 +361,15 @@ pub fn run(
 
         guard.check(model, &modal, &states, &lambda, t, step)?;
 
-        observer.observe(&StepView {
+        observer.observe(&StepView::of(
             step,
-            time: t,
-            modal_displacement: &modal.displacement,
-            modal_acceleration: &modal.acceleration,
-            vehicles: &states,
-            contact_forces: &contact_forces,
-            contact_gaps: &contact_gaps,
-            wheel_positions: &wheel_positions,
-        });
+            t,
+            &modal,
+            &states,
+            &contact_forces,
+            &contact_gaps,
+            &wheel_positions,
+        ));
         if step % report_every == 0 || step == model.steps {
             progress(step, model.steps);
         }
