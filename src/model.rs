@@ -149,6 +149,14 @@ impl Model {
         self.vehicles[r.vehicle].wheel_position(r.wheel, t)
     }
 
+    /// Writes every flattened wheel's position at time `t` into `positions`, m.
+    #[inline]
+    pub fn wheel_positions(&self, t: f64, positions: &mut [f64]) {
+        for (w, x) in positions.iter_mut().enumerate() {
+            *x = self.wheel_position(w, t);
+        }
+    }
+
     /// Flattened index of (vehicle, wheel), both from 0.
     pub fn wheel_index(&self, vehicle: usize, wheel: usize) -> Option<usize> {
         self.wheels

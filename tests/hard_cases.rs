@@ -17,6 +17,8 @@
 
 mod support;
 
+use support::{column, max_abs};
+
 use std::f64::consts::PI;
 
 use support::reference as exact;
@@ -35,16 +37,6 @@ fn run(text: &str) -> Outcome {
     try_run(text).unwrap_or_else(|e| panic!("{e}\n{text}"))
 }
 
-fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
-    &outcome
-        .history
-        .columns
-        .iter()
-        .find(|c| c.name == name)
-        .unwrap_or_else(|| panic!("no column {name}"))
-        .values
-}
-
 fn quantity<'a>(outcome: &'a Outcome, name: &str) -> &'a QuantitySummary {
     outcome
         .summary
@@ -56,10 +48,6 @@ fn quantity<'a>(outcome: &'a Outcome, name: &str) -> &'a QuantitySummary {
 
 fn daf(outcome: &Outcome, name: &str) -> f64 {
     quantity(outcome, name).daf.expect("DAF of a displacement")
-}
-
-fn max_abs(values: &[f64]) -> f64 {
-    values.iter().fold(0.0, |m, v| m.max(v.abs()))
 }
 
 fn relative(a: f64, b: f64) -> f64 {

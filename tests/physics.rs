@@ -3,30 +3,13 @@
 
 mod support;
 
+use support::{column, max_abs, run_yaml};
+
 use support::reference as exact;
 use vbi::bridge::ModalBridge;
-use vbi::run::{Outcome, simulate};
+use vbi::run::simulate;
+use vbi::scenario::load_file;
 use vbi::scenario::resolved::{Beam, Bridge, Damping, Modes};
-use vbi::scenario::{load_file, load_str};
-
-fn run_yaml(yaml: &str) -> Outcome {
-    let loaded = load_str(yaml, "test.yaml").unwrap_or_else(|e| panic!("{e}"));
-    simulate(loaded, &mut |_, _| {}).expect("run succeeds")
-}
-
-fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
-    &outcome
-        .history
-        .columns
-        .iter()
-        .find(|c| c.name == name)
-        .unwrap_or_else(|| panic!("no column {name}"))
-        .values
-}
-
-fn max_abs(values: &[f64]) -> f64 {
-    values.iter().fold(0.0, |m, v| m.max(v.abs()))
-}
 
 /// Moving constant force on a simply supported beam against Frýba's
 /// closed-form modal series (Frýba 1972, ch. 1; each mode solved exactly in

@@ -5,11 +5,13 @@
 
 mod support;
 
+use support::{column, max_abs, run_yaml};
+
 use std::path::Path;
 
 use support::event_reference::{TensionlessCase, extremes};
-use vbi::run::{Outcome, Results, execute, simulate};
-use vbi::scenario::{load_file, load_str};
+use vbi::run::{Outcome, Results, execute};
+use vbi::scenario::load_file;
 use vbi::study::separation_map::SeparationMap;
 
 fn scenario_text(name: &str) -> String {
@@ -21,27 +23,8 @@ fn scenario_text(name: &str) -> String {
     .expect("scenario exists")
 }
 
-fn run_text(text: &str) -> Outcome {
-    let loaded = load_str(text, "test.yaml").unwrap_or_else(|e| panic!("{e}"));
-    simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"))
-}
-
 fn run_file(name: &str) -> Outcome {
-    run_text(&scenario_text(name))
-}
-
-fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
-    &outcome
-        .history
-        .columns
-        .iter()
-        .find(|c| c.name == name)
-        .unwrap_or_else(|| panic!("no column {name}"))
-        .values
-}
-
-fn max_abs(values: &[f64]) -> f64 {
-    values.iter().fold(0.0, |m, v| m.max(v.abs()))
+    run_yaml(&scenario_text(name))
 }
 
 /// Largest difference between two histories relative to the peak of `b`.
@@ -82,7 +65,7 @@ fn rigid_lcp_reproduces_coupled_for_a_massless_wheel() {
     let text = scenario_text("yang-yau-sprung-mass.yaml")
         .replace("  method: coupled\n", "  newmark: {alpha: 0.0}\n")
         + "contact: {type: rigid}\n";
-    let rigid = run_text(&text);
+    let rigid = run_yaml(&text);
     assert!(
         !rigid.summary.separation[0].separated,
         "no separation expected"
@@ -138,14 +121,14 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
         )
     };
     let base = 0.8 / 400.0;
-    let reference = run_text(&scene(base / 64.0, "permanent"));
+    let reference = run_yaml(&scene(base / 64.0, "permanent"));
     for name in ["mid", "sprung", "wheel"] {
         let fine = column(&reference, name);
         let mut deviations = Vec::new();
         for level in 0..4 {
             let ratio = 1usize << level;
             let dt = base / ratio as f64;
-            let rigid = run_text(&scene(dt, "rigid"));
+            let rigid = run_yaml(&scene(dt, "rigid"));
             assert!(!rigid.summary.separation[0].separated);
             let values = column(&rigid, name);
             let stride = 64 / ratio;
@@ -157,7 +140,7 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
                 / max_abs(fine);
             deviations.push(deviation);
             if level == 1 {
-                let coupled = run_text(&scene(dt, "permanent"));
+                let coupled = run_yaml(&scene(dt, "permanent"));
                 let difference = relative_difference(values, column(&coupled, name));
                 assert!(difference < 1e-5, "{name}: {difference:e} at Δt = {dt}");
             }
@@ -212,7 +195,7 @@ fn elastic_contact_converges_to_event_driven_reference() {
         solver: {time_step: DT, free_vibration: 0.2}\n";
     let mut errors = Vec::new();
     for dt in ["2.0e-4", "1.0e-4", "5.0e-5", "2.5e-5"] {
-        let outcome = run_text(&text.replace("DT", dt));
+        let outcome = run_yaml(&text.replace("DT", dt));
         let force = outcome.summary.quantities[1].max.value;
         let wheel = &outcome.summary.separation[0];
         let force_error = (force - reference_force).abs() / reference_force;
@@ -239,12 +222,12 @@ fn elastic_contact_converges_to_event_driven_reference() {
 fn rigid_is_the_limit_of_elastic() {
     let text =
         scenario_text("lcp-fig4-rigid.yaml").replace("time_step: 5.0e-5", "time_step: 1.0e-5");
-    let rigid = run_text(&text);
+    let rigid = run_yaml(&text);
     let rigid_gap = rigid.summary.separation[0].max_gap;
     let mut gap_errors = Vec::new();
     let mut deflection_errors = Vec::new();
     for ratio in ["100.0", "1000.0", "10000.0"] {
-        let elastic = run_text(&with_contact(
+        let elastic = run_yaml(&with_contact(
             &text,
             &format!("{{type: elastic, stiffness_ratio: {ratio}}}"),
         ));
@@ -277,7 +260,7 @@ fn hertz_contact() {
         "C = {c}"
     );
     let text = scenario_text("lcp-fig4-rigid.yaml");
-    let hertz = run_text(&with_contact(&text, "{type: hertz, wheel_radius: 0.43}"));
+    let hertz = run_yaml(&with_contact(&text, "{type: hertz, wheel_radius: 0.43}"));
     let load = hertz.model.static_wheel_loads[0];
     let gap0 = column(&hertz, "gap")[0];
     let static_compression = (load / c).powf(2.0 / 3.0);
@@ -286,8 +269,8 @@ fn hertz_contact() {
         "initial gap {gap0} vs −δ₀ = {}",
         -static_compression
     );
-    let stiff = run_text(&with_contact(&text, "{type: hertz, coefficient: 1.0e13}"));
-    let rigid = run_text(&text);
+    let stiff = run_yaml(&with_contact(&text, "{type: hertz, coefficient: 1.0e13}"));
+    let rigid = run_yaml(&text);
     let (a, b) = (
         stiff.summary.separation[0].max_gap,
         rigid.summary.separation[0].max_gap,
@@ -367,7 +350,7 @@ fn smooth_bridge_separates_near_the_exit() {
             ("velocity_ratio: 0.3", "velocity_ratio: 0.1"),
             ("mass_ratio: 1.0", "mass_ratio: 0.2"),
         ] {
-            let wheel = run_text(&text.replace(from, to)).summary.separation[0].clone();
+            let wheel = run_yaml(&text.replace(from, to)).summary.separation[0].clone();
             if name.contains("elastic") {
                 assert!(!wheel.separated, "{name}, {to}: separated");
             } else if wheel.separated {
@@ -473,9 +456,9 @@ fn several_vehicles_on_a_continuous_beam() {
              - {{name: span3, quantity: bridge_displacement, x: 66.0}}\n"
         )
     };
-    let coupled = run_text(&scene("{type: permanent}"));
+    let coupled = run_yaml(&scene("{type: permanent}"));
     for contact in ["{type: rigid}", "{type: elastic, stiffness: 1.0e10}"] {
-        let unilateral = run_text(&scene(contact));
+        let unilateral = run_yaml(&scene(contact));
         assert_eq!(
             unilateral.summary.separation.len(),
             2,

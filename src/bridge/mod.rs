@@ -145,12 +145,6 @@ impl ModalBridge {
         self.shapes.values_at(x, values);
     }
 
-    /// Mode values and slopes dφᵢ/dx (1/(m√kg)) at `x`; zero off the bridge.
-    #[inline]
-    pub fn mode_values_and_slopes(&self, x: f64, values: &mut [f64], slopes: &mut [f64]) {
-        self.shapes.values_and_slopes_at(x, values, slopes);
-    }
-
     /// Mode values, slopes and curvatures d²φᵢ/dx² (1/(m²√kg)) at `x`; zero
     /// off the bridge.
     #[inline]

@@ -149,7 +149,8 @@ pub fn run(
     for c in &contacts {
         contact_gaps[c.wheel] = -model.contact.compression(contact_forces[c.wheel]);
     }
-    let mut wheel_positions: Vec<f64> = (0..nw).map(|w| model.wheel_position(w, 0.0)).collect();
+    let mut wheel_positions = vec![0.0; nw];
+    model.wheel_positions(0.0, &mut wheel_positions);
 
     observer.observe(&StepView::of(
         0,
@@ -165,9 +166,7 @@ pub fn run(
     let report_every = (model.steps / 200).max(1);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
-        for (w, x) in wheel_positions.iter_mut().enumerate() {
-            *x = model.wheel_position(w, t);
-        }
+        model.wheel_positions(t, &mut wheel_positions);
         modal.predict(
             &nm,
             bridge,
