@@ -39,6 +39,9 @@ pub enum WheelKind {
 pub struct Wheel {
     /// Distance behind the vehicle's front axle, m (≥ 0).
     pub offset: f64,
+    /// Transverse offset from the vehicle's path line, m (+y to the left of
+    /// travel, i.e. toward larger deck y); 0 for single-track vehicles.
+    pub lateral: f64,
     /// Load or degree of freedom.
     pub kind: WheelKind,
 }
@@ -67,6 +70,9 @@ pub struct VehicleModel {
     pub speed: f64,
     /// Time the front axle reaches the entrance x = 0, s.
     pub entry_time: f64,
+    /// Transverse position y of the vehicle's path line on the deck, m
+    /// (measured from the deck edge y = 0; ignored on a beam).
+    pub path_y: f64,
 }
 
 impl VehicleModel {
@@ -93,6 +99,12 @@ impl VehicleModel {
     #[inline]
     pub fn wheel_position(&self, w: usize, t: f64) -> f64 {
         self.front_position(t) - self.wheels[w].offset
+    }
+
+    /// Transverse position y of wheel `w` on the deck, m.
+    #[inline]
+    pub fn wheel_y(&self, w: usize) -> f64 {
+        self.path_y + self.wheels[w].lateral
     }
 
     /// Time at which the last wheel leaves a bridge of length `length`, s.

@@ -19,6 +19,7 @@ pub fn build(v: &MovingForce) -> VehicleModel {
             }
             Wheel {
                 offset,
+                lateral: 0.0,
                 kind: WheelKind::Load(load),
             }
         })
@@ -32,5 +33,6 @@ pub fn build(v: &MovingForce) -> VehicleModel {
         wheels,
         speed: v.speed,
         entry_time: v.entry_time,
+        path_y: 0.0,
     }
 }

@@ -26,9 +26,11 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
         ]),
         wheels: vec![Wheel {
             offset: 0.0,
+            lateral: 0.0,
             kind: WheelKind::Dof(1),
         }],
         speed: v.speed,
         entry_time: v.entry_time,
+        path_y: 0.0,
     }
 }
