@@ -77,6 +77,9 @@ pub struct Model {
     pub contact: ContactLaw,
     /// Every wheel of every vehicle, flattened in vehicle order.
     pub wheels: Vec<WheelRef>,
+    /// Transverse position y of every flattened wheel on the deck, m
+    /// (constant: vehicles keep their lane).
+    pub wheel_y: Vec<f64>,
     /// Static wheel loads on level ground, N, per flattened wheel: the load of
     /// a moving force, or the contact force of the vehicle's static equilibrium.
     pub static_wheel_loads: Vec<f64>,
@@ -109,6 +112,7 @@ impl Model {
         };
         let mut wheels = Vec::new();
         let mut static_wheel_loads = Vec::new();
+        let mut wheel_y = Vec::new();
         for (v, vehicle) in vehicles.iter().enumerate() {
             let (_, forces) = vehicle.static_equilibrium(v + 1, &|f| contact.compression(f))?;
             for (w, wheel) in vehicle.wheels.iter().enumerate() {
@@ -116,6 +120,7 @@ impl Model {
                     vehicle: v,
                     wheel: w,
                 });
+                wheel_y.push(vehicle.wheel_y(w));
                 static_wheel_loads.push(match wheel.kind {
                     WheelKind::Load(load) => load,
                     WheelKind::Dof(_) => forces[w],
@@ -133,6 +138,7 @@ impl Model {
             profile: Profile::build(&scenario.surface),
             contact,
             wheels,
+            wheel_y,
             static_wheel_loads,
             time_step,
             steps,

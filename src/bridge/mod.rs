@@ -139,18 +139,20 @@ impl ModalBridge {
         (0.0..=self.length).contains(&x)
     }
 
-    /// Mode values φᵢ(x) (1/√kg) of every kept mode at `x`; zero off the bridge.
+    /// Mode values φᵢ(x, y) (1/√kg) of every kept mode at `x` along the
+    /// bridge and `y` across it (m; a beam ignores `y`); zero off the bridge.
     #[inline]
-    pub fn mode_values(&self, x: f64, values: &mut [f64]) {
+    pub fn mode_values(&self, x: f64, _y: f64, values: &mut [f64]) {
         self.shapes.values_at(x, values);
     }
 
-    /// Mode values, slopes and curvatures d²φᵢ/dx² (1/(m²√kg)) at `x`; zero
-    /// off the bridge.
+    /// Mode values, slopes ∂φᵢ/∂x and curvatures ∂²φᵢ/∂x² (1/(m²√kg)) at
+    /// (x, y), derivatives along the bridge; zero off the bridge.
     #[inline]
     pub fn mode_values_slopes_curvatures(
         &self,
         x: f64,
+        _y: f64,
         values: &mut [f64],
         slopes: &mut [f64],
         curvatures: &mut [f64],

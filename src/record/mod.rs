@@ -123,7 +123,7 @@ impl<'m> Recorder<'m> {
                 Quantity::BridgeDisplacement | Quantity::BridgeAcceleration => {
                     let x = record.x.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
-                    model.bridge.mode_values(x, &mut shape);
+                    model.bridge.mode_values(x, 0.0, &mut shape);
                     if record.quantity == Quantity::BridgeDisplacement {
                         let influence = model.bridge.influence_line(x)?;
                         (Probe::BridgeDisplacement { shape, influence }, "m", lead)

@@ -118,7 +118,7 @@ pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
         points.push(x);
     }
     for x in points {
-        bridge.mode_values(x, &mut values);
+        bridge.mode_values(x, 0.0, &mut values);
         out.push_str(&number(x));
         for v in &values {
             out.push(',');

@@ -37,7 +37,7 @@ impl Guard {
         let mut peak = vec![0.0f64; modes];
         let mut values = vec![0.0; modes];
         for &x in bridge.node_x() {
-            bridge.mode_values(x, &mut values);
+            bridge.mode_values(x, 0.0, &mut values);
             for (p, v) in peak.iter_mut().zip(&values) {
                 *p = p.max(v.abs());
             }

@@ -15,6 +15,7 @@ pub mod lcp;
 pub mod modal;
 pub mod newmark;
 pub mod partition;
+pub mod permanent;
 pub mod unilateral;
 
 use nalgebra::DVector;

@@ -76,17 +76,18 @@ impl ModalStep {
     }
 
     /// Forms the predictor q* for a step with the given moving loads
-    /// (position x in m, downward load in N; loads off the deck are ignored).
+    /// (position x along and y across the deck in m, downward load in N;
+    /// loads off the deck are ignored).
     pub fn predict(
         &mut self,
         nm: &Newmark,
         bridge: &ModalBridge,
-        loads: impl Iterator<Item = (f64, f64)>,
+        loads: impl Iterator<Item = (f64, f64, f64)>,
     ) {
         self.current_force.fill(0.0);
-        for (x, load) in loads {
+        for (x, y, load) in loads {
             if bridge.is_on(x) {
-                bridge.mode_values(x, &mut self.shape_work);
+                bridge.mode_values(x, y, &mut self.shape_work);
                 for (f, phi) in self.current_force.iter_mut().zip(&self.shape_work) {
                     *f -= load * phi;
                 }

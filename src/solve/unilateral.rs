@@ -172,7 +172,7 @@ pub fn run(
             bridge,
             load_wheels
                 .iter()
-                .map(|&(flat, load)| (wheel_positions[flat], load)),
+                .map(|&(flat, load)| (wheel_positions[flat], model.wheel_y[flat], load)),
         );
         // Vehicle predictors u* = K̂⁻¹R̂ with
         // R̂ = f_g − αEλₙ + M hₐ + (1+α)C h_v + α(C u̇ₙ + K uₙ).
@@ -212,7 +212,7 @@ pub fn run(
         for (c, contact) in contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
             let phi = &mut shapes[c * modes..(c + 1) * modes];
-            bridge.mode_values(x, phi);
+            bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
             let scaled_c = &mut scaled[c * modes..(c + 1) * modes];
             for i in 0..modes {
                 scaled_c[i] = phi[i] * modal.contact_flexibility[i];
@@ -331,6 +331,7 @@ pub fn run(
                 let x = wheel_positions[contact.wheel];
                 bridge.mode_values_slopes_curvatures(
                     x,
+                    model.wheel_y[contact.wheel],
                     &mut landing_values,
                     &mut landing_slopes,
                     &mut landing_curvatures,

@@ -1,0 +1,299 @@
+//! The permanent-contact step shared by the `coupled` and `iterative`
+//! solvers.
+//!
+//! A wheel at x(t) = v t + x₀ (and fixed transverse position y) on a deck
+//! with deflection w = Σ φᵢ(x, y) qᵢ and roughness r(x) moves with
+//! u_w = φ·q + r,  u̇_w = φ·q̇ + v(φ′·q + r′),
+//! ü_w = φ·q̈ + 2v φ′·q̇ + v²(φ″·q + r″)   (′ = ∂/∂x along the path),
+//! as in the "traditional permanent contact model" of the LCP separation
+//! paper (Section 2) and Yang & Yau (1997). Within a Newmark step the bridge
+//! gives q = q* − DΦᵀλ (D = diag((1+α)/k̂ᵢ), λ the contact forces,
+//! compression positive), so each wheel's displacement, velocity and
+//! acceleration are affine in λ; each vehicle's condensed wheel rows
+//! ([`super::partition`]) give λ back from the wheel kinematics. The two
+//! solvers differ only in how they close that loop: `coupled` solves the
+//! linear system at once, `iterative` alternates the two subsystems.
+
+use super::modal::ModalStep;
+use super::newmark::Newmark;
+use super::partition::Partition;
+use super::{SolveError, VehicleState};
+use crate::model::Model;
+use crate::vehicle::WheelKind;
+
+/// A wheel that rides the surface through a vehicle DOF.
+#[derive(Debug, Clone, Copy)]
+pub struct ContactWheel {
+    /// Flattened wheel index.
+    pub wheel: usize,
+    /// Vehicle index.
+    pub vehicle: usize,
+    /// The wheel's DOF in its vehicle.
+    pub dof: usize,
+    /// Vehicle speed, m/s.
+    pub speed: f64,
+    /// Transverse position on the deck, m.
+    pub y: f64,
+}
+
+/// Mode shape data of one contact point at the current step.
+#[derive(Debug, Clone)]
+pub struct ContactShapes {
+    /// φᵢ at the contact, 1/√kg.
+    pub values: Vec<f64>,
+    /// ∂φᵢ/∂x, 1/(m√kg).
+    pub slopes: Vec<f64>,
+    /// ∂²φᵢ/∂x², 1/(m²√kg).
+    pub curvatures: Vec<f64>,
+    /// (1+α)φ/k̂, elementwise: modal response to a unit contact force.
+    pub scaled: Vec<f64>,
+    /// P₁ = a₁φ + vφ′: the velocity row acting on q_{n+1}.
+    pub velocity_row: Vec<f64>,
+    /// P₂ = a₀φ + 2va₁φ′ + v²φ″: the acceleration row acting on q_{n+1}.
+    pub acceleration_row: Vec<f64>,
+}
+
+impl ContactShapes {
+    fn new(modes: usize) -> Self {
+        Self {
+            values: vec![0.0; modes],
+            slopes: vec![0.0; modes],
+            curvatures: vec![0.0; modes],
+            scaled: vec![0.0; modes],
+            velocity_row: vec![0.0; modes],
+            acceleration_row: vec![0.0; modes],
+        }
+    }
+}
+
+/// Dot product.
+#[inline]
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Contact wheels, vehicle partitions and states, and the per-step work
+/// arrays of a permanent-contact run. Nothing is allocated per step.
+#[derive(Debug, Clone)]
+pub struct PermanentContacts {
+    /// Contact wheels in flattened order.
+    pub contacts: Vec<ContactWheel>,
+    /// Moving loads: (flattened wheel, load N).
+    pub load_wheels: Vec<(usize, f64)>,
+    /// Global contact indices of each vehicle's wheels.
+    pub contact_of: Vec<Vec<usize>>,
+    /// Each vehicle's condensation.
+    pub partitions: Vec<Partition>,
+    /// Each vehicle's state.
+    pub states: Vec<VehicleState>,
+    /// Shapes at each contact this step.
+    pub shapes: Vec<ContactShapes>,
+    /// Wheel kinematics at λ = 0: [displacement m, velocity m/s, acceleration m/s²].
+    pub base: Vec<[f64; 3]>,
+    /// Modal correction −DΦᵀλ work vector.
+    correction: Vec<f64>,
+}
+
+impl PermanentContacts {
+    /// Splits the model's wheels and vehicles for a Newmark scheme `nm`.
+    pub fn new(model: &Model, nm: &Newmark) -> Result<Self, SolveError> {
+        let modes = model.bridge.mode_count();
+        let mut contacts = Vec::new();
+        let mut load_wheels = Vec::new();
+        let mut wheel_dofs: Vec<Vec<usize>> = vec![Vec::new(); model.vehicles.len()];
+        for (flat, r) in model.wheels.iter().enumerate() {
+            let vehicle = &model.vehicles[r.vehicle];
+            match vehicle.wheels[r.wheel].kind {
+                WheelKind::Dof(dof) => {
+                    contacts.push(ContactWheel {
+                        wheel: flat,
+                        vehicle: r.vehicle,
+                        dof,
+                        speed: vehicle.speed,
+                        y: model.wheel_y[flat],
+                    });
+                    wheel_dofs[r.vehicle].push(dof);
+                }
+                WheelKind::Load(load) => load_wheels.push((flat, load)),
+            }
+        }
+        let nc = contacts.len();
+        let contact_of = (0..model.vehicles.len())
+            .map(|v| (0..nc).filter(|&c| contacts[c].vehicle == v).collect())
+            .collect();
+        let mut states = Vec::with_capacity(model.vehicles.len());
+        let mut partitions = Vec::with_capacity(model.vehicles.len());
+        for (v, vehicle) in model.vehicles.iter().enumerate() {
+            let partition = Partition::new(vehicle, wheel_dofs[v].clone(), nm).ok_or_else(
+                || SolveError::SingularContact {
+                    time: 0.0,
+                    reason: format!(
+                        "vehicle {} has a singular effective stiffness once its wheels are held",
+                        v + 1
+                    ),
+                },
+            )?;
+            states.push(VehicleState::at_rest(model, v));
+            partitions.push(partition);
+        }
+        Ok(Self {
+            shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
+            base: vec![[0.0; 3]; nc],
+            correction: vec![0.0; modes],
+            contacts,
+            load_wheels,
+            contact_of,
+            partitions,
+            states,
+        })
+    }
+
+    /// Number of contact wheels.
+    pub fn count(&self) -> usize {
+        self.contacts.len()
+    }
+
+    /// Begins a step at the given wheel positions: the bridge predictor with
+    /// the moving loads, each contact's shape rows and λ = 0 kinematics, and
+    /// each vehicle's condensed wheel rows from its state at tₙ and the
+    /// previous contact forces. Cost O(modes·(loads + contacts)) + O(Σ dofᵥ²).
+    pub fn begin_step(
+        &mut self,
+        model: &Model,
+        nm: &Newmark,
+        modal: &mut ModalStep,
+        wheel_positions: &[f64],
+        contact_forces: &[f64],
+    ) {
+        let bridge = &model.bridge;
+        modal.predict(
+            nm,
+            bridge,
+            self.load_wheels
+                .iter()
+                .map(|&(flat, load)| (wheel_positions[flat], model.wheel_y[flat], load)),
+        );
+        let (q_star, inertia_history, damping_history) = (
+            &modal.predictor,
+            &modal.inertia_history,
+            &modal.damping_history,
+        );
+        for (c, contact) in self.contacts.iter().enumerate() {
+            let x = wheel_positions[contact.wheel];
+            let v = contact.speed;
+            let s = &mut self.shapes[c];
+            bridge.mode_values_slopes_curvatures(
+                x,
+                contact.y,
+                &mut s.values,
+                &mut s.slopes,
+                &mut s.curvatures,
+            );
+            for i in 0..s.values.len() {
+                s.scaled[i] = s.values[i] * modal.contact_flexibility[i];
+                s.velocity_row[i] = nm.a1 * s.values[i] + v * s.slopes[i];
+                s.acceleration_row[i] =
+                    nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
+            }
+            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            self.base[c] = [
+                dot(&s.values, q_star) + r,
+                dot(&s.velocity_row, q_star) - dot(&s.values, damping_history) + v * dr,
+                dot(&s.acceleration_row, q_star)
+                    - dot(&s.values, inertia_history)
+                    - 2.0 * v * dot(&s.slopes, damping_history)
+                    + v * v * ddr,
+            ];
+        }
+        for (v, partition) in self.partitions.iter_mut().enumerate() {
+            let state = &self.states[v];
+            partition.begin_step(
+                nm,
+                &state.displacement,
+                &state.velocity,
+                &state.acceleration,
+                self.contact_of[v]
+                    .iter()
+                    .map(|&c| contact_forces[self.contacts[c].wheel]),
+            );
+        }
+    }
+
+    /// The vehicles' answer to prescribed wheel kinematics: the contact force
+    /// of each wheel, λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W (N), written to `forces`.
+    /// Cost O(Σ wheelsᵥ²).
+    pub fn vehicle_forces(&self, kinematics: &[[f64; 3]], forces: &mut [f64]) {
+        for (v, partition) in self.partitions.iter().enumerate() {
+            for (a, &c) in self.contact_of[v].iter().enumerate() {
+                let mut force = partition.base_forces[a];
+                for (b, &cb) in self.contact_of[v].iter().enumerate() {
+                    force += partition.condensed_mass[(a, b)] * kinematics[cb][2]
+                        + partition.condensed_damping[(a, b)] * kinematics[cb][1]
+                        + partition.condensed_stiffness[(a, b)] * kinematics[cb][0];
+                }
+                forces[c] = force;
+            }
+        }
+    }
+
+    /// The bridge's answer to contact forces `forces` (N): each wheel's
+    /// displacement, velocity and acceleration at t_{n+1}, written to
+    /// `kinematics`, through q = q* − DΦᵀλ. Cost O(modes·contacts).
+    pub fn bridge_kinematics(&mut self, forces: &[f64], kinematics: &mut [[f64; 3]]) {
+        self.correction.fill(0.0);
+        for (s, &force) in self.shapes.iter().zip(forces) {
+            for (dq, scaled) in self.correction.iter_mut().zip(&s.scaled) {
+                *dq -= scaled * force;
+            }
+        }
+        for (c, s) in self.shapes.iter().enumerate() {
+            let base = self.base[c];
+            kinematics[c] = [
+                base[0] + dot(&s.values, &self.correction),
+                base[1] + dot(&s.velocity_row, &self.correction),
+                base[2] + dot(&s.acceleration_row, &self.correction),
+            ];
+        }
+    }
+
+    /// Ends the step with contact forces `forces` (N, contact order): the
+    /// bridge takes them, the wheels follow the surface exactly, the free
+    /// vehicle DOFs are solved, and `contact_forces` (flattened wheels) is
+    /// updated.
+    pub fn finish_step(
+        &mut self,
+        model: &Model,
+        nm: &Newmark,
+        modal: &mut ModalStep,
+        wheel_positions: &[f64],
+        forces: &[f64],
+        contact_forces: &mut [f64],
+    ) {
+        for (c, s) in self.shapes.iter().enumerate() {
+            modal.apply_contact(&s.values, forces[c]);
+        }
+        modal.finish(nm);
+        let (q, qd, qdd) = (&modal.displacement, &modal.velocity, &modal.acceleration);
+        for (c, contact) in self.contacts.iter().enumerate() {
+            let s = &self.shapes[c];
+            let x = wheel_positions[contact.wheel];
+            let v = contact.speed;
+            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            let (w, wx, wxx) = (dot(&s.values, q), dot(&s.slopes, q), dot(&s.curvatures, q));
+            let state = &mut self.states[contact.vehicle];
+            state.displacement[contact.dof] = w + r;
+            state.velocity[contact.dof] = dot(&s.values, qd) + v * (wx + dr);
+            state.acceleration[contact.dof] =
+                dot(&s.values, qdd) + 2.0 * v * dot(&s.slopes, qd) + v * v * (wxx + ddr);
+            contact_forces[contact.wheel] = forces[c];
+        }
+        for (state, partition) in self.states.iter_mut().zip(self.partitions.iter_mut()) {
+            partition.finish_step(
+                nm,
+                &mut state.displacement,
+                &mut state.velocity,
+                &mut state.acceleration,
+            );
+        }
+    }
+}
