@@ -5,7 +5,7 @@
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
-use crate::scenario::resolved::{Contact, Scenario};
+use crate::scenario::resolved::{Contact, Iteration, Scenario, SolverMethod};
 use crate::surface::Profile;
 use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
 
@@ -93,6 +93,10 @@ pub struct Model {
     pub gamma: f64,
     /// HHT α (0 = plain Newmark).
     pub alpha: f64,
+    /// Solution method.
+    pub method: SolverMethod,
+    /// Convergence settings of the `iterative` method.
+    pub iteration: Iteration,
 }
 
 impl Model {
@@ -145,6 +149,8 @@ impl Model {
             beta: scenario.solver.newmark.beta,
             gamma: scenario.solver.newmark.gamma,
             alpha: scenario.solver.newmark.alpha,
+            method: scenario.solver.method,
+            iteration: scenario.solver.iteration.unwrap_or_default(),
         })
     }
 

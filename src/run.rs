@@ -155,10 +155,10 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     let Loaded { scenario, bridge } = loaded;
     let model = Model::build(&scenario, bridge)?;
     let mut recorder = Recorder::new(&model, &scenario.record).map_err(BuildError::from)?;
-    solve::run(&model, &mut recorder, progress)?;
+    let stats = solve::run(&model, &mut recorder, progress)?;
     let history = recorder.finish();
     let wall_time = start.elapsed().as_secs_f64();
-    let summary = Summary::new(&scenario.name, &model, &history, wall_time);
+    let summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
     Ok(Outcome {
         model,
         history,

@@ -4,7 +4,9 @@ use serde::Serialize;
 
 use crate::model::Model;
 use crate::record::{Column, History, WheelSeparation};
-use crate::scenario::resolved::Quantity;
+use crate::scenario::resolved::{Quantity, SolverMethod};
+use crate::solve::SolveStats;
+use crate::solve::iterative::IterationStats;
 
 /// An extreme value and where it happened.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -72,6 +74,9 @@ pub struct RunInfo {
     pub frequencies: Vec<f64>,
     /// How the DAF's static reference is computed.
     pub static_reference: &'static str,
+    /// `iterative` solver: vehicle–bridge iterations per time step.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub iterations: Option<IterationStats>,
 }
 
 /// The whole summary.
@@ -120,7 +125,13 @@ fn extreme(
 
 impl Summary {
     /// Builds the summary of a finished run.
-    pub fn new(name: &str, model: &Model, history: &History, wall_time: f64) -> Self {
+    pub fn new(
+        name: &str,
+        model: &Model,
+        history: &History,
+        stats: &SolveStats,
+        wall_time: f64,
+    ) -> Self {
         let quantities = history
             .columns
             .iter()
@@ -164,10 +175,10 @@ impl Summary {
             scenario: name.to_string(),
             run: RunInfo {
                 vbi_version: env!("CARGO_PKG_VERSION"),
-                solver: if model.contact.is_unilateral() {
-                    "lcp"
-                } else {
-                    "coupled"
+                solver: match model.method {
+                    SolverMethod::Coupled => "coupled",
+                    SolverMethod::Iterative => "iterative",
+                    SolverMethod::Lcp => "lcp",
                 },
                 contact: match model.contact {
                     crate::model::ContactLaw::Permanent => "permanent",
@@ -184,6 +195,7 @@ impl Summary {
                 modes_selection: model.bridge.selection.clone(),
                 frequencies: model.bridge.frequencies(),
                 static_reference: STATIC_REFERENCE,
+                iterations: stats.iterations,
             },
             quantities,
             separation: history.separation.clone(),

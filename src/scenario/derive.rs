@@ -234,21 +234,63 @@ pub(super) fn resolve_method(
     match method {
         None => needed,
         Some(m) if m == needed => m,
-        Some(SolverMethod::Coupled) => {
+        Some(SolverMethod::Iterative) if !contact.is_unilateral() => SolverMethod::Iterative,
+        Some(SolverMethod::Coupled | SolverMethod::Iterative) => {
             ck.error(
                 "solver.method",
-                "`method: coupled` keeps every wheel in permanent contact; unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
+                "`method: coupled` and `method: iterative` keep every wheel in permanent contact; unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
             );
             needed
         }
         Some(SolverMethod::Lcp) => {
             ck.error(
                 "solver.method",
-                "`method: lcp` solves unilateral contact; with `contact: {type: permanent}` use `method: coupled`",
+                "`method: lcp` solves unilateral contact; with `contact: {type: permanent}` use `method: coupled` or `method: iterative`",
             );
             needed
         }
     }
+}
+
+/// Convergence settings: only for `method: iterative`.
+pub(super) fn resolve_iteration(
+    solver: &raw::SolverRaw,
+    method: SolverMethod,
+    ck: &mut Checker<'_>,
+) -> Option<Iteration> {
+    if method != SolverMethod::Iterative {
+        for (key, given) in [
+            ("tolerance", solver.tolerance.is_some()),
+            ("max_iterations", solver.max_iterations.is_some()),
+        ] {
+            if given {
+                ck.error(
+                    &format!("solver.{key}"),
+                    format!("`{key}` applies to `method: iterative` only"),
+                );
+            }
+        }
+        return None;
+    }
+    let defaults = Iteration::default();
+    let tolerance = solver.tolerance.unwrap_or(defaults.tolerance);
+    if !(tolerance > 0.0 && tolerance < 1.0) {
+        ck.error(
+            "solver.tolerance",
+            format!("the iteration tolerance must be in (0, 1), got {tolerance}"),
+        );
+    }
+    let max_iterations = solver.max_iterations.unwrap_or(defaults.max_iterations);
+    if !(1..=100_000).contains(&max_iterations) {
+        ck.error(
+            "solver.max_iterations",
+            format!("`max_iterations` must be between 1 and 100000, got {max_iterations}"),
+        );
+    }
+    Some(Iteration {
+        tolerance,
+        max_iterations,
+    })
 }
 
 fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &raw::GridRaw) {

@@ -339,7 +339,7 @@ pub enum TreadProfile {
 }
 
 /// Time integration settings.
-#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SolverRaw {
     /// Solution method. Default: `coupled` for permanent contact, `lcp` for
@@ -359,6 +359,15 @@ pub struct SolverRaw {
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
     #[serde(default)]
     pub free_vibration: Option<f64>,
+    /// `method: iterative` only: relative tolerance ε on the contact
+    /// displacements between iterations, max|Δw| ≤ ε·max|w| (the plate paper's
+    /// Eq. 32; dimensionless). Default 1e-8.
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+    /// `method: iterative` only: most iterations allowed in one time step
+    /// before the run stops with an error. Default 100.
+    #[serde(default)]
+    pub max_iterations: Option<usize>,
 }
 
 /// Solution method.
@@ -372,6 +381,13 @@ pub enum SolverMethod {
     /// the contact forces found from a linear complementarity problem per step
     /// (Lemke's method).
     Lcp,
+    /// Permanent contact by the uncoupled scheme of the plate-deck paper
+    /// (Section 2.5): in every step the vehicles and the bridge are solved
+    /// separately and the interaction forces iterated (with Aitken
+    /// relaxation) until the contact displacements change by less than
+    /// `tolerance`. Converges to the `coupled` solution; the summary reports
+    /// the iterations per step.
+    Iterative,
 }
 
 /// Newmark-β parameters, with the Hilber–Hughes–Taylor α for numerical

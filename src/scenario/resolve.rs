@@ -5,7 +5,9 @@
 //! are reported together, like a compiler.
 
 use super::content;
-use super::derive::{derive_dimensionless, resolve_contact, resolve_method, resolve_study};
+use super::derive::{
+    derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
+};
 use super::diagnostic::Diagnostic;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
@@ -94,12 +96,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let bridge = resolve_bridge(&raw.bridge, ck);
     let vehicles = resolve_vehicles(&raw.vehicles, ck);
     let surface = resolve_surface(raw.surface.as_ref(), ck);
-    let solver_raw = raw.solver.clone().unwrap_or(raw::SolverRaw {
-        method: None,
-        time_step: None,
-        newmark: None,
-        free_vibration: None,
-    });
+    let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
         gamma: None,
@@ -213,6 +210,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     }
 
     let method = resolve_method(solver_raw.method, &contact, ck);
+    let iteration = resolve_iteration(&solver_raw, method, ck);
     let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
@@ -230,6 +228,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
             time_step,
             newmark,
             free_vibration,
+            iteration,
         },
         record,
         study,

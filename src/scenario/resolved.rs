@@ -300,6 +300,27 @@ pub struct Solver {
     pub newmark: Newmark,
     /// Free vibration after the last axle leaves, s.
     pub free_vibration: f64,
+    /// Convergence settings (`iterative` only).
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub iteration: Option<Iteration>,
+}
+
+/// Convergence settings of the `iterative` solver.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Iteration {
+    /// Relative tolerance on the contact displacements, dimensionless.
+    pub tolerance: f64,
+    /// Most iterations per step.
+    pub max_iterations: usize,
+}
+
+impl Default for Iteration {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-8,
+            max_iterations: 100,
+        }
+    }
 }
 
 /// Newmark-β parameters.

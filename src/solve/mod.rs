@@ -11,6 +11,7 @@
 pub mod coupled;
 pub mod dense;
 pub mod guard;
+pub mod iterative;
 pub mod lcp;
 pub mod modal;
 pub mod newmark;
@@ -22,6 +23,7 @@ use nalgebra::DVector;
 use thiserror::Error;
 
 use crate::model::Model;
+use crate::scenario::resolved::SolverMethod;
 
 /// Errors of the solve stage.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -45,6 +47,20 @@ pub enum SolveError {
         time: f64,
         /// Vehicle front positions, formatted.
         positions: String,
+        /// Explanation.
+        reason: String,
+    },
+    /// The iterative solver's vehicle–bridge iteration did not converge.
+    #[error(
+        "the vehicle–bridge iteration did not converge at t = {time:.6} s ({positions}) after {iterations} iteration(s): {reason}"
+    )]
+    NotConverged {
+        /// Time, s.
+        time: f64,
+        /// Vehicle front positions, formatted.
+        positions: String,
+        /// Iterations done in that step.
+        iterations: usize,
         /// Explanation.
         reason: String,
     },
@@ -138,16 +154,27 @@ pub trait Observer {
     fn observe(&mut self, view: &StepView<'_>);
 }
 
-/// Integrates the model with the solver its contact law needs.
+/// What a solver reports about its own work over a run.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SolveStats {
+    /// Vehicle–bridge iterations per step (the `iterative` solver only).
+    pub iterations: Option<iterative::IterationStats>,
+}
+
+/// Integrates the model with its solver method.
 pub fn run(
     model: &Model,
     observer: &mut dyn Observer,
     progress: Progress<'_>,
-) -> Result<(), SolveError> {
-    if model.contact.is_unilateral() {
-        unilateral::run(model, observer, progress)
-    } else {
-        coupled::run(model, observer, progress)
+) -> Result<SolveStats, SolveError> {
+    match model.method {
+        SolverMethod::Iterative => iterative::run(model, observer, progress),
+        SolverMethod::Lcp => {
+            unilateral::run(model, observer, progress).map(|()| SolveStats::default())
+        }
+        SolverMethod::Coupled => {
+            coupled::run(model, observer, progress).map(|()| SolveStats::default())
+        }
     }
 }
 
