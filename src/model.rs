@@ -102,7 +102,7 @@ pub struct Model {
 impl Model {
     /// Builds the model. `bridge` is the modal bridge made while resolving
     /// (modes must be known to fill defaults), so it is not built twice.
-    pub fn build(scenario: &Scenario, bridge: ModalBridge) -> Result<Self, BuildError> {
+    pub fn build(scenario: &Scenario, mut bridge: ModalBridge) -> Result<Self, BuildError> {
         let vehicles: Vec<VehicleModel> = scenario
             .vehicles
             .iter()
@@ -131,6 +131,9 @@ impl Model {
                 });
             }
         }
+        // Wheels keep their lanes: evaluate the plate's modes along them as
+        // cheaply as along a beam.
+        bridge.prepare_lines(&wheel_y);
         let end_time = end_time(scenario, &vehicles, bridge.length);
         let time_step = scenario.solver.time_step;
         // A step count that reaches the end time; the last step may overshoot

@@ -8,6 +8,7 @@
 pub mod beam;
 pub mod eigen;
 pub mod hermite;
+pub mod plate;
 
 use std::f64::consts::PI;
 
@@ -15,6 +16,7 @@ use thiserror::Error;
 
 use self::beam::BeamModel;
 use self::hermite::HermiteField;
+use self::plate::PlateModes;
 use crate::scenario::resolved::{Bridge, Modes};
 
 /// Errors while building a bridge model.
@@ -64,10 +66,26 @@ pub struct ModalBridge {
     pub available_modes: usize,
     /// How the kept modes were chosen, in words (for the summary).
     pub selection: String,
-    /// Mass-normalised mode shapes (1/√kg), one component per kept mode.
-    shapes: HermiteField,
-    /// The finite-element model, kept for static influence lines.
-    model: BeamModel,
+    /// The mode shapes of the bridge type.
+    shapes: Shapes,
+}
+
+/// Mode shapes of each bridge type.
+#[derive(Debug, Clone)]
+enum Shapes {
+    /// A beam: the kept modes as one Hermite field (1/√kg), and the
+    /// finite-element model for static influence lines.
+    Beam {
+        shapes: HermiteField,
+        model: BeamModel,
+    },
+    /// A plate: the Ritz modes, and the kept modes along the lines the
+    /// wheels and records use (exact y match), so a point on such a line
+    /// costs what a beam point costs.
+    Plate {
+        modes: PlateModes,
+        lines: Vec<(f64, HermiteField)>,
+    },
 }
 
 impl ModalBridge {
@@ -75,40 +93,101 @@ impl ModalBridge {
     ///
     /// Cost: assembling is O(elements); the dense eigen solve O(dofs³).
     pub fn build(bridge: &Bridge) -> Result<Self, BridgeError> {
-        match bridge {
+        let modes = bridge.modes();
+        let selection = match (modes.count, modes.max_frequency) {
+            (Some(n), None) => format!("requested: the lowest {n} modes"),
+            (None, Some(f)) => format!("requested: every mode up to {f} Hz"),
+            (Some(n), Some(f)) => format!("requested: the lowest {n} modes, up to {f} Hz"),
+            (None, None) => "every mode the model offers".into(),
+        };
+        let mut supports = vec![0.0];
+        let mut x = 0.0;
+        for span in bridge.spans() {
+            x += span;
+            supports.push(x);
+        }
+        let (mut omegas, available, shapes) = match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam);
                 let available = model.free_dofs();
-                let (mut omegas, vectors) = model.eigen()?;
-                let count = select_count(&beam.modes, &omegas)?;
-                omegas.truncate(count);
+                let (omegas, vectors) = model.eigen()?;
+                let count = select_count(modes, &omegas)?;
                 let shapes = model.shapes(&vectors, count);
-                let damping_ratios = omegas.iter().map(|&w| beam.damping.ratio_at(w)).collect();
-                let mut supports = vec![0.0];
-                let mut x = 0.0;
-                for span in &beam.spans {
-                    x += span;
-                    supports.push(x);
+                (omegas, available, Shapes::Beam { shapes, model })
+            }
+            Bridge::Plate(plate) => {
+                let (mut plate_modes, omegas) = PlateModes::build(plate)?;
+                let available = plate_modes.available();
+                let count = select_count(modes, &omegas)?;
+                plate_modes.truncate(count);
+                let shapes = Shapes::Plate {
+                    modes: plate_modes,
+                    lines: Vec::new(),
+                };
+                (omegas, available, shapes)
+            }
+        };
+        let count = select_count(modes, &omegas)?;
+        omegas.truncate(count);
+        let damping = match bridge {
+            Bridge::Beam(beam) => &beam.damping,
+            Bridge::Plate(plate) => &plate.damping,
+        };
+        let damping_ratios = omegas.iter().map(|&w| damping.ratio_at(w)).collect();
+        Ok(Self {
+            length: x,
+            supports,
+            circular_frequencies: omegas,
+            damping_ratios,
+            available_modes: available,
+            selection,
+            shapes,
+        })
+    }
+
+    /// Makes evaluation along the deck lines `ys` (m) as cheap as on a beam
+    /// (a plate caches the kept modes along each line; a beam ignores this).
+    pub fn prepare_lines(&mut self, ys: &[f64]) {
+        if let Shapes::Plate { modes, lines } = &mut self.shapes {
+            for &y in ys {
+                if !lines.iter().any(|(line_y, _)| *line_y == y) {
+                    lines.push((y, modes.line(y)));
                 }
-                Ok(Self {
-                    length: x,
-                    supports,
-                    circular_frequencies: omegas,
-                    damping_ratios,
-                    available_modes: available,
-                    selection: match (beam.modes.count, beam.modes.max_frequency) {
-                        (Some(n), None) => format!("requested: the lowest {n} modes"),
-                        (None, Some(f)) => format!("requested: every mode up to {f} Hz"),
-                        (Some(n), Some(f)) => {
-                            format!("requested: the lowest {n} modes, up to {f} Hz")
-                        }
-                        (None, None) => "every mode the mesh offers".into(),
-                    },
-                    shapes,
-                    model,
-                })
             }
         }
+    }
+
+    /// Deck width, m (`None` for a beam).
+    pub fn width(&self) -> Option<f64> {
+        match &self.shapes {
+            Shapes::Beam { .. } => None,
+            Shapes::Plate { modes, .. } => Some(modes.width),
+        }
+    }
+
+    /// Character of kept mode `mode` (from 0), in words: a beam mode's
+    /// number, or a plate mode's dominant (longitudinal, transverse) term.
+    pub fn mode_character(&self, mode: usize) -> String {
+        match &self.shapes {
+            Shapes::Beam { .. } => format!("bending {}", mode + 1),
+            Shapes::Plate { modes, .. } => {
+                let (m, n) = modes.character(mode);
+                format!("({m}, {n})")
+            }
+        }
+    }
+
+    /// Points (x, y), m, at which the mode shapes reach about their peaks:
+    /// the mesh nodes, on a plate along both edges and the centre line.
+    pub fn sample_points(&self) -> Vec<(f64, f64)> {
+        let ys = match self.width() {
+            None => vec![0.0],
+            Some(b) => vec![0.0, 0.5 * b, b],
+        };
+        self.node_x()
+            .iter()
+            .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
+            .collect()
     }
 
     /// Keeps only the lowest `count` modes, recording why.
@@ -116,7 +195,15 @@ impl ModalBridge {
         let count = count.clamp(1, self.mode_count());
         self.circular_frequencies.truncate(count);
         self.damping_ratios.truncate(count);
-        self.shapes = self.shapes.truncated(count);
+        match &mut self.shapes {
+            Shapes::Beam { shapes, .. } => *shapes = shapes.truncated(count),
+            Shapes::Plate { modes, lines } => {
+                modes.truncate(count);
+                for (_, line) in lines.iter_mut() {
+                    *line = line.truncated(count);
+                }
+            }
+        }
         self.selection = selection;
     }
 
@@ -142,8 +229,14 @@ impl ModalBridge {
     /// Mode values φᵢ(x, y) (1/√kg) of every kept mode at `x` along the
     /// bridge and `y` across it (m; a beam ignores `y`); zero off the bridge.
     #[inline]
-    pub fn mode_values(&self, x: f64, _y: f64, values: &mut [f64]) {
-        self.shapes.values_at(x, values);
+    pub fn mode_values(&self, x: f64, y: f64, values: &mut [f64]) {
+        match &self.shapes {
+            Shapes::Beam { shapes, .. } => shapes.values_at(x, values),
+            Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
+                Some((_, line)) => line.values_at(x, values),
+                None => modes.values_at(x, y, values),
+            },
+        }
     }
 
     /// Mode values, slopes ∂φᵢ/∂x and curvatures ∂²φᵢ/∂x² (1/(m²√kg)) at
@@ -152,25 +245,45 @@ impl ModalBridge {
     pub fn mode_values_slopes_curvatures(
         &self,
         x: f64,
-        _y: f64,
+        y: f64,
         values: &mut [f64],
         slopes: &mut [f64],
         curvatures: &mut [f64],
     ) {
-        self.shapes
-            .values_slopes_curvatures_at(x, values, slopes, curvatures);
+        match &self.shapes {
+            Shapes::Beam { shapes, .. } => {
+                shapes.values_slopes_curvatures_at(x, values, slopes, curvatures)
+            }
+            Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
+                Some((_, line)) => line.values_slopes_curvatures_at(x, values, slopes, curvatures),
+                None => modes.values_slopes_curvatures_at(x, y, values, slopes, curvatures),
+            },
+        }
     }
 
-    /// Static deflection influence line of point `x_point`: G(ξ), m/N, the
-    /// downward deflection at `x_point` due to a unit downward load at ξ,
-    /// from the full finite-element stiffness (no modal truncation).
-    pub fn influence_line(&self, x_point: f64) -> Result<HermiteField, BridgeError> {
-        self.model.influence_line(x_point)
+    /// Static deflection influence line of the point (`x_point`, `y_point`)
+    /// for loads travelling along the line `y_load` (m; a beam ignores both
+    /// y): G(ξ), m/N, the downward deflection at the point due to a unit
+    /// downward load at ξ, from the full stiffness (beam finite elements, or
+    /// the whole plate Ritz basis; no modal truncation).
+    pub fn influence_line(
+        &self,
+        x_point: f64,
+        y_point: f64,
+        y_load: f64,
+    ) -> Result<HermiteField, BridgeError> {
+        match &self.shapes {
+            Shapes::Beam { model, .. } => model.influence_line(x_point),
+            Shapes::Plate { modes, .. } => modes.influence_line(x_point, y_point, y_load),
+        }
     }
 
-    /// Node positions of the underlying mesh, m.
+    /// Node positions of the mesh along the bridge, m.
     pub fn node_x(&self) -> &[f64] {
-        self.shapes.node_x()
+        match &self.shapes {
+            Shapes::Beam { shapes, .. } => shapes.node_x(),
+            Shapes::Plate { modes, .. } => modes.node_x(),
+        }
     }
 }
 

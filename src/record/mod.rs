@@ -21,10 +21,13 @@ pub struct PositionRef {
 /// How a column is computed each step.
 #[derive(Debug, Clone)]
 enum Probe {
-    /// φᵢ(x) at the point; w = Σ φᵢ qᵢ. With the static influence line.
+    /// φᵢ(x, y) at the point; w = Σ φᵢ qᵢ. With the static influence
+    /// lines of the point for loads along each wheel's line (one per
+    /// distinct wheel y) and, per flattened wheel, which one it uses.
     BridgeDisplacement {
         shape: Vec<f64>,
-        influence: HermiteField,
+        influences: Vec<HermiteField>,
+        wheel_influence: Vec<usize>,
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
@@ -122,11 +125,35 @@ impl<'m> Recorder<'m> {
             let (probe, unit, position) = match record.quantity {
                 Quantity::BridgeDisplacement | Quantity::BridgeAcceleration => {
                     let x = record.x.unwrap_or(0.0);
+                    let y = record.y.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
-                    model.bridge.mode_values(x, 0.0, &mut shape);
+                    model.bridge.mode_values(x, y, &mut shape);
                     if record.quantity == Quantity::BridgeDisplacement {
-                        let influence = model.bridge.influence_line(x)?;
-                        (Probe::BridgeDisplacement { shape, influence }, "m", lead)
+                        let mut lines: Vec<f64> = Vec::new();
+                        let mut wheel_influence = Vec::with_capacity(model.wheel_y.len());
+                        for &wheel_y in &model.wheel_y {
+                            let index = match lines.iter().position(|&l| l == wheel_y) {
+                                Some(index) => index,
+                                None => {
+                                    lines.push(wheel_y);
+                                    lines.len() - 1
+                                }
+                            };
+                            wheel_influence.push(index);
+                        }
+                        let influences = lines
+                            .iter()
+                            .map(|&line| model.bridge.influence_line(x, y, line))
+                            .collect::<Result<Vec<_>, _>>()?;
+                        (
+                            Probe::BridgeDisplacement {
+                                shape,
+                                influences,
+                                wheel_influence,
+                            },
+                            "m",
+                            lead,
+                        )
                     } else {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
@@ -259,14 +286,20 @@ impl Observer for Recorder<'_> {
         let model = self.model;
         for column in &mut self.history.columns {
             let value = match &column.probe {
-                Probe::BridgeDisplacement { shape, influence } => {
+                Probe::BridgeDisplacement {
+                    shape,
+                    influences,
+                    wheel_influence,
+                } => {
                     // Static crossing: each wheel's static load at its
-                    // current position through the FE influence line.
+                    // current position through the influence line of its
+                    // lane (full stiffness, no modal truncation).
                     let static_w: f64 = view
                         .wheel_positions
                         .iter()
                         .zip(&model.static_wheel_loads)
-                        .map(|(&x, &load)| -load * influence.value_at(x))
+                        .zip(wheel_influence)
+                        .map(|((&x, &load), &line)| -load * influences[line].value_at(x))
                         .sum();
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);

@@ -32,7 +32,6 @@ pub(super) fn derive_dimensionless(
     modal: &ModalBridge,
     ck: &mut Checker<'_>,
 ) {
-    let Bridge::Beam(beam) = bridge;
     let f1 = modal.frequencies()[0];
     for (i, (raw, vehicle)) in raws.iter().zip(vehicles.iter_mut()).enumerate() {
         let raw::VehicleRaw::Oscillator(o) = raw else {
@@ -65,7 +64,7 @@ pub(super) fn derive_dimensionless(
             "frequency ratio",
         );
         super::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
-        let mut derived = groups.derive(f1, modal.length, beam.mass_per_length, 0.0);
+        let mut derived = groups.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
         super::resolve::check_speed(ck, &at, derived.speed);
         agree(
             ck,
@@ -98,6 +97,7 @@ pub(super) fn derive_dimensionless(
         agree(ck, &format!("{at}.speed"), o.speed, derived.speed, "speed");
         derived.entry_time =
             super::resolve::entry_time(ck, &at, derived.speed, o.entry_time, o.start_position);
+        derived.lateral_position = vehicle.lateral_position();
         *vehicle = Vehicle::Oscillator(derived);
     }
 }

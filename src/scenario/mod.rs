@@ -6,6 +6,9 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
+pub mod bridges;
+pub mod surfaces;
+pub mod truck;
 pub mod content;
 #[allow(missing_docs)]
 pub mod de;

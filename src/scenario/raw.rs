@@ -109,6 +109,114 @@ pub enum BridgeRaw {
     /// supports, discretised with Hermite-cubic finite elements and reduced to
     /// mass-normalised modes.
     Beam(BeamRaw),
+    /// Thin orthotropic (or isotropic) plate deck, jointless over one or more
+    /// spans: simply supported at both ends, rigid line supports across the
+    /// deck between spans, longitudinal edges free (or simply supported).
+    /// Modes by the Rayleigh–Ritz method with beam functions, keeping the
+    /// coupling between the longitudinal and transverse families (the plate
+    /// paper's intermodal coupling). y runs across the deck from the edge
+    /// y = 0 (the right-hand edge for traffic in +x) to y = width.
+    Plate(PlateRaw),
+}
+
+/// Plate deck.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PlateRaw {
+    /// Span lengths, m, from the entrance; rigid line supports between spans.
+    pub spans: Vec<f64>,
+    /// Deck width b, m.
+    pub width: f64,
+    /// Plate thickness h, m. Needed by an isotropic `rigidity` and by `density`.
+    #[serde(default)]
+    pub thickness: Option<f64>,
+    /// Mass per unit area ρh, kg/m². Give this or `density`.
+    #[serde(default)]
+    pub mass_per_area: Option<f64>,
+    /// Density ρ, kg/m³ (with `thickness`). Give this or `mass_per_area`.
+    #[serde(default)]
+    pub density: Option<f64>,
+    /// Flexural and torsional rigidities.
+    pub rigidity: RigidityRaw,
+    /// Support of the two longitudinal edges: `free` (default, a bridge deck)
+    /// or `simply_supported`.
+    #[serde(default)]
+    pub edges: Option<PlateEdgesRaw>,
+    /// Size of the Rayleigh–Ritz basis. Default: 6 longitudinal beam
+    /// functions per span (at least 12) × 8 transverse functions.
+    #[serde(default)]
+    pub terms: Option<TermsRaw>,
+    /// Finite elements per span of the continuous beam whose modes are the
+    /// longitudinal beam functions. Default 20.
+    #[serde(default)]
+    pub elements_per_span: Option<usize>,
+    /// Which modes the modal superposition keeps. Default: automatic, as for
+    /// the beam (every mode up to 4 × the highest excitation, at least 5 per span).
+    #[serde(default)]
+    pub modes: Option<ModesRaw>,
+    /// Structural damping. Default: 0 (undamped).
+    #[serde(default)]
+    pub damping: Option<DampingRaw>,
+    /// Transverse positions y of the girder lines, m: the summary tabulates
+    /// the DAF at the middle of every span on each line. Default: the deck's
+    /// centre line.
+    #[serde(default)]
+    pub girder_lines: Option<Vec<f64>>,
+}
+
+/// Plate rigidities.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum RigidityRaw {
+    /// Isotropic plate of the deck's `thickness`: D = E h³ / (12 (1 − ν²)),
+    /// Dx = Dy = H = D.
+    Isotropic {
+        /// Young's modulus E, Pa.
+        youngs_modulus: f64,
+        /// Poisson's ratio ν (dimensionless). Default 0.2 (concrete).
+        #[serde(default)]
+        poisson_ratio: Option<f64>,
+    },
+    /// Orthotropic plate (the plate paper's Eq. 1): Dx, Dy, and the torsional
+    /// rigidity Dxy = G h³/12 or the equivalent rigidity H = ν_xy Dy + 2 Dxy.
+    Orthotropic {
+        /// Flexural rigidity along the bridge Dx, N·m.
+        flexural_rigidity_x: f64,
+        /// Flexural rigidity across the bridge Dy, N·m.
+        flexural_rigidity_y: f64,
+        /// Torsional rigidity Dxy = G h³ / 12, N·m. Give this or `equivalent_rigidity`.
+        #[serde(default)]
+        torsional_rigidity: Option<f64>,
+        /// Equivalent rigidity H = ν_xy Dy + 2 Dxy, N·m. Give this or `torsional_rigidity`.
+        #[serde(default)]
+        equivalent_rigidity: Option<f64>,
+        /// Poisson's ratio ν_xy (dimensionless); the coupling rigidity is
+        /// D1 = ν_xy Dy. Default 0.3.
+        #[serde(default)]
+        poisson_ratio: Option<f64>,
+    },
+}
+
+/// Support of the plate's longitudinal edges.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PlateEdgesRaw {
+    /// Free edges (a bridge deck).
+    Free,
+    /// Simply supported edges (w = 0 along y = 0 and y = width).
+    SimplySupported,
+}
+
+/// Rayleigh–Ritz basis size.
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct TermsRaw {
+    /// Longitudinal beam functions (modes of the continuous beam over the same spans).
+    pub longitudinal: usize,
+    /// Transverse functions (Legendre polynomials for free edges, sines for
+    /// simply supported edges).
+    pub transverse: usize,
 }
 
 /// Euler–Bernoulli beam bridge.
@@ -182,6 +290,104 @@ pub enum VehicleRaw {
     /// (the LCP paper's Fig. 1). `unsprung_mass: 0` is the 1-DOF sprung mass
     /// on a massless wheel (Yang & Yau 1997).
     Oscillator(OscillatorRaw),
+    /// AASHTO H20-44 two-axle truck with seven DOFs (body bounce, pitch and
+    /// roll; each axle bounce and roll), a tyre spring–damper under each of
+    /// its four wheels and a suspension spring–damper above it (the plate
+    /// paper's Section 2.2 and Appendix A). Parameters default to the preset
+    /// (see `parameters`).
+    #[serde(rename = "h20_44")]
+    H20Truck(H20TruckRaw),
+}
+
+/// H20-44 truck.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct H20TruckRaw {
+    /// Constant speed, m/s.
+    pub speed: f64,
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    #[serde(default)]
+    pub entry_time: Option<f64>,
+    /// Position of the front axle at t = 0, m (≤ 0).
+    #[serde(default)]
+    pub start_position: Option<f64>,
+    /// Transverse position y of the truck's centre line on a plate deck, m.
+    /// Default: the deck's centre line.
+    #[serde(default)]
+    pub lateral_position: Option<f64>,
+    /// Overrides of the preset's parameters; omitted ones keep the preset.
+    #[serde(default)]
+    pub parameters: Option<H20TruckParametersRaw>,
+}
+
+/// H20-44 parameters (each optional: the preset fills the rest). Per-wheel
+/// springs and dashpots are the same left and right.
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct H20TruckParametersRaw {
+    /// Body (sprung) mass m_v, kg.
+    #[serde(default)]
+    pub body_mass: Option<f64>,
+    /// Body pitch moment of inertia, kg·m².
+    #[serde(default)]
+    pub body_pitch_inertia: Option<f64>,
+    /// Body roll moment of inertia, kg·m².
+    #[serde(default)]
+    pub body_roll_inertia: Option<f64>,
+    /// Front axle mass with its wheels m₁, kg.
+    #[serde(default)]
+    pub front_axle_mass: Option<f64>,
+    /// Rear axle mass with its wheels m₂, kg.
+    #[serde(default)]
+    pub rear_axle_mass: Option<f64>,
+    /// Front axle roll moment of inertia I₁, kg·m².
+    #[serde(default)]
+    pub front_axle_roll_inertia: Option<f64>,
+    /// Rear axle roll moment of inertia I₂, kg·m².
+    #[serde(default)]
+    pub rear_axle_roll_inertia: Option<f64>,
+    /// Distance from the front axle back to the body's centre of gravity a₁, m.
+    #[serde(default)]
+    pub front_axle_to_centre: Option<f64>,
+    /// Distance from the body's centre of gravity back to the rear axle a₂, m.
+    #[serde(default)]
+    pub centre_to_rear_axle: Option<f64>,
+    /// Distance between the front tyres s_t1, m.
+    #[serde(default)]
+    pub front_track: Option<f64>,
+    /// Distance between the rear tyres s_t2, m.
+    #[serde(default)]
+    pub rear_track: Option<f64>,
+    /// Distance between the front suspensions s₁, m.
+    #[serde(default)]
+    pub front_suspension_spacing: Option<f64>,
+    /// Distance between the rear suspensions s₂, m.
+    #[serde(default)]
+    pub rear_suspension_spacing: Option<f64>,
+    /// Front suspension stiffness per wheel, N/m.
+    #[serde(default)]
+    pub front_suspension_stiffness: Option<f64>,
+    /// Rear suspension stiffness per wheel, N/m.
+    #[serde(default)]
+    pub rear_suspension_stiffness: Option<f64>,
+    /// Front suspension damping per wheel, N·s/m.
+    #[serde(default)]
+    pub front_suspension_damping: Option<f64>,
+    /// Rear suspension damping per wheel, N·s/m.
+    #[serde(default)]
+    pub rear_suspension_damping: Option<f64>,
+    /// Front tyre stiffness per wheel, N/m.
+    #[serde(default)]
+    pub front_tyre_stiffness: Option<f64>,
+    /// Rear tyre stiffness per wheel, N/m.
+    #[serde(default)]
+    pub rear_tyre_stiffness: Option<f64>,
+    /// Front tyre damping per wheel, N·s/m.
+    #[serde(default)]
+    pub front_tyre_damping: Option<f64>,
+    /// Rear tyre damping per wheel, N·s/m.
+    #[serde(default)]
+    pub rear_tyre_damping: Option<f64>,
 }
 
 /// Where and how fast a vehicle travels.
@@ -202,6 +408,10 @@ pub struct MovingForceRaw {
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
     pub start_position: Option<f64>,
+    /// Transverse position y of the loads on a plate deck, m. Default: the
+    /// deck's centre line.
+    #[serde(default)]
+    pub lateral_position: Option<f64>,
 }
 
 /// Moving oscillator parameters: physical, or derived from the LCP separation
@@ -231,6 +441,10 @@ pub struct OscillatorRaw {
     /// Position of the wheel at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
     pub start_position: Option<f64>,
+    /// Transverse position y of the wheel on a plate deck, m. Default: the
+    /// deck's centre line.
+    #[serde(default)]
+    pub lateral_position: Option<f64>,
     /// Derive masses, stiffness, damping and speed from dimensionless groups
     /// relative to the bridge (its first natural frequency f₁, length L and
     /// mass per length m). Physical fields given as well must agree with the
@@ -278,6 +492,49 @@ pub enum SurfaceRaw {
         #[serde(default)]
         phase: Option<f64>,
     },
+    /// Random road profile, a stationary Gaussian process with the power
+    /// spectral density S(Ω) = A_r (Ω/Ω₀)⁻², Ω₀ = 1/2π, sampled by the
+    /// trigonometric series of the plate paper's Eq. 17 with random phases.
+    /// It is shifted so that r(0) = 0 at the entrance. The same profile lies
+    /// under every wheel track. Give `class` or `coefficient`.
+    Random {
+        /// Roughness class: `very_good`, `good`, `average`, `poor` or
+        /// `very_poor` (A_r the geometric mean of the class's range).
+        #[serde(default)]
+        class: Option<RoughnessClassRaw>,
+        /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
+        #[serde(default)]
+        coefficient: Option<f64>,
+        /// Length L_c the series repeats over, m. Default: twice the bridge length.
+        #[serde(default)]
+        sampling_length: Option<f64>,
+        /// Number of terms N of the series. Default: enough for wavelengths
+        /// down to 0.5 m (N = L_c / 0.5).
+        #[serde(default)]
+        terms: Option<usize>,
+        /// Seed of the random phases (ChaCha8). Default 1. The same seed gives
+        /// the same profile on every machine.
+        #[serde(default)]
+        seed: Option<u64>,
+    },
+}
+
+/// Road roughness classes (A_r ranges in m³/cycle): very good 2e-6–8e-6,
+/// good 8e-6–32e-6, average 32e-6–128e-6, poor 128e-6–512e-6, very poor
+/// 512e-6–2048e-6.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RoughnessClassRaw {
+    /// A_r = 4e-6.
+    VeryGood,
+    /// A_r = 16e-6.
+    Good,
+    /// A_r = 64e-6.
+    Average,
+    /// A_r = 256e-6.
+    Poor,
+    /// A_r = 1024e-6.
+    VeryPoor,
 }
 
 /// Wheel–bridge contact model.
@@ -420,6 +677,10 @@ pub struct RecordRaw {
     /// Position along the bridge, m (bridge quantities).
     #[serde(default)]
     pub x: Option<f64>,
+    /// Position across a plate deck, m (bridge quantities on a plate).
+    /// Default: the deck's centre line.
+    #[serde(default)]
+    pub y: Option<f64>,
     /// Vehicle number, counted from 1 in the order of `vehicles` (vehicle
     /// quantities and contact forces). Default 1.
     #[serde(default)]
@@ -437,10 +698,11 @@ pub struct RecordRaw {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Quantity {
-    /// Bridge vertical displacement at `x`, m, positive upward. The summary also
-    /// gives the static crossing response and the DAF at that point.
+    /// Bridge vertical displacement at `x` (and `y` on a plate), m, positive
+    /// upward. The summary also gives the static crossing response and the
+    /// DAF at that point.
     BridgeDisplacement,
-    /// Bridge vertical acceleration at `x`, m/s², positive upward.
+    /// Bridge vertical acceleration at `x` (and `y` on a plate), m/s², positive upward.
     BridgeAcceleration,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,

@@ -10,6 +10,7 @@ fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
         Vehicle::Oscillator(_) => &["sprung", "wheel"],
+        Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
     }
 }
 
@@ -17,6 +18,7 @@ fn wheel_count(vehicle: &Vehicle) -> usize {
     match vehicle {
         Vehicle::MovingForce(v) => v.loads.len(),
         Vehicle::Oscillator(_) => 1,
+        Vehicle::H20Truck(_) => 4,
     }
 }
 
@@ -78,8 +80,24 @@ pub(super) fn resolve_records(
             if r.vehicle.is_some() {
                 ck.error(&format!("{at}.vehicle"), unused("vehicle"));
             }
-        } else if r.x.is_some() {
-            ck.error(&format!("{at}.x"), unused("x"));
+            match (r.y, bridge.width()) {
+                (Some(_), None) => ck.error(
+                    &format!("{at}.y"),
+                    "`y` is a position across a plate deck; a beam has no width",
+                ),
+                (Some(y), Some(width)) if !(0.0..=width).contains(&y) => ck.error(
+                    &format!("{at}.y"),
+                    format!("y = {y} m is off the deck, which spans 0 to {width} m"),
+                ),
+                _ => {}
+            }
+        } else {
+            if r.x.is_some() {
+                ck.error(&format!("{at}.x"), unused("x"));
+            }
+            if r.y.is_some() {
+                ck.error(&format!("{at}.y"), unused("y"));
+            }
         }
         let is_wheel = matches!(q, Quantity::ContactForce | Quantity::ContactGap);
         if !is_wheel && r.wheel.is_some() {
@@ -158,6 +176,11 @@ pub(super) fn resolve_records(
             name: r.name.clone(),
             quantity: q,
             x: r.x,
+            y: if is_bridge {
+                r.y.or(bridge.width().map(|w| w / 2.0))
+            } else {
+                None
+            },
             vehicle,
             wheel,
             dof: r.dof.clone(),
@@ -166,21 +189,38 @@ pub(super) fn resolve_records(
     out
 }
 
-/// Displacement at the middle of every span and every wheel's contact force
-/// (and, with unilateral contact, every contact wheel's gap).
+/// Displacement at the middle of every span (on a plate, on every girder
+/// line) and every wheel's contact force (and, with unilateral contact,
+/// every contact wheel's gap).
 fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> Vec<Record> {
     let mut out = Vec::new();
-    let Bridge::Beam(beam) = bridge;
     let mut start = 0.0;
-    for (i, span) in beam.spans.iter().enumerate() {
-        out.push(Record {
-            name: format!("span{}_midspan", i + 1),
-            quantity: Quantity::BridgeDisplacement,
-            x: Some(start + span / 2.0),
-            vehicle: None,
-            wheel: None,
-            dof: None,
-        });
+    for (i, span) in bridge.spans().iter().enumerate() {
+        let x = Some(start + span / 2.0);
+        match bridge {
+            Bridge::Beam(_) => out.push(Record {
+                name: format!("span{}_midspan", i + 1),
+                quantity: Quantity::BridgeDisplacement,
+                x,
+                y: None,
+                vehicle: None,
+                wheel: None,
+                dof: None,
+            }),
+            Bridge::Plate(plate) => {
+                for (g, &y) in plate.girder_lines.iter().enumerate() {
+                    out.push(Record {
+                        name: format!("span{}_girder{}", i + 1, g + 1),
+                        quantity: Quantity::BridgeDisplacement,
+                        x,
+                        y: Some(y),
+                        vehicle: None,
+                        wheel: None,
+                        dof: None,
+                    });
+                }
+            }
+        }
         start += span;
     }
     for (v, vehicle) in vehicles.iter().enumerate() {
@@ -189,6 +229,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 name: format!("vehicle{}_wheel{}_force", v + 1, w + 1),
                 quantity: Quantity::ContactForce,
                 x: None,
+                y: None,
                 vehicle: Some(v + 1),
                 wheel: Some(w + 1),
                 dof: None,
@@ -198,6 +239,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     name: format!("vehicle{}_wheel{}_gap", v + 1, w + 1),
                     quantity: Quantity::ContactGap,
                     x: None,
+                    y: None,
                     vehicle: Some(v + 1),
                     wheel: Some(w + 1),
                     dof: None,

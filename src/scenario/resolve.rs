@@ -4,6 +4,7 @@
 //! the key is absent, of the section that lacks it), and all problems found
 //! are reported together, like a compiler.
 
+use super::bridges::resolve_bridge;
 use super::content;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
@@ -94,8 +95,10 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     ck.positive("gravity", gravity, "gravity");
 
     let bridge = resolve_bridge(&raw.bridge, ck);
-    let vehicles = resolve_vehicles(&raw.vehicles, ck);
-    let surface = resolve_surface(raw.surface.as_ref(), ck);
+    let width = bridge.as_ref().and_then(Bridge::width);
+    let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
+    let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
+    let surface = resolve_surface(raw.surface.as_ref(), bridge_length, ck);
     let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
@@ -163,14 +166,15 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
-    let Bridge::Beam(beam) = &mut bridge;
-    let excitations = content::excitations(&vehicles, &contact, &surface, &beam.spans, gravity);
-    if beam.modes.count.is_none() && beam.modes.max_frequency.is_none() {
+    let excitations = content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity);
+    let modes = bridge.modes();
+    if modes.count.is_none() && modes.max_frequency.is_none() {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
-        let (count, cutoff, reason) = content::mode_cutoff(&modal, beam.spans.len(), &excitations);
+        let (count, cutoff, reason) =
+            content::mode_cutoff(&modal, bridge.spans().len(), &excitations);
         modal.truncate(count, reason);
-        beam.modes.max_frequency = Some(cutoff);
+        bridge.modes_mut().max_frequency = Some(cutoff);
     }
     let study = resolve_study(raw.study.as_ref(), &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
@@ -236,122 +240,6 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     Some((scenario, modal))
 }
 
-fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> {
-    match raw {
-        raw::BridgeRaw::Beam(b) => {
-            let before = ck.diagnostics.len();
-            if b.spans.is_empty() {
-                ck.error("bridge.spans", "`spans` needs at least one span length");
-            }
-            let longest = b.spans.iter().copied().fold(0.0, f64::max);
-            for (i, &s) in b.spans.iter().enumerate() {
-                ck.positive(&format!("bridge.spans[{i}]"), s, "a span length");
-                if s > 0.0 && s < 1e-3 * longest {
-                    ck.error(
-                        &format!("bridge.spans[{i}]"),
-                        format!("a span of {s} m is less than 1/1000 of the longest ({longest} m); the model would be ill-conditioned"),
-                    );
-                }
-            }
-            if longest > 1e5 {
-                ck.error(
-                    "bridge.spans",
-                    format!("a span of {longest} m is longer than 100 km"),
-                );
-            }
-            ck.positive(
-                "bridge.bending_stiffness",
-                b.bending_stiffness,
-                "bending stiffness",
-            );
-            ck.positive(
-                "bridge.mass_per_length",
-                b.mass_per_length,
-                "mass per length",
-            );
-            let elements_per_span = b.elements_per_span.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
-            if !(1..=10_000).contains(&elements_per_span) {
-                ck.error(
-                    "bridge.elements_per_span",
-                    format!(
-                        "elements per span must be between 1 and 10000, got {elements_per_span}"
-                    ),
-                );
-            }
-            let total_dofs = b.spans.len() * elements_per_span * 2;
-            if total_dofs > 20_000 {
-                ck.error(
-                    "bridge.elements_per_span",
-                    format!("{total_dofs} degrees of freedom is more than the dense beam solver takes (20000)"),
-                );
-            }
-            let modes = match &b.modes {
-                None => Modes {
-                    count: None,
-                    max_frequency: None,
-                },
-                Some(m) => {
-                    if m.count.is_none() && m.max_frequency.is_none() {
-                        ck.error(
-                            "bridge.modes",
-                            "`modes` needs `count`, `max_frequency` or both",
-                        );
-                    }
-                    if m.count == Some(0) {
-                        ck.error("bridge.modes.count", "at least one mode is needed");
-                    }
-                    if let Some(f) = m.max_frequency {
-                        ck.positive("bridge.modes.max_frequency", f, "maximum frequency");
-                    }
-                    Modes {
-                        count: m.count,
-                        max_frequency: m.max_frequency,
-                    }
-                }
-            };
-            let damping = match &b.damping {
-                None => Damping::Modal { ratio: 0.0 },
-                Some(raw::DampingRaw::Modal { ratio }) => {
-                    check_ratio(ck, "bridge.damping.ratio", *ratio);
-                    Damping::Modal { ratio: *ratio }
-                }
-                Some(raw::DampingRaw::Rayleigh { frequencies, ratio }) => {
-                    check_ratio(ck, "bridge.damping.ratio", *ratio);
-                    for (i, &f) in frequencies.iter().enumerate() {
-                        ck.positive(
-                            &format!("bridge.damping.frequencies[{i}]"),
-                            f,
-                            "a Rayleigh frequency",
-                        );
-                    }
-                    if frequencies[0] == frequencies[1] {
-                        ck.error(
-                            "bridge.damping.frequencies",
-                            "the two Rayleigh frequencies must differ",
-                        );
-                    }
-                    Damping::Rayleigh {
-                        frequencies: *frequencies,
-                        ratio: *ratio,
-                    }
-                }
-            };
-            if ck.diagnostics.len() > before {
-                return None;
-            }
-            let beam = Beam {
-                spans: b.spans.clone(),
-                bending_stiffness: b.bending_stiffness,
-                mass_per_length: b.mass_per_length,
-                elements_per_span,
-                modes,
-                damping,
-            };
-            Some(Bridge::Beam(beam))
-        }
-    }
-}
-
 pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
     if !(0.0..1.0).contains(&ratio) {
         ck.error(
@@ -408,7 +296,11 @@ pub(super) fn check_speed(ck: &mut Checker<'_>, at: &str, speed: f64) {
     }
 }
 
-fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Vec<Vehicle>> {
+fn resolve_vehicles(
+    raws: &[raw::VehicleRaw],
+    width: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Option<Vec<Vehicle>> {
     let before = ck.diagnostics.len();
     if raws.is_empty() {
         ck.error("vehicles", "`vehicles` needs at least one vehicle");
@@ -454,10 +346,12 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
                     axle_spacings: spacings,
                     speed: v.speed,
                     entry_time: entry,
+                    lateral_position: lateral(ck, &at, v.lateral_position, width, 0.0),
                 }));
             }
             raw::VehicleRaw::Oscillator(v) => {
                 let unsprung = v.unsprung_mass.unwrap_or(0.0);
+                let lateral_position = lateral(ck, &at, v.lateral_position, width, 0.0);
                 let damping = v.damping.unwrap_or(0.0);
                 if v.dimensionless.is_some() {
                     // Derived once the bridge's first frequency is known.
@@ -468,6 +362,7 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
                         damping: 0.0,
                         speed: 0.0,
                         entry_time: 0.0,
+                        lateral_position,
                         dimensionless: None,
                     }));
                     continue;
@@ -503,15 +398,63 @@ fn resolve_vehicles(raws: &[raw::VehicleRaw], ck: &mut Checker<'_>) -> Option<Ve
                     damping,
                     speed,
                     entry_time: entry,
+                    lateral_position,
                     dimensionless: None,
                 }));
+            }
+            raw::VehicleRaw::H20Truck(v) => {
+                out.push(super::truck::resolve_h20(v, &at, width, ck));
             }
         }
     }
     (ck.diagnostics.len() == before).then_some(out)
 }
 
-fn resolve_surface(raw: Option<&raw::SurfaceRaw>, ck: &mut Checker<'_>) -> Surface {
+/// The transverse position of a vehicle's path: only on a plate (default
+/// its centre line), with every wheel at `half_track` either side on the deck.
+pub(super) fn lateral(
+    ck: &mut Checker<'_>,
+    at: &str,
+    given: Option<f64>,
+    width: Option<f64>,
+    half_track: f64,
+) -> Option<f64> {
+    match (given, width) {
+        (Some(_), None) => {
+            ck.error(
+                &format!("{at}.lateral_position"),
+                "`lateral_position` places a vehicle across a plate deck; a beam has no width",
+            );
+            None
+        }
+        (None, None) => None,
+        (given, Some(width)) => {
+            let y = given.unwrap_or(width / 2.0);
+            if y - half_track < 0.0 || y + half_track > width {
+                let path = if given.is_some() {
+                    format!("{at}.lateral_position")
+                } else {
+                    at.to_owned()
+                };
+                ck.error(
+                    &path,
+                    format!(
+                        "wheels at y = {:.4} to {:.4} m fall off the deck, which spans 0 to {width} m",
+                        y - half_track,
+                        y + half_track
+                    ),
+                );
+            }
+            Some(y)
+        }
+    }
+}
+
+fn resolve_surface(
+    raw: Option<&raw::SurfaceRaw>,
+    bridge_length: f64,
+    ck: &mut Checker<'_>,
+) -> Surface {
     match raw {
         None | Some(raw::SurfaceRaw::Smooth) => Surface::Smooth,
         Some(raw::SurfaceRaw::Harmonic {
@@ -527,5 +470,20 @@ fn resolve_surface(raw: Option<&raw::SurfaceRaw>, ck: &mut Checker<'_>) -> Surfa
                 phase: phase.unwrap_or(0.0),
             }
         }
+        Some(raw::SurfaceRaw::Random {
+            class,
+            coefficient,
+            sampling_length,
+            terms,
+            seed,
+        }) => super::surfaces::resolve_random(
+            *class,
+            *coefficient,
+            *sampling_length,
+            *terms,
+            *seed,
+            bridge_length,
+            ck,
+        ),
     }
 }

@@ -6,7 +6,10 @@
 
 use serde::Serialize;
 
-pub use super::raw::{GridRaw as Grid, Quantity, SolverMethod};
+pub use super::raw::{
+    GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, RoughnessClassRaw as RoughnessClass,
+    SolverMethod, TermsRaw as Terms,
+};
 
 /// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -80,6 +83,7 @@ impl Dimensionless {
             damping: 2.0 * self.damping_ratio * (stiffness * sprung_mass).sqrt(),
             speed: 2.0 * self.velocity_ratio * f1 * length,
             entry_time,
+            lateral_position: None,
             dimensionless: Some(*self),
         }
     }
@@ -91,13 +95,145 @@ impl Dimensionless {
 pub enum Bridge {
     /// Euler–Bernoulli beam.
     Beam(Beam),
+    /// Thin orthotropic plate deck.
+    Plate(Plate),
 }
 
 impl Bridge {
     /// Total length from the entrance to the exit, m.
     pub fn length(&self) -> f64 {
+        self.spans().iter().sum()
+    }
+
+    /// Span lengths, m.
+    pub fn spans(&self) -> &[f64] {
         match self {
-            Bridge::Beam(beam) => beam.spans.iter().sum(),
+            Bridge::Beam(beam) => &beam.spans,
+            Bridge::Plate(plate) => &plate.spans,
+        }
+    }
+
+    /// Deck width, m (`None` for a beam, which has no transverse extent).
+    pub fn width(&self) -> Option<f64> {
+        match self {
+            Bridge::Beam(_) => None,
+            Bridge::Plate(plate) => Some(plate.width),
+        }
+    }
+
+    /// Mode selection.
+    pub fn modes(&self) -> &Modes {
+        match self {
+            Bridge::Beam(beam) => &beam.modes,
+            Bridge::Plate(plate) => &plate.modes,
+        }
+    }
+
+    /// Mode selection, to fill in.
+    pub fn modes_mut(&mut self) -> &mut Modes {
+        match self {
+            Bridge::Beam(beam) => &mut beam.modes,
+            Bridge::Plate(plate) => &mut plate.modes,
+        }
+    }
+
+    /// Mass per unit length along the bridge, kg/m (a plate: ρh × width).
+    pub fn mass_per_length(&self) -> f64 {
+        match self {
+            Bridge::Beam(beam) => beam.mass_per_length,
+            Bridge::Plate(plate) => plate.mass_per_area * plate.width,
+        }
+    }
+
+    /// Transverse lines on which the summary tabulates DAFs, m (a beam: one line at 0).
+    pub fn girder_lines(&self) -> Vec<f64> {
+        match self {
+            Bridge::Beam(_) => vec![0.0],
+            Bridge::Plate(plate) => plate.girder_lines.clone(),
+        }
+    }
+}
+
+/// Thin plate deck.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Plate {
+    /// Span lengths, m.
+    pub spans: Vec<f64>,
+    /// Width, m.
+    pub width: f64,
+    /// Thickness, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thickness: Option<f64>,
+    /// Mass per unit area ρh, kg/m².
+    pub mass_per_area: f64,
+    /// Rigidities.
+    pub rigidity: Rigidity,
+    /// Longitudinal edge support.
+    pub edges: PlateEdges,
+    /// Rayleigh–Ritz basis size.
+    pub terms: Terms,
+    /// Finite elements per span of the longitudinal beam functions.
+    pub elements_per_span: usize,
+    /// Mode selection.
+    pub modes: Modes,
+    /// Structural damping.
+    pub damping: Damping,
+    /// Girder lines y, m.
+    pub girder_lines: Vec<f64>,
+}
+
+/// Plate rigidities.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Rigidity {
+    /// Isotropic: D = E h³ / (12(1 − ν²)).
+    Isotropic {
+        /// E, Pa.
+        youngs_modulus: f64,
+        /// ν, dimensionless.
+        poisson_ratio: f64,
+    },
+    /// Orthotropic.
+    Orthotropic {
+        /// Dx, N·m.
+        flexural_rigidity_x: f64,
+        /// Dy, N·m.
+        flexural_rigidity_y: f64,
+        /// Dxy = G h³/12, N·m.
+        torsional_rigidity: f64,
+        /// H = ν_xy Dy + 2 Dxy, N·m.
+        equivalent_rigidity: f64,
+        /// ν_xy, dimensionless.
+        poisson_ratio: f64,
+    },
+}
+
+impl Rigidity {
+    /// (Dx, Dy, D1, Dxy), N·m, for a plate of thickness `thickness` (m; used
+    /// by the isotropic form only): isotropic Dx = Dy = D, D1 = νD,
+    /// Dxy = D(1 − ν)/2; orthotropic D1 = ν_xy Dy.
+    pub fn rigidities(&self, thickness: f64) -> (f64, f64, f64, f64) {
+        match *self {
+            Rigidity::Isotropic {
+                youngs_modulus,
+                poisson_ratio,
+            } => {
+                let d = youngs_modulus * thickness.powi(3)
+                    / (12.0 * (1.0 - poisson_ratio * poisson_ratio));
+                (d, d, poisson_ratio * d, 0.5 * d * (1.0 - poisson_ratio))
+            }
+            Rigidity::Orthotropic {
+                flexural_rigidity_x,
+                flexural_rigidity_y,
+                torsional_rigidity,
+                poisson_ratio,
+                ..
+            } => (
+                flexural_rigidity_x,
+                flexural_rigidity_y,
+                poisson_ratio * flexural_rigidity_y,
+                torsional_rigidity,
+            ),
         }
     }
 }
@@ -176,14 +312,27 @@ pub enum Vehicle {
     MovingForce(MovingForce),
     /// Two-mass oscillator.
     Oscillator(Oscillator),
+    /// H20-44 seven-DOF truck.
+    #[serde(rename = "h20_44")]
+    H20Truck(H20Truck),
 }
 
 impl Vehicle {
+    /// Transverse position of the vehicle's path on a plate deck, m.
+    pub fn lateral_position(&self) -> Option<f64> {
+        match self {
+            Vehicle::MovingForce(v) => v.lateral_position,
+            Vehicle::Oscillator(v) => v.lateral_position,
+            Vehicle::H20Truck(v) => v.lateral_position,
+        }
+    }
+
     /// Constant speed, m/s.
     pub fn speed(&self) -> f64 {
         match self {
             Vehicle::MovingForce(v) => v.speed,
             Vehicle::Oscillator(v) => v.speed,
+            Vehicle::H20Truck(v) => v.speed,
         }
     }
     /// Time at which the front axle reaches the entrance, s.
@@ -191,6 +340,7 @@ impl Vehicle {
         match self {
             Vehicle::MovingForce(v) => v.entry_time,
             Vehicle::Oscillator(v) => v.entry_time,
+            Vehicle::H20Truck(v) => v.entry_time,
         }
     }
     /// Distance from the front axle back to the rear axle, m.
@@ -198,6 +348,9 @@ impl Vehicle {
         match self {
             Vehicle::MovingForce(v) => v.axle_spacings.iter().sum(),
             Vehicle::Oscillator(_) => 0.0,
+            Vehicle::H20Truck(v) => {
+                v.parameters.front_axle_to_centre + v.parameters.centre_to_rear_axle
+            }
         }
     }
     /// Type name as written in the format.
@@ -205,6 +358,7 @@ impl Vehicle {
         match self {
             Vehicle::MovingForce(_) => "moving_force",
             Vehicle::Oscillator(_) => "oscillator",
+            Vehicle::H20Truck(_) => "h20_44",
         }
     }
 }
@@ -220,6 +374,70 @@ pub struct MovingForce {
     pub speed: f64,
     /// Time the front axle reaches x = 0, s.
     pub entry_time: f64,
+    /// Transverse position on a plate deck, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_position: Option<f64>,
+}
+
+/// H20-44 truck.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct H20Truck {
+    /// Speed, m/s.
+    pub speed: f64,
+    /// Time the front axle reaches x = 0, s.
+    pub entry_time: f64,
+    /// Transverse position of the centre line on a plate deck, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_position: Option<f64>,
+    /// Every parameter, preset values filled in.
+    pub parameters: H20TruckParameters,
+}
+
+/// H20-44 parameters (see the raw format for each meaning); SI units.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct H20TruckParameters {
+    /// kg.
+    pub body_mass: f64,
+    /// kg·m².
+    pub body_pitch_inertia: f64,
+    /// kg·m².
+    pub body_roll_inertia: f64,
+    /// kg.
+    pub front_axle_mass: f64,
+    /// kg.
+    pub rear_axle_mass: f64,
+    /// kg·m².
+    pub front_axle_roll_inertia: f64,
+    /// kg·m².
+    pub rear_axle_roll_inertia: f64,
+    /// m.
+    pub front_axle_to_centre: f64,
+    /// m.
+    pub centre_to_rear_axle: f64,
+    /// m.
+    pub front_track: f64,
+    /// m.
+    pub rear_track: f64,
+    /// m.
+    pub front_suspension_spacing: f64,
+    /// m.
+    pub rear_suspension_spacing: f64,
+    /// N/m.
+    pub front_suspension_stiffness: f64,
+    /// N/m.
+    pub rear_suspension_stiffness: f64,
+    /// N·s/m.
+    pub front_suspension_damping: f64,
+    /// N·s/m.
+    pub rear_suspension_damping: f64,
+    /// N/m.
+    pub front_tyre_stiffness: f64,
+    /// N/m.
+    pub rear_tyre_stiffness: f64,
+    /// N·s/m.
+    pub front_tyre_damping: f64,
+    /// N·s/m.
+    pub rear_tyre_damping: f64,
 }
 
 /// Two-mass oscillator.
@@ -237,6 +455,9 @@ pub struct Oscillator {
     pub speed: f64,
     /// Time the wheel reaches x = 0, s.
     pub entry_time: f64,
+    /// Transverse position on a plate deck, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_position: Option<f64>,
     /// The dimensionless groups these values were derived from, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dimensionless: Option<Dimensionless>,
@@ -256,6 +477,20 @@ pub enum Surface {
         wavelength: f64,
         /// rad
         phase: f64,
+    },
+    /// Random profile from the PSD A_r (Ω/Ω₀)⁻².
+    Random {
+        /// The class A_r was taken from.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        class: Option<RoughnessClass>,
+        /// A_r, m³/cycle.
+        coefficient: f64,
+        /// L_c, m.
+        sampling_length: f64,
+        /// N.
+        terms: usize,
+        /// Seed.
+        seed: u64,
     },
 }
 
@@ -344,6 +579,9 @@ pub struct Record {
     /// Position along the bridge, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub x: Option<f64>,
+    /// Position across a plate deck, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub y: Option<f64>,
     /// Vehicle number from 1.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vehicle: Option<usize>,

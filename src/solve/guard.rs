@@ -14,7 +14,6 @@
 use super::modal::ModalStep;
 use super::{SolveError, VehicleState, describe_positions};
 use crate::model::Model;
-use crate::surface::Profile;
 
 /// Multiple of the energy scale at which a run counts as diverged.
 pub const ENERGY_LIMIT: f64 = 1e6;
@@ -36,8 +35,8 @@ impl Guard {
         let modes = bridge.mode_count();
         let mut peak = vec![0.0f64; modes];
         let mut values = vec![0.0; modes];
-        for &x in bridge.node_x() {
-            bridge.mode_values(x, 0.0, &mut values);
+        for (x, y) in bridge.sample_points() {
+            bridge.mode_values(x, y, &mut values);
             for (p, v) in peak.iter_mut().zip(&values) {
                 *p = p.max(v.abs());
             }
@@ -50,20 +49,13 @@ impl Guard {
             * 0.5
             * total_load
             * total_load;
-        let (amplitude, wavenumber) = match model.profile {
-            Profile::Smooth => (0.0, 0.0),
-            Profile::Harmonic {
-                amplitude,
-                wavenumber,
-                ..
-            } => (amplitude, wavenumber),
-        };
+        let slope = model.profile.slope_scale();
         let vehicle_energy: f64 = model
             .vehicles
             .iter()
             .map(|v| {
                 let mass: f64 = v.mass.diagonal().iter().sum();
-                let rough = v.speed * amplitude * wavenumber;
+                let rough = v.speed * slope;
                 0.5 * mass * (1.0 + rough * rough)
             })
             .sum();

@@ -42,7 +42,7 @@ use crate::record::History;
 use crate::report::plot::{self, PlotError, Series};
 use crate::run::{self, Outcome, RunError};
 use crate::scenario::Loaded;
-use crate::scenario::resolved::{Bridge, Modes};
+use crate::scenario::resolved::Modes;
 
 /// The reference's time step is the scenario's divided by this.
 pub const REFERENCE_REFINEMENT: usize = 4;
@@ -366,8 +366,7 @@ fn variant(loaded: &Loaded, resolution: Resolution) -> Result<Loaded, BridgeErro
     let mut scenario = loaded.scenario.clone();
     scenario.study = None;
     scenario.solver.time_step = resolution.time_step;
-    let Bridge::Beam(beam) = &mut scenario.bridge;
-    beam.modes = Modes {
+    *scenario.bridge.modes_mut() = Modes {
         count: Some(resolution.modes),
         max_frequency: None,
     };

@@ -16,7 +16,7 @@ use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::Recorder;
 use crate::run::RunError;
-use crate::scenario::resolved::{Bridge, Contact, Grid, Quantity, Record, Scenario, Vehicle};
+use crate::scenario::resolved::{Contact, Grid, Quantity, Record, Scenario, Vehicle};
 use crate::solve;
 
 /// Result of one grid point.
@@ -74,14 +74,20 @@ pub fn point_scenario(
 ) -> Scenario {
     let mut scenario = base.clone();
     scenario.study = None;
-    let Bridge::Beam(beam) = &base.bridge;
     let f1 = bridge.frequencies()[0];
     if let Some(Vehicle::Oscillator(o)) = scenario.vehicles.first_mut()
         && let Some(mut groups) = o.dimensionless
     {
         groups.velocity_ratio = velocity_ratio;
         groups.mass_ratio = mass_ratio;
-        *o = groups.derive(f1, bridge.length, beam.mass_per_length, o.entry_time);
+        let lateral_position = o.lateral_position;
+        *o = groups.derive(
+            f1,
+            bridge.length,
+            base.bridge.mass_per_length(),
+            o.entry_time,
+        );
+        o.lateral_position = lateral_position;
         if let Contact::Elastic {
             stiffness,
             stiffness_ratio: Some(ratio),
@@ -94,6 +100,7 @@ pub fn point_scenario(
         name: "contact_force".into(),
         quantity: Quantity::ContactForce,
         x: None,
+        y: None,
         vehicle: Some(1),
         wheel: Some(1),
         dof: None,

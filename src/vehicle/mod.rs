@@ -5,6 +5,7 @@
 //! through its wheels (position along the bridge and, for wheels with a
 //! degree of freedom, which DOF follows the surface).
 
+pub mod h20_44;
 pub mod moving_force;
 pub mod oscillator;
 
@@ -81,6 +82,7 @@ impl VehicleModel {
         match vehicle {
             Vehicle::MovingForce(v) => moving_force::build(v),
             Vehicle::Oscillator(v) => oscillator::build(v, gravity),
+            Vehicle::H20Truck(v) => h20_44::build(v, gravity),
         }
     }
 

@@ -33,6 +33,6 @@ pub fn build(v: &MovingForce) -> VehicleModel {
         wheels,
         speed: v.speed,
         entry_time: v.entry_time,
-        path_y: 0.0,
+        path_y: v.lateral_position.unwrap_or(0.0),
     }
 }

@@ -31,6 +31,6 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
         }],
         speed: v.speed,
         entry_time: v.entry_time,
-        path_y: 0.0,
+        path_y: v.lateral_position.unwrap_or(0.0),
     }
 }

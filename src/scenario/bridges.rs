@@ -1,0 +1,359 @@
+//! Resolving `bridge`: the beam and the plate deck, with their checks and
+//! defaults.
+
+use super::raw;
+use super::resolve::{Checker, DEFAULT_ELEMENTS_PER_SPAN, check_ratio};
+use super::resolved::*;
+
+/// Default Ritz transverse functions.
+pub const DEFAULT_TRANSVERSE_TERMS: usize = 8;
+/// Default longitudinal beam functions per span (and the fewest in all).
+pub const DEFAULT_LONGITUDINAL_TERMS_PER_SPAN: usize = 6;
+/// Fewest default longitudinal beam functions.
+pub const MIN_LONGITUDINAL_TERMS: usize = 12;
+/// Default Poisson's ratio of an isotropic deck (concrete).
+pub const DEFAULT_ISOTROPIC_POISSON: f64 = 0.2;
+/// Default Poisson's ratio ν_xy of an orthotropic deck.
+pub const DEFAULT_ORTHOTROPIC_POISSON: f64 = 0.3;
+/// Largest Ritz basis the dense eigen solver takes.
+pub const MAX_RITZ_TERMS: usize = 2_000;
+
+/// Resolves the bridge description; `None` after reporting its problems.
+pub(super) fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> {
+    let before = ck.diagnostics.len();
+    let bridge = match raw {
+        raw::BridgeRaw::Beam(b) => {
+            check_spans(ck, &b.spans);
+            ck.positive(
+                "bridge.bending_stiffness",
+                b.bending_stiffness,
+                "bending stiffness",
+            );
+            ck.positive(
+                "bridge.mass_per_length",
+                b.mass_per_length,
+                "mass per length",
+            );
+            let elements_per_span = elements(ck, b.elements_per_span, b.spans.len());
+            Bridge::Beam(Beam {
+                spans: b.spans.clone(),
+                bending_stiffness: b.bending_stiffness,
+                mass_per_length: b.mass_per_length,
+                elements_per_span,
+                modes: resolve_modes(ck, b.modes.as_ref()),
+                damping: resolve_damping(ck, b.damping.as_ref()),
+            })
+        }
+        raw::BridgeRaw::Plate(p) => Bridge::Plate(resolve_plate(p, ck)),
+    };
+    (ck.diagnostics.len() == before).then_some(bridge)
+}
+
+fn resolve_plate(p: &raw::PlateRaw, ck: &mut Checker<'_>) -> Plate {
+    check_spans(ck, &p.spans);
+    ck.positive("bridge.width", p.width, "deck width");
+    if let Some(h) = p.thickness {
+        ck.positive("bridge.thickness", h, "plate thickness");
+    }
+    let mass_per_area = match (p.mass_per_area, p.density) {
+        (Some(_), Some(_)) => {
+            ck.error(
+                "bridge.density",
+                "give `mass_per_area` or `density`, not both",
+            );
+            0.0
+        }
+        (Some(m), None) => {
+            ck.positive("bridge.mass_per_area", m, "mass per area");
+            m
+        }
+        (None, Some(rho)) => {
+            ck.positive("bridge.density", rho, "density");
+            match p.thickness {
+                Some(h) => rho * h,
+                None => {
+                    ck.error(
+                        "bridge",
+                        "`density` needs `thickness` to give the mass per area ρh",
+                    );
+                    0.0
+                }
+            }
+        }
+        (None, None) => {
+            ck.error(
+                "bridge",
+                "a plate needs `mass_per_area` (kg/m²) or `density` with `thickness`",
+            );
+            0.0
+        }
+    };
+    let rigidity = match &p.rigidity {
+        raw::RigidityRaw::Isotropic {
+            youngs_modulus,
+            poisson_ratio,
+        } => {
+            ck.positive(
+                "bridge.rigidity.youngs_modulus",
+                *youngs_modulus,
+                "Young's modulus",
+            );
+            let nu = poisson_ratio.unwrap_or(DEFAULT_ISOTROPIC_POISSON);
+            if !(0.0..0.5).contains(&nu) {
+                ck.error(
+                    "bridge.rigidity.poisson_ratio",
+                    format!("Poisson's ratio must be in [0, 0.5), got {nu}"),
+                );
+            }
+            if p.thickness.is_none() {
+                ck.error(
+                    "bridge",
+                    "an isotropic `rigidity` needs the plate `thickness`",
+                );
+            }
+            Rigidity::Isotropic {
+                youngs_modulus: *youngs_modulus,
+                poisson_ratio: nu,
+            }
+        }
+        raw::RigidityRaw::Orthotropic {
+            flexural_rigidity_x,
+            flexural_rigidity_y,
+            torsional_rigidity,
+            equivalent_rigidity,
+            poisson_ratio,
+        } => {
+            let at = "bridge.rigidity";
+            ck.positive(
+                &format!("{at}.flexural_rigidity_x"),
+                *flexural_rigidity_x,
+                "flexural rigidity Dx",
+            );
+            ck.positive(
+                &format!("{at}.flexural_rigidity_y"),
+                *flexural_rigidity_y,
+                "flexural rigidity Dy",
+            );
+            let nu = poisson_ratio.unwrap_or(DEFAULT_ORTHOTROPIC_POISSON);
+            if !(0.0..1.0).contains(&nu) {
+                ck.error(
+                    &format!("{at}.poisson_ratio"),
+                    format!("Poisson's ratio ν_xy must be in [0, 1), got {nu}"),
+                );
+            }
+            let coupling = nu * flexural_rigidity_y;
+            let torsional = match (torsional_rigidity, equivalent_rigidity) {
+                (Some(dxy), Some(h)) => {
+                    if (coupling + 2.0 * dxy - h).abs() > 1e-9 * h.abs().max(dxy.abs()) {
+                        ck.error(
+                            &format!("{at}.equivalent_rigidity"),
+                            format!(
+                                "H = {h} N·m disagrees with ν_xy Dy + 2 Dxy = {} N·m; give one of \
+                                 `torsional_rigidity` and `equivalent_rigidity`",
+                                coupling + 2.0 * dxy
+                            ),
+                        );
+                    }
+                    *dxy
+                }
+                (Some(dxy), None) => *dxy,
+                (None, Some(h)) => 0.5 * (h - coupling),
+                (None, None) => {
+                    ck.error(
+                        at,
+                        "an orthotropic plate needs `torsional_rigidity` (Dxy) or \
+                         `equivalent_rigidity` (H)",
+                    );
+                    0.0
+                }
+            };
+            if torsional_rigidity.is_some() || equivalent_rigidity.is_some() {
+                let path = if torsional_rigidity.is_some() {
+                    format!("{at}.torsional_rigidity")
+                } else {
+                    format!("{at}.equivalent_rigidity")
+                };
+                ck.positive(&path, torsional, "torsional rigidity Dxy = (H − ν_xy Dy)/2");
+            }
+            // Positive strain energy needs D1² < Dx Dy.
+            if coupling * coupling >= flexural_rigidity_x * flexural_rigidity_y
+                && *flexural_rigidity_x > 0.0
+            {
+                ck.error(
+                    &format!("{at}.poisson_ratio"),
+                    "ν_xy² Dy ≥ Dx: the plate's strain energy would not be positive",
+                );
+            }
+            Rigidity::Orthotropic {
+                flexural_rigidity_x: *flexural_rigidity_x,
+                flexural_rigidity_y: *flexural_rigidity_y,
+                torsional_rigidity: torsional,
+                equivalent_rigidity: coupling + 2.0 * torsional,
+                poisson_ratio: nu,
+            }
+        }
+    };
+    let spans = p.spans.len().max(1);
+    let terms = p.terms.clone().unwrap_or(Terms {
+        longitudinal: (DEFAULT_LONGITUDINAL_TERMS_PER_SPAN * spans).max(MIN_LONGITUDINAL_TERMS),
+        transverse: DEFAULT_TRANSVERSE_TERMS,
+    });
+    if terms.longitudinal == 0 {
+        ck.error(
+            "bridge.terms.longitudinal",
+            "at least one longitudinal term is needed",
+        );
+    }
+    if terms.transverse == 0 {
+        ck.error(
+            "bridge.terms.transverse",
+            "at least one transverse term is needed",
+        );
+    }
+    if terms.longitudinal * terms.transverse > MAX_RITZ_TERMS {
+        ck.error(
+            "bridge.terms",
+            format!(
+                "{} × {} = {} Ritz terms is more than the dense eigen solver takes ({MAX_RITZ_TERMS})",
+                terms.longitudinal,
+                terms.transverse,
+                terms.longitudinal * terms.transverse
+            ),
+        );
+    }
+    let elements_per_span = elements(ck, p.elements_per_span, p.spans.len());
+    if terms.longitudinal > 2 * elements_per_span * spans - 1 {
+        ck.error(
+            "bridge.terms.longitudinal",
+            format!(
+                "{} longitudinal beam functions need more than the {} elements per span give; \
+                 raise `elements_per_span`",
+                terms.longitudinal, elements_per_span
+            ),
+        );
+    }
+    let girder_lines = p.girder_lines.clone().unwrap_or(vec![p.width / 2.0]);
+    if girder_lines.is_empty() {
+        ck.error("bridge.girder_lines", "give at least one girder line");
+    }
+    for (i, &y) in girder_lines.iter().enumerate() {
+        if !(0.0..=p.width).contains(&y) {
+            ck.error(
+                &format!("bridge.girder_lines[{i}]"),
+                format!("y = {y} m is off the deck, which spans 0 to {} m", p.width),
+            );
+        }
+    }
+    Plate {
+        spans: p.spans.clone(),
+        width: p.width,
+        thickness: p.thickness,
+        mass_per_area,
+        rigidity,
+        edges: p.edges.unwrap_or(PlateEdges::Free),
+        terms,
+        elements_per_span,
+        modes: resolve_modes(ck, p.modes.as_ref()),
+        damping: resolve_damping(ck, p.damping.as_ref()),
+        girder_lines,
+    }
+}
+
+fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
+    if spans.is_empty() {
+        ck.error("bridge.spans", "`spans` needs at least one span length");
+    }
+    let longest = spans.iter().copied().fold(0.0, f64::max);
+    for (i, &s) in spans.iter().enumerate() {
+        ck.positive(&format!("bridge.spans[{i}]"), s, "a span length");
+        if s > 0.0 && s < 1e-3 * longest {
+            ck.error(
+                &format!("bridge.spans[{i}]"),
+                format!("a span of {s} m is less than 1/1000 of the longest ({longest} m); the model would be ill-conditioned"),
+            );
+        }
+    }
+    if longest > 1e5 {
+        ck.error(
+            "bridge.spans",
+            format!("a span of {longest} m is longer than 100 km"),
+        );
+    }
+}
+
+fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
+    let elements_per_span = given.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
+    if !(1..=10_000).contains(&elements_per_span) {
+        ck.error(
+            "bridge.elements_per_span",
+            format!("elements per span must be between 1 and 10000, got {elements_per_span}"),
+        );
+    }
+    let total_dofs = spans * elements_per_span * 2;
+    if total_dofs > 20_000 {
+        ck.error(
+            "bridge.elements_per_span",
+            format!(
+                "{total_dofs} degrees of freedom is more than the dense beam solver takes (20000)"
+            ),
+        );
+    }
+    elements_per_span
+}
+
+fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
+    match raw {
+        None => Modes {
+            count: None,
+            max_frequency: None,
+        },
+        Some(m) => {
+            if m.count.is_none() && m.max_frequency.is_none() {
+                ck.error(
+                    "bridge.modes",
+                    "`modes` needs `count`, `max_frequency` or both",
+                );
+            }
+            if m.count == Some(0) {
+                ck.error("bridge.modes.count", "at least one mode is needed");
+            }
+            if let Some(f) = m.max_frequency {
+                ck.positive("bridge.modes.max_frequency", f, "maximum frequency");
+            }
+            Modes {
+                count: m.count,
+                max_frequency: m.max_frequency,
+            }
+        }
+    }
+}
+
+fn resolve_damping(ck: &mut Checker<'_>, raw: Option<&raw::DampingRaw>) -> Damping {
+    match raw {
+        None => Damping::Modal { ratio: 0.0 },
+        Some(raw::DampingRaw::Modal { ratio }) => {
+            check_ratio(ck, "bridge.damping.ratio", *ratio);
+            Damping::Modal { ratio: *ratio }
+        }
+        Some(raw::DampingRaw::Rayleigh { frequencies, ratio }) => {
+            check_ratio(ck, "bridge.damping.ratio", *ratio);
+            for (i, &f) in frequencies.iter().enumerate() {
+                ck.positive(
+                    &format!("bridge.damping.frequencies[{i}]"),
+                    f,
+                    "a Rayleigh frequency",
+                );
+            }
+            if frequencies[0] == frequencies[1] {
+                ck.error(
+                    "bridge.damping.frequencies",
+                    "the two Rayleigh frequencies must differ",
+                );
+            }
+            Damping::Rayleigh {
+                frequencies: *frequencies,
+                ratio: *ratio,
+            }
+        }
+    }
+}
