@@ -207,17 +207,24 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
         bridge.available_modes,
         bridge.selection
     );
-    println!(
+    let plate = bridge.width().is_some();
+    print!(
         "{:>5} {:>14} {:>14} {:>12}",
         "mode", "frequency_Hz", "period_s", "damping"
     );
+    // A plate mode's (m, n): its dominant longitudinal and transverse terms.
+    println!("{}", if plate { "  (m, n)" } else { "" });
     for (i, (f, z)) in bridge
         .frequencies()
         .iter()
         .zip(&bridge.damping_ratios)
         .enumerate()
     {
-        println!("{:>5} {:>14.6} {:>14.6} {:>12.4}", i + 1, f, 1.0 / f, z);
+        print!("{:>5} {:>14.6} {:>14.6} {:>12.4}", i + 1, f, 1.0 / f, z);
+        if plate {
+            print!("  {}", bridge.mode_character(i));
+        }
+        println!();
     }
     if let Some(path) = shapes {
         let text = vbi::report::mode_shapes_csv(bridge);

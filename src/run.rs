@@ -178,6 +178,12 @@ pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Resu
         &report::history_csv(&outcome.history),
     )?;
     report::write_atomic(&out.join("resolved.yaml"), yaml.as_bytes())?;
+    if !outcome.history.girder_dafs.is_empty() {
+        report::write_atomic(
+            &out.join("daf_table.csv"),
+            report::girder_daf_csv(&outcome.history.girder_dafs).as_bytes(),
+        )?;
+    }
     // summary.json last: its presence means the run's results are complete.
     report::write_atomic(&out.join("summary.json"), summary.as_bytes())?;
     Ok(())

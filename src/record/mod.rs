@@ -24,11 +24,7 @@ enum Probe {
     /// φᵢ(x, y) at the point; w = Σ φᵢ qᵢ. With the static influence
     /// lines of the point for loads along each wheel's line (one per
     /// distinct wheel y) and, per flattened wheel, which one it uses.
-    BridgeDisplacement {
-        shape: Vec<f64>,
-        influences: Vec<HermiteField>,
-        wheel_influence: Vec<usize>,
-    },
+    BridgeDisplacement { shape: Vec<f64>, statics: StaticProbe },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
     /// Flattened wheel index.
@@ -39,6 +35,78 @@ enum Probe {
     VehicleDisplacement { vehicle: usize, dof: usize },
     /// Vehicle and DOF.
     VehicleAcceleration { vehicle: usize, dof: usize },
+}
+
+/// The static influence lines of one bridge point for the loads of every
+/// wheel: one line per distinct wheel y, and which one each flattened wheel uses.
+#[derive(Debug, Clone)]
+struct StaticProbe {
+    influences: Vec<HermiteField>,
+    wheel_influence: Vec<usize>,
+}
+
+impl StaticProbe {
+    /// The probe of the point (x, y), m.
+    fn new(model: &Model, x: f64, y: f64) -> Result<Self, BridgeError> {
+        let mut lines: Vec<f64> = Vec::new();
+        let mut wheel_influence = Vec::with_capacity(model.wheel_y.len());
+        for &wheel_y in &model.wheel_y {
+            let index = match lines.iter().position(|&l| l == wheel_y) {
+                Some(index) => index,
+                None => {
+                    lines.push(wheel_y);
+                    lines.len() - 1
+                }
+            };
+            wheel_influence.push(index);
+        }
+        let influences = lines
+            .iter()
+            .map(|&line| model.bridge.influence_line(x, y, line))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self {
+            influences,
+            wheel_influence,
+        })
+    }
+
+    /// Static deflection at the point, m (upward positive), with every wheel
+    /// carrying its static load at `positions`.
+    fn deflection(&self, positions: &[f64], loads: &[f64]) -> f64 {
+        positions
+            .iter()
+            .zip(loads)
+            .zip(&self.wheel_influence)
+            .map(|((&x, &load), &line)| -load * self.influences[line].value_at(x))
+            .sum()
+    }
+}
+
+/// The DAF at the middle of one span on one girder line of a plate deck.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct GirderDaf {
+    /// Span number from 1.
+    pub span: usize,
+    /// Girder line number from 1.
+    pub girder: usize,
+    /// Position along the bridge, m.
+    pub x: f64,
+    /// Position across the deck, m.
+    pub y: f64,
+    /// Largest |dynamic deflection|, m.
+    pub dynamic_max_abs: f64,
+    /// Largest |static deflection| of the same wheels crossing, m.
+    pub static_max_abs: f64,
+    /// dynamic_max_abs / static_max_abs (0 where the static one is 0).
+    pub daf: f64,
+}
+
+/// Tracks one [`GirderDaf`] during the run.
+#[derive(Debug, Clone)]
+struct DafProbe {
+    result: GirderDaf,
+    shape: Vec<f64>,
+    statics: StaticProbe,
 }
 
 /// One recorded time history.
@@ -70,6 +138,9 @@ pub struct History {
     /// Separation statistics of every wheel with a DOF, under unilateral
     /// contact (empty under permanent contact).
     pub separation: Vec<WheelSeparation>,
+    /// On a plate deck: the DAF at the middle of every span on every girder
+    /// line, span by span (empty on a beam).
+    pub girder_dafs: Vec<GirderDaf>,
 }
 
 /// Gap above which a wheel with zero contact force counts as separated, m.
@@ -108,6 +179,7 @@ pub struct WheelSeparation {
 pub struct Recorder<'m> {
     model: &'m Model,
     history: History,
+    daf_probes: Vec<DafProbe>,
 }
 
 impl<'m> Recorder<'m> {
@@ -129,28 +201,9 @@ impl<'m> Recorder<'m> {
                     let mut shape = vec![0.0; modes];
                     model.bridge.mode_values(x, y, &mut shape);
                     if record.quantity == Quantity::BridgeDisplacement {
-                        let mut lines: Vec<f64> = Vec::new();
-                        let mut wheel_influence = Vec::with_capacity(model.wheel_y.len());
-                        for &wheel_y in &model.wheel_y {
-                            let index = match lines.iter().position(|&l| l == wheel_y) {
-                                Some(index) => index,
-                                None => {
-                                    lines.push(wheel_y);
-                                    lines.len() - 1
-                                }
-                            };
-                            wheel_influence.push(index);
-                        }
-                        let influences = lines
-                            .iter()
-                            .map(|&line| model.bridge.influence_line(x, y, line))
-                            .collect::<Result<Vec<_>, _>>()?;
+                        let statics = StaticProbe::new(model, x, y)?;
                         (
-                            Probe::BridgeDisplacement {
-                                shape,
-                                influences,
-                                wheel_influence,
-                            },
+                            Probe::BridgeDisplacement { shape, statics },
                             "m",
                             lead,
                         )
@@ -237,18 +290,56 @@ impl<'m> Recorder<'m> {
         } else {
             Vec::new()
         };
+        let mut daf_probes = Vec::new();
+        let mut start = 0.0;
+        for (s, span) in model.spans.iter().enumerate() {
+            let x = start + 0.5 * span;
+            for (g, &y) in model.girder_lines.iter().enumerate() {
+                let mut shape = vec![0.0; modes];
+                model.bridge.mode_values(x, y, &mut shape);
+                daf_probes.push(DafProbe {
+                    result: GirderDaf {
+                        span: s + 1,
+                        girder: g + 1,
+                        x,
+                        y,
+                        dynamic_max_abs: 0.0,
+                        static_max_abs: 0.0,
+                        daf: 0.0,
+                    },
+                    shape,
+                    statics: StaticProbe::new(model, x, y)?,
+                });
+            }
+            start += span;
+        }
         Ok(Self {
             model,
             history: History {
                 time: Vec::with_capacity(capacity),
                 columns,
                 separation,
+                girder_dafs: Vec::new(),
             },
+            daf_probes,
         })
     }
 
     /// The recorded history.
-    pub fn finish(self) -> History {
+    pub fn finish(mut self) -> History {
+        self.history.girder_dafs = self
+            .daf_probes
+            .into_iter()
+            .map(|mut probe| {
+                let r = &mut probe.result;
+                r.daf = if r.static_max_abs > 0.0 {
+                    r.dynamic_max_abs / r.static_max_abs
+                } else {
+                    0.0
+                };
+                probe.result
+            })
+            .collect();
         self.history
     }
 }
@@ -284,23 +375,23 @@ impl Observer for Recorder<'_> {
             wheel.apart = apart;
         }
         let model = self.model;
+        for probe in &mut self.daf_probes {
+            let dynamic = dot(&probe.shape, view.modal_displacement);
+            let statics = probe
+                .statics
+                .deflection(view.wheel_positions, &model.static_wheel_loads);
+            let r = &mut probe.result;
+            r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
+            r.static_max_abs = r.static_max_abs.max(statics.abs());
+        }
         for column in &mut self.history.columns {
             let value = match &column.probe {
-                Probe::BridgeDisplacement {
-                    shape,
-                    influences,
-                    wheel_influence,
-                } => {
+                Probe::BridgeDisplacement { shape, statics } => {
                     // Static crossing: each wheel's static load at its
                     // current position through the influence line of its
                     // lane (full stiffness, no modal truncation).
-                    let static_w: f64 = view
-                        .wheel_positions
-                        .iter()
-                        .zip(&model.static_wheel_loads)
-                        .zip(wheel_influence)
-                        .map(|((&x, &load), &line)| -load * influences[line].value_at(x))
-                        .sum();
+                    let static_w =
+                        statics.deflection(view.wheel_positions, &model.static_wheel_loads);
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }

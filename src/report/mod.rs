@@ -100,10 +100,16 @@ pub fn number(x: f64) -> String {
 }
 
 /// Mode shapes sampled at the mesh nodes and mid-element points as CSV:
-/// `x` then `mode1`, `mode2`, … (mass-normalised, 1/√kg).
+/// `x` then `mode1`, `mode2`, … (mass-normalised, 1/√kg). On a plate deck
+/// the columns are `x`, `y`, modes…, sampled along both edges and the
+/// centre line.
 pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
     let modes = bridge.mode_count();
-    let mut out = String::from("x");
+    let lines = match bridge.width() {
+        None => vec![None],
+        Some(b) => vec![Some(0.0), Some(0.5 * b), Some(b)],
+    };
+    let mut out = String::from(if lines[0].is_some() { "x,y" } else { "x" });
     for i in 1..=modes {
         out.push_str(&format!(",mode{i}"));
     }
@@ -117,14 +123,39 @@ pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
         }
         points.push(x);
     }
-    for x in points {
-        bridge.mode_values(x, 0.0, &mut values);
-        out.push_str(&number(x));
-        for v in &values {
-            out.push(',');
-            out.push_str(&number(*v));
+    for line in lines {
+        for &x in &points {
+            bridge.mode_values(x, line.unwrap_or(0.0), &mut values);
+            out.push_str(&number(x));
+            if let Some(y) = line {
+                out.push(',');
+                out.push_str(&number(y));
+            }
+            for v in &values {
+                out.push(',');
+                out.push_str(&number(*v));
+            }
+            out.push('\n');
         }
-        out.push('\n');
+    }
+    out
+}
+
+/// The DAF table of a plate deck as CSV: one row per span and girder line,
+/// `span,girder,x_m,y_m,dynamic_max_abs_m,static_max_abs_m,daf`.
+pub fn girder_daf_csv(rows: &[crate::record::GirderDaf]) -> String {
+    let mut out = String::from("span,girder,x_m,y_m,dynamic_max_abs_m,static_max_abs_m,daf\n");
+    for r in rows {
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{}\n",
+            r.span,
+            r.girder,
+            number(r.x),
+            number(r.y),
+            number(r.dynamic_max_abs),
+            number(r.static_max_abs),
+            number(r.daf)
+        ));
     }
     out
 }

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::model::Model;
-use crate::record::{Column, History, WheelSeparation};
+use crate::record::{Column, GirderDaf, History, WheelSeparation};
 use crate::scenario::resolved::{Quantity, SolverMethod};
 use crate::solve::SolveStats;
 use crate::solve::iterative::IterationStats;
@@ -93,6 +93,10 @@ pub struct Summary {
     /// 1e-9 m).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub separation: Vec<WheelSeparation>,
+    /// On a plate deck: the DAF at the middle of every span on every girder
+    /// line (`bridge.girder_lines`), span by span.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub girder_dafs: Vec<GirderDaf>,
 }
 
 /// Static reference used for DAFs.
@@ -100,6 +104,12 @@ pub const STATIC_REFERENCE: &str = "quasi-static crossing of the same wheels wit
 loads on level ground (moving-force loads, or the vehicle's static contact forces), deflection \
 from the full finite-element stiffness via influence lines (no inertia, no modal truncation), \
 at the same point and times";
+
+/// Static reference used for DAFs on a plate deck.
+pub const STATIC_REFERENCE_PLATE: &str = "quasi-static crossing of the same wheels with their \
+static loads on level ground (moving-force loads, or the vehicle's static contact forces), each \
+along its own line across the deck, deflection from the whole Ritz stiffness via influence lines \
+(no inertia, no modal truncation), at the same point and times";
 
 fn extreme(
     model: &Model,
@@ -194,11 +204,16 @@ impl Summary {
                 modes_available: model.bridge.available_modes,
                 modes_selection: model.bridge.selection.clone(),
                 frequencies: model.bridge.frequencies(),
-                static_reference: STATIC_REFERENCE,
+                static_reference: if model.bridge.width().is_some() {
+                    STATIC_REFERENCE_PLATE
+                } else {
+                    STATIC_REFERENCE
+                },
                 iterations: stats.iterations,
             },
             quantities,
             separation: history.separation.clone(),
+            girder_dafs: history.girder_dafs.clone(),
         }
     }
 }

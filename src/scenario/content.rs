@@ -25,6 +25,9 @@ use crate::vehicle::{VehicleModel, WheelKind};
 pub const SAFETY: f64 = 4.0;
 /// Fewest modes kept per span.
 pub const MODES_PER_SPAN: usize = 5;
+/// Mode families a plate deck's automatic cut-off keeps at least
+/// [`MODES_PER_SPAN`] per span of: bending, torsion, transverse bending.
+pub const PLATE_FAMILIES: usize = 3;
 /// Steps per period of the highest frequency, for the default time step.
 pub const STEPS_PER_PERIOD: f64 = 20.0;
 
@@ -153,6 +156,9 @@ pub fn excitations(
                 frequency: top,
             });
         }
+        // A random profile (S ∝ Ω⁻²) puts its energy in the long waves; its
+        // short waves reach the deck only through the tyres, whose hop
+        // frequency is counted above, so it adds no excitation of its own.
         if let Surface::Harmonic { wavelength, .. } = *surface {
             out.push(Excitation {
                 source: format!("vehicle {n} over the roughness (v / λ)"),
@@ -179,7 +185,16 @@ pub fn mode_cutoff(
             frequency: 0.0,
         });
     let dynamic_cut = SAFETY * top.frequency;
-    let minimum = (MODES_PER_SPAN * spans).min(frequencies.len());
+    // A plate deck's quasi-static shape under an eccentric wheel needs the
+    // torsional and first transverse-bending families as well as bending:
+    // MODES_PER_SPAN of each of PLATE_FAMILIES per span (45 on a three-span
+    // deck, the count the plate paper uses).
+    let families = if bridge.width().is_some() {
+        PLATE_FAMILIES
+    } else {
+        1
+    };
+    let minimum = (MODES_PER_SPAN * spans * families).min(frequencies.len());
     let shape_cut = frequencies[minimum.max(1) - 1];
     let cut = dynamic_cut.max(shape_cut);
     let count = frequencies
@@ -194,9 +209,11 @@ pub fn mode_cutoff(
         )
     } else {
         format!(
-            "automatic: {count} modes, at least {MODES_PER_SPAN} per span for the quasi-static shape \
+            "automatic: {count} modes, at least {} per span for the quasi-static shape \
              (up to {cut:.2} Hz; {SAFETY} × the highest excitation, {:.2} Hz from {}, needs fewer)",
-            top.frequency, top.source
+            MODES_PER_SPAN * families,
+            top.frequency,
+            top.source
         )
     };
     (count, cut, reason)
