@@ -69,7 +69,11 @@ pub(super) fn resolve_random(
         }
     };
     let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
-    ck.positive("surface.sampling_length", sampling_length, "sampling length");
+    ck.positive(
+        "surface.sampling_length",
+        sampling_length,
+        "sampling length",
+    );
     let terms = terms.unwrap_or_else(|| {
         ((sampling_length / DEFAULT_SHORTEST_WAVELENGTH).round() as usize).clamp(1, MAX_TERMS)
     });

@@ -69,10 +69,30 @@ pub(super) fn resolve_h20(
             }
         };
         take(&mut p.body_mass, o.body_mass, "body_mass", false);
-        take(&mut p.body_pitch_inertia, o.body_pitch_inertia, "body_pitch_inertia", false);
-        take(&mut p.body_roll_inertia, o.body_roll_inertia, "body_roll_inertia", false);
-        take(&mut p.front_axle_mass, o.front_axle_mass, "front_axle_mass", false);
-        take(&mut p.rear_axle_mass, o.rear_axle_mass, "rear_axle_mass", false);
+        take(
+            &mut p.body_pitch_inertia,
+            o.body_pitch_inertia,
+            "body_pitch_inertia",
+            false,
+        );
+        take(
+            &mut p.body_roll_inertia,
+            o.body_roll_inertia,
+            "body_roll_inertia",
+            false,
+        );
+        take(
+            &mut p.front_axle_mass,
+            o.front_axle_mass,
+            "front_axle_mass",
+            false,
+        );
+        take(
+            &mut p.rear_axle_mass,
+            o.rear_axle_mass,
+            "rear_axle_mass",
+            false,
+        );
         take(
             &mut p.front_axle_roll_inertia,
             o.front_axle_roll_inertia,
@@ -85,8 +105,18 @@ pub(super) fn resolve_h20(
             "rear_axle_roll_inertia",
             false,
         );
-        take(&mut p.front_axle_to_centre, o.front_axle_to_centre, "front_axle_to_centre", true);
-        take(&mut p.centre_to_rear_axle, o.centre_to_rear_axle, "centre_to_rear_axle", true);
+        take(
+            &mut p.front_axle_to_centre,
+            o.front_axle_to_centre,
+            "front_axle_to_centre",
+            true,
+        );
+        take(
+            &mut p.centre_to_rear_axle,
+            o.centre_to_rear_axle,
+            "centre_to_rear_axle",
+            true,
+        );
         take(&mut p.front_track, o.front_track, "front_track", false);
         take(&mut p.rear_track, o.rear_track, "rear_track", false);
         take(
@@ -125,10 +155,30 @@ pub(super) fn resolve_h20(
             "rear_suspension_damping",
             true,
         );
-        take(&mut p.front_tyre_stiffness, o.front_tyre_stiffness, "front_tyre_stiffness", false);
-        take(&mut p.rear_tyre_stiffness, o.rear_tyre_stiffness, "rear_tyre_stiffness", false);
-        take(&mut p.front_tyre_damping, o.front_tyre_damping, "front_tyre_damping", true);
-        take(&mut p.rear_tyre_damping, o.rear_tyre_damping, "rear_tyre_damping", true);
+        take(
+            &mut p.front_tyre_stiffness,
+            o.front_tyre_stiffness,
+            "front_tyre_stiffness",
+            false,
+        );
+        take(
+            &mut p.rear_tyre_stiffness,
+            o.rear_tyre_stiffness,
+            "rear_tyre_stiffness",
+            false,
+        );
+        take(
+            &mut p.front_tyre_damping,
+            o.front_tyre_damping,
+            "front_tyre_damping",
+            true,
+        );
+        take(
+            &mut p.rear_tyre_damping,
+            o.rear_tyre_damping,
+            "rear_tyre_damping",
+            true,
+        );
         if p.front_axle_to_centre + p.centre_to_rear_axle <= 0.0 {
             ck.error(&pat, "the axles must be apart: a₁ + a₂ > 0");
         }
