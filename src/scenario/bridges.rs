@@ -222,12 +222,15 @@ fn resolve_plate(p: &raw::PlateRaw, ck: &mut Checker<'_>) -> Plate {
         );
     }
     let elements_per_span = elements(ck, p.elements_per_span, p.spans.len());
-    if terms.longitudinal > 2 * elements_per_span * spans - 1 {
+    // The continuous beam offers one mode per free dof: 2 per node less the
+    // deflections fixed at the spans + 1 supports.
+    let beam_modes = 2 * elements_per_span * spans + 1 - spans;
+    if terms.longitudinal > beam_modes {
         ck.error(
             "bridge.terms.longitudinal",
             format!(
-                "{} longitudinal beam functions need more than the {} elements per span give; \
-                 raise `elements_per_span`",
+                "{} longitudinal beam functions need more than the {beam_modes} modes that {} \
+                 elements per span give; raise `elements_per_span`",
                 terms.longitudinal, elements_per_span
             ),
         );
