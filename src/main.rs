@@ -149,6 +149,31 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
             }
             return ExitCode::SUCCESS;
         }
+        vbi::run::Results::SpeedSweep(sweep) => {
+            if let Err(e) = vbi::run::write_speed_sweep(&out, &scenario, &sweep) {
+                eprintln!("error: {e}");
+                return ExitCode::from(EXIT_FAILED);
+            }
+            if !quiet {
+                let largest = vbi::study::speed_sweep::SweepSummary::new(&scenario.name, &sweep)
+                    .largest_daf
+                    .map(|l| {
+                        format!(
+                            ", largest DAF {:.4} ({}, {}, {:.1} km/h)",
+                            l.daf, l.column, l.roughness, l.speed_km_h
+                        )
+                    })
+                    .unwrap_or_default();
+                eprintln!(
+                    "{}: speed sweep of {} runs{largest}, {:.2} s",
+                    scenario.name,
+                    sweep.points.len(),
+                    sweep.wall_time
+                );
+                eprintln!("results in {}", out.display());
+            }
+            return ExitCode::SUCCESS;
+        }
     };
     if let Err(e) = vbi::run::write_results(&out, &scenario, &outcome) {
         eprintln!("error: {e}");

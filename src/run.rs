@@ -13,6 +13,7 @@ use crate::scenario::Loaded;
 use crate::scenario::resolved::{Scenario, Study};
 use crate::solve::{self, Progress, SolveError};
 use crate::study::separation_map::{self, SeparationMap};
+use crate::study::speed_sweep::{self, SweepResults};
 
 /// Errors of a run after loading.
 #[derive(Debug, Error)]
@@ -38,6 +39,8 @@ pub enum Results {
     Scene(Box<Outcome>),
     /// A separation map.
     SeparationMap(SeparationMap),
+    /// A speed sweep.
+    SpeedSweep(SweepResults),
 }
 
 /// Runs the scenario's study if it has one, else the scene.
@@ -55,6 +58,12 @@ pub fn execute(
             &loaded.bridge,
             velocity_ratio,
             mass_ratio,
+            progress,
+        )?)),
+        Some(Study::SpeedSweep(sweep)) => Ok(Results::SpeedSweep(speed_sweep::run(
+            &loaded.scenario,
+            &loaded.bridge,
+            sweep,
             progress,
         )?)),
         None => Ok(Results::Scene(Box::new(simulate(loaded, &mut |d, t| {
@@ -120,7 +129,19 @@ pub fn write_study(out: &Path, scenario: &Scenario, map: &SeparationMap) -> Resu
     Ok(())
 }
 
-fn create_out(out: &Path) -> Result<(), RunError> {
+/// Writes a speed sweep's `study.csv`, `daf_speed.png`,
+/// `daf_speed_roughness.png`, `daf_map.png`, `resolved.yaml` and, last,
+/// `summary.json` into `out`.
+pub fn write_speed_sweep(
+    out: &Path,
+    scenario: &Scenario,
+    results: &SweepResults,
+) -> Result<(), RunError> {
+    speed_sweep::write(out, scenario, results)
+}
+
+/// Creates the output folder.
+pub(crate) fn create_out(out: &Path) -> Result<(), RunError> {
     std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
         path: out.to_path_buf(),
         source,

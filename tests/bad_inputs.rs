@@ -200,6 +200,62 @@ const CASES: &[Case] = &[
         Some(12),
         "duplicate record name `midspan`",
     ),
+    // Speed sweeps.
+    case(
+        "speed-sweep-unknown-roughness.yaml",
+        18,
+        Some(23),
+        "unknown variant `bumpy`, expected one of `smooth`, `very_good`",
+    ),
+    // Plate decks, trucks, random roads.
+    case(
+        "lateral-position-on-beam.yaml",
+        11,
+        Some(23),
+        "`lateral_position` places a vehicle across a plate deck; a beam has no width",
+    ),
+    case(
+        "plate-lateral-off-deck.yaml",
+        13,
+        Some(23),
+        "wheels at y = 2.5850 to 4.4150 m fall off the deck, which spans 0 to 4 m",
+    ),
+    case(
+        "plate-mass-and-density.yaml",
+        9,
+        Some(12),
+        "give `mass_per_area` or `density`, not both",
+    ),
+    case(
+        "random-class-and-coefficient.yaml",
+        11,
+        Some(51),
+        "give the roughness `class` or its `coefficient`, not both",
+    ),
+    case(
+        "truck-negative-tyre-stiffness.yaml",
+        11,
+        Some(40),
+        "front_tyre_stiffness must be positive, got -1000000",
+    ),
+    case(
+        "speed-sweep-zero-count.yaml",
+        17,
+        Some(40),
+        "a speed sweep needs 1 to 500 speeds, got 0",
+    ),
+    case(
+        "speed-sweep-span-out-of-range.yaml",
+        18,
+        Some(9),
+        "span 3 does not exist; the bridge has 2 spans",
+    ),
+    case(
+        "speed-sweep-samples-of-smooth.yaml",
+        19,
+        Some(12),
+        "`samples` applies to random surfaces",
+    ),
 ];
 
 fn manifest_dir() -> &'static Path {

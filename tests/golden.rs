@@ -1,5 +1,6 @@
 //! Golden regression: every scenario in `scenarios/` is run and its summary and
-//! a decimated time history are compared with the insta snapshots in `golden/`.
+//! a decimated time history (a study: its summary and its table of points)
+//! are compared with the insta snapshots in `golden/`.
 //!
 //! Scenarios are discovered with `read_dir`, so a new file in `scenarios/` is
 //! picked up automatically (its first run writes `golden/<stem>-*.snap.new`
@@ -32,6 +33,7 @@ use vbi::record::History;
 use vbi::run::Outcome;
 use vbi::run::Results;
 use vbi::study::separation_map::SeparationMap;
+use vbi::study::speed_sweep::SweepResults;
 
 /// Significant digits kept in the snapshots.
 const DIGITS: i32 = 6;
@@ -283,16 +285,74 @@ fn insta_settings() -> insta::Settings {
 
 /// Runs `f` and turns a panic (a failed snapshot assertion, a crashed run)
 /// into its message, so that one failure does not hide the others.
-/// Runs the study of a scenario that has one (None for plain scenes).
-fn study(path: &Path) -> Option<Result<SeparationMap, String>> {
+/// Runs the study of a scenario that has one (None for plain scenes) and
+/// gives its (summary, table) snapshots.
+fn study(path: &Path) -> Option<Result<(String, String), String>> {
     let loaded = vbi::scenario::load_file(path).ok()?;
     loaded.scenario.study.as_ref()?;
     Some(match catch(|| vbi::run::execute(loaded, &|_, _| {})) {
-        Ok(Ok(Results::SeparationMap(map))) => Ok(map),
+        Ok(Ok(Results::SeparationMap(map))) => Ok(study_snapshots(&map)),
+        Ok(Ok(Results::SpeedSweep(sweep))) => Ok(sweep_snapshots(&sweep)),
         Ok(Ok(Results::Scene(_))) => Err("a study scenario ran as a scene".into()),
         Ok(Err(e)) => Err(format!("study failed: {e}")),
         Err(e) => Err(e),
     })
+}
+
+/// A speed sweep as (its surfaces, seeds and the mean DAF at its span and
+/// girder line per surface and speed; every point's DAFs and largest forces),
+/// each value rounded to 6 significant digits.
+fn sweep_snapshots(sweep: &SweepResults) -> (String, String) {
+    let number = |v: Option<f64>| v.map_or("-".to_string(), |v| significant(v).to_string());
+    let mut summary = format!(
+        "points: {}\nspan: {}\ngirder: {}\nspeeds_m_s: {}\n",
+        sweep.points.len(),
+        sweep.span,
+        sweep.girder,
+        sweep
+            .speeds
+            .iter()
+            .map(|&v| number(Some(v)))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    let column = sweep.span_column(sweep.span, sweep.girder);
+    for (r, label) in sweep.roughness.iter().enumerate() {
+        let (mean, _) = sweep.daf_statistics(r, column);
+        summary.push_str(&format!(
+            "{label} (runs {}, seeds {:?}) mean DAF: {}\n",
+            sweep.runs[r],
+            sweep.seeds[r],
+            mean.iter()
+                .map(|&v| number(Some(v)))
+                .collect::<Vec<_>>()
+                .join(" ")
+        ));
+    }
+    let mut table = format!(
+        "roughness sample seed speed_m_s {} {}\n",
+        sweep.daf_columns.join(" "),
+        sweep
+            .force_records
+            .iter()
+            .map(|n| format!("max_{n}_N"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    for p in &sweep.points {
+        let dafs: Vec<String> = p.dafs.iter().map(|&d| number(d)).collect();
+        let forces: Vec<String> = p.max_forces.iter().map(|&f| number(Some(f))).collect();
+        table.push_str(&format!(
+            "{} {} {} {} {} {}\n",
+            sweep.roughness[p.roughness],
+            p.sample,
+            p.seed.map_or("-".to_string(), |s| s.to_string()),
+            number(Some(p.speed)),
+            dafs.join(" "),
+            forces.join(" ")
+        ));
+    }
+    (summary, table)
 }
 
 /// A separation map as (the map drawn in text with its counts, a table of
@@ -354,9 +414,9 @@ fn golden_scenarios() {
     let mut failures = Vec::new();
     for path in &files {
         let name = stem(path);
-        if let Some(map) = study(path) {
-            let (summary, table) = match map {
-                Ok(map) => study_snapshots(&map),
+        if let Some(snapshots) = study(path) {
+            let (summary, table) = match snapshots {
+                Ok(snapshots) => snapshots,
                 Err(e) => {
                     failures.push(format!("{name}: {e}"));
                     continue;

@@ -24,7 +24,10 @@ enum Probe {
     /// φᵢ(x, y) at the point; w = Σ φᵢ qᵢ. With the static influence
     /// lines of the point for loads along each wheel's line (one per
     /// distinct wheel y) and, per flattened wheel, which one it uses.
-    BridgeDisplacement { shape: Vec<f64>, statics: StaticProbe },
+    BridgeDisplacement {
+        shape: Vec<f64>,
+        statics: StaticProbe,
+    },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
     /// Flattened wheel index.
@@ -202,11 +205,7 @@ impl<'m> Recorder<'m> {
                     model.bridge.mode_values(x, y, &mut shape);
                     if record.quantity == Quantity::BridgeDisplacement {
                         let statics = StaticProbe::new(model, x, y)?;
-                        (
-                            Probe::BridgeDisplacement { shape, statics },
-                            "m",
-                            lead,
-                        )
+                        (Probe::BridgeDisplacement { shape, statics }, "m", lead)
                     } else {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }

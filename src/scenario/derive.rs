@@ -313,11 +313,16 @@ fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &raw::GridRaw) {
 /// A study and its requirements on the scene.
 pub(super) fn resolve_study(
     raw: Option<&raw::StudyRaw>,
+    bridge: &Bridge,
     vehicles: &[Vehicle],
     contact: &Contact,
+    surface: &Surface,
     ck: &mut Checker<'_>,
 ) -> Option<Study> {
     match raw? {
+        raw::StudyRaw::SpeedSweep(sweep) => Some(Study::SpeedSweep(super::sweep::resolve(
+            sweep, bridge, surface, ck,
+        ))),
         raw::StudyRaw::SeparationMap(map) => {
             check_grid(ck, "study.velocity_ratio", &map.velocity_ratio);
             check_grid(ck, "study.mass_ratio", &map.mass_ratio);

@@ -7,8 +7,6 @@
 //! [`resolved::Scenario`].
 
 pub mod bridges;
-pub mod surfaces;
-pub mod truck;
 pub mod content;
 #[allow(missing_docs)]
 pub mod de;
@@ -19,6 +17,9 @@ pub mod raw;
 mod records;
 pub mod resolve;
 pub mod resolved;
+pub mod surfaces;
+pub mod sweep;
+pub mod truck;
 #[allow(missing_docs)]
 pub mod yaml;
 

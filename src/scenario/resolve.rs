@@ -166,7 +166,22 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
-    let excitations = content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity);
+    let study = resolve_study(
+        raw.study.as_ref(),
+        &bridge,
+        &vehicles,
+        &contact,
+        &surface,
+        ck,
+    );
+    // A speed sweep runs the scene at every speed of its grid: the automatic
+    // choices must serve its fastest run.
+    let excitations = match &study {
+        Some(Study::SpeedSweep(sweep)) => {
+            super::sweep::excitations(sweep, &vehicles, &contact, &surface, &bridge, gravity)
+        }
+        _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
+    };
     let modes = bridge.modes();
     if modes.count.is_none() && modes.max_frequency.is_none() {
         // Automatic: keep the modes this scene excites; write the cut-off back
@@ -176,36 +191,41 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         modal.truncate(count, reason);
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
-    let study = resolve_study(raw.study.as_ref(), &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
     }
 
-    // Default step: resolve the highest frequency kept or excited.
+    // Default step: resolve the highest frequency kept or excited. A speed
+    // sweep's step serves its fastest run; its slowest run is the longest.
+    let (fast, slow) = super::sweep::extreme_vehicles(study.as_ref(), &vehicles);
     let highest = modal.frequencies().last().copied().unwrap_or(1.0);
     let length = modal.length;
-    let shortest_crossing = vehicles
+    let shortest_crossing = fast
         .iter()
         .map(|v| (length + v.length()) / v.speed())
         .fold(f64::INFINITY, f64::min);
     let time_step = solver_raw
         .time_step
         .unwrap_or_else(|| content::time_step(highest, &excitations, shortest_crossing));
-    let last_exit = vehicles
-        .iter()
-        .map(|v| v.entry_time() + (length + v.length()) / v.speed())
-        .fold(0.0, f64::max);
-    let steps = (last_exit + free_vibration) / time_step;
+    let duration = |vehicles: &[Vehicle]| {
+        let last_exit = vehicles
+            .iter()
+            .map(|v| v.entry_time() + (length + v.length()) / v.speed())
+            .fold(0.0, f64::max);
+        last_exit + free_vibration
+    };
+    let (shortest_run, longest_run) = (duration(&fast), duration(&slow));
+    let steps = shortest_run / time_step;
     if steps < 10.0 {
         ck.error(
             "solver.time_step",
             format!(
-                "a time step of {time_step} s gives only {} step(s) over the {:.4} s run; use at most a tenth of it",
+                "a time step of {time_step} s gives only {} step(s) over the {shortest_run:.4} s run; use at most a tenth of it",
                 steps.ceil(),
-                last_exit + free_vibration
             ),
         );
     }
+    let steps = longest_run / time_step;
     if steps > MAX_STEPS {
         ck.error(
             "solver.time_step",

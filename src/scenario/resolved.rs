@@ -6,6 +6,9 @@
 
 use serde::Serialize;
 
+mod study;
+pub use self::study::*;
+
 pub use super::raw::{
     GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, RoughnessClassRaw as RoughnessClass,
     SolverMethod, TermsRaw as Terms,
@@ -36,19 +39,6 @@ pub struct Scenario {
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
-}
-
-/// A study over variants of the scene.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-#[serde(tag = "type", rename_all = "snake_case")]
-pub enum Study {
-    /// Separation map over velocity ratio × mass ratio.
-    SeparationMap {
-        /// Velocity ratios swept.
-        velocity_ratio: Grid,
-        /// Mass ratios swept.
-        mass_ratio: Grid,
-    },
 }
 
 /// Dimensionless groups of an oscillator (see the raw format).

@@ -1,7 +1,8 @@
-//! Studies: many runs derived from one scene. Separation maps run their grid
-//! points in parallel (rayon) and collect them in grid order, so the result
-//! does not depend on the thread count; convergence ladders run one after
-//! another so their wall times do not compete.
+//! Studies: many runs derived from one scene. Separation maps and speed
+//! sweeps run their points in parallel (rayon) and collect them in order, so
+//! the result does not depend on the thread count; convergence ladders run
+//! one after another so their wall times do not compete.
 
 pub mod converge;
 pub mod separation_map;
+pub mod speed_sweep;

@@ -1,0 +1,135 @@
+//! The `study` section: many runs derived from the scene.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+use super::RoughnessClassRaw;
+
+/// A study: many runs derived from the scene.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+#[schemars(tag = "type")]
+pub enum StudyRaw {
+    /// Separation map (the LCP separation paper's Fig. 6): the scene's single
+    /// oscillator, given with `dimensionless`, is run over a grid of velocity
+    /// ratio × vehicle-to-bridge mass ratio with its other ratios fixed; each
+    /// point is marked separated if any wheel loses contact. Needs unilateral
+    /// contact. Writes study.csv and separation_map.png.
+    SeparationMap(SeparationMapRaw),
+    /// Speed sweep (the plate paper's Figs. 12, 13 and 17): every vehicle
+    /// takes each speed of `speeds` in turn (keeping its entry time), on each
+    /// surface of `roughness`; each run gives the DAF at the middle of every
+    /// span on every girder line, the DAF of every `bridge_displacement`
+    /// record and the largest force of every `contact_force` record. Writes
+    /// study.csv, daf_speed.png, daf_speed_roughness.png and daf_map.png. The
+    /// automatic mode cut-off and time step cover the whole sweep (its top
+    /// speed and its slowest, longest run).
+    SpeedSweep(SpeedSweepRaw),
+}
+
+/// Grid of a separation map.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SeparationMapRaw {
+    /// Velocity ratios α = v / (2 f₁ L) to sweep (dimensionless).
+    pub velocity_ratio: GridRaw,
+    /// Vehicle-to-bridge mass ratios (m_s + m_u) / (m L) to sweep (dimensionless).
+    pub mass_ratio: GridRaw,
+}
+
+/// Evenly spaced values from `from` to `to` inclusive.
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GridRaw {
+    /// First value.
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Number of values (≥ 1; 1 gives `from` only).
+    #[schemars(range(min = 1))]
+    pub count: usize,
+}
+
+impl GridRaw {
+    /// The values.
+    pub fn values(&self) -> Vec<f64> {
+        if self.count <= 1 {
+            return vec![self.from];
+        }
+        (0..self.count)
+            .map(|i| self.from + (self.to - self.from) * i as f64 / (self.count - 1) as f64)
+            .collect()
+    }
+}
+
+/// A speed sweep over one or more road surfaces.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SpeedSweepRaw {
+    /// Speeds to sweep, m/s (each > 0); every vehicle takes each speed in
+    /// turn. 10–150 km/h is `{from: 2.7778, to: 41.667, count: 15}`.
+    pub speeds: GridRaw,
+    /// Surfaces to sweep: `smooth`, or a roughness class (`very_good`,
+    /// `good`, `average`, `poor`, `very_poor`) that replaces the scene's
+    /// surface by a random profile of that class (sampling length, terms and
+    /// seed from the scene's random surface if it has one, else twice the
+    /// bridge length, one term per 0.5 m of it and seed 1). Default: the
+    /// scene's own surface only.
+    #[serde(default)]
+    pub roughness: Option<Vec<SweepRoughnessRaw>>,
+    /// Random profiles per random surface (≥ 1; dimensionless count): sample
+    /// k (from 1) uses seed + k − 1. Smooth and harmonic surfaces run once.
+    /// Default 1.
+    #[serde(default)]
+    #[schemars(range(min = 1))]
+    pub samples: Option<usize>,
+    /// Span (counted from 1 at the entrance) at whose middle the plots and
+    /// the summary show the DAF. Default: the longest span (the first of
+    /// equally long ones), e.g. span 2 of the plate paper's 3-span deck.
+    #[serde(default)]
+    #[schemars(range(min = 1))]
+    pub span: Option<usize>,
+    /// Girder line (counted from 1 in `bridge.girder_lines`) of the
+    /// roughness plot, the DAF map and the summary. Default 1 (a beam has
+    /// only line 1).
+    #[serde(default)]
+    #[schemars(range(min = 1))]
+    pub girder: Option<usize>,
+}
+
+/// One surface of a speed sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepRoughnessRaw {
+    /// Perfectly smooth surface.
+    Smooth,
+    /// Random profile with A_r = 4e-6 m³/cycle.
+    VeryGood,
+    /// Random profile with A_r = 16e-6 m³/cycle.
+    Good,
+    /// Random profile with A_r = 64e-6 m³/cycle.
+    Average,
+    /// Random profile with A_r = 256e-6 m³/cycle.
+    Poor,
+    /// Random profile with A_r = 1024e-6 m³/cycle.
+    VeryPoor,
+}
+
+impl SweepRoughnessRaw {
+    /// The roughness class of a random entry (`None` for `smooth`).
+    pub fn class(self) -> Option<RoughnessClassRaw> {
+        match self {
+            SweepRoughnessRaw::Smooth => None,
+            SweepRoughnessRaw::VeryGood => Some(RoughnessClassRaw::VeryGood),
+            SweepRoughnessRaw::Good => Some(RoughnessClassRaw::Good),
+            SweepRoughnessRaw::Average => Some(RoughnessClassRaw::Average),
+            SweepRoughnessRaw::Poor => Some(RoughnessClassRaw::Poor),
+            SweepRoughnessRaw::VeryPoor => Some(RoughnessClassRaw::VeryPoor),
+        }
+    }
+
+    /// The entry's name as written in the format.
+    pub fn name(self) -> &'static str {
+        self.class().map_or("smooth", RoughnessClassRaw::name)
+    }
+}

@@ -1,0 +1,268 @@
+//! A speed sweep's scenes: the vehicles at a speed, the surface of each
+//! roughness entry and sample, the checks of the `study` section, and the
+//! excitation the automatic defaults must cover over the whole sweep.
+
+use super::content::{self, Excitation};
+use super::raw::SpeedSweepRaw;
+use super::resolve::{Checker, MAX_SPEED};
+use super::resolved::{Bridge, Contact, SpeedSweep, Study, Surface, SweepRoughness, Vehicle};
+use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS};
+
+/// Most values on the speed grid.
+pub const MAX_SPEEDS: usize = 500;
+/// Most runs a sweep may ask for (speeds × surfaces × samples).
+pub const MAX_POINTS: usize = 100_000;
+
+/// `vehicles` with every speed set to `speed` (m/s); entry times are kept.
+pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
+    let mut out = vehicles.to_vec();
+    for vehicle in &mut out {
+        match vehicle {
+            Vehicle::MovingForce(v) => v.speed = speed,
+            Vehicle::Oscillator(v) => v.speed = speed,
+            Vehicle::H20Truck(v) => v.speed = speed,
+        }
+    }
+    out
+}
+
+/// The vehicles of the sweep's fastest and slowest runs (the scene's own
+/// vehicles twice when `study` is not a speed sweep).
+pub(super) fn extreme_vehicles(
+    study: Option<&Study>,
+    vehicles: &[Vehicle],
+) -> (Vec<Vehicle>, Vec<Vehicle>) {
+    match study {
+        Some(Study::SpeedSweep(sweep)) => {
+            let (slow, fast) = sweep.speed_range();
+            (with_speed(vehicles, fast), with_speed(vehicles, slow))
+        }
+        _ => (vehicles.to_vec(), vehicles.to_vec()),
+    }
+}
+
+/// Whether the surface of `entry` (`None`: the scene's own) is random.
+pub fn is_random(base: &Surface, entry: Option<SweepRoughness>) -> bool {
+    match entry {
+        None => matches!(base, Surface::Random { .. }),
+        Some(e) => e.class().is_some(),
+    }
+}
+
+/// The label of `entry` in tables and plots: its name, or for the scene's
+/// own surface `smooth`, `harmonic`, its class or `random`.
+pub fn label(base: &Surface, entry: Option<SweepRoughness>) -> String {
+    match (entry, base) {
+        (Some(e), _) => e.name().to_string(),
+        (None, Surface::Smooth) => "smooth".into(),
+        (None, Surface::Harmonic { .. }) => "harmonic".into(),
+        (None, Surface::Random { class: Some(c), .. }) => c.name().into(),
+        (None, Surface::Random { class: None, .. }) => "random".into(),
+    }
+}
+
+/// The surface of roughness entry `entry` (`None`: the scene's own) for
+/// sample `k` (from 0) over a bridge of length `bridge_length` (m): a random
+/// profile's seed is advanced by `k`; a class takes the sampling length,
+/// terms and seed of the scene's random surface, or the defaults (twice the
+/// bridge length, one term per 0.5 m, seed 1).
+pub fn surface(
+    base: &Surface,
+    entry: Option<SweepRoughness>,
+    k: usize,
+    bridge_length: f64,
+) -> Surface {
+    let advance = |seed: u64| seed.wrapping_add(k as u64);
+    let Some(entry) = entry else {
+        let mut own = base.clone();
+        if let Surface::Random { seed, .. } = &mut own {
+            *seed = advance(*seed);
+        }
+        return own;
+    };
+    let Some(class) = entry.class() else {
+        return Surface::Smooth;
+    };
+    let (sampling_length, terms, seed) = match *base {
+        Surface::Random {
+            sampling_length,
+            terms,
+            seed,
+            ..
+        } => (sampling_length, terms, seed),
+        _ => {
+            let length = 2.0 * bridge_length;
+            let terms =
+                ((length / DEFAULT_SHORTEST_WAVELENGTH).round() as usize).clamp(1, MAX_TERMS);
+            (length, terms, 1)
+        }
+    };
+    Surface::Random {
+        class: Some(class),
+        coefficient: class.coefficient(),
+        sampling_length,
+        terms,
+        seed: advance(seed),
+    }
+}
+
+/// Excitations over the whole sweep: every vehicle at the top speed on
+/// each swept surface, so that the automatic mode cut-off and time step
+/// serve every run.
+pub(super) fn excitations(
+    sweep: &SpeedSweep,
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    base: &Surface,
+    bridge: &Bridge,
+    gravity: f64,
+) -> Vec<Excitation> {
+    let (_, top) = sweep.speed_range();
+    let fast = with_speed(vehicles, top);
+    let entries: Vec<Option<SweepRoughness>> = match &sweep.roughness {
+        None => vec![None],
+        Some(list) => list.iter().copied().map(Some).collect(),
+    };
+    let mut out = Vec::new();
+    for entry in entries {
+        let surface = surface(base, entry, 0, bridge.length());
+        for mut e in content::excitations(&fast, contact, &surface, bridge.spans(), gravity) {
+            if e.source.contains("(v /") {
+                e.source = format!("{} at the sweep's top speed, {top} m/s", e.source);
+            }
+            if !out.contains(&e) {
+                out.push(e);
+            }
+        }
+    }
+    out
+}
+
+/// Checks the `study` section of a speed sweep and fills its defaults.
+pub(super) fn resolve(
+    raw: &SpeedSweepRaw,
+    bridge: &Bridge,
+    surface: &Surface,
+    ck: &mut Checker<'_>,
+) -> SpeedSweep {
+    let grid = &raw.speeds;
+    if grid.from <= 0.0 {
+        ck.error(
+            "study.speeds.from",
+            format!("the sweep's speeds must be positive, got {}", grid.from),
+        );
+    }
+    if grid.to < grid.from {
+        ck.error(
+            "study.speeds.to",
+            format!("`to` ({}) is below `from` ({})", grid.to, grid.from),
+        );
+    } else if grid.to == grid.from && grid.count > 1 {
+        ck.error(
+            "study.speeds.to",
+            format!(
+                "{} speeds from {} to {} are all the same; raise `to` or use `count: 1`",
+                grid.count, grid.from, grid.to
+            ),
+        );
+    }
+    if grid.to > MAX_SPEED {
+        ck.error(
+            "study.speeds.to",
+            format!("a speed of {} m/s is above {MAX_SPEED} m/s", grid.to),
+        );
+    }
+    if !(1..=MAX_SPEEDS).contains(&grid.count) {
+        ck.error(
+            "study.speeds.count",
+            format!(
+                "a speed sweep needs 1 to {MAX_SPEEDS} speeds, got {}",
+                grid.count
+            ),
+        );
+    }
+    if let Some(list) = &raw.roughness {
+        if list.is_empty() {
+            ck.error(
+                "study.roughness",
+                "`roughness` needs at least one surface (or leave it out to sweep the scene's own)",
+            );
+        }
+        for (i, entry) in list.iter().enumerate() {
+            if list[..i].contains(entry) {
+                ck.error(
+                    &format!("study.roughness[{i}]"),
+                    format!("`{}` is listed twice", entry.name()),
+                );
+            }
+        }
+    }
+    let entries: Vec<Option<SweepRoughness>> = match &raw.roughness {
+        None => vec![None],
+        Some(list) => list.iter().copied().map(Some).collect(),
+    };
+    let samples = raw.samples.unwrap_or(1);
+    if samples == 0 {
+        ck.error("study.samples", "`samples` must be at least 1, got 0");
+    } else if samples > 1 && !entries.iter().any(|&e| is_random(surface, e)) {
+        ck.error(
+            "study.samples",
+            format!(
+                "{samples} samples of a deterministic surface are the same run; `samples` applies to random surfaces (a roughness class)"
+            ),
+        );
+    }
+    let runs_per_speed: usize = entries
+        .iter()
+        .map(|&e| if is_random(surface, e) { samples } else { 1 })
+        .sum();
+    let points = runs_per_speed.saturating_mul(grid.count);
+    if points > MAX_POINTS {
+        ck.error(
+            "study",
+            format!("the sweep would take {points} runs, more than {MAX_POINTS}"),
+        );
+    }
+    let spans = bridge.spans();
+    let longest = spans
+        .iter()
+        .enumerate()
+        .fold((0, f64::NEG_INFINITY), |best, (i, &l)| {
+            if l > best.1 { (i, l) } else { best }
+        })
+        .0;
+    let span = raw.span.unwrap_or(longest + 1);
+    if !(1..=spans.len()).contains(&span) {
+        ck.error(
+            "study.span",
+            format!(
+                "span {span} does not exist; the bridge has {} span{} (counted from 1)",
+                spans.len(),
+                if spans.len() == 1 { "" } else { "s" }
+            ),
+        );
+    }
+    let girder = raw.girder.unwrap_or(1);
+    let lines = match bridge {
+        Bridge::Beam(_) => 1,
+        Bridge::Plate(p) => p.girder_lines.len(),
+    };
+    if !(1..=lines).contains(&girder) {
+        let message = match bridge {
+            Bridge::Beam(_) => {
+                format!("girder line {girder} does not exist; a beam has only line 1")
+            }
+            Bridge::Plate(_) => format!(
+                "girder line {girder} does not exist; the deck has {lines} (`bridge.girder_lines`, counted from 1)"
+            ),
+        };
+        ck.error("study.girder", message);
+    }
+    SpeedSweep {
+        speeds: grid.clone(),
+        roughness: raw.roughness.clone(),
+        samples,
+        span,
+        girder,
+    }
+}
