@@ -225,31 +225,50 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
         Err(e) => return load_error(&e),
     };
     let bridge = &loaded.bridge;
-    println!(
-        "{}: {} modes used of {} available ({})",
+    let plate = bridge.width().is_some();
+    // The table is built whole, then written once: a reader that closes the
+    // pipe early (`vbi modes f.yaml | head`) ends the output, not the program.
+    let mut table = format!(
+        "{}: {} modes used of {} available ({})\n{:>5} {:>14} {:>14} {:>12}{}\n",
         loaded.scenario.name,
         bridge.mode_count(),
         bridge.available_modes,
-        bridge.selection
+        bridge.selection,
+        "mode",
+        "frequency_Hz",
+        "period_s",
+        "damping",
+        // A plate mode's (m, n): its dominant longitudinal and transverse terms.
+        if plate { "  (m, n)" } else { "" }
     );
-    let plate = bridge.width().is_some();
-    print!(
-        "{:>5} {:>14} {:>14} {:>12}",
-        "mode", "frequency_Hz", "period_s", "damping"
-    );
-    // A plate mode's (m, n): its dominant longitudinal and transverse terms.
-    println!("{}", if plate { "  (m, n)" } else { "" });
     for (i, (f, z)) in bridge
         .frequencies()
         .iter()
         .zip(&bridge.damping_ratios)
         .enumerate()
     {
-        print!("{:>5} {:>14.6} {:>14.6} {:>12.4}", i + 1, f, 1.0 / f, z);
+        table.push_str(&format!(
+            "{:>5} {:>14.6} {:>14.6} {:>12.4}",
+            i + 1,
+            f,
+            1.0 / f,
+            z
+        ));
         if plate {
-            print!("  {}", bridge.mode_character(i));
+            table.push_str(&format!("  {}", bridge.mode_character(i)));
         }
-        println!();
+        table.push('\n');
+    }
+    {
+        use std::io::Write;
+        let mut stdout = std::io::stdout().lock();
+        if stdout
+            .write_all(table.as_bytes())
+            .and_then(|()| stdout.flush())
+            .is_err()
+        {
+            return ExitCode::SUCCESS;
+        }
     }
     if let Some(path) = shapes {
         let text = vbi::report::mode_shapes_csv(bridge);

@@ -114,3 +114,47 @@ record:
         assert!(g(3) > g(1), "the centre line carries the centred truck");
     }
 }
+
+/// A step whose iteration cannot converge within `max_iterations` stops the
+/// run: the library returns the solver's error naming the time, the vehicle
+/// position and the remaining change, and `vbi run` exits with 1 and leaves
+/// no results behind.
+#[test]
+fn iteration_that_does_not_converge_stops_the_run() {
+    let yaml = orthotropic(
+        r#"vehicles:
+  - {type: h20_44, speed: 30.0}
+surface: {type: random, class: average, seed: 1}
+solver: {method: iterative, time_step: 3.12e-3, tolerance: 1.0e-14, max_iterations: 2}
+"#,
+    );
+    let loaded = vbi::scenario::load_str(&yaml, "stuck.yaml").expect("valid scene");
+    let error = vbi::run::simulate(loaded, &mut |_, _| {})
+        .expect_err("two iterations cannot reach 1e-14")
+        .to_string();
+    for part in [
+        "did not converge",
+        "t = ",
+        "vehicle 1 front at x = ",
+        "max_iterations",
+    ] {
+        assert!(error.contains(part), "{error}");
+    }
+    let dir = std::env::temp_dir().join(format!("vbi-stuck-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let file = dir.join("stuck.yaml");
+    std::fs::write(&file, &yaml).expect("scene written");
+    let out = dir.join("out");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(["run", "--quiet", "--out"])
+        .arg(&out)
+        .arg(&file)
+        .output()
+        .expect("vbi runs");
+    assert_eq!(status.status.code(), Some(1), "{status:?}");
+    assert!(
+        !out.join("summary.json").exists() && !out.join("history.csv").exists(),
+        "no partial results"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
