@@ -6,7 +6,7 @@ mod support;
 
 use std::f64::consts::PI;
 
-use support::{column, max_abs, run_yaml};
+use support::{assert_histories_agree, run_yaml};
 use vbi::scenario::resolved::{H20Truck, Surface};
 use vbi::scenario::truck::H20_44_PRESET;
 use vbi::surface::Profile;
@@ -271,15 +271,12 @@ record:
     };
     let iterative = run_yaml(&scene("iterative"));
     let coupled = run_yaml(&scene("coupled"));
-    for name in ["mid2", "acc2", "f1", "f4", "pitch"] {
-        let (a, b) = (column(&iterative, name), column(&coupled, name));
-        let peak = max_abs(b);
-        let worst = a
-            .iter()
-            .zip(b)
-            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-        assert!(worst <= 1e-7 * peak, "{name}: {worst} against peak {peak}");
-    }
+    assert_histories_agree(
+        &iterative,
+        &coupled,
+        &["mid2", "acc2", "f1", "f4", "pitch"],
+        1e-7,
+    );
     let stats = iterative.summary.run.iterations.expect("iteration counts");
     assert!(stats.mean <= 4.0 && stats.max <= 6, "{stats:?}");
 }

@@ -106,7 +106,9 @@ pub struct PlateRaw {
     #[serde(default)]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic, as for
-    /// the beam (every mode up to 4 × the highest excitation, at least 5 per span).
+    /// the beam (every mode up to 4 × the highest excitation), and at least 5
+    /// per span of each of the bending, torsion and transverse-bending families
+    /// (15 per span).
     #[serde(default)]
     pub modes: Option<ModesRaw>,
     /// Structural damping. Default: 0 (undamped).
@@ -191,7 +193,7 @@ pub struct BeamRaw {
     /// Which modes the modal superposition keeps. Default: automatic — every
     /// mode up to 4 × the highest frequency the scene excites (vehicle natural
     /// frequencies incl. wheel hop on an elastic contact, axle passing v/d,
-    /// span crossing v/2L, roughness v/λ), and at least 3 per span; the
+    /// span crossing v/2L, roughness v/λ), and at least 5 per span; the
     /// resolved scenario gives the cut-off as `max_frequency` and the summary
     /// says why.
     #[serde(default)]

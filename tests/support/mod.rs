@@ -30,3 +30,20 @@ pub fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
 pub fn max_abs(values: &[f64]) -> f64 {
     values.iter().fold(0.0, |m, v| m.max(v.abs()))
 }
+
+/// Asserts that the histories `names` of two runs agree everywhere to
+/// `tolerance` × the peak |value| of `reference`'s history.
+pub fn assert_histories_agree(run: &Outcome, reference: &Outcome, names: &[&str], tolerance: f64) {
+    for name in names {
+        let (a, b) = (column(run, name), column(reference, name));
+        let peak = max_abs(b);
+        let worst = a
+            .iter()
+            .zip(b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        assert!(
+            worst <= tolerance * peak,
+            "{name}: differs by {worst} against a peak of {peak}"
+        );
+    }
+}
