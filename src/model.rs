@@ -97,10 +97,8 @@ pub struct Model {
     pub method: SolverMethod,
     /// Convergence settings of the `iterative` method.
     pub iteration: Iteration,
-    /// Span lengths, m.
-    pub spans: Vec<f64>,
-    /// Transverse positions y of the girder lines on a plate deck, m (empty
-    /// on a beam): the summary tabulates the DAF at every span's middle on each.
+    /// Transverse positions y of the girder lines, m (a beam: one line): the
+    /// recorder tabulates the DAF at every span's middle on each.
     pub girder_lines: Vec<f64>,
 }
 
@@ -159,11 +157,7 @@ impl Model {
             alpha: scenario.solver.newmark.alpha,
             method: scenario.solver.method,
             iteration: scenario.solver.iteration.unwrap_or_default(),
-            spans: scenario.bridge.spans().to_vec(),
-            girder_lines: match &scenario.bridge {
-                crate::scenario::resolved::Bridge::Beam(_) => Vec::new(),
-                crate::scenario::resolved::Bridge::Plate(plate) => plate.girder_lines.clone(),
-            },
+            girder_lines: scenario.bridge.girder_lines(),
         })
     }
 

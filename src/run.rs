@@ -199,7 +199,7 @@ pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Resu
         &report::history_csv(&outcome.history),
     )?;
     report::write_atomic(&out.join("resolved.yaml"), yaml.as_bytes())?;
-    if !outcome.history.girder_dafs.is_empty() {
+    if outcome.model.bridge.width().is_some() {
         report::write_atomic(
             &out.join("daf_table.csv"),
             report::girder_daf_csv(&outcome.history.girder_dafs).as_bytes(),

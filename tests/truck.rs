@@ -12,6 +12,17 @@ use vbi::scenario::truck::H20_44_PRESET;
 use vbi::surface::Profile;
 use vbi::vehicle::h20_44;
 
+/// The preset truck at 20 m/s on a beam (g = 9.81 m/s²).
+fn preset_truck() -> vbi::vehicle::VehicleModel {
+    let truck = H20Truck {
+        speed: 20.0,
+        entry_time: 0.0,
+        lateral_position: None,
+        parameters: H20_44_PRESET,
+    };
+    h20_44::build(&truck, 9.81)
+}
+
 /// The preset's static wheel loads are the plate paper's (Section 3.2, after
 /// Eq. 8): 58.81 kN under each front wheel and 32.42 kN under each rear wheel
 /// of the empty truck, to the paper's rounding (±5 N), both from the lever
@@ -22,13 +33,7 @@ fn preset_static_wheel_loads_match_the_paper() {
     for (load, paper) in loads.iter().zip([58_810.0, 58_810.0, 32_420.0, 32_420.0]) {
         assert!((load - paper).abs() <= 5.0, "{load} N against {paper} N");
     }
-    let truck = H20Truck {
-        speed: 20.0,
-        entry_time: 0.0,
-        lateral_position: None,
-        parameters: H20_44_PRESET,
-    };
-    let model = h20_44::build(&truck, 9.81);
+    let model = preset_truck();
     let (_, forces) = model.static_equilibrium(1, &|_| 0.0).expect("equilibrium");
     for (force, load) in forces.iter().zip(loads) {
         assert!(
@@ -47,13 +52,7 @@ fn preset_static_wheel_loads_match_the_paper() {
 #[test]
 fn matrices_match_the_equations_of_motion() {
     let p = H20_44_PRESET;
-    let truck = H20Truck {
-        speed: 20.0,
-        entry_time: 0.0,
-        lateral_position: None,
-        parameters: p,
-    };
-    let model = h20_44::build(&truck, 9.81);
+    let model = preset_truck();
     let mut seed = 12345u64;
     let mut random = || {
         seed = seed

@@ -106,28 +106,27 @@ impl ModalBridge {
             x += span;
             supports.push(x);
         }
-        let (mut omegas, available, shapes) = match bridge {
+        let (mut omegas, count, shapes) = match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam);
-                let available = model.free_dofs();
                 let (omegas, vectors) = model.eigen()?;
                 let count = select_count(modes, &omegas)?;
                 let shapes = model.shapes(&vectors, count);
-                (omegas, available, Shapes::Beam { shapes, model })
+                (omegas, count, Shapes::Beam { shapes, model })
             }
             Bridge::Plate(plate) => {
                 let (mut plate_modes, omegas) = PlateModes::build(plate)?;
-                let available = plate_modes.available();
                 let count = select_count(modes, &omegas)?;
                 plate_modes.truncate(count);
                 let shapes = Shapes::Plate {
                     modes: plate_modes,
                     lines: Vec::new(),
                 };
-                (omegas, available, shapes)
+                (omegas, count, shapes)
             }
         };
-        let count = select_count(modes, &omegas)?;
+        // Every mode the discretisation offers, before the selection.
+        let available = omegas.len();
         omegas.truncate(count);
         let damping = match bridge {
             Bridge::Beam(beam) => &beam.damping,

@@ -85,7 +85,7 @@ impl StaticProbe {
     }
 }
 
-/// The DAF at the middle of one span on one girder line of a plate deck.
+/// The DAF at the middle of one span on one girder line.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct GirderDaf {
     /// Span number from 1.
@@ -141,8 +141,8 @@ pub struct History {
     /// Separation statistics of every wheel with a DOF, under unilateral
     /// contact (empty under permanent contact).
     pub separation: Vec<WheelSeparation>,
-    /// On a plate deck: the DAF at the middle of every span on every girder
-    /// line, span by span (empty on a beam).
+    /// The DAF at the middle of every span on every girder line, span by
+    /// span (a beam has one line, at y = 0).
     pub girder_dafs: Vec<GirderDaf>,
 }
 
@@ -290,9 +290,8 @@ impl<'m> Recorder<'m> {
             Vec::new()
         };
         let mut daf_probes = Vec::new();
-        let mut start = 0.0;
-        for (s, span) in model.spans.iter().enumerate() {
-            let x = start + 0.5 * span;
+        for (s, ends) in model.bridge.supports.windows(2).enumerate() {
+            let x = 0.5 * (ends[0] + ends[1]);
             for (g, &y) in model.girder_lines.iter().enumerate() {
                 let mut shape = vec![0.0; modes];
                 model.bridge.mode_values(x, y, &mut shape);
@@ -310,7 +309,6 @@ impl<'m> Recorder<'m> {
                     statics: StaticProbe::new(model, x, y)?,
                 });
             }
-            start += span;
         }
         Ok(Self {
             model,

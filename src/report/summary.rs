@@ -213,7 +213,12 @@ impl Summary {
             },
             quantities,
             separation: history.separation.clone(),
-            girder_dafs: history.girder_dafs.clone(),
+            // A beam's span middles are in `quantities` already when recorded.
+            girder_dafs: if model.bridge.width().is_some() {
+                history.girder_dafs.clone()
+            } else {
+                Vec::new()
+            },
         }
     }
 }

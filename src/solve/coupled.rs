@@ -94,14 +94,7 @@ pub fn run(
                 reason: "the condensed contact system is singular".into(),
             });
         }
-        step_state.finish_step(
-            model,
-            &nm,
-            &mut modal,
-            &wheel_positions,
-            &lambda,
-            &mut contact_forces,
-        );
+        step_state.finish_step(&nm, &mut modal, &lambda, &mut contact_forces);
 
         guard.check(model, &modal, &step_state.states, &lambda, t, step)?;
 

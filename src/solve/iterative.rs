@@ -157,14 +157,7 @@ pub fn run(
         }
         total_iterations += iterations;
         most_iterations = most_iterations.max(iterations);
-        step_state.finish_step(
-            model,
-            &nm,
-            &mut modal,
-            &wheel_positions,
-            &lambda,
-            &mut contact_forces,
-        );
+        step_state.finish_step(&nm, &mut modal, &lambda, &mut contact_forces);
 
         guard.check(model, &modal, &step_state.states, &lambda, t, step)?;
 

@@ -90,6 +90,10 @@ pub struct PermanentContacts {
     pub shapes: Vec<ContactShapes>,
     /// Wheel kinematics at λ = 0: [displacement m, velocity m/s, acceleration m/s²].
     pub base: Vec<[f64; 3]>,
+    /// The surface under each contact this step: elevation r (m), slope r′
+    /// and curvature r″ (1/m); evaluated once in `begin_step` (a random
+    /// profile costs O(terms)) and reused by `finish_step`.
+    surface: Vec<(f64, f64, f64)>,
     /// Modal correction −DΦᵀλ work vector.
     correction: Vec<f64>,
 }
@@ -139,6 +143,7 @@ impl PermanentContacts {
         Ok(Self {
             shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
             base: vec![[0.0; 3]; nc],
+            surface: vec![(0.0, 0.0, 0.0); nc],
             correction: vec![0.0; modes],
             contacts,
             load_wheels,
@@ -196,6 +201,7 @@ impl PermanentContacts {
                     nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
             }
             let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            self.surface[c] = (r, dr, ddr);
             self.base[c] = [
                 dot(&s.values, q_star) + r,
                 dot(&s.velocity_row, q_star) - dot(&s.values, damping_history) + v * dr,
@@ -256,16 +262,15 @@ impl PermanentContacts {
         }
     }
 
-    /// Ends the step with contact forces `forces` (N, contact order): the
-    /// bridge takes them, the wheels follow the surface exactly, the free
+    /// Ends the step begun by `begin_step` (same wheel positions) with
+    /// contact forces `forces` (N, contact order): the bridge takes them,
+    /// the wheels follow the surface exactly, the free
     /// vehicle DOFs are solved, and `contact_forces` (flattened wheels) is
     /// updated.
     pub fn finish_step(
         &mut self,
-        model: &Model,
         nm: &Newmark,
         modal: &mut ModalStep,
-        wheel_positions: &[f64],
         forces: &[f64],
         contact_forces: &mut [f64],
     ) {
@@ -276,9 +281,8 @@ impl PermanentContacts {
         let (q, qd, qdd) = (&modal.displacement, &modal.velocity, &modal.acceleration);
         for (c, contact) in self.contacts.iter().enumerate() {
             let s = &self.shapes[c];
-            let x = wheel_positions[contact.wheel];
             let v = contact.speed;
-            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            let (r, dr, ddr) = self.surface[c];
             let (w, wx, wxx) = (dot(&s.values, q), dot(&s.slopes, q), dot(&s.curvatures, q));
             let state = &mut self.states[contact.vehicle];
             state.displacement[contact.dof] = w + r;

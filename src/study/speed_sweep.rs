@@ -163,11 +163,7 @@ fn run_point(
     (roughness, entry, k, speed): (usize, Option<SweepRoughness>, usize, f64),
 ) -> Result<SweepPoint, RunError> {
     let scenario = point_scenario(base, bridge, entry, k, speed);
-    let mut model = Model::build(&scenario, bridge.clone())?;
-    if let Bridge::Beam(_) = scenario.bridge {
-        // A beam has one line: tabulate its span middles too.
-        model.girder_lines = vec![0.0];
-    }
+    let model = Model::build(&scenario, bridge.clone())?;
     let mut recorder =
         Recorder::new(&model, &scenario.record).map_err(crate::model::BuildError::from)?;
     let stats = solve::run(&model, &mut recorder, &mut |_, _| {})?;

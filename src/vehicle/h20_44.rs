@@ -72,7 +72,7 @@ fn contact_point(wheel: usize) -> [f64; DOFS] {
 
 /// Adds a spring (or dashpot) of rate `rate` between the points `a` and `b`.
 fn add_element(matrix: &mut DMatrix<f64>, rate: f64, a: &[f64; DOFS], b: &[f64; DOFS]) {
-    let d: Vec<f64> = a.iter().zip(b).map(|(x, y)| x - y).collect();
+    let d: [f64; DOFS] = std::array::from_fn(|i| a[i] - b[i]);
     for i in 0..DOFS {
         for j in 0..DOFS {
             matrix[(i, j)] += rate * d[i] * d[j];
