@@ -1,36 +1,16 @@
 //! The command line end to end: `run` and its output files, the resolved
 //! scenario round trip, `modes`, `schema`, help and usage errors.
 
+mod support;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use serde_json::Value;
+use support::Scratch;
 
 fn manifest_dir() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A scratch folder under the system temp dir, unique per process and test,
-/// removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(test: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-cli-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
 }
 
 fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
@@ -97,10 +77,10 @@ fn file_names(dir: &Path) -> Vec<String> {
 
 #[test]
 fn run_writes_summary_history_and_resolved_scenario() {
-    let scratch = Scratch::new("run-writes");
+    let scratch = Scratch::new("cli", "run-writes");
     let scenario = quick_yang_yau(&scratch);
     let out_dir = scratch.path("out");
-    let out = run_quiet(&scenario, &out_dir, &scratch.0);
+    let out = run_quiet(&scenario, &out_dir, scratch.dir());
     assert_exit(&out, 0);
     assert_eq!(text(&out.stderr), "", "--quiet prints nothing on stderr");
     assert_eq!(text(&out.stdout), "", "run prints nothing on stdout");
@@ -173,18 +153,18 @@ fn assert_same_summary(mut a: Value, mut b: Value) {
 
 #[test]
 fn resolved_scenario_checks_runs_and_resolves_to_itself() {
-    let scratch = Scratch::new("resolved-round-trip");
+    let scratch = Scratch::new("cli", "resolved-round-trip");
     let scenario = quick_yang_yau(&scratch);
     let first = scratch.path("first");
-    assert_exit(&run_quiet(&scenario, &first, &scratch.0), 0);
+    assert_exit(&run_quiet(&scenario, &first, scratch.dir()), 0);
     let resolved = first.join("resolved.yaml");
 
-    let out = vbi(&["check".as_ref(), resolved.as_os_str()], &scratch.0);
+    let out = vbi(&["check".as_ref(), resolved.as_os_str()], scratch.dir());
     assert_exit(&out, 0);
     assert_eq!(text(&out.stdout), format!("{}: ok\n", resolved.display()));
 
     let second = scratch.path("second");
-    assert_exit(&run_quiet(&resolved, &second, &scratch.0), 0);
+    assert_exit(&run_quiet(&resolved, &second, scratch.dir()), 0);
     assert_same_summary(
         read_json(&first.join("summary.json")),
         read_json(&second.join("summary.json")),
@@ -200,7 +180,7 @@ fn resolved_scenario_checks_runs_and_resolves_to_itself() {
 
 #[test]
 fn run_without_quiet_reports_on_stderr() {
-    let scratch = Scratch::new("run-loud");
+    let scratch = Scratch::new("cli", "run-loud");
     let scenario = quick_yang_yau(&scratch);
     let out_dir = scratch.path("out");
     let out = vbi(
@@ -210,7 +190,7 @@ fn run_without_quiet_reports_on_stderr() {
             "--out".as_ref(),
             out_dir.as_os_str(),
         ],
-        &scratch.0,
+        scratch.dir(),
     );
     assert_exit(&out, 0);
     let stderr = text(&out.stderr);
@@ -234,7 +214,7 @@ fn first_frequency(length: f64, ei: f64, m: f64) -> f64 {
 
 #[test]
 fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
-    let scratch = Scratch::new("modes");
+    let scratch = Scratch::new("cli", "modes");
     let scenario = manifest_dir().join("scenarios/yang-yau-sprung-mass.yaml");
     let shapes = scratch.path("shapes.csv");
     let out = vbi(
@@ -244,7 +224,7 @@ fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
             "--shapes".as_ref(),
             shapes.as_os_str(),
         ],
-        &scratch.0,
+        scratch.dir(),
     );
     assert_exit(&out, 0);
     let stdout = text(&out.stdout);

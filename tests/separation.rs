@@ -372,14 +372,7 @@ fn separation_map(name: &str, pool_threads: Option<usize>) -> SeparationMap {
         Ok(Results::SeparationMap(map)) => map,
         other => panic!("expected a separation map, got {other:?}"),
     };
-    match pool_threads {
-        None => run(),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .expect("pool")
-            .install(run),
-    }
+    support::on_threads(pool_threads, run)
 }
 
 /// The paper's Fig. 6 finding: harmonic roughness enlarges the separation

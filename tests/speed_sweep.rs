@@ -6,10 +6,10 @@
 
 mod support;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
-use support::run_yaml;
+use support::{Scratch, on_threads, run_yaml};
 use vbi::run::{Results, execute};
 use vbi::scenario::load_str;
 use vbi::study::speed_sweep::SweepResults;
@@ -23,14 +23,7 @@ fn sweep(text: &str, threads: Option<usize>) -> SweepResults {
         Ok(_) => panic!("expected a speed sweep"),
         Err(e) => panic!("{e}"),
     };
-    match threads {
-        None => run(),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .expect("pool")
-            .install(run),
-    }
+    on_threads(threads, run)
 }
 
 /// A two-span beam (20 + 25 m) crossed by a two-axle moving load at `speed`
@@ -256,24 +249,6 @@ fn plate_sweep_tabulates_every_girder_and_matches_single_runs() {
 // ---------------------------------------------------------------------------
 // The command line
 
-/// A scratch folder under the system temp dir, removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(test: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-sweep-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
 fn vbi_run(scenario: &Path, out: &Path) -> Output {
     Command::new(env!("CARGO_BIN_EXE_vbi"))
         .args(["run".as_ref(), scenario.as_os_str(), "--out".as_ref()])
@@ -302,12 +277,12 @@ fn stderr(out: &Output) -> String {
 /// cannot be made, exits 1 and leaves nothing behind.
 #[test]
 fn run_writes_every_output_and_nothing_on_failure() {
-    let scratch = Scratch::new("cli");
-    let scene = scratch.0.join("sweep.yaml");
+    let scratch = Scratch::new("sweep", "cli");
+    let scene = scratch.path("sweep.yaml");
     let study = "surface: {type: harmonic, amplitude: 0.002, wavelength: 5.0}\n\
                  study: {type: speed_sweep, speeds: {from: 10.0, to: 30.0, count: 4}, roughness: [smooth, good], samples: 2, span: 1}\n";
     std::fs::write(&scene, beam_scene("20.0", study)).unwrap();
-    let out = scratch.0.join("out");
+    let out = scratch.path("out");
     let run = vbi_run(&scene, &out);
     assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
     assert_eq!(
@@ -364,7 +339,7 @@ fn run_writes_every_output_and_nothing_on_failure() {
     assert_eq!(largest["daf"].as_f64(), all_dafs.reduce(f64::max));
 
     // The resolved scene reproduces the sweep.
-    let again = scratch.0.join("again");
+    let again = scratch.path("again");
     let run = vbi_run(&out.join("resolved.yaml"), &again);
     assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
     assert_eq!(
@@ -373,20 +348,20 @@ fn run_writes_every_output_and_nothing_on_failure() {
     );
 
     // Every run diverges: β = 0.01 with a step far beyond its limit.
-    let diverging = scratch.0.join("diverging.yaml");
+    let diverging = scratch.path("diverging.yaml");
     let text = beam_scene("20.0", study).replace(
         "time_step: 1.0e-3,",
         "time_step: 2.0e-2, newmark: {beta: 0.01, gamma: 0.5},",
     );
     std::fs::write(&diverging, text).unwrap();
-    let failed = scratch.0.join("failed");
+    let failed = scratch.path("failed");
     let run = vbi_run(&diverging, &failed);
     assert_eq!(run.status.code(), Some(1), "{}", stderr(&run));
     assert!(stderr(&run).contains("diverged"), "{}", stderr(&run));
     assert!(!failed.exists(), "left behind {:?}", file_names(&failed));
 
     // The output folder cannot be made: a file is in the way.
-    let blocked = scratch.0.join("blocked");
+    let blocked = scratch.path("blocked");
     std::fs::write(&blocked, "keep").unwrap();
     let run = vbi_run(&scene, &blocked.join("out"));
     assert_eq!(run.status.code(), Some(1), "{}", stderr(&run));

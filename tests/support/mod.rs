@@ -6,6 +6,8 @@
 pub mod event_reference;
 pub mod reference;
 
+use std::path::{Path, PathBuf};
+
 use vbi::run::{Outcome, simulate};
 use vbi::scenario::load_str;
 
@@ -45,5 +47,48 @@ pub fn assert_histories_agree(run: &Outcome, reference: &Outcome, names: &[&str]
             worst <= tolerance * peak,
             "{name}: differs by {worst} against a peak of {peak}"
         );
+    }
+}
+
+/// A scratch folder under the system temp dir, unique per process, test
+/// binary and test, removed on drop.
+pub struct Scratch(PathBuf);
+
+impl Scratch {
+    /// Creates the empty folder for `test` of the test binary `binary`.
+    pub fn new(binary: &str, test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    /// The folder.
+    pub fn dir(&self) -> &Path {
+        &self.0
+    }
+
+    /// The path of `name` inside the folder.
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Runs `f` in a rayon pool of `threads` threads, or in the global pool
+/// when `None`.
+pub fn on_threads<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> T {
+    match threads {
+        None => f(),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .expect("pool")
+            .install(f),
     }
 }
