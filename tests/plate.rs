@@ -407,7 +407,8 @@ fn narrow_strip_influence_line_matches_beam() {
         elements_per_span: 20,
         modes: no_modes(),
         damping: Damping::Modal { ratio: 0.0 },
-    });
+    })
+    .unwrap();
     let beam_line = beam.influence_line(39.0).unwrap();
     let peak = beam_line.value_at(39.0);
     assert!(peak > 0.0, "a downward load deflects the point downward");

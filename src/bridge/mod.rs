@@ -39,6 +39,40 @@ pub enum BridgeError {
         /// Available modes (free dofs).
         available: usize,
     },
+    /// A size taken from the input does not fit in memory.
+    #[error("the bridge model does not fit in memory")]
+    OutOfMemory,
+    /// A shifted matrix K − σM is singular (σ on an eigenvalue).
+    #[error(
+        "a shifted bridge matrix K − σM is singular; the eigen solver cannot count modes there"
+    )]
+    SingularShift,
+    /// A computed mode failed a check.
+    #[error(
+        "bridge mode {mode} failed its check: {what} = {value:.3e}, above the bound {bound:.0e} (the eigen solution cannot be trusted; report this model)"
+    )]
+    ModeCheckFailed {
+        /// Mode number from 1.
+        mode: usize,
+        /// The quantity checked.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// The bound it exceeded.
+        bound: f64,
+    },
+    /// The inertia count disagrees with the modes found.
+    #[error(
+        "the eigen solver found {solved} modes below {below:.6} Hz but the Sturm (inertia) count of the model says {counted}: a mode would be missing"
+    )]
+    ModesMissing {
+        /// The cut, Hz.
+        below: f64,
+        /// Modes the solver returned below it.
+        solved: usize,
+        /// Modes the inertia count finds below it.
+        counted: usize,
+    },
     /// No mode lies below the requested maximum frequency.
     #[error("no mode has a frequency at most {max_frequency} Hz; the first is {first:.4} Hz")]
     NoModeBelow {
@@ -66,6 +100,8 @@ pub struct ModalBridge {
     pub available_modes: usize,
     /// How the kept modes were chosen, in words (for the summary).
     pub selection: String,
+    /// How the kept modes were verified (residuals, orthonormality, inertia).
+    pub check: eigen::ModeCheck,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
 }
@@ -88,17 +124,75 @@ enum Shapes {
     },
 }
 
+/// Which modes a bridge keeps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ModeRequest {
+    /// The lowest `count`.
+    Lowest(usize),
+    /// Every mode up to a frequency, Hz.
+    UpTo(f64),
+    /// The lowest `count`, but none above a frequency (Hz).
+    LowestUpTo(usize, f64),
+    /// Every mode up to a frequency (Hz), and at least the lowest `count`.
+    AtLeastUpTo(usize, f64),
+}
+
+impl ModeRequest {
+    /// The request a resolved `modes:` section makes; `fallback` when it
+    /// names neither a count nor a frequency.
+    pub fn of(modes: &Modes, fallback: ModeRequest) -> Self {
+        match (modes.count, modes.max_frequency) {
+            (Some(n), None) => ModeRequest::Lowest(n),
+            (None, Some(f)) => ModeRequest::UpTo(f),
+            (Some(n), Some(f)) => ModeRequest::LowestUpTo(n, f),
+            (None, None) => fallback,
+        }
+    }
+}
+
+/// (2π f)², rad²/s².
+fn eigenvalue_of(frequency: f64) -> f64 {
+    (2.0 * PI * frequency).powi(2)
+}
+
 impl ModalBridge {
-    /// Builds the modal model of a resolved bridge description.
-    ///
-    /// Cost: assembling is O(elements); the dense eigen solve O(dofs³).
+    /// Number of modes a bridge's discretisation offers, without solving:
+    /// the beam's free dofs, or the plate's Ritz terms.
+    pub fn available_of(bridge: &Bridge) -> usize {
+        match bridge {
+            Bridge::Beam(beam) => BeamModel::free_dofs_of(beam),
+            Bridge::Plate(plate) => plate.terms.longitudinal * plate.terms.transverse,
+        }
+    }
+
+    /// Builds the modal model of a resolved bridge description with the
+    /// modes its `modes:` section asks for (every mode the model offers when
+    /// it names none).
     pub fn build(bridge: &Bridge) -> Result<Self, BridgeError> {
-        let modes = bridge.modes();
-        let selection = match (modes.count, modes.max_frequency) {
-            (Some(n), None) => format!("requested: the lowest {n} modes"),
-            (None, Some(f)) => format!("requested: every mode up to {f} Hz"),
-            (Some(n), Some(f)) => format!("requested: the lowest {n} modes, up to {f} Hz"),
-            (None, None) => "every mode the model offers".into(),
+        let all = Self::available_of(bridge);
+        Self::build_with(
+            bridge,
+            ModeRequest::of(bridge.modes(), ModeRequest::Lowest(all)),
+        )
+    }
+
+    /// Builds the modal model of a resolved bridge description with the
+    /// modes `request` asks for, each checked ([`eigen`]).
+    ///
+    /// Cost: assembling O(elements); a beam's modes by shift-invert Lanczos
+    /// (O(modes · dofs) per step, [`eigen::lanczos`]) or densely when small;
+    /// a frequency cut-off one extra sparse factorisation for its inertia
+    /// count; a plate's Ritz problem O(terms³).
+    pub fn build_with(bridge: &Bridge, request: ModeRequest) -> Result<Self, BridgeError> {
+        let selection = match request {
+            ModeRequest::Lowest(n) => format!("requested: the lowest {n} modes"),
+            ModeRequest::UpTo(f) => format!("requested: every mode up to {f} Hz"),
+            ModeRequest::LowestUpTo(n, f) => {
+                format!("requested: the lowest {n} modes, up to {f} Hz")
+            }
+            ModeRequest::AtLeastUpTo(n, f) => {
+                format!("every mode up to {f} Hz, and at least the lowest {n}")
+            }
         };
         let mut supports = vec![0.0];
         let mut x = 0.0;
@@ -106,28 +200,41 @@ impl ModalBridge {
             x += span;
             supports.push(x);
         }
-        let (mut omegas, count, shapes) = match bridge {
+        let available = Self::available_of(bridge);
+        let (omegas, shapes, check) = match bridge {
             Bridge::Beam(beam) => {
-                let model = BeamModel::new(beam);
-                let (omegas, vectors) = model.eigen()?;
-                let count = select_count(modes, &omegas)?;
-                let shapes = model.shapes(&vectors, count);
-                (omegas, count, Shapes::Beam { shapes, model })
+                let model = BeamModel::new(beam)?;
+                let pencil = &model.pencil;
+                let count = select_count(
+                    request,
+                    available,
+                    |f| pencil.count_below(eigenvalue_of(f)),
+                    || Ok(model.modes(1)?.eigenvalues[0].sqrt() / (2.0 * PI)),
+                )?;
+                let modes = model.modes(count)?;
+                let shapes = model.shapes(&modes.vectors, count);
+                let omegas = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
+                (omegas, Shapes::Beam { shapes, model }, modes.check)
             }
             Bridge::Plate(plate) => {
-                let (mut plate_modes, omegas) = PlateModes::build(plate)?;
-                let count = select_count(modes, &omegas)?;
+                let (mut plate_modes, mut omegas) = PlateModes::build(plate)?;
+                let frequencies: Vec<f64> = omegas.iter().map(|w| w / (2.0 * PI)).collect();
+                let count = select_count(
+                    request,
+                    available,
+                    |f| Ok(frequencies.iter().take_while(|&&g| g < f).count()),
+                    || Ok(frequencies[0]),
+                )?;
+                let check = plate_modes.check(count)?;
                 plate_modes.truncate(count);
+                omegas.truncate(count);
                 let shapes = Shapes::Plate {
                     modes: plate_modes,
                     lines: Vec::new(),
                 };
-                (omegas, count, shapes)
+                (omegas, shapes, check)
             }
         };
-        // Every mode the discretisation offers, before the selection.
-        let available = omegas.len();
-        omegas.truncate(count);
         let damping = match bridge {
             Bridge::Beam(beam) => &beam.damping,
             Bridge::Plate(plate) => &plate.damping,
@@ -140,6 +247,7 @@ impl ModalBridge {
             damping_ratios,
             available_modes: available,
             selection,
+            check,
             shapes,
         })
     }
@@ -286,32 +394,45 @@ impl ModalBridge {
     }
 }
 
-/// Number of modes kept under a selection: the lowest `count`, and/or all
-/// modes up to `max_frequency`; when both are given the smaller set wins.
-fn select_count(modes: &Modes, omegas: &[f64]) -> Result<usize, BridgeError> {
-    let available = omegas.len();
-    let mut count = available;
-    if let Some(requested) = modes.count {
+/// Number of modes kept under a request: `count_below(f)` counts the
+/// modes below f Hz (an inertia count), `first()` gives the lowest
+/// frequency (Hz) for the message when none lies below a cut-off.
+fn select_count(
+    request: ModeRequest,
+    available: usize,
+    count_below: impl Fn(f64) -> Result<usize, BridgeError>,
+    first: impl Fn() -> Result<f64, BridgeError>,
+) -> Result<usize, BridgeError> {
+    let lowest = |requested: usize| {
         if requested > available {
-            return Err(BridgeError::TooManyModes {
+            Err(BridgeError::TooManyModes {
                 requested,
                 available,
-            });
+            })
+        } else {
+            Ok(requested)
         }
-        count = requested;
-    }
-    if let Some(max_frequency) = modes.max_frequency {
-        let below = omegas
-            .iter()
-            .take_while(|&&w| w / (2.0 * PI) <= max_frequency)
-            .count();
+    };
+    // Modes at most f: count below f nudged up by a relative 1e-12 (a mode
+    // exactly at the cut-off is kept, as the cut-off written back to
+    // resolved.yaml must reproduce the same set).
+    let up_to = |f: f64| -> Result<usize, BridgeError> {
+        let below = count_below(f * (1.0 + 1e-12))?;
         if below == 0 {
             return Err(BridgeError::NoModeBelow {
-                max_frequency,
-                first: omegas[0] / (2.0 * PI),
+                max_frequency: f,
+                first: first()?,
             });
         }
-        count = count.min(below);
+        Ok(below)
+    };
+    match request {
+        ModeRequest::Lowest(n) => lowest(n),
+        ModeRequest::UpTo(f) => up_to(f),
+        ModeRequest::LowestUpTo(n, f) => Ok(lowest(n)?.min(up_to(f)?)),
+        ModeRequest::AtLeastUpTo(n, f) => {
+            let below = count_below(f * (1.0 + 1e-12))?;
+            Ok(below.max(n.min(available)).max(1))
+        }
     }
-    Ok(count)
 }

@@ -98,57 +98,19 @@ fn project(a: &Mat<f64>, phi: &Mat<f64>, count: usize) -> Mat<f64> {
     })
 }
 
-/// Every mode of K c = ω² M c (K, M symmetric positive definite): ω
-/// (rad/s) ascending, and the mass-normalised vectors (cᵀMc = 1) laid out
-/// `[term][mode]`.
+/// Every mode of K c = ω² M c (K, M symmetric positive definite): λ = ω²
+/// (rad²/s²) ascending and the mass-normalised vectors (cᵀMc = 1) as
+/// columns.
 ///
-/// Solved as the inverse problem M c = μ K c, μ = 1/ω², reduced with the
-/// Cholesky factor of K ([`eigen::generalized_symmetric`] with the roles
-/// swapped). A dense symmetric eigen solver finds each eigenvalue to about
-/// ε‖A‖ absolutely; solved forwards, ‖A‖ ≈ ω²_max, which on a narrow deck
-/// (stiff high transverse polynomials, ω²_max/ω²_min ~ 10¹⁶ for a 5 cm strip)
-/// swamps the fundamental. Inverted, ‖A‖ = 1/ω²_min, so the lowest modes —
-/// the ones a response uses — keep full relative accuracy whatever the
-/// spread, and only the highest (least accurate Ritz modes anyway) lose
-/// digits. Each ω² is then the Rayleigh quotient cᵀKc / cᵀMc = 1/(cᵀMc)
-/// (cᵀKc = 1 from the reduction), positive and finite by construction.
-/// Cost O(N³).
+/// Solved by the dense inverted reduction of [`eigen::dense`]: the lowest
+/// modes keep full relative accuracy even on a 5 cm strip, where
+/// ω²_max/ω²_min ~ 10¹⁶. The kept ones are checked later like every
+/// bridge's modes ([`PlateModes::check`]). Cost O(N³).
 fn lowest_modes_first(
     stiffness: &Mat<f64>,
     mass: &Mat<f64>,
-) -> Result<(Vec<f64>, Vec<f64>), BridgeError> {
-    let terms = stiffness.nrows();
-    // Solved "stiffness" M, "mass" K: K-normalised vectors (cᵀKc = 1).
-    let (_, vectors) =
-        eigen::generalized_symmetric(mass, stiffness).map_err(|error| match error {
-            BridgeError::MassNotPositive => BridgeError::StiffnessNotPositive,
-            other => other,
-        })?;
-    let modal_masses: Vec<f64> = (0..terms)
-        .map(|m| {
-            let c = vectors.col(m);
-            let mc = mass * c;
-            c.iter().zip(mc.iter()).map(|(a, b)| a * b).sum::<f64>()
-        })
-        .collect();
-    if modal_masses.iter().any(|&mm| !(mm > 0.0 && mm.is_finite())) {
-        return Err(BridgeError::MassNotPositive);
-    }
-    // ω² = 1/(cᵀMc); ascending ω is descending modal mass.
-    let mut order: Vec<usize> = (0..terms).collect();
-    order.sort_by(|&p, &q| modal_masses[q].total_cmp(&modal_masses[p]));
-    let omegas = order
-        .iter()
-        .map(|&m| modal_masses[m].sqrt().recip())
-        .collect();
-    let mut coefficients = vec![0.0; terms * terms];
-    for (mode, &m) in order.iter().enumerate() {
-        let scale = modal_masses[m].sqrt().recip();
-        for r in 0..terms {
-            coefficients[r * terms + mode] = scale * vectors[(r, m)];
-        }
-    }
-    Ok((omegas, coefficients))
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    eigen::dense::lowest_inverted(stiffness, mass)
 }
 
 /// Mass-normalised plate modes over the whole Ritz basis (or the kept ones
@@ -178,6 +140,12 @@ pub struct PlateModes {
     /// Lower Cholesky factor L of the full Ritz stiffness K = LLᵀ (K in
     /// N/m³), for influence lines without modal truncation.
     stiffness_factor: Mat<f64>,
+    /// The Ritz stiffness (N/m³ per basis product) and mass (kg), kept to
+    /// check the modes a run keeps ([`PlateModes::check`]).
+    ritz_stiffness: Mat<f64>,
+    ritz_mass: Mat<f64>,
+    /// ω² of every Ritz mode, rad²/s², ascending.
+    eigenvalues: Vec<f64>,
 }
 
 impl PlateModes {
@@ -205,14 +173,14 @@ impl PlateModes {
             },
             damping: Damping::Modal { ratio: 0.0 },
         };
-        let beam = BeamModel::new(&unit_beam);
+        let beam = BeamModel::new(&unit_beam)?;
         if nx > beam.free_dofs() {
             return Err(BridgeError::TooManyModes {
                 requested: nx,
                 available: beam.free_dofs(),
             });
         }
-        let (_, phi) = beam.eigen()?;
+        let phi = beam.modes(nx)?.vectors;
         let beam_functions = beam.shapes(&phi, nx);
 
         // ∫Nₐ'N_b' dx assembled on the beam's free dofs.
@@ -232,9 +200,9 @@ impl PlateModes {
                 }
             }
         }
-        let a0 = project(&beam.mass, &phi, nx);
+        let a0 = project(&beam.pencil.mass.to_dense(), &phi, nx);
         let a1 = project(&slope_products, &phi, nx);
-        let a2 = project(&beam.stiffness, &phi, nx);
+        let a2 = project(&beam.pencil.stiffness.to_dense(), &phi, nx);
 
         let transverse = match plate.edges {
             PlateEdges::Free => TransverseBasis::Legendre,
@@ -267,7 +235,14 @@ impl PlateModes {
             .map_err(|_| BridgeError::StiffnessNotPositive)?
             .L()
             .to_owned();
-        let (omegas, coefficients) = lowest_modes_first(&stiffness, &mass)?;
+        let (eigenvalues, vectors) = lowest_modes_first(&stiffness, &mass)?;
+        let omegas: Vec<f64> = eigenvalues.iter().map(|l| l.sqrt()).collect();
+        let mut coefficients = vec![0.0; terms * terms];
+        for mode in 0..terms {
+            for r in 0..terms {
+                coefficients[r * terms + mode] = vectors[(r, mode)];
+            }
+        }
 
         let term_norms = (0..terms)
             .map(|r| (a0[(r / ny, r / ny)] * b0[(r % ny) * ny + r % ny]).sqrt())
@@ -283,8 +258,27 @@ impl PlateModes {
             term_norms,
             kept: terms,
             stiffness_factor,
+            ritz_stiffness: stiffness,
+            ritz_mass: mass,
+            eigenvalues,
         };
         Ok((modes, omegas))
+    }
+
+    /// Checks the lowest `count` modes like every bridge's
+    /// ([`eigen::check_dense`]): residuals, M-orthonormality, inertia count.
+    pub fn check(&self, count: usize) -> Result<eigen::ModeCheck, BridgeError> {
+        let terms = self.available();
+        let vectors = Mat::from_fn(terms, count.min(terms), |r, mode| {
+            self.coefficients[r * terms + mode]
+        });
+        eigen::check_dense(
+            &self.ritz_stiffness,
+            &self.ritz_mass,
+            &self.eigenvalues,
+            &vectors,
+            count,
+        )
     }
 
     /// Number of Ritz functions (= modes available).

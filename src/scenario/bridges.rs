@@ -284,6 +284,9 @@ fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
     }
 }
 
+/// Most degrees of freedom a beam model may have.
+pub const MAX_BEAM_DOFS: usize = 1_000_000;
+
 fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     let elements_per_span = given.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
     if !(1..=10_000).contains(&elements_per_span) {
@@ -292,12 +295,14 @@ fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
             format!("elements per span must be between 1 and 10000, got {elements_per_span}"),
         );
     }
-    let total_dofs = spans * elements_per_span * 2;
-    if total_dofs > 20_000 {
+    // The sparse eigen solver's memory is linear in the DOFs (a Lanczos
+    // basis of a few hundred vectors): 10⁶ DOFs is ~2 GB for 100 modes.
+    let total_dofs = spans.saturating_mul(elements_per_span).saturating_mul(2);
+    if total_dofs > MAX_BEAM_DOFS {
         ck.error(
             "bridge.elements_per_span",
             format!(
-                "{total_dofs} degrees of freedom is more than the dense beam solver takes (20000)"
+                "{total_dofs} degrees of freedom is more than a beam model takes ({MAX_BEAM_DOFS}); use fewer elements per span"
             ),
         );
     }

@@ -169,13 +169,25 @@ pub fn excitations(
     out
 }
 
-/// The automatic mode cut-off: the count to keep and the reason, in words.
-pub fn mode_cutoff(
-    bridge: &ModalBridge,
-    spans: usize,
-    excitations: &[Excitation],
-) -> (usize, f64, String) {
-    let frequencies = bridge.frequencies();
+/// Fewest modes the automatic choice keeps: [`MODES_PER_SPAN`] per span, of
+/// each of [`PLATE_FAMILIES`] on a plate deck (a plate deck's quasi-static
+/// shape under an eccentric wheel needs the torsional and first
+/// transverse-bending families as well as bending: 45 on a three-span deck,
+/// the count the plate paper uses); at most what the model offers.
+pub fn minimum_modes(bridge: &super::resolved::Bridge) -> usize {
+    let families = match bridge {
+        super::resolved::Bridge::Plate(_) => PLATE_FAMILIES,
+        super::resolved::Bridge::Beam(_) => 1,
+    };
+    (MODES_PER_SPAN * bridge.spans().len() * families)
+        .min(ModalBridge::available_of(bridge))
+        .max(1)
+}
+
+/// The automatic mode cut-off given the bridge built with its
+/// [`minimum_modes`]: the cut-off frequency (Hz), whether the excitation
+/// (rather than the quasi-static minimum) sets it, and the top excitation.
+pub fn mode_cutoff(bridge: &ModalBridge, excitations: &[Excitation]) -> (f64, bool, Excitation) {
     let top = excitations
         .iter()
         .max_by(|a, b| a.frequency.total_cmp(&b.frequency))
@@ -185,38 +197,30 @@ pub fn mode_cutoff(
             frequency: 0.0,
         });
     let dynamic_cut = SAFETY * top.frequency;
-    // A plate deck's quasi-static shape under an eccentric wheel needs the
-    // torsional and first transverse-bending families as well as bending:
-    // MODES_PER_SPAN of each of PLATE_FAMILIES per span (45 on a three-span
-    // deck, the count the plate paper uses).
-    let families = if bridge.width().is_some() {
-        PLATE_FAMILIES
-    } else {
-        1
-    };
-    let minimum = (MODES_PER_SPAN * spans * families).min(frequencies.len());
-    let shape_cut = frequencies[minimum.max(1) - 1];
-    let cut = dynamic_cut.max(shape_cut);
-    let count = frequencies
-        .iter()
-        .take_while(|&&f| f <= cut * (1.0 + 1e-12))
-        .count()
-        .max(1);
-    let reason = if dynamic_cut >= shape_cut {
+    let shape_cut = bridge.frequencies().last().copied().unwrap_or(0.0);
+    (dynamic_cut.max(shape_cut), dynamic_cut > shape_cut, top)
+}
+
+/// The automatic choice's reason, in words.
+pub fn mode_reason(
+    count: usize,
+    cut: f64,
+    dynamic: bool,
+    top: &Excitation,
+    minimum: usize,
+) -> String {
+    if dynamic {
         format!(
             "automatic: {count} modes up to {cut:.2} Hz = {SAFETY} × {:.2} Hz, the highest excitation ({})",
             top.frequency, top.source
         )
     } else {
         format!(
-            "automatic: {count} modes, at least {} per span for the quasi-static shape \
+            "automatic: {count} modes, at least {minimum} for the quasi-static shape \
              (up to {cut:.2} Hz; {SAFETY} × the highest excitation, {:.2} Hz from {}, needs fewer)",
-            MODES_PER_SPAN * families,
-            top.frequency,
-            top.source
+            top.frequency, top.source
         )
-    };
-    (count, cut, reason)
+    }
 }
 
 /// The automatic time step: [`STEPS_PER_PERIOD`] steps per period of the

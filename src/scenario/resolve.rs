@@ -14,7 +14,7 @@ use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
 use super::resolved::*;
 use super::yaml::{Location, Node, PathSeg};
-use crate::bridge::{BridgeError, ModalBridge};
+use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
 
 /// Default finite elements per span.
 pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
@@ -152,15 +152,25 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     if !ck.diagnostics.is_empty() {
         return None;
     }
-    let mut modal = match ModalBridge::build(&bridge) {
-        Ok(m) => m,
-        Err(e) => {
+    let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
+    let minimum = content::minimum_modes(&bridge);
+    let build = |request| {
+        ModalBridge::build_with(&bridge, request).map_err(|e| {
             let path = match e {
                 BridgeError::TooManyModes { .. } => "bridge.modes.count",
                 BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",
                 _ => "bridge",
             };
-            ck.error(path, e.to_string());
+            (path, e.to_string())
+        })
+    };
+    let mut modal = match build(ModeRequest::of(
+        bridge.modes(),
+        ModeRequest::Lowest(minimum),
+    )) {
+        Ok(m) => m,
+        Err((path, message)) => {
+            ck.error(path, message);
             return None;
         }
     };
@@ -182,13 +192,20 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         }
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
-    let modes = bridge.modes();
-    if modes.count.is_none() && modes.max_frequency.is_none() {
+    if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
-        let (count, cutoff, reason) =
-            content::mode_cutoff(&modal, bridge.spans().len(), &excitations);
-        modal.truncate(count, reason);
+        let (cutoff, dynamic, top) = content::mode_cutoff(&modal, &excitations);
+        if dynamic {
+            modal = match build(ModeRequest::AtLeastUpTo(minimum, cutoff)) {
+                Ok(m) => m,
+                Err((path, message)) => {
+                    ck.error(path, message);
+                    return None;
+                }
+            };
+        }
+        modal.selection = content::mode_reason(modal.mode_count(), cutoff, dynamic, &top, minimum);
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
     if !ck.diagnostics.is_empty() {
