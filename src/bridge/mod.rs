@@ -113,13 +113,13 @@ enum Shapes {
     /// finite-element model for static influence lines.
     Beam {
         shapes: HermiteField,
-        model: BeamModel,
+        model: Box<BeamModel>,
     },
     /// A plate: the Ritz modes, and the kept modes along the lines the
     /// wheels and records use (exact y match), so a point on such a line
     /// costs what a beam point costs.
     Plate {
-        modes: PlateModes,
+        modes: Box<PlateModes>,
         lines: Vec<(f64, HermiteField)>,
     },
 }
@@ -214,7 +214,14 @@ impl ModalBridge {
                 let modes = model.modes(count)?;
                 let shapes = model.shapes(&modes.vectors, count);
                 let omegas = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
-                (omegas, Shapes::Beam { shapes, model }, modes.check)
+                (
+                    omegas,
+                    Shapes::Beam {
+                        shapes,
+                        model: Box::new(model),
+                    },
+                    modes.check,
+                )
             }
             Bridge::Plate(plate) => {
                 let (mut plate_modes, mut omegas) = PlateModes::build(plate)?;
@@ -229,7 +236,7 @@ impl ModalBridge {
                 plate_modes.truncate(count);
                 omegas.truncate(count);
                 let shapes = Shapes::Plate {
-                    modes: plate_modes,
+                    modes: Box::new(plate_modes),
                     lines: Vec::new(),
                 };
                 (omegas, shapes, check)

@@ -175,13 +175,17 @@ pub fn excitations(
 /// transverse-bending families as well as bending: 45 on a three-span deck,
 /// the count the plate paper uses); at most what the model offers.
 pub fn minimum_modes(bridge: &super::resolved::Bridge) -> usize {
-    let families = match bridge {
-        super::resolved::Bridge::Plate(_) => PLATE_FAMILIES,
-        super::resolved::Bridge::Beam(_) => 1,
-    };
-    (MODES_PER_SPAN * bridge.spans().len() * families)
+    (modes_per_span(bridge) * bridge.spans().len())
         .min(ModalBridge::available_of(bridge))
         .max(1)
+}
+
+/// Fewest modes per span the automatic choice keeps ([`minimum_modes`]).
+pub fn modes_per_span(bridge: &super::resolved::Bridge) -> usize {
+    match bridge {
+        super::resolved::Bridge::Plate(_) => MODES_PER_SPAN * PLATE_FAMILIES,
+        super::resolved::Bridge::Beam(_) => MODES_PER_SPAN,
+    }
 }
 
 /// The automatic mode cut-off given the bridge built with its
@@ -207,7 +211,7 @@ pub fn mode_reason(
     cut: f64,
     dynamic: bool,
     top: &Excitation,
-    minimum: usize,
+    per_span: usize,
 ) -> String {
     if dynamic {
         format!(
@@ -216,7 +220,7 @@ pub fn mode_reason(
         )
     } else {
         format!(
-            "automatic: {count} modes, at least {minimum} for the quasi-static shape \
+            "automatic: {count} modes, at least {per_span} per span for the quasi-static shape \
              (up to {cut:.2} Hz; {SAFETY} × the highest excitation, {:.2} Hz from {}, needs fewer)",
             top.frequency, top.source
         )

@@ -205,7 +205,13 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
                 }
             };
         }
-        modal.selection = content::mode_reason(modal.mode_count(), cutoff, dynamic, &top, minimum);
+        modal.selection = content::mode_reason(
+            modal.mode_count(),
+            cutoff,
+            dynamic,
+            &top,
+            content::modes_per_span(&bridge),
+        );
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
     if !ck.diagnostics.is_empty() {

@@ -127,12 +127,30 @@ impl ModalStep {
     }
 
     /// Accepts the corrected predictor as q_{n+1} and updates q̇, q̈.
+    ///
+    /// q̈ is recovered from the HHT equation of motion itself,
+    /// (1 + wγΔt c) q̈_{n+1} = wF_{n+1} − αFₙ − w c (q̇ₙ + (1−γ)Δt q̈ₙ)
+    /// − w k q_{n+1} + α(c q̇ₙ + k qₙ) (w = 1+α, c = 2ζω, k = ω²), and q̇
+    /// from Newmark's velocity update, instead of from a₀(q_{n+1} − qₙ) − …:
+    /// that difference cancels |q| down to |q̈|Δt², so its round-off grows
+    /// like ε|q|/Δt² and swamps accelerations at small steps. Both forms are
+    /// the same scheme in exact arithmetic.
     pub fn finish(&mut self, nm: &Newmark) {
+        let (w, alpha) = (nm.weight(), nm.alpha);
         for i in 0..self.predictor.len() {
             let q = self.predictor[i];
+            let (q_old, v_old, a_old) =
+                (self.displacement[i], self.velocity[i], self.acceleration[i]);
+            let (c, k) = (self.modal_damping[i], self.stiffness[i]);
+            let a_new = (w * self.current_force[i]
+                - alpha * self.previous_force[i]
+                - w * c * (v_old + nm.a6 * a_old)
+                - w * k * q
+                + alpha * (c * v_old + k * q_old))
+                / (1.0 + w * nm.a7 * c);
             self.displacement[i] = q;
-            self.acceleration[i] = nm.a0 * q - self.inertia_history[i];
-            self.velocity[i] = nm.a1 * q - self.damping_history[i];
+            self.acceleration[i] = a_new;
+            self.velocity[i] = nm.velocity(v_old, a_old, a_new);
         }
         std::mem::swap(&mut self.previous_force, &mut self.current_force);
     }

@@ -40,6 +40,13 @@ pub struct Partition {
     stiffness_w_all: DMatrix<f64>,
     /// T = K̂_WF K̂_FF⁻¹.
     transfer: DMatrix<f64>,
+    /// (M_FF + wγΔt C_FF)⁻¹, for recovering ü_F from the equations of
+    /// motion ([`Partition::finish_step`]).
+    recovery: DMatrix<f64>,
+    /// α(C_F·u̇ₙ + K_F·uₙ) of the current step, N.
+    alpha_terms: DVector<f64>,
+    /// Work vector for the recovery, N.
+    recovery_load: DVector<f64>,
     /// M̃/w: contact force per unit wheel acceleration, kg.
     pub condensed_mass: DMatrix<f64>,
     /// C̃/w, N·s/m.
@@ -75,6 +82,9 @@ impl Partition {
         let effective =
             &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * weight;
         let effective_flexibility = select(&effective, f, f).try_inverse()?;
+        let recovery = (select(&vehicle.mass, f, f)
+            + select(&vehicle.damping, f, f) * (weight * nm.a7))
+            .try_inverse()?;
         let transfer = select(&effective, w, f) * &effective_flexibility;
         let mass_fw = select(&vehicle.mass, f, w);
         let damping_fw = select(&vehicle.damping, f, w);
@@ -90,6 +100,9 @@ impl Partition {
             damping_wf: select(&vehicle.damping, w, f),
             damping_f_all: select(&vehicle.damping, f, &all),
             stiffness_f_all: select(&vehicle.stiffness, f, &all),
+            recovery,
+            alpha_terms: DVector::zeros(f.len()),
+            recovery_load: DVector::zeros(f.len()),
             damping_w_all: select(&vehicle.damping, w, &all),
             stiffness_w_all: select(&vehicle.stiffness, w, &all),
             gravity_f: pick(&vehicle.gravity_load, f),
@@ -136,11 +149,13 @@ impl Partition {
             .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
         self.effective_load
             .gemv(w, &self.damping_ff, &self.damping_history, 1.0);
+        self.alpha_terms.fill(0.0);
         if alpha != 0.0 {
-            self.effective_load
+            self.alpha_terms
                 .gemv(alpha, &self.damping_f_all, velocity, 1.0);
-            self.effective_load
+            self.alpha_terms
                 .gemv(alpha, &self.stiffness_f_all, displacement, 1.0);
+            self.effective_load += &self.alpha_terms;
         }
         // λ⁰ = T R̂_F − M_WF hₐ − w C_WF h_v − α(C_W·u̇ₙ + K_W·uₙ) − f_g,W + αλₙ.
         self.base_forces.copy_from(&self.gravity_w);
@@ -164,7 +179,14 @@ impl Partition {
 
     /// Finishes the step: with the wheel DOFs' new displacement, velocity and
     /// acceleration already in the state, solves the free DOFs and writes
-    /// their Newmark velocity and acceleration.
+    /// their velocity and acceleration.
+    ///
+    /// ü_F is recovered from the HHT equations of motion of the free rows,
+    /// (M_FF + wγΔt C_FF) ü_F = f_g,F − M_FW ü_W − w[C_FF(u̇ₙ + (1−γ)Δt üₙ)_F
+    /// plus C_FW u̇_W plus K_F· u_{n+1}] + α(C_F·u̇ₙ + K_F·uₙ), and u̇_F from
+    /// Newmark's velocity update; not as a₀(u_{n+1} − uₙ) − …, whose
+    /// round-off grows like ε|u|/Δt² (u is measured from the springs' free
+    /// lengths, so |u| is the static sag). The same scheme in exact arithmetic.
     pub fn finish_step(
         &mut self,
         nm: &Newmark,
@@ -183,11 +205,33 @@ impl Partition {
         }
         self.free_solution
             .gemv(1.0, &self.effective_flexibility, &self.coupling, 0.0);
+        // Recovery load: every term but the free DOFs' new velocity's
+        // unknown part; the wheel DOFs are already at t_{n+1}.
+        self.recovery_load.copy_from(&self.gravity_f);
+        self.recovery_load += &self.alpha_terms;
         for (k, &d) in self.free_dofs.iter().enumerate() {
-            let u_new = self.free_solution[k];
-            acceleration[d] = nm.a0 * u_new - self.inertia_history[k];
-            velocity[d] = nm.a1 * u_new - self.damping_history[k];
-            displacement[d] = u_new;
+            displacement[d] = self.free_solution[k];
+        }
+        self.recovery_load
+            .gemv(-w, &self.stiffness_f_all, displacement, 1.0);
+        for (j, &d) in self.wheel_dofs.iter().enumerate() {
+            for i in 0..self.free_dofs.len() {
+                self.recovery_load[i] -= self.mass_fw[(i, j)] * acceleration[d]
+                    + w * self.damping_fw[(i, j)] * velocity[d];
+            }
+        }
+        for (k, &dk) in self.free_dofs.iter().enumerate() {
+            let predicted_velocity = velocity[dk] + nm.a6 * acceleration[dk];
+            for i in 0..self.free_dofs.len() {
+                self.recovery_load[i] -= w * self.damping_ff[(i, k)] * predicted_velocity;
+            }
+        }
+        self.coupling
+            .gemv(1.0, &self.recovery, &self.recovery_load, 0.0);
+        for (k, &d) in self.free_dofs.iter().enumerate() {
+            let a_new = self.coupling[k];
+            velocity[d] = nm.velocity(velocity[d], acceleration[d], a_new);
+            acceleration[d] = a_new;
         }
     }
 }

@@ -58,6 +58,17 @@ struct VehicleStep {
     inertia_history: DVector<f64>,
     damping_history: DVector<f64>,
     predictor: DVector<f64>,
+    /// (M + wγΔt C)⁻¹ where it exists (no massless undamped DOF): the
+    /// accelerations then come from the equations of motion (see the step's
+    /// end), else from Newmark's displacement difference.
+    recovery: Option<DMatrix<f64>>,
+    /// External force of the step, f_g + wEλ_{n+1} − αEλₙ, N; then the
+    /// recovery load.
+    recovery_load: DVector<f64>,
+    /// Previous state, for the α terms of the recovery.
+    previous_velocity: DVector<f64>,
+    previous_acceleration: DVector<f64>,
+    previous_displacement: DVector<f64>,
 }
 
 /// Integrates the model with unilateral contact.
@@ -118,6 +129,11 @@ pub fn run(
             inertia_history: DVector::zeros(n),
             damping_history: DVector::zeros(n),
             predictor: DVector::zeros(n),
+            recovery: (&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)).try_inverse(),
+            recovery_load: DVector::zeros(n),
+            previous_velocity: DVector::zeros(n),
+            previous_acceleration: DVector::zeros(n),
+            previous_displacement: DVector::zeros(n),
         });
     }
 
@@ -307,13 +323,56 @@ pub fn run(
                 .axpy(lambda[c], &vs.contact_response.column(contact.column), 1.0);
         }
         modal.finish(&nm);
-        for (state, vs) in states.iter_mut().zip(&steps) {
+        // The external forces of the step on each vehicle: f_g + wEλ_{n+1} − αEλₙ.
+        for vs in steps.iter_mut() {
+            vs.recovery_load.fill(0.0);
+        }
+        for (c, contact) in contacts.iter().enumerate() {
+            steps[contact.vehicle].recovery_load[contact.dof] +=
+                nm.weight() * lambda[c] - nm.alpha * carried[c];
+        }
+        for ((state, vs), vehicle) in states.iter_mut().zip(steps.iter_mut()).zip(&model.vehicles) {
+            let Some(recovery) = &vs.recovery else {
+                for k in 0..state.displacement.len() {
+                    let u_new = vs.predictor[k];
+                    let a_new = nm.a0 * u_new - vs.inertia_history[k];
+                    state.velocity[k] = nm.a1 * u_new - vs.damping_history[k];
+                    state.acceleration[k] = a_new;
+                    state.displacement[k] = u_new;
+                }
+                continue;
+            };
+            // (M + wγΔt C) ü_{n+1} = f_g + wEλ_{n+1} − αEλₙ − w[C(u̇ₙ + (1−γ)Δt üₙ)
+            // + K u_{n+1}] + α(C u̇ₙ + K uₙ): the HHT equations of motion, free
+            // of the ε|u|/Δt² round-off of a₀(u_{n+1} − uₙ) − … (u includes
+            // the static sag). The same scheme in exact arithmetic.
+            let w = nm.weight();
+            vs.previous_velocity.copy_from(&state.velocity);
+            vs.previous_acceleration.copy_from(&state.acceleration);
+            vs.previous_displacement.copy_from(&state.displacement);
+            vs.recovery_load += &vehicle.gravity_load;
+            vs.recovery_load
+                .gemv(-w, &vehicle.stiffness, &vs.predictor, 1.0);
+            // Reuse `inertia_history` as the predicted velocity u̇ₙ + (1−γ)Δt üₙ.
+            vs.inertia_history.copy_from(&vs.previous_velocity);
+            vs.inertia_history
+                .axpy(nm.a6, &vs.previous_acceleration, 1.0);
+            vs.recovery_load
+                .gemv(-w, &vehicle.damping, &vs.inertia_history, 1.0);
+            if nm.alpha != 0.0 {
+                vs.recovery_load
+                    .gemv(nm.alpha, &vehicle.damping, &vs.previous_velocity, 1.0);
+                vs.recovery_load
+                    .gemv(nm.alpha, &vehicle.stiffness, &vs.previous_displacement, 1.0);
+            }
+            vs.damping_history
+                .gemv(1.0, recovery, &vs.recovery_load, 0.0);
             for k in 0..state.displacement.len() {
-                let u_new = vs.predictor[k];
-                let a_new = nm.a0 * u_new - vs.inertia_history[k];
-                state.velocity[k] = nm.a1 * u_new - vs.damping_history[k];
+                let a_new = vs.damping_history[k];
+                state.velocity[k] =
+                    nm.velocity(vs.previous_velocity[k], vs.previous_acceleration[k], a_new);
                 state.acceleration[k] = a_new;
-                state.displacement[k] = u_new;
+                state.displacement[k] = vs.predictor[k];
             }
         }
         // Rigid landing is perfectly inelastic: a wheel that was off the

@@ -27,6 +27,9 @@ use faer::{Accum, Mat, Par, Side};
 use super::sparse::{Factor, SymmetricSparse, multiply};
 use crate::bridge::BridgeError;
 
+/// An accurate product y = A x with the shifted matrix.
+pub type Product<'a> = &'a dyn Fn(&[f64], &mut [f64]);
+
 /// Iterative-refinement steps per solve when an accurate product is given.
 pub const REFINEMENT_STEPS: usize = 2;
 
@@ -48,7 +51,7 @@ pub fn lowest(
     factor: &Factor,
     shift: f64,
     wanted: usize,
-    refine: Option<&dyn Fn(&[f64], &mut [f64])>,
+    refine: Option<Product<'_>>,
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
     let n = mass.nrows();
     let wanted = wanted.min(n);
@@ -142,7 +145,7 @@ pub fn lowest(
         steps += 1;
         let scale = diagonal.iter().fold(0.0f64, |m, a| m.max(a.abs()));
         let exhausted = steps >= n;
-        let breakdown = !(norm > 1e-14 * scale) || !norm.is_finite();
+        let breakdown = norm.is_nan() || norm <= 1e-14 * scale || !norm.is_finite();
         let beta = if exhausted || breakdown { 0.0 } else { norm };
         off_diagonal.push(beta);
 

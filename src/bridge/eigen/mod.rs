@@ -168,7 +168,7 @@ impl Pencil {
     pub fn lowest_unverified(
         &self,
         count: usize,
-        stiffness: Option<&dyn Fn(&[f64], &mut [f64])>,
+        stiffness: Option<lanczos::Product<'_>>,
     ) -> Result<Eigenpairs, BridgeError> {
         let n = self.order();
         if count > n || n == 0 || count == 0 {
@@ -294,7 +294,8 @@ pub fn verify(
             .sum();
         let energy_phi: f64 = phi.iter().zip(&k_phi).map(|(a, b)| a * b).sum();
         let relative = (energy_r.abs() / energy_phi).sqrt();
-        if !(lambda > 0.0 && lambda.is_finite()) || !(relative <= RESIDUAL_BOUND) {
+        let accepted = lambda > 0.0 && lambda.is_finite() && relative <= RESIDUAL_BOUND;
+        if !accepted {
             return Err(BridgeError::ModeCheckFailed {
                 mode: mode + 1,
                 what: "relative residual ‖Kφ − ω²Mφ‖/‖Kφ‖ in the energy norm",
@@ -314,7 +315,7 @@ pub fn verify(
         for j in 0..count {
             let target = if i == j { 1.0 } else { 0.0 };
             let error = (gram[(i, j)] - target).abs();
-            if !(error <= ORTHONORMALITY_BOUND) {
+            if error.is_nan() || error > ORTHONORMALITY_BOUND {
                 return Err(BridgeError::ModeCheckFailed {
                     mode: i.max(j) + 1,
                     what: "M-orthonormality |φᵢᵀMφⱼ − δᵢⱼ|",
