@@ -20,6 +20,17 @@ pub struct Extreme {
     pub position: f64,
 }
 
+/// Largest, smallest and largest absolute value over a part of the record.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Extremes {
+    /// Largest value.
+    pub max: Extreme,
+    /// Smallest value.
+    pub min: Extreme,
+    /// Largest absolute value (signed value reported).
+    pub max_abs: Extreme,
+}
+
 /// Statistics of one recorded quantity.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct QuantitySummary {
@@ -31,12 +42,16 @@ pub struct QuantitySummary {
     pub unit: &'static str,
     /// What `position` refers to.
     pub position_of: String,
-    /// Largest value.
+    /// Largest value over the whole record.
     pub max: Extreme,
-    /// Smallest value.
+    /// Smallest value over the whole record.
     pub min: Extreme,
-    /// Largest absolute value (signed value reported).
+    /// Largest absolute value over the whole record (signed value reported).
     pub max_abs: Extreme,
+    /// The same three extremes restricted to the samples at which at least
+    /// one axle is on the bridge (absent if none is).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub on_bridge: Option<Extremes>,
     /// Bridge displacements: largest absolute static crossing response at the
     /// same point, m.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -111,6 +126,39 @@ static loads on level ground (moving-force loads, or the vehicle's static contac
 along its own line across the deck, deflection from the whole Ritz stiffness via influence lines \
 (no inertia, no modal truncation), at the same point and times";
 
+/// Extremes of `values` over the samples where `mask` is true; `None` if it
+/// is true nowhere.
+fn masked_extremes(
+    model: &Model,
+    column: &Column,
+    time: &[f64],
+    values: &[f64],
+    mask: &[bool],
+) -> Option<Extremes> {
+    let pick = |better: &dyn Fn(f64, f64) -> bool| {
+        let mut best: Option<usize> = None;
+        for (i, &v) in values.iter().enumerate() {
+            if mask[i] && best.is_none_or(|b| better(v, values[b])) {
+                best = Some(i);
+            }
+        }
+        best.map(|i| {
+            let t = time[i];
+            let p = column.position;
+            Extreme {
+                value: values[i],
+                time: t,
+                position: model.vehicles[p.vehicle].front_position(t) - p.offset,
+            }
+        })
+    };
+    Some(Extremes {
+        max: pick(&|a, b| a > b)?,
+        min: pick(&|a, b| a < b)?,
+        max_abs: pick(&|a, b| a.abs() > b.abs())?,
+    })
+}
+
 fn extreme(
     model: &Model,
     column: &Column,
@@ -142,11 +190,20 @@ impl Summary {
         stats: &SolveStats,
         wall_time: f64,
     ) -> Self {
+        // Samples at which at least one axle is on the deck.
+        let on_deck: Vec<bool> = history
+            .time
+            .iter()
+            .map(|&t| {
+                (0..model.wheels.len()).any(|w| model.bridge.is_on(model.wheel_position(w, t)))
+            })
+            .collect();
         let quantities = history
             .columns
             .iter()
             .map(|column| {
                 let t = &history.time;
+                let on_bridge = masked_extremes(model, column, t, &column.values, &on_deck);
                 let max = extreme(model, column, t, &column.values, |a, b| a > b);
                 let min = extreme(model, column, t, &column.values, |a, b| a < b);
                 let max_abs = extreme(model, column, t, &column.values, |a, b| a.abs() > b.abs());
@@ -176,6 +233,7 @@ impl Summary {
                     max,
                     min,
                     max_abs,
+                    on_bridge,
                     static_max_abs,
                     daf,
                 }
