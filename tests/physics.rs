@@ -73,6 +73,7 @@ fn beam(spans: &[f64], ei: f64, m: f64, elements_per_span: usize, count: usize) 
         modes: Modes {
             count: Some(count),
             max_frequency: None,
+            static_correction: true,
         },
         damping: Damping::Modal { ratio: 0.0 },
     })

@@ -25,6 +25,7 @@ fn no_modes() -> Modes {
     Modes {
         count: None,
         max_frequency: None,
+        static_correction: true,
     }
 }
 

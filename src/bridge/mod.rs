@@ -102,6 +102,9 @@ pub struct ModalBridge {
     pub selection: String,
     /// How the kept modes were verified (residuals, orthonormality, inertia).
     pub check: eigen::ModeCheck,
+    /// Whether recorded displacements get the static share of the modes
+    /// left out ([`crate::record`]).
+    pub static_correction: bool,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
 }
@@ -255,6 +258,7 @@ impl ModalBridge {
             available_modes: available,
             selection,
             check,
+            static_correction: bridge.modes().static_correction,
             shapes,
         })
     }

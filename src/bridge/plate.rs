@@ -170,6 +170,7 @@ impl PlateModes {
             modes: Modes {
                 count: None,
                 max_frequency: None,
+                static_correction: true,
             },
             damping: Damping::Modal { ratio: 0.0 },
         };

@@ -27,6 +27,8 @@ enum Probe {
     BridgeDisplacement {
         shape: Vec<f64>,
         statics: StaticProbe,
+        /// φᵢ(x, y)/ωᵢ² (static correction), m per unit modal force.
+        static_shape: Vec<f64>,
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
@@ -110,6 +112,37 @@ struct DafProbe {
     result: GirderDaf,
     shape: Vec<f64>,
     statics: StaticProbe,
+    static_shape: Vec<f64>,
+}
+
+/// φᵢ/ωᵢ² of a point's mode values `shape` (the modal static flexibility).
+fn static_shape(model: &Model, shape: &[f64]) -> Vec<f64> {
+    shape
+        .iter()
+        .zip(&model.bridge.circular_frequencies)
+        .map(|(phi, w)| phi / (w * w))
+        .collect()
+}
+
+/// The static share of the modes left out at a point (m, upward
+/// positive): the full static deflection under the current wheel forces
+/// minus its modal part, Σ_w F_w [Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ² − G(x, x_w)]
+/// (mode-acceleration method; Williams 1945; Cornwell, Craig & Johnson
+/// 1983). `wheel_modes` holds the mode values at each wheel (wheel-major).
+fn truncated_static_share(
+    statics: &StaticProbe,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+) -> f64 {
+    let modes = static_shape.len();
+    let full = statics.deflection(view.wheel_positions, view.contact_forces);
+    let modal: f64 = wheel_modes
+        .chunks(modes)
+        .zip(view.contact_forces)
+        .map(|(values, force)| -force * dot(static_shape, values))
+        .sum();
+    full - modal
 }
 
 /// One recorded time history.
@@ -183,6 +216,9 @@ pub struct Recorder<'m> {
     model: &'m Model,
     history: History,
     daf_probes: Vec<DafProbe>,
+    /// Mode values at every wheel this step (wheel-major), for the static
+    /// correction; empty when it is off or nothing needs it.
+    wheel_modes: Vec<f64>,
 }
 
 impl<'m> Recorder<'m> {
@@ -205,7 +241,13 @@ impl<'m> Recorder<'m> {
                     model.bridge.mode_values(x, y, &mut shape);
                     if record.quantity == Quantity::BridgeDisplacement {
                         let statics = StaticProbe::new(model, x, y)?;
-                        (Probe::BridgeDisplacement { shape, statics }, "m", lead)
+                        let static_shape = static_shape(model, &shape);
+                        let probe = Probe::BridgeDisplacement {
+                            shape,
+                            statics,
+                            static_shape,
+                        };
+                        (probe, "m", lead)
                     } else {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
@@ -305,11 +347,22 @@ impl<'m> Recorder<'m> {
                         static_max_abs: 0.0,
                         daf: 0.0,
                     },
+                    static_shape: static_shape(model, &shape),
                     shape,
                     statics: StaticProbe::new(model, x, y)?,
                 });
             }
         }
+        let corrected = model.bridge.static_correction
+            && (!daf_probes.is_empty()
+                || columns
+                    .iter()
+                    .any(|c| matches!(c.probe, Probe::BridgeDisplacement { .. })));
+        let wheel_modes = if corrected {
+            vec![0.0; model.wheels.len() * modes]
+        } else {
+            Vec::new()
+        };
         Ok(Self {
             model,
             history: History {
@@ -319,6 +372,7 @@ impl<'m> Recorder<'m> {
                 girder_dafs: Vec::new(),
             },
             daf_probes,
+            wheel_modes,
         })
     }
 
@@ -372,8 +426,29 @@ impl Observer for Recorder<'_> {
             wheel.apart = apart;
         }
         let model = self.model;
+        // Mode-acceleration (static) correction of recorded displacements:
+        // the modes left out respond quasi-statically, so their share is the
+        // exact static deflection under the current wheel forces minus its
+        // modal part, w_c = Σ_w F_w [G(x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²]
+        // (Williams 1945; Cornwell, Craig & Johnson 1983; F_w downward).
+        let modes = model.bridge.mode_count();
+        if !self.wheel_modes.is_empty() {
+            for (w, values) in self.wheel_modes.chunks_mut(modes).enumerate() {
+                model
+                    .bridge
+                    .mode_values(view.wheel_positions[w], model.wheel_y[w], values);
+            }
+        }
         for probe in &mut self.daf_probes {
-            let dynamic = dot(&probe.shape, view.modal_displacement);
+            let mut dynamic = dot(&probe.shape, view.modal_displacement);
+            if !self.wheel_modes.is_empty() {
+                dynamic += truncated_static_share(
+                    &probe.statics,
+                    &probe.static_shape,
+                    &self.wheel_modes,
+                    view,
+                );
+            }
             let statics = probe
                 .statics
                 .deflection(view.wheel_positions, &model.static_wheel_loads);
@@ -383,7 +458,11 @@ impl Observer for Recorder<'_> {
         }
         for column in &mut self.history.columns {
             let value = match &column.probe {
-                Probe::BridgeDisplacement { shape, statics } => {
+                Probe::BridgeDisplacement {
+                    shape,
+                    statics,
+                    static_shape,
+                } => {
                     // Static crossing: each wheel's static load at its
                     // current position through the influence line of its
                     // lane (full stiffness, no modal truncation).
@@ -392,7 +471,13 @@ impl Observer for Recorder<'_> {
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
-                    dot(shape, view.modal_displacement)
+                    let modal = dot(shape, view.modal_displacement);
+                    if self.wheel_modes.is_empty() {
+                        modal
+                    } else {
+                        modal
+                            + truncated_static_share(statics, static_shape, &self.wheel_modes, view)
+                    }
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],

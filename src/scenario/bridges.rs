@@ -314,12 +314,13 @@ fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
         None => Modes {
             count: None,
             max_frequency: None,
+            static_correction: true,
         },
         Some(m) => {
-            if m.count.is_none() && m.max_frequency.is_none() {
+            if m.count.is_none() && m.max_frequency.is_none() && m.static_correction.is_none() {
                 ck.error(
                     "bridge.modes",
-                    "`modes` needs `count`, `max_frequency` or both",
+                    "`modes` needs `count`, `max_frequency`, `static_correction` or a combination",
                 );
             }
             if m.count == Some(0) {
@@ -331,6 +332,7 @@ fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
             Modes {
                 count: m.count,
                 max_frequency: m.max_frequency,
+                static_correction: m.static_correction.unwrap_or(true),
             }
         }
     }

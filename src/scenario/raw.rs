@@ -215,6 +215,12 @@ pub struct ModesRaw {
     /// Keep every mode whose natural frequency is at most this, Hz.
     #[serde(default)]
     pub max_frequency: Option<f64>,
+    /// Add the quasi-static share of the modes left out to every recorded
+    /// bridge displacement (the mode-acceleration method: the exact static
+    /// deflection under the current wheel forces minus its modal part), so
+    /// few modes give converged deflections. Default true.
+    #[serde(default)]
+    pub static_correction: Option<bool>,
 }
 
 /// Structural damping of the bridge.

@@ -254,6 +254,9 @@ pub struct Modes {
     /// Keep modes up to this frequency, Hz.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_frequency: Option<f64>,
+    /// Add the quasi-static share of the modes left out to recorded bridge
+    /// displacements (mode-acceleration method).
+    pub static_correction: bool,
 }
 
 /// Structural damping.

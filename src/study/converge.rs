@@ -369,6 +369,7 @@ fn variant(loaded: &Loaded, resolution: Resolution) -> Result<Loaded, BridgeErro
     *scenario.bridge.modes_mut() = Modes {
         count: Some(resolution.modes),
         max_frequency: None,
+        static_correction: loaded.scenario.bridge.modes().static_correction,
     };
     let bridge = ModalBridge::build(&scenario.bridge)?;
     Ok(Loaded { scenario, bridge })
