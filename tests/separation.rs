@@ -173,6 +173,7 @@ fn elastic_contact_converges_to_event_driven_reference() {
         suspension_stiffness: 4.0e6,
         suspension_damping: 2.53e4,
         contact_stiffness: 1.0e8,
+        contact_exponent: 1.0,
         speed: 25.0,
         start_position: 0.0,
         roughness_amplitude: 0.003,
