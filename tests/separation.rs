@@ -159,8 +159,10 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
 /// independent event-driven reference of the same system (tests/support:
 /// Dormand–Prince 5(4) with dense output, stopping and restarting exactly at
 /// each loss and regain of contact, analytic sine modes): maximum contact
-/// force and maximum separation gap within 1 % at Δt = 2.5e-5 s, errors
-/// falling with the step, same number of contact losses.
+/// force and maximum separation gap within 2e-4 at Δt = 2.5e-5 s (measured
+/// there: force 1e-6, gap 2.0e-5, the gap's error falling 1.4e-3 → 3.0e-4 →
+/// 9.2e-5 → 2.0e-5 from Δt = 2e-4 s), errors falling with the step, same
+/// number of contact losses.
 #[test]
 fn elastic_contact_converges_to_event_driven_reference() {
     let case = TensionlessCase {
@@ -211,14 +213,17 @@ fn elastic_contact_converges_to_event_driven_reference() {
         assert_eq!(wheel.episodes, losses, "Δt = {dt}");
         errors.push(force_error.max(gap_error));
     }
-    assert!(errors[3] < 0.01, "errors {errors:?}");
+    assert!(errors[3] < 2e-4, "errors {errors:?}");
     assert!(errors[3] < errors[0], "no convergence: {errors:?}");
 }
 
 /// Rigid contact is the limit of elastic contact as the contact stiffness
 /// grows: on the Fig. 4 scene (separation near the exit) the maximum gap and
 /// the mid-span deflection of the elastic model approach the rigid model's as
-/// k_c / k_v goes 1e2 → 1e3 → 1e4, ending within 0.1 %.
+/// k_c / k_v goes 1e2 → 1e3 → 1e4, falling tenfold per decade (measured
+/// gap 7.8e-3 → 7.8e-4 → 7.8e-5, deflection 1.7e-3 → 1.7e-4 → 1.7e-5, the
+/// O(1/k_c) penetration of a penalty spring), ending within 5e-4 (gap) and
+/// 1.5e-4 (deflection).
 #[test]
 fn rigid_is_the_limit_of_elastic() {
     let text =
@@ -239,12 +244,12 @@ fn rigid_is_the_limit_of_elastic() {
         ));
     }
     eprintln!("gap errors {gap_errors:?}, deflection errors {deflection_errors:?}");
-    for errors in [&gap_errors, &deflection_errors] {
+    for (errors, tolerance) in [(&gap_errors, 5e-4), (&deflection_errors, 1.5e-4)] {
         assert!(
             errors[0] > errors[1] && errors[1] > errors[2],
             "not converging: {errors:?}"
         );
-        assert!(errors[2] < 1e-3, "{errors:?}");
+        assert!(errors[2] < tolerance, "{errors:?}");
     }
 }
 

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each test binary uses its own subset
 
 pub mod event_reference;
+pub mod multi_reference;
 pub mod reference;
 
 use std::path::{Path, PathBuf};
