@@ -186,7 +186,7 @@ impl MultiCase {
             wheels: vec![WheelStatistics::default(); nv],
             ..Default::default()
         };
-        let mut sample =
+        let sample =
             |t: f64, y: &[f64], out: &mut MultiHistory, delta: &mut [f64], pos: &mut [f64]| {
                 self.compressions(t, y, delta, pos);
                 let mut mid = 0.0;
