@@ -111,9 +111,9 @@ fn reference_parked_hertz_wheel_settles_at_static_compression() {
 }
 
 /// Reference self-check: undamped Hertz chatter (vehicle dropped from 5 mm
-/// onto the beam at L/3) conserves E = Σ(mL/4)(q̇² + ω²q²) + kinetic + ½k(y_s−y_w)²
-/// + (2/5)Cδ^2.5 + gravity, the closed-form first integral of the equations
-/// with F = Cδ^1.5. Measured drift 1.3e-8 of the energy scale at rtol 1e-11
+/// onto the beam at L/3) conserves the closed-form first integral of the
+/// equations with F = Cδ^1.5, E = Σ(mL/4)(q̇² + ω²q²) + kinetic +
+/// ½k(y_s−y_w)² + (2/5)Cδ^2.5 + gravity. Measured drift 1.3e-8 of the energy scale at rtol 1e-11
 /// (75 landings); tolerance 1e-7.
 #[test]
 fn reference_hertz_drop_conserves_energy() {

@@ -5,6 +5,7 @@
 //! Maxwell's reciprocity; and the consistency of the fast line evaluation.
 //! Each test states where its reference comes from and its tolerance.
 
+#[allow(dead_code)] // the static field is used by tests/plate_truck.rs
 #[path = "support/plate_fe.rs"]
 mod plate_fe;
 

@@ -2,7 +2,7 @@
 //! solver against `coupled`, the slow crossing against the static influence
 //! surface, and the DAF table. Each test states its source and tolerance.
 
-#[allow(dead_code)] // only the static field is used here
+#[allow(dead_code)] // the frequency solver is used by tests/plate.rs
 #[path = "support/plate_fe.rs"]
 mod plate_fe;
 mod support;
