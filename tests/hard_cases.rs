@@ -829,8 +829,12 @@ fn conditionally_stable_newmark_limit() {
 /// within 5 % of what the wheel needs to lift, 49 m/s²), so the episode
 /// count, the time separated and through them the DAF move with the step;
 /// the README and `summary.json` (`run.step_dependent`) say so, with the
-/// ranges measured here, which the test asserts: 6 to 14 episodes, 0.070 to
-/// 0.096 s separated, DAF 1.568 to 1.594.
+/// values measured here. The test asserts the bound the README states —
+/// across the four steps the episode counts within a factor 3 of each
+/// other (measured 2.3), the time separated within a factor 1.5 (1.37) and
+/// the DAF within 2.5 % (1.7 %) — with margin, since these statistics move
+/// with any small change of the model (a 0.1 % change of gravity moves
+/// them).
 #[test]
 fn rigid_hopping_statistics_are_bounded() {
     let base = 1.0e-4;
@@ -869,17 +873,27 @@ fn rigid_hopping_statistics_are_bounded() {
         rows.push(row);
     }
     for row in &rows {
-        let (dt, episodes, _, first_loss, _, separated, daf) = *row;
+        let (dt, _, hops, first_loss, _, _, _) = *row;
         // First loss two steps after the entrance (0.25 v·Δt for round-off).
         assert!(
             (first_loss - 2.0 * 30.0 * dt).abs() < 0.25 * 30.0 * dt,
             "first loss {first_loss}"
         );
-        // The documented ranges (README, run.step_dependent).
-        assert!((6..=14).contains(&episodes), "{episodes} episodes");
-        assert!((0.070..=0.096).contains(&separated), "{separated} s");
-        assert!((1.567..=1.595).contains(&daf), "DAF {daf}");
+        assert!(hops >= 1, "no flight above 0.1 mm at Δt = {dt}");
     }
+    // The documented bound (README): spread over the four steps.
+    let spread = |values: Vec<f64>| {
+        let max = values.iter().copied().fold(f64::MIN, f64::max);
+        let min = values.iter().copied().fold(f64::MAX, f64::min);
+        max / min
+    };
+    let episodes = spread(rows.iter().map(|r| r.1 as f64).collect());
+    let separated = spread(rows.iter().map(|r| r.5).collect());
+    let dafs = spread(rows.iter().map(|r| r.6).collect());
+    eprintln!("spreads: episodes ×{episodes:.2}, time separated ×{separated:.2}, DAF ×{dafs:.4}");
+    assert!(episodes <= 3.0, "episode counts spread ×{episodes}");
+    assert!(separated <= 1.5, "time separated spread ×{separated}");
+    assert!(dafs <= 1.025, "DAF spread ×{dafs}");
     // The first flight's height converges at first order.
     let changes: Vec<f64> = rows.windows(2).map(|w| w[0].4 - w[1].4).collect();
     for pair in changes.windows(2) {

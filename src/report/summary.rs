@@ -91,9 +91,10 @@ pub struct RunInfo {
 pub const RIGID_STEP_DEPENDENCE: &str = "separation.episodes, separation.time_separated and the \
 DAF depend on the time step once a wheel lands again (landings are taken on the step grid, without \
 event location): on a surface that can just lift the wheel, Δt = 1e-4 to 1.25e-5 s gave 6 to 14 \
-episodes, 0.070 to 0.096 s separated and DAFs 1.568 to 1.594; first_loss_time, \
-first_loss_position and the first flight's max_gap converge with the step (first order); confirm \
-the others with a run at a quarter of the step";
+episodes, 0.070 to 0.096 s separated and DAFs 1.568 to 1.594 (expect up to a factor 3, a \
+factor 1.5 and 2.5 % between a step and an eighth of it); first_loss_time, first_loss_position \
+and the first flight's max_gap converge with the step (first order); confirm the others with a \
+run at a quarter of the step";
 
 /// The whole summary.
 #[derive(Debug, Clone, Serialize, PartialEq)]
