@@ -104,7 +104,8 @@ fn rigid_lcp_reproduces_coupled_for_a_massless_wheel() {
 /// yet without separation both converge to the same solution: on the LCP
 /// paper's oscillator (4 modes, HHT α = −0.05 for both) the rigid LCP run's
 /// deviation from a coupled run at Δt/64 falls at second order (×3 to ×5 per
-/// halving), and at equal steps the two differ by less than 1e-5 of the peak.
+/// halving), and at equal steps the two differ by less than 1e-5 of the peak
+/// (measured 2.5e-6 to 4.9e-6 at Δt = 1 ms).
 #[test]
 fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
     let scene = |dt: f64, contact: &str| {
@@ -142,6 +143,7 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
             if level == 1 {
                 let coupled = run_yaml(&scene(dt, "permanent"));
                 let difference = relative_difference(values, column(&coupled, name));
+                eprintln!("{name}: rigid vs coupled at Δt = {dt}: {difference:.2e}");
                 assert!(difference < 1e-5, "{name}: {difference:e} at Δt = {dt}");
             }
         }
@@ -256,7 +258,9 @@ fn rigid_is_the_limit_of_elastic() {
 /// Hertz contact: the coefficient from the wheel radius follows Zhai's
 /// G = 4.57e-8 R^-0.149 m/N^(2/3) (C = G^-1.5 ≈ 8.5e10 N/m^1.5 at R = 0.43 m);
 /// the wheel starts compressed by δ₀ = (P/C)^(2/3); and a very stiff Hertz
-/// contact behaves like rigid contact (max gap within 1 % on the Fig. 4 scene).
+/// contact behaves like rigid contact (max gap within 1 % on the Fig. 4
+/// scene; measured 0.27 %). The Hertz law itself is verified against an
+/// independent reference in tests/hertz.rs.
 #[test]
 fn hertz_contact() {
     let c = vbi::scenario::derive::hertz_coefficient(0.43, vbi::scenario::raw::TreadProfile::Worn);
@@ -280,6 +284,10 @@ fn hertz_contact() {
     let (a, b) = (
         stiff.summary.separation[0].max_gap,
         rigid.summary.separation[0].max_gap,
+    );
+    eprintln!(
+        "stiff Hertz gap {a:.6e} vs rigid {b:.6e}: {:.2e}",
+        (a - b).abs() / b
     );
     assert!((a - b).abs() / b < 0.01, "stiff Hertz gap {a} vs rigid {b}");
     assert!(column(&stiff, "contact_force").iter().all(|&f| f >= 0.0));
@@ -432,9 +440,11 @@ fn elastic_contact_delays_the_roughness_response() {
 
 /// Any number of wheels on any vehicle and bridge: a moving two-axle load and
 /// two oscillators on the 24–30–24 m continuous beam. On a smooth deck the
-/// unilateral models barely lift a wheel (sub-micrometre, where a wheel rolls
-/// onto a deck already sloped by the other vehicles), so their mid-span
-/// deflections agree with the coupled solver's within 1e-5 of the peak.
+/// unilateral models barely lift a wheel (rigid: 0.5 and 0.2 µm, where a
+/// wheel rolls onto a deck already sloped by the other vehicles; elastic:
+/// not at all), so their mid-span deflections agree with the coupled
+/// solver's: rigid within 1e-5 of the peak (measured 7.3e-6), elastic
+/// within 5e-6 (measured 6.5e-7).
 #[test]
 fn several_vehicles_on_a_continuous_beam() {
     let scene = |contact: &str| {
@@ -456,7 +466,10 @@ fn several_vehicles_on_a_continuous_beam() {
         )
     };
     let coupled = run_yaml(&scene("{type: permanent}"));
-    for contact in ["{type: rigid}", "{type: elastic, stiffness: 1.0e10}"] {
+    for (contact, tolerance) in [
+        ("{type: rigid}", 1e-5),
+        ("{type: elastic, stiffness: 1.0e10}", 5e-6),
+    ] {
         let unilateral = run_yaml(&scene(contact));
         assert_eq!(
             unilateral.summary.separation.len(),
@@ -464,11 +477,13 @@ fn several_vehicles_on_a_continuous_beam() {
             "two wheels with DOFs"
         );
         for wheel in &unilateral.summary.separation {
+            eprintln!("{contact}: max gap {:.2e} m", wheel.max_gap);
             assert!(wheel.max_gap < 1e-6, "{contact}: {wheel:?}");
         }
         for name in ["span1", "span2", "span3"] {
             let difference = relative_difference(column(&unilateral, name), column(&coupled, name));
-            assert!(difference < 1e-5, "{contact} {name}: {difference:e}");
+            eprintln!("{contact} {name}: {difference:.2e}");
+            assert!(difference < tolerance, "{contact} {name}: {difference:e}");
         }
     }
 }
