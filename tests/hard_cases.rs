@@ -417,10 +417,11 @@ fn critical_scene(vehicle: &str, dt: f64, free_vibration: f64) -> String {
 /// frequency ratio 0.5, no suspension damping), with 1.5 fundamental periods
 /// of free vibration (above critical speed the maximum comes after the exit):
 /// - finite;
-/// - bounded: the moving force's DAF within 0.5 % of Frýba's closed form
-///   (50 exact sine modes, tests/support), and the light oscillator's DAF
-///   within 15 % of the moving force's (measured −5 % and −8 %);
-/// - converged: DAF within 1 % of the run at Δt/4 (measured ≤ 0.02 %).
+/// - bounded: the moving force's DAF within 5e-4 of Frýba's closed form
+///   (50 exact sine modes, tests/support; measured 1.3e-5 and 6.3e-5), and
+///   the light oscillator's DAF within 15 % of the moving force's (measured
+///   −5 % and −8 %: a physical bound, not an error);
+/// - converged: DAF within 1e-3 of the run at Δt/4 (measured ≤ 2.0e-4).
 #[test]
 fn speeds_at_and_above_critical() {
     let f1 = exact::simply_supported_circular_frequency(1, FRYBA_SPAN, FRYBA_EI, FRYBA_MASS)
@@ -458,11 +459,11 @@ fn speeds_at_and_above_critical() {
                  {b:.5} at Δt/4 ({:+.4} %); Frýba {reference:.5}",
                 (a / b - 1.0) * 100.0
             );
-            assert!(relative(a, b) < 0.01, "{name}, ratio {ratio}: {a} vs {b}");
+            assert!(relative(a, b) < 1e-3, "{name}, ratio {ratio}: {a} vs {b}");
             dafs.push(a);
         }
         assert!(
-            relative(dafs[0], reference) < 0.005,
+            relative(dafs[0], reference) < 5e-4,
             "ratio {ratio}: moving force DAF {} vs Frýba {reference}",
             dafs[0]
         );
@@ -541,7 +542,8 @@ fn hht_free_vibration_rms_ratio(omega: f64, alpha: f64, dt: f64, span: f64) -> f
 ///   within [0.999, 1.001] × the max over the first 5 s after the exit;
 /// - with HHT α = −0.05 it decays (ratio < 0.999), and for a single mode the
 ///   decay of the RMS over the windows matches an independent HHT recurrence
-///   for that mode's frequency within 5 % of the decrement.
+///   for that mode's frequency within 2 % of the decrement (measured 0.3 %:
+///   6.567e-4 against 6.587e-4).
 #[test]
 fn undamped_free_vibration_tail() {
     let (dt, exit) = (2.0e-3, SPAN / 25.0);
@@ -571,7 +573,7 @@ fn undamped_free_vibration_tail() {
         omega * dt
     );
     assert!(
-        ((1.0 - measured) - (1.0 - expected)).abs() < 0.05 * (1.0 - expected),
+        ((1.0 - measured) - (1.0 - expected)).abs() < 0.02 * (1.0 - expected),
         "HHT decay {measured} vs {expected}"
     );
 }
@@ -598,13 +600,14 @@ fn viaduct_scene(modes: usize) -> String {
 /// modes (up to 215 Hz, ωΔt = 1.35 at Δt = 1 ms), crossed by a 200 kN force at
 /// 60 m/s (velocity ratio 0.57, near the single span's worst case):
 /// - frequencies ascending; the first equals the single span's
-///   (π/L)²√(EI/m)/2π within 0.1 % (a mode with a node at every support is
-///   the simply supported span mode, and it is the lowest), and so does the
-///   lowest of the second band (31st mode) with the span's second mode;
+///   (π/L)²√(EI/m)/2π within 5e-5 (measured 6.8e-6; a mode with a node at
+///   every support is the simply supported span mode, and it is the lowest),
+///   and the lowest of the second band (31st mode) the span's second mode
+///   within 1e-3 (measured 1.07e-4, 20 elements per span);
 /// - mid-span of the 15th span: finite, DAF < 2 (a constant force crossing
 ///   once cannot exceed Frýba's single-span maximum of about 1.74 by much;
-///   measured 1.29), and within 2 % of the run with 150 modes (measured
-///   0.05 %).
+///   measured 1.29), and within 0.3 % of the run with 150 modes (measured
+///   0.045 %).
 #[test]
 fn thirty_span_viaduct_with_three_hundred_modes() {
     let full = run(&viaduct_scene(300));
@@ -641,10 +644,10 @@ fn thirty_span_viaduct_with_three_hundred_modes() {
         info.wall_time,
         reduced.summary.run.wall_time,
     );
-    assert!(relative(f[0], span_mode(1)) < 1e-3, "f₁ = {}", f[0]);
+    assert!(relative(f[0], span_mode(1)) < 5e-5, "f₁ = {}", f[0]);
     assert!(relative(f[30], span_mode(2)) < 1e-3, "f₃₁ = {}", f[30]);
     assert!(a < 2.0, "DAF {a}");
-    assert!(relative(a, b) < 0.02, "DAF {a} (300 modes) vs {b} (150)");
+    assert!(relative(a, b) < 3e-3, "DAF {a} (300 modes) vs {b} (150)");
 }
 
 fn mass_ratio_scene(vehicle: &str, dt: f64) -> String {
@@ -664,14 +667,15 @@ fn mass_ratio_scene(vehicle: &str, dt: f64) -> String {
 /// (m L = 40 000 kg), permanent contact:
 /// - 1 kg oscillator (0.8 kg body at 5 Hz, 0.2 kg wheel; mass ratio 2.5e-5):
 ///   the bridge barely moves (0.57 µm) and cannot shake the vehicle, so the
-///   contact force equals the weight within 1e-3 (measured 2.7e-5) and the
+///   contact force equals the weight within 2e-4 (measured 2.7e-5) and the
 ///   mid-span history equals that of a 9.81 N moving force within 1e-3 of
 ///   its peak (measured 1.2e-4);
 /// - oscillator as heavy as the bridge (mass ratio 1, velocity ratio 0.2,
 ///   frequency ratio 0.5, 10 % suspension damping): finite, bounded (DAF < 2,
 ///   contact force between 0 and 2× the static wheel load: measured DAF 1.35
 ///   and 0.66–1.27× static), and the maxima of mid-span deflection and
-///   acceleration and of the contact force within 2 % of the run at Δt/4.
+///   acceleration and of the contact force within 2 % of the run at Δt/4
+///   (measured ≤ 0.21 %, the acceleration).
 #[test]
 fn extreme_mass_ratios() {
     let dt = 1.0e-3;
@@ -701,7 +705,7 @@ fn extreme_mass_ratios() {
          mid-span max {:.4e} m, history within {deflection_deviation:.2e} of a moving force",
         max_abs(w)
     );
-    assert!(force_deviation < 1e-3, "{force_deviation}");
+    assert!(force_deviation < 2e-4, "{force_deviation}");
     assert!(deflection_deviation < 1e-3, "{deflection_deviation}");
 
     let heavy = "{type: oscillator, dimensionless: {velocity_ratio: 0.2, mass_ratio: 1.0, \
@@ -755,8 +759,8 @@ fn newmark_scene(beta: f64, dt: f64) -> String {
 /// γ = 0.5: undamped, stable for ωΔt ≤ 1/√(γ/2 − β) = 2.041 (Bathe, Table
 /// 9.3; the amplification matrix's trace leaves [−2, 2] beyond it). With 10
 /// modes of the 20 m beam (highest 502 Hz) the limit is Δt = 6.47e-4 s.
-/// - at 0.9× the limit: finite, DAF < 2 and within 1 % of
-///   average-acceleration Newmark at the same step;
+/// - at 0.9× the limit: finite, DAF < 2 and within 1e-3 of
+///   average-acceleration Newmark at the same step (measured 1.05e-4);
 /// - at 1.02× and 2× the limit: the run returns an error (not results with
 ///   huge numbers), a divergence stopped early (before a tenth of the run),
 ///   whose message names the time and the likely cause (the time step with
@@ -776,7 +780,7 @@ fn conditionally_stable_newmark_limit() {
         "Newmark β = 0.01: limit Δt = {limit:.4e} s (f_max {:.1} Hz); at 0.9× DAF {a:.6} vs {b:.6} (β = 1/4)",
         omega_max / (2.0 * PI)
     );
-    assert!(a < 2.0 && relative(a, b) < 0.01, "DAF {a} vs {b}");
+    assert!(a < 2.0 && relative(a, b) < 1e-3, "DAF {a} vs {b}");
 
     for factor in [1.02, 2.0] {
         let dt = factor * limit;
