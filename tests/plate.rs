@@ -217,7 +217,8 @@ fn compare_with_bfs(
 /// 20 × 10: a = 2b makes (2,2) and (4,1) coincide, so their order is moot),
 /// h = 0.2 m, E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³, against the closed form
 /// ω_mn = π²[(m/a)² + (n/b)²]√(D/ρh) (Leissa, Vibration of Plates, NASA
-/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 0.1 %, and each
+/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 5e-4 (measured
+/// 5.6e-5 at most, mode (4,1) with 8 × 6 terms), and each
 /// mode's character is its (m, n).
 #[test]
 fn simply_supported_plate_matches_closed_form() {
@@ -254,7 +255,7 @@ fn simply_supported_plate_matches_closed_form() {
             omega / (2.0 * PI)
         );
         assert!(
-            relative(omegas[k], omega) < 1e-3,
+            relative(omegas[k], omega) < 5e-4,
             "mode {}: {} vs {}",
             k + 1,
             omegas[k],
@@ -363,7 +364,8 @@ fn narrow_strip() -> (Plate, f64, f64) {
 /// same EI = D·b and m = ρhb: its lowest 4 modes (all longitudinal bending;
 /// the strip's torsion and transverse modes lie far above) reproduce the
 /// exact frequencies of the continuous Euler–Bernoulli beam (transcendental
-/// frequency equation, `continuous_beam_omegas`) within 0.1 %.
+/// frequency equation, `continuous_beam_omegas`) within 8e-5 (measured
+/// 8.7e-6 at most, mode 4).
 #[test]
 fn narrow_strip_matches_continuous_beam() {
     let (deck, ei, m) = narrow_strip();
@@ -377,7 +379,7 @@ fn narrow_strip_matches_continuous_beam() {
             exact[k] / (2.0 * PI),
             modes.character(k)
         );
-        assert!(relative(omegas[k], exact[k]) < 1e-3, "mode {}", k + 1);
+        assert!(relative(omegas[k], exact[k]) < 8e-5, "mode {}", k + 1);
         assert_eq!(modes.character(k), (k + 1, 1), "mode {}", k + 1);
     }
 }
@@ -387,7 +389,8 @@ fn narrow_strip_matches_continuous_beam() {
 /// lowest 10 Ritz frequencies (default 18 × 8 basis) against the independent
 /// BFS plate finite-element model within 2 % (the tolerance), the
 /// reference converged to 0.2 % between 2 m and 1 m meshes; and the Ritz
-/// basis converged: 18 × 8 vs 30 × 12 terms within 0.5 %.
+/// basis converged: 18 × 8 vs 30 × 12 terms within 0.3 % (measured 0.039 %
+/// at most, mode 10; the Ritz errors against BFS are 0.033 % at most).
 #[test]
 fn orthotropic_deck_matches_bfs_reference() {
     let deck = orthotropic_deck((18, 8));
@@ -409,7 +412,7 @@ fn orthotropic_deck_matches_bfs_reference() {
             larger_basis[k],
             100.0 * change
         );
-        assert!(change < 5e-3, "mode {} not converged in the basis", k + 1);
+        assert!(change < 3e-3, "mode {} not converged in the basis", k + 1);
     }
 }
 
