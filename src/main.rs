@@ -316,7 +316,11 @@ fn converge(
         bar.set_position(index as u64 + 1);
         bar.set_message(label.to_string());
     };
-    let options = Options { levels, tolerance };
+    let options = Options {
+        levels,
+        tolerance,
+        ..Options::default()
+    };
     let study = match study::converge(&loaded, &options, &mut progress) {
         Ok(s) => s,
         Err(e) => {

@@ -48,7 +48,11 @@ fn load(text: &str) -> Loaded {
 }
 
 fn study(text: &str, levels: usize, tolerance: f64) -> Convergence {
-    let options = Options { levels, tolerance };
+    let options = Options {
+        levels,
+        tolerance,
+        ..Options::default()
+    };
     converge::converge(&load(text), &options, &mut |_, _, _| {}).expect("study runs")
 }
 
@@ -183,12 +187,13 @@ fn cheapest_within_tolerance_is_the_largest_step_that_meets_it() {
         .iter()
         .filter_map(RunReport::worst_max_abs)
         .fold(f64::INFINITY, f64::min);
-    assert_eq!(cheapest_within(&study.runs, 0.5 * best), None);
+    assert_eq!(cheapest_within(&study.runs, 0.5 * best, &[]), None);
     let strict = converge::converge(
         &load(&smooth_scene(2.5e-4, "")),
         &Options {
             levels: 2,
             tolerance: 1e-12,
+            ..Options::default()
         },
         &mut |_, _, _| {},
     )
@@ -226,9 +231,9 @@ fn cheapest_is_by_wall_time_and_ignores_failed_and_non_finite_runs() {
         synthetic("nan", 0.2, f64::NAN),
         failed,
     ];
-    assert_eq!(cheapest_within(&runs, 0.01), Some(1));
-    assert_eq!(cheapest_within(&runs, 0.005), Some(0));
-    assert_eq!(cheapest_within(&runs, 0.0005), None);
+    assert_eq!(cheapest_within(&runs, 0.01, &[]), Some(1));
+    assert_eq!(cheapest_within(&runs, 0.005, &[]), Some(0));
+    assert_eq!(cheapest_within(&runs, 0.0005, &[]), None);
     assert_eq!(runs[3].worst_max_abs(), Some(f64::INFINITY));
     assert_eq!(runs[4].worst_max_abs(), None);
 }
@@ -338,4 +343,53 @@ fn cli_rejects_a_bad_tolerance() {
     let out = vbi(&["converge", "missing.yaml"], &dir);
     assert_eq!(out.status.code(), Some(2));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Each quantity is judged on its own: the per-quantity cheapest run is
+/// within the tolerance on that quantity and no cheaper run is; excluding a
+/// quantity leaves it out of the overall choice (which then is at least as
+/// cheap), and an unknown name is refused.
+#[test]
+fn quantities_are_judged_on_their_own_and_can_be_left_out() {
+    let loaded = load(&smooth_scene(2.5e-4, ""));
+    let options = Options {
+        levels: 3,
+        tolerance: 0.01,
+        ..Options::default()
+    };
+    let study = converge::converge(&loaded, &options, &mut |_, _, _| {}).unwrap();
+    let names = study
+        .quantities()
+        .iter()
+        .map(|n| n.to_string())
+        .collect::<Vec<_>>();
+    assert_eq!(study.cheapest_per_quantity.len(), names.len());
+    for (q, (name, cheapest)) in study.cheapest_per_quantity.iter().enumerate() {
+        assert_eq!(name, &names[q]);
+        let error = |run: &RunReport| run.errors.as_ref().ok().map(|e| e[q].max_abs);
+        if let Some(i) = cheapest {
+            let chosen = &study.runs[*i];
+            assert!(error(chosen).unwrap() <= 0.01);
+            for run in &study.runs {
+                if run.wall_time < chosen.wall_time {
+                    assert!(
+                        error(run).is_none_or(|e| e > 0.01),
+                        "{name}: a cheaper run qualifies"
+                    );
+                }
+            }
+        }
+    }
+    let excluded = Options {
+        exclude: vec![names[0].clone()],
+        ..options.clone()
+    };
+    let study_without = converge::converge(&loaded, &excluded, &mut |_, _, _| {}).unwrap();
+    assert_eq!(study_without.excluded, vec![names[0].clone()]);
+    let unknown = Options {
+        exclude: vec!["no-such-record".into()],
+        ..options
+    };
+    let error = converge::converge(&loaded, &unknown, &mut |_, _, _| {}).unwrap_err();
+    assert!(error.to_string().contains("no-such-record"), "{error}");
 }

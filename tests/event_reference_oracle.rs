@@ -17,6 +17,7 @@ fn separating_case() -> TensionlessCase {
         suspension_stiffness: 4e6,
         suspension_damping: 2.53e4,
         contact_stiffness: 1e8,
+        contact_exponent: 1.0,
         speed: 25.0,
         start_position: 0.0,
         roughness_amplitude: 3e-3,

@@ -409,6 +409,12 @@ fn catch<T>(f: impl FnOnce() -> T) -> Result<T, String> {
 
 #[test]
 fn golden_scenarios() {
+    // INSTA_FORCE_PASS turns every mismatch into a pass: never a legitimate
+    // way to run this test (to accept a change, update and review the diff).
+    assert!(
+        std::env::var_os("INSTA_FORCE_PASS").is_none(),
+        "INSTA_FORCE_PASS is set: the golden comparison would pass whatever the results"
+    );
     let files = scenario_files();
     let settings = insta_settings();
     let mut failures = Vec::new();

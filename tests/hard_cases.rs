@@ -276,9 +276,9 @@ fn hops(outcome: &Outcome) -> usize {
 /// - the largest gap (the flight after the entrance kick) within 10 % of the
 ///   run at Δt/4 (measured 8.62 and 8.56 mm, 0.7 %; 11 and 34 episodes).
 ///
-/// Which hops follow the first landing is not yet step-converged (see
-/// `rigid_landings_are_inelastic_and_hops_converge`), so this test does not
-/// compare the episode counts.
+/// Which hops follow the first landing is not step-converged (see
+/// `rigid_landings_are_inelastic` and `rigid_hopping_statistics_are_bounded`),
+/// so this test does not compare the episode counts.
 #[test]
 fn rigid_contact_repeated_hops() {
     let dt = 1.0e-4;
@@ -325,8 +325,8 @@ fn rigid_contact_repeated_hops() {
 /// Rigid landings are perfectly inelastic (README: "with rigid contact a
 /// landing wheel … leaves the step with the surface's vertical velocity"):
 /// - after every landing the wheel stays on the surface or leaves it with a
-///   relative velocity below 10 % of its approach velocity over the next two
-///   steps (a plastic landing leaves it at rest relative to the surface);
+///   relative velocity below 10 % of its approach velocity (a plastic
+///   landing leaves it at rest relative to the surface);
 /// - the first hop (the slope kick at the entrance launches the wheel) is
 ///   converged: its largest gap within 1 % and its landing time within 1 ms
 ///   between Δt and Δt/4.
@@ -352,7 +352,16 @@ fn rigid_landings_are_inelastic() {
             if approach < 0.05 {
                 continue;
             }
-            let rebound = ((gap[i + 1] - gap[i]) / step).max((gap[i + 2] - gap[i + 1]) / step);
+            // The relative velocity leaving the landing step, by the
+            // second-order one-sided difference (−3g₀ + 4g₁ − g₂)/2Δt: a
+            // wheel that lands plastically and lifts off again at once
+            // because the surface drops away faster than g (this surface is
+            // marginal, see below) leaves at relative velocity 0 with a
+            // relative acceleration, which a first difference over the next
+            // steps would count as a rebound (measured at t = 0.0595 s:
+            // gaps 0, 0.24, 1.19 µm — first difference 0.010 m/s, velocity
+            // at the landing −0.001 m/s).
+            let rebound = (-3.0 * gap[i] + 4.0 * gap[i + 1] - gap[i + 2]) / (2.0 * step);
             eprintln!(
                 "landing {label} at t = {:.5} s: approach {approach:.3} m/s, rebound {rebound:.3} m/s",
                 outcome.history.time[i]
@@ -408,10 +417,11 @@ fn critical_scene(vehicle: &str, dt: f64, free_vibration: f64) -> String {
 /// frequency ratio 0.5, no suspension damping), with 1.5 fundamental periods
 /// of free vibration (above critical speed the maximum comes after the exit):
 /// - finite;
-/// - bounded: the moving force's DAF within 0.5 % of Frýba's closed form
-///   (50 exact sine modes, tests/support), and the light oscillator's DAF
-///   within 15 % of the moving force's (measured −5 % and −8 %);
-/// - converged: DAF within 1 % of the run at Δt/4 (measured ≤ 0.02 %).
+/// - bounded: the moving force's DAF within 5e-4 of Frýba's closed form
+///   (50 exact sine modes, tests/support; measured 1.3e-5 and 6.3e-5), and
+///   the light oscillator's DAF within 15 % of the moving force's (measured
+///   −5 % and −8 %: a physical bound, not an error);
+/// - converged: DAF within 1e-3 of the run at Δt/4 (measured ≤ 2.0e-4).
 #[test]
 fn speeds_at_and_above_critical() {
     let f1 = exact::simply_supported_circular_frequency(1, FRYBA_SPAN, FRYBA_EI, FRYBA_MASS)
@@ -449,11 +459,11 @@ fn speeds_at_and_above_critical() {
                  {b:.5} at Δt/4 ({:+.4} %); Frýba {reference:.5}",
                 (a / b - 1.0) * 100.0
             );
-            assert!(relative(a, b) < 0.01, "{name}, ratio {ratio}: {a} vs {b}");
+            assert!(relative(a, b) < 1e-3, "{name}, ratio {ratio}: {a} vs {b}");
             dafs.push(a);
         }
         assert!(
-            relative(dafs[0], reference) < 0.005,
+            relative(dafs[0], reference) < 5e-4,
             "ratio {ratio}: moving force DAF {} vs Frýba {reference}",
             dafs[0]
         );
@@ -532,7 +542,8 @@ fn hht_free_vibration_rms_ratio(omega: f64, alpha: f64, dt: f64, span: f64) -> f
 ///   within [0.999, 1.001] × the max over the first 5 s after the exit;
 /// - with HHT α = −0.05 it decays (ratio < 0.999), and for a single mode the
 ///   decay of the RMS over the windows matches an independent HHT recurrence
-///   for that mode's frequency within 5 % of the decrement.
+///   for that mode's frequency within 2 % of the decrement (measured 0.3 %:
+///   6.567e-4 against 6.587e-4).
 #[test]
 fn undamped_free_vibration_tail() {
     let (dt, exit) = (2.0e-3, SPAN / 25.0);
@@ -562,7 +573,7 @@ fn undamped_free_vibration_tail() {
         omega * dt
     );
     assert!(
-        ((1.0 - measured) - (1.0 - expected)).abs() < 0.05 * (1.0 - expected),
+        ((1.0 - measured) - (1.0 - expected)).abs() < 0.02 * (1.0 - expected),
         "HHT decay {measured} vs {expected}"
     );
 }
@@ -589,13 +600,14 @@ fn viaduct_scene(modes: usize) -> String {
 /// modes (up to 215 Hz, ωΔt = 1.35 at Δt = 1 ms), crossed by a 200 kN force at
 /// 60 m/s (velocity ratio 0.57, near the single span's worst case):
 /// - frequencies ascending; the first equals the single span's
-///   (π/L)²√(EI/m)/2π within 0.1 % (a mode with a node at every support is
-///   the simply supported span mode, and it is the lowest), and so does the
-///   lowest of the second band (31st mode) with the span's second mode;
+///   (π/L)²√(EI/m)/2π within 5e-5 (measured 6.8e-6; a mode with a node at
+///   every support is the simply supported span mode, and it is the lowest),
+///   and the lowest of the second band (31st mode) the span's second mode
+///   within 1e-3 (measured 1.07e-4, 20 elements per span);
 /// - mid-span of the 15th span: finite, DAF < 2 (a constant force crossing
 ///   once cannot exceed Frýba's single-span maximum of about 1.74 by much;
-///   measured 1.29), and within 2 % of the run with 150 modes (measured
-///   0.05 %).
+///   measured 1.29), and within 0.3 % of the run with 150 modes (measured
+///   0.045 %).
 #[test]
 fn thirty_span_viaduct_with_three_hundred_modes() {
     let full = run(&viaduct_scene(300));
@@ -632,10 +644,10 @@ fn thirty_span_viaduct_with_three_hundred_modes() {
         info.wall_time,
         reduced.summary.run.wall_time,
     );
-    assert!(relative(f[0], span_mode(1)) < 1e-3, "f₁ = {}", f[0]);
+    assert!(relative(f[0], span_mode(1)) < 5e-5, "f₁ = {}", f[0]);
     assert!(relative(f[30], span_mode(2)) < 1e-3, "f₃₁ = {}", f[30]);
     assert!(a < 2.0, "DAF {a}");
-    assert!(relative(a, b) < 0.02, "DAF {a} (300 modes) vs {b} (150)");
+    assert!(relative(a, b) < 3e-3, "DAF {a} (300 modes) vs {b} (150)");
 }
 
 fn mass_ratio_scene(vehicle: &str, dt: f64) -> String {
@@ -655,14 +667,15 @@ fn mass_ratio_scene(vehicle: &str, dt: f64) -> String {
 /// (m L = 40 000 kg), permanent contact:
 /// - 1 kg oscillator (0.8 kg body at 5 Hz, 0.2 kg wheel; mass ratio 2.5e-5):
 ///   the bridge barely moves (0.57 µm) and cannot shake the vehicle, so the
-///   contact force equals the weight within 1e-3 (measured 2.7e-5) and the
+///   contact force equals the weight within 2e-4 (measured 2.7e-5) and the
 ///   mid-span history equals that of a 9.81 N moving force within 1e-3 of
 ///   its peak (measured 1.2e-4);
 /// - oscillator as heavy as the bridge (mass ratio 1, velocity ratio 0.2,
 ///   frequency ratio 0.5, 10 % suspension damping): finite, bounded (DAF < 2,
 ///   contact force between 0 and 2× the static wheel load: measured DAF 1.35
 ///   and 0.66–1.27× static), and the maxima of mid-span deflection and
-///   acceleration and of the contact force within 2 % of the run at Δt/4.
+///   acceleration and of the contact force within 2 % of the run at Δt/4
+///   (measured ≤ 0.21 %, the acceleration).
 #[test]
 fn extreme_mass_ratios() {
     let dt = 1.0e-3;
@@ -692,7 +705,7 @@ fn extreme_mass_ratios() {
          mid-span max {:.4e} m, history within {deflection_deviation:.2e} of a moving force",
         max_abs(w)
     );
-    assert!(force_deviation < 1e-3, "{force_deviation}");
+    assert!(force_deviation < 2e-4, "{force_deviation}");
     assert!(deflection_deviation < 1e-3, "{deflection_deviation}");
 
     let heavy = "{type: oscillator, dimensionless: {velocity_ratio: 0.2, mass_ratio: 1.0, \
@@ -746,8 +759,8 @@ fn newmark_scene(beta: f64, dt: f64) -> String {
 /// γ = 0.5: undamped, stable for ωΔt ≤ 1/√(γ/2 − β) = 2.041 (Bathe, Table
 /// 9.3; the amplification matrix's trace leaves [−2, 2] beyond it). With 10
 /// modes of the 20 m beam (highest 502 Hz) the limit is Δt = 6.47e-4 s.
-/// - at 0.9× the limit: finite, DAF < 2 and within 1 % of
-///   average-acceleration Newmark at the same step;
+/// - at 0.9× the limit: finite, DAF < 2 and within 1e-3 of
+///   average-acceleration Newmark at the same step (measured 1.05e-4);
 /// - at 1.02× and 2× the limit: the run returns an error (not results with
 ///   huge numbers), a divergence stopped early (before a tenth of the run),
 ///   whose message names the time and the likely cause (the time step with
@@ -767,7 +780,7 @@ fn conditionally_stable_newmark_limit() {
         "Newmark β = 0.01: limit Δt = {limit:.4e} s (f_max {:.1} Hz); at 0.9× DAF {a:.6} vs {b:.6} (β = 1/4)",
         omega_max / (2.0 * PI)
     );
-    assert!(a < 2.0 && relative(a, b) < 0.01, "DAF {a} vs {b}");
+    assert!(a < 2.0 && relative(a, b) < 1e-3, "DAF {a} vs {b}");
 
     for factor in [1.02, 2.0] {
         let dt = factor * limit;
@@ -799,5 +812,96 @@ fn conditionally_stable_newmark_limit() {
                 assert!(message.contains("β = 0.01"), "{message}");
             }
         }
+    }
+}
+
+/// Rigid hopping is bounded, not step-converged, beyond the first hop. The
+/// hopping scene above at Δt = 1e-4 s, Δt/2, Δt/4 and Δt/8 (HHT α = −0.05):
+///
+/// | Δt       | episodes | hops > 0.1 mm | first loss (m) | max gap (mm) | time apart (s) | DAF    |
+/// |----------|----------|---------------|----------------|--------------|----------------|--------|
+/// | 1e-4     | 12       | 4             | 0.00600        | 8.6235       | 0.0876         | 1.5760 |
+/// | 5e-5     | 10       | 3             | 0.00300        | 8.5835       | 0.0828         | 1.5676 |
+/// | 2.5e-5   | 6        | 2             | 0.00150        | 8.5634       | 0.0701         | 1.5942 |
+/// | 1.25e-5  | 14       | 4             | 0.00075        | 8.5534       | 0.0958         | 1.5804 |
+///
+/// What converges: the first loss of contact (the entrance kick: two steps
+/// in, 2·v·Δt, → 0) and the first hop's height (the largest gap), its change
+/// halving with the step (0.040, 0.020, 0.010 mm: first order, landings on
+/// the step grid). What does not: which of the marginal
+/// later flights happen (the surface's downward acceleration, 47 m/s², is
+/// within 5 % of what the wheel needs to lift, 49 m/s²), so the episode
+/// count, the time separated and through them the DAF move with the step;
+/// the README and `summary.json` (`run.step_dependent`) say so, with the
+/// values measured here. The test asserts the bound the README states —
+/// across the four steps the episode counts within a factor 3 of each
+/// other (measured 2.3), the time separated within a factor 1.5 (1.37) and
+/// the DAF within 2.5 % (1.7 %) — with margin, since these statistics move
+/// with any small change of the model (a 0.1 % change of gravity moves
+/// them).
+#[test]
+fn rigid_hopping_statistics_are_bounded() {
+    let base = 1.0e-4;
+    let mut rows = Vec::new();
+    for level in 0..4 {
+        let dt = base / f64::from(1u32 << level);
+        let outcome = run(&hopping_scene(dt));
+        let wheel = outcome.summary.separation[0].clone();
+        let row = (
+            dt,
+            wheel.episodes,
+            hops(&outcome),
+            wheel.first_loss_position.expect("separates"),
+            wheel.max_gap,
+            wheel.time_separated,
+            daf(&outcome, "mid"),
+        );
+        eprintln!(
+            "| {:.3e} | {} | {} | {:.5} | {:.4} | {:.4} | {:.4} |",
+            row.0,
+            row.1,
+            row.2,
+            row.3,
+            row.4 * 1e3,
+            row.5,
+            row.6
+        );
+        assert!(
+            outcome
+                .summary
+                .run
+                .step_dependent
+                .is_some_and(|s| s.contains("episodes")),
+            "rigid contact must say which statistics depend on the step"
+        );
+        rows.push(row);
+    }
+    for row in &rows {
+        let (dt, _, hops, first_loss, _, _, _) = *row;
+        // First loss two steps after the entrance (0.25 v·Δt for round-off).
+        assert!(
+            (first_loss - 2.0 * 30.0 * dt).abs() < 0.25 * 30.0 * dt,
+            "first loss {first_loss}"
+        );
+        assert!(hops >= 1, "no flight above 0.1 mm at Δt = {dt}");
+    }
+    // The documented bound (README): spread over the four steps.
+    let spread = |values: Vec<f64>| {
+        let max = values.iter().copied().fold(f64::MIN, f64::max);
+        let min = values.iter().copied().fold(f64::MAX, f64::min);
+        max / min
+    };
+    let episodes = spread(rows.iter().map(|r| r.1 as f64).collect());
+    let separated = spread(rows.iter().map(|r| r.5).collect());
+    let dafs = spread(rows.iter().map(|r| r.6).collect());
+    eprintln!("spreads: episodes ×{episodes:.2}, time separated ×{separated:.2}, DAF ×{dafs:.4}");
+    assert!(episodes <= 3.0, "episode counts spread ×{episodes}");
+    assert!(separated <= 1.5, "time separated spread ×{separated}");
+    assert!(dafs <= 1.025, "DAF spread ×{dafs}");
+    // The first flight's height converges at first order.
+    let changes: Vec<f64> = rows.windows(2).map(|w| w[0].4 - w[1].4).collect();
+    for pair in changes.windows(2) {
+        let ratio = pair[0] / pair[1];
+        assert!((1.8..2.2).contains(&ratio), "max gap changes {changes:?}");
     }
 }

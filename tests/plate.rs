@@ -5,6 +5,7 @@
 //! Maxwell's reciprocity; and the consistency of the fast line evaluation.
 //! Each test states where its reference comes from and its tolerance.
 
+#[allow(dead_code)] // the static field is used by tests/plate_truck.rs
 #[path = "support/plate_fe.rs"]
 mod plate_fe;
 
@@ -106,14 +107,39 @@ fn isotropic_deck(terms: (usize, usize)) -> Plate {
     )
 }
 
-/// The BFS reference for `deck` with `per_metre` elements per metre along
-/// the spans and `across` elements over the width.
-fn bfs_reference(deck: &Plate, per_metre: f64, across: usize) -> BfsPlate {
+/// Rigidities (Dx, Dy, D1, Dxy) of the plate paper's orthotropic deck, N·m,
+/// typed from the paper (Section 3.2) for the reference: D1 = ν_xy·Dy.
+const ORTHOTROPIC_RIGIDITIES: (f64, f64, f64, f64) = (2.41e9, 2.18e7, 0.3 * 2.18e7, 1.14e8);
+
+/// Rigidities of an isotropic plate, N·m, from the textbook (Timoshenko &
+/// Woinowsky-Krieger, Theory of Plates and Shells, §1–§10): D = Eh³/12(1−ν²),
+/// Dx = Dy = D, D1 = νD, Dxy = (1−ν)D/2 — written here, not taken from vbi.
+fn isotropic_rigidities(
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    thickness: f64,
+) -> (f64, f64, f64, f64) {
+    let d = youngs_modulus * thickness * thickness * thickness
+        / (12.0 * (1.0 - poisson_ratio * poisson_ratio));
+    (d, d, poisson_ratio * d, 0.5 * (1.0 - poisson_ratio) * d)
+}
+
+/// The BFS reference for the deck's geometry with the given rigidities and
+/// mass per area (typed by the caller, not read back from vbi's resolved
+/// deck), `per_metre` elements per metre along the spans and `across`
+/// elements over the width.
+fn bfs_reference(
+    deck: &Plate,
+    rigidities: (f64, f64, f64, f64),
+    mass_per_area: f64,
+    per_metre: f64,
+    across: usize,
+) -> BfsPlate {
     BfsPlate {
         spans: deck.spans.clone(),
         width: deck.width,
-        mass_per_area: deck.mass_per_area,
-        rigidities: deck.rigidity.rigidities(deck.thickness.unwrap_or(0.0)),
+        mass_per_area,
+        rigidities,
         elements_along: deck
             .spans
             .iter()
@@ -131,11 +157,16 @@ fn bfs_reference(deck: &Plate, per_metre: f64, across: usize) -> BfsPlate {
 /// the coupling term D1 (ν = 0.2) moves the isotropic deck's frequencies by
 /// only 0.4–1.5 %, which the 2 % bound alone would let through. Returns the
 /// largest Ritz error.
-fn compare_with_bfs(name: &str, deck: &Plate) -> f64 {
+fn compare_with_bfs(
+    name: &str,
+    deck: &Plate,
+    rigidities: (f64, f64, f64, f64),
+    mass_per_area: f64,
+) -> f64 {
     const COUNT: usize = 10;
     let ritz = ritz_frequencies(deck, COUNT);
-    let coarse_mesh = bfs_reference(deck, 0.5, 7);
-    let fine_mesh = bfs_reference(deck, 1.0, 14);
+    let coarse_mesh = bfs_reference(deck, rigidities, mass_per_area, 0.5, 7);
+    let fine_mesh = bfs_reference(deck, rigidities, mass_per_area, 1.0, 14);
     let coarse = coarse_mesh.lowest_frequencies(COUNT);
     let fine = fine_mesh.lowest_frequencies(COUNT);
     println!(
@@ -187,7 +218,8 @@ fn compare_with_bfs(name: &str, deck: &Plate) -> f64 {
 /// 20 × 10: a = 2b makes (2,2) and (4,1) coincide, so their order is moot),
 /// h = 0.2 m, E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³, against the closed form
 /// ω_mn = π²[(m/a)² + (n/b)²]√(D/ρh) (Leissa, Vibration of Plates, NASA
-/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 0.1 %, and each
+/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 5e-4 (measured
+/// 5.6e-5 at most, mode (4,1) with 8 × 6 terms), and each
 /// mode's character is its (m, n).
 #[test]
 fn simply_supported_plate_matches_closed_form() {
@@ -224,7 +256,7 @@ fn simply_supported_plate_matches_closed_form() {
             omega / (2.0 * PI)
         );
         assert!(
-            relative(omegas[k], omega) < 1e-3,
+            relative(omegas[k], omega) < 5e-4,
             "mode {}: {} vs {}",
             k + 1,
             omegas[k],
@@ -333,7 +365,8 @@ fn narrow_strip() -> (Plate, f64, f64) {
 /// same EI = D·b and m = ρhb: its lowest 4 modes (all longitudinal bending;
 /// the strip's torsion and transverse modes lie far above) reproduce the
 /// exact frequencies of the continuous Euler–Bernoulli beam (transcendental
-/// frequency equation, `continuous_beam_omegas`) within 0.1 %.
+/// frequency equation, `continuous_beam_omegas`) within 8e-5 (measured
+/// 8.7e-6 at most, mode 4).
 #[test]
 fn narrow_strip_matches_continuous_beam() {
     let (deck, ei, m) = narrow_strip();
@@ -347,7 +380,7 @@ fn narrow_strip_matches_continuous_beam() {
             exact[k] / (2.0 * PI),
             modes.character(k)
         );
-        assert!(relative(omegas[k], exact[k]) < 1e-3, "mode {}", k + 1);
+        assert!(relative(omegas[k], exact[k]) < 8e-5, "mode {}", k + 1);
         assert_eq!(modes.character(k), (k + 1, 1), "mode {}", k + 1);
     }
 }
@@ -357,11 +390,17 @@ fn narrow_strip_matches_continuous_beam() {
 /// lowest 10 Ritz frequencies (default 18 × 8 basis) against the independent
 /// BFS plate finite-element model within 2 % (the tolerance), the
 /// reference converged to 0.2 % between 2 m and 1 m meshes; and the Ritz
-/// basis converged: 18 × 8 vs 30 × 12 terms within 0.5 %.
+/// basis converged: 18 × 8 vs 30 × 12 terms within 0.3 % (measured 0.039 %
+/// at most, mode 10; the Ritz errors against BFS are 0.033 % at most).
 #[test]
 fn orthotropic_deck_matches_bfs_reference() {
     let deck = orthotropic_deck((18, 8));
-    let worst = compare_with_bfs("orthotropic deck", &deck);
+    let worst = compare_with_bfs(
+        "orthotropic deck",
+        &deck,
+        ORTHOTROPIC_RIGIDITIES,
+        3265.29 * 0.212,
+    );
     println!("largest Ritz error {:.4} %", 100.0 * worst);
     let default_basis = ritz_frequencies(&deck, 10);
     let larger_basis = ritz_frequencies(&orthotropic_deck((30, 12)), 10);
@@ -374,7 +413,7 @@ fn orthotropic_deck_matches_bfs_reference() {
             larger_basis[k],
             100.0 * change
         );
-        assert!(change < 5e-3, "mode {} not converged in the basis", k + 1);
+        assert!(change < 3e-3, "mode {} not converged in the basis", k + 1);
     }
 }
 
@@ -387,7 +426,12 @@ fn orthotropic_deck_matches_bfs_reference() {
 /// converged to 0.2 %.
 #[test]
 fn isotropic_three_span_deck_matches_bfs_reference() {
-    let worst = compare_with_bfs("isotropic deck", &isotropic_deck((18, 8)));
+    let worst = compare_with_bfs(
+        "isotropic deck",
+        &isotropic_deck((18, 8)),
+        isotropic_rigidities(3.5e10, 0.2, 0.8),
+        2500.0 * 0.8,
+    );
     println!("largest Ritz error {:.4} %", 100.0 * worst);
 }
 

@@ -104,7 +104,8 @@ fn rigid_lcp_reproduces_coupled_for_a_massless_wheel() {
 /// yet without separation both converge to the same solution: on the LCP
 /// paper's oscillator (4 modes, HHT α = −0.05 for both) the rigid LCP run's
 /// deviation from a coupled run at Δt/64 falls at second order (×3 to ×5 per
-/// halving), and at equal steps the two differ by less than 1e-5 of the peak.
+/// halving), and at equal steps the two differ by less than 1e-5 of the peak
+/// (measured 2.5e-6 to 4.9e-6 at Δt = 1 ms).
 #[test]
 fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
     let scene = |dt: f64, contact: &str| {
@@ -142,6 +143,7 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
             if level == 1 {
                 let coupled = run_yaml(&scene(dt, "permanent"));
                 let difference = relative_difference(values, column(&coupled, name));
+                eprintln!("{name}: rigid vs coupled at Δt = {dt}: {difference:.2e}");
                 assert!(difference < 1e-5, "{name}: {difference:e} at Δt = {dt}");
             }
         }
@@ -159,8 +161,10 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
 /// independent event-driven reference of the same system (tests/support:
 /// Dormand–Prince 5(4) with dense output, stopping and restarting exactly at
 /// each loss and regain of contact, analytic sine modes): maximum contact
-/// force and maximum separation gap within 1 % at Δt = 2.5e-5 s, errors
-/// falling with the step, same number of contact losses.
+/// force and maximum separation gap within 2e-4 at Δt = 2.5e-5 s (measured
+/// there: force 1e-6, gap 2.0e-5, the gap's error falling 1.4e-3 → 3.0e-4 →
+/// 9.2e-5 → 2.0e-5 from Δt = 2e-4 s), errors falling with the step, same
+/// number of contact losses.
 #[test]
 fn elastic_contact_converges_to_event_driven_reference() {
     let case = TensionlessCase {
@@ -173,6 +177,7 @@ fn elastic_contact_converges_to_event_driven_reference() {
         suspension_stiffness: 4.0e6,
         suspension_damping: 2.53e4,
         contact_stiffness: 1.0e8,
+        contact_exponent: 1.0,
         speed: 25.0,
         start_position: 0.0,
         roughness_amplitude: 0.003,
@@ -210,14 +215,17 @@ fn elastic_contact_converges_to_event_driven_reference() {
         assert_eq!(wheel.episodes, losses, "Δt = {dt}");
         errors.push(force_error.max(gap_error));
     }
-    assert!(errors[3] < 0.01, "errors {errors:?}");
+    assert!(errors[3] < 2e-4, "errors {errors:?}");
     assert!(errors[3] < errors[0], "no convergence: {errors:?}");
 }
 
 /// Rigid contact is the limit of elastic contact as the contact stiffness
 /// grows: on the Fig. 4 scene (separation near the exit) the maximum gap and
 /// the mid-span deflection of the elastic model approach the rigid model's as
-/// k_c / k_v goes 1e2 → 1e3 → 1e4, ending within 0.1 %.
+/// k_c / k_v goes 1e2 → 1e3 → 1e4, falling tenfold per decade (measured
+/// gap 7.8e-3 → 7.8e-4 → 7.8e-5, deflection 1.7e-3 → 1.7e-4 → 1.7e-5, the
+/// O(1/k_c) penetration of a penalty spring), ending within 5e-4 (gap) and
+/// 1.5e-4 (deflection).
 #[test]
 fn rigid_is_the_limit_of_elastic() {
     let text =
@@ -238,19 +246,21 @@ fn rigid_is_the_limit_of_elastic() {
         ));
     }
     eprintln!("gap errors {gap_errors:?}, deflection errors {deflection_errors:?}");
-    for errors in [&gap_errors, &deflection_errors] {
+    for (errors, tolerance) in [(&gap_errors, 5e-4), (&deflection_errors, 1.5e-4)] {
         assert!(
             errors[0] > errors[1] && errors[1] > errors[2],
             "not converging: {errors:?}"
         );
-        assert!(errors[2] < 1e-3, "{errors:?}");
+        assert!(errors[2] < tolerance, "{errors:?}");
     }
 }
 
 /// Hertz contact: the coefficient from the wheel radius follows Zhai's
 /// G = 4.57e-8 R^-0.149 m/N^(2/3) (C = G^-1.5 ≈ 8.5e10 N/m^1.5 at R = 0.43 m);
 /// the wheel starts compressed by δ₀ = (P/C)^(2/3); and a very stiff Hertz
-/// contact behaves like rigid contact (max gap within 1 % on the Fig. 4 scene).
+/// contact behaves like rigid contact (max gap within 1 % on the Fig. 4
+/// scene; measured 0.27 %). The Hertz law itself is verified against an
+/// independent reference in tests/hertz.rs.
 #[test]
 fn hertz_contact() {
     let c = vbi::scenario::derive::hertz_coefficient(0.43, vbi::scenario::raw::TreadProfile::Worn);
@@ -274,6 +284,10 @@ fn hertz_contact() {
     let (a, b) = (
         stiff.summary.separation[0].max_gap,
         rigid.summary.separation[0].max_gap,
+    );
+    eprintln!(
+        "stiff Hertz gap {a:.6e} vs rigid {b:.6e}: {:.2e}",
+        (a - b).abs() / b
     );
     assert!((a - b).abs() / b < 0.01, "stiff Hertz gap {a} vs rigid {b}");
     assert!(column(&stiff, "contact_force").iter().all(|&f| f >= 0.0));
@@ -426,16 +440,21 @@ fn elastic_contact_delays_the_roughness_response() {
 
 /// Any number of wheels on any vehicle and bridge: a moving two-axle load and
 /// two oscillators on the 24–30–24 m continuous beam. On a smooth deck the
-/// unilateral models barely lift a wheel (sub-micrometre, where a wheel rolls
-/// onto a deck already sloped by the other vehicles), so their mid-span
-/// deflections agree with the coupled solver's within 1e-5 of the peak.
+/// unilateral models barely lift a wheel (rigid: 0.5 and 0.2 µm, where a
+/// wheel rolls onto a deck already sloped by the other vehicles; elastic:
+/// not at all), so their mid-span deflections agree with the coupled
+/// solver's: rigid within 1e-5 of the peak (measured 7.3e-6), elastic
+/// within 5e-6 (measured 6.5e-7). The modal states are compared (no static
+/// correction): the correction passes each step's contact force straight into
+/// the deflection, and the rigid LCP's forces carry step-level noise the modal
+/// response filters out.
 #[test]
 fn several_vehicles_on_a_continuous_beam() {
     let scene = |contact: &str| {
         format!(
             "name: several\n\
              bridge: {{type: beam, spans: [24.0, 30.0, 24.0], bending_stiffness: 3.0e10, \
-             mass_per_length: 12000.0, modes: {{max_frequency: 60.0}}, \
+             mass_per_length: 12000.0, modes: {{max_frequency: 60.0, static_correction: false}}, \
              damping: {{type: rayleigh, frequencies: [3.0, 20.0], ratio: 0.02}}}}\n\
              vehicles:\n\
              - {{type: moving_force, loads: [80.0e3, 80.0e3], axle_spacings: [6.0], speed: 22.0, entry_time: 0.8}}\n\
@@ -450,7 +469,10 @@ fn several_vehicles_on_a_continuous_beam() {
         )
     };
     let coupled = run_yaml(&scene("{type: permanent}"));
-    for contact in ["{type: rigid}", "{type: elastic, stiffness: 1.0e10}"] {
+    for (contact, tolerance) in [
+        ("{type: rigid}", 1e-5),
+        ("{type: elastic, stiffness: 1.0e10}", 5e-6),
+    ] {
         let unilateral = run_yaml(&scene(contact));
         assert_eq!(
             unilateral.summary.separation.len(),
@@ -458,11 +480,13 @@ fn several_vehicles_on_a_continuous_beam() {
             "two wheels with DOFs"
         );
         for wheel in &unilateral.summary.separation {
+            eprintln!("{contact}: max gap {:.2e} m", wheel.max_gap);
             assert!(wheel.max_gap < 1e-6, "{contact}: {wheel:?}");
         }
         for name in ["span1", "span2", "span3"] {
             let difference = relative_difference(column(&unilateral, name), column(&coupled, name));
-            assert!(difference < 1e-5, "{contact} {name}: {difference:e}");
+            eprintln!("{contact} {name}: {difference:.2e}");
+            assert!(difference < tolerance, "{contact} {name}: {difference:e}");
         }
     }
 }

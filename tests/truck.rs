@@ -235,8 +235,9 @@ fn random_profile_variance_is_the_spectrum_integral() {
 
 /// A three-span beam crossed by the truck on a rough road: the `iterative`
 /// solver (the paper's uncoupled scheme, tolerance 1e-10) and `coupled`
-/// (the same equations solved together) agree to 1e-7 of each history's
-/// peak, and the iteration converges in a few passes (the paper: about two).
+/// (the same equations solved together) agree to 1e-11 of each history's
+/// peak (measured 2.3e-12 at most, the pitch), and the iteration converges
+/// in a few passes (the paper: about two).
 #[test]
 fn iterative_agrees_with_coupled_for_the_truck() {
     let scene = |method: &str| {
@@ -274,7 +275,7 @@ record:
         &iterative,
         &coupled,
         &["mid2", "acc2", "f1", "f4", "pitch"],
-        1e-7,
+        1e-11,
     );
     let stats = iterative.summary.run.iterations.expect("iteration counts");
     assert!(stats.mean <= 4.0 && stats.max <= 6, "{stats:?}");
@@ -282,7 +283,8 @@ record:
 
 /// A very slow crossing on a smooth deck is the static influence line: the
 /// truck at 1 m/s over the three-span beam gives a mid-span DAF of 1 within
-/// 0.5 % (the rest is modal truncation and the truck's own slow pitch).
+/// 1e-3 (measured 1.7e-4 and 1.5e-4 at the middles of spans 1 and 2; the
+/// rest is modal truncation and the truck's own slow pitch).
 #[test]
 fn slow_truck_crossing_is_static() {
     let outcome = run_yaml(
@@ -305,6 +307,7 @@ record:
     );
     for q in &outcome.summary.quantities {
         let daf = q.daf.expect("a DAF");
-        assert!((daf - 1.0).abs() <= 5e-3, "{}: DAF {daf}", q.name);
+        eprintln!("{}: DAF {daf:.6}", q.name);
+        assert!((daf - 1.0).abs() <= 1e-3, "{}: DAF {daf}", q.name);
     }
 }

@@ -142,8 +142,14 @@ pub fn run(
     let (mut landing_values, mut landing_slopes, mut landing_curvatures) =
         (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
     // Contact forces carried into the next step's HHT term −αλₙ (a landing
-    // impulse is not carried: it has done its work within its step).
-    let mut carried = vec![0.0; nc];
+    // impulse is not carried: it has done its work within its step). Every
+    // vehicle starts in static equilibrium, so λ₀ is its static wheel load:
+    // starting from 0 instead put an impulse α·P on every wheel in the first
+    // step (a 5 % force spike on the H20-44 at α = −0.05).
+    let mut carried: Vec<f64> = contacts
+        .iter()
+        .map(|c| model.static_wheel_loads[c.wheel])
+        .collect();
     // Whether each contact wheel was off the surface after the previous step.
     let mut was_apart = vec![false; nc];
     let mut scaled = vec![0.0; nc * modes];

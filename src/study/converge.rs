@@ -54,12 +54,15 @@ pub const MIN_TIMING: f64 = 0.05;
 pub const MAX_REPEATS: usize = 5;
 
 /// Settings of a convergence study.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Runs on the time-step ladder: Δt·2⁰ … Δt·2^(levels−1); at least 1.
     pub levels: usize,
     /// Largest acceptable worst max-abs relative error (0.01 = 1 %).
     pub tolerance: f64,
+    /// Recorded quantities (by name) left out of the overall "cheapest
+    /// within tolerance" (still measured and judged on their own).
+    pub exclude: Vec<String>,
 }
 
 impl Default for Options {
@@ -67,6 +70,7 @@ impl Default for Options {
         Self {
             levels: DEFAULT_LEVELS,
             tolerance: 0.01,
+            exclude: Vec::new(),
         }
     }
 }
@@ -181,6 +185,18 @@ impl RunReport {
         self.worst(|q| q.max_abs)
     }
 
+    /// Largest max-abs relative error over the quantities not named in
+    /// `excluded` (None if failed).
+    pub fn worst_max_abs_except(&self, excluded: &[String]) -> Option<f64> {
+        self.worst(|q| {
+            if excluded.contains(&q.name) {
+                0.0
+            } else {
+                q.max_abs
+            }
+        })
+    }
+
     /// Largest RMS relative error over the quantities (None if failed).
     pub fn worst_rms(&self) -> Option<f64> {
         self.worst(|q| q.rms)
@@ -229,8 +245,14 @@ pub struct Convergence {
     pub median_order: Option<f64>,
     /// The tolerance used, dimensionless.
     pub tolerance: f64,
-    /// Index into `runs` of the cheapest run within tolerance.
+    /// Index into `runs` of the cheapest run within tolerance on every
+    /// quantity not excluded.
     pub cheapest: Option<usize>,
+    /// Quantities left out of `cheapest`.
+    pub excluded: Vec<String>,
+    /// Per recorded quantity (scenario order): its name and the index into
+    /// `runs` of the cheapest run within tolerance on that quantity alone.
+    pub cheapest_per_quantity: Vec<(String, Option<usize>)>,
 }
 
 /// The reference resolution and the ladder runs for a scene with time step
@@ -305,6 +327,17 @@ pub fn converge(
         Ok(relative_errors(&reference_history, &reference_history, 1)),
     );
 
+    let names: Vec<String> = reference_history
+        .columns
+        .iter()
+        .map(|c| c.name.clone())
+        .collect();
+    if let Some(unknown) = options.exclude.iter().find(|e| !names.contains(e)) {
+        return Err(ConvergeError::Options(format!(
+            "--exclude {unknown}: the scene records no quantity of that name (it records {})",
+            names.join(", ")
+        )));
+    }
     let mut runs = Vec::with_capacity(ladder.len());
     for (index, &(kind, resolution)) in ladder.iter().enumerate() {
         progress(index + 1, total, &resolution.label());
@@ -329,7 +362,18 @@ pub fn converge(
     }
     let orders = observed_orders(&runs);
     let median_order = median(orders.iter().map(|o| o.order).collect());
-    let cheapest = cheapest_within(&runs, options.tolerance);
+    let cheapest = cheapest_within(&runs, options.tolerance, &options.exclude);
+
+    let cheapest_per_quantity = names
+        .iter()
+        .map(|name| {
+            let others: Vec<String> = names.iter().filter(|n| *n != name).cloned().collect();
+            (
+                name.clone(),
+                cheapest_within(&runs, options.tolerance, &others),
+            )
+        })
+        .collect();
     Ok(Convergence {
         scenario: loaded.scenario.name.clone(),
         reference,
@@ -338,6 +382,8 @@ pub fn converge(
         median_order,
         tolerance: options.tolerance,
         cheapest,
+        excluded: options.exclude.clone(),
+        cheapest_per_quantity,
     })
 }
 
@@ -497,13 +543,13 @@ pub fn median(mut values: Vec<f64>) -> Option<f64> {
 }
 
 /// Index of the successful run with the smallest wall time among those whose
-/// worst max-abs relative error is at most `tolerance` (first on ties); None
-/// if no run qualifies.
-pub fn cheapest_within(runs: &[RunReport], tolerance: f64) -> Option<usize> {
+/// worst max-abs relative error over the quantities not in `excluded` is at
+/// most `tolerance` (first on ties); None if no run qualifies.
+pub fn cheapest_within(runs: &[RunReport], tolerance: f64, excluded: &[String]) -> Option<usize> {
     runs.iter()
         .enumerate()
         .filter_map(|(i, r)| {
-            let worst = r.worst_max_abs()?;
+            let worst = r.worst_max_abs_except(excluded)?;
             (worst <= tolerance).then_some((i, r.wall_time?))
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))

@@ -29,13 +29,16 @@
 //! `r(x) = a sin(2πx/λ + φ)` for `x ≥ 0`, `r = 0` for `x < 0` (it continues past the exit).
 //! Note that `r(0⁺) = a sin φ`: for `φ ≠ 0 (mod π)` the surface *jumps* at the entry.
 //!
-//! *Contact* — a linear **tensionless** spring of stiffness `k_c` [N/m], as in Section 4 of the
-//! LCP separation paper (the source paper of vbi's design notes: elastic tensionless contact,
-//! "linear and tensionless spring"): compression `δ = s(x_c,t) − y_w` (positive when the wheel
-//! is pressed into the surface) and `F = k_c δ` if `δ > 0`, `F = 0` otherwise (no tension).
+//! *Contact* — a **tensionless** spring, compression `δ = s(x_c,t) − y_w` (positive when the
+//! wheel is pressed into the surface) and `F = k_c δⁿ` if `δ > 0`, `F = 0` otherwise (no
+//! tension). `n = 1` is the linear spring of stiffness `k_c` [N/m] of Section 4 of the LCP
+//! separation paper (the source paper of vbi's design notes: elastic tensionless contact,
+//! "linear and tensionless spring"); `n = 3/2` is Hertz's law `F = C δ^1.5` with `k_c = C`
+//! [N/m^1.5] (the wheel–rail contact of Zhai's vehicle–track models). The exponent is the
+//! case's `contact_exponent`.
 //!
 //! *Initial state* (public API) — vehicle at rest in static equilibrium on flat rigid ground at
-//! `x₀ ≤ 0`: `F = (m_s+m_u)g`, `δ₀ = F/k_c`, `y_w = −δ₀`, `y_s = y_w − m_s g/k`; beam at rest,
+//! `x₀ ≤ 0`: `F = (m_s+m_u)g`, `δ₀ = (F/k_c)^(1/n)`, `y_w = −δ₀`, `y_s = y_w − m_s g/k`; beam at rest,
 //! `q = 0`; `t = 0`. [`tensionless_from_state`] accepts any initial state, any `x₀` and `v ≥ 0`
 //! (e.g. a vehicle standing on the deck and dropped onto it).
 //!
@@ -49,15 +52,16 @@
 //! output) and §II.6 (dense output used for event location / discontinuities).
 //! The error norm is Hairer's RMS norm with `sc_i = atol_i + rtol·max(|y_i|, |y_i,new|)` and
 //! per-component absolute tolerances scaled to the physics:
-//! `atol_disp = rtol · min(P/k_c, PL³/(48EI), m_s g/k)` (P = (m_s+m_u)g, so the contact force is
+//! `atol_disp = rtol · min(δ₀, PL³/(48EI), m_s g/k)` (P = (m_s+m_u)g, so the contact force is
 //! resolved to ≈ rtol·P) for `q_j, y_s, y_w`, and `atol_disp·ω` for the velocities
-//! (`ω_j`, `√(k/m_s)`, `√((k+k_c)/m_u)`). `W` is not error-controlled.
+//! (`ω_j`, `√(k/m_s)`, `√((k+k_t)/m_u)`, `k_t` the contact's tangent stiffness `n k_c δⁿ⁻¹` at
+//! the compression under 4P). `W` is not error-controlled.
 //!
 //! The right-hand side is smooth inside each *phase* = (region ∈ {before, on, after the beam},
 //! contact ∈ {in contact, separated}); its derivative (or, for `φ ≠ 0`, its value) jumps between
 //! phases. Inside a phase the phase's formula is used even where it is "out of range" (smooth
-//! extension, e.g. `F = k_c δ` with `δ < 0` slightly past a loss), so no step ever straddles a
-//! switch:
+//! extension, e.g. `F = k_c sign(δ)|δ|ⁿ` with `δ < 0` slightly past a loss — C¹ at δ = 0 for
+//! both exponents), so no step ever straddles a switch:
 //! * *Entry/exit* (`x_c = 0`, `x_c = L`) happen at the known times `−x₀/v`, `(L−x₀)/v`; steps are
 //!   clipped to end exactly there and integration restarts in the new region (the contact phase
 //!   is then re-evaluated from the sign of `δ`, which records a Loss/Regain if `δ` jumped).
@@ -68,19 +72,19 @@
 //!   (`τ ↦ DP5 step of size τ`, i.e. bisection-type search with re-integration, which is more
 //!   accurate than the interpolant); the bracket is reduced to 1e-14 s. If the fresh steps do not
 //!   confirm the bracket (grazing), the root of the interpolant is used instead. The step is then
-//!   redone to end exactly at the event, the phase is toggled, `F` restarts from `k_c·0`, the RHS
+//!   redone to end exactly at the event, the phase is toggled, `F` restarts from `k_c·0ⁿ`, the RHS
 //!   is re-evaluated (no FSAL across events) and the step-size proposal of the full step is kept.
 //!   The returned event time is the bracket end on the new-phase side, so every phase starts
 //!   with `g ≥ 0`.
 //! * On rigid rough ground the roughness is not part of the state, so the step is additionally
 //!   limited to `λ/(8v)` so that roughness crests cannot be skipped; and every step is limited
-//!   to `0.5/ω_max` (fastest beam mode or wheel-hop frequency `√((k+k_c)/m_u)`), far inside
+//!   to `0.5/ω_max` (fastest beam mode or wheel-hop frequency `√((k+k_t)/m_u)`), far inside
 //!   the explicit stability region, so that quiescent states (e.g. a vehicle at rest) are not
 //!   integrated at the stability boundary with roundoff-level noise.
 //!
 //! # Energy balance (used as a self-check)
 //!
-//! `E = Σ_j (mL/4)(q̇_j² + ω_j² q_j²) + ½m_s ẏ_s² + ½m_u ẏ_w² + ½k(y_s−y_w)² + ½k_c δ₊²
+//! `E = Σ_j (mL/4)(q̇_j² + ω_j² q_j²) + ½m_s ẏ_s² + ½m_u ẏ_w² + ½k(y_s−y_w)² + k_c|δ|ⁿ⁺¹/(n+1)
 //!      + m_s g y_s + m_u g y_w` (the contact term uses the phase formula). Differentiating along
 //! solutions gives `dE/dt = F v ∂s/∂x(x_c) − c(ẏ_s−ẏ_w)² − Σ_j mLζω_j q̇_j²`: the moving
 //! contact point does work through the surface slope (the horizontal constraint that keeps `v`
@@ -125,8 +129,10 @@ pub struct TensionlessCase {
     pub suspension_stiffness: f64,
     /// c, N·s/m.
     pub suspension_damping: f64,
-    /// k_c, N/m.
+    /// k_c: N/m for the linear spring (n = 1), the Hertz coefficient C in N/m^1.5 for n = 1.5.
     pub contact_stiffness: f64,
+    /// n in F = k_c δⁿ: 1 (linear spring) or 1.5 (Hertz).
+    pub contact_exponent: f64,
     /// v, m/s (≥ 0).
     pub speed: f64,
     /// x₀, m: contact-point position at t = 0 (≤ 0 for the public equilibrium start).
@@ -237,10 +243,41 @@ impl TensionlessCase {
         (a * s, a * beta * c, -a * beta * beta * s)
     }
 
+    /// Contact force of the phase formula, N: `k_c sign(δ)|δ|ⁿ` (the smooth odd extension, used
+    /// inside a contact phase; it is ≥ 0 wherever the phase is valid).
+    pub fn contact_law(&self, compression: f64) -> f64 {
+        let n = self.contact_exponent;
+        let magnitude = if n == 1.0 {
+            compression.abs()
+        } else {
+            compression.abs().powf(n)
+        };
+        self.contact_stiffness * magnitude.copysign(compression)
+    }
+
+    /// Compression carrying the force `force` ≥ 0: `(F/k_c)^(1/n)`, m.
+    pub fn compression_under(&self, force: f64) -> f64 {
+        (force / self.contact_stiffness).powf(1.0 / self.contact_exponent)
+    }
+
+    /// Contact potential `k_c |δ|ⁿ⁺¹/(n+1)` (J) of the phase formula.
+    fn contact_energy(&self, compression: f64) -> f64 {
+        let n = self.contact_exponent;
+        self.contact_stiffness * compression.abs().powf(n + 1.0) / (n + 1.0)
+    }
+
+    /// Tangent stiffness of the contact `n k_c δⁿ⁻¹` at the compression under 4P, N/m (k_c for
+    /// the linear spring): the wheel-hop scale used for tolerances and the step limit.
+    fn contact_tangent_stiffness(&self) -> f64 {
+        let n = self.contact_exponent;
+        let delta = self.compression_under(4.0 * self.static_load());
+        n * self.contact_stiffness * delta.powf(n - 1.0)
+    }
+
     /// Static equilibrium on flat rigid ground (the public initial state).
     pub fn equilibrium_state(&self) -> InitialState {
         let p = self.static_load();
-        let yw = -p / self.contact_stiffness;
+        let yw = -self.compression_under(p);
         InitialState {
             q: vec![0.0; self.modes],
             q_dot: vec![0.0; self.modes],
@@ -267,6 +304,11 @@ impl TensionlessCase {
                 "{name} must be > 0, got {value}"
             );
         }
+        assert!(
+            self.contact_exponent == 1.0 || self.contact_exponent == 1.5,
+            "contact exponent must be 1 or 1.5, got {}",
+            self.contact_exponent
+        );
         assert!(self.damping_ratio >= 0.0 && self.suspension_damping >= 0.0);
         assert!(
             self.speed.is_finite() && self.speed >= 0.0,
@@ -289,7 +331,7 @@ impl TensionlessCase {
         let susp = self.sprung_mass * GRAVITY / self.suspension_stiffness;
         let mut d = beam.min(susp);
         if with_contact {
-            d = d.min(p / self.contact_stiffness);
+            d = d.min(self.compression_under(p));
         }
         d
     }
@@ -465,7 +507,7 @@ impl Tensionless {
         let (ys, vs, yw, vw) = (y[2 * n], y[2 * n + 1], y[2 * n + 2], y[2 * n + 3]);
         let delta = self.compression(t, y, phase.region).unwrap_or(0.0);
         let contact = if phase.contact {
-            0.5 * c.contact_stiffness * delta * delta
+            c.contact_energy(delta)
         } else {
             0.0
         };
@@ -491,7 +533,7 @@ impl Ode for Tensionless {
         let (s, sx) = self.surface(x, y, phase.region);
         let (ys, vs, yw, vw) = (y[2 * n], y[2 * n + 1], y[2 * n + 2], y[2 * n + 3]);
         let force = if phase.contact {
-            c.contact_stiffness * (s - yw)
+            c.contact_law(s - yw)
         } else {
             0.0
         };
@@ -532,14 +574,15 @@ impl Ode for Tensionless {
         }
         a[2 * n + 1] = d * (c.suspension_stiffness / c.sprung_mass).sqrt();
         a[2 * n + 3] =
-            d * ((c.suspension_stiffness + c.contact_stiffness) / c.unsprung_mass).sqrt();
+            d * ((c.suspension_stiffness + c.contact_tangent_stiffness()) / c.unsprung_mass).sqrt();
         a[2 * n + 4] = f64::INFINITY;
         a
     }
 
     fn max_step(&self) -> f64 {
         let c = &self.c;
-        let wheel = ((c.suspension_stiffness + c.contact_stiffness) / c.unsprung_mass).sqrt();
+        let wheel =
+            ((c.suspension_stiffness + c.contact_tangent_stiffness()) / c.unsprung_mass).sqrt();
         let fastest = self.omega[self.n - 1].max(wheel);
         c.roughness_step_limit().min(0.5 / fastest)
     }
@@ -1178,7 +1221,6 @@ pub fn tensionless_from_state(
     let mut out = DetailedHistory::default();
     let mut idx = 0usize;
     let mut buf = vec![0.0; model.dim()];
-    let kc = case.contact_stiffness;
     let mut observer = |step: &StepData| {
         while idx < output_times.len() && output_times[idx] <= step.t1 {
             let tt = output_times[idx];
@@ -1192,7 +1234,7 @@ pub fn tensionless_from_state(
                 .compression(tt, &buf, step.phase.region)
                 .unwrap_or(0.0);
             let force = if step.phase.contact {
-                (kc * delta).max(0.0)
+                case.contact_law(delta).max(0.0)
             } else {
                 0.0
             };
@@ -1333,7 +1375,7 @@ pub fn extremes(case: &TensionlessCase, t_end: f64, rtol: f64) -> (f64, f64, Vec
     );
     let model = Tensionless::new(case);
     let y0 = model.pack(&case.equilibrium_state());
-    let kc = case.contact_stiffness;
+    let law = |d: f64| case.contact_law(d);
     let margin = |best: f64| 1e-2 * best.abs();
     let mut buf = vec![0.0; model.dim()];
     let mut force_cands: Vec<Candidate> = Vec::new();
@@ -1347,7 +1389,7 @@ pub fn extremes(case: &TensionlessCase, t_end: f64, rtol: f64) -> (f64, f64, Vec
             let d = model
                 .compression(step.time(theta), &buf, step.phase.region)
                 .unwrap_or(0.0);
-            let v = if step.phase.contact { kc * d } else { -d };
+            let v = if step.phase.contact { law(d) } else { -d };
             if v > vmax {
                 vmax = v;
                 imax = i;
@@ -1384,7 +1426,7 @@ pub fn extremes(case: &TensionlessCase, t_end: f64, rtol: f64) -> (f64, f64, Vec
                     let d = model
                         .compression(s.t0 + tau, y, s.phase.region)
                         .unwrap_or(0.0);
-                    if force { kc * d } else { -d }
+                    if force { law(d) } else { -d }
                 },
                 a,
                 b,

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each test binary uses its own subset
 
 pub mod event_reference;
+pub mod multi_reference;
 pub mod reference;
 
 use std::path::{Path, PathBuf};
@@ -43,6 +44,7 @@ pub fn assert_histories_agree(run: &Outcome, reference: &Outcome, names: &[&str]
             .iter()
             .zip(b)
             .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        eprintln!("{name}: differs by {:.2e} of its peak", worst / peak);
         assert!(
             worst <= tolerance * peak,
             "{name}: differs by {worst} against a peak of {peak}"

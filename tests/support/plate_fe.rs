@@ -211,9 +211,10 @@ impl BfsPlate {
         self.assemble().0.size
     }
 
-    /// Assembles (K, M) on the free dofs, nodes numbered across the width
-    /// first so the half-bandwidth is about 4(elements_across + 2).
-    fn assemble(&self) -> (Band, Band) {
+    /// Node abscissae along the deck, the node rows across it, the free index
+    /// of every global dof (w and w_y vanish on support lines) and the number
+    /// of free dofs. Nodes are numbered across the width first.
+    fn layout(&self) -> (Vec<f64>, usize, Vec<Option<usize>>, usize) {
         let mut node_x = vec![0.0];
         let mut supported = vec![true];
         let mut start = 0.0;
@@ -241,6 +242,14 @@ impl BfsPlate {
                 }
             }
         }
+        (node_x, rows, free_index, free)
+    }
+
+    /// Assembles (K, M) on the free dofs, nodes numbered across the width
+    /// first so the half-bandwidth is about 4(elements_across + 2).
+    fn assemble(&self) -> (Band, Band) {
+        let (node_x, rows, free_index, free) = self.layout();
+        let across = self.elements_across;
         let element_dofs = |ix: usize, iy: usize| {
             let mut dofs = [None; 16];
             for q in 0..2 {
@@ -373,4 +382,101 @@ fn generalized_small(k: &DMatrix<f64>, m: &DMatrix<f64>) -> (Vec<f64>, DMatrix<f
     let values = order.iter().map(|&i| eigen.eigenvalues[i]).collect();
     let u = DMatrix::from_fn(size, order.len(), |r, c| eigen.eigenvectors[(r, order[c])]);
     (values, l_inv.transpose() * u)
+}
+
+/// The deflection field of a BFS plate under one static point load.
+pub struct StaticField {
+    node_x: Vec<f64>,
+    rows: usize,
+    element_width: f64,
+    free_index: Vec<Option<usize>>,
+    /// Free-dof displacements, m.
+    solution: Vec<f64>,
+}
+
+/// Element (ix, iy), its size (a, b) and the 16 bicubic Hermite shape
+/// values at (x, y); local dof numbering as in [`element`].
+fn shape_at(
+    node_x: &[f64],
+    element_width: f64,
+    across: usize,
+    x: f64,
+    y: f64,
+) -> (usize, usize, [f64; 16]) {
+    let ix = node_x
+        .partition_point(|&n| n <= x)
+        .saturating_sub(1)
+        .min(node_x.len() - 2);
+    let iy = ((y / element_width).floor() as usize).min(across - 1);
+    let a = node_x[ix + 1] - node_x[ix];
+    let hx = hermite((x - node_x[ix]) / a, a);
+    let hy = hermite(
+        (y - iy as f64 * element_width) / element_width,
+        element_width,
+    );
+    let mut n = [0.0; 16];
+    for q in 0..2 {
+        for p in 0..2 {
+            for d in 0..4 {
+                let jx = 2 * p + usize::from(d == 1 || d == 3);
+                let jy = 2 * q + usize::from(d == 2 || d == 3);
+                n[4 * (2 * q + p) + d] = hx[0][jx] * hy[0][jy];
+            }
+        }
+    }
+    (ix, iy, n)
+}
+
+impl StaticField {
+    /// Deflection at (x, y), m, downward positive (the load's direction).
+    pub fn deflection(&self, x: f64, y: f64) -> f64 {
+        let across = self.rows - 1;
+        let (ix, iy, n) = shape_at(&self.node_x, self.element_width, across, x, y);
+        let mut w = 0.0;
+        for q in 0..2 {
+            for p in 0..2 {
+                let node = (ix + p) * self.rows + iy + q;
+                for d in 0..4 {
+                    if let Some(g) = self.free_index[4 * node + d] {
+                        w += n[4 * (2 * q + p) + d] * self.solution[g];
+                    }
+                }
+            }
+        }
+        w
+    }
+}
+
+impl BfsPlate {
+    /// Static deflection field under a downward unit point load (1 N) at
+    /// (x₀, y₀): K w = Nᵀ(x₀, y₀), the load's consistent nodal vector. By
+    /// reciprocity (K symmetric) its value at (x, y) is also the deflection at
+    /// (x₀, y₀) under a unit load at (x, y): the influence surface of the
+    /// point (x₀, y₀).
+    pub fn unit_load_field(&self, x0: f64, y0: f64) -> StaticField {
+        let (node_x, rows, free_index, free) = self.layout();
+        let (mut stiffness, _) = self.assemble();
+        stiffness.factor();
+        let element_width = self.width / self.elements_across as f64;
+        let (ix, iy, n) = shape_at(&node_x, element_width, self.elements_across, x0, y0);
+        let mut solution = vec![0.0; free];
+        for q in 0..2 {
+            for p in 0..2 {
+                let node = (ix + p) * rows + iy + q;
+                for d in 0..4 {
+                    if let Some(g) = free_index[4 * node + d] {
+                        solution[g] += n[4 * (2 * q + p) + d];
+                    }
+                }
+            }
+        }
+        stiffness.solve(&mut solution);
+        StaticField {
+            node_x,
+            rows,
+            element_width,
+            free_index,
+            solution,
+        }
+    }
 }

@@ -469,6 +469,49 @@ pub fn moving_force_deflection(x: f64, t: f64, p: &MovingForceBeam, modes: usize
         .sum()
 }
 
+/// Modal displacement, velocity and acceleration (q_j, q̇_j, q̈_j) of the moving-force
+/// problem: during the crossing the closed-form forced response and its derivative,
+/// afterwards the damped free vibration from the exit state and its derivative; q̈_j
+/// then follows from the modal equation itself, q̈ = (2P/(mL)) sin(jπvt/L) − 2ζωq̇ − ω²q
+/// (the force term only while 0 < t < L/v) — the second time derivative of the
+/// closed form, without differencing.
+#[allow(dead_code)]
+fn moving_force_modal_state(j: usize, t: f64, p: &MovingForceBeam) -> (f64, f64, f64) {
+    if t <= 0.0 {
+        return (0.0, 0.0, 0.0);
+    }
+    let l = p.length;
+    let zeta = p.damping_ratio;
+    let omega = simply_supported_circular_frequency(j, l, p.bending_stiffness, p.mass_per_length);
+    let big_omega = j as f64 * PI * p.speed / l;
+    let f0 = 2.0 * p.force / (p.mass_per_length * l);
+    let t_exit = l / p.speed;
+    let (q, v, force) = if t < t_exit {
+        let (q, v) = sdof_sine_response(omega, zeta, big_omega, f0, t);
+        (q, v, f0 * (big_omega * t).sin())
+    } else {
+        let (q0, v0) = sdof_sine_response(omega, zeta, big_omega, f0, t_exit);
+        let tau = t - t_exit;
+        let wd = omega * (1.0 - zeta * zeta).sqrt();
+        let (s, c) = (wd * tau).sin_cos();
+        let b = (v0 + zeta * omega * q0) / wd;
+        let decay = (-zeta * omega * tau).exp();
+        let q = decay * (q0 * c + b * s);
+        let v = decay * (-zeta * omega * (q0 * c + b * s) + wd * (b * c - q0 * s));
+        (q, v, 0.0)
+    };
+    (q, v, force - 2.0 * zeta * omega * v - omega * omega * q)
+}
+
+/// Acceleration ẅ(x, t) (m/s², **positive downward**) of the moving-force problem of
+/// [`moving_force_deflection`], over the first `modes` sine modes.
+#[allow(dead_code)]
+pub fn moving_force_acceleration(x: f64, t: f64, p: &MovingForceBeam, modes: usize) -> f64 {
+    (1..=modes)
+        .map(|j| moving_force_modal_state(j, t, p).2 * (j as f64 * PI * x / p.length).sin())
+        .sum()
+}
+
 /// Maximum over t ∈ [0, t_end] of the midspan deflection (positive downward, m) of the
 /// moving-force problem, and the time (s) at which it occurs: `(w_max, t_max)`.
 ///
