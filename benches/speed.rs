@@ -49,6 +49,94 @@ fn main() {
     if wanted("plate") {
         plate(budget);
     }
+    if wanted("eigen") {
+        eigen(budget);
+    }
+}
+
+/// The checked eigen path on large beams: the lowest 100 modes of a 30-span
+/// viaduct (30 m spans) at 200 and 350 elements per span (11,971 and 20,971
+/// DOFs), then the static influence lines of every span middle and quarter
+/// point (90 lines, one sparse factorisation), and the same crossing's
+/// per-step cost with and without the static correction of recorded
+/// displacements.
+fn eigen(budget: f64) {
+    use vbi::bridge::{ModalBridge, ModeRequest};
+    use vbi::scenario::resolved::{Beam, Bridge, Damping, Modes};
+    println!("## Eigen path: lowest 100 modes of a 30-span beam\n");
+    println!(
+        "| elements per span | DOFs | modes (median) | 90 influence lines | residual (max) | |ΦᵀMΦ − I| (max) |"
+    );
+    println!("|---|---|---|---|---|---|");
+    for elements in [200usize, 350] {
+        let bridge = Bridge::Beam(Beam {
+            spans: vec![30.0; 30],
+            bending_stiffness: 8.323e9,
+            mass_per_length: 2303.0,
+            elements_per_span: elements,
+            modes: Modes {
+                count: None,
+                max_frequency: None,
+                static_correction: true,
+            },
+            damping: Damping::Modal { ratio: 0.0 },
+        });
+        let mut last = None;
+        let times = sample(budget, || {
+            let start = Instant::now();
+            let modal = ModalBridge::build_with(&bridge, ModeRequest::Lowest(100)).expect("modes");
+            let elapsed = start.elapsed().as_secs_f64();
+            last = Some(modal);
+            elapsed
+        });
+        let modal = last.expect("one run");
+        let (median, _) = median_min(times);
+        let lines = sample(budget, || {
+            let start = Instant::now();
+            for span in 0..30 {
+                for quarter in 1..=3 {
+                    let x = 30.0 * span as f64 + 7.5 * quarter as f64;
+                    modal.influence_line(x, 0.0, 0.0).expect("influence line");
+                }
+            }
+            start.elapsed().as_secs_f64()
+        });
+        let (lines_median, _) = median_min(lines);
+        println!(
+            "| {elements} | {} | {:.3} s | {:.3} s | {:.1e} | {:.1e} |",
+            ModalBridge::available_of(&bridge),
+            median,
+            lines_median,
+            modal.check.largest_residual,
+            modal.check.orthonormality_error
+        );
+    }
+    println!();
+    println!("### Static correction: per-step cost of the Yang & Yau crossing (5 records)\n");
+    println!("| modes | static correction | per step (median) |");
+    println!("|---|---|---|");
+    let text = read_scenario("yang-yau-sprung-mass.yaml");
+    for modes in [5usize, 10, 40] {
+        for correction in [false, true] {
+            let scene = text.replace(
+                "modes: {count: 10}",
+                &format!("modes: {{count: {modes}, static_correction: {correction}}}"),
+            );
+            let loaded = load(&scene, "yang-yau");
+            let steps = simulate(&loaded).model.steps as f64;
+            let times = sample(budget, || {
+                let start = Instant::now();
+                simulate(&loaded);
+                start.elapsed().as_secs_f64()
+            });
+            let (median, _) = median_min(times);
+            println!(
+                "| {modes} | {correction} | {:.2} µs |",
+                1e6 * median / steps
+            );
+        }
+    }
+    println!();
 }
 
 /// Path of a file in the crate's `scenarios/` folder.
