@@ -218,6 +218,82 @@ impl BeamModel {
     }
 }
 
+/// The static flexibility of a beam between any two points: the FE Green's
+/// function G(x, ξ) = N(x)ᵀ K⁻¹ N(ξ) (m/N, deflection at x under a unit load
+/// at ξ, both downward), with K⁻¹ formed once, densely, on the free dofs.
+#[derive(Debug, Clone)]
+pub struct BeamFlexibility {
+    node_x: Vec<f64>,
+    free_index: Vec<Option<usize>>,
+    /// K⁻¹ on the free dofs, column-major n × n.
+    inverse: Vec<f64>,
+    /// n.
+    order: usize,
+}
+
+impl BeamModel {
+    /// K⁻¹ on the free dofs (n solves with the sparse factor; O(n²) memory),
+    /// `None` above `limit` dofs.
+    pub fn flexibility(&self, limit: usize) -> Result<Option<BeamFlexibility>, BridgeError> {
+        let n = self.free_dofs();
+        if n > limit {
+            return Ok(None);
+        }
+        let factor = self.pencil.stiffness_factor()?;
+        let mut workspace = factor.workspace()?;
+        let mut inverse = vec![0.0; n * n];
+        for (j, column) in inverse.chunks_mut(n).enumerate() {
+            column[j] = 1.0;
+            factor.solve_in_place(column, &mut workspace);
+        }
+        Ok(Some(BeamFlexibility {
+            node_x: self.node_x.clone(),
+            free_index: self.free_index.clone(),
+            inverse,
+            order: n,
+        }))
+    }
+}
+
+impl BeamFlexibility {
+    /// The element of `x` and its free dof indices with the shape-function
+    /// weights there; `None` off the beam.
+    #[inline]
+    fn weights(&self, x: f64) -> Option<[(Option<usize>, f64); 4]> {
+        let last = *self.node_x.last()?;
+        if !(0.0..=last).contains(&x) {
+            return None;
+        }
+        let nodes = self.node_x.len();
+        let right = self.node_x.partition_point(|&nx| nx <= x);
+        let element = right.clamp(1, nodes - 1) - 1;
+        let h = self.node_x[element + 1] - self.node_x[element];
+        let xi = ((x - self.node_x[element]) / h).clamp(0.0, 1.0);
+        let (n, _) = super::hermite::shape_functions(xi, h);
+        Some(std::array::from_fn(|a| {
+            (self.free_index[2 * element + a], n[a])
+        }))
+    }
+
+    /// G(x, ξ), m/N; 0 when either point is off the beam. Cost O(1).
+    #[inline]
+    pub fn green(&self, x: f64, xi: f64) -> f64 {
+        let (Some(at), Some(load)) = (self.weights(x), self.weights(xi)) else {
+            return 0.0;
+        };
+        let n = self.order;
+        let mut sum = 0.0;
+        for (i, wi) in at {
+            let Some(i) = i else { continue };
+            for (j, wj) in load {
+                let Some(j) = j else { continue };
+                sum += wi * self.inverse[j * n + i] * wj;
+            }
+        }
+        sum
+    }
+}
+
 fn element_stiffness(ei: f64, h: f64) -> [[f64; 4]; 4] {
     let c = ei / (h * h * h);
     let h2 = h * h;

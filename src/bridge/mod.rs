@@ -105,6 +105,9 @@ pub struct ModalBridge {
     /// Whether recorded displacements get the static share of the modes
     /// left out ([`crate::record`]).
     pub static_correction: bool,
+    /// The static flexibility between contact points, for the contact
+    /// static correction ([`ModalBridge::prepare_contact_correction`]).
+    contact_flexibility: Option<std::sync::Arc<beam::BeamFlexibility>>,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
 }
@@ -126,6 +129,10 @@ enum Shapes {
         lines: Vec<(f64, HermiteField)>,
     },
 }
+
+/// Most free dofs of a beam whose contacts get the static correction (K⁻¹
+/// is kept densely: 2,500² × 8 B = 50 MB).
+pub const CONTACT_CORRECTION_DOFS: usize = 2_500;
 
 /// Which modes a bridge keeps.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -259,8 +266,58 @@ impl ModalBridge {
             selection,
             check,
             static_correction: bridge.modes().static_correction,
+            contact_flexibility: None,
             shapes,
         })
+    }
+
+    /// Prepares the static correction of the contacts (a beam of at most
+    /// [`CONTACT_CORRECTION_DOFS`] free dofs with `static_correction` on):
+    /// K⁻¹ once, so that the flexibility between two wheels costs O(1).
+    /// Plates and larger beams keep the modal contact flexibility (their
+    /// recorded displacements are still corrected).
+    pub fn prepare_contact_correction(&mut self) -> Result<(), BridgeError> {
+        if !self.static_correction || self.contact_flexibility.is_some() {
+            return Ok(());
+        }
+        if let Shapes::Beam { model, .. } = &self.shapes {
+            self.contact_flexibility = model
+                .flexibility(CONTACT_CORRECTION_DOFS)?
+                .map(std::sync::Arc::new);
+        }
+        Ok(())
+    }
+
+    /// Whether contact points get the static correction.
+    pub fn corrects_contacts(&self) -> bool {
+        self.contact_flexibility.is_some()
+    }
+
+    /// Residual (static) flexibility between two contact points, m/N: the
+    /// full static Green's function minus its modal part,
+    /// R = G(x_c, x_d) − Σᵢ φᵢ(x_c)φᵢ(x_d)/ωᵢ², from the mode values at the
+    /// two points (`values_c`, `values_d`, kept modes). The quasi-static
+    /// deflection of the modes left out at c under downward forces F_d is
+    /// −Σ_d R_cd F_d (the mode-acceleration method applied to the contact
+    /// flexibility). 0 when the contact correction is off. Cost O(modes).
+    #[inline]
+    pub fn residual_flexibility(
+        &self,
+        x_c: f64,
+        x_d: f64,
+        values_c: &[f64],
+        values_d: &[f64],
+    ) -> f64 {
+        let Some(flexibility) = &self.contact_flexibility else {
+            return 0.0;
+        };
+        let modal: f64 = values_c
+            .iter()
+            .zip(values_d)
+            .zip(&self.circular_frequencies)
+            .map(|((a, b), w)| a * b / (w * w))
+            .sum();
+        flexibility.green(x_c, x_d) - modal
     }
 
     /// Makes evaluation along the deck lines `ys` (m) as cheap as on a beam
