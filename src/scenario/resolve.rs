@@ -5,11 +5,13 @@
 //! are reported together, like a compiler.
 
 use super::bridges::resolve_bridge;
+use super::budget::{self, Budget, Limits, LoadOptions};
 use super::content;
+use super::plausible;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
 };
-use super::diagnostic::Diagnostic;
+use super::diagnostic::{Diagnostic, Lines};
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
 use super::resolved::*;
@@ -22,13 +24,11 @@ pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
 pub const DEFAULT_GRAVITY: f64 = 9.81;
 /// HHT α used by default with rigid unilateral contact.
 pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
-/// Largest number of time steps a run may take.
-pub const MAX_STEPS: f64 = 2.0e8;
 
 /// Collects diagnostics while resolving one file.
 pub(super) struct Checker<'a> {
     file: &'a str,
-    source: &'a str,
+    lines: Lines<'a>,
     root: &'a Node,
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -54,7 +54,7 @@ impl<'a> Checker<'a> {
     pub(super) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
         Self {
             file,
-            source,
+            lines: Lines::new(source),
             root,
             diagnostics: Vec::new(),
         }
@@ -67,8 +67,8 @@ impl<'a> Checker<'a> {
     /// Records an error at `path`.
     pub(super) fn error(&mut self, path: &str, message: impl Into<String>) {
         let loc = self.location(path);
-        self.diagnostics
-            .push(Diagnostic::new(self.file, self.source, loc, message));
+        let diagnostic = self.lines.diagnostic(self.file, loc, message);
+        self.diagnostics.push(diagnostic);
     }
 
     pub(super) fn positive(&mut self, path: &str, value: f64, what: &str) {
@@ -87,14 +87,43 @@ impl<'a> Checker<'a> {
 /// Resolves a parsed scenario. Returns the scenario with every default filled
 /// in and the modal bridge built on the way (mode selection and the default
 /// time step depend on the natural frequencies).
-pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenario, ModalBridge)> {
-    if raw.name.trim().is_empty() {
-        ck.error("name", "`name` must not be empty");
+pub(super) fn resolve(
+    raw: &ScenarioRaw,
+    ck: &mut Checker<'_>,
+    options: LoadOptions,
+) -> Option<(Scenario, ModalBridge)> {
+    super::names::check_name(ck, &raw.name);
+    let limits = Limits::resolve(raw.limits.as_ref(), ck);
+    let budget = Budget::new(limits, options);
+    // Counts read straight from the file come first: a file with 10⁵ axles
+    // or records is refused before anything is done per axle or record.
+    let wheels_fit = budget.check(
+        ck,
+        "vehicles",
+        "wheels",
+        "wheels over all vehicles",
+        budget::raw_wheels(&raw.vehicles),
+    );
+    let records = raw.record.as_ref().map_or(0, Vec::len) as f64;
+    let records_fit = budget.check(ck, "record", "records", "recorded quantities", records);
+    if !(wheels_fit && records_fit) {
+        return None;
     }
     let gravity = raw.gravity.unwrap_or(DEFAULT_GRAVITY);
     ck.positive("gravity", gravity, "gravity");
+    plausible::within(
+        ck,
+        "gravity",
+        "a gravitational acceleration",
+        gravity,
+        plausible::GRAVITY,
+        "m/s²",
+    );
 
     let bridge = resolve_bridge(&raw.bridge, ck);
+    if let Some(bridge) = &bridge {
+        plausible::check_bridge(ck, bridge);
+    }
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
@@ -147,9 +176,41 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         ck.positive("solver.time_step", dt, "time step");
     }
 
-    // The bridge is built only from a valid description.
+    // The bridge is built only from a valid description, and only if its
+    // eigenproblem fits the budget: the dense solve is O(n³).
     let (mut bridge, mut vehicles) = (bridge?, vehicles?);
     if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    let dofs_path = match &bridge {
+        Bridge::Plate(p) if raw_has(ck, "bridge.terms") && p.terms.transverse > 0 => "bridge.terms",
+        _ => "bridge.elements_per_span",
+    };
+    let mut fits = budget.check(
+        ck,
+        dofs_path,
+        "dofs",
+        "degrees of freedom of the bridge's eigenproblem",
+        budget::bridge_dofs(&bridge),
+    );
+    if let Some(count) = bridge.modes().count {
+        fits &= budget.check(ck, "bridge.modes.count", "modes", "bridge modes", count as f64);
+    }
+    if let Surface::Random { terms, .. } = &surface {
+        let path = if raw_has(ck, "surface.terms") {
+            "surface.terms"
+        } else {
+            "surface.sampling_length"
+        };
+        fits &= budget.check(
+            ck,
+            path,
+            "road_terms",
+            "terms of the random road's series",
+            *terms as f64,
+        );
+    }
+    if !fits {
         return None;
     }
     let mut modal = match ModalBridge::build(&bridge) {
@@ -166,6 +227,20 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    // Derived values too: dimensionless oscillators, ratio-given contacts.
+    for (i, vehicle) in vehicles.iter().enumerate() {
+        let at = format!("vehicles[{i}]");
+        let entry_field = if raw_has(ck, &format!("{at}.start_position")) {
+            "start_position"
+        } else {
+            "entry_time"
+        };
+        plausible::check_vehicle(ck, &at, entry_field, vehicle);
+    }
+    plausible::check_contact(ck, &contact);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
     let study = resolve_study(
         raw.study.as_ref(),
         &bridge,
@@ -174,6 +249,20 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         &surface,
         ck,
     );
+    let points = study
+        .as_ref()
+        .map_or(1.0, |s| super::sweep::study_points(s, &surface));
+    if study.is_some()
+        && !budget.check(ck, "study", "study_points", "runs of the study", points)
+    {
+        return None;
+    }
+    if let Some(study) = &study {
+        super::plausible::check_study(ck, study, &vehicles, &contact, &modal, &bridge);
+    }
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
     // A speed sweep runs the scene at every speed of its grid: the automatic
     // choices must serve its fastest run.
     let excitations = match &study {
@@ -226,10 +315,17 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         );
     }
     let steps = longest_run / time_step;
-    if steps > MAX_STEPS {
-        ck.error(
-            "solver.time_step",
-            format!("the run would take {steps:.3e} steps (more than {MAX_STEPS:.0e}); use a larger time step"),
+    let steps_path = steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
+    let what = format!(
+        "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
+    );
+    if budget.check(ck, &steps_path, "steps", &what, steps) && points > 1.0 {
+        budget.check(
+            ck,
+            "study",
+            "study_steps",
+            &format!("time steps over the study's {points} runs"),
+            steps * points,
         );
     }
 
@@ -238,6 +334,23 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
+    }
+    if study.is_none() {
+        let columns: f64 = record
+            .iter()
+            .map(|r| if r.quantity == Quantity::BridgeDisplacement { 2.0 } else { 1.0 })
+            .sum();
+        let path = if raw.record.is_some() { "record" } else { steps_path.as_str() };
+        budget.check(
+            ck,
+            path,
+            "output_bytes",
+            "bytes of history.csv (estimated)",
+            budget::history_bytes(steps, columns),
+        );
+        if !ck.diagnostics.is_empty() {
+            return None;
+        }
     }
     let scenario = Scenario {
         name: raw.name.clone(),
@@ -256,8 +369,75 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         },
         record,
         study,
+        limits,
     };
     Some((scenario, modal))
+}
+
+/// Whether the file writes the key at `path` (defaults are blamed on the
+/// section that could set them instead).
+fn raw_has(ck: &Checker<'_>, path: &str) -> bool {
+    let segs = parse_path(path);
+    let (last, parent) = match segs.split_last() {
+        Some((PathSeg::Key(k), parent)) => (*k, parent),
+        _ => return false,
+    };
+    let mut node = ck.root;
+    for seg in parent {
+        let next = match seg {
+            PathSeg::Key(k) => node.get(k),
+            PathSeg::Index(i) => match &node.kind {
+                super::yaml::NodeKind::Sequence(items) => items.get(*i),
+                _ => None,
+            },
+        };
+        match next {
+            Some(n) => node = n,
+            None => return false,
+        }
+    }
+    node.get(last).is_some()
+}
+
+/// Where to blame a run with too many steps: the entry time (or start
+/// position) of a vehicle that waits most of the run, a free vibration that
+/// is most of it, else the time step if the file gives one, else the
+/// vehicle whose crossing is longest (its slow speed makes the run long).
+fn steps_cause(
+    raw: &ScenarioRaw,
+    slow: &[Vehicle],
+    solver: &raw::SolverRaw,
+    duration: f64,
+    free_vibration: f64,
+) -> String {
+    let latest = slow
+        .iter()
+        .enumerate()
+        .map(|(i, v)| (i, v.entry_time()))
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    if latest.1 > 0.5 * duration {
+        let i = latest.0;
+        let field = match raw.vehicles.get(i) {
+            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
+            _ => "entry_time",
+        };
+        return format!("vehicles[{i}].{field}");
+    }
+    if free_vibration > 0.5 * duration {
+        return "solver.free_vibration".into();
+    }
+    if solver.time_step.is_some() {
+        return "solver.time_step".into();
+    }
+    let slowest = slow
+        .iter()
+        .enumerate()
+        .fold((0, f64::INFINITY), |a, (i, v)| {
+            if v.speed() < a.1 { (i, v.speed()) } else { a }
+        });
+    format!("vehicles[{}].speed", slowest.0)
 }
 
 pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {

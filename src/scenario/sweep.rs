@@ -188,8 +188,10 @@ pub(super) fn resolve(
                 "`roughness` needs at least one surface (or leave it out to sweep the scene's own)",
             );
         }
+        // A set of the names seen keeps this linear in the list's length.
+        let mut seen = std::collections::HashSet::new();
         for (i, entry) in list.iter().enumerate() {
-            if list[..i].contains(entry) {
+            if !seen.insert(*entry) {
                 ck.error(
                     &format!("study.roughness[{i}]"),
                     format!("`{}` is listed twice", entry.name()),
@@ -264,5 +266,34 @@ pub(super) fn resolve(
         samples,
         span,
         girder,
+    }
+}
+
+/// Runs a study makes: speeds × (samples per random surface, one per
+/// deterministic one) for a sweep, the grid's points for a separation map.
+/// In `f64`, so no count can wrap.
+pub fn study_points(study: &Study, base: &Surface) -> f64 {
+    match study {
+        Study::SpeedSweep(sweep) => {
+            let entries: Vec<Option<SweepRoughness>> = match &sweep.roughness {
+                None => vec![None],
+                Some(list) => list.iter().copied().map(Some).collect(),
+            };
+            let per_speed: f64 = entries
+                .iter()
+                .map(|&e| {
+                    if is_random(base, e) {
+                        sweep.samples as f64
+                    } else {
+                        1.0
+                    }
+                })
+                .sum();
+            per_speed * sweep.speeds.count as f64
+        }
+        Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        } => velocity_ratio.count as f64 * mass_ratio.count as f64,
     }
 }
