@@ -14,9 +14,9 @@ pub mod de;
 pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
-pub mod raw;
 pub mod names;
 mod plausible;
+pub mod raw;
 mod records;
 pub mod resolve;
 pub mod resolved;

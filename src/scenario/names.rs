@@ -100,7 +100,10 @@ mod tests {
         ] {
             assert!(single_component(name), "{name:?} -> {}", folder_name(name));
             assert!(!folder_name(name).starts_with('.'), "{name:?}");
-            assert!(!folder_name(name).contains(['/', '\\', '\0', '\n']), "{name:?}");
+            assert!(
+                !folder_name(name).contains(['/', '\\', '\0', '\n']),
+                "{name:?}"
+            );
         }
     }
 

@@ -70,21 +70,30 @@ fn number(x: f64) -> String {
 /// Checks a resolved (possibly derived) vehicle; `at` is its path.
 /// `entry_field` is `start_position` when the file places the vehicle by
 /// position, so a far-away start is blamed where it is written.
-pub(super) fn check_vehicle(
-    ck: &mut Checker<'_>,
-    at: &str,
-    entry_field: &str,
-    vehicle: &Vehicle,
-) {
+pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, vehicle: &Vehicle) {
     let p = |field: &str| format!("{at}.{field}");
     match vehicle {
         Vehicle::MovingForce(v) => {
             for (k, &load) in v.loads.iter().enumerate() {
-                within(ck, &p(&format!("loads[{k}]")), "an axle load", load, LOAD, "N");
+                within(
+                    ck,
+                    &p(&format!("loads[{k}]")),
+                    "an axle load",
+                    load,
+                    LOAD,
+                    "N",
+                );
             }
         }
         Vehicle::Oscillator(o) => {
-            within(ck, &p("sprung_mass"), "a sprung mass", o.sprung_mass, MASS, "kg");
+            within(
+                ck,
+                &p("sprung_mass"),
+                "a sprung mass",
+                o.sprung_mass,
+                MASS,
+                "kg",
+            );
             if o.unsprung_mass != 0.0 {
                 within(
                     ck,
@@ -103,7 +112,14 @@ pub(super) fn check_vehicle(
                 STIFFNESS,
                 "N/m",
             );
-            within(ck, &p("damping"), "a suspension damping", o.damping, DAMPING, "N·s/m");
+            within(
+                ck,
+                &p("damping"),
+                "a suspension damping",
+                o.damping,
+                DAMPING,
+                "N·s/m",
+            );
         }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
@@ -190,7 +206,14 @@ pub(super) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
             } else {
                 "contact.stiffness"
             };
-            within(ck, path, "a contact stiffness", *stiffness, STIFFNESS, "N/m");
+            within(
+                ck,
+                path,
+                "a contact stiffness",
+                *stiffness,
+                STIFFNESS,
+                "N/m",
+            );
         }
         Contact::Hertz { coefficient } => within(
             ck,
@@ -234,10 +257,21 @@ pub(super) fn check_study(
     let Some(&f1) = modal.frequencies().first() else {
         return;
     };
-    let (v_lo, v_hi) = (velocity_ratio.from.min(velocity_ratio.to), velocity_ratio.from.max(velocity_ratio.to));
-    let (m_lo, m_hi) = (mass_ratio.from.min(mass_ratio.to), mass_ratio.from.max(mass_ratio.to));
+    let (v_lo, v_hi) = (
+        velocity_ratio.from.min(velocity_ratio.to),
+        velocity_ratio.from.max(velocity_ratio.to),
+    );
+    let (m_lo, m_hi) = (
+        mass_ratio.from.min(mass_ratio.to),
+        mass_ratio.from.max(mass_ratio.to),
+    );
     for (v, m, vpath, mpath) in [
-        (v_lo, m_lo, "study.velocity_ratio.from", "study.mass_ratio.from"),
+        (
+            v_lo,
+            m_lo,
+            "study.velocity_ratio.from",
+            "study.mass_ratio.from",
+        ),
         (v_hi, m_hi, "study.velocity_ratio.to", "study.mass_ratio.to"),
     ] {
         let mut point = groups;
@@ -257,8 +291,22 @@ pub(super) fn check_study(
             );
         }
         let sub = ck.diagnostics.len();
-        within(ck, mpath, "the study's derived sprung mass", derived.sprung_mass, MASS, "kg");
-        within(ck, mpath, "the study's derived suspension stiffness", derived.stiffness, STIFFNESS, "N/m");
+        within(
+            ck,
+            mpath,
+            "the study's derived sprung mass",
+            derived.sprung_mass,
+            MASS,
+            "kg",
+        );
+        within(
+            ck,
+            mpath,
+            "the study's derived suspension stiffness",
+            derived.stiffness,
+            STIFFNESS,
+            "N/m",
+        );
         if let Contact::Elastic {
             stiffness_ratio: Some(ratio),
             ..

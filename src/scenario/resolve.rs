@@ -7,11 +7,11 @@
 use super::bridges::resolve_bridge;
 use super::budget::{self, Budget, Limits, LoadOptions};
 use super::content;
-use super::plausible;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
 };
 use super::diagnostic::{Diagnostic, Lines};
+use super::plausible;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
 use super::resolved::*;
@@ -194,7 +194,13 @@ pub(super) fn resolve(
         budget::bridge_dofs(&bridge),
     );
     if let Some(count) = bridge.modes().count {
-        fits &= budget.check(ck, "bridge.modes.count", "modes", "bridge modes", count as f64);
+        fits &= budget.check(
+            ck,
+            "bridge.modes.count",
+            "modes",
+            "bridge modes",
+            count as f64,
+        );
     }
     if let Surface::Random { terms, .. } = &surface {
         let path = if raw_has(ck, "surface.terms") {
@@ -252,9 +258,7 @@ pub(super) fn resolve(
     let points = study
         .as_ref()
         .map_or(1.0, |s| super::sweep::study_points(s, &surface));
-    if study.is_some()
-        && !budget.check(ck, "study", "study_points", "runs of the study", points)
-    {
+    if study.is_some() && !budget.check(ck, "study", "study_points", "runs of the study", points) {
         return None;
     }
     if let Some(study) = &study {
@@ -338,9 +342,19 @@ pub(super) fn resolve(
     if study.is_none() {
         let columns: f64 = record
             .iter()
-            .map(|r| if r.quantity == Quantity::BridgeDisplacement { 2.0 } else { 1.0 })
+            .map(|r| {
+                if r.quantity == Quantity::BridgeDisplacement {
+                    2.0
+                } else {
+                    1.0
+                }
+            })
             .sum();
-        let path = if raw.record.is_some() { "record" } else { steps_path.as_str() };
+        let path = if raw.record.is_some() {
+            "record"
+        } else {
+            steps_path.as_str()
+        };
         budget.check(
             ck,
             path,

@@ -10,8 +10,6 @@ use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS};
 
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
-/// Most runs a sweep may ask for (speeds × surfaces × samples).
-pub const MAX_POINTS: usize = 100_000;
 
 /// `vehicles` with every speed set to `speed` (m/s); entry times are kept.
 pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
@@ -214,17 +212,8 @@ pub(super) fn resolve(
             ),
         );
     }
-    let runs_per_speed: usize = entries
-        .iter()
-        .map(|&e| if is_random(surface, e) { samples } else { 1 })
-        .sum();
-    let points = runs_per_speed.saturating_mul(grid.count);
-    if points > MAX_POINTS {
-        ck.error(
-            "study",
-            format!("the sweep would take {points} runs, more than {MAX_POINTS}"),
-        );
-    }
+    // The number of runs is checked against `limits.study_points` once the
+    // study is resolved (see `study_points`).
     let spans = bridge.spans();
     let longest = spans
         .iter()

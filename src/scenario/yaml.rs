@@ -440,7 +440,10 @@ impl Builder<'_> {
         );
         if tagged {
             // saphyr marks the node after its tag; point at the tag itself.
-            return Err(err(tag_start(self.source, loc), "YAML tags are not supported"));
+            return Err(err(
+                tag_start(self.source, loc),
+                "YAML tags are not supported",
+            ));
         }
         match ev {
             Event::DocumentStart(_) => {
@@ -513,7 +516,10 @@ impl Builder<'_> {
 
 /// The text of line `line` (1-based), without its break.
 fn line_text(source: &str, line: usize) -> Option<&str> {
-    source.split('\n').nth(line.checked_sub(1)?).map(|l| l.trim_end_matches('\r'))
+    source
+        .split('\n')
+        .nth(line.checked_sub(1)?)
+        .map(|l| l.trim_end_matches('\r'))
 }
 
 /// Where the tag of a node written at `loc` starts: the last `!` before it
@@ -555,7 +561,10 @@ fn relocate(source: &str, loc: Location, info: &str) -> (Location, &'static str)
             let indent: Vec<char> = text.chars().take_while(|c| c.is_whitespace()).collect();
             if let Some(i) = indent.iter().position(|&c| c == '\t') {
                 let at = Location { line, col: i + 1 };
-                return (at, " (indent with spaces: YAML forbids tabs in indentation)");
+                return (
+                    at,
+                    " (indent with spaces: YAML forbids tabs in indentation)",
+                );
             }
         }
         return (loc, "");
