@@ -182,15 +182,21 @@ pub(super) fn resolve(
     if !ck.diagnostics.is_empty() {
         return None;
     }
-    let dofs_path = match &bridge {
-        Bridge::Plate(p) if raw_has(ck, "bridge.terms") && p.terms.transverse > 0 => "bridge.terms",
-        _ => "bridge.elements_per_span",
+    let (dofs_path, dofs_what) = match &bridge {
+        Bridge::Plate(_) if raw_has(ck, "bridge.terms") => (
+            "bridge.terms",
+            "degrees of freedom of the plate's eigenproblem (a Ritz term counts 1.5, a transverse function 2.5)",
+        ),
+        _ => (
+            "bridge.elements_per_span",
+            "degrees of freedom of the bridge's eigenproblem",
+        ),
     };
     let mut fits = budget.check(
         ck,
         dofs_path,
         "dofs",
-        "degrees of freedom of the bridge's eigenproblem",
+        dofs_what,
         budget::bridge_dofs(&bridge),
     );
     if let Some(count) = bridge.modes().count {

@@ -191,6 +191,11 @@ case("size-plate-terms-wrap", "rejected",
      "Ritz terms")
 case("size-plate-terms-large", "rejected", "plate terms 2000 x 2000",
      scene(bridge=PLATE + "  terms: @@{longitudinal: 2000, transverse: 2000}\n"), "Ritz terms")
+case("size-plate-transverse-2000", "budget",
+     "2000 transverse plate functions (found by the fuzzer: 50 s inside check)",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 1, transverse: 2000}\n"), "limits.dofs")
+case("size-plate-ritz-2000", "budget", "a 40 x 50 plate Ritz basis (15 s inside check)",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 40, transverse: 50}\n"), "limits.dofs")
 case("size-sweep-count-2p63", "rejected",
      "a sweep count of 2^63 (its speed list was built after the count was diagnosed)",
      scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: @@9223372036854775808}}\n"),
