@@ -156,7 +156,7 @@ fn mutate(input: &str, seeds: &[String], rng: &mut Rng) -> String {
     for _ in 0..1 + rng.below(4) {
         match rng.below(9) {
             // A number replaced by a boundary value.
-            0 | 1 | 2 => {
+            0..=2 => {
                 let spans = numbers(&s);
                 if spans.is_empty() {
                     continue;
@@ -240,7 +240,7 @@ fn mutated_scenes_never_panic_in_the_loader() {
     let seed = std::env::var("VBI_FUZZ_SEED")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(0x5EED_0F_7B1u64);
+        .unwrap_or(0x0005_EED0_F7B1_u64);
     let seeds = seeds();
     assert!(seeds.len() > 100, "only {} seeds", seeds.len());
     let mut rng = Rng(seed | 1);

@@ -107,7 +107,15 @@ pub fn history_csv(history: &History) -> Vec<u8> {
         .iter()
         .map(|c| 1 + usize::from(c.static_values.is_some()))
         .sum::<usize>();
-    let mut out = csv::Writer::from_writer(Vec::with_capacity(history.time.len() * width * 20));
+    let mut out = csv::Writer::from_writer(Vec::with_capacity(
+        // An estimate, capped: the buffer grows if it needs more.
+        history
+            .time
+            .len()
+            .saturating_mul(width)
+            .saturating_mul(20)
+            .min(1 << 26),
+    ));
     let mut header = vec!["time".to_string()];
     for c in &history.columns {
         header.push(c.name.clone());

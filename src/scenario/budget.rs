@@ -82,7 +82,7 @@ impl Limits {
         let Some(raw) = raw else { return d };
         let mut pick = |key: &str, given: Option<f64>, default: f64| match given {
             None => default,
-            Some(v) if v >= 1.0 && v <= ABSOLUTE && v.fract() == 0.0 => v,
+            Some(v) if (1.0..=ABSOLUTE).contains(&v) && v.fract() == 0.0 => v,
             Some(v) => {
                 ck.error(
                     &format!("limits.{key}"),

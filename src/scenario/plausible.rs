@@ -38,7 +38,9 @@ pub const GRAVITY: (f64, f64) = (1e-3, 300.0);
 /// Time before a vehicle reaches the bridge, s (one day).
 pub const ENTRY_TIME: (f64, f64) = (0.0, 86_400.0);
 
-/// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`.
+/// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`. A zero
+/// or negative value is left to the sign checks, which say "must be
+/// positive" once, rather than twice.
 pub(super) fn within(
     ck: &mut Checker<'_>,
     path: &str,
@@ -47,7 +49,8 @@ pub(super) fn within(
     (lo, hi): (f64, f64),
     unit: &str,
 ) {
-    if !(lo..=hi).contains(&value) {
+    let outside = value.is_nan() || value > hi || (value > 0.0 && value < lo);
+    if outside {
         let (value, lo, hi) = (number(value), number(lo), number(hi));
         ck.error(
             path,
