@@ -401,3 +401,16 @@ fn a_byte_order_mark_is_accepted_and_not_counted() {
         run.stderr
     );
 }
+
+/// A file that never ends (a device, a pipe) is read only up to the size
+/// limit and refused, not read until memory runs out.
+#[test]
+fn an_endless_input_is_refused() {
+    let scratch = Scratch::new("hostile", "endless");
+    if !Path::new("/dev/zero").exists() {
+        return;
+    }
+    let run = capped(&["check", "/dev/zero"], scratch.dir(), &scratch, "zero");
+    assert_eq!(run.code, Some(2), "{}", run.stderr);
+    assert!(run.stderr.contains("/dev/zero:1:1:"), "{}", run.stderr);
+}

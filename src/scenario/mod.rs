@@ -125,7 +125,24 @@ pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadE
             ),
         )]));
     }
-    let bytes = std::fs::read(path).map_err(io)?;
+    // Read at most one byte past the limit: a device or a pipe (`/dev/zero`)
+    // reports no size but never ends.
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            std::io::Read::read_to_end(&mut std::io::Read::take(f, MAX_FILE_BYTES + 1), &mut bytes)
+        })
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(LoadError::Invalid(vec![Diagnostic::new(
+            &file,
+            "",
+            Location { line: 1, col: 1 },
+            format!(
+                "the input is longer than {MAX_FILE_BYTES} bytes, the most a scenario file may have"
+            ),
+        )]));
+    }
     match String::from_utf8(bytes) {
         Ok(source) => load_str_with(&source, &file, options),
         Err(e) => Err(not_utf8(&file, e.as_bytes(), e.utf8_error().valid_up_to())),

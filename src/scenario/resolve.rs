@@ -313,7 +313,17 @@ pub(super) fn resolve(
             .fold(0.0, f64::max);
         last_exit + free_vibration
     };
-    let (shortest_run, longest_run) = (duration(&fast), duration(&slow));
+    let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
+    // A separation map's slowest point (its smallest velocity ratio) runs
+    // longest: v = 2 α f₁ L.
+    if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
+        (&study, modal.frequencies().first(), vehicles.as_slice())
+    {
+        let slowest = 2.0 * velocity_ratio.from.min(velocity_ratio.to) * f1 * length;
+        if slowest > 0.0 {
+            longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
+        }
+    }
     let steps = shortest_run / time_step;
     if steps < 10.0 {
         ck.error(
