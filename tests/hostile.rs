@@ -414,3 +414,35 @@ fn an_endless_input_is_refused() {
     assert_eq!(run.code, Some(2), "{}", run.stderr);
     assert!(run.stderr.contains("/dev/zero:1:1:"), "{}", run.stderr);
 }
+
+/// A scene that raised its limits writes them into `resolved.yaml`, which
+/// then passes the same budgets (it "runs as is").
+#[test]
+fn raised_limits_survive_in_the_resolved_scene() {
+    let scratch = Scratch::new("hostile", "resolved-limits");
+    let path = corpus().join("cases/ok-limits-raised.yaml");
+    let out = scratch.path("out");
+    let run = capped(
+        &[
+            "run",
+            "--quiet",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        scratch.dir(),
+        &scratch,
+        "run",
+    );
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let resolved = out.join("resolved.yaml");
+    let text = fs::read_to_string(&resolved).unwrap();
+    assert!(text.contains("wheels: 1000"), "{text}");
+    let again = capped(
+        &["check", resolved.to_str().unwrap()],
+        scratch.dir(),
+        &scratch,
+        "again",
+    );
+    assert_eq!(again.code, Some(0), "{}", again.stderr);
+}

@@ -355,6 +355,17 @@ pub(super) fn resolve(
     if !ck.diagnostics.is_empty() {
         return None;
     }
+    // The records as resolved, defaults included (a contact force per
+    // wheel), so that `resolved.yaml` passes the same budget.
+    if raw.record.is_none() {
+        budget.check(
+            ck,
+            "vehicles",
+            "records",
+            "recorded quantities (the default: each span's middle and each wheel's contact force)",
+            record.len() as f64,
+        );
+    }
     if study.is_none() {
         let columns: f64 = record
             .iter()

@@ -75,7 +75,12 @@ case("ok-name-unicode", "accepted", "a Unicode name", scene(name="pont de l'Île
 case("ok-limits-raised", "accepted", "a budget raised in the file lets 600 axles through",
      scene(vehicles="  - type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
            + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n",
-           extra="limits: {wheels: 1000}\n"))
+           extra="limits: {wheels: 1000, records: 1000}\n"))
+case("size-default-records", "budget",
+     "600 axles raise the wheel limit but not the records one: 601 default records",
+     scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
+           + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n",
+           extra="limits: {wheels: 1000}\n"), "limits.records")
 case("size-axles-600", "budget", "the same 600 axles without the raised limit",
      scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
            + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n"),
