@@ -12,7 +12,7 @@ use serde::Serialize;
 
 use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
-use super::resolved::Bridge;
+use super::resolved::{Bridge, Surface, Vehicle};
 
 /// How a scene is loaded: whether its budgets are enforced.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -162,6 +162,62 @@ impl Budget {
         false
     }
 
+    /// The counts read straight from the file: wheels and records. Returns
+    /// whether they fit.
+    pub(super) fn counts(&self, raw: &raw::ScenarioRaw, ck: &mut Checker<'_>) -> bool {
+        let wheels_fit = self.check(
+            ck,
+            "vehicles",
+            "wheels",
+            "wheels over all vehicles",
+            raw_wheels(&raw.vehicles),
+        );
+        let records = raw.record.as_ref().map_or(0, Vec::len) as f64;
+        let records_fit = self.check(ck, "record", "records", "recorded quantities", records);
+        wheels_fit && records_fit
+    }
+
+    /// What building the model costs: the bridge's eigenproblem, its modes
+    /// and a random road's series. Checked before the eigen solve, which is
+    /// O(n³). Returns whether they fit.
+    pub(super) fn model(&self, bridge: &Bridge, surface: &Surface, ck: &mut Checker<'_>) -> bool {
+        let (dofs_path, dofs_what) = match bridge {
+            Bridge::Plate(_) if ck.has("bridge.terms") => (
+                "bridge.terms",
+                "degrees of freedom of the plate's eigenproblem (a Ritz term counts 1.5, a transverse function 2.5)",
+            ),
+            _ => (
+                "bridge.elements_per_span",
+                "degrees of freedom of the bridge's eigenproblem",
+            ),
+        };
+        let mut fits = self.check(ck, dofs_path, "dofs", dofs_what, bridge_dofs(bridge));
+        if let Some(count) = bridge.modes().count {
+            fits &= self.check(
+                ck,
+                "bridge.modes.count",
+                "modes",
+                "bridge modes",
+                count as f64,
+            );
+        }
+        if let Surface::Random { terms, .. } = surface {
+            let path = if ck.has("surface.terms") {
+                "surface.terms"
+            } else {
+                "surface.sampling_length"
+            };
+            fits &= self.check(
+                ck,
+                path,
+                "road_terms",
+                "terms of the random road's series",
+                *terms as f64,
+            );
+        }
+        fits
+    }
+
     fn limit(&self, key: &str) -> f64 {
         let l = &self.limits;
         match key {
@@ -233,6 +289,47 @@ pub fn bridge_dofs(bridge: &Bridge) -> f64 {
                 .max(beam(p.spans.len(), p.elements_per_span))
         }
     }
+}
+
+/// Where to blame a run with too many steps: the entry time (or start
+/// position) of a vehicle that waits most of the run, a free vibration that
+/// is most of it, else the time step if the file gives one, else the
+/// vehicle whose crossing is longest (its slow speed makes the run long).
+pub(super) fn steps_cause(
+    raw: &raw::ScenarioRaw,
+    slow: &[Vehicle],
+    solver: &raw::SolverRaw,
+    duration: f64,
+    free_vibration: f64,
+) -> String {
+    let latest = slow
+        .iter()
+        .enumerate()
+        .map(|(i, v)| (i, v.entry_time()))
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    if latest.1 > 0.5 * duration {
+        let i = latest.0;
+        let field = match raw.vehicles.get(i) {
+            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
+            _ => "entry_time",
+        };
+        return format!("vehicles[{i}].{field}");
+    }
+    if free_vibration > 0.5 * duration {
+        return "solver.free_vibration".into();
+    }
+    if solver.time_step.is_some() {
+        return "solver.time_step".into();
+    }
+    let slowest = slow
+        .iter()
+        .enumerate()
+        .fold((0, f64::INFINITY), |a, (i, v)| {
+            if v.speed() < a.1 { (i, v.speed()) } else { a }
+        });
+    format!("vehicles[{}].speed", slowest.0)
 }
 
 /// Bytes of `history.csv`: one row per step, a time column and one column

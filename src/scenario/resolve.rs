@@ -77,6 +77,31 @@ impl<'a> Checker<'a> {
         }
     }
 
+    /// Whether the file writes the key at `path` (defaults are blamed on the
+    /// section that could set them instead).
+    pub(super) fn has(&self, path: &str) -> bool {
+        let segs = parse_path(path);
+        let (last, parent) = match segs.split_last() {
+            Some((PathSeg::Key(k), parent)) => (*k, parent),
+            _ => return false,
+        };
+        let mut node = self.root;
+        for seg in parent {
+            let next = match seg {
+                PathSeg::Key(k) => node.get(k),
+                PathSeg::Index(i) => match &node.kind {
+                    super::yaml::NodeKind::Sequence(items) => items.get(*i),
+                    _ => None,
+                },
+            };
+            match next {
+                Some(n) => node = n,
+                None => return false,
+            }
+        }
+        node.get(last).is_some()
+    }
+
     pub(super) fn non_negative(&mut self, path: &str, value: f64, what: &str) {
         if value < 0.0 {
             self.error(path, format!("{what} must not be negative, got {value}"));
@@ -97,16 +122,7 @@ pub(super) fn resolve(
     let budget = Budget::new(limits, options);
     // Counts read straight from the file come first: a file with 10⁵ axles
     // or records is refused before anything is done per axle or record.
-    let wheels_fit = budget.check(
-        ck,
-        "vehicles",
-        "wheels",
-        "wheels over all vehicles",
-        budget::raw_wheels(&raw.vehicles),
-    );
-    let records = raw.record.as_ref().map_or(0, Vec::len) as f64;
-    let records_fit = budget.check(ck, "record", "records", "recorded quantities", records);
-    if !(wheels_fit && records_fit) {
+    if !budget.counts(raw, ck) {
         return None;
     }
     let gravity = raw.gravity.unwrap_or(DEFAULT_GRAVITY);
@@ -182,47 +198,7 @@ pub(super) fn resolve(
     if !ck.diagnostics.is_empty() {
         return None;
     }
-    let (dofs_path, dofs_what) = match &bridge {
-        Bridge::Plate(_) if raw_has(ck, "bridge.terms") => (
-            "bridge.terms",
-            "degrees of freedom of the plate's eigenproblem (a Ritz term counts 1.5, a transverse function 2.5)",
-        ),
-        _ => (
-            "bridge.elements_per_span",
-            "degrees of freedom of the bridge's eigenproblem",
-        ),
-    };
-    let mut fits = budget.check(
-        ck,
-        dofs_path,
-        "dofs",
-        dofs_what,
-        budget::bridge_dofs(&bridge),
-    );
-    if let Some(count) = bridge.modes().count {
-        fits &= budget.check(
-            ck,
-            "bridge.modes.count",
-            "modes",
-            "bridge modes",
-            count as f64,
-        );
-    }
-    if let Surface::Random { terms, .. } = &surface {
-        let path = if raw_has(ck, "surface.terms") {
-            "surface.terms"
-        } else {
-            "surface.sampling_length"
-        };
-        fits &= budget.check(
-            ck,
-            path,
-            "road_terms",
-            "terms of the random road's series",
-            *terms as f64,
-        );
-    }
-    if !fits {
+    if !budget.model(&bridge, &surface, ck) {
         return None;
     }
     let mut modal = match ModalBridge::build(&bridge) {
@@ -242,7 +218,7 @@ pub(super) fn resolve(
     // Derived values too: dimensionless oscillators, ratio-given contacts.
     for (i, vehicle) in vehicles.iter().enumerate() {
         let at = format!("vehicles[{i}]");
-        let entry_field = if raw_has(ck, &format!("{at}.start_position")) {
+        let entry_field = if ck.has(&format!("{at}.start_position")) {
             "start_position"
         } else {
             "entry_time"
@@ -335,7 +311,7 @@ pub(super) fn resolve(
         );
     }
     let steps = longest_run / time_step;
-    let steps_path = steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
+    let steps_path = budget::steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
     let what = format!(
         "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
     );
@@ -413,72 +389,6 @@ pub(super) fn resolve(
         limits,
     };
     Some((scenario, modal))
-}
-
-/// Whether the file writes the key at `path` (defaults are blamed on the
-/// section that could set them instead).
-fn raw_has(ck: &Checker<'_>, path: &str) -> bool {
-    let segs = parse_path(path);
-    let (last, parent) = match segs.split_last() {
-        Some((PathSeg::Key(k), parent)) => (*k, parent),
-        _ => return false,
-    };
-    let mut node = ck.root;
-    for seg in parent {
-        let next = match seg {
-            PathSeg::Key(k) => node.get(k),
-            PathSeg::Index(i) => match &node.kind {
-                super::yaml::NodeKind::Sequence(items) => items.get(*i),
-                _ => None,
-            },
-        };
-        match next {
-            Some(n) => node = n,
-            None => return false,
-        }
-    }
-    node.get(last).is_some()
-}
-
-/// Where to blame a run with too many steps: the entry time (or start
-/// position) of a vehicle that waits most of the run, a free vibration that
-/// is most of it, else the time step if the file gives one, else the
-/// vehicle whose crossing is longest (its slow speed makes the run long).
-fn steps_cause(
-    raw: &ScenarioRaw,
-    slow: &[Vehicle],
-    solver: &raw::SolverRaw,
-    duration: f64,
-    free_vibration: f64,
-) -> String {
-    let latest = slow
-        .iter()
-        .enumerate()
-        .map(|(i, v)| (i, v.entry_time()))
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    if latest.1 > 0.5 * duration {
-        let i = latest.0;
-        let field = match raw.vehicles.get(i) {
-            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
-            _ => "entry_time",
-        };
-        return format!("vehicles[{i}].{field}");
-    }
-    if free_vibration > 0.5 * duration {
-        return "solver.free_vibration".into();
-    }
-    if solver.time_step.is_some() {
-        return "solver.time_step".into();
-    }
-    let slowest = slow
-        .iter()
-        .enumerate()
-        .fold((0, f64::INFINITY), |a, (i, v)| {
-            if v.speed() < a.1 { (i, v.speed()) } else { a }
-        });
-    format!("vehicles[{}].speed", slowest.0)
 }
 
 pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
