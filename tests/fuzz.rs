@@ -5,7 +5,8 @@
 //! replaced by boundary values (0, −1, 2⁶³, 2⁶⁴, ±1e308, .nan, …), lines
 //! spliced in from other seeds, YAML control tokens (tabs, tags, anchors,
 //! brackets, NUL, BOM) — and goes through `load_str` exactly as `vbi check`
-//! would. A panic fails the test and the input is saved under
+//! would; an accepted scene of at most 20,000 steps is also run. A panic
+//! fails the test and the input is saved under
 //! `target/fuzz-crashes/` to become a case in `tests/hostile`.
 //!
 //! The run is deterministic for a seed (xorshift, fixed default) and bounded
@@ -231,6 +232,21 @@ fn mutate(input: &str, seeds: &[String], rng: &mut Rng) -> String {
     s
 }
 
+/// Steps of a scene without a study at most this many are run too.
+const RUN_STEPS: f64 = 20_000.0;
+
+/// Whether `scenario` is a single scene of at most [`RUN_STEPS`] steps.
+fn short(scenario: &vbi::scenario::resolved::Scenario) -> bool {
+    let length = scenario.bridge.length();
+    let end = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.entry_time() + (length + v.length()) / v.speed())
+        .fold(0.0, f64::max)
+        + scenario.solver.free_vibration;
+    scenario.study.is_none() && end / scenario.solver.time_step <= RUN_STEPS
+}
+
 #[test]
 fn mutated_scenes_never_panic_in_the_loader() {
     let seconds = std::env::var("VBI_FUZZ_SECONDS")
@@ -253,7 +269,13 @@ fn mutated_scenes_never_panic_in_the_loader() {
         let input = mutate(&base, &seeds, &mut rng);
         let start = Instant::now();
         let result = catch_unwind(AssertUnwindSafe(|| {
-            vbi::scenario::load_str(&input, "fuzz.yaml").map(|_| ())
+            let loaded = vbi::scenario::load_str(&input, "fuzz.yaml")?;
+            // A short accepted scene is also run: what the loader lets
+            // through must not panic in the solvers either.
+            if short(&loaded.scenario) {
+                let _ = vbi::run::simulate(loaded, &mut |_, _| {});
+            }
+            Ok::<(), vbi::scenario::LoadError>(())
         }));
         let took = start.elapsed();
         runs += 1;
