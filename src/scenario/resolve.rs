@@ -266,6 +266,16 @@ pub(super) fn resolve(
         modal.truncate(count, reason);
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
+    // The modes kept, however chosen (a high `max_frequency` keeps many).
+    let modes_path = if ck.has("bridge.modes") {
+        "bridge.modes"
+    } else {
+        "bridge"
+    };
+    let kept = modal.mode_count() as f64;
+    if !budget.check(ck, modes_path, "modes", "bridge modes kept", kept) {
+        return None;
+    }
     if !ck.diagnostics.is_empty() {
         return None;
     }

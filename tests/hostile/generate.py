@@ -219,6 +219,9 @@ case("size-beam-2000-elements", "budget",
 case("size-modes-count", "budget", "more modes than the budget",
      scene(bridge=BEAM + "  elements_per_span: 900\n  modes: {count: @@1000}\n",
            extra="limits: {dofs: 2000}\n"), "limits.modes")
+case("size-modes-max-frequency", "budget", "a cut-off frequency that keeps all 600 modes",
+     scene(bridge=BEAM + "  elements_per_span: 300\n  modes: @@{max_frequency: 1.0e12}\n",
+           extra="solver: {time_step: 1.0e-3}\n"), "limits.modes")
 case("size-steps-2e7", "budget", "2e7 time steps (> 20 s)",
      scene(extra="solver: {time_step: @@4.5e-8}\n"), "limits.steps")
 case("size-steps-1.8e8", "budget", "1.8e8 steps (a history preallocated for all of them)",
