@@ -15,6 +15,10 @@ use vbi::scenario::{self, LoadError};
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Lift the resource limits (DOFs, steps, wheels, records, study points,
+    /// output size) for a scene that really needs more; see `limits` in the format.
+    #[arg(long, global = true)]
+    allow_large: bool,
 }
 
 #[derive(Debug, Subcommand)]
@@ -72,21 +76,25 @@ const EXIT_INVALID: u8 = 2;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let options = scenario::LoadOptions {
+        allow_large: cli.allow_large,
+    };
+    let load = |file: &Path| scenario::load_file_with(file, options);
     match cli.command {
-        Command::Run { file, out, quiet } => run(&file, out, quiet),
-        Command::Check { files } => check(&files),
+        Command::Run { file, out, quiet } => run(load(&file), &file, out, quiet),
+        Command::Check { files } => check(&files, &load),
         Command::Schema => {
             print!("{}", vbi::schema::schema_json());
             ExitCode::SUCCESS
         }
-        Command::Modes { file, shapes } => modes(&file, shapes.as_deref()),
+        Command::Modes { file, shapes } => modes(load(&file), shapes.as_deref()),
         Command::Converge {
             file,
             tolerance,
             levels,
             out,
             quiet,
-        } => converge(&file, tolerance, levels as usize, out, quiet),
+        } => converge(load(&file), &file, tolerance, levels as usize, out, quiet),
     }
 }
 
@@ -98,13 +106,18 @@ fn load_error(e: &LoadError) -> ExitCode {
     }
 }
 
-fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
-    let loaded = match scenario::load_file(file) {
+fn run(
+    loaded: Result<scenario::Loaded, LoadError>,
+    file: &Path,
+    out: Option<PathBuf>,
+    quiet: bool,
+) -> ExitCode {
+    let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
     let scenario = loaded.scenario.clone();
-    let out = out.unwrap_or_else(|| Path::new("results").join(&scenario.name));
+    let out = out.unwrap_or_else(|| vbi::run::default_out(&scenario.name, ""));
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
@@ -201,10 +214,13 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-fn check(files: &[PathBuf]) -> ExitCode {
+fn check(
+    files: &[PathBuf],
+    load: &dyn Fn(&Path) -> Result<scenario::Loaded, LoadError>,
+) -> ExitCode {
     let mut invalid = false;
     for file in files {
-        match scenario::load_file(file) {
+        match load(file) {
             Ok(_) => println!("{}: ok", file.display()),
             Err(e) => {
                 invalid = true;
@@ -219,8 +235,8 @@ fn check(files: &[PathBuf]) -> ExitCode {
     }
 }
 
-fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
-    let loaded = match scenario::load_file(file) {
+fn modes(loaded: Result<scenario::Loaded, LoadError>, shapes: Option<&Path>) -> ExitCode {
+    let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
@@ -282,6 +298,7 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
 }
 
 fn converge(
+    loaded: Result<scenario::Loaded, LoadError>,
     file: &Path,
     tolerance: f64,
     levels: usize,
@@ -289,12 +306,12 @@ fn converge(
     quiet: bool,
 ) -> ExitCode {
     use vbi::study::converge::{self as study, ConvergeError, Options};
-    let loaded = match scenario::load_file(file) {
+    let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
     let name = loaded.scenario.name.clone();
-    let out = out.unwrap_or_else(|| Path::new("results").join(format!("{name}-converge")));
+    let out = out.unwrap_or_else(|| vbi::run::default_out(&name, "-converge"));
     if loaded.scenario.study.is_some() && !quiet {
         eprintln!(
             "note: {}: the study section is ignored; converging the base scene",

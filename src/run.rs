@@ -1,6 +1,6 @@
 //! One scene end to end: build → solve → record → report.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use thiserror::Error;
@@ -140,12 +140,25 @@ pub fn write_speed_sweep(
     speed_sweep::write(out, scenario, results)
 }
 
-/// Creates the output folder.
+/// The default output folder of a scene: `results/` and its `name` made
+/// safe as one folder name ([`crate::scenario::names::folder_name`]: no
+/// separators, no `..`, not absolute, no control characters), then
+/// `suffix`. A name from someone else's file therefore cannot put results
+/// anywhere but under `results/`.
+pub fn default_out(name: &str, suffix: &str) -> PathBuf {
+    let folder = crate::scenario::names::folder_name(name);
+    Path::new("results").join(format!("{folder}{suffix}"))
+}
+
+/// Creates the output folder and removes the partial files a run killed
+/// from outside left there ([`report::PARTIAL_MARK`] in the name, written by
+/// another process id that is no longer running here).
 pub(crate) fn create_out(out: &Path) -> Result<(), RunError> {
     std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
         path: out.to_path_buf(),
         source,
     })?;
+    report::remove_stale_partials(out);
     Ok(())
 }
 

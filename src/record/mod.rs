@@ -225,7 +225,11 @@ impl<'m> Recorder<'m> {
     /// Prepares the probes of `records` (already validated against the model).
     pub fn new(model: &'m Model, records: &[Record]) -> Result<Self, BridgeError> {
         let modes = model.bridge.mode_count();
-        let capacity = model.steps + 1;
+        // Preallocate at most a million samples per column: the step count
+        // comes from the input, and the budgets bound what a run may record,
+        // but a history larger than that grows as it is recorded rather than
+        // being reserved (and possibly refused by the allocator) up front.
+        let capacity = model.steps.saturating_add(1).min(1 << 20);
         let lead = PositionRef {
             vehicle: 0,
             offset: 0.0,

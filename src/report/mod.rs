@@ -26,6 +26,53 @@ pub enum ReportError {
     },
 }
 
+/// What marks a file being written: `summary.json.vbi-partial-1234` until
+/// it is complete and renamed. Visible (no leading dot) and recognisable,
+/// so a run killed from outside leaves nothing hidden, and the next run into
+/// the same folder removes it ([`remove_stale_partials`]).
+pub const PARTIAL_MARK: &str = ".vbi-partial-";
+
+/// The temporary name of `file_name` while this process writes it; `tag`
+/// tells apart several temporaries of one process.
+pub fn partial_name(file_name: &str, tag: &str) -> String {
+    format!("{file_name}{PARTIAL_MARK}{}{tag}", std::process::id())
+}
+
+/// Removes the partial files in `folder` that a process no longer running
+/// left behind (killed mid-write). A process that is still running (its
+/// `/proc` entry exists) keeps its files; where there is no `/proc`, only
+/// files older than an hour are removed. Best effort: errors are ignored.
+pub fn remove_stale_partials(folder: &Path) {
+    let Ok(entries) = fs::read_dir(folder) else {
+        return;
+    };
+    let me = std::process::id();
+    let proc_fs = Path::new("/proc/self").exists();
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let Some((_, after)) = name.rsplit_once(PARTIAL_MARK) else {
+            continue;
+        };
+        let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
+        let Ok(pid) = digits.parse::<u32>() else {
+            continue;
+        };
+        let stale = if proc_fs {
+            pid != me && !Path::new("/proc").join(pid.to_string()).exists()
+        } else {
+            entry
+                .metadata()
+                .and_then(|m| m.modified())
+                .ok()
+                .and_then(|t| t.elapsed().ok())
+                .is_some_and(|age| age.as_secs() > 3600)
+        };
+        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
+
 /// Writes `contents` to `path` atomically: a temporary file in the same
 /// folder, then a rename, so readers never see a partial file. (No fsync:
 /// it would cost more than the whole run of a small scene, and a crash
@@ -39,7 +86,7 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{file_name}.tmp{}", std::process::id()));
+    let tmp = path.with_file_name(partial_name(&file_name, ""));
     let result = (|| {
         let mut file = fs::File::create(&tmp)?;
         file.write_all(contents)?;
@@ -60,7 +107,15 @@ pub fn history_csv(history: &History) -> Vec<u8> {
         .iter()
         .map(|c| 1 + usize::from(c.static_values.is_some()))
         .sum::<usize>();
-    let mut out = csv::Writer::from_writer(Vec::with_capacity(history.time.len() * width * 20));
+    let mut out = csv::Writer::from_writer(Vec::with_capacity(
+        // An estimate, capped: the buffer grows if it needs more.
+        history
+            .time
+            .len()
+            .saturating_mul(width)
+            .saturating_mul(20)
+            .min(1 << 26),
+    ));
     let mut header = vec!["time".to_string()];
     for c in &history.columns {
         header.push(c.name.clone());

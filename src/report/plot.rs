@@ -9,7 +9,6 @@
 //! non-positive values on a logarithmic axis. No function here panics on bad data:
 //! inconsistent inputs give [`PlotError::InvalidInput`].
 
-use std::ffi::OsString;
 use std::fs::{self, File};
 use std::io::Write;
 use std::ops::Range;
@@ -321,13 +320,10 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
     let file_name = path.file_name().ok_or_else(|| {
         PlotError::InvalidInput(format!("output path '{}' has no file name", path.display()))
     })?;
-    let mut tmp_name = OsString::from(".");
-    tmp_name.push(file_name);
-    tmp_name.push(format!(
-        ".{}-{}.tmp",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
+    let tmp_name = crate::report::partial_name(
+        &file_name.to_string_lossy(),
+        &format!("-{}", COUNTER.fetch_add(1, Ordering::Relaxed)),
+    );
     let tmp = path.with_file_name(tmp_name);
     let io_err = |source| PlotError::Io {
         path: path.to_path_buf(),

@@ -210,21 +210,26 @@ fn resolve_plate(p: &raw::PlateRaw, ck: &mut Checker<'_>) -> Plate {
             "at least one transverse term is needed",
         );
     }
-    if terms.longitudinal * terms.transverse > MAX_RITZ_TERMS {
+    // Saturating: term counts near usize::MAX must not wrap to a small basis.
+    if terms.longitudinal.saturating_mul(terms.transverse) > MAX_RITZ_TERMS {
         ck.error(
             "bridge.terms",
             format!(
                 "{} × {} = {} Ritz terms is more than the dense eigen solver takes ({MAX_RITZ_TERMS})",
                 terms.longitudinal,
                 terms.transverse,
-                terms.longitudinal * terms.transverse
+                terms.longitudinal.saturating_mul(terms.transverse)
             ),
         );
     }
     let elements_per_span = elements(ck, p.elements_per_span, p.spans.len());
     // The continuous beam offers one mode per free dof: 2 per node less the
     // deflections fixed at the spans + 1 supports.
-    let beam_modes = 2 * elements_per_span * spans + 1 - spans;
+    let beam_modes = elements_per_span
+        .saturating_mul(spans)
+        .saturating_mul(2)
+        .saturating_add(1)
+        .saturating_sub(spans);
     if terms.longitudinal > beam_modes {
         ck.error(
             "bridge.terms.longitudinal",

@@ -65,7 +65,20 @@ pub(super) fn derive_dimensionless(
         );
         super::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
         let mut derived = groups.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
-        super::resolve::check_speed(ck, &at, derived.speed);
+        // The derived speed is blamed on the ratio that gives it.
+        if derived.speed > super::resolve::MAX_SPEED {
+            ck.error(
+                &dpath("velocity_ratio"),
+                format!(
+                    "a velocity ratio of {} gives a speed of {:.4e} m/s (2 × ratio × f1 × L, \
+                     f1 = {f1:.4} Hz, L = {} m), above {} m/s",
+                    groups.velocity_ratio,
+                    derived.speed,
+                    modal.length,
+                    super::resolve::MAX_SPEED
+                ),
+            );
+        }
         agree(
             ck,
             &format!("{at}.sprung_mass"),

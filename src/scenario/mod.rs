@@ -7,12 +7,15 @@
 //! [`resolved::Scenario`].
 
 pub mod bridges;
+pub mod budget;
 pub mod content;
 #[allow(missing_docs)]
 pub mod de;
 pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
+pub mod names;
+mod plausible;
 pub mod raw;
 mod records;
 pub mod resolve;
@@ -28,6 +31,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
+pub use self::budget::LoadOptions;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 use self::resolved::Scenario;
@@ -60,29 +64,87 @@ pub enum LoadError {
     Invalid(Vec<Diagnostic>),
 }
 
+/// Most diagnostics printed for one file; the rest are counted.
+pub const MAX_SHOWN: usize = 50;
+
+/// Most passes of the type checker over one file: each pass reports one
+/// type error and removes the offending entry, so a file with thousands of
+/// them stays fast (each pass is linear in the file).
+const MAX_TYPE_PASSES: usize = 100;
+
+/// Largest scenario file read, bytes: far above any real scene (the
+/// largest shipped one is a few kB), and small enough that parsing and
+/// diagnostics stay well under a second.
+pub const MAX_FILE_BYTES: u64 = 16 * 1024 * 1024;
+
 struct Diagnostics<'a>(&'a [Diagnostic]);
 
 impl fmt::Display for Diagnostics<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, d) in self.0.iter().enumerate() {
+        for (i, d) in self.0.iter().take(MAX_SHOWN).enumerate() {
             if i > 0 {
                 writeln!(f)?;
             }
             write!(f, "{d}")?;
         }
+        if self.0.len() > MAX_SHOWN {
+            let rest = self.0.len() - MAX_SHOWN;
+            let file = &self.0[0].file;
+            write!(
+                f,
+                "\n{file}: {rest} more error{} not shown ({} in all)",
+                if rest == 1 { "" } else { "s" },
+                self.0.len()
+            )?;
+        }
         Ok(())
     }
 }
 
-/// Reads and resolves a scenario file.
+/// Reads and resolves a scenario file with the default budgets.
 pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
-    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
+    load_file_with(path, LoadOptions::default())
+}
+
+/// Reads and resolves a scenario file.
+pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadError> {
+    let io = |source| LoadError::Io {
         path: path.to_path_buf(),
         source,
-    })?;
+    };
     let file = path.display().to_string();
+    // The size is checked before the file is read whole.
+    let size = std::fs::metadata(path).map_err(io)?.len();
+    if size > MAX_FILE_BYTES {
+        return Err(LoadError::Invalid(vec![Diagnostic::new(
+            &file,
+            "",
+            Location { line: 1, col: 1 },
+            format!(
+                "the file is {size} bytes; a scenario file may have at most {MAX_FILE_BYTES} bytes"
+            ),
+        )]));
+    }
+    // Read at most one byte past the limit: a device or a pipe (`/dev/zero`)
+    // reports no size but never ends.
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            std::io::Read::read_to_end(&mut std::io::Read::take(f, MAX_FILE_BYTES + 1), &mut bytes)
+        })
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(LoadError::Invalid(vec![Diagnostic::new(
+            &file,
+            "",
+            Location { line: 1, col: 1 },
+            format!(
+                "the input is longer than {MAX_FILE_BYTES} bytes, the most a scenario file may have"
+            ),
+        )]));
+    }
     match String::from_utf8(bytes) {
-        Ok(source) => load_str(&source, &file),
+        Ok(source) => load_str_with(&source, &file, options),
         Err(e) => Err(not_utf8(&file, e.as_bytes(), e.utf8_error().valid_up_to())),
     }
 }
@@ -109,8 +171,49 @@ fn not_utf8(file: &str, bytes: &[u8], valid_up_to: usize) -> LoadError {
     )])
 }
 
+/// The UTF-8 byte order mark some Windows editors write first.
+const BOM: char = '\u{FEFF}';
+
+/// Refuses characters YAML does not allow in a file and that would
+/// otherwise be misread: a NUL ends saphyr's input early (the rest of the
+/// file silently vanished into "missing field"), other C0 controls but tab
+/// and line breaks, DEL and the C1 controls are not printable (YAML 1.2,
+/// production c-printable).
+fn unprintable(source: &str, file: &str) -> Result<(), LoadError> {
+    let printable = |c: char| {
+        matches!(c, '\t' | '\n' | '\r' | BOM)
+            || !(c.is_control() || matches!(c, '\u{FFFE}' | '\u{FFFF}'))
+            || c == '\u{85}'
+    };
+    let Some((at, c)) = source.char_indices().find(|&(_, c)| !printable(c)) else {
+        return Ok(());
+    };
+    let before = &source[..at];
+    let line = 1 + before.matches('\n').count() + before.matches('\r').count()
+        - before.matches("\r\n").count();
+    let line_start = before.rfind(['\n', '\r']).map_or(0, |i| i + 1);
+    let col = before[line_start..].chars().count() + 1;
+    Err(LoadError::Invalid(vec![Diagnostic::new(
+        file,
+        source,
+        Location { line, col },
+        format!(
+            "the file contains the control character U+{:04X}, which YAML does not allow; \
+             remove it (was the file saved as text?)",
+            c as u32
+        ),
+    )]))
+}
+
 /// Parses a scenario's text into its raw form; `file` labels diagnostics.
+///
+/// Every type error (unknown key, wrong type, missing field) in the file is
+/// reported, not only the first: after each one the offending entry is
+/// removed from the tree and the deserialisation is repeated, and the
+/// "missing field" that a removal causes in its parent is not reported.
 pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), LoadError> {
+    let source = source.strip_prefix(BOM).unwrap_or(source);
+    unprintable(source, file)?;
     let invalid = |loc: Location, message: String| {
         LoadError::Invalid(vec![Diagnostic::new(file, source, loc, message)])
     };
@@ -129,9 +232,82 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
         }
         Err(e) => return Err(invalid(e.loc, format!("YAML syntax error: {}", e.message))),
     };
-    match de::from_node::<ScenarioRaw>(&node) {
-        Ok(raw) => Ok((raw, node)),
-        Err(e) => Err(invalid(e.loc.unwrap_or(node.loc), plain_words(&e.message))),
+    let first = match de::from_node::<ScenarioRaw>(&node) {
+        Ok(raw) => return Ok((raw, node)),
+        Err(e) => e,
+    };
+    let lines = diagnostic::Lines::new(source);
+    let mut diagnostics: Vec<Diagnostic> = Vec::new();
+    let mut tree = node.clone();
+    // Mappings and sequences that lost an entry: a missing field there is a
+    // consequence of an error already reported.
+    let mut pruned: Vec<Location> = Vec::new();
+    let mut error = first;
+    for pass in 1.. {
+        let loc = error.loc.unwrap_or(tree.loc);
+        let consequence = pruned.contains(&loc)
+            && (error.message.starts_with("missing field")
+                || error.message.starts_with("missing `type`"));
+        let message = plain_words(&error.message);
+        let seen = diagnostics
+            .iter()
+            .any(|d| d.loc == loc && d.message == message);
+        if !consequence && !seen {
+            diagnostics.push(lines.diagnostic(file, loc, message));
+        }
+        if pass >= MAX_TYPE_PASSES {
+            diagnostics.push(lines.diagnostic(
+                file,
+                tree.loc,
+                format!("stopped after {pass} type errors; fix these and check again"),
+            ));
+            break;
+        }
+        if !prune(&mut tree, loc, &mut pruned) {
+            break;
+        }
+        match de::from_node::<ScenarioRaw>(&tree) {
+            Ok(_) => break,
+            Err(e) => error = e,
+        }
+    }
+    Err(LoadError::Invalid(diagnostics))
+}
+
+/// Removes the deepest mapping entry (by its key or value) or sequence item
+/// written at `loc`, noting its parent in `pruned`. `false` if only the root
+/// is there (nothing left to remove).
+fn prune(node: &mut yaml::Node, loc: Location, pruned: &mut Vec<Location>) -> bool {
+    use self::yaml::NodeKind;
+    let parent = node.loc;
+    match &mut node.kind {
+        NodeKind::Mapping(entries) => {
+            for i in 0..entries.len() {
+                if prune(&mut entries[i].1, loc, pruned) {
+                    return true;
+                }
+                if entries[i].0.loc == loc || entries[i].1.loc == loc {
+                    entries.remove(i);
+                    pruned.push(parent);
+                    return true;
+                }
+            }
+            false
+        }
+        NodeKind::Sequence(items) => {
+            for i in 0..items.len() {
+                if prune(&mut items[i], loc, pruned) {
+                    return true;
+                }
+                if items[i].loc == loc {
+                    items.remove(i);
+                    pruned.push(parent);
+                    return true;
+                }
+            }
+            false
+        }
+        NodeKind::Null | NodeKind::Scalar { .. } => false,
     }
 }
 
@@ -162,11 +338,18 @@ fn plain_words(message: &str) -> String {
     out
 }
 
-/// Parses and resolves a scenario from text; `file` labels diagnostics.
+/// Parses and resolves a scenario from text with the default budgets;
+/// `file` labels diagnostics.
 pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
+    load_str_with(source, file, LoadOptions::default())
+}
+
+/// Parses and resolves a scenario from text; `file` labels diagnostics.
+pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Loaded, LoadError> {
     let (raw, node) = parse_raw(source, file)?;
+    let source = source.strip_prefix(BOM).unwrap_or(source);
     let mut checker = resolve::Checker::new(file, source, &node);
-    match resolve::resolve(&raw, &mut checker) {
+    match resolve::resolve(&raw, &mut checker, options) {
         Some((scenario, bridge)) if checker.diagnostics.is_empty() => {
             Ok(Loaded { scenario, bridge })
         }

@@ -11,8 +11,10 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod limits;
 mod study;
 mod truck;
+pub use self::limits::*;
 pub use self::study::*;
 pub use self::truck::*;
 
@@ -55,6 +57,10 @@ pub struct ScenarioRaw {
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,
+    /// Resource budgets (DOFs, steps, wheels, records, study points, output
+    /// size). Defaults suit a workstation; raise one here when a scene needs it.
+    #[serde(default)]
+    pub limits: Option<LimitsRaw>,
 }
 
 /// The bridge model.

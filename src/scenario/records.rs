@@ -34,8 +34,11 @@ pub(super) fn resolve_records(
     };
     let length = bridge.length();
     let mut out = Vec::with_capacity(raws.len());
+    // Names seen so far: a set keeps duplicate detection linear.
+    let mut seen = std::collections::HashSet::new();
     for (i, r) in raws.iter().enumerate() {
         let at = format!("record[{i}]");
+        super::names::check_record_name(ck, &format!("{at}.name"), &r.name);
         if r.name.trim().is_empty() || r.name == "time" || r.name.ends_with("_static") {
             ck.error(
                 &format!("{at}.name"),
@@ -45,7 +48,7 @@ pub(super) fn resolve_records(
                 ),
             );
         }
-        if raws[..i].iter().any(|o| o.name == r.name) {
+        if !seen.insert(r.name.as_str()) {
             ck.error(
                 &format!("{at}.name"),
                 format!("duplicate record name `{}`", r.name),

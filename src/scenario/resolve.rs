@@ -5,11 +5,13 @@
 //! are reported together, like a compiler.
 
 use super::bridges::resolve_bridge;
+use super::budget::{self, Budget, Limits, LoadOptions};
 use super::content;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
 };
-use super::diagnostic::Diagnostic;
+use super::diagnostic::{Diagnostic, Lines};
+use super::plausible;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
 use super::resolved::*;
@@ -22,13 +24,11 @@ pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
 pub const DEFAULT_GRAVITY: f64 = 9.81;
 /// HHT α used by default with rigid unilateral contact.
 pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
-/// Largest number of time steps a run may take.
-pub const MAX_STEPS: f64 = 2.0e8;
 
 /// Collects diagnostics while resolving one file.
 pub(super) struct Checker<'a> {
     file: &'a str,
-    source: &'a str,
+    lines: Lines<'a>,
     root: &'a Node,
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -54,7 +54,7 @@ impl<'a> Checker<'a> {
     pub(super) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
         Self {
             file,
-            source,
+            lines: Lines::new(source),
             root,
             diagnostics: Vec::new(),
         }
@@ -67,14 +67,39 @@ impl<'a> Checker<'a> {
     /// Records an error at `path`.
     pub(super) fn error(&mut self, path: &str, message: impl Into<String>) {
         let loc = self.location(path);
-        self.diagnostics
-            .push(Diagnostic::new(self.file, self.source, loc, message));
+        let diagnostic = self.lines.diagnostic(self.file, loc, message);
+        self.diagnostics.push(diagnostic);
     }
 
     pub(super) fn positive(&mut self, path: &str, value: f64, what: &str) {
         if value <= 0.0 {
             self.error(path, format!("{what} must be positive, got {value}"));
         }
+    }
+
+    /// Whether the file writes the key at `path` (defaults are blamed on the
+    /// section that could set them instead).
+    pub(super) fn has(&self, path: &str) -> bool {
+        let segs = parse_path(path);
+        let (last, parent) = match segs.split_last() {
+            Some((PathSeg::Key(k), parent)) => (*k, parent),
+            _ => return false,
+        };
+        let mut node = self.root;
+        for seg in parent {
+            let next = match seg {
+                PathSeg::Key(k) => node.get(k),
+                PathSeg::Index(i) => match &node.kind {
+                    super::yaml::NodeKind::Sequence(items) => items.get(*i),
+                    _ => None,
+                },
+            };
+            match next {
+                Some(n) => node = n,
+                None => return false,
+            }
+        }
+        node.get(last).is_some()
     }
 
     pub(super) fn non_negative(&mut self, path: &str, value: f64, what: &str) {
@@ -87,14 +112,34 @@ impl<'a> Checker<'a> {
 /// Resolves a parsed scenario. Returns the scenario with every default filled
 /// in and the modal bridge built on the way (mode selection and the default
 /// time step depend on the natural frequencies).
-pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenario, ModalBridge)> {
-    if raw.name.trim().is_empty() {
-        ck.error("name", "`name` must not be empty");
+pub(super) fn resolve(
+    raw: &ScenarioRaw,
+    ck: &mut Checker<'_>,
+    options: LoadOptions,
+) -> Option<(Scenario, ModalBridge)> {
+    super::names::check_name(ck, &raw.name);
+    let limits = Limits::resolve(raw.limits.as_ref(), ck);
+    let budget = Budget::new(limits, options);
+    // Counts read straight from the file come first: a file with 10⁵ axles
+    // or records is refused before anything is done per axle or record.
+    if !budget.counts(raw, ck) {
+        return None;
     }
     let gravity = raw.gravity.unwrap_or(DEFAULT_GRAVITY);
     ck.positive("gravity", gravity, "gravity");
+    plausible::within(
+        ck,
+        "gravity",
+        "a gravitational acceleration",
+        gravity,
+        plausible::GRAVITY,
+        "m/s²",
+    );
 
     let bridge = resolve_bridge(&raw.bridge, ck);
+    if let Some(bridge) = &bridge {
+        plausible::check_bridge(ck, bridge);
+    }
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
@@ -147,9 +192,13 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         ck.positive("solver.time_step", dt, "time step");
     }
 
-    // The bridge is built only from a valid description.
+    // The bridge is built only from a valid description, and only if its
+    // eigenproblem fits the budget: the dense solve is O(n³).
     let (mut bridge, mut vehicles) = (bridge?, vehicles?);
     if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    if !budget.model(&bridge, &surface, ck) {
         return None;
     }
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
@@ -176,6 +225,20 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    // Derived values too: dimensionless oscillators, ratio-given contacts.
+    for (i, vehicle) in vehicles.iter().enumerate() {
+        let at = format!("vehicles[{i}]");
+        let entry_field = if ck.has(&format!("{at}.start_position")) {
+            "start_position"
+        } else {
+            "entry_time"
+        };
+        plausible::check_vehicle(ck, &at, entry_field, vehicle);
+    }
+    plausible::check_contact(ck, &contact);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
     let study = resolve_study(
         raw.study.as_ref(),
         &bridge,
@@ -184,6 +247,18 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         &surface,
         ck,
     );
+    let points = study
+        .as_ref()
+        .map_or(1.0, |s| super::sweep::study_points(s, &surface));
+    if study.is_some() && !budget.check(ck, "study", "study_points", "runs of the study", points) {
+        return None;
+    }
+    if let Some(study) = &study {
+        super::plausible::check_study(ck, study, &vehicles, &contact, &modal, &bridge);
+    }
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
     // A speed sweep runs the scene at every speed of its grid: the automatic
     // choices must serve its fastest run.
     let excitations = match &study {
@@ -214,6 +289,16 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         );
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
+    // The modes kept, however chosen (a high `max_frequency` keeps many).
+    let modes_path = if ck.has("bridge.modes") {
+        "bridge.modes"
+    } else {
+        "bridge"
+    };
+    let kept = modal.mode_count() as f64;
+    if !budget.check(ck, modes_path, "modes", "bridge modes kept", kept) {
+        return None;
+    }
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -237,7 +322,17 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
             .fold(0.0, f64::max);
         last_exit + free_vibration
     };
-    let (shortest_run, longest_run) = (duration(&fast), duration(&slow));
+    let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
+    // A separation map's slowest point (its smallest velocity ratio) runs
+    // longest: v = 2 α f₁ L.
+    if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
+        (&study, modal.frequencies().first(), vehicles.as_slice())
+    {
+        let slowest = 2.0 * velocity_ratio.from.min(velocity_ratio.to) * f1 * length;
+        if slowest > 0.0 {
+            longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
+        }
+    }
     let steps = shortest_run / time_step;
     if steps < 10.0 {
         ck.error(
@@ -249,10 +344,17 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         );
     }
     let steps = longest_run / time_step;
-    if steps > MAX_STEPS {
-        ck.error(
-            "solver.time_step",
-            format!("the run would take {steps:.3e} steps (more than {MAX_STEPS:.0e}); use a larger time step"),
+    let steps_path = budget::steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
+    let what = format!(
+        "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
+    );
+    if budget.check(ck, &steps_path, "steps", &what, steps) && points > 1.0 {
+        budget.check(
+            ck,
+            "study",
+            "study_steps",
+            &format!("time steps over the study's {points} runs"),
+            steps * points,
         );
     }
 
@@ -261,6 +363,44 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
     let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, &contact, ck);
     if !ck.diagnostics.is_empty() {
         return None;
+    }
+    // The records as resolved, defaults included (a contact force per
+    // wheel), so that `resolved.yaml` passes the same budget.
+    if raw.record.is_none() {
+        budget.check(
+            ck,
+            "vehicles",
+            "records",
+            "recorded quantities (the default: each span's middle and each wheel's contact force)",
+            record.len() as f64,
+        );
+    }
+    if study.is_none() {
+        let columns: f64 = record
+            .iter()
+            .map(|r| {
+                if r.quantity == Quantity::BridgeDisplacement {
+                    2.0
+                } else {
+                    1.0
+                }
+            })
+            .sum();
+        let path = if raw.record.is_some() {
+            "record"
+        } else {
+            steps_path.as_str()
+        };
+        budget.check(
+            ck,
+            path,
+            "output_bytes",
+            "bytes of history.csv (estimated)",
+            budget::history_bytes(steps, columns),
+        );
+        if !ck.diagnostics.is_empty() {
+            return None;
+        }
     }
     let scenario = Scenario {
         name: raw.name.clone(),
@@ -279,6 +419,7 @@ pub(super) fn resolve(raw: &ScenarioRaw, ck: &mut Checker<'_>) -> Option<(Scenar
         },
         record,
         study,
+        limits,
     };
     Some((scenario, modal))
 }

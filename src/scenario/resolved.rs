@@ -8,6 +8,7 @@ use serde::Serialize;
 
 mod study;
 pub use self::study::*;
+pub use super::budget::Limits;
 
 pub use super::raw::{
     GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, RoughnessClassRaw as RoughnessClass,
@@ -39,6 +40,9 @@ pub struct Scenario {
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
+    /// Resource budgets; written only when the file raised one.
+    #[serde(skip_serializing_if = "Limits::is_default")]
+    pub limits: Limits,
 }
 
 /// Dimensionless groups of an oscillator (see the raw format).

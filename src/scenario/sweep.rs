@@ -10,8 +10,6 @@ use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS};
 
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
-/// Most runs a sweep may ask for (speeds × surfaces × samples).
-pub const MAX_POINTS: usize = 100_000;
 
 /// `vehicles` with every speed set to `speed` (m/s); entry times are kept.
 pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
@@ -188,8 +186,10 @@ pub(super) fn resolve(
                 "`roughness` needs at least one surface (or leave it out to sweep the scene's own)",
             );
         }
+        // A set of the names seen keeps this linear in the list's length.
+        let mut seen = std::collections::HashSet::new();
         for (i, entry) in list.iter().enumerate() {
-            if list[..i].contains(entry) {
+            if !seen.insert(*entry) {
                 ck.error(
                     &format!("study.roughness[{i}]"),
                     format!("`{}` is listed twice", entry.name()),
@@ -212,17 +212,8 @@ pub(super) fn resolve(
             ),
         );
     }
-    let runs_per_speed: usize = entries
-        .iter()
-        .map(|&e| if is_random(surface, e) { samples } else { 1 })
-        .sum();
-    let points = runs_per_speed.saturating_mul(grid.count);
-    if points > MAX_POINTS {
-        ck.error(
-            "study",
-            format!("the sweep would take {points} runs, more than {MAX_POINTS}"),
-        );
-    }
+    // The number of runs is checked against `limits.study_points` once the
+    // study is resolved (see `study_points`).
     let spans = bridge.spans();
     let longest = spans
         .iter()
@@ -264,5 +255,34 @@ pub(super) fn resolve(
         samples,
         span,
         girder,
+    }
+}
+
+/// Runs a study makes: speeds × (samples per random surface, one per
+/// deterministic one) for a sweep, the grid's points for a separation map.
+/// In `f64`, so no count can wrap.
+pub fn study_points(study: &Study, base: &Surface) -> f64 {
+    match study {
+        Study::SpeedSweep(sweep) => {
+            let entries: Vec<Option<SweepRoughness>> = match &sweep.roughness {
+                None => vec![None],
+                Some(list) => list.iter().copied().map(Some).collect(),
+            };
+            let per_speed: f64 = entries
+                .iter()
+                .map(|&e| {
+                    if is_random(base, e) {
+                        sweep.samples as f64
+                    } else {
+                        1.0
+                    }
+                })
+                .sum();
+            per_speed * sweep.speeds.count as f64
+        }
+        Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        } => velocity_ratio.count as f64 * mass_ratio.count as f64,
     }
 }

@@ -439,7 +439,11 @@ impl Builder<'_> {
                 | Event::MappingStart(_, Some(_))
         );
         if tagged {
-            return Err(err(loc, "YAML tags are not supported"));
+            // saphyr marks the node after its tag; point at the tag itself.
+            return Err(err(
+                tag_start(self.source, loc),
+                "YAML tags are not supported",
+            ));
         }
         match ev {
             Event::DocumentStart(_) => {
@@ -526,12 +530,18 @@ pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
             Ok((ev, span)) => builder.event(ev, &span)?,
             Err(e) => {
                 let loc = Location::from_marker(e.marker());
-                return Err(err(loc, builder.scan_error_message(e.info())));
+                let (loc, hint) = relocate(source, loc, e.info());
+                let mut message = builder.scan_error_message(e.info());
+                message.push_str(hint);
+                return Err(err(loc, message));
             }
         }
     }
     Ok(builder.root.map(|b| b.node))
 }
+
+mod relocate;
+use relocate::{relocate, tag_start};
 
 #[cfg(test)]
 mod tests;

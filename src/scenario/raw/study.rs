@@ -98,7 +98,7 @@ pub struct SpeedSweepRaw {
 }
 
 /// One surface of a speed sweep.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum SweepRoughnessRaw {
     /// Perfectly smooth surface.

@@ -43,11 +43,16 @@ impl SpeedSweep {
     }
 
     /// Slowest and fastest speed, m/s.
+    ///
+    /// From the grid's ends, without listing its values: the speeds are
+    /// evenly spaced, so the ends bound them (and a count from the input is
+    /// never allocated here).
     pub fn speed_range(&self) -> (f64, f64) {
-        self.speed_values()
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
-                (lo.min(v), hi.max(v))
-            })
+        let (from, to) = (self.speeds.from, self.speeds.to);
+        if self.speeds.count <= 1 {
+            (from, from)
+        } else {
+            (from.min(to), from.max(to))
+        }
     }
 }

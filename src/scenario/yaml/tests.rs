@@ -128,11 +128,14 @@ fn unsupported_features() {
     let e = syntax_err("a: 1\n? [x]\n: 2\n");
     assert_eq!(e.loc, at(2, 3));
     assert!(e.message.contains("keys must be scalars"), "{}", e.message);
+    // The tag itself is blamed, not the node after it (issue 10: a custom
+    // tag was reported past the tag).
     let e = syntax_err("a: !foo x\n");
     assert_eq!(
         (e.loc, e.message.as_str()),
-        (at(1, 9), "YAML tags are not supported")
+        (at(1, 4), "YAML tags are not supported")
     );
+    assert_eq!(syntax_err("a:\n  b: !!str [1]\n").loc, at(2, 6));
     let e = syntax_err("a: !!str 1\n");
     assert_eq!(e.message, "YAML tags are not supported");
     let e = syntax_err("- !!map {a: 1}\n");
@@ -311,4 +314,21 @@ fn fuzz_truncated_documents_never_panic() {
         let _ = parse(&src[..i]);
         let _ = parse(&src[i..]);
     }
+}
+
+/// Issue 10: mistakes saphyr notices one line late are blamed on their line.
+#[test]
+fn late_scanner_errors_are_moved_to_their_cause() {
+    // A key without a colon.
+    let e = syntax_err("name: x\nbridge:\n  type: beam\n  spans [25.0]\n  mass: 1\n");
+    assert_eq!(e.loc, at(4, 3), "{}", e.message);
+    assert!(e.message.contains("no `:`"), "{}", e.message);
+    // A colon without a space.
+    let e = syntax_err("name: x\nbridge:\n  type: beam\n  spans:[25.0]\n  mass: 1\n");
+    assert_eq!(e.loc, at(4, 3), "{}", e.message);
+    assert!(e.message.contains("space after it"), "{}", e.message);
+    // A tab-indented line after a plain scalar.
+    let e = syntax_err("name: x\nbridge:\n  type: beam\n\tspans: [25.0]\n");
+    assert_eq!(e.loc, at(4, 1), "{}", e.message);
+    assert!(e.message.contains("tabs"), "{}", e.message);
 }

@@ -1,0 +1,360 @@
+//! Resource budgets: every size a run's time or memory grows with is
+//! estimated while checking and compared with a limit before any work
+//! starts, so that a hostile or mistyped file is refused in milliseconds
+//! instead of exhausting the machine.
+//!
+//! The limits default to what a workstation does in minutes; a scene raises
+//! one in its `limits` section, and `--allow-large` lifts them all. Every
+//! estimate is computed in `f64` or with checked integer arithmetic, so no
+//! user-given size can wrap around.
+
+use serde::Serialize;
+
+use super::raw::{self, LimitsRaw};
+use super::resolve::Checker;
+use super::resolved::{Bridge, Surface, Vehicle};
+
+/// How a scene is loaded: whether its budgets are enforced.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LoadOptions {
+    /// Lift every resource limit (`--allow-large`); sizes are still checked
+    /// for overflow.
+    pub allow_large: bool,
+}
+
+/// The resolved `limits` section: each bound with its default filled in.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Limits {
+    /// Degrees of freedom of the bridge's eigenproblem.
+    pub dofs: f64,
+    /// Bridge modes kept.
+    pub modes: f64,
+    /// Time steps of one run.
+    pub steps: f64,
+    /// Time steps over all runs of a study.
+    pub study_steps: f64,
+    /// Wheels over all vehicles.
+    pub wheels: f64,
+    /// Recorded quantities.
+    pub records: f64,
+    /// Runs of a study.
+    pub study_points: f64,
+    /// Terms of a random road's series.
+    pub road_terms: f64,
+    /// Bytes of results written (estimate), bytes.
+    pub output_bytes: f64,
+}
+
+impl Default for Limits {
+    /// Sized for a workstation: a 2000-DOF dense eigen solve takes a few
+    /// seconds; 1e7 steps of a small model take about a minute; 2e9 bytes
+    /// of CSV fit any disk and editor-free pipeline.
+    fn default() -> Self {
+        Limits {
+            dofs: 2000.0,
+            modes: 500.0,
+            steps: 1e7,
+            study_steps: 2e8,
+            wheels: 500.0,
+            records: 500.0,
+            study_points: 10_000.0,
+            road_terms: 20_000.0,
+            output_bytes: 2e9,
+        }
+    }
+}
+
+/// Sizes beyond this are refused even with `--allow-large`: they cannot be
+/// counted in memory (a `usize` index) on any machine.
+const ABSOLUTE: f64 = 1e15;
+
+impl Limits {
+    /// Whether every limit is the default (the resolved scene then omits the
+    /// section).
+    pub fn is_default(&self) -> bool {
+        *self == Limits::default()
+    }
+
+    /// Fills the defaults of the file's `limits` section and checks each
+    /// given value is a positive whole number.
+    pub(super) fn resolve(raw: Option<&LimitsRaw>, ck: &mut Checker<'_>) -> Limits {
+        let d = Limits::default();
+        let Some(raw) = raw else { return d };
+        let mut pick = |key: &str, given: Option<f64>, default: f64| match given {
+            None => default,
+            Some(v) if (1.0..=ABSOLUTE).contains(&v) && v.fract() == 0.0 => v,
+            Some(v) => {
+                ck.error(
+                    &format!("limits.{key}"),
+                    format!("a limit must be a whole number from 1 to {ABSOLUTE:e}, got {v}"),
+                );
+                default
+            }
+        };
+        Limits {
+            dofs: pick("dofs", raw.dofs, d.dofs),
+            modes: pick("modes", raw.modes, d.modes),
+            steps: pick("steps", raw.steps, d.steps),
+            study_steps: pick("study_steps", raw.study_steps, d.study_steps),
+            wheels: pick("wheels", raw.wheels, d.wheels),
+            records: pick("records", raw.records, d.records),
+            study_points: pick("study_points", raw.study_points, d.study_points),
+            road_terms: pick("road_terms", raw.road_terms, d.road_terms),
+            output_bytes: pick("output_bytes", raw.output_bytes, d.output_bytes),
+        }
+    }
+}
+
+/// Compares estimates with the limits and reports at the input that drives
+/// each one.
+pub(super) struct Budget {
+    limits: Limits,
+    allow_large: bool,
+}
+
+impl Budget {
+    pub(super) fn new(limits: Limits, options: LoadOptions) -> Self {
+        Budget {
+            limits,
+            allow_large: options.allow_large,
+        }
+    }
+
+    /// Checks `asked` against the limit `key`; `what` names the quantity and
+    /// `path` is where the input that drives it is written. Returns whether
+    /// it fits.
+    pub(super) fn check(
+        &self,
+        ck: &mut Checker<'_>,
+        path: &str,
+        key: &str,
+        what: &str,
+        asked: f64,
+    ) -> bool {
+        let limit = self.limit(key);
+        let fits = |bound: f64| asked.is_finite() && asked <= bound;
+        if self.allow_large {
+            if fits(ABSOLUTE) {
+                return true;
+            }
+            ck.error(
+                path,
+                format!(
+                    "{what}: {} is more than any machine can hold ({ABSOLUTE:e}), even with `--allow-large`",
+                    count(asked)
+                ),
+            );
+            return false;
+        }
+        if fits(limit) {
+            return true;
+        }
+        ck.error(
+            path,
+            format!(
+                "{what}: {} is more than the limit of {} (`limits.{key}`); raise it in the file \
+                 (`limits: {{{key}: {}}}`) or run with `--allow-large`",
+                count(asked),
+                count(limit),
+                count(suggest(asked))
+            ),
+        );
+        false
+    }
+
+    /// The counts read straight from the file: wheels and records. Returns
+    /// whether they fit.
+    pub(super) fn counts(&self, raw: &raw::ScenarioRaw, ck: &mut Checker<'_>) -> bool {
+        let wheels_fit = self.check(
+            ck,
+            "vehicles",
+            "wheels",
+            "wheels over all vehicles",
+            raw_wheels(&raw.vehicles),
+        );
+        let records = raw.record.as_ref().map_or(0, Vec::len) as f64;
+        let records_fit = self.check(ck, "record", "records", "recorded quantities", records);
+        wheels_fit && records_fit
+    }
+
+    /// What building the model costs: the bridge's eigenproblem, its modes
+    /// and a random road's series. Checked before the eigen solve, which is
+    /// O(n³). Returns whether they fit.
+    pub(super) fn model(&self, bridge: &Bridge, surface: &Surface, ck: &mut Checker<'_>) -> bool {
+        let (dofs_path, dofs_what) = match bridge {
+            Bridge::Plate(_) if ck.has("bridge.terms") => (
+                "bridge.terms",
+                "degrees of freedom of the plate's eigenproblem (a Ritz term counts 1.5, a transverse function 2.5)",
+            ),
+            _ => (
+                "bridge.elements_per_span",
+                "degrees of freedom of the bridge's eigenproblem",
+            ),
+        };
+        let mut fits = self.check(ck, dofs_path, "dofs", dofs_what, bridge_dofs(bridge));
+        if let Some(count) = bridge.modes().count {
+            fits &= self.check(
+                ck,
+                "bridge.modes.count",
+                "modes",
+                "bridge modes",
+                count as f64,
+            );
+        }
+        if let Surface::Random { terms, .. } = surface {
+            let path = if ck.has("surface.terms") {
+                "surface.terms"
+            } else {
+                "surface.sampling_length"
+            };
+            fits &= self.check(
+                ck,
+                path,
+                "road_terms",
+                "terms of the random road's series",
+                *terms as f64,
+            );
+        }
+        fits
+    }
+
+    fn limit(&self, key: &str) -> f64 {
+        let l = &self.limits;
+        match key {
+            "dofs" => l.dofs,
+            "modes" => l.modes,
+            "steps" => l.steps,
+            "study_steps" => l.study_steps,
+            "wheels" => l.wheels,
+            "records" => l.records,
+            "study_points" => l.study_points,
+            "road_terms" => l.road_terms,
+            _ => l.output_bytes,
+        }
+    }
+}
+
+/// A round number at or above `asked` to suggest as the new limit.
+fn suggest(asked: f64) -> f64 {
+    if !asked.is_finite() || asked <= 1.0 {
+        return asked.max(1.0);
+    }
+    let scale = 10f64.powf(asked.log10().floor());
+    (asked / scale).ceil() * scale
+}
+
+/// A count as a whole number while short, else in scientific notation.
+fn count(x: f64) -> String {
+    if x.is_finite() && x.abs() < 1e7 {
+        format!("{}", x.ceil())
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
+/// Wheels over the raw vehicles (axle loads, one per oscillator, four per
+/// truck), counted before anything is resolved.
+pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
+    vehicles
+        .iter()
+        .map(|v| match v {
+            raw::VehicleRaw::MovingForce(m) => m.loads.len().max(1) as f64,
+            raw::VehicleRaw::Oscillator(_) => 1.0,
+            raw::VehicleRaw::H20Truck(_) => 4.0,
+        })
+        .sum()
+}
+
+/// Degrees of freedom of the bridge's eigenproblems, as the cost of
+/// building and solving them: the beam's free DOFs (two per node less one
+/// deflection per support); for a plate the largest of the continuous
+/// beam that gives its longitudinal functions, its Ritz basis counted 1.5
+/// per term, and its transverse functions counted 2.5 each. The weights
+/// make equal counts cost about the same time: measured on this project's
+/// 2-core machine, a 2000-DOF beam checks in 5 s, a 2000-term plate Ritz
+/// basis in 15 s (its matrices are integrated term by term) and 1000
+/// transverse functions in 6 s (their integrals grow as the cube of the
+/// count). In `f64`, so no element or term count can wrap.
+pub fn bridge_dofs(bridge: &Bridge) -> f64 {
+    let beam = |spans: usize, elements: usize| {
+        let spans = spans as f64;
+        2.0 * (spans * elements as f64 + 1.0) - (spans + 1.0)
+    };
+    match bridge {
+        Bridge::Beam(b) => beam(b.spans.len(), b.elements_per_span),
+        Bridge::Plate(p) => {
+            let ritz = p.terms.longitudinal as f64 * p.terms.transverse as f64;
+            (1.5 * ritz)
+                .max(2.5 * p.terms.transverse as f64)
+                .max(beam(p.spans.len(), p.elements_per_span))
+        }
+    }
+}
+
+/// Where to blame a run with too many steps: the entry time (or start
+/// position) of a vehicle that waits most of the run, a free vibration that
+/// is most of it, else the time step if the file gives one, else the
+/// vehicle whose crossing is longest (its slow speed makes the run long).
+pub(super) fn steps_cause(
+    raw: &raw::ScenarioRaw,
+    slow: &[Vehicle],
+    solver: &raw::SolverRaw,
+    duration: f64,
+    free_vibration: f64,
+) -> String {
+    let latest = slow
+        .iter()
+        .enumerate()
+        .map(|(i, v)| (i, v.entry_time()))
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    if latest.1 > 0.5 * duration {
+        let i = latest.0;
+        let field = match raw.vehicles.get(i) {
+            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
+            _ => "entry_time",
+        };
+        return format!("vehicles[{i}].{field}");
+    }
+    if free_vibration > 0.5 * duration {
+        return "solver.free_vibration".into();
+    }
+    if solver.time_step.is_some() {
+        return "solver.time_step".into();
+    }
+    let slowest = slow
+        .iter()
+        .enumerate()
+        .fold((0, f64::INFINITY), |a, (i, v)| {
+            if v.speed() < a.1 { (i, v.speed()) } else { a }
+        });
+    format!("vehicles[{}].speed", slowest.0)
+}
+
+/// Bytes of `history.csv`: one row per step, a time column and one column
+/// per record (two for a bridge displacement, which also gets its static
+/// part), each at most 24 characters (ryu's longest f64 and a separator).
+pub(super) fn history_bytes(steps: f64, columns: f64) -> f64 {
+    (steps + 1.0) * (columns + 1.0) * 24.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suggestions_are_round_and_not_below_the_request() {
+        assert_eq!(suggest(3.2e7), 4e7);
+        assert_eq!(suggest(2001.0), 3000.0);
+        assert_eq!(suggest(1e9), 1e9);
+        assert!(suggest(123_456.0) >= 123_456.0);
+    }
+
+    #[test]
+    fn counts_print_whole_or_scientific() {
+        assert_eq!(count(2000.0), "2000");
+        assert_eq!(count(3.2e7), "3.200e7");
+        assert_eq!(count(f64::INFINITY), "inf");
+    }
+}

@@ -1,0 +1,330 @@
+//! Physical plausibility: values far outside anything built or driven are
+//! refused with the accepted range and its unit, because the run would
+//! otherwise "succeed" with nonsense (a suspension of 1e20 N/m makes the
+//! coupled system so stiff that the automatic step gives 10⁸ steps, or an
+//! explicit step gives accelerations of hundreds of m/s²).
+//!
+//! The ranges are deliberately wide — several orders of magnitude beyond
+//! laboratory models and the heaviest trains and bridges — so that only
+//! typing slips (a missing exponent sign, N for kN twice over) and hostile
+//! inputs are caught. They apply to every derived value as well: oscillators
+//! given by dimensionless groups, stiffnesses given as ratios, and every
+//! point of a study.
+
+use super::resolve::Checker;
+use super::resolved::{Bridge, Contact, Rigidity, Study, Vehicle};
+use crate::bridge::ModalBridge;
+
+/// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).
+pub const MASS: (f64, f64) = (1e-3, 1e10);
+/// A suspension, tyre or contact spring, N/m.
+pub const STIFFNESS: (f64, f64) = (1e-3, 1e13);
+/// A suspension or tyre damper, N·s/m.
+pub const DAMPING: (f64, f64) = (0.0, 1e12);
+/// An axle load, N (10⁹ N is 100,000 t).
+pub const LOAD: (f64, f64) = (1e-3, 1e9);
+/// A Hertz coefficient, N/m^1.5 (steel wheels on rail are ~1e11).
+pub const HERTZ: (f64, f64) = (1e-3, 1e15);
+/// A beam's bending stiffness EI, N·m² (large box girders are ~1e13).
+pub const BENDING_STIFFNESS: (f64, f64) = (1e-3, 1e16);
+/// A beam's mass per length, kg/m.
+pub const MASS_PER_LENGTH: (f64, f64) = (1e-3, 1e7);
+/// A plate's flexural rigidity, N·m.
+pub const PLATE_RIGIDITY: (f64, f64) = (1e-3, 1e15);
+/// A plate's mass per area, kg/m².
+pub const MASS_PER_AREA: (f64, f64) = (1e-3, 1e6);
+/// Gravitational acceleration, m/s² (the Sun's surface is 274).
+pub const GRAVITY: (f64, f64) = (1e-3, 300.0);
+/// Time before a vehicle reaches the bridge, s (one day).
+pub const ENTRY_TIME: (f64, f64) = (0.0, 86_400.0);
+
+/// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`. A zero
+/// or negative value is left to the sign checks, which say "must be
+/// positive" once, rather than twice.
+pub(super) fn within(
+    ck: &mut Checker<'_>,
+    path: &str,
+    what: &str,
+    value: f64,
+    (lo, hi): (f64, f64),
+    unit: &str,
+) {
+    let outside = value.is_nan() || value > hi || (value > 0.0 && value < lo);
+    if outside {
+        let (value, lo, hi) = (number(value), number(lo), number(hi));
+        ck.error(
+            path,
+            format!(
+                "{what} of {value} {unit} is outside the physically plausible range {lo} to {hi} {unit}"
+            ),
+        );
+    }
+}
+
+/// A value as typed by people: plain while short, else with an exponent.
+fn number(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Checks a resolved (possibly derived) vehicle; `at` is its path.
+/// `entry_field` is `start_position` when the file places the vehicle by
+/// position, so a far-away start is blamed where it is written.
+pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, vehicle: &Vehicle) {
+    let p = |field: &str| format!("{at}.{field}");
+    match vehicle {
+        Vehicle::MovingForce(v) => {
+            for (k, &load) in v.loads.iter().enumerate() {
+                within(
+                    ck,
+                    &p(&format!("loads[{k}]")),
+                    "an axle load",
+                    load,
+                    LOAD,
+                    "N",
+                );
+            }
+        }
+        Vehicle::Oscillator(o) => {
+            within(
+                ck,
+                &p("sprung_mass"),
+                "a sprung mass",
+                o.sprung_mass,
+                MASS,
+                "kg",
+            );
+            if o.unsprung_mass != 0.0 {
+                within(
+                    ck,
+                    &p("unsprung_mass"),
+                    "an unsprung mass",
+                    o.unsprung_mass,
+                    MASS,
+                    "kg",
+                );
+            }
+            within(
+                ck,
+                &p("stiffness"),
+                "a suspension stiffness",
+                o.stiffness,
+                STIFFNESS,
+                "N/m",
+            );
+            within(
+                ck,
+                &p("damping"),
+                "a suspension damping",
+                o.damping,
+                DAMPING,
+                "N·s/m",
+            );
+        }
+        Vehicle::H20Truck(t) => {
+            let q = &t.parameters;
+            for (field, value) in [
+                ("body_mass", q.body_mass),
+                ("front_axle_mass", q.front_axle_mass),
+                ("rear_axle_mass", q.rear_axle_mass),
+            ] {
+                within(ck, &p(field), "a mass", value, MASS, "kg");
+            }
+            for (field, value) in [
+                ("front_suspension_stiffness", q.front_suspension_stiffness),
+                ("rear_suspension_stiffness", q.rear_suspension_stiffness),
+                ("front_tyre_stiffness", q.front_tyre_stiffness),
+                ("rear_tyre_stiffness", q.rear_tyre_stiffness),
+            ] {
+                within(ck, &p(field), "a spring stiffness", value, STIFFNESS, "N/m");
+            }
+        }
+    }
+    within(
+        ck,
+        &p(entry_field),
+        "the time before the vehicle reaches the bridge",
+        vehicle.entry_time(),
+        ENTRY_TIME,
+        "s",
+    );
+}
+
+/// Checks the bridge's stiffness and mass.
+pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
+    match bridge {
+        Bridge::Beam(b) => {
+            within(
+                ck,
+                "bridge.bending_stiffness",
+                "a bending stiffness",
+                b.bending_stiffness,
+                BENDING_STIFFNESS,
+                "N·m²",
+            );
+            within(
+                ck,
+                "bridge.mass_per_length",
+                "a mass per length",
+                b.mass_per_length,
+                MASS_PER_LENGTH,
+                "kg/m",
+            );
+        }
+        Bridge::Plate(p) => {
+            within(
+                ck,
+                "bridge.mass_per_area",
+                "a mass per area",
+                p.mass_per_area,
+                MASS_PER_AREA,
+                "kg/m²",
+            );
+            let (dx, dy, _, _) = p.rigidity.rigidities(p.thickness.unwrap_or(0.0));
+            let path = match p.rigidity {
+                Rigidity::Isotropic { .. } => "bridge.rigidity.youngs_modulus",
+                Rigidity::Orthotropic { .. } => "bridge.rigidity",
+            };
+            for d in [dx, dy] {
+                if p.thickness.is_some() || matches!(p.rigidity, Rigidity::Orthotropic { .. }) {
+                    within(ck, path, "a flexural rigidity", d, PLATE_RIGIDITY, "N·m");
+                }
+            }
+        }
+    }
+}
+
+/// Checks a contact spring, which may have been derived from a ratio.
+pub(super) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
+    match contact {
+        Contact::Elastic {
+            stiffness,
+            stiffness_ratio,
+        } => {
+            let path = if stiffness_ratio.is_some() {
+                "contact.stiffness_ratio"
+            } else {
+                "contact.stiffness"
+            };
+            within(
+                ck,
+                path,
+                "a contact stiffness",
+                *stiffness,
+                STIFFNESS,
+                "N/m",
+            );
+        }
+        Contact::Hertz { coefficient } => within(
+            ck,
+            "contact",
+            "a Hertz coefficient",
+            *coefficient,
+            HERTZ,
+            "N/m^1.5",
+        ),
+        Contact::Permanent | Contact::Rigid => {}
+    }
+}
+
+/// Checks every point of a study: a separation map derives the oscillator
+/// (and a contact stiffness given as a ratio) at each grid point, and its
+/// speed, masses and stiffness are monotonic in the two swept ratios, so
+/// the grid's four corners bound every point.
+pub(super) fn check_study(
+    ck: &mut Checker<'_>,
+    study: &Study,
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    modal: &ModalBridge,
+    bridge: &Bridge,
+) {
+    let Study::SeparationMap {
+        velocity_ratio,
+        mass_ratio,
+    } = study
+    else {
+        // A speed sweep's speeds are checked against the speed limit where
+        // the sweep is resolved; its other values are the scene's own.
+        return;
+    };
+    let Some(Vehicle::Oscillator(o)) = vehicles.first() else {
+        return;
+    };
+    let Some(groups) = o.dimensionless else {
+        return;
+    };
+    let Some(&f1) = modal.frequencies().first() else {
+        return;
+    };
+    let (v_lo, v_hi) = (
+        velocity_ratio.from.min(velocity_ratio.to),
+        velocity_ratio.from.max(velocity_ratio.to),
+    );
+    let (m_lo, m_hi) = (
+        mass_ratio.from.min(mass_ratio.to),
+        mass_ratio.from.max(mass_ratio.to),
+    );
+    for (v, m, vpath, mpath) in [
+        (
+            v_lo,
+            m_lo,
+            "study.velocity_ratio.from",
+            "study.mass_ratio.from",
+        ),
+        (v_hi, m_hi, "study.velocity_ratio.to", "study.mass_ratio.to"),
+    ] {
+        let mut point = groups;
+        point.velocity_ratio = v;
+        point.mass_ratio = m;
+        let derived = point.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
+        let speed = derived.speed;
+        if !(speed > 0.0 && speed <= super::resolve::MAX_SPEED) {
+            ck.error(
+                vpath,
+                format!(
+                    "the study's velocity ratio {v} gives a speed of {} m/s (2 × ratio × f1 × L with f1 = {f1:.4} Hz, L = {} m), outside 0 to {} m/s",
+                    number(speed),
+                    modal.length,
+                    super::resolve::MAX_SPEED
+                ),
+            );
+        }
+        let sub = ck.diagnostics.len();
+        within(
+            ck,
+            mpath,
+            "the study's derived sprung mass",
+            derived.sprung_mass,
+            MASS,
+            "kg",
+        );
+        within(
+            ck,
+            mpath,
+            "the study's derived suspension stiffness",
+            derived.stiffness,
+            STIFFNESS,
+            "N/m",
+        );
+        if let Contact::Elastic {
+            stiffness_ratio: Some(ratio),
+            ..
+        } = contact
+        {
+            within(
+                ck,
+                mpath,
+                "the study's derived contact stiffness",
+                ratio * derived.stiffness,
+                STIFFNESS,
+                "N/m",
+            );
+        }
+        // One message per corner is enough.
+        ck.diagnostics.truncate(sub + 1);
+    }
+}

@@ -1,0 +1,41 @@
+//! The `limits` section: resource budgets a scene may raise.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+/// Resource budgets checked before any work starts. Each bounds one size
+/// that the run's time or memory grows with; the defaults suit a
+/// workstation. Raise one here for a scene that really needs it, or lift
+/// all of them with `vbi run --allow-large`.
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LimitsRaw {
+    /// Most degrees of freedom of the bridge's eigenproblem (beam free DOFs,
+    /// or plate Ritz terms). Dense solve: time ∝ n³, memory ∝ n². Default 2000.
+    #[serde(default)]
+    pub dofs: Option<f64>,
+    /// Most bridge modes kept. Default 500.
+    #[serde(default)]
+    pub modes: Option<f64>,
+    /// Most time steps of one run. Default 1e7.
+    #[serde(default)]
+    pub steps: Option<f64>,
+    /// Most time steps summed over all runs of a study. Default 2e8.
+    #[serde(default)]
+    pub study_steps: Option<f64>,
+    /// Most wheels (axles and wheel contacts) over all vehicles. Default 500.
+    #[serde(default)]
+    pub wheels: Option<f64>,
+    /// Most recorded quantities. Default 500.
+    #[serde(default)]
+    pub records: Option<f64>,
+    /// Most runs of a study (grid points × surfaces × samples). Default 10000.
+    #[serde(default)]
+    pub study_points: Option<f64>,
+    /// Most terms of a random road profile's series. Default 20000.
+    #[serde(default)]
+    pub road_terms: Option<f64>,
+    /// Most bytes of results written (estimated), bytes. Default 2e9.
+    #[serde(default)]
+    pub output_bytes: Option<f64>,
+}

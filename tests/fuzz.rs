@@ -1,0 +1,312 @@
+//! Issue 10: continuous fuzzing of the loader and the resolver on the stable
+//! toolchain. A mutation fuzzer (no coverage guidance, no nightly): seeds
+//! are every shipped scenario, every `tests/bad` file and the hostile corpus;
+//! each input is a seed with one to four mutations — byte edits, numbers
+//! replaced by boundary values (0, −1, 2⁶³, 2⁶⁴, ±1e308, .nan, …), lines
+//! spliced in from other seeds, YAML control tokens (tabs, tags, anchors,
+//! brackets, NUL, BOM) — and goes through `load_str` exactly as `vbi check`
+//! would; an accepted scene of at most 20,000 steps is also run. A panic
+//! fails the test and the input is saved under
+//! `target/fuzz-crashes/` to become a case in `tests/hostile`.
+//!
+//! The run is deterministic for a seed (xorshift, fixed default) and bounded
+//! in time: 30 s by default in `cargo test --release`. A long run:
+//!
+//! ```sh
+//! VBI_FUZZ_SECONDS=3600 VBI_FUZZ_SEED=7 cargo test --release --test fuzz -- --nocapture
+//! ```
+
+use std::fs;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// Default time budget of the run inside the test suite, s.
+const DEFAULT_SECONDS: u64 = 30;
+/// Inputs slower than this to check are reported (a check must not do work
+/// proportional to a run; the largest eigenproblem the default budget lets
+/// through takes a few seconds).
+const SLOW: Duration = Duration::from_secs(15);
+/// Seeds larger than this are skipped: big hostile files make each
+/// iteration slow without exercising new code.
+const MAX_SEED_BYTES: u64 = 64 * 1024;
+
+/// xorshift64*: small, fast, and the same sequence on every machine.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        let mut x = self.0;
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        self.0 = x;
+        x.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        if n == 0 {
+            0
+        } else {
+            (self.next() % n as u64) as usize
+        }
+    }
+
+    fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
+        &items[self.below(items.len())]
+    }
+}
+
+/// Values at the edges of what the format's numbers and sizes take.
+const NUMBERS: &[&str] = &[
+    "0",
+    "-0.0",
+    "-1",
+    "1",
+    "2",
+    "1e-308",
+    "5e-324",
+    "1e308",
+    "-1e308",
+    "1e400",
+    ".nan",
+    ".inf",
+    "-.inf",
+    "4294967296",
+    "9223372036854775807",
+    "9223372036854775808",
+    "18446744073709551615",
+    "18446744073709551616",
+    "1e9",
+    "1e20",
+    "100000",
+    "0x10",
+    "0o7",
+    "~",
+    "''",
+    "[]",
+    "{}",
+    "true",
+    "2.5",
+];
+
+/// Fragments that stress the YAML layer.
+const TOKENS: &[&str] = &[
+    "\t", "\0", "\u{feff}", "!foo ", "!!str ", "&a ", "*a", "[", "]", "{", "}", ": ", ":", "- ",
+    "? ", "<<: ", "---\n", "...\n", "#", "'", "\"", "|\n", ">\n", "\r", "\r\n", "\u{1b}", "é",
+    "\u{2028}", "  ", "\n",
+];
+
+fn seeds() -> Vec<String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut out = Vec::new();
+    for dir in ["scenarios", "tests/bad", "tests/hostile/cases"] {
+        let Ok(entries) = fs::read_dir(root.join(dir)) else {
+            continue;
+        };
+        let mut paths: Vec<PathBuf> = entries.map(|e| e.unwrap().path()).collect();
+        paths.sort(); // read_dir order differs between file systems
+        for path in paths {
+            if fs::metadata(&path).map(|m| m.len()).unwrap_or(u64::MAX) > MAX_SEED_BYTES {
+                continue;
+            }
+            if let Ok(bytes) = fs::read(&path) {
+                out.push(String::from_utf8_lossy(&bytes).into_owned());
+            }
+        }
+    }
+    out
+}
+
+/// Byte offsets of the char boundaries of `s` (so edits keep valid UTF-8,
+/// which is what `load_str` takes; invalid UTF-8 is tested in the corpus).
+fn boundary(s: &str, rng: &mut Rng) -> usize {
+    let mut at = rng.below(s.len() + 1);
+    while !s.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
+}
+
+/// Spans of number-like words in `s`.
+fn numbers(s: &str) -> Vec<(usize, usize)> {
+    let bytes = s.as_bytes();
+    let mut spans = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i].is_ascii_digit()
+            || (bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit))
+        {
+            let start = i;
+            i += 1;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_alphanumeric() || matches!(bytes[i], b'.' | b'-' | b'+'))
+            {
+                i += 1;
+            }
+            spans.push((start, i));
+        } else {
+            i += 1;
+        }
+    }
+    spans
+}
+
+fn mutate(input: &str, seeds: &[String], rng: &mut Rng) -> String {
+    let mut s = input.to_string();
+    for _ in 0..1 + rng.below(4) {
+        match rng.below(9) {
+            // A number replaced by a boundary value.
+            0..=2 => {
+                let spans = numbers(&s);
+                if spans.is_empty() {
+                    continue;
+                }
+                let (a, b) = *rng.pick(&spans);
+                let value = *rng.pick::<&str>(NUMBERS);
+                s.replace_range(a..b, value);
+            }
+            // A YAML token inserted.
+            3 => {
+                let at = boundary(&s, rng);
+                let token = *rng.pick::<&str>(TOKENS);
+                s.insert_str(at, token);
+            }
+            // A range deleted.
+            4 => {
+                let a = boundary(&s, rng);
+                let mut b = (a + rng.below(40)).min(s.len());
+                while !s.is_char_boundary(b) {
+                    b -= 1;
+                }
+                s.replace_range(a..b, "");
+            }
+            // A line of another seed spliced in.
+            5 => {
+                let other = rng.pick(seeds);
+                let lines: Vec<&str> = other.lines().collect();
+                if lines.is_empty() {
+                    continue;
+                }
+                let line = format!("{}\n", rng.pick(&lines));
+                let starts: Vec<usize> = std::iter::once(0)
+                    .chain(s.match_indices('\n').map(|(i, _)| i + 1))
+                    .collect();
+                let at = *rng.pick(&starts);
+                s.insert_str(at, &line);
+            }
+            // A line duplicated many times (sizes, duplicate keys).
+            6 => {
+                let lines: Vec<&str> = s.lines().collect();
+                if lines.is_empty() {
+                    continue;
+                }
+                let line = rng.pick(&lines).to_string();
+                let times = 1 + rng.below(200);
+                s.push('\n');
+                for _ in 0..times {
+                    s.push_str(&line);
+                    s.push('\n');
+                }
+            }
+            // A random byte (ASCII, to stay UTF-8).
+            7 => {
+                let at = boundary(&s, rng);
+                let c = (rng.below(128) as u8) as char;
+                s.insert(at, c);
+            }
+            // Indentation shifted on one line.
+            _ => {
+                let starts: Vec<usize> = std::iter::once(0)
+                    .chain(s.match_indices('\n').map(|(i, _)| i + 1))
+                    .collect();
+                let at = *rng.pick(&starts);
+                if rng.below(2) == 0 {
+                    s.insert_str(at, "  ");
+                } else if s[at..].starts_with(' ') {
+                    s.remove(at);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// Steps of a scene without a study at most this many are run too.
+const RUN_STEPS: f64 = 20_000.0;
+
+/// Whether `scenario` is a single scene of at most [`RUN_STEPS`] steps.
+fn short(scenario: &vbi::scenario::resolved::Scenario) -> bool {
+    let length = scenario.bridge.length();
+    let end = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.entry_time() + (length + v.length()) / v.speed())
+        .fold(0.0, f64::max)
+        + scenario.solver.free_vibration;
+    scenario.study.is_none() && end / scenario.solver.time_step <= RUN_STEPS
+}
+
+#[test]
+fn mutated_scenes_never_panic_in_the_loader() {
+    let seconds = std::env::var("VBI_FUZZ_SECONDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(DEFAULT_SECONDS);
+    let seed = std::env::var("VBI_FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x0005_EED0_F7B1_u64);
+    let seeds = seeds();
+    assert!(seeds.len() > 100, "only {} seeds", seeds.len());
+    let mut rng = Rng(seed | 1);
+    let deadline = Instant::now() + Duration::from_secs(seconds);
+    let crashes = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fuzz-crashes");
+    let (mut runs, mut accepted) = (0u64, 0u64);
+    let mut failures = Vec::new();
+    while Instant::now() < deadline {
+        let base = rng.pick(&seeds).clone();
+        let input = mutate(&base, &seeds, &mut rng);
+        let start = Instant::now();
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            let loaded = vbi::scenario::load_str(&input, "fuzz.yaml")?;
+            // A short accepted scene is also run: what the loader lets
+            // through must not panic in the solvers either.
+            if short(&loaded.scenario) {
+                let _ = vbi::run::simulate(loaded, &mut |_, _| {});
+            }
+            Ok::<(), vbi::scenario::LoadError>(())
+        }));
+        let took = start.elapsed();
+        runs += 1;
+        let problem = match &result {
+            Err(_) => Some("panicked".to_string()),
+            Ok(_) if took > SLOW => Some(format!("took {took:?}")),
+            Ok(Ok(())) => {
+                accepted += 1;
+                None
+            }
+            Ok(Err(e)) => {
+                // Every refusal is located and says something.
+                let text = e.to_string();
+                (!text.starts_with("fuzz.yaml:") || text.len() < 15)
+                    .then(|| format!("unlocated error: {text}"))
+            }
+        };
+        if let Some(problem) = problem {
+            fs::create_dir_all(&crashes).unwrap();
+            let file = crashes.join(format!("crash-{seed}-{runs}.yaml"));
+            fs::write(&file, &input).unwrap();
+            failures.push(format!("{problem}: input saved as {}", file.display()));
+            if failures.len() >= 10 {
+                break;
+            }
+        }
+    }
+    eprintln!(
+        "fuzz: {runs} inputs in {seconds} s (seed {seed}), {accepted} accepted, {} failures",
+        failures.len()
+    );
+    assert!(runs > 100, "only {runs} inputs were tried");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

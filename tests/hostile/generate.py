@@ -1,0 +1,440 @@
+#!/usr/bin/env python3
+"""Generates the hostile corpus of issue 10: tests/hostile/cases/*.yaml and
+tests/hostile/expected.tsv, which tests/hostile.rs runs (no Python needed to
+run the tests; this script only regenerates the committed files).
+
+Every case says what it tests and how `vbi check` must answer:
+
+  rejected  exit 2, a diagnostic at the marked line:column with the message
+            (unmarked: at some location)
+  budget    exit 2, refused by a resource limit (`limits.KEY` in the message),
+            at the marked place
+  accepted  exit 0
+
+and, whatever the outcome, within the test's time and memory caps, without a
+panic. The place of the expected diagnostic is marked in a case's text with
+`@@` (removed from the file written); the columns count characters.
+
+Run from the repository root:  python3 tests/hostile/generate.py
+"""
+
+import os
+import shutil
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASES = os.path.join(HERE, "cases")
+
+BEAM = """bridge:
+  type: beam
+  spans: [25.0]
+  bending_stiffness: 8.323e9
+  mass_per_length: 2303.0
+"""
+
+OSC = """  - type: oscillator
+    sprung_mass: 5750.0
+    stiffness: 1.595e6
+    speed: 27.7
+"""
+
+PLATE = """bridge:
+  type: plate
+  spans: [24.0, 30.0, 24.0]
+  width: 13.0
+  thickness: 0.2
+  mass_per_area: 500.0
+  rigidity: {type: isotropic, youngs_modulus: 3.0e10}
+"""
+
+
+def scene(name="hostile", bridge=BEAM, vehicles=OSC, extra=""):
+    return f"name: {name}\n{bridge}vehicles:\n{vehicles}{extra}"
+
+
+cases = []
+
+
+def case(file, outcome, what, text, message=""):
+    """One corpus file. `text` may be str or bytes; `@@` marks the place."""
+    cases.append((file, outcome, what, text, message))
+
+
+# --- accepted: ordinary and odd-but-valid files -------------------------------
+case("ok-plain", "accepted", "the base scene every other case mutates", scene())
+case("ok-bom", "accepted", "a UTF-8 byte order mark (Windows editors) is accepted",
+     "\ufeff" + scene())
+case("ok-crlf", "accepted", "CRLF line breaks are accepted", scene().replace("\n", "\r\n"))
+case("ok-cr", "accepted", "lone CR line breaks are accepted", scene().replace("\n", "\r"))
+case("ok-name-dotdot-path", "accepted",
+     "a name with `../..` is accepted (the output folder is sanitised, not the title)",
+     scene(name="../../escape"))
+case("ok-name-absolute", "accepted", "an absolute path as name is accepted as a title",
+     scene(name="/tmp/vbi-escape"))
+case("ok-name-dotdot", "accepted", "`..` as a name is accepted as a title", scene(name="'..'"))
+case("ok-name-unicode", "accepted", "a Unicode name", scene(name="pont de l'Île"))
+case("ok-limits-raised", "accepted", "a budget raised in the file lets 600 axles through",
+     scene(vehicles="  - type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
+           + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n",
+           extra="limits: {wheels: 1000, records: 1000}\n"))
+case("size-default-records", "budget",
+     "600 axles raise the wheel limit but not the records one: 601 default records",
+     scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
+           + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n",
+           extra="limits: {wheels: 1000}\n"), "limits.records")
+case("size-axles-600", "budget", "the same 600 axles without the raised limit",
+     scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
+           + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n"),
+     "limits.wheels")
+case("ok-anchors", "accepted", "anchors and aliases within bounds",
+     "name: a\nbridge: &b\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n"
+     "  mass_per_length: 2303.0\nvehicles:\n" + OSC)
+case("ok-comments-everywhere", "accepted", "comments on every line",
+     "\n".join(l + "  # c" for l in scene().splitlines()) + "\n")
+case("ok-quoted-keys", "accepted", "quoted keys", scene().replace("bridge:", "'bridge':"))
+case("ok-flow-style", "accepted", "the whole scene in flow style",
+     "{name: f, bridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, "
+     "mass_per_length: 2303.0}, vehicles: [{type: oscillator, sprung_mass: 5750.0, "
+     "stiffness: 1.595e6, speed: 27.7}]}\n")
+
+# --- syntax: the YAML itself ---------------------------------------------------
+case("syntax-tab-indent", "rejected", "a tab in the indentation is blamed on its line",
+     scene(bridge=BEAM.replace("  spans", "@@\tspans")), "tabs")
+case("syntax-missing-colon", "rejected", "a key without a colon is blamed on its line",
+     scene(bridge=BEAM.replace("  spans: [25.0]", "  @@spans [25.0]")), "no `:`")
+case("syntax-no-space-after-colon", "rejected", "`key:value` is blamed on its line",
+     scene(bridge=BEAM.replace("  spans: [25.0]", "  @@spans:[25.0]")), "space after it")
+case("syntax-custom-tag", "rejected", "a custom tag is blamed on the tag",
+     scene(bridge=BEAM.replace("spans: [25.0]", "spans: @@!foo [25.0]")), "tags are not supported")
+case("syntax-core-tag", "rejected", "a core tag `!!str` is blamed on the tag",
+     scene(name="@@!!str x"), "tags are not supported")
+case("syntax-nul-byte", "rejected", "a NUL byte is refused where it is, not read as end of file",
+     scene().replace("  mass_per_length: 2303.0", "  mass_per_length: 2303.0@@\0"),
+     "U+0000")
+case("syntax-bell", "rejected", "a BEL control character is refused where it is",
+     scene().replace("name: hostile", "name: hos@@\x07tile"), "U+0007")
+case("syntax-escape", "rejected", "an ESC (terminal escape) is refused where it is",
+     scene().replace("name: hostile", "name: @@\x1b[31mred"), "U+001B")
+case("syntax-del", "rejected", "DEL is refused", "@@\x7f" + scene(), "U+007F")
+case("syntax-latin1", "rejected", "a Latin-1 byte is refused as not UTF-8",
+     scene().encode().replace(b"name: hostile", b"name: h@@\xe9"), "not valid UTF-8")
+case("syntax-unclosed-bracket", "rejected", "an unclosed flow sequence names its bracket",
+     scene(bridge=BEAM.replace("[25.0]", "[25.0")), "inside the `[`")
+case("syntax-unclosed-brace", "rejected", "an unclosed flow mapping names its brace",
+     scene(extra="solver: {time_step: 1e-3\n"), "inside the `{`")
+case("syntax-duplicate-key", "rejected", "a duplicate key",
+     scene(bridge=BEAM + "  @@spans: [30.0]\n"), "duplicate key `spans`")
+case("syntax-two-documents", "rejected", "two YAML documents",
+     scene() + "@@---\n" + scene(), "only one YAML document")
+case("syntax-merge-key", "rejected", "a merge key",
+     "base: &b {x: 1}\nname: m\n@@<<: *b\n" + BEAM + "vehicles:\n" + OSC, "merge keys")
+case("syntax-complex-key", "rejected", "a sequence as a key",
+     scene() + "? @@[a]\n: 1\n", "keys must be scalars")
+case("syntax-deep-nesting", "rejected", "10,000 nested brackets are refused, not a stack overflow",
+     "name: " + "[" * 10000 + "]" * 10000 + "\n", "recursion limit")
+case("syntax-deep-block-nesting", "rejected", "deep block mappings",
+     "".join("  " * i + f"k{i}:\n" for i in range(128)) + "  " * 128 + "@@k: 1\n",
+     "nesting deeper")
+laughs = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n" + "".join(
+    f"a{i}: &a{i} [*a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}, *a{i-1}]\n"
+    for i in range(1, 6))
+case("syntax-billion-laughs", "rejected", "alias expansion is bounded (billion laughs)",
+     laughs + "a6: [*a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5]\n", "more than 1000000 nodes")
+case("syntax-recursive-alias", "rejected", "an alias to an unfinished anchor",
+     "name: &n [@@*n]\n", "recursive alias")
+case("syntax-undefined-alias", "rejected", "an alias without anchor",
+     "name: @@*nope\n", "")
+case("syntax-empty", "rejected", "an empty file", "@@", "the file is empty")
+case("syntax-only-comments", "rejected", "a file of comments only", "@@# nothing\n# here\n", "the file is empty")
+case("syntax-only-document-marker", "rejected", "a lone `---`", "@@---\n", "the file is empty")
+case("syntax-scalar-root", "rejected", "a scalar instead of a mapping", "@@hello\n", "invalid type")
+case("syntax-sequence-root", "rejected", "a list instead of a mapping", "@@- a\n- b\n", "invalid type")
+case("syntax-long-line", "rejected", "a 200 kB line of garbage is refused quickly",
+     "name: x\n" + "z" * 200_000 + "@@: 1\n", "simple key")
+case("syntax-bad-indent", "rejected", "a key indented deeper than its siblings",
+     scene(bridge=BEAM.replace("  bending_stiffness", "    @@bending_stiffness")), "")
+
+# --- types: every number field fed hostile numbers -------------------------------
+float_fields = [
+    ("bridge.bending_stiffness", lambda v: scene(bridge=BEAM.replace("8.323e9", "@@" + v))),
+    ("bridge.mass_per_length", lambda v: scene(bridge=BEAM.replace("2303.0", "@@" + v))),
+    ("bridge.spans[0]", lambda v: scene(bridge=BEAM.replace("[25.0]", "[@@" + v + "]"))),
+    ("vehicles[0].sprung_mass", lambda v: scene(vehicles=OSC.replace("5750.0", "@@" + v))),
+    ("vehicles[0].stiffness", lambda v: scene(vehicles=OSC.replace("1.595e6", "@@" + v))),
+    ("vehicles[0].speed", lambda v: scene(vehicles=OSC.replace("27.7", "@@" + v))),
+    ("gravity", lambda v: scene(extra="gravity: @@" + v + "\n")),
+    ("solver.time_step", lambda v: scene(extra="solver: {time_step: @@" + v + "}\n")),
+]
+for path, make in float_fields:
+    slug = path.replace(".", "-").replace("[0]", "")
+    case(f"float-{slug}-inf", "rejected", f"`.inf` for {path}", make(".inf"), "not a finite number")
+    case(f"float-{slug}-nan", "rejected", f"`.nan` for {path}", make(".nan"), "not a finite number")
+    case(f"float-{slug}-1e400", "rejected", f"an overflowing literal for {path}", make("1e400"),
+         "not a finite number")
+    case(f"float-{slug}-string", "rejected", f"a word for {path}", make("fast"), "expected a number")
+    case(f"float-{slug}-list", "rejected", f"a list for {path}", make("[1, 2]"), "expected a number")
+
+int_fields = [
+    ("bridge.elements_per_span", lambda v: scene(bridge=BEAM + "  elements_per_span: @@" + v + "\n")),
+    ("bridge.modes.count", lambda v: scene(bridge=BEAM + "  modes: {count: @@" + v + "}\n")),
+    ("study.speeds.count", lambda v: scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: @@" + v + "}}\n")),
+    ("solver.max_iterations", lambda v: scene(extra="solver: {method: iterative, max_iterations: @@" + v + "}\n")),
+]
+for path, make in int_fields:
+    slug = path.replace(".", "-")
+    case(f"int-{slug}-2p64", "rejected", f"2^64 for {path} (out of range, no wrap)",
+         make("18446744073709551616"), "out of range")
+    case(f"int-{slug}-1e40", "rejected", f"a 40-digit integer for {path}",
+         make("1" + "0" * 40), "out of range")
+    case(f"int-{slug}-negative", "rejected", f"-1 for {path}", make("-1"), "out of range")
+    case(f"int-{slug}-float", "rejected", f"2.5 for a whole number ({path})", make("2.5"),
+         "expected a whole number")
+
+# --- sizes: checked arithmetic and resource budgets ----------------------------------
+case("size-plate-terms-wrap", "rejected",
+     "plate Ritz terms whose product passes usize (2^32 x 2^32 wrapped to 0 and panicked)",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 4294967296, transverse: 4294967296}\n"),
+     "Ritz terms")
+case("size-plate-terms-large", "rejected", "plate terms 2000 x 2000",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 2000, transverse: 2000}\n"), "Ritz terms")
+case("size-plate-transverse-2000", "budget",
+     "2000 transverse plate functions (found by the fuzzer: 50 s inside check)",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 1, transverse: 2000}\n"), "limits.dofs")
+case("size-plate-ritz-2000", "budget", "a 40 x 50 plate Ritz basis (15 s inside check)",
+     scene(bridge=PLATE + "  terms: @@{longitudinal: 40, transverse: 50}\n"), "limits.dofs")
+case("size-sweep-count-2p63", "rejected",
+     "a sweep count of 2^63 (its speed list was built after the count was diagnosed)",
+     scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: @@9223372036854775808}}\n"),
+     "needs 1 to")
+case("size-sweep-count-1e9", "rejected", "a sweep count of 1e9 (allocated 8 GB inside check)",
+     scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: @@1000000000}}\n"),
+     "needs 1 to")
+case("size-beam-20000-dofs", "budget",
+     "a 20,000-DOF beam (died on an allocation unwrap in the dense eigen solver)",
+     scene(bridge=BEAM + "  elements_per_span: @@10000\n"), "limits.dofs")
+case("size-beam-10000-elements", "budget", "10,000 elements in two spans",
+     scene(bridge=BEAM.replace("[25.0]", "[25.0, 25.0]") + "  elements_per_span: @@4000\n"), "limits.dofs")
+case("size-beam-2000-elements", "budget",
+     "a dense eigenproblem of 2,000 elements (> 20 s inside check)",
+     scene(bridge=BEAM + "  elements_per_span: @@2000\n"), "limits.dofs")
+case("size-modes-count", "budget", "more modes than the budget",
+     scene(bridge=BEAM + "  elements_per_span: 900\n  modes: {count: @@1000}\n",
+           extra="limits: {dofs: 2000}\n"), "limits.modes")
+case("size-modes-max-frequency", "budget", "a cut-off frequency that keeps all 600 modes",
+     scene(bridge=BEAM + "  elements_per_span: 300\n  modes: @@{max_frequency: 1.0e12}\n",
+           extra="solver: {time_step: 1.0e-3}\n"), "limits.modes")
+case("size-steps-2e7", "budget", "2e7 time steps (> 20 s)",
+     scene(extra="solver: {time_step: @@4.5e-8}\n"), "limits.steps")
+case("size-steps-1.8e8", "budget", "1.8e8 steps (a history preallocated for all of them)",
+     scene(extra="solver: {time_step: @@5.0e-9}\n"), "limits.steps")
+case("size-steps-free-vibration", "budget", "a free vibration of a day at 1e-4 s",
+     scene(extra="solver: {time_step: 1.0e-4, free_vibration: @@1000.0}\n"), "limits.steps")
+case("size-steps-slow-vehicle", "budget", "a vehicle at 1 mm/s gives too many steps",
+     scene(vehicles=OSC.replace("27.7", "0.001"), extra="solver: {time_step: @@1.0e-3}\n"),
+     "limits.steps")
+case("size-axles-100000", "budget", "100,000 axles",
+     scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 100_000)
+           + "]\n    axle_spacings: [" + ", ".join(["1"] * 99_999) + "]\n    speed: 20.0\n"),
+     "limits.wheels")
+case("size-vehicles-2000", "budget", "2,000 vehicles",
+     "name: many\n" + BEAM + "vehicles:\n" + "".join(
+         ("  @@- {" if i == 0 else "  - {") + f"type: moving_force, loads: [1.0e4], speed: 20.0, entry_time: {i * 0.01}}}\n"
+         for i in range(2000)), "limits.wheels")
+case("size-records-20000", "budget", "20,000 records",
+     scene(extra="record:\n" + "".join(
+         ("  @@- {" if i == 0 else "  - {") + f"name: r{i}, quantity: bridge_displacement, x: 12.5}}\n" for i in range(20000))),
+     "limits.records")
+case("size-sweep-points", "budget", "a 99,000-run sweep",
+     scene(bridge=BEAM, extra="surface: {type: random, class: good}\n"
+           "study: @@{type: speed_sweep, speeds: {from: 10, to: 30, count: 495}, samples: 200}\n"),
+     "limits.study_points")
+case("size-map-points", "budget", "a 250,000-point separation map",
+     "name: map\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: "
+     "{velocity_ratio: 0.3, mass_ratio: 1.0, frequency_ratio: 0.5}\ncontact: {type: rigid}\n"
+     "study: @@{type: separation_map, velocity_ratio: {from: 0.05, to: 1.0, count: 500}, "
+     "mass_ratio: {from: 0.1, to: 2.0, count: 500}}\n", "limits.study_points")
+case("size-road-terms", "budget", "a random road of 1e6 terms",
+     scene(extra="surface: {type: random, class: good, terms: @@1000000}\n"), "limits.road_terms")
+case("size-road-sampling", "budget", "a random road sampled over 1e12 m",
+     scene(extra="surface: {type: random, class: good, sampling_length: @@1.0e12}\n"),
+     "limits.road_terms")
+case("size-output-bytes", "budget", "a history CSV of gigabytes",
+     scene(extra="solver: {time_step: 1.0e-6}\nlimits: {steps: 1.0e8}\nrecord:\n" + "".join(
+         ("  @@- {" if i == 0 else "  - {") + f"name: r{i}, quantity: bridge_acceleration, x: 12.5}}\n" for i in range(100))),
+     "limits.output_bytes")
+case("size-study-steps", "budget", "a study whose runs add up to too many steps",
+     scene(extra="solver: {time_step: 1.0e-6}\n"
+           "study: @@{type: speed_sweep, speeds: {from: 10, to: 30, count: 300}}\n"),
+     "limits.study_steps")
+case("size-limit-zero", "rejected", "a limit of 0", scene(extra="limits: {steps: @@0}\n"),
+     "a limit must be")
+case("size-limit-fraction", "rejected", "a fractional limit",
+     scene(extra="limits: {wheels: @@2.5}\n"), "a limit must be")
+case("size-limit-unknown", "rejected", "an unknown limit",
+     scene(extra="limits: {@@cpu: 1}\n"), "unknown field `cpu`")
+case("size-elements-2p63", "rejected", "elements per span of 2^63",
+     scene(bridge=BEAM + "  elements_per_span: @@9223372036854775807\n"), "elements per span")
+
+# --- names and output folder ------------------------------------------------------
+case("name-empty", "rejected", "an empty name", scene(name="@@''"), "must not be empty")
+case("name-control-char", "rejected", "a name with a control character",
+     scene(name='@@"a\\x01b"'), "control character")
+case("name-newline", "rejected", "a name with a line break", scene(name='@@"a\\nb"'),
+     "control character")
+case("name-too-long", "rejected", "a 10,000-character name", scene(name="@@" + "n" * 10000),
+     "characters")
+case("record-name-control", "rejected", "a record name with a control character",
+     scene(extra='record:\n  - {name: @@"a\\tb", quantity: bridge_displacement, x: 12.5}\n'),
+     "control character")
+case("record-name-slash", "accepted", "a record name with a slash is a column, not a file",
+     scene(extra="record:\n  - {name: a/b, quantity: bridge_displacement, x: 12.5}\n"))
+case("record-name-duplicate", "rejected", "duplicate record names",
+     scene(extra="record:\n  - {name: a, quantity: bridge_displacement, x: 12.5}\n"
+           "  - {name: @@a, quantity: bridge_displacement, x: 10.0}\n"), "duplicate record name")
+
+# --- physics plausibility -------------------------------------------------------
+case("phys-stiffness-1e20", "rejected", "a suspension of 1e20 N/m (ran to -355 m/s^2)",
+     scene(vehicles=OSC.replace("1.595e6", "@@1e20")), "physically plausible range")
+case("phys-stiffness-1e308", "rejected", "a suspension of 1e308 N/m",
+     scene(vehicles=OSC.replace("1.595e6", "@@1e308")), "physically plausible range")
+case("phys-contact-ratio-1e308", "rejected",
+     "a contact stiffness ratio of 1e308 (overflowed to infinity and exited 0)",
+     scene(extra="contact: {type: elastic, stiffness_ratio: @@1e308}\n"), "")
+case("phys-contact-stiffness-1e20", "rejected", "an elastic contact of 1e20 N/m",
+     scene(extra="contact: {type: elastic, stiffness: @@1e20}\n"), "physically plausible range")
+case("phys-hertz-1e30", "rejected", "a Hertz coefficient of 1e30",
+     scene(extra="contact: @@{type: hertz, coefficient: 1e30}\n"), "physically plausible range")
+case("phys-mass-microgram", "rejected", "a sprung mass of a microgram",
+     scene(vehicles=OSC.replace("5750.0", "@@1e-9")), "physically plausible range")
+case("phys-mass-mountain", "rejected", "a sprung mass of a mountain (1e15 kg)",
+     scene(vehicles=OSC.replace("5750.0", "@@1e15")), "physically plausible range")
+case("phys-unsprung-mountain", "rejected", "an unsprung mass of 1e15 kg",
+     scene(vehicles=OSC + "    unsprung_mass: @@1e15\n"), "physically plausible range")
+case("phys-load-1e12", "rejected", "an axle load of 1e12 N",
+     scene(vehicles="  - {type: moving_force, loads: [@@1e12], speed: 20.0}\n"),
+     "physically plausible range")
+case("phys-ei-1e20", "rejected", "a bending stiffness of 1e20 N m^2",
+     scene(bridge=BEAM.replace("8.323e9", "@@1e20")), "physically plausible range")
+case("phys-mass-per-length-1e12", "rejected", "1e12 kg/m",
+     scene(bridge=BEAM.replace("2303.0", "@@1e12")), "physically plausible range")
+case("phys-gravity-1e5", "rejected", "gravity of 1e5 m/s^2",
+     scene(extra="gravity: @@1e5\n"), "physically plausible range")
+case("phys-speed-2e8", "rejected", "a speed of 2e8 m/s",
+     scene(vehicles=OSC.replace("27.7", "@@2e8")), "above 1000")
+case("phys-map-speed-2e8", "rejected",
+     "velocity ratios giving 2e8 m/s inside a separation map (a single scene refuses > 1000 m/s)",
+     "name: map\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: "
+     "{velocity_ratio: 0.3, mass_ratio: 1.0, frequency_ratio: 0.5}\ncontact: {type: rigid}\n"
+     "study: {type: separation_map, velocity_ratio: {from: 0.05, to: @@1.0e6, count: 5}, "
+     "mass_ratio: {from: 0.1, to: 2.0, count: 5}}\n", "gives a speed")
+case("phys-map-mass-ratio-1e12", "rejected", "mass ratios giving a mountain inside a map",
+     "name: map\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: "
+     "{velocity_ratio: 0.3, mass_ratio: 1.0, frequency_ratio: 0.5}\ncontact: {type: rigid}\n"
+     "study: {type: separation_map, velocity_ratio: {from: 0.05, to: 1.0, count: 5}, "
+     "mass_ratio: {from: 0.1, to: @@1.0e12, count: 5}}\n", "physically plausible range")
+case("phys-sweep-speed-2e8", "rejected", "a sweep to 2e8 m/s",
+     scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: @@2e8, count: 5}}\n"), "above 1000")
+case("phys-start-position-1e308", "rejected",
+     "a start position of -1e308 m (was blamed on the time step at 2:1)",
+     scene(vehicles=OSC + "    start_position: @@-1e308\n"), "physically plausible range")
+case("phys-entry-time-1e9", "rejected", "an entry time of 1e9 s (a CSV of gigabytes)",
+     scene(vehicles=OSC + "    entry_time: @@1e9\n"), "physically plausible range")
+case("phys-entry-time-long", "rejected", "an entry time of two days",
+     scene(vehicles=OSC + "    entry_time: @@172800\n"), "physically plausible range")
+
+# --- many errors at once ----------------------------------------------------------
+many = "name: many\n" + BEAM + "vehicles:\n" + "".join(
+    f"  - {{type: oscillator, sprung_mass: {-1 - i}, stiffness: 1.0e6, speed: 20.0}}\n"
+    for i in range(200))
+case("many-semantic-errors", "budget", "200 vehicles with a negative mass each (wheels within budget? no)",
+     many.replace("  - {", "  @@- {", 1) + "limits: {wheels: 100}\n", "limits.wheels")
+case("many-semantic-errors-shown-capped", "rejected",
+     "200 negative masses: 50 shown and a count of the rest",
+     many.replace("sprung_mass: -1,", "sprung_mass: @@-1,", 1), "150 more errors not shown")
+typos = "name: typos\n" + BEAM + "vehicles:\n" + "".join(
+    f"  - {{type: oscillator, sprung_mas: 1.0, stiffness: 1.0e6, speed: 20.0}}\n" for i in range(20))
+case("many-type-errors", "rejected", "20 unknown keys are all reported, not only the first",
+     typos.replace("sprung_mas", "@@sprung_mas", 1), "unknown field `sprung_mas`")
+big = "name: big\n" + BEAM + "vehicles:\n" + "".join(
+    f"  - {{type: oscillator, sprung_mass: -1.0, stiffness: 1.0e6, speed: 20.0}}\n"
+    for i in range(20000)) + "limits: {wheels: 100000}\n"
+case("many-errors-20000", "rejected",
+     "20,000 errors in one file (diagnostics were quadratic: 15 s for 1.5 MB)",
+     big.replace("sprung_mass: -1.0", "sprung_mass: @@-1.0", 1), "more errors not shown")
+
+# --- structure: keys, variants, references ------------------------------------------
+structural = [
+    ("unknown-top-key", scene(extra="@@colour: red\n"), "unknown field `colour`"),
+    ("unknown-bridge-type", scene(bridge=BEAM.replace("type: beam", "type: @@truss")), "unknown variant `truss`"),
+    ("bridge-type-list", scene(bridge=BEAM.replace("type: beam", "type: @@[beam]")), "must name a variant"),
+    ("missing-name", scene().replace("name: hostile\n", "") .replace("bridge:", "@@bridge:", 1), "missing field `name`"),
+    ("vehicles-empty", scene(vehicles="").replace("vehicles:\n", "vehicles: @@[]\n"), "at least one vehicle"),
+    ("vehicles-null", scene(vehicles="").replace("vehicles:\n", "vehicles@@:\n"), "invalid type"),
+    ("record-vehicle-huge", scene(extra="record:\n  - {name: f, quantity: contact_force, vehicle: @@18446744073709551615, wheel: 1}\n"), "vehicle"),
+    ("record-wheel-zero", scene(extra="record:\n  - {name: f, quantity: contact_force, vehicle: 1, wheel: @@0}\n"), "wheel"),
+    ("record-x-inf", scene(extra="record:\n  - {name: f, quantity: bridge_displacement, x: @@.inf}\n"), "not a finite number"),
+    ("record-x-off", scene(extra="record:\n  - {name: f, quantity: bridge_displacement, x: @@1e300}\n"), "off the bridge"),
+    ("spans-empty", scene(bridge=BEAM.replace("spans: [25.0]", "spans: @@[]")), "at least one span"),
+    ("spans-tiny", scene(bridge=BEAM.replace("[25.0]", "[25.0, @@1e-300]")), "1/1000"),
+    ("spans-huge", scene(bridge=BEAM.replace("spans: [25.0]", "spans: @@[1e300]")), "100 km"),
+    ("axle-spacing-mismatch", scene(vehicles="  - {type: moving_force, loads: [1e4, 1e4], axle_spacings: @@[1, 2, 3], speed: 20}\n"), "axle spacings"),
+    ("newmark-alpha", scene(extra="solver: {newmark: {alpha: @@-5}}\n"), "HHT"),
+    ("damping-ratio-2", scene(bridge=BEAM + "  damping: {type: modal, ratio: @@2}\n"), "damping ratio"),
+    ("sweep-samples-huge", scene(extra="surface: {type: random, class: good}\nstudy: @@{type: speed_sweep, speeds: {from: 10, to: 30, count: 5}, samples: 18446744073709551615}\n"), "limits.study_points"),
+    ("sweep-span-huge", scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: 5}, span: @@18446744073709551615}\n"), "does not exist"),
+    ("sweep-girder-huge", scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: 5}, girder: @@99999}\n"), "does not exist"),
+    ("sweep-roughness-repeated", scene(extra="study: {type: speed_sweep, speeds: {from: 10, to: 30, count: 5}, roughness: [good, @@good]}\n"), "listed twice"),
+    ("plate-lateral-inf", scene(bridge=PLATE, vehicles=OSC + "    lateral_position: @@.inf\n"), "not a finite number"),
+    ("plate-girder-off", scene(bridge=PLATE + "  girder_lines: [@@1e300]\n"), "off the deck"),
+    ("random-terms-zero", scene(extra="surface: {type: random, class: good, terms: @@0}\n"), "between 1 and"),
+    ("random-seed-negative", scene(extra="surface: {type: random, class: good, seed: @@-1}\n"), "out of range"),
+    ("harmonic-wavelength-zero", scene(extra="surface: {type: harmonic, amplitude: 0.001, wavelength: @@0}\n"), "must be positive"),
+    ("dimensionless-velocity-huge", "name: d\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: {velocity_ratio: 1e9, mass_ratio: 1.0, frequency_ratio: 0.5}\n".replace("velocity_ratio: 1e9", "velocity_ratio: @@1e9"), "above 1000"),
+]
+for slug, text, message in structural:
+    outcome = "budget" if message.startswith("limits.") else "rejected"
+    case("struct-" + slug, outcome, slug.replace("-", " "), text, message)
+
+
+def locate(text):
+    """Removes the `@@` marker; returns (text, line, col) of the marker."""
+    is_bytes = isinstance(text, bytes)
+    marker = b"@@" if is_bytes else "@@"
+    at = text.find(marker)
+    if at < 0:
+        return text, None, None
+    before = text[:at]
+    if is_bytes:
+        before = before.decode("utf-8", "replace")
+    # Line breaks as YAML counts them: \n, \r\n, lone \r.
+    lines = before.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    line = len(lines)
+    col = len(lines[-1]) + 1
+    if line == 1 and lines[0].startswith("\ufeff"):
+        col -= 1
+    return text[:at] + text[at + 2:], line, col
+
+
+def main():
+    if os.path.isdir(CASES):
+        shutil.rmtree(CASES)
+    os.makedirs(CASES)
+    names = set()
+    rows = ["# file\toutcome\tline:col\tmessage\twhat it tests"]
+    for file, outcome, what, text, message in cases:
+        assert file not in names, file
+        names.add(file)
+        body, line, col = locate(text)
+        data = body if isinstance(body, bytes) else body.encode("utf-8")
+        with open(os.path.join(CASES, file + ".yaml"), "wb") as f:
+            f.write(data)
+        # A rejected case without a marker (an unclosed bracket: the
+        # scanner notices it at the end) only needs some FILE:LINE:COL.
+        where = f"{line}:{col}" if line is not None else "-"
+        rows.append("\t".join([file + ".yaml", outcome, where, message, what]))
+    with open(os.path.join(HERE, "expected.tsv"), "w", encoding="utf-8") as f:
+        f.write("\n".join(rows) + "\n")
+    print(f"{len(cases)} cases written to {CASES}")
+
+
+if __name__ == "__main__":
+    main()
