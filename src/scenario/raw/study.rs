@@ -42,11 +42,14 @@ pub struct SeparationMapRaw {
 #[serde(deny_unknown_fields)]
 pub struct GridRaw {
     /// First value.
+    #[schemars(transform = crate::schema::positive)]
     pub from: f64,
     /// Last value.
+    #[schemars(transform = crate::schema::positive)]
     pub to: f64,
     /// Number of values (≥ 1; 1 gives `from` only).
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::grid_count)]
     pub count: usize,
 }
 
@@ -82,18 +85,23 @@ pub struct SpeedSweepRaw {
     /// Default 1.
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub samples: Option<usize>,
     /// Span (counted from 1 at the entrance) at whose middle the plots and
     /// the summary show the DAF. Default: the longest span (the first of
     /// equally long ones), e.g. span 2 of the plate paper's 3-span deck.
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
     pub span: Option<usize>,
     /// Girder line (counted from 1 in `bridge.girder_lines`) of the
     /// roughness plot, the DAF map and the summary. Default 1 (a beam has
     /// only line 1).
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub girder: Option<usize>,
 }
 

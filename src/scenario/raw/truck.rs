@@ -8,12 +8,16 @@ use serde::Deserialize;
 #[serde(deny_unknown_fields)]
 pub struct H20TruckRaw {
     /// Constant speed, m/s.
+    #[schemars(transform = crate::schema::speed)]
     pub speed: f64,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     #[serde(default)]
+    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0).
     #[serde(default)]
+    #[schemars(transform = crate::schema::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the truck's centre line on a plate deck, m.
     /// Default: the deck's centre line.
