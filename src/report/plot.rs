@@ -9,13 +9,9 @@
 //! non-positive values on a logarithmic axis. No function here panics on bad data:
 //! inconsistent inputs give [`PlotError::InvalidInput`].
 
-use std::ffi::OsString;
-use std::fs::{self, File};
-use std::io::Write;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
-use std::sync::atomic::{AtomicU64, Ordering};
 
 use plotters::coord::Shift;
 use plotters::coord::cartesian::Cartesian2d;
@@ -314,38 +310,18 @@ fn write_png(path: &Path, rgb: &[u8]) -> Result<(), PlotError> {
     write_atomic(path, &bytes)
 }
 
-/// Writes `bytes` to a temporary file next to `path`, then renames it to `path`.
-/// On failure the temporary file is removed.
+/// Writes `bytes` whole or not at all ([`super::atomic::write_atomic`]).
 fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let file_name = path.file_name().ok_or_else(|| {
-        PlotError::InvalidInput(format!("output path '{}' has no file name", path.display()))
-    })?;
-    let mut tmp_name = OsString::from(".");
-    tmp_name.push(file_name);
-    tmp_name.push(format!(
-        ".{}-{}.tmp",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    let tmp = path.with_file_name(tmp_name);
-    let io_err = |source| PlotError::Io {
+    if path.file_name().is_none() {
+        return Err(PlotError::InvalidInput(format!(
+            "output path '{}' has no file name",
+            path.display()
+        )));
+    }
+    super::atomic::write_atomic(path, bytes).map_err(|source| PlotError::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let mut file = File::create_new(&tmp).map_err(io_err)?;
-    let written = file
-        .write_all(bytes)
-        .and_then(|()| file.sync_all())
-        .and_then(|()| {
-            drop(file);
-            fs::rename(&tmp, path)
-        });
-    if let Err(e) = written {
-        let _ = fs::remove_file(&tmp);
-        return Err(io_err(e));
-    }
-    Ok(())
+    })
 }
 
 mod grid;

@@ -6,6 +6,7 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
+pub mod bridge_only;
 pub mod bridges;
 pub mod content;
 #[allow(missing_docs)]
@@ -76,13 +77,26 @@ impl fmt::Display for Diagnostics<'_> {
 
 /// Reads and resolves a scenario file.
 pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
+    let (source, file) = read_source(path)?;
+    load_str(&source, &file)
+}
+
+/// Reads a scenario file for `vbi modes`, which needs no vehicles
+/// ([`bridge_only::load_for_modes`]).
+pub fn load_file_for_modes(path: &Path) -> Result<bridge_only::ModesScene, LoadError> {
+    let (source, file) = read_source(path)?;
+    bridge_only::load_for_modes(&source, &file)
+}
+
+/// The text of a scenario file and its name for diagnostics.
+fn read_source(path: &Path) -> Result<(String, String), LoadError> {
     let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
         path: path.to_path_buf(),
         source,
     })?;
     let file = path.display().to_string();
     match String::from_utf8(bytes) {
-        Ok(source) => load_str(&source, &file),
+        Ok(source) => Ok((source, file)),
         Err(e) => Err(not_utf8(&file, e.as_bytes(), e.utf8_error().valid_up_to())),
     }
 }

@@ -1,6 +1,7 @@
 //! Unit tests of the parent module.
 
 use super::*;
+use std::fs;
 
 const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
 
