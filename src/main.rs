@@ -167,6 +167,9 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
         Err(e) => return load_error(&e),
     };
     let scenario = loaded.scenario.clone();
+    for warning in vbi::report::advice::scene_warnings(&scenario) {
+        errln!("warning: {}: {warning}", file.display());
+    }
     let out = out.unwrap_or_else(|| default_out(file, ""));
     let bar = if quiet {
         ProgressBar::hidden()
@@ -242,6 +245,9 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
         errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }
+    for warning in vbi::report::advice::run_warnings(&scenario, &outcome.summary) {
+        errln!("warning: {}: {warning}", file.display());
+    }
     if !quiet {
         let s = &outcome.summary;
         errln!(
@@ -271,7 +277,12 @@ fn check(files: &[PathBuf]) -> ExitCode {
     let mut invalid = false;
     for file in files {
         match scenario::load_file(file) {
-            Ok(_) => outln!("{}: ok", file.display()),
+            Ok(loaded) => {
+                outln!("{}: ok", file.display());
+                for warning in vbi::report::advice::scene_warnings(&loaded.scenario) {
+                    errln!("warning: {}: {warning}", file.display());
+                }
+            }
             Err(e) => {
                 invalid = true;
                 errln!("error: {e}");

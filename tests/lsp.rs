@@ -497,6 +497,10 @@ fn values_are_completed_from_enums_with_their_descriptions() {
             ],
         ),
         (
+            "vehicles:\n  - type: moving_force\n    speed: ",
+            &["100 km/h"],
+        ),
+        (
             "record:\n  - dof: ",
             &[
                 "sprung",
@@ -564,6 +568,7 @@ fn a_bad_file_gets_diagnostics_where_vbi_check_would_object() {
         "{MODELINE}name: lsp\n\
          bridge:\n  type: beam\n  spans: [-20.0]\n  bending_stiffness: 3.2e9\n  mass_per_length: 2000.0\n  elements_per_span: 0\n\
          vehicles:\n  - type: moving_force\n    loads: []\n    speed: -20.0\n\
+         \x20 - type: h20_44\n    speed: 80 kmh\n\
          colour: red\n\
          record:\n  - {{name: body, quantity: vehicle_displacement, dof: body}}\n"
     );
@@ -572,14 +577,16 @@ fn a_bad_file_gets_diagnostics_where_vbi_check_would_object() {
         .iter()
         .filter_map(|d| d["range"]["start"]["line"].as_u64())
         .collect();
-    // 0-based lines: 4 spans, 7 elements, 10 loads, 11 speed, 12 colour, 14 dof.
+    // 0-based lines: 4 spans, 7 elements, 10 loads, 11 speed, 13 speed
+    // unit, 14 colour, 16 dof.
     for (line, what) in [
         (4, "negative span"),
         (7, "0 elements"),
         (10, "no loads"),
         (11, "negative speed"),
-        (12, "unknown key"),
-        (14, "unknown dof"),
+        (13, "unknown speed unit"),
+        (14, "unknown key"),
+        (16, "unknown dof"),
     ] {
         assert!(
             lines.contains(&line),

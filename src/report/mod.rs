@@ -1,6 +1,7 @@
 //! The report stage: summary.json, the CSV time history and the resolved
 //! scenario, each written whole or not at all.
 
+pub mod advice;
 pub mod atomic;
 pub mod plot;
 pub mod summary;

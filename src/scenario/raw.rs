@@ -11,8 +11,10 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod speed;
 mod study;
 mod truck;
+pub use self::speed::*;
 pub use self::study::*;
 pub use self::truck::*;
 
@@ -305,9 +307,8 @@ pub struct MovingForceRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::positive_items)]
     pub axle_spacings: Option<Vec<f64>>,
-    /// Constant speed, m/s.
-    #[schemars(transform = crate::schema::speed)]
-    pub speed: f64,
+    /// Constant speed: m/s, or with its unit (`100 km/h`).
+    pub speed: SpeedRaw,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
@@ -347,10 +348,10 @@ pub struct OscillatorRaw {
     #[schemars(transform = crate::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub damping: Option<f64>,
-    /// Constant speed, m/s. Required unless `dimensionless` is given.
+    /// Constant speed: m/s, or with its unit (`100 km/h`). Required unless
+    /// `dimensionless` is given.
     #[serde(default)]
-    #[schemars(transform = crate::schema::speed)]
-    pub speed: Option<f64>,
+    pub speed: Option<SpeedRaw>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]

@@ -330,7 +330,7 @@ fn resolve_vehicles(
         let at = format!("vehicles[{i}]");
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
-                check_speed(ck, &at, v.speed);
+                check_speed(ck, &at, v.speed.0);
                 if v.loads.is_empty() {
                     ck.error(
                         &format!("{at}.loads"),
@@ -360,11 +360,11 @@ fn resolve_vehicles(
                 for (k, &s) in spacings.iter().enumerate() {
                     ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
                 }
-                let entry = entry_time(ck, &at, v.speed, v.entry_time, v.start_position);
+                let entry = entry_time(ck, &at, v.speed.0, v.entry_time, v.start_position);
                 out.push(Vehicle::MovingForce(MovingForce {
                     loads: v.loads.clone(),
                     axle_spacings: spacings,
-                    speed: v.speed,
+                    speed: v.speed.0,
                     entry_time: entry,
                     lateral_position: lateral(ck, &at, v.lateral_position, width, 0.0),
                 }));
@@ -399,7 +399,7 @@ fn resolve_vehicles(
                 let (sprung, stiffness, speed) = (
                     required("sprung_mass", v.sprung_mass),
                     required("stiffness", v.stiffness),
-                    required("speed", v.speed),
+                    required("speed", v.speed.map(|s| s.0)),
                 );
                 check_speed(ck, &at, speed);
                 ck.positive(&format!("{at}.sprung_mass"), sprung, "sprung mass");

@@ -7,9 +7,8 @@ use serde::Deserialize;
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct H20TruckRaw {
-    /// Constant speed, m/s.
-    #[schemars(transform = crate::schema::speed)]
-    pub speed: f64,
+    /// Constant speed: m/s, or with its unit (`100 km/h`).
+    pub speed: super::SpeedRaw,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     #[serde(default)]
     #[schemars(transform = crate::schema::non_negative)]
