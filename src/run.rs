@@ -205,6 +205,7 @@ pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Resu
             report::girder_daf_csv(&outcome.history.girder_dafs).as_bytes(),
         )?;
     }
+    report::history_plot::write_history_plot(&out.join("history.png"), scenario, &outcome.history)?;
     // summary.json last: its presence means the run's results are complete.
     report::write_atomic(&out.join("summary.json"), summary.as_bytes())?;
     Ok(())

@@ -75,6 +75,30 @@ fn file_names(dir: &Path) -> Vec<String> {
     names
 }
 
+/// history.png is a real picture of the histories: a PNG 900 px wide, one
+/// 260 px panel per kind of quantity (the Yang & Yau scene records five:
+/// bridge displacement and acceleration, vehicle displacement and
+/// acceleration, contact force), with the first series' colour (tab10 blue)
+/// drawn over a good part of it and the grey dashed entry/exit lines.
+fn assert_history_picture(path: &Path) {
+    let file = std::fs::File::open(path).expect("history.png");
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .expect("a PNG");
+    let info = decoder.info().clone();
+    let mut rgb = vec![0; decoder.output_buffer_size().expect("size")];
+    decoder.next_frame(&mut rgb).expect("PNG data");
+    assert_eq!(info.width, 900);
+    let panels = (info.height - 85) / 260;
+    assert_eq!(info.height, 85 + 260 * panels, "whole panels");
+    assert_eq!(panels, 5);
+    let pixels: Vec<&[u8]> = rgb.chunks(3).collect();
+    let blue = pixels.iter().filter(|p| **p == [31, 119, 180]).count();
+    let grey = pixels.iter().filter(|p| **p == [120, 120, 120]).count();
+    assert!(blue > 2_000, "{blue} pixels of the first line");
+    assert!(grey > 200, "{grey} pixels of entry/exit lines");
+}
+
 #[test]
 fn run_writes_summary_history_and_resolved_scenario() {
     let scratch = Scratch::new("cli", "run-writes");
@@ -84,11 +108,17 @@ fn run_writes_summary_history_and_resolved_scenario() {
     assert_exit(&out, 0);
     assert_eq!(text(&out.stderr), "", "--quiet prints nothing on stderr");
     assert_eq!(text(&out.stdout), "", "run prints nothing on stdout");
-    // Exactly the three results: no temporary files left from atomic writes.
+    // Exactly the four results: no temporary files left from atomic writes.
     assert_eq!(
         file_names(&out_dir),
-        ["history.csv", "resolved.yaml", "summary.json"]
+        [
+            "history.csv",
+            "history.png",
+            "resolved.yaml",
+            "summary.json"
+        ]
     );
+    assert_history_picture(&out_dir.join("history.png"));
 
     let summary = read_json(&out_dir.join("summary.json"));
     assert_eq!(summary["scenario"], "yang-yau-sprung-mass");

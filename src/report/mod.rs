@@ -3,6 +3,7 @@
 
 pub mod advice;
 pub mod atomic;
+pub mod history_plot;
 pub mod plot;
 pub mod summary;
 pub mod yaml;

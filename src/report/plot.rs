@@ -268,10 +268,19 @@ fn font(size: f64) -> TextStyle<'static> {
 fn render(
     draw: impl FnOnce(&Area<'_>) -> Result<Geometry, PlotError>,
 ) -> Result<Rendered, PlotError> {
+    render_sized(WIDTH, HEIGHT, draw)
+}
+
+/// Draws onto a white `width × height` canvas and returns the pixels.
+fn render_sized(
+    width: u32,
+    height: u32,
+    draw: impl FnOnce(&Area<'_>) -> Result<Geometry, PlotError>,
+) -> Result<Rendered, PlotError> {
     ensure_font()?;
-    let mut rgb = vec![255u8; WIDTH as usize * HEIGHT as usize * 3];
+    let mut rgb = vec![255u8; width as usize * height as usize * 3];
     let geometry = {
-        let root = BitMapBackend::with_buffer(&mut rgb, (WIDTH, HEIGHT)).into_drawing_area();
+        let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(draw_err)?;
         let geometry = draw(&root)?;
         root.present().map_err(draw_err)?;
@@ -294,9 +303,13 @@ fn with_title<'a>(root: &Area<'a>, title: &str) -> Result<Area<'a>, PlotError> {
 // ---------------------------------------------------------------------------
 
 fn encode_png(rgb: &[u8]) -> Result<Vec<u8>, PlotError> {
+    encode_png_sized(rgb, WIDTH, HEIGHT)
+}
+
+fn encode_png_sized(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
     let enc_err = |e: png::EncodingError| PlotError::Encode(e.to_string());
     let mut out = Vec::new();
-    let mut encoder = png::Encoder::new(&mut out, WIDTH, HEIGHT);
+    let mut encoder = png::Encoder::new(&mut out, width, height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     let mut writer = encoder.write_header().map_err(enc_err)?;
@@ -325,10 +338,12 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
 }
 
 mod grid;
+mod history;
 mod line;
 mod scale;
 
 use grid::*;
+pub use history::{Marker, Panel, history_chart};
 use line::*;
 use scale::*;
 
