@@ -30,7 +30,7 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Run a scene and write summary.json, history.csv and resolved.yaml.
+    /// Run a scene and write summary.json, history.csv, history.png and resolved.yaml.
     Run {
         /// The scenario file.
         file: PathBuf,

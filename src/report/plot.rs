@@ -224,6 +224,31 @@ pub fn heat_map(
     write_png(path, &rendered.rgb)
 }
 
+/// A heat map like [`heat_map`] whose rows are named categories (e.g. road
+/// surfaces): row `j` is `categories[j]`, and the y ticks read the names.
+#[allow(clippy::too_many_arguments)]
+pub fn category_heat_map(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    x_values: &[f64],
+    categories: &[String],
+    values: &[f64],
+    value_label: &str,
+) -> Result<(), PlotError> {
+    let rendered = render_category_heat_map(
+        title,
+        x_label,
+        y_label,
+        x_values,
+        categories,
+        values,
+        value_label,
+    )?;
+    write_png(path, &rendered.rgb)
+}
+
 // ---------------------------------------------------------------------------
 // Rendering
 // ---------------------------------------------------------------------------

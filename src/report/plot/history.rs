@@ -102,7 +102,7 @@ pub(super) fn render_history(
 
 /// At most two points (the min and the max, in time order) per `buckets`th
 /// of the x range: what a pixel column can show anyway.
-fn reduce(x: &[f64], y: &[f64], buckets: usize) -> Vec<(f64, f64)> {
+pub(super) fn reduce(x: &[f64], y: &[f64], buckets: usize) -> Vec<(f64, f64)> {
     let points: Vec<(f64, f64)> = x
         .iter()
         .zip(y)
