@@ -158,3 +158,21 @@ fn a_record_that_ends_before_the_peak_is_warned_about() {
     let loaded = load_str(&long, "units.yaml").unwrap();
     assert!(run_warnings(&loaded.scenario, &outcome.summary).is_empty());
 }
+
+#[test]
+fn a_speed_sweep_takes_km_h_too() {
+    let sweep = |speeds: &str| {
+        let text = format!(
+            "{}study:\n  type: speed_sweep\n  speeds: {speeds}\n",
+            scene("20.0", 0.1)
+        );
+        let loaded = load_str(&text, "units.yaml").unwrap_or_else(|e| panic!("{e}"));
+        vbi::run::resolved_yaml(&loaded.scenario)
+    };
+    let in_km_h = sweep("{from: 36 km/h, to: 144 km/h, count: 4}");
+    assert_eq!(in_km_h, sweep("{from: 10.0, to: 40.0, count: 4}"));
+    assert!(
+        in_km_h.contains("from: 10.0") && in_km_h.contains("to: 40.0"),
+        "{in_km_h}"
+    );
+}

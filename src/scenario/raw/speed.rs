@@ -100,6 +100,30 @@ impl JsonSchema for SpeedRaw {
     }
 }
 
+/// Evenly spaced speeds from `from` to `to` inclusive.
+#[derive(Debug, Clone, serde::Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SpeedGridRaw {
+    /// First speed: m/s, or with its unit (`100 km/h`).
+    pub from: SpeedRaw,
+    /// Last speed: m/s, or with its unit (`420 km/h`).
+    pub to: SpeedRaw,
+    /// Number of speeds (≥ 1; 1 gives `from` only).
+    #[schemars(transform = crate::schema::grid_count)]
+    pub count: usize,
+}
+
+impl SpeedGridRaw {
+    /// The grid in m/s.
+    pub fn in_m_s(&self) -> super::GridRaw {
+        super::GridRaw {
+            from: self.from.0,
+            to: self.to.0,
+            count: self.count,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -69,9 +69,10 @@ impl GridRaw {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SpeedSweepRaw {
-    /// Speeds to sweep, m/s (each > 0); every vehicle takes each speed in
-    /// turn. 10–150 km/h is `{from: 2.7778, to: 41.667, count: 15}`.
-    pub speeds: GridRaw,
+    /// Speeds to sweep (each > 0), in m/s or with their unit; every vehicle
+    /// takes each speed in turn. 10–150 km/h is `{from: 10 km/h, to: 150
+    /// km/h, count: 15}` or `{from: 2.7778, to: 41.667, count: 15}`.
+    pub speeds: super::SpeedGridRaw,
     /// Surfaces to sweep: `smooth`, or a roughness class (`very_good`,
     /// `good`, `average`, `poor`, `very_poor`) that replaces the scene's
     /// surface by a random profile of that class (sampling length, terms and
