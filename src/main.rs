@@ -40,6 +40,9 @@ enum Command {
         /// No progress bar.
         #[arg(long, short)]
         quiet: bool,
+        /// Also write the history plot as SVG (history.svg).
+        #[arg(long)]
+        svg: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -125,7 +128,12 @@ const EXIT_INVALID: u8 = 2;
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Run { file, out, quiet } => run(&file, out, quiet),
+        Command::Run {
+            file,
+            out,
+            quiet,
+            svg,
+        } => run(&file, out, quiet, svg),
         Command::Check { files } => check(&files),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -161,7 +169,7 @@ fn load_error(e: &LoadError) -> ExitCode {
     }
 }
 
-fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
+fn run(file: &Path, out: Option<PathBuf>, quiet: bool, svg: bool) -> ExitCode {
     let loaded = match scenario::load_file(file) {
         Ok(l) => l,
         Err(e) => return load_error(&e),
@@ -241,7 +249,7 @@ fn run(file: &Path, out: Option<PathBuf>, quiet: bool) -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
-    if let Err(e) = vbi::run::write_results(&out, &scenario, &outcome) {
+    if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
         errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }

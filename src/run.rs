@@ -187,9 +187,19 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     })
 }
 
-/// Writes `summary.json`, `history.csv` and `resolved.yaml` into `out`
-/// (created if needed), each atomically.
+/// Writes `summary.json`, `history.csv`, `history.png` and `resolved.yaml`
+/// into `out` (created if needed), each atomically.
 pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Result<(), RunError> {
+    write_results_with(out, scenario, outcome, false)
+}
+
+/// [`write_results`], and `history.svg` when `svg`.
+pub fn write_results_with(
+    out: &Path,
+    scenario: &Scenario,
+    outcome: &Outcome,
+    svg: bool,
+) -> Result<(), RunError> {
     create_out(out)?;
     let summary =
         serde_json::to_string_pretty(&outcome.summary).expect("summary serialises") + "\n";
@@ -206,6 +216,13 @@ pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Resu
         )?;
     }
     report::history_plot::write_history_plot(&out.join("history.png"), scenario, &outcome.history)?;
+    if svg {
+        report::history_plot::write_history_svg(
+            &out.join("history.svg"),
+            scenario,
+            &outcome.history,
+        )?;
+    }
     // summary.json last: its presence means the run's results are complete.
     report::write_atomic(&out.join("summary.json"), summary.as_bytes())?;
     Ok(())

@@ -514,3 +514,42 @@ fn the_default_output_folder_comes_from_the_file_not_the_name() {
     }
     assert!(!scratch.dir().join("results/yang-yau-sprung-mass").exists());
 }
+
+/// `--svg` adds the history plot as SVG: the same panels, as vectors.
+#[test]
+fn run_with_svg_writes_the_history_as_svg_too() {
+    let scratch = Scratch::new("cli", "svg");
+    let scenario = quick_yang_yau(&scratch);
+    let out_dir = scratch.path("out");
+    let out = vbi(
+        &[
+            "run".as_ref(),
+            scenario.as_os_str(),
+            "--out".as_ref(),
+            out_dir.as_os_str(),
+            "--quiet".as_ref(),
+            "--svg".as_ref(),
+        ],
+        scratch.dir(),
+    );
+    assert_exit(&out, 0);
+    let svg = std::fs::read_to_string(out_dir.join("history.svg")).expect("history.svg");
+    assert!(
+        svg.starts_with("<svg width=\"900\" height=\"1385\""),
+        "{}",
+        &svg[..80]
+    );
+    // One polyline per recorded history (five) and its static response (one).
+    let lines = svg.matches("<polyline").count();
+    assert!(lines >= 6, "{lines} polylines");
+    for label in [
+        "midspan",
+        "body_acceleration",
+        "contact force (N)",
+        "enters",
+        "leaves",
+    ] {
+        assert!(svg.contains(label), "no `{label}` in the SVG");
+    }
+    assert!(out_dir.join("history.png").is_file());
+}

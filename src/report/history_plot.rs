@@ -50,11 +50,29 @@ pub fn bridge_markers(scenario: &Scenario) -> Vec<Marker> {
         .collect()
 }
 
-/// Writes the history chart of a run to `path`.
+/// Writes the history chart of a run to `path` (PNG).
 pub fn write_history_plot(
     path: &Path,
     scenario: &Scenario,
     history: &History,
+) -> Result<(), PlotError> {
+    draw_history_plot(path, scenario, history, false)
+}
+
+/// Writes the history chart of a run to `path` as SVG.
+pub fn write_history_svg(
+    path: &Path,
+    scenario: &Scenario,
+    history: &History,
+) -> Result<(), PlotError> {
+    draw_history_plot(path, scenario, history, true)
+}
+
+fn draw_history_plot(
+    path: &Path,
+    scenario: &Scenario,
+    history: &History,
+    svg: bool,
 ) -> Result<(), PlotError> {
     // Panels in the order their kind first appears; one per (quantity, unit).
     let mut keys: Vec<(Quantity, &str)> = Vec::new();
@@ -104,5 +122,10 @@ pub fn write_history_plot(
     } else {
         title
     };
-    plot::history_chart(path, &title, "time (s)", &panels, &bridge_markers(scenario))
+    let chart = if svg {
+        plot::history_chart_svg
+    } else {
+        plot::history_chart
+    };
+    chart(path, &title, "time (s)", &panels, &bridge_markers(scenario))
 }

@@ -368,7 +368,7 @@ mod line;
 mod scale;
 
 use grid::*;
-pub use history::{Marker, Panel, history_chart};
+pub use history::{Marker, Panel, history_chart, history_chart_svg};
 use line::*;
 use scale::*;
 

@@ -69,35 +69,69 @@ pub(super) fn render_history(
             )));
         }
     }
-    let all = || {
-        panels
-            .iter()
-            .flat_map(|p| p.series.iter().chain(&p.references))
-    };
-    let (x_lo, x_hi) = min_max(
-        all()
-            .flat_map(|s| s.x.iter().copied())
-            .filter(|&v| usable(v)),
-    );
-    let x_range = linear_range(x_lo, x_hi, 0.0);
-    let height = TITLE_BAND + PANEL_HEIGHT * panels.len() as u32 + 40;
+    let x_range = x_range_of(panels);
+    let height = history_height(panels);
     let rendered = render_sized(WIDTH, height, |root| {
-        let body = with_title(root, title)?;
-        let rows = body.split_evenly((panels.len(), 1));
-        for (k, (panel, area)) in panels.iter().zip(&rows).enumerate() {
-            let last = k + 1 == panels.len();
-            draw_panel(
-                area,
-                panel,
-                &x_range,
-                if last { x_label } else { "" },
-                markers,
-                k == 0,
-            )?;
-        }
+        draw_history(root, title, x_label, panels, markers, &x_range)?;
         Ok(Geometry::default())
     })?;
     Ok((rendered.rgb, height))
+}
+
+/// The time axis: every series' finite abscissae.
+fn x_range_of(panels: &[Panel]) -> Range<f64> {
+    let (x_lo, x_hi) = min_max(
+        panels
+            .iter()
+            .flat_map(|p| p.series.iter().chain(&p.references))
+            .flat_map(|s| s.x.iter().copied())
+            .filter(|&v| usable(v)),
+    );
+    linear_range(x_lo, x_hi, 0.0)
+}
+
+fn history_height(panels: &[Panel]) -> u32 {
+    TITLE_BAND + PANEL_HEIGHT * panels.len() as u32 + 40
+}
+
+/// [`history_chart`] as SVG (vector, for reports): the same drawing.
+pub fn history_chart_svg(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    panels: &[Panel],
+    markers: &[Marker],
+) -> Result<(), PlotError> {
+    // The same checks as the PNG (and the same picture, drawn as vectors).
+    render_history(title, x_label, panels, markers)?;
+    ensure_font()?;
+    let mut svg = String::new();
+    {
+        let root =
+            SVGBackend::with_string(&mut svg, (WIDTH, history_height(panels))).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_err)?;
+        draw_history(&root, title, x_label, panels, markers, &x_range_of(panels))?;
+        root.present().map_err(draw_err)?;
+    }
+    write_atomic(path, svg.as_bytes())
+}
+
+fn draw_history<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    title: &str,
+    x_label: &str,
+    panels: &[Panel],
+    markers: &[Marker],
+    x_range: &Range<f64>,
+) -> Result<(), PlotError> {
+    let body = root.titled(title, font(TITLE_SIZE)).map_err(draw_err)?;
+    let rows = body.split_evenly((panels.len(), 1));
+    for (k, (panel, area)) in panels.iter().zip(&rows).enumerate() {
+        let last = k + 1 == panels.len();
+        let x_label = if last { x_label } else { "" };
+        draw_panel(area, panel, x_range, x_label, markers, k == 0)?;
+    }
+    Ok(())
 }
 
 /// At most two points (the min and the max, in time order) per `buckets`th
@@ -128,8 +162,8 @@ pub(super) fn reduce(x: &[f64], y: &[f64], buckets: usize) -> Vec<(f64, f64)> {
     out
 }
 
-fn draw_panel(
-    area: &Area<'_>,
+fn draw_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
     panel: &Panel,
     x_range: &Range<f64>,
     x_label: &str,
@@ -174,24 +208,40 @@ fn draw_panel(
         .map_err(draw_err)?;
     // Entry and exit lines under the data.
     let marker_style = RGBColor(120, 120, 120).stroke_width(1);
-    for m in markers.iter().filter(|m| x_range.contains(&m.x)) {
+    // A vehicle that leaves as the record ends (no free vibration) still
+    // gets its line, at the right edge (up to rounding of its exit time).
+    let slack = 1e-9 * (x_range.end - x_range.start);
+    for m in markers
+        .iter()
+        .filter(|m| m.x >= x_range.start - slack && m.x <= x_range.end + slack)
+    {
+        let x = m.x.clamp(x_range.start, x_range.end);
         chart
             .draw_series(DashedLineSeries::new(
-                [(m.x, y_range.start), (m.x, y_range.end)],
+                [(x, y_range.start), (x, y_range.end)],
                 6,
                 4,
                 marker_style,
             ))
             .map_err(draw_err)?;
         if label_markers {
-            let at = chart.backend_coord(&(m.x, y_range.end));
+            let at = chart.backend_coord(&(x, y_range.end));
+            // Right of the line, or left of it near the right edge.
+            let near_end = x > x_range.start + 0.9 * (x_range.end - x_range.start);
+            let style = font(LABEL_SIZE - 2.0).color(&RGBColor(90, 90, 90));
+            let style = if near_end {
+                style.pos(Pos::new(HPos::Right, VPos::Top))
+            } else {
+                style
+            };
+            let dx = if near_end { -3 } else { 3 };
             area.draw(&Text::new(
                 m.label.clone(),
                 (
-                    at.0 + 3 - area.get_base_pixel().0,
+                    at.0 + dx - area.get_base_pixel().0,
                     at.1 + 2 - area.get_base_pixel().1,
                 ),
-                font(LABEL_SIZE - 2.0).color(&RGBColor(90, 90, 90)),
+                style,
             ))
             .map_err(draw_err)?;
         }

@@ -209,8 +209,8 @@ where
 }
 
 /// The plotting-area corner where the legend box covers the least of the lines.
-pub(super) fn legend_position<X, Y>(
-    chart: &ChartContext<'_, BitMapBackend<'_>, Cartesian2d<X, Y>>,
+pub(super) fn legend_position<DB: DrawingBackend, X, Y>(
+    chart: &ChartContext<'_, DB, Cartesian2d<X, Y>>,
     series: &[Series],
     runs: &[Vec<Vec<(f64, f64)>>],
 ) -> Result<SeriesLabelPosition, PlotError>
