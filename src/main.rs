@@ -1,8 +1,19 @@
 //! The `vbi` command line: parses arguments, calls the library, prints, and
 //! maps errors to exit codes (0 success, 1 a run failed, 2 invalid input).
+//!
+//! Streams follow the usual convention: stdout carries what a command
+//! produces (the schema, `check`'s verdicts, the modes table, mode shapes
+//! with `--shapes -`, the convergence table), stderr everything about the
+//! work (progress, run summaries, notes, errors). A reader that closes either
+//! early (`vbi check *.yaml | head -1`) ends that output, not the program:
+//! later writes to it are dropped, the command still writes its files and
+//! exits with its usual code.
 
+use std::fmt;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -23,16 +34,19 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Run a scene and write summary.json, history.csv and resolved.yaml.
+    /// Run a scene and write summary.json, history.csv, history.png and resolved.yaml.
     Run {
         /// The scenario file.
         file: PathBuf,
-        /// Output folder. Default: results/<scenario name>.
+        /// Output folder. Default: results/<file stem> (results/bridge for bridge.yaml).
         #[arg(long)]
         out: Option<PathBuf>,
         /// No progress bar.
         #[arg(long, short)]
         quiet: bool,
+        /// Also write the history plot as SVG (history.svg).
+        #[arg(long)]
+        svg: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -46,7 +60,7 @@ enum Command {
     Modes {
         /// The scenario file.
         file: PathBuf,
-        /// Write mode shapes at the mesh nodes to this CSV file.
+        /// Write mode shapes at the mesh nodes to this CSV file (`-`: stdout).
         #[arg(long)]
         shapes: Option<PathBuf>,
     },
@@ -62,13 +76,54 @@ enum Command {
         /// Runs on the time-step ladder (the scenario's step × 1, 2, 4, …).
         #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=16))]
         levels: u32,
-        /// Output folder. Default: results/<scenario name>-converge.
+        /// Output folder. Default: results/<file stem>-converge.
         #[arg(long)]
         out: Option<PathBuf>,
         /// No progress and no closing message (the table is still printed).
         #[arg(long, short)]
         quiet: bool,
     },
+}
+
+/// Whether stdout / stderr still has a reader.
+static STDOUT_OPEN: AtomicBool = AtomicBool::new(true);
+static STDERR_OPEN: AtomicBool = AtomicBool::new(true);
+
+/// Writes to stdout (`to_stderr` false) or stderr; a failed write (a closed
+/// pipe) marks the stream closed instead of panicking as `println!` does.
+fn emit(to_stderr: bool, args: fmt::Arguments<'_>) {
+    let open = if to_stderr {
+        &STDERR_OPEN
+    } else {
+        &STDOUT_OPEN
+    };
+    if !open.load(Ordering::Relaxed) {
+        return;
+    }
+    let written = if to_stderr {
+        let mut stream = std::io::stderr().lock();
+        stream.write_fmt(args).and_then(|()| stream.flush())
+    } else {
+        let mut stream = std::io::stdout().lock();
+        stream.write_fmt(args).and_then(|()| stream.flush())
+    };
+    if written.is_err() {
+        open.store(false, Ordering::Relaxed);
+    }
+}
+
+/// `out!` to stdout that survives a closed pipe.
+macro_rules! out {
+    ($($arg:tt)*) => { emit(false, format_args!($($arg)*)) };
+}
+/// `println!` to stdout that survives a closed pipe.
+macro_rules! outln {
+    () => { emit(false, format_args!("\n")) };
+    ($($arg:tt)*) => { emit(false, format_args!("{}\n", format_args!($($arg)*))) };
+}
+/// `errln!` that survives a closed pipe.
+macro_rules! errln {
+    ($($arg:tt)*) => { emit(true, format_args!("{}\n", format_args!($($arg)*))) };
 }
 
 const EXIT_FAILED: u8 = 1;
@@ -81,13 +136,18 @@ fn main() -> ExitCode {
     };
     let load = |file: &Path| scenario::load_file_with(file, options);
     match cli.command {
-        Command::Run { file, out, quiet } => run(load(&file), &file, out, quiet),
+        Command::Run {
+            file,
+            out,
+            quiet,
+            svg,
+        } => run(load(&file), &file, out, quiet, svg),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
-            print!("{}", vbi::schema::schema_json());
+            out!("{}", vbi::schema::schema_json());
             ExitCode::SUCCESS
         }
-        Command::Modes { file, shapes } => modes(load(&file), shapes.as_deref()),
+        Command::Modes { file, shapes } => modes(&file, shapes.as_deref()),
         Command::Converge {
             file,
             tolerance,
@@ -98,8 +158,19 @@ fn main() -> ExitCode {
     }
 }
 
+/// The default output folder: `results/<file stem><suffix>`. From the file,
+/// not the scene's `name`: two files that share a `name` do not overwrite
+/// each other's results, and a `name` with `/` or `..` cannot lead outside
+/// `results/`.
+fn default_out(file: &Path, suffix: &str) -> PathBuf {
+    let stem = file
+        .file_stem()
+        .map_or_else(|| "scene".into(), |s| s.to_string_lossy());
+    Path::new("results").join(format!("{stem}{suffix}"))
+}
+
 fn load_error(e: &LoadError) -> ExitCode {
-    eprintln!("error: {e}");
+    errln!("error: {e}");
     match e {
         LoadError::Io { .. } => ExitCode::from(EXIT_INVALID),
         LoadError::Invalid(_) => ExitCode::from(EXIT_INVALID),
@@ -111,13 +182,17 @@ fn run(
     file: &Path,
     out: Option<PathBuf>,
     quiet: bool,
+    svg: bool,
 ) -> ExitCode {
     let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
     let scenario = loaded.scenario.clone();
-    let out = out.unwrap_or_else(|| vbi::run::default_out(&scenario.name, ""));
+    for warning in vbi::report::advice::scene_warnings(&scenario) {
+        errln!("warning: {}: {warning}", file.display());
+    }
+    let out = out.unwrap_or_else(|| default_out(file, ""));
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
@@ -138,7 +213,7 @@ fn run(
         Ok(r) => r,
         Err(e) => {
             bar.abandon();
-            eprintln!("error: {}: {e}", file.display());
+            errln!("error: {}: {e}", file.display());
             return ExitCode::from(EXIT_FAILED);
         }
     };
@@ -147,24 +222,24 @@ fn run(
         vbi::run::Results::Scene(outcome) => outcome,
         vbi::run::Results::SeparationMap(map) => {
             if let Err(e) = vbi::run::write_study(&out, &scenario, &map) {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(EXIT_FAILED);
             }
             if !quiet {
-                eprintln!(
+                errln!(
                     "{}: separation map of {} points, {} separated, {:.2} s",
                     scenario.name,
                     map.points.len(),
                     map.separated_count(),
                     map.wall_time
                 );
-                eprintln!("results in {}", out.display());
+                errln!("results in {}", out.display());
             }
             return ExitCode::SUCCESS;
         }
         vbi::run::Results::SpeedSweep(sweep) => {
             if let Err(e) = vbi::run::write_speed_sweep(&out, &scenario, &sweep) {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(EXIT_FAILED);
             }
             if !quiet {
@@ -177,24 +252,27 @@ fn run(
                         )
                     })
                     .unwrap_or_default();
-                eprintln!(
+                errln!(
                     "{}: speed sweep of {} runs{largest}, {:.2} s",
                     scenario.name,
                     sweep.points.len(),
                     sweep.wall_time
                 );
-                eprintln!("results in {}", out.display());
+                errln!("results in {}", out.display());
             }
             return ExitCode::SUCCESS;
         }
     };
-    if let Err(e) = vbi::run::write_results(&out, &scenario, &outcome) {
-        eprintln!("error: {e}");
+    if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
+        errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
+    }
+    for warning in vbi::report::advice::run_warnings(&scenario, &outcome.summary) {
+        errln!("warning: {}: {warning}", file.display());
     }
     if !quiet {
         let s = &outcome.summary;
-        eprintln!(
+        errln!(
             "{}: {} steps of {:.3e} s, {} modes, {:.1} ms",
             s.scenario,
             s.run.steps,
@@ -204,12 +282,15 @@ fn run(
         );
         for q in &s.quantities {
             let daf = q.daf.map(|d| format!("  DAF {d:.4}")).unwrap_or_default();
-            eprintln!(
+            errln!(
                 "  {:<24} max|.| {:>12.5e} {} at t = {:.4} s{daf}",
-                q.name, q.max_abs.value, q.unit, q.max_abs.time
+                q.name,
+                q.max_abs.value,
+                q.unit,
+                q.max_abs.time
             );
         }
-        eprintln!("results in {}", out.display());
+        errln!("results in {}", out.display());
     }
     ExitCode::SUCCESS
 }
@@ -221,10 +302,15 @@ fn check(
     let mut invalid = false;
     for file in files {
         match load(file) {
-            Ok(_) => println!("{}: ok", file.display()),
+            Ok(loaded) => {
+                outln!("{}: ok", file.display());
+                for warning in vbi::report::advice::scene_warnings(&loaded.scenario) {
+                    errln!("warning: {}: {warning}", file.display());
+                }
+            }
             Err(e) => {
                 invalid = true;
-                eprintln!("error: {e}");
+                errln!("error: {e}");
             }
         }
     }
@@ -235,18 +321,19 @@ fn check(
     }
 }
 
-fn modes(loaded: Result<scenario::Loaded, LoadError>, shapes: Option<&Path>) -> ExitCode {
-    let loaded = match loaded {
-        Ok(l) => l,
+fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
+    let vbi::scenario::bridge_only::ModesScene {
+        name,
+        bridge,
+        scenario,
+    } = match scenario::load_file_for_modes(file) {
+        Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };
-    let bridge = &loaded.bridge;
     let plate = bridge.width().is_some();
-    // The table is built whole, then written once: a reader that closes the
-    // pipe early (`vbi modes f.yaml | head`) ends the output, not the program.
-    let mut table = format!(
+    out!(
         "{}: {} modes used of {} available ({})\n{:>5} {:>14} {:>14} {:>12}{}\n",
-        loaded.scenario.name,
+        name,
         bridge.mode_count(),
         bridge.available_modes,
         bridge.selection,
@@ -263,38 +350,62 @@ fn modes(loaded: Result<scenario::Loaded, LoadError>, shapes: Option<&Path>) -> 
         .zip(&bridge.damping_ratios)
         .enumerate()
     {
-        table.push_str(&format!(
-            "{:>5} {:>14.6} {:>14.6} {:>12.4}",
+        let character = if plate {
+            format!("  {}", bridge.mode_character(i))
+        } else {
+            String::new()
+        };
+        outln!(
+            "{:>5} {:>14.6} {:>14.6} {:>12.4}{character}",
             i + 1,
             f,
             1.0 / f,
             z
-        ));
-        if plate {
-            table.push_str(&format!("  {}", bridge.mode_character(i)));
-        }
-        table.push('\n');
+        );
     }
-    {
-        use std::io::Write;
-        let mut stdout = std::io::stdout().lock();
-        if stdout
-            .write_all(table.as_bytes())
-            .and_then(|()| stdout.flush())
-            .is_err()
-        {
-            return ExitCode::SUCCESS;
-        }
+    if let Some(scenario) = &scenario {
+        print_vehicle_frequencies(scenario);
     }
     if let Some(path) = shapes {
-        let text = vbi::report::mode_shapes_csv(bridge);
-        if let Err(e) = vbi::report::write_atomic(path, text.as_bytes()) {
-            eprintln!("error: {e}");
-            return ExitCode::from(EXIT_FAILED);
+        let text = vbi::report::mode_shapes_csv(&bridge);
+        if path == Path::new("-") {
+            out!("{text}");
+        } else {
+            if let Err(e) = vbi::report::write_atomic(path, text.as_bytes()) {
+                errln!("error: {e}");
+                return ExitCode::from(EXIT_FAILED);
+            }
+            errln!("mode shapes written to {}", path.display());
         }
-        println!("mode shapes written to {}", path.display());
     }
     ExitCode::SUCCESS
+}
+
+/// Each vehicle's own natural frequencies with its wheels held on rigid
+/// ground (massless DOFs condensed out), to set against the bridge's.
+fn print_vehicle_frequencies(scenario: &vbi::scenario::resolved::Scenario) {
+    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::vehicle::VehicleModel;
+    let hz = |f: &[f64]| {
+        if f.is_empty() {
+            "none (no mass on springs)".to_string()
+        } else {
+            f.iter()
+                .map(|f| format!("{f:.4}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    };
+    outln!("vehicle natural frequencies, Hz (wheels on rigid ground):");
+    for (i, vehicle) in scenario.vehicles.iter().enumerate() {
+        let model = VehicleModel::build(vehicle, scenario.gravity);
+        outln!(
+            "{:>5} {:<14} {}",
+            i + 1,
+            vehicle.type_name(),
+            hz(&vehicle_frequencies(&model, None))
+        );
+    }
 }
 
 fn converge(
@@ -310,10 +421,9 @@ fn converge(
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
-    let name = loaded.scenario.name.clone();
-    let out = out.unwrap_or_else(|| vbi::run::default_out(&name, "-converge"));
+    let out = out.unwrap_or_else(|| default_out(file, "-converge"));
     if loaded.scenario.study.is_some() && !quiet {
-        eprintln!(
+        errln!(
             "note: {}: the study section is ignored; converging the base scene",
             file.display()
         );
@@ -342,7 +452,7 @@ fn converge(
         Ok(s) => s,
         Err(e) => {
             bar.abandon();
-            eprintln!("error: {}: {e}", file.display());
+            errln!("error: {}: {e}", file.display());
             let code = match e {
                 ConvergeError::Options(_) => EXIT_INVALID,
                 _ => EXIT_FAILED,
@@ -364,11 +474,11 @@ fn converge(
                 .map_err(|e| e.to_string())
         });
     if let Err(e) = written {
-        eprintln!("error: {e}");
+        errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }
     if !quiet {
-        eprintln!("results in {}", out.display());
+        errln!("results in {}", out.display());
     }
     ExitCode::SUCCESS
 }
@@ -391,39 +501,45 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
     }))
     .collect();
     let width = rows.iter().map(|r| r.0.len()).max().unwrap_or(0).max(3);
-    println!(
+    outln!(
         "{}: convergence against {}",
-        study.scenario, reference.label
+        study.scenario,
+        reference.label
     );
-    println!(
+    outln!(
         "{:<width$} {:>10} {:>6} {:>10} {:>14} {:>14}",
-        "run", "dt_s", "modes", "wall_ms", "max_abs_err_%", "rms_err_%"
+        "run",
+        "dt_s",
+        "modes",
+        "wall_ms",
+        "max_abs_err_%",
+        "rms_err_%"
     );
     for (label, run, max_abs, rms) in &rows {
         let wall = run
             .wall_time
             .map_or("-".to_string(), |t| format!("{:.2}", 1e3 * t));
-        print!(
+        out!(
             "{label:<width$} {:>10} {:>6} {wall:>10} {max_abs:>14} {rms:>14}",
             short(run.time_step),
             run.modes,
         );
         match &run.errors {
-            Err(message) => println!("  failed: {message}"),
-            Ok(_) => println!(),
+            Err(message) => outln!("  failed: {message}"),
+            Ok(_) => outln!(),
         }
     }
     let names = study.quantities();
     if study.orders.is_empty() {
-        println!("observed order: none (fewer than two successful time-step runs)");
+        outln!("observed order: none (fewer than two successful time-step runs)");
     } else {
         let col = names.iter().map(|n| n.len()).max().unwrap_or(0).max(6);
-        println!("observed order p = log2(e(2h)/e(h)) of the max-abs error:");
-        print!("{:<24}", "dt halving");
+        outln!("observed order p = log2(e(2h)/e(h)) of the max-abs error:");
+        out!("{:<24}", "dt halving");
         for n in &names {
-            print!(" {n:>col$}");
+            out!(" {n:>col$}");
         }
-        println!();
+        outln!();
         let mut pairs: Vec<(f64, f64)> = study
             .orders
             .iter()
@@ -436,24 +552,24 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
                 vbi::study::converge::short(coarse),
                 vbi::study::converge::short(fine)
             );
-            print!("{pair:<24}");
+            out!("{pair:<24}");
             for n in &names {
                 let p = study
                     .orders
                     .iter()
                     .find(|o| o.coarse_step == coarse && o.quantity == *n)
                     .map_or("-".to_string(), |o| format!("{:.3}", o.order));
-                print!(" {p:>col$}");
+                out!(" {p:>col$}");
             }
-            println!();
+            outln!();
         }
         if let Some(m) = study.median_order {
-            println!("median observed order: {m:.3}");
+            outln!("median observed order: {m:.3}");
         }
     }
     let tolerance = vbi::study::converge::percent(study.tolerance);
     match study.cheapest_run() {
-        Some(run) => println!("cheapest within {tolerance} %: {}", run.label),
-        None => println!("cheapest within {tolerance} %: none (every run's error exceeds it)"),
+        Some(run) => outln!("cheapest within {tolerance} %: {}", run.label),
+        None => outln!("cheapest within {tolerance} %: none (every run's error exceeds it)"),
     }
 }

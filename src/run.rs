@@ -200,9 +200,19 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     })
 }
 
-/// Writes `summary.json`, `history.csv` and `resolved.yaml` into `out`
-/// (created if needed), each atomically.
+/// Writes `summary.json`, `history.csv`, `history.png` and `resolved.yaml`
+/// into `out` (created if needed), each atomically.
 pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Result<(), RunError> {
+    write_results_with(out, scenario, outcome, false)
+}
+
+/// [`write_results`], and `history.svg` when `svg`.
+pub fn write_results_with(
+    out: &Path,
+    scenario: &Scenario,
+    outcome: &Outcome,
+    svg: bool,
+) -> Result<(), RunError> {
     create_out(out)?;
     let summary =
         serde_json::to_string_pretty(&outcome.summary).expect("summary serialises") + "\n";
@@ -216,6 +226,14 @@ pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Resu
         report::write_atomic(
             &out.join("daf_table.csv"),
             report::girder_daf_csv(&outcome.history.girder_dafs).as_bytes(),
+        )?;
+    }
+    report::history_plot::write_history_plot(&out.join("history.png"), scenario, &outcome.history)?;
+    if svg {
+        report::history_plot::write_history_svg(
+            &out.join("history.svg"),
+            scenario,
+            &outcome.history,
         )?;
     }
     // summary.json last: its presence means the run's results are complete.

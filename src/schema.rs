@@ -1,6 +1,18 @@
 //! The JSON Schema of the scenario format, generated from the serde types.
+//!
+//! schemars writes what the types say; editors (the YAML language server)
+//! need a little more to complete and check well, which [`schema_json`] adds
+//! after generation: no `"default": null` (the language server throws on it
+//! and stops completing), optional fields without the `null` alternative
+//! (nobody writes `gravity: ~`, and the alternative hides the object type the
+//! server needs to insert `key:` and a new line), `"type": "object"` on every
+//! tagged union, and each tag described by its variant's text. The value
+//! rules (`exclusiveMinimum`, `minItems`, …) sit on the fields themselves as
+//! `#[schemars(transform = …)]` with the functions below, each mirroring a
+//! check of `vbi check` (tests/schema.rs holds the two to the same limits).
 
-use serde_json::Value;
+use schemars::Schema;
+use serde_json::{Map, Value};
 
 use crate::scenario::raw::ScenarioRaw;
 
@@ -10,28 +22,265 @@ pub fn schema_json() -> String {
     let mut schema = schemars::schema_for!(ScenarioRaw);
     schema.insert("title".into(), "vbi scenario".into());
     let mut value = schema.to_value();
+    tidy_optional(&mut value);
+    type_unions(&mut value);
     describe_tags(&mut value);
+    unwrap_descriptions(&mut value);
     serde_json::to_string_pretty(&value).expect("schema serialises") + "\n"
 }
 
+/// Removes `"default": null` and the `null` alternative of optional fields:
+/// `{"type": ["number", "null"]}` → `{"type": "number"}` and
+/// `{"anyOf": [{"$ref": …}, {"type": "null"}]}` → `{"$ref": …}`.
+fn tidy_optional(value: &mut Value) {
+    match value {
+        Value::Object(map) => {
+            if map.get("default") == Some(&Value::Null) {
+                map.remove("default");
+            }
+            if let Some(Value::Array(types)) = map.get_mut("type") {
+                types.retain(|t| t != "null");
+                if types.len() == 1 {
+                    let only = types.remove(0);
+                    map.insert("type".into(), only);
+                }
+            }
+            if let Some(Value::Array(alternatives)) = map.get("anyOf") {
+                let is_null = |v: &Value| v.get("type") == Some(&Value::from("null"));
+                if alternatives.len() == 2 && alternatives.iter().any(is_null) {
+                    let kept = alternatives
+                        .iter()
+                        .find(|v| !is_null(v))
+                        .cloned()
+                        .unwrap_or_default();
+                    map.remove("anyOf");
+                    if let Value::Object(inner) = kept {
+                        for (k, v) in inner {
+                            map.entry(k).or_insert(v);
+                        }
+                    }
+                }
+            }
+            map.values_mut().for_each(tidy_optional);
+        }
+        Value::Array(items) => items.iter_mut().for_each(tidy_optional),
+        _ => {}
+    }
+}
+
+/// A `oneOf` whose alternatives are all objects (a tagged union) gets
+/// `"type": "object"` itself, so that an editor accepting the key that holds
+/// it inserts `key:` and a new line rather than a bare `key`.
+fn type_unions(value: &mut Value) {
+    match value {
+        Value::Object(map) => {
+            let all_objects = map
+                .get("oneOf")
+                .and_then(Value::as_array)
+                .is_some_and(|alts| {
+                    !alts.is_empty()
+                        && alts
+                            .iter()
+                            .all(|a| a.get("type") == Some(&Value::from("object")))
+                });
+            if all_objects && !map.contains_key("type") {
+                map.insert("type".into(), "object".into());
+            }
+            map.values_mut().for_each(type_unions);
+        }
+        Value::Array(items) => items.iter_mut().for_each(type_unions),
+        _ => {}
+    }
+}
+
 /// schemars adds the `type` tag of each tagged-union variant without a
-/// description; editors show descriptions on hover, so give every tag one.
+/// description; editors show it on hover over `type: …` and beside the
+/// completion of the value, so it carries the variant's own text.
 fn describe_tags(value: &mut Value) {
     match value {
         Value::Object(map) => {
+            let variant_text = map
+                .get("description")
+                .and_then(Value::as_str)
+                .map(str::to_owned);
             if let Some(Value::Object(tag)) =
                 map.get_mut("properties").and_then(|p| p.get_mut("type"))
                 && !tag.contains_key("description")
                 && let Some(Value::String(variant)) = tag.get("const").cloned()
             {
-                tag.insert(
-                    "description".into(),
-                    Value::String(format!("Selects this variant: `{variant}`.")),
-                );
+                let text = match variant_text {
+                    Some(text) => format!("`{variant}`: {text}"),
+                    None => format!("Selects this variant: `{variant}`."),
+                };
+                tag.insert("description".into(), Value::String(text));
             }
             map.values_mut().for_each(describe_tags);
         }
         Value::Array(items) => items.iter_mut().for_each(describe_tags),
         _ => {}
     }
+}
+
+/// Doc comments are wrapped at ~80 columns; editors render each line break
+/// of a description as a new paragraph, so lines are joined within a
+/// paragraph (a blank line, or a line starting a `-` list item, still
+/// breaks).
+fn unwrap_descriptions(value: &mut Value) {
+    match value {
+        Value::Object(map) => {
+            if let Some(Value::String(text)) = map.get_mut("description") {
+                *text = unwrap_paragraphs(text);
+            }
+            map.values_mut().for_each(unwrap_descriptions);
+        }
+        Value::Array(items) => items.iter_mut().for_each(unwrap_descriptions),
+        _ => {}
+    }
+}
+
+fn unwrap_paragraphs(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut lines = text.lines().peekable();
+    while let Some(line) = lines.next() {
+        out.push_str(line);
+        if let Some(next) = lines.peek() {
+            let breaks = line.trim().is_empty()
+                || next.trim().is_empty()
+                || next.trim_start().starts_with("- ");
+            out.push(if breaks { '\n' } else { ' ' });
+        }
+    }
+    out
+}
+
+// ---------------------------------------------------------------------------
+// Value rules for `#[schemars(transform = …)]`, each the schema side of a
+// check in src/scenario (named in its doc).
+// ---------------------------------------------------------------------------
+
+fn set(schema: &mut Schema, key: &str, value: impl Into<Value>) {
+    schema.insert(key.into(), value.into());
+}
+
+/// The items of an array schema (`"items"`), created if absent.
+fn items(schema: &mut Schema) -> &mut Map<String, Value> {
+    let items = schema
+        .ensure_object()
+        .entry("items")
+        .or_insert_with(|| Value::Object(Map::new()));
+    if !items.is_object() {
+        *items = Value::Object(Map::new());
+    }
+    items.as_object_mut().expect("an object was just put there")
+}
+
+/// A number > 0 (`Checker::positive`).
+pub fn positive(schema: &mut Schema) {
+    set(schema, "exclusiveMinimum", 0.0);
+}
+
+/// A number ≥ 0 (`Checker::non_negative`).
+pub fn non_negative(schema: &mut Schema) {
+    set(schema, "minimum", 0.0);
+}
+
+/// A number ≤ 0 (a start position on the approach).
+pub fn non_positive(schema: &mut Schema) {
+    set(schema, "maximum", 0.0);
+}
+
+/// A ratio in [0, 1) (`check_ratio`: damping ratios).
+pub fn ratio(schema: &mut Schema) {
+    set(schema, "minimum", 0.0);
+    set(schema, "exclusiveMaximum", 1.0);
+}
+
+/// A count ≥ 1 (modes, elements, terms, grid points, samples, spans…).
+pub fn at_least_one(schema: &mut Schema) {
+    set(schema, "minimum", 1);
+}
+
+/// A list with at least one entry.
+pub fn non_empty(schema: &mut Schema) {
+    set(schema, "minItems", 1);
+}
+
+/// A list with at least one entry, each > 0 (spans, axle loads).
+pub fn positive_list(schema: &mut Schema) {
+    non_empty(schema);
+    items(schema).insert("exclusiveMinimum".into(), 0.0.into());
+}
+
+/// A list whose entries are each > 0 (axle spacings, Rayleigh frequencies).
+pub fn positive_items(schema: &mut Schema) {
+    items(schema).insert("exclusiveMinimum".into(), 0.0.into());
+}
+
+/// A list with at least one entry, each ≥ 0 (girder lines).
+pub fn non_negative_list(schema: &mut Schema) {
+    non_empty(schema);
+    items(schema).insert("minimum".into(), 0.0.into());
+}
+
+/// A speed in m/s: > 0 and at most [`crate::scenario::resolve::MAX_SPEED`] (`check_speed`).
+pub fn speed(schema: &mut Schema) {
+    positive(schema);
+    set(schema, "maximum", crate::scenario::resolve::MAX_SPEED);
+}
+
+/// A non-empty name (`name`, record names).
+pub fn non_empty_string(schema: &mut Schema) {
+    set(schema, "minLength", 1);
+}
+
+/// The vehicle DOF names `record: … dof:` accepts (every vehicle type's;
+/// `vbi check` then checks the name against the recorded vehicle's type).
+pub fn dof_name(schema: &mut Schema) {
+    let names: Vec<Value> = crate::vehicle::oscillator::DOF_NAMES
+        .iter()
+        .chain(crate::vehicle::h20_44::DOF_NAMES.iter())
+        .map(|&n| Value::from(n))
+        .collect();
+    set(schema, "enum", names);
+}
+
+/// Elements per span: 1 to 10 000 (`bridges::elements`).
+pub fn elements_per_span(schema: &mut Schema) {
+    at_least_one(schema);
+    set(schema, "maximum", 10_000);
+}
+
+/// An isotropic plate's Poisson ratio, in [0, 0.5).
+pub fn isotropic_poisson(schema: &mut Schema) {
+    set(schema, "minimum", 0.0);
+    set(schema, "exclusiveMaximum", 0.5);
+}
+
+/// The iterative solver's tolerance, in (0, 1).
+pub fn iteration_tolerance(schema: &mut Schema) {
+    positive(schema);
+    set(schema, "exclusiveMaximum", 1.0);
+}
+
+/// The iterative solver's iteration limit, 1 to 100 000.
+pub fn max_iterations(schema: &mut Schema) {
+    at_least_one(schema);
+    set(schema, "maximum", 100_000);
+}
+
+/// Newmark γ ≥ 1/2 (below it the scheme amplifies every mode).
+pub fn newmark_gamma(schema: &mut Schema) {
+    set(schema, "minimum", 0.5);
+}
+
+/// HHT α in [−1/3, 0].
+pub fn hht_alpha(schema: &mut Schema) {
+    set(schema, "minimum", -1.0 / 3.0);
+    set(schema, "maximum", 0.0);
+}
+
+/// Values of a study grid: 1 to 500.
+pub fn grid_count(schema: &mut Schema) {
+    at_least_one(schema);
+    set(schema, "maximum", 500);
 }

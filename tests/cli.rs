@@ -75,6 +75,30 @@ fn file_names(dir: &Path) -> Vec<String> {
     names
 }
 
+/// history.png is a real picture of the histories: a PNG 900 px wide, one
+/// 260 px panel per kind of quantity (the Yang & Yau scene records five:
+/// bridge displacement and acceleration, vehicle displacement and
+/// acceleration, contact force), with the first series' colour (tab10 blue)
+/// drawn over a good part of it and the grey dashed entry/exit lines.
+fn assert_history_picture(path: &Path) {
+    let file = std::fs::File::open(path).expect("history.png");
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .expect("a PNG");
+    let info = decoder.info().clone();
+    let mut rgb = vec![0; decoder.output_buffer_size().expect("size")];
+    decoder.next_frame(&mut rgb).expect("PNG data");
+    assert_eq!(info.width, 900);
+    let panels = (info.height - 85) / 260;
+    assert_eq!(info.height, 85 + 260 * panels, "whole panels");
+    assert_eq!(panels, 5);
+    let pixels: Vec<&[u8]> = rgb.chunks(3).collect();
+    let blue = pixels.iter().filter(|p| **p == [31, 119, 180]).count();
+    let grey = pixels.iter().filter(|p| **p == [120, 120, 120]).count();
+    assert!(blue > 2_000, "{blue} pixels of the first line");
+    assert!(grey > 200, "{grey} pixels of entry/exit lines");
+}
+
 #[test]
 fn run_writes_summary_history_and_resolved_scenario() {
     let scratch = Scratch::new("cli", "run-writes");
@@ -84,11 +108,17 @@ fn run_writes_summary_history_and_resolved_scenario() {
     assert_exit(&out, 0);
     assert_eq!(text(&out.stderr), "", "--quiet prints nothing on stderr");
     assert_eq!(text(&out.stdout), "", "run prints nothing on stdout");
-    // Exactly the three results: no temporary files left from atomic writes.
+    // Exactly the four results: no temporary files left from atomic writes.
     assert_eq!(
         file_names(&out_dir),
-        ["history.csv", "resolved.yaml", "summary.json"]
+        [
+            "history.csv",
+            "history.png",
+            "resolved.yaml",
+            "summary.json"
+        ]
     );
+    assert_history_picture(&out_dir.join("history.png"));
 
     let summary = read_json(&out_dir.join("summary.json"));
     assert_eq!(summary["scenario"], "yang-yau-sprung-mass");
@@ -263,10 +293,22 @@ fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
         (f1 - closed_form).abs() / closed_form < 1e-5,
         "{f1} vs {closed_form}"
     );
+    // The vehicle's own frequency: the sprung mass on its spring over a
+    // wheel held on rigid ground, f = √(k/m)/2π (k = 1.595e6 N/m, m = 5750 kg).
     assert_eq!(
         lines.next(),
-        Some(format!("mode shapes written to {}", shapes.display()).as_str())
+        Some("vehicle natural frequencies, Hz (wheels on rigid ground):")
     );
+    let vehicle: Vec<&str> = lines.next().unwrap().split_whitespace().collect();
+    let closed_form = (1.595e6f64 / 5750.0).sqrt() / (2.0 * std::f64::consts::PI);
+    assert_eq!(vehicle, ["1", "oscillator", &format!("{closed_form:.4}")]);
+    // Status on stderr, data on stdout.
+    assert!(
+        text(&out.stderr).contains(&format!("mode shapes written to {}", shapes.display())),
+        "{}",
+        text(&out.stderr)
+    );
+    assert_eq!(lines.next(), None);
 
     let csv = std::fs::read_to_string(&shapes).expect("shapes CSV");
     let mut rows = csv.lines();
@@ -344,4 +386,170 @@ fn usage_errors_exit_two() {
     }
     let out = vbi(&["frobnicate"], manifest_dir());
     assert!(text(&out.stderr).contains("unrecognized subcommand 'frobnicate'"));
+}
+
+/// A bridge-only scene: `vbi modes` lists its modes; `vbi check` and `vbi
+/// run` still want vehicles.
+#[test]
+fn modes_works_without_vehicles() {
+    let scratch = Scratch::new("cli", "modes-bridge-only");
+    let path = scratch.path("deck.yaml");
+    std::fs::write(
+        &path,
+        "name: deck\nbridge:\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  mass_per_length: 2303.0\n",
+    )
+    .unwrap();
+    let out = vbi(&["modes".as_ref(), path.as_os_str()], scratch.dir());
+    assert_exit(&out, 0);
+    let stdout = text(&out.stdout);
+    let first = stdout.lines().nth(2).expect("first mode row");
+    let f1: f64 = first.split_whitespace().nth(1).unwrap().parse().unwrap();
+    let closed_form = first_frequency(25.0, 8.323e9, 2303.0);
+    assert!(
+        (f1 - closed_form).abs() / closed_form < 1e-5,
+        "{f1} vs {closed_form}"
+    );
+    assert!(stdout.starts_with("deck: 5 modes used"), "{stdout}");
+    assert!(!stdout.contains("vehicle natural"), "{stdout}");
+    // A broken bridge is still an invalid file.
+    std::fs::write(&path, "name: deck\nbridge:\n  type: beam\n  spans: [-25.0]\n  bending_stiffness: 8.323e9\n  mass_per_length: 2303.0\n").unwrap();
+    let out = vbi(&["modes".as_ref(), path.as_os_str()], scratch.dir());
+    assert_exit(&out, 2);
+    assert!(text(&out.stderr).contains("deck.yaml:4:11: a span length must be positive"));
+    let out = vbi(&["check".as_ref(), path.as_os_str()], scratch.dir());
+    assert_exit(&out, 2);
+}
+
+/// Runs vbi with stdout into a pipe whose reader has gone (what `| head`
+/// does once it has its lines), stderr captured.
+fn vbi_into_closed_pipe(args: &[&std::ffi::OsStr], cwd: &Path) -> Output {
+    use std::process::Stdio;
+    let (reader, writer) = std::io::pipe().expect("pipe");
+    drop(reader);
+    Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .current_dir(cwd)
+        .stdout(Stdio::from(writer))
+        .stderr(Stdio::piped())
+        .output()
+        .expect("run vbi")
+}
+
+#[test]
+fn a_closed_pipe_ends_the_output_quietly() {
+    let scratch = Scratch::new("cli", "closed-pipe");
+    let scenarios = manifest_dir().join("scenarios");
+    let yang_yau = scenarios.join("yang-yau-sprung-mass.yaml");
+    let shapes = scratch.path("shapes.csv");
+    let cases: Vec<(Vec<&std::ffi::OsStr>, i32)> = vec![
+        (
+            vec!["check".as_ref(), yang_yau.as_os_str(), yang_yau.as_os_str()],
+            0,
+        ),
+        (vec!["schema".as_ref()], 0),
+        (vec!["modes".as_ref(), yang_yau.as_os_str()], 0),
+        (
+            vec![
+                "modes".as_ref(),
+                yang_yau.as_os_str(),
+                "--shapes".as_ref(),
+                "-".as_ref(),
+            ],
+            0,
+        ),
+        (
+            vec![
+                "modes".as_ref(),
+                yang_yau.as_os_str(),
+                "--shapes".as_ref(),
+                shapes.as_os_str(),
+            ],
+            0,
+        ),
+        (vec!["--help".as_ref()], 0),
+    ];
+    for (args, code) in &cases {
+        let out = vbi_into_closed_pipe(args, scratch.dir());
+        assert_eq!(
+            out.status.code(),
+            Some(*code),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+        assert!(
+            !text(&out.stderr).contains("panicked"),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+    }
+    // The work is still done: the shapes file was written.
+    assert!(shapes.is_file());
+    // An invalid file among them keeps its exit code.
+    let bad = manifest_dir().join("tests/bad/negative-span.yaml");
+    let out = vbi_into_closed_pipe(
+        &["check".as_ref(), yang_yau.as_os_str(), bad.as_os_str()],
+        scratch.dir(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    assert!(text(&out.stderr).contains("negative-span.yaml"));
+}
+
+/// Two files that give the same `name:` write to different default folders.
+#[test]
+fn the_default_output_folder_comes_from_the_file_not_the_name() {
+    let scratch = Scratch::new("cli", "default-out");
+    let quick = std::fs::read_to_string(quick_yang_yau(&scratch)).unwrap();
+    for stem in ["first", "second"] {
+        std::fs::write(scratch.path(&format!("{stem}.yaml")), &quick).unwrap();
+        let out = vbi(&["run", &format!("{stem}.yaml"), "--quiet"], scratch.dir());
+        assert_exit(&out, 0);
+    }
+    for stem in ["first", "second"] {
+        let summary = scratch
+            .dir()
+            .join("results")
+            .join(stem)
+            .join("summary.json");
+        assert!(summary.is_file(), "{} missing", summary.display());
+    }
+    assert!(!scratch.dir().join("results/yang-yau-sprung-mass").exists());
+}
+
+/// `--svg` adds the history plot as SVG: the same panels, as vectors.
+#[test]
+fn run_with_svg_writes_the_history_as_svg_too() {
+    let scratch = Scratch::new("cli", "svg");
+    let scenario = quick_yang_yau(&scratch);
+    let out_dir = scratch.path("out");
+    let out = vbi(
+        &[
+            "run".as_ref(),
+            scenario.as_os_str(),
+            "--out".as_ref(),
+            out_dir.as_os_str(),
+            "--quiet".as_ref(),
+            "--svg".as_ref(),
+        ],
+        scratch.dir(),
+    );
+    assert_exit(&out, 0);
+    let svg = std::fs::read_to_string(out_dir.join("history.svg")).expect("history.svg");
+    assert!(
+        svg.starts_with("<svg width=\"900\" height=\"1385\""),
+        "{}",
+        &svg[..80]
+    );
+    // One polyline per recorded history (five) and its static response (one).
+    let lines = svg.matches("<polyline").count();
+    assert!(lines >= 6, "{lines} polylines");
+    for label in [
+        "midspan",
+        "body_acceleration",
+        "contact force (N)",
+        "enters",
+        "leaves",
+    ] {
+        assert!(svg.contains(label), "no `{label}` in the SVG");
+    }
+    assert!(out_dir.join("history.png").is_file());
 }

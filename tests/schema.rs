@@ -377,3 +377,180 @@ fn the_description_walk_finds_an_undocumented_property() {
     assert_eq!(missing.len(), 1, "{missing:?}");
     assert!(missing[0].starts_with("#/$defs/D/oneOf/0/properties/b "));
 }
+
+// ---------------------------------------------------------------------------
+// (f) the schema's value rules are those of `vbi check`
+// ---------------------------------------------------------------------------
+
+/// Each case edits the valid base document to a value just past one of the
+/// limits the schema declares (`exclusiveMinimum`, `minimum`, `maximum`,
+/// `minItems`, `enum`), and to one just inside it: the schema and `vbi check`
+/// must agree on both, so an editor never flags what runs nor passes what
+/// `vbi check` refuses.
+#[test]
+fn the_schema_limits_are_those_of_vbi_check() {
+    let cases: &[(&str, &str, &str, &str)] = &[
+        // (what, replaced, past the limit, just inside)
+        (
+            "span length",
+            "spans: [20.0]",
+            "spans: [0.0]",
+            "spans: [10.0]",
+        ),
+        (
+            "span list",
+            "spans: [20.0]",
+            "spans: []",
+            "spans: [20.0, 20.0]",
+        ),
+        (
+            "bending stiffness",
+            "bending_stiffness: 3.2e9",
+            "bending_stiffness: 0",
+            "bending_stiffness: 1.0",
+        ),
+        (
+            "mass per length",
+            "mass_per_length: 2000.0",
+            "mass_per_length: -1",
+            "mass_per_length: 1.0",
+        ),
+        (
+            "elements per span",
+            "  mass_per_length: 2000.0\n",
+            "  mass_per_length: 2000.0\n  elements_per_span: 0\n",
+            "  mass_per_length: 2000.0\n  elements_per_span: 1\n",
+        ),
+        (
+            "mode count",
+            "  mass_per_length: 2000.0\n",
+            "  mass_per_length: 2000.0\n  modes: {count: 0}\n",
+            "  mass_per_length: 2000.0\n  modes: {count: 1}\n",
+        ),
+        (
+            "damping ratio",
+            "  mass_per_length: 2000.0\n",
+            "  mass_per_length: 2000.0\n  damping: {type: modal, ratio: 1.0}\n",
+            "  mass_per_length: 2000.0\n  damping: {type: modal, ratio: 0.0}\n",
+        ),
+        (
+            "vehicle list",
+            "vehicles:\n  - type: moving_force\n    loads: [100000.0]\n    speed: 20.0\n",
+            "vehicles: []\n",
+            "vehicles:\n  - type: moving_force\n    loads: [100000.0]\n    speed: 20.0\n",
+        ),
+        ("speed", "speed: 20.0", "speed: 0.0", "speed: 0.1"),
+        ("top speed", "speed: 20.0", "speed: 1000.5", "speed: 1000.0"),
+        (
+            "axle load",
+            "loads: [100000.0]",
+            "loads: [-1.0]",
+            "loads: [1.0]",
+        ),
+        (
+            "axle loads",
+            "loads: [100000.0]",
+            "loads: []",
+            "loads: [1.0]",
+        ),
+        (
+            "entry time",
+            "speed: 20.0",
+            "speed: 20.0\n    entry_time: -0.5",
+            "speed: 20.0\n    entry_time: 0.0",
+        ),
+        (
+            "start position",
+            "speed: 20.0",
+            "speed: 20.0\n    start_position: 0.5",
+            "speed: 20.0\n    start_position: 0.0",
+        ),
+        (
+            "gravity",
+            "name: minimal\n",
+            "name: minimal\ngravity: 0\n",
+            "name: minimal\ngravity: 1.0\n",
+        ),
+        ("empty name", "name: minimal\n", "name: ''\n", "name: m\n"),
+        (
+            "time step",
+            "name: minimal\n",
+            "name: minimal\nsolver: {time_step: 0.0}\n",
+            "name: minimal\nsolver: {time_step: 0.001}\n",
+        ),
+        (
+            "free vibration",
+            "name: minimal\n",
+            "name: minimal\nsolver: {free_vibration: -0.1}\n",
+            "name: minimal\nsolver: {free_vibration: 0.0}\n",
+        ),
+        (
+            "Newmark γ",
+            "name: minimal\n",
+            "name: minimal\nsolver: {newmark: {gamma: 0.49}}\n",
+            "name: minimal\nsolver: {newmark: {gamma: 0.5}}\n",
+        ),
+        (
+            "HHT α",
+            "name: minimal\n",
+            "name: minimal\nsolver: {newmark: {alpha: 0.01}}\n",
+            "name: minimal\nsolver: {newmark: {alpha: -0.3}}\n",
+        ),
+        (
+            "roughness wavelength",
+            "name: minimal\n",
+            "name: minimal\nsurface: {type: harmonic, amplitude: 0.001, wavelength: 0.0}\n",
+            "name: minimal\nsurface: {type: harmonic, amplitude: 0.001, wavelength: 1.0}\n",
+        ),
+    ];
+    let validator = validator();
+    let mut disagreements = Vec::new();
+    for (what, from, past, inside) in cases {
+        assert!(VALID.contains(from), "case {what:?}: {from:?} not in VALID");
+        for (edit, should_pass) in [(past, false), (inside, true)] {
+            let source = VALID.replacen(from, edit, 1);
+            let schema_ok = validator.is_valid(&yaml_to_json(&source, what));
+            let check = vbi::scenario::load_str(&source, "case.yaml");
+            let check_ok = check.is_ok();
+            if schema_ok != should_pass || check_ok != should_pass {
+                disagreements.push(format!(
+                    "{what} ({edit:?}): expected {}, schema {}, vbi check {}{}",
+                    if should_pass { "valid" } else { "invalid" },
+                    if schema_ok { "accepts" } else { "rejects" },
+                    if check_ok { "accepts" } else { "rejects" },
+                    check.err().map(|e| format!(" ({e})")).unwrap_or_default(),
+                ));
+            }
+        }
+    }
+    assert!(
+        disagreements.is_empty(),
+        "the schema and `vbi check` disagree:\n  {}",
+        disagreements.join("\n  ")
+    );
+}
+
+#[test]
+fn optional_fields_have_no_null_default_and_unions_are_objects() {
+    let text = vbi::schema::schema_json();
+    assert!(
+        !text.contains("\"default\": null"),
+        "a `\"default\": null` makes yaml-language-server stop completing"
+    );
+    let schema = schema();
+    for name in [
+        "BridgeRaw",
+        "VehicleRaw",
+        "SurfaceRaw",
+        "ContactRaw",
+        "DampingRaw",
+        "RigidityRaw",
+        "StudyRaw",
+    ] {
+        assert_eq!(
+            schema["$defs"][name]["type"], "object",
+            "the tagged union {name} needs \"type\": \"object\" for editors to insert `key:`"
+        );
+    }
+    assert_eq!(schema["properties"]["gravity"]["default"], 9.81);
+}

@@ -1,12 +1,15 @@
 //! The report stage: summary.json, the CSV time history and the resolved
 //! scenario, each written whole or not at all.
 
+pub mod advice;
+pub mod atomic;
+pub mod history_plot;
 pub mod plot;
 pub mod summary;
 pub mod yaml;
 
 use std::fs;
-use std::io::{self, Write};
+use std::io;
 use std::path::{Path, PathBuf};
 
 use thiserror::Error;
@@ -73,29 +76,12 @@ pub fn remove_stale_partials(folder: &Path) {
     }
 }
 
-/// Writes `contents` to `path` atomically: a temporary file in the same
-/// folder, then a rename, so readers never see a partial file. (No fsync:
-/// it would cost more than the whole run of a small scene, and a crash
-/// still leaves either the old file or the new one.)
+/// Writes `contents` to `path` whole or not at all ([`atomic::write_atomic`]).
 pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
-    let io_err = |source| ReportError::Io {
+    atomic::write_atomic(path, contents).map_err(|source| ReportError::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let file_name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = path.with_file_name(partial_name(&file_name, ""));
-    let result = (|| {
-        let mut file = fs::File::create(&tmp)?;
-        file.write_all(contents)?;
-        fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = fs::remove_file(&tmp);
-    }
-    result.map_err(io_err)
+    })
 }
 
 /// The time history as CSV: `time` then one column per recorded quantity

@@ -9,12 +9,9 @@
 //! non-positive values on a logarithmic axis. No function here panics on bad data:
 //! inconsistent inputs give [`PlotError::InvalidInput`].
 
-use std::fs::{self, File};
-use std::io::Write;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
-use std::sync::atomic::{AtomicU64, Ordering};
 
 use plotters::coord::Shift;
 use plotters::coord::cartesian::Cartesian2d;
@@ -227,6 +224,31 @@ pub fn heat_map(
     write_png(path, &rendered.rgb)
 }
 
+/// A heat map like [`heat_map`] whose rows are named categories (e.g. road
+/// surfaces): row `j` is `categories[j]`, and the y ticks read the names.
+#[allow(clippy::too_many_arguments)]
+pub fn category_heat_map(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    x_values: &[f64],
+    categories: &[String],
+    values: &[f64],
+    value_label: &str,
+) -> Result<(), PlotError> {
+    let rendered = render_category_heat_map(
+        title,
+        x_label,
+        y_label,
+        x_values,
+        categories,
+        values,
+        value_label,
+    )?;
+    write_png(path, &rendered.rgb)
+}
+
 // ---------------------------------------------------------------------------
 // Rendering
 // ---------------------------------------------------------------------------
@@ -271,10 +293,19 @@ fn font(size: f64) -> TextStyle<'static> {
 fn render(
     draw: impl FnOnce(&Area<'_>) -> Result<Geometry, PlotError>,
 ) -> Result<Rendered, PlotError> {
+    render_sized(WIDTH, HEIGHT, draw)
+}
+
+/// Draws onto a white `width × height` canvas and returns the pixels.
+fn render_sized(
+    width: u32,
+    height: u32,
+    draw: impl FnOnce(&Area<'_>) -> Result<Geometry, PlotError>,
+) -> Result<Rendered, PlotError> {
     ensure_font()?;
-    let mut rgb = vec![255u8; WIDTH as usize * HEIGHT as usize * 3];
+    let mut rgb = vec![255u8; width as usize * height as usize * 3];
     let geometry = {
-        let root = BitMapBackend::with_buffer(&mut rgb, (WIDTH, HEIGHT)).into_drawing_area();
+        let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(draw_err)?;
         let geometry = draw(&root)?;
         root.present().map_err(draw_err)?;
@@ -297,9 +328,13 @@ fn with_title<'a>(root: &Area<'a>, title: &str) -> Result<Area<'a>, PlotError> {
 // ---------------------------------------------------------------------------
 
 fn encode_png(rgb: &[u8]) -> Result<Vec<u8>, PlotError> {
+    encode_png_sized(rgb, WIDTH, HEIGHT)
+}
+
+fn encode_png_sized(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
     let enc_err = |e: png::EncodingError| PlotError::Encode(e.to_string());
     let mut out = Vec::new();
-    let mut encoder = png::Encoder::new(&mut out, WIDTH, HEIGHT);
+    let mut encoder = png::Encoder::new(&mut out, width, height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     let mut writer = encoder.write_header().map_err(enc_err)?;
@@ -313,42 +348,27 @@ fn write_png(path: &Path, rgb: &[u8]) -> Result<(), PlotError> {
     write_atomic(path, &bytes)
 }
 
-/// Writes `bytes` to a temporary file next to `path`, then renames it to `path`.
-/// On failure the temporary file is removed.
+/// Writes `bytes` whole or not at all ([`super::atomic::write_atomic`]).
 fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let file_name = path.file_name().ok_or_else(|| {
-        PlotError::InvalidInput(format!("output path '{}' has no file name", path.display()))
-    })?;
-    let tmp_name = crate::report::partial_name(
-        &file_name.to_string_lossy(),
-        &format!("-{}", COUNTER.fetch_add(1, Ordering::Relaxed)),
-    );
-    let tmp = path.with_file_name(tmp_name);
-    let io_err = |source| PlotError::Io {
+    if path.file_name().is_none() {
+        return Err(PlotError::InvalidInput(format!(
+            "output path '{}' has no file name",
+            path.display()
+        )));
+    }
+    super::atomic::write_atomic(path, bytes).map_err(|source| PlotError::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let mut file = File::create_new(&tmp).map_err(io_err)?;
-    let written = file
-        .write_all(bytes)
-        .and_then(|()| file.sync_all())
-        .and_then(|()| {
-            drop(file);
-            fs::rename(&tmp, path)
-        });
-    if let Err(e) = written {
-        let _ = fs::remove_file(&tmp);
-        return Err(io_err(e));
-    }
-    Ok(())
+    })
 }
 
 mod grid;
+mod history;
 mod line;
 mod scale;
 
 use grid::*;
+pub use history::{Marker, Panel, history_chart, history_chart_svg};
 use line::*;
 use scale::*;
 

@@ -107,7 +107,13 @@ pub(super) fn derive_dimensionless(
             derived.damping,
             "damping",
         );
-        agree(ck, &format!("{at}.speed"), o.speed, derived.speed, "speed");
+        agree(
+            ck,
+            &format!("{at}.speed"),
+            o.speed.map(|s| s.0),
+            derived.speed,
+            "speed",
+        );
         derived.entry_time =
             super::resolve::entry_time(ck, &at, derived.speed, o.entry_time, o.start_position);
         derived.lateral_position = vehicle.lateral_position();

@@ -6,6 +6,7 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
+pub mod bridge_only;
 pub mod bridges;
 pub mod budget;
 pub mod content;
@@ -108,6 +109,20 @@ pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
 
 /// Reads and resolves a scenario file.
 pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadError> {
+    let (source, file) = read_source(path)?;
+    load_str_with(&source, &file, options)
+}
+
+/// Reads a scenario file for `vbi modes`, which needs no vehicles
+/// ([`bridge_only::load_for_modes`]).
+pub fn load_file_for_modes(path: &Path) -> Result<bridge_only::ModesScene, LoadError> {
+    let (source, file) = read_source(path)?;
+    bridge_only::load_for_modes(&source, &file)
+}
+
+/// The text of a scenario file and its name for diagnostics; the size is
+/// checked before the file is read whole.
+fn read_source(path: &Path) -> Result<(String, String), LoadError> {
     let io = |source| LoadError::Io {
         path: path.to_path_buf(),
         source,
@@ -144,7 +159,7 @@ pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadE
         )]));
     }
     match String::from_utf8(bytes) {
-        Ok(source) => load_str_with(&source, &file, options),
+        Ok(source) => Ok((source, file)),
         Err(e) => Err(not_utf8(&file, e.as_bytes(), e.utf8_error().valid_up_to())),
     }
 }

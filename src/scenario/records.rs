@@ -9,7 +9,7 @@ use super::resolved::*;
 fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
-        Vehicle::Oscillator(_) => &["sprung", "wheel"],
+        Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
         Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
     }
 }

@@ -203,6 +203,16 @@ pub(super) fn resolve(
     }
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let minimum = content::minimum_modes(&bridge);
+    // The modes the solve will at least compute, before it starts.
+    let (asked, asked_path) = match bridge.modes().count {
+        Some(count) => (count, "bridge.modes.count"),
+        None => (minimum, "bridge.spans"),
+    };
+    if (automatic || bridge.modes().count.is_some())
+        && !budget.check(ck, asked_path, "modes", "bridge modes kept", asked as f64)
+    {
+        return None;
+    }
     let build = |request| {
         ModalBridge::build_with(&bridge, request).map_err(|e| {
             let path = match e {
@@ -494,7 +504,7 @@ fn resolve_vehicles(
         let at = format!("vehicles[{i}]");
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
-                check_speed(ck, &at, v.speed);
+                check_speed(ck, &at, v.speed.0);
                 if v.loads.is_empty() {
                     ck.error(
                         &format!("{at}.loads"),
@@ -524,11 +534,11 @@ fn resolve_vehicles(
                 for (k, &s) in spacings.iter().enumerate() {
                     ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
                 }
-                let entry = entry_time(ck, &at, v.speed, v.entry_time, v.start_position);
+                let entry = entry_time(ck, &at, v.speed.0, v.entry_time, v.start_position);
                 out.push(Vehicle::MovingForce(MovingForce {
                     loads: v.loads.clone(),
                     axle_spacings: spacings,
-                    speed: v.speed,
+                    speed: v.speed.0,
                     entry_time: entry,
                     lateral_position: lateral(ck, &at, v.lateral_position, width, 0.0),
                 }));
@@ -563,7 +573,7 @@ fn resolve_vehicles(
                 let (sprung, stiffness, speed) = (
                     required("sprung_mass", v.sprung_mass),
                     required("stiffness", v.stiffness),
-                    required("speed", v.speed),
+                    required("speed", v.speed.map(|s| s.0)),
                 );
                 check_speed(ck, &at, speed);
                 ck.positive(&format!("{at}.sprung_mass"), sprung, "sprung mass");

@@ -143,7 +143,7 @@ pub(super) fn resolve(
     surface: &Surface,
     ck: &mut Checker<'_>,
 ) -> SpeedSweep {
-    let grid = &raw.speeds;
+    let grid = &raw.speeds.in_m_s();
     if grid.from <= 0.0 {
         ck.error(
             "study.speeds.from",

@@ -53,7 +53,7 @@ pub(super) fn resolve_h20(
     width: Option<f64>,
     ck: &mut Checker<'_>,
 ) -> Vehicle {
-    check_speed(ck, at, v.speed);
+    check_speed(ck, at, v.speed.0);
     let mut p = H20_44_PRESET;
     if let Some(o) = &v.parameters {
         let pat = format!("{at}.parameters");
@@ -186,8 +186,8 @@ pub(super) fn resolve_h20(
     let half_track = 0.5 * p.front_track.max(p.rear_track);
     let lateral_position = lateral(ck, at, v.lateral_position, width, half_track);
     Vehicle::H20Truck(H20Truck {
-        speed: v.speed,
-        entry_time: entry_time(ck, at, v.speed, v.entry_time, v.start_position),
+        speed: v.speed.0,
+        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
         lateral_position,
         parameters: p,
     })

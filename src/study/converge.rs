@@ -627,21 +627,24 @@ impl Convergence {
     pub fn plot(&self, path: &Path) -> Result<(), PlotError> {
         let names = self.quantities();
         let mut data: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-        for (q, name) in names.iter().enumerate() {
-            let (mut x, mut y) = (Vec::new(), Vec::new());
-            for ladder in [Ladder::TimeStep, Ladder::Modes] {
-                if !x.is_empty() {
-                    x.push(f64::NAN);
-                    y.push(f64::NAN);
-                }
+        // One line per quantity and ladder, labelled with the ladder, so
+        // that the time-step and the mode ladders are told apart.
+        for (ladder, which) in [
+            (Ladder::TimeStep, "Δt ladder"),
+            (Ladder::Modes, "modes ladder"),
+        ] {
+            for (q, name) in names.iter().enumerate() {
+                let (mut x, mut y) = (Vec::new(), Vec::new());
                 for run in self.runs.iter().filter(|r| r.ladder == ladder) {
                     if let (Some(t), Ok(errors)) = (run.wall_time, &run.errors) {
                         x.push(t);
                         y.push(errors[q].max_abs);
                     }
                 }
+                if !x.is_empty() {
+                    data.push((format!("{name}, {which}"), x, y));
+                }
             }
-            data.push((name.to_string(), x, y));
         }
         let times: Vec<f64> = self.runs.iter().filter_map(|r| r.wall_time).collect();
         if let (Some(lo), Some(hi)) = (

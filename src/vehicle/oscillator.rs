@@ -12,11 +12,14 @@ use nalgebra::{DMatrix, DVector};
 use super::{VehicleModel, Wheel, WheelKind};
 use crate::scenario::resolved::Oscillator;
 
+/// DOF names, as used by `record: … dof:`.
+pub const DOF_NAMES: [&str; 2] = ["sprung", "wheel"];
+
 /// Builds the 2-DOF model.
 pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
     let (k, c) = (v.stiffness, v.damping);
     VehicleModel {
-        dof_names: vec!["sprung", "wheel"],
+        dof_names: DOF_NAMES.to_vec(),
         mass: DMatrix::from_row_slice(2, 2, &[v.sprung_mass, 0.0, 0.0, v.unsprung_mass]),
         damping: DMatrix::from_row_slice(2, 2, &[c, -c, -c, c]),
         stiffness: DMatrix::from_row_slice(2, 2, &[k, -k, -k, k]),

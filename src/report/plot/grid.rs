@@ -6,7 +6,18 @@ pub(super) struct GridAxis {
     /// `n + 1` cell edges (same order as the values).
     edges: Vec<f64>,
     range: Range<f64>,
-    ticks: Vec<f64>,
+    pub(super) ticks: Vec<f64>,
+    /// Names of the grid values (a categorical axis): tick `k` reads `labels[k]`.
+    pub(super) labels: Option<Vec<String>>,
+}
+
+/// A categorical axis: cells at 0, 1, …, one per name, each tick its name.
+pub(super) fn category_axis(names: &[String]) -> Result<GridAxis, PlotError> {
+    let values: Vec<f64> = (0..names.len()).map(|k| k as f64).collect();
+    let mut axis = grid_axis("categories", &values)?;
+    axis.ticks = values;
+    axis.labels = Some(names.to_vec());
+    Ok(axis)
 }
 
 pub(super) fn grid_axis(name: &str, values: &[f64]) -> Result<GridAxis, PlotError> {
@@ -51,6 +62,7 @@ pub(super) fn grid_axis(name: &str, values: &[f64]) -> Result<GridAxis, PlotErro
         edges,
         range,
         ticks,
+        labels: None,
     })
 }
 
@@ -115,7 +127,14 @@ pub(super) fn draw_grid_chart(
     cell_colour: impl Fn(usize, usize) -> Option<RGBColor>,
 ) -> Result<Geometry, PlotError> {
     let x_fmt = tick_formatter(&xa.range, false);
-    let y_fmt = tick_formatter(&ya.range, false);
+    let y_numbers = tick_formatter(&ya.range, false);
+    let y_fmt = |v: &f64| match &ya.labels {
+        Some(labels) => labels
+            .get(v.round().max(0.0) as usize)
+            .cloned()
+            .unwrap_or_default(),
+        None => y_numbers(v),
+    };
     let mut chart = ChartBuilder::on(area)
         .margin(15)
         .margin_right(30)
@@ -247,11 +266,40 @@ pub(super) fn render_heat_map(
     values: &[f64],
     value_label: &str,
 ) -> Result<Rendered, PlotError> {
-    const BAR_PANEL: u32 = 150;
     check_grid_len("values", values.len(), x_values.len(), y_values.len())?;
     let xa = grid_axis("x_values", x_values)?;
     let ya = grid_axis("y_values", y_values)?;
-    let ny = y_values.len();
+    render_heat_map_on(title, x_label, y_label, &xa, &ya, values, value_label)
+}
+
+/// [`render_heat_map`] with its y axis the names `categories`.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn render_category_heat_map(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    x_values: &[f64],
+    categories: &[String],
+    values: &[f64],
+    value_label: &str,
+) -> Result<Rendered, PlotError> {
+    check_grid_len("values", values.len(), x_values.len(), categories.len())?;
+    let xa = grid_axis("x_values", x_values)?;
+    let ya = category_axis(categories)?;
+    render_heat_map_on(title, x_label, y_label, &xa, &ya, values, value_label)
+}
+
+fn render_heat_map_on(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    xa: &GridAxis,
+    ya: &GridAxis,
+    values: &[f64],
+    value_label: &str,
+) -> Result<Rendered, PlotError> {
+    const BAR_PANEL: u32 = 150;
+    let ny = ya.edges.len().saturating_sub(1);
     let (lo, hi) = min_max(values.iter().copied().filter(|v| usable(*v)));
     let v_range = linear_range(lo, hi, 0.0);
     let colour_of = |v: f64| {
@@ -261,7 +309,7 @@ pub(super) fn render_heat_map(
     render(|root| {
         let area = with_title(root, title)?;
         let (main, bar) = area.split_horizontally(WIDTH - BAR_PANEL);
-        let geometry = draw_grid_chart(&main, x_label, y_label, &xa, &ya, |i, j| {
+        let geometry = draw_grid_chart(&main, x_label, y_label, xa, ya, |i, j| {
             let v = values[i * ny + j];
             usable(v).then(|| colour_of(v))
         })?;

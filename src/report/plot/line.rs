@@ -1,6 +1,10 @@
 //! Line charts: series, axes (linear or logarithmic), legend placement.
 
 use super::*;
+
+/// Series with at most this many points get a dot at each.
+const MAX_MARKED_POINTS: usize = 60;
+
 pub(super) fn render_line_chart(
     title: &str,
     x_label: &str,
@@ -156,6 +160,18 @@ where
                 .label(s.label)
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
         }
+        // Few points are computed points (a sweep's speeds, a ladder's
+        // runs): mark each, so that the line is not read as a continuum.
+        let points: usize = runs.iter().map(Vec::len).sum();
+        if points <= MAX_MARKED_POINTS {
+            chart
+                .draw_series(
+                    runs.iter()
+                        .flatten()
+                        .map(|&p| Circle::new(p, 4, colour.filled())),
+                )
+                .map_err(draw_err)?;
+        }
         for run in runs {
             // A run that lands on one pixel (a single point, or points closer than a
             // pixel) would be invisible as a line: draw it as a dot.
@@ -193,8 +209,8 @@ where
 }
 
 /// The plotting-area corner where the legend box covers the least of the lines.
-pub(super) fn legend_position<X, Y>(
-    chart: &ChartContext<'_, BitMapBackend<'_>, Cartesian2d<X, Y>>,
+pub(super) fn legend_position<DB: DrawingBackend, X, Y>(
+    chart: &ChartContext<'_, DB, Cartesian2d<X, Y>>,
     series: &[Series],
     runs: &[Vec<Vec<(f64, f64)>>],
 ) -> Result<SeriesLabelPosition, PlotError>

@@ -1,6 +1,7 @@
 //! Unit tests of the parent module.
 
 use super::*;
+use std::fs;
 
 const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
 
@@ -618,4 +619,80 @@ fn render_samples() {
         "DAF [-]",
     )
     .unwrap();
+}
+
+#[test]
+fn category_axis_names_its_ticks_and_cells_sit_on_them() {
+    let names: Vec<String> = ["smooth", "good", "poor"].map(String::from).to_vec();
+    let axis = category_axis(&names).unwrap();
+    assert_eq!(axis.ticks, [0.0, 1.0, 2.0]);
+    assert_eq!(axis.labels.as_deref(), Some(&names[..]));
+    let xs = [10.0, 20.0];
+    let values = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+    let r = render_category_heat_map("t", "speed", "surface", &xs, &names, &values, "v").unwrap();
+    // Row j sits at y = j: the lowest value (x 10, smooth) and the highest
+    // (x 20, poor) take the ends of the colour map.
+    let (px, py) = to_pixel(&r.geometry, 10.0, 0.0);
+    assert_eq!(pixel(&r.rgb, px, py), (68, 1, 84));
+    let (px, py) = to_pixel(&r.geometry, 20.0, 2.0);
+    assert_eq!(pixel(&r.rgb, px, py), (253, 231, 37));
+    assert!(render_category_heat_map("t", "x", "y", &xs, &names, &values[..5], "v").is_err());
+}
+
+#[test]
+fn history_panels_stack_and_keep_every_peak() {
+    let t: Vec<f64> = (0..200_000).map(|i| i as f64 * 1e-5).collect();
+    // A sine with one sharp spike one sample wide: the reduced line keeps it.
+    let mut y: Vec<f64> = t.iter().map(|t| (10.0 * t).sin()).collect();
+    y[123_457] = 5.0;
+    let reduced = history::reduce(&t, &y, 900);
+    assert!(reduced.len() <= 2 * 900 + 2, "{}", reduced.len());
+    assert!(reduced.iter().any(|p| p.1 == 5.0), "the spike survives");
+    assert!(
+        reduced.windows(2).all(|w| w[0].0 <= w[1].0),
+        "in time order"
+    );
+    let panels = [
+        Panel {
+            y_label: "a (m)".into(),
+            series: vec![Series {
+                label: "a",
+                x: &t,
+                y: &y,
+            }],
+            references: vec![],
+        },
+        Panel {
+            y_label: "b (N)".into(),
+            series: vec![Series {
+                label: "b",
+                x: &t,
+                y: &y,
+            }],
+            references: vec![Series {
+                label: "",
+                x: &t,
+                y: &y,
+            }],
+        },
+    ];
+    let markers = [Marker {
+        x: 0.5,
+        label: "enters".into(),
+    }];
+    let (rgb, height) = history::render_history("h", "time (s)", &panels, &markers).unwrap();
+    assert_eq!(height, 45 + 2 * 260 + 40);
+    assert_eq!(rgb.len(), (WIDTH * height * 3) as usize);
+    let blue = rgb.chunks(3).filter(|p| *p == [31, 119, 180]).count();
+    assert!(blue > 2_000, "{blue}");
+    assert!(history::render_history("h", "t", &[], &markers).is_err());
+    let dir = test_dir("history");
+    history_chart(&dir.join("h.png"), "h", "time (s)", &panels, &markers).unwrap();
+    check_png_any_size(&dir.join("h.png"));
+}
+
+fn check_png_any_size(path: &Path) {
+    let bytes = fs::read(path).unwrap();
+    assert_eq!(bytes[..8], PNG_SIGNATURE);
+    assert!(bytes.len() > 10_000);
 }

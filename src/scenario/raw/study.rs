@@ -42,11 +42,14 @@ pub struct SeparationMapRaw {
 #[serde(deny_unknown_fields)]
 pub struct GridRaw {
     /// First value.
+    #[schemars(transform = crate::schema::positive)]
     pub from: f64,
     /// Last value.
+    #[schemars(transform = crate::schema::positive)]
     pub to: f64,
     /// Number of values (≥ 1; 1 gives `from` only).
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::grid_count)]
     pub count: usize,
 }
 
@@ -66,9 +69,10 @@ impl GridRaw {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SpeedSweepRaw {
-    /// Speeds to sweep, m/s (each > 0); every vehicle takes each speed in
-    /// turn. 10–150 km/h is `{from: 2.7778, to: 41.667, count: 15}`.
-    pub speeds: GridRaw,
+    /// Speeds to sweep (each > 0), in m/s or with their unit; every vehicle
+    /// takes each speed in turn. 10–150 km/h is `{from: 10 km/h, to: 150
+    /// km/h, count: 15}` or `{from: 2.7778, to: 41.667, count: 15}`.
+    pub speeds: super::SpeedGridRaw,
     /// Surfaces to sweep: `smooth`, or a roughness class (`very_good`,
     /// `good`, `average`, `poor`, `very_poor`) that replaces the scene's
     /// surface by a random profile of that class (sampling length, terms and
@@ -82,18 +86,23 @@ pub struct SpeedSweepRaw {
     /// Default 1.
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub samples: Option<usize>,
     /// Span (counted from 1 at the entrance) at whose middle the plots and
     /// the summary show the DAF. Default: the longest span (the first of
     /// equally long ones), e.g. span 2 of the plate paper's 3-span deck.
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
     pub span: Option<usize>,
     /// Girder line (counted from 1 in `bridge.girder_lines`) of the
     /// roughness plot, the DAF map and the summary. Default 1 (a beam has
     /// only line 1).
     #[serde(default)]
     #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub girder: Option<usize>,
 }
 

@@ -7,13 +7,16 @@ use serde::Deserialize;
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct H20TruckRaw {
-    /// Constant speed, m/s.
-    pub speed: f64,
+    /// Constant speed: m/s, or with its unit (`100 km/h`).
+    pub speed: super::SpeedRaw,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     #[serde(default)]
+    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0).
     #[serde(default)]
+    #[schemars(transform = crate::schema::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the truck's centre line on a plate deck, m.
     /// Default: the deck's centre line.

@@ -6,7 +6,7 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::{DafSource, KM_H, SweepResults};
-use crate::report::plot::{Series, heat_map, line_chart};
+use crate::report::plot::{Series, category_heat_map, line_chart};
 use crate::report::{self, write_atomic};
 use crate::run::RunError;
 use crate::scenario::resolved::Scenario;
@@ -146,7 +146,12 @@ fn mean_note(runs: usize) -> String {
 /// daf_speed.png (Figs. 12–13): DAF against speed at the middle of the
 /// sweep's span, one line per girder line (a beam: per displacement record,
 /// or the span middle if it has none), on the first surface.
-fn plot_daf_speed(path: &Path, name: &str, results: &SweepResults) -> Result<(), RunError> {
+fn plot_daf_speed(
+    path: &Path,
+    name: &str,
+    girder_lines: &[f64],
+    results: &SweepResults,
+) -> Result<(), RunError> {
     let km_h: Vec<f64> = results.speeds.iter().map(|v| v * KM_H).collect();
     let records: Vec<usize> = (0..results.daf_sources.len())
         .filter(|&c| matches!(results.daf_sources[c], DafSource::Record { .. }))
@@ -162,7 +167,17 @@ fn plot_daf_speed(path: &Path, name: &str, results: &SweepResults) -> Result<(),
             .collect()
     } else {
         (1..=results.girder_lines)
-            .map(|g| (results.span_column(results.span, g), format!("girder {g}")))
+            .map(|g| {
+                // The legend says where the line is across the deck.
+                let at = girder_lines
+                    .get(g - 1)
+                    .map(|y| format!(" (y = {y:.3} m)"))
+                    .unwrap_or_default();
+                (
+                    results.span_column(results.span, g),
+                    format!("girder {g}{at}"),
+                )
+            })
             .collect()
     };
     let means: Vec<Vec<f64>> = columns
@@ -218,27 +233,21 @@ fn plot_roughness(out: &Path, name: &str, results: &SweepResults) -> Result<(), 
         false,
         false,
     )?;
-    // The map's rows are the surfaces in sweep order, numbered from 0.
-    let rows: Vec<f64> = (0..results.roughness.len()).map(|r| r as f64).collect();
-    let key: Vec<String> = results
-        .roughness
-        .iter()
-        .enumerate()
-        .map(|(r, label)| format!("{r} {label}"))
-        .collect();
-    let mut values = vec![f64::NAN; km_h.len() * rows.len()];
+    // The map's rows are the surfaces in sweep order, named on the axis.
+    let rows = results.roughness.len();
+    let mut values = vec![f64::NAN; km_h.len() * rows];
     for (r, mean) in means.iter().enumerate() {
         for (i, &v) in mean.iter().enumerate() {
-            values[i * rows.len() + r] = v;
+            values[i * rows + r] = v;
         }
     }
-    heat_map(
+    category_heat_map(
         &out.join("daf_map.png"),
         &format!("{name}: DAF at {at}"),
         SPEED_LABEL,
-        &format!("surface: {}", key.join(", ")),
+        "surface",
         &km_h,
-        &rows,
+        &results.roughness,
         &values,
         "DAF (mean over samples)",
     )?;
@@ -250,7 +259,12 @@ fn plot_roughness(out: &Path, name: &str, results: &SweepResults) -> Result<(), 
 pub fn write(out: &Path, scenario: &Scenario, results: &SweepResults) -> Result<(), RunError> {
     crate::run::create_out(out)?;
     write_atomic(&out.join("study.csv"), &results.to_csv())?;
-    plot_daf_speed(&out.join("daf_speed.png"), &scenario.name, results)?;
+    plot_daf_speed(
+        &out.join("daf_speed.png"),
+        &scenario.name,
+        &scenario.bridge.girder_lines(),
+        results,
+    )?;
     plot_roughness(out, &scenario.name, results)?;
     write_atomic(
         &out.join("resolved.yaml"),

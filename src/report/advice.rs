@@ -1,0 +1,75 @@
+//! Warnings about a scene that is valid but probably not what was meant, and
+//! about results that probably miss their peak. They never stop a run; the
+//! command line prints them on stderr as `warning: …`.
+
+use crate::report::summary::Summary;
+use crate::scenario::raw::{KM_H, km_h_to_m_s};
+use crate::scenario::resolved::{Quantity, Scenario, Study};
+
+/// Speeds above this, m/s (468 km/h), are faster than any wheeled vehicle in
+/// service: the fastest trains run at 350 km/h and an EN 1991-2 resonance
+/// check goes to 1.2 × the line speed (420 km/h for 350 km/h). Such a speed
+/// is most often a km/h value typed where m/s is meant.
+pub const IMPLAUSIBLE_SPEED: f64 = 130.0;
+
+/// Warnings about the scene itself, before it runs.
+pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, vehicle) in scenario.vehicles.iter().enumerate() {
+        if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed()) {
+            out.push(w);
+        }
+    }
+    if let Some(Study::SpeedSweep(sweep)) = &scenario.study
+        && let Some(w) = implausible("the speed sweep's top speed", sweep.speeds.to)
+    {
+        out.push(w);
+    }
+    out
+}
+
+fn implausible(what: &str, speed: f64) -> Option<String> {
+    (speed > IMPLAUSIBLE_SPEED).then(|| {
+        format!(
+            "{what}: {speed} m/s is {:.0} km/h, faster than any wheeled vehicle in service; \
+             speeds are in m/s — for {speed} km/h write `speed: {speed} km/h` ({:.4} m/s)",
+            speed / KM_H,
+            km_h_to_m_s(speed)
+        )
+    })
+}
+
+/// Warnings about a finished run: a bridge response whose largest value is
+/// its last recorded one was still growing when the record ended, so its
+/// peak comes later (above the critical speed the largest deflection comes
+/// after the load has left the span, in free vibration).
+pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
+    let run = &summary.run;
+    let last = run.end_time - 0.5 * run.time_step;
+    let period = run.frequencies.first().map(|f| 1.0 / f);
+    summary
+        .quantities
+        .iter()
+        .filter(|q| {
+            matches!(
+                q.quantity,
+                Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+            ) && q.max_abs.time >= last
+                && q.max_abs.value != 0.0
+        })
+        .map(|q| {
+            let advice = match period {
+                Some(t) => format!(
+                    "; record longer with `solver.free_vibration` (now {} s; the first mode's period is {t:.4} s)",
+                    scenario.solver.free_vibration
+                ),
+                None => String::new(),
+            };
+            format!(
+                "`{}` is largest at the very end of the record (t = {:.4} s): its peak is \
+                 probably later{advice}",
+                q.name, q.max_abs.time
+            )
+        })
+        .collect()
+}

@@ -1,0 +1,98 @@
+//! A scene read for its bridge alone: `vbi modes` lists a bridge's natural
+//! frequencies before any vehicle is written, so a file with `name` and
+//! `bridge` and no `vehicles` is enough there. Every other key is read and
+//! checked as usual when present (a file with vehicles goes through
+//! [`super::load_str`] whole).
+
+use serde::Deserialize;
+
+use super::raw::BridgeRaw;
+use super::resolve::Checker;
+use super::resolved::Scenario;
+use super::{LoadError, bridges, content, de, parse_raw};
+use crate::bridge::{ModalBridge, ModeRequest};
+
+/// The scene as `vbi modes` sees it.
+#[derive(Debug, Clone)]
+pub struct ModesScene {
+    /// The scene's `name`.
+    pub name: String,
+    /// The modal bridge; without vehicles and without `modes`, the automatic
+    /// minimum for the quasi-static shape (nothing excites it).
+    pub bridge: ModalBridge,
+    /// The whole resolved scene, when the file has vehicles.
+    pub scenario: Option<Scenario>,
+}
+
+/// Only the keys a bridge needs; the others are not looked at.
+#[derive(Deserialize)]
+struct BridgeSceneRaw {
+    name: String,
+    bridge: BridgeRaw,
+}
+
+/// Loads `source` for `vbi modes`: the whole scene when it has `vehicles`,
+/// else its name and bridge.
+pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError> {
+    let has_vehicles = super::yaml::parse(source)
+        .ok()
+        .flatten()
+        .is_none_or(|node| node.get("vehicles").is_some());
+    if has_vehicles {
+        return super::load_str(source, file).map(|loaded| ModesScene {
+            name: loaded.scenario.name.clone(),
+            bridge: loaded.bridge,
+            scenario: Some(loaded.scenario),
+        });
+    }
+    // The whole scene's syntax and types are still checked, apart from the
+    // missing `vehicles`.
+    let node = match parse_raw(source, file) {
+        Ok((_, node)) => node,
+        Err(LoadError::Invalid(d))
+            if d.len() == 1 && d[0].to_string().contains("missing field `vehicles`") =>
+        {
+            super::yaml::parse(source)
+                .ok()
+                .flatten()
+                .ok_or(LoadError::Invalid(d))?
+        }
+        Err(e) => return Err(e),
+    };
+    let raw: BridgeSceneRaw = de::from_node(&node).map_err(|e| {
+        LoadError::Invalid(vec![super::Diagnostic::new(
+            file,
+            source,
+            e.loc.unwrap_or(node.loc),
+            e.message,
+        )])
+    })?;
+    let mut ck = Checker::new(file, source, &node);
+    let Some(mut bridge) = bridges::resolve_bridge(&raw.bridge, &mut ck) else {
+        return Err(LoadError::Invalid(ck.diagnostics));
+    };
+    if !ck.diagnostics.is_empty() {
+        return Err(LoadError::Invalid(ck.diagnostics));
+    }
+    // No vehicle excites anything: the automatic choice is its minimum for
+    // the quasi-static deflection shape.
+    let minimum = content::minimum_modes(&bridge);
+    let request = ModeRequest::of(bridge.modes(), ModeRequest::Lowest(minimum));
+    let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
+    let mut modal = ModalBridge::build_with(&bridge, request).map_err(|e| {
+        ck.error("bridge", e.to_string());
+        LoadError::Invalid(std::mem::take(&mut ck.diagnostics))
+    })?;
+    if automatic {
+        let count = modal.mode_count();
+        modal.selection = format!(
+            "automatic without vehicles: {count} modes, the minimum kept for the quasi-static shape"
+        );
+        bridge.modes_mut().max_frequency = modal.frequencies().last().copied();
+    }
+    Ok(ModesScene {
+        name: raw.name,
+        bridge: modal,
+        scenario: None,
+    })
+}
