@@ -137,6 +137,8 @@ impl Model {
         // Wheels keep their lanes: evaluate the plate's modes along them as
         // cheaply as along a beam.
         bridge.prepare_lines(&wheel_y);
+        // The contacts' static correction needs K⁻¹ once (beams).
+        bridge.prepare_contact_correction()?;
         let end_time = end_time(scenario, &vehicles, bridge.length);
         let time_step = scenario.solver.time_step;
         // A step count that reaches the end time; the last step may overshoot

@@ -175,6 +175,23 @@ impl ModalBridge {
         }
     }
 
+    /// How many modes a frequency cut-off (Hz) keeps, counted without
+    /// solving where that is cheap: a beam's Sturm (inertia) count, one
+    /// sparse factorisation; `None` for a plate (its Ritz problem is solved
+    /// whole anyway).
+    pub fn count_up_to(bridge: &Bridge, max_frequency: f64) -> Result<Option<usize>, BridgeError> {
+        match bridge {
+            Bridge::Beam(beam) => {
+                let model = BeamModel::new(beam)?;
+                let count = model
+                    .pencil
+                    .count_below(eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
+                Ok(Some(count))
+            }
+            Bridge::Plate(_) => Ok(None),
+        }
+    }
+
     /// Builds the modal model of a resolved bridge description with the
     /// modes its `modes:` section asks for (every mode the model offers when
     /// it names none).

@@ -213,6 +213,23 @@ pub(super) fn resolve(
     {
         return None;
     }
+    // A frequency cut-off alone: count what it keeps before solving for it.
+    let cut_off = match (bridge.modes().count, bridge.modes().max_frequency) {
+        (None, Some(cut)) => ModalBridge::count_up_to(&bridge, cut).ok().flatten(),
+        _ => None,
+    };
+    if let Some(kept) = cut_off
+        && !budget.check(
+            ck,
+            "bridge.modes",
+            "modes",
+            "bridge modes kept",
+            kept as f64,
+        )
+    {
+        return None;
+    }
+
     let build = |request| {
         ModalBridge::build_with(&bridge, request).map_err(|e| {
             let path = match e {

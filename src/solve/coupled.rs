@@ -63,8 +63,11 @@ pub fn run(
         for c in 0..nc {
             for d in 0..nc {
                 let (sc, sd) = (&shapes[c], &shapes[d]);
+                // The residual (static) flexibility of the modes left out,
+                // when the contact correction is on (see `permanent`).
+                let r = step_state.residual.get(c * nc + d).copied().unwrap_or(0.0);
                 sens[c * nc + d] = [
-                    -dot(&sc.values, &sd.scaled),
+                    -dot(&sc.values, &sd.scaled) - r,
                     -dot(&sc.velocity_row, &sd.scaled),
                     -dot(&sc.acceleration_row, &sd.scaled),
                 ];

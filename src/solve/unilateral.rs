@@ -248,6 +248,14 @@ pub fn run(
                 let pa = &shapes[a * modes..(a + 1) * modes];
                 let sb = &scaled[b * modes..(b + 1) * modes];
                 let mut w: f64 = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
+                // The modes left out add their static flexibility between the
+                // two contacts (contact static correction; 0 when off).
+                w += bridge.residual_flexibility(
+                    wheel_positions[contacts[a].wheel],
+                    wheel_positions[contacts[b].wheel],
+                    pa,
+                    &shapes[b * modes..(b + 1) * modes],
+                );
                 let (ca, cb) = (contacts[a], contacts[b]);
                 if ca.vehicle == cb.vehicle {
                     w += steps[ca.vehicle].contact_response[(ca.dof, cb.column)];

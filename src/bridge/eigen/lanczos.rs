@@ -30,8 +30,9 @@ use crate::bridge::BridgeError;
 /// An accurate product y = A x with the shifted matrix.
 pub type Product<'a> = &'a dyn Fn(&[f64], &mut [f64]);
 
-/// Iterative-refinement steps per solve when an accurate product is given.
-pub const REFINEMENT_STEPS: usize = 2;
+/// Most iterative-refinement steps per solve when an accurate product is
+/// given (it stops earlier once the correction reaches round-off).
+pub const REFINEMENT_STEPS: usize = 10;
 
 /// Relative residual |β y_m| / θ below which a Ritz pair is accepted.
 const RITZ_TOLERANCE: f64 = 1e-13;
@@ -41,7 +42,7 @@ const RITZ_TOLERANCE: f64 = 1e-13;
 /// factorisation of K − σM.
 ///
 /// With `refine = Some(K·)` (an accurate product with K − σM), every solve is
-/// followed by [`REFINEMENT_STEPS`] steps of iterative refinement
+/// followed by up to [`REFINEMENT_STEPS`] steps of iterative refinement
 /// x ← x + F⁻¹(b − (K − σM)x): the factorised solve alone carries a relative
 /// error of order ε·κ in the smooth (low-mode) components, which the
 /// refinement removes down to the accuracy of the product (Wilkinson;
@@ -59,26 +60,10 @@ pub fn lowest(
         return Ok((Vec::new(), Mat::zeros(n, 0)));
     }
     let mut workspace = factor.workspace()?;
-    let mut rhs = vec![0.0; n];
-    let mut correction = vec![0.0; n];
+    let mut solver = RefinedSolve::new(factor, refine, n);
     let mut apply = |x: &[f64], out: &mut [f64], workspace: &mut faer::dyn_stack::MemBuffer| {
         multiply(mass, x, out);
-        let Some(product) = refine else {
-            factor.solve_in_place(out, workspace);
-            return;
-        };
-        rhs.copy_from_slice(out);
-        factor.solve_in_place(out, workspace);
-        for _ in 0..REFINEMENT_STEPS {
-            product(out, &mut correction);
-            for (c, b) in correction.iter_mut().zip(&rhs) {
-                *c = b - *c;
-            }
-            factor.solve_in_place(&mut correction, workspace);
-            for (o, c) in out.iter_mut().zip(&correction) {
-                *o += c;
-            }
-        }
+        solver.solve(out, workspace);
     };
 
     // Basis V (n × capacity), grown in blocks; T's diagonal and off-diagonal.
@@ -193,6 +178,115 @@ pub fn lowest(
             }
         }
     }
+}
+
+/// Solves (K − σM) x = b with the factor, refined against an accurate
+/// product when one is given (see [`lowest`]). Work vectors are kept, so a
+/// solve allocates nothing.
+pub struct RefinedSolve<'a> {
+    factor: &'a Factor,
+    product: Option<Product<'a>>,
+    rhs: Vec<f64>,
+    correction: Vec<f64>,
+}
+
+impl<'a> RefinedSolve<'a> {
+    /// A solver of order `n`.
+    pub fn new(factor: &'a Factor, product: Option<Product<'a>>, n: usize) -> Self {
+        Self {
+            factor,
+            product,
+            rhs: vec![0.0; n],
+            correction: vec![0.0; n],
+        }
+    }
+
+    /// Overwrites b (in `out`) with x.
+    pub fn solve(&mut self, out: &mut [f64], workspace: &mut faer::dyn_stack::MemBuffer) {
+        let Some(product) = self.product else {
+            self.factor.solve_in_place(out, workspace);
+            return;
+        };
+        self.rhs.copy_from_slice(out);
+        self.factor.solve_in_place(out, workspace);
+        // Refine until the correction stops shrinking or reaches ~ε‖x‖ (each
+        // step divides the error by about ε·κ, so a mesh near ε·κ ~ 1 needs
+        // more).
+        let mut previous = f64::INFINITY;
+        for _ in 0..REFINEMENT_STEPS {
+            product(out, &mut self.correction);
+            for (c, b) in self.correction.iter_mut().zip(&self.rhs) {
+                *c = b - *c;
+            }
+            self.factor.solve_in_place(&mut self.correction, workspace);
+            let size = self.correction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+            for (o, c) in out.iter_mut().zip(&self.correction) {
+                *o += c;
+            }
+            let scale = out.iter().fold(0.0f64, |m, o| m.max(o.abs()));
+            if size <= 4.0 * f64::EPSILON * scale || size >= 0.5 * previous {
+                break;
+            }
+            previous = size;
+        }
+    }
+}
+
+/// Polishes converged eigenpairs: one step of inverse iteration on each
+/// vector (φ ← S φ, which divides every error component along a mode j by
+/// λⱼ/λ, so the high-frequency remainder a Ritz vector carries — the part
+/// the energy-norm residual sees, ~√(λ_max/λ) × the Ritz residual — is
+/// gone), then Rayleigh–Ritz on the polished set: with A = ΦᵀKΦ (K through
+/// `stiffness`) and B = ΦᵀMΦ, the small pencil's pairs give λ and Φ Y,
+/// M-orthonormal. Cost one refined solve and one K product per vector,
+/// O(n·k²) for the projections.
+pub fn polish(
+    mass: &SymmetricSparse,
+    factor: &Factor,
+    refine: Option<Product<'_>>,
+    stiffness: Product<'_>,
+    vectors: &Mat<f64>,
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    let (n, k) = (vectors.nrows(), vectors.ncols());
+    let mut workspace = factor.workspace()?;
+    let mut solver = RefinedSolve::new(factor, refine, n);
+    let mut polished = Mat::<f64>::zeros(n, k);
+    let mut k_polished = Mat::<f64>::zeros(n, k);
+    let mut m_polished = Mat::<f64>::zeros(n, k);
+    let mut work = vec![0.0; n];
+    let mut product = vec![0.0; n];
+    for c in 0..k {
+        let phi: Vec<f64> = vectors.col(c).iter().copied().collect();
+        multiply(mass, &phi, &mut work);
+        solver.solve(&mut work, &mut workspace);
+        let norm = m_norm(mass, &work, &mut product);
+        for i in 0..n {
+            work[i] /= norm;
+            polished[(i, c)] = work[i];
+            m_polished[(i, c)] = product[i] / norm;
+        }
+        stiffness(&work, &mut product);
+        for i in 0..n {
+            k_polished[(i, c)] = product[i];
+        }
+    }
+    let projected_stiffness = polished.transpose() * &k_polished;
+    let projected_mass = polished.transpose() * &m_polished;
+    let symmetric = |a: &Mat<f64>| Mat::from_fn(k, k, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
+    let (eigenvalues, small) = super::dense::lowest_inverted(
+        &symmetric(&projected_stiffness),
+        &symmetric(&projected_mass),
+    )?;
+    let mut out = Mat::<f64>::zeros(n, k);
+    matmul(
+        out.as_mut(),
+        Accum::Replace,
+        polished.as_ref(),
+        small.as_ref(),
+        1.0,
+        Par::Seq,
+    );
+    Ok((eigenvalues, out))
 }
 
 /// Ritz vectors V y and λ = σ + 1/θ of the `wanted` largest θ, ascending λ,

@@ -186,7 +186,13 @@ impl Pencil {
                 dense::lowest_inverted(&self.stiffness.to_dense(), &self.mass.to_dense())?
             } else {
                 let factor = self.stiffness_factor()?;
-                lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?
+                let (_, ritz) = lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?;
+                let assembled = |x: &[f64], y: &mut [f64]| multiply(&self.stiffness, x, y);
+                let product: lanczos::Product<'_> = match stiffness {
+                    Some(accurate) => accurate,
+                    None => &assembled,
+                };
+                lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?
             };
             let Some(gap) = first_gap(&eigenvalues, count, dense || want == n) else {
                 extra *= 2;
