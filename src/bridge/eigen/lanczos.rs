@@ -232,14 +232,15 @@ impl<'a> RefinedSolve<'a> {
     }
 }
 
-/// Polishes converged eigenpairs: one step of inverse iteration on each
-/// vector (φ ← S φ, which divides every error component along a mode j by
-/// λⱼ/λ, so the high-frequency remainder a Ritz vector carries — the part
-/// the energy-norm residual sees, ~√(λ_max/λ) × the Ritz residual — is
-/// gone), then Rayleigh–Ritz on the polished set: with A = ΦᵀKΦ (K through
-/// `stiffness`) and B = ΦᵀMΦ, the small pencil's pairs give λ and Φ Y,
-/// M-orthonormal. Cost one refined solve and one K product per vector,
-/// O(n·k²) for the projections.
+/// Polishes converged eigenpairs, lowest first: one step of inverse
+/// iteration on each vector (φ ← S φ, which divides every error component
+/// along a higher mode j by λⱼ/λ, so the high-frequency remainder a Ritz
+/// vector carries — the part the energy-norm residual sees, ~√(λ_max/λ) ×
+/// the Ritz residual — is gone), then M-orthogonalisation against the
+/// polished lower vectors (twice, classical Gram–Schmidt), which removes the
+/// lower-mode components the step amplified; λ is the Rayleigh quotient
+/// φᵀKφ/φᵀMφ with K through `stiffness`. Cost one refined solve, one K and
+/// two M products per vector, O(n·k²) for the orthogonalisation.
 pub fn polish(
     mass: &SymmetricSparse,
     factor: &Factor,
@@ -251,42 +252,56 @@ pub fn polish(
     let mut workspace = factor.workspace()?;
     let mut solver = RefinedSolve::new(factor, refine, n);
     let mut polished = Mat::<f64>::zeros(n, k);
-    let mut k_polished = Mat::<f64>::zeros(n, k);
     let mut m_polished = Mat::<f64>::zeros(n, k);
+    let mut eigenvalues = Vec::with_capacity(k);
     let mut work = vec![0.0; n];
     let mut product = vec![0.0; n];
+    let mut coefficients = Mat::<f64>::zeros(k, 1);
     for c in 0..k {
         let phi: Vec<f64> = vectors.col(c).iter().copied().collect();
         multiply(mass, &phi, &mut work);
         solver.solve(&mut work, &mut workspace);
+        for _pass in 0..2 {
+            if c == 0 {
+                break;
+            }
+            // w ← w − Φ_<c (Φ_<cᵀ M w), with M Φ stored.
+            let lower = m_polished.as_ref().subcols(0, c);
+            let mut coeff = coefficients.as_mut().subrows_mut(0, c);
+            matmul(
+                coeff.rb_mut().col_mut(0),
+                Accum::Replace,
+                lower.transpose(),
+                faer::ColRef::from_slice(&work),
+                1.0,
+                Par::Seq,
+            );
+            matmul(
+                faer::ColMut::from_slice_mut(&mut work),
+                Accum::Add,
+                polished.as_ref().subcols(0, c),
+                coeff.rb().col(0),
+                -1.0,
+                Par::Seq,
+            );
+        }
         let norm = m_norm(mass, &work, &mut product);
+        if !(norm > 0.0 && norm.is_finite()) {
+            return Err(BridgeError::EigenFailed);
+        }
         for i in 0..n {
             work[i] /= norm;
             polished[(i, c)] = work[i];
             m_polished[(i, c)] = product[i] / norm;
         }
         stiffness(&work, &mut product);
-        for i in 0..n {
-            k_polished[(i, c)] = product[i];
-        }
+        eigenvalues.push(work.iter().zip(&product).map(|(a, b)| a * b).sum::<f64>());
     }
-    let projected_stiffness = polished.transpose() * &k_polished;
-    let projected_mass = polished.transpose() * &m_polished;
-    let symmetric = |a: &Mat<f64>| Mat::from_fn(k, k, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
-    let (eigenvalues, small) = super::dense::lowest_inverted(
-        &symmetric(&projected_stiffness),
-        &symmetric(&projected_mass),
-    )?;
-    let mut out = Mat::<f64>::zeros(n, k);
-    matmul(
-        out.as_mut(),
-        Accum::Replace,
-        polished.as_ref(),
-        small.as_ref(),
-        1.0,
-        Par::Seq,
-    );
-    Ok((eigenvalues, out))
+    // Rayleigh quotients in ascending order (a near-degenerate pair may swap).
+    let mut order: Vec<usize> = (0..k).collect();
+    order.sort_by(|&a, &b| eigenvalues[a].total_cmp(&eigenvalues[b]));
+    let sorted = Mat::from_fn(n, k, |i, j| polished[(i, order[j])]);
+    Ok((order.iter().map(|&j| eigenvalues[j]).collect(), sorted))
 }
 
 /// Ritz vectors V y and λ = σ + 1/θ of the `wanted` largest θ, ascending λ,
