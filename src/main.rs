@@ -63,6 +63,10 @@ enum Command {
         /// Write mode shapes at the mesh nodes to this CSV file (`-`: stdout).
         #[arg(long)]
         shapes: Option<PathBuf>,
+        /// Print the modes as JSON, at full precision, with the checks every
+        /// mode passed (residual, M-orthonormality, Sturm count).
+        #[arg(long)]
+        json: bool,
     },
     /// Speed against error: the scene at finer and coarser time steps and
     /// mode counts, each recorded quantity's error against the finest run,
@@ -82,6 +86,11 @@ enum Command {
         /// No progress and no closing message (the table is still printed).
         #[arg(long, short)]
         quiet: bool,
+        /// Leave this recorded quantity (by name) out of the overall
+        /// "cheapest within tolerance" (it is still measured and judged on
+        /// its own); may be repeated.
+        #[arg(long, value_name = "NAME")]
+        exclude: Vec<String>,
     },
 }
 
@@ -147,14 +156,23 @@ fn main() -> ExitCode {
             out!("{}", vbi::schema::schema_json());
             ExitCode::SUCCESS
         }
-        Command::Modes { file, shapes } => modes(&file, shapes.as_deref()),
+        Command::Modes { file, shapes, json } => modes(&file, shapes.as_deref(), json),
         Command::Converge {
             file,
             tolerance,
             levels,
             out,
             quiet,
-        } => converge(load(&file), &file, tolerance, levels as usize, out, quiet),
+            exclude,
+        } => converge(
+            load(&file),
+            &file,
+            tolerance,
+            levels as usize,
+            out,
+            quiet,
+            exclude,
+        ),
     }
 }
 
@@ -321,7 +339,7 @@ fn check(
     }
 }
 
-fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
+fn modes(file: &Path, shapes: Option<&Path>, json: bool) -> ExitCode {
     let vbi::scenario::bridge_only::ModesScene {
         name,
         bridge,
@@ -331,6 +349,10 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
         Err(e) => return load_error(&e),
     };
     let plate = bridge.width().is_some();
+    if json {
+        outln!("{}", modes_json(&name, &bridge));
+        return ExitCode::SUCCESS;
+    }
     out!(
         "{}: {} modes used of {} available ({})\n{:>5} {:>14} {:>14} {:>12}{}\n",
         name,
@@ -381,6 +403,51 @@ fn modes(file: &Path, shapes: Option<&Path>) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// The modes of `bridge` as JSON: every frequency at full precision
+/// (shortest round-trip decimal), damping, character, and the checks the
+/// modes passed ([`vbi::bridge::eigen::ModeCheck`]).
+fn modes_json(name: &str, bridge: &vbi::bridge::ModalBridge) -> String {
+    let check = bridge.check;
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let modes: Vec<serde_json::Value> = bridge
+        .frequencies()
+        .iter()
+        .zip(&bridge.circular_frequencies)
+        .zip(&bridge.damping_ratios)
+        .enumerate()
+        .map(|(i, ((f, w), z))| {
+            serde_json::json!({
+                "mode": i + 1,
+                "frequency_hz": f,
+                "circular_frequency_rad_s": w,
+                "period_s": 1.0 / f,
+                "damping_ratio": z,
+                "character": bridge.mode_character(i),
+            })
+        })
+        .collect();
+    let value = serde_json::json!({
+        "scenario": name,
+        "modes_used": bridge.mode_count(),
+        "modes_available": bridge.available_modes,
+        "selection": bridge.selection,
+        "check": {
+            "solver": if check.dense { "dense inverted reduction" } else { "shift-invert Lanczos" },
+            "largest_energy_residual": check.largest_residual,
+            "largest_plain_residual": check.largest_plain_residual,
+            "residual_bound": vbi::bridge::eigen::RESIDUAL_BOUND,
+            "orthonormality_error": check.orthonormality_error,
+            "orthonormality_bound": vbi::bridge::eigen::ORTHONORMALITY_BOUND,
+            "sturm_count": check.inertia.map(|(shift, count)| serde_json::json!({
+                "below_hz": shift.sqrt() / two_pi,
+                "modes": count,
+            })),
+        },
+        "modes": modes,
+    });
+    serde_json::to_string_pretty(&value).expect("JSON of numbers and strings")
+}
+
 /// Each vehicle's own natural frequencies with its wheels held on rigid
 /// ground (massless DOFs condensed out), to set against the bridge's.
 fn print_vehicle_frequencies(scenario: &vbi::scenario::resolved::Scenario) {
@@ -415,6 +482,7 @@ fn converge(
     levels: usize,
     out: Option<PathBuf>,
     quiet: bool,
+    exclude: Vec<String>,
 ) -> ExitCode {
     use vbi::study::converge::{self as study, ConvergeError, Options};
     let loaded = match loaded {
@@ -446,7 +514,7 @@ fn converge(
     let options = Options {
         levels,
         tolerance,
-        ..Options::default()
+        exclude,
     };
     let study = match study::converge(&loaded, &options, &mut progress) {
         Ok(s) => s,
@@ -568,8 +636,24 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
         }
     }
     let tolerance = vbi::study::converge::percent(study.tolerance);
+    let left_out = if study.excluded.is_empty() {
+        String::new()
+    } else {
+        format!(" (leaving out {})", study.excluded.join(", "))
+    };
     match study.cheapest_run() {
-        Some(run) => outln!("cheapest within {tolerance} %: {}", run.label),
-        None => outln!("cheapest within {tolerance} %: none (every run's error exceeds it)"),
+        Some(run) => outln!("cheapest within {tolerance} %{left_out}: {}", run.label),
+        None => {
+            outln!("cheapest within {tolerance} %{left_out}: none (every run's error exceeds it)")
+        }
+    }
+    for (name, cheapest) in &study.cheapest_per_quantity {
+        match cheapest {
+            Some(i) => outln!(
+                "  {name}: cheapest within {tolerance} %: {}",
+                study.runs[*i].label
+            ),
+            None => outln!("  {name}: no run within {tolerance} %"),
+        }
     }
 }

@@ -335,3 +335,32 @@ fn contact_static_correction_converges_vehicle_responses_with_five_modes() {
     eprintln!("elastic body: corrected {e:e}");
     assert!(e < 1e-3, "elastic: {e:e}");
 }
+
+/// `vbi modes --json` prints every frequency at full precision (they parse
+/// back to the library's bits) with the checks every mode passed.
+#[test]
+fn modes_json_has_full_precision_and_the_checks() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios/yang-yau-sprung-mass.yaml");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(["modes", "--json"])
+        .arg(&path)
+        .output()
+        .expect("vbi runs");
+    assert!(output.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let loaded = vbi::scenario::load_file(&path).unwrap();
+    let frequencies = loaded.bridge.frequencies();
+    let modes = json["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), frequencies.len());
+    for (mode, f) in modes.iter().zip(&frequencies) {
+        assert_eq!(
+            mode["frequency_hz"].as_f64().unwrap().to_bits(),
+            f.to_bits()
+        );
+    }
+    let check = &json["check"];
+    assert!(check["largest_energy_residual"].as_f64().unwrap() <= RESIDUAL_BOUND);
+    assert!(check["orthonormality_error"].as_f64().unwrap() <= ORTHONORMALITY_BOUND);
+    assert_eq!(check["sturm_count"]["modes"].as_u64(), Some(10));
+}
