@@ -159,7 +159,10 @@ impl PlateModes {
         let length: f64 = plate.spans.iter().sum();
         let width = plate.width;
         let (nx, ny) = (plate.terms.longitudinal, plate.terms.transverse);
-        let terms = nx * ny;
+        let terms = nx.checked_mul(ny).ok_or(BridgeError::OutOfMemory)?;
+        // The Ritz matrices, their factor and the modes: refuse a basis that
+        // cannot be held instead of aborting in an allocation.
+        eigen::dense::ensure_memory(terms, terms, 12)?;
 
         // Longitudinal functions: modes of the continuous unit beam.
         let unit_beam = Beam {

@@ -26,6 +26,9 @@ pub fn lowest_inverted(
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
     faer::set_global_parallelism(Par::Seq);
     let n = stiffness.nrows();
+    // About eight n × n work matrices (the reduction, faer's eigen solver,
+    // the sorted vectors): refuse what cannot be had instead of aborting.
+    ensure_memory(n, n, 8)?;
     let llt = stiffness
         .llt(Side::Lower)
         .map_err(|_| BridgeError::StiffnessNotPositive)?;
@@ -83,4 +86,18 @@ pub fn solve_spd(stiffness: &Mat<f64>, mut rhs: Mat<f64>) -> Result<Mat<f64>, Br
         .map_err(|_| BridgeError::StiffnessNotPositive)?;
     llt.solve_in_place(rhs.as_mut());
     Ok(rhs)
+}
+
+/// Checks that `copies` matrices of `rows × cols` f64 can be allocated,
+/// before a dense kernel that would abort on failure allocates them.
+pub fn ensure_memory(rows: usize, cols: usize, copies: usize) -> Result<(), BridgeError> {
+    let entries = rows
+        .checked_mul(cols)
+        .and_then(|e| e.checked_mul(copies))
+        .ok_or(BridgeError::OutOfMemory)?;
+    let mut probe: Vec<f64> = Vec::new();
+    probe
+        .try_reserve_exact(entries)
+        .map_err(|_| BridgeError::OutOfMemory)?;
+    Ok(())
 }

@@ -147,6 +147,7 @@ pub fn lowest(
         }
         if steps >= capacity {
             let grown = (capacity + capacity / 2 + 10).min(n + 1);
+            super::dense::ensure_memory(n, grown, 2)?;
             basis.resize_with(n, grown, |_, _| 0.0);
             coefficients.resize_with(grown, 1, |_, _| 0.0);
             capacity = grown;
