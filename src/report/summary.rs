@@ -159,15 +159,7 @@ fn masked_extremes(
                 best = Some(i);
             }
         }
-        best.map(|i| {
-            let t = time[i];
-            let p = column.position;
-            Extreme {
-                value: values[i],
-                time: t,
-                position: model.vehicles[p.vehicle].front_position(t) - p.offset,
-            }
-        })
+        best.map(|i| extreme_at(model, column, time, values, i))
     };
     Some(Extremes {
         max: pick(&|a, b| a > b)?,
@@ -189,10 +181,16 @@ fn extreme(
             best = i;
         }
     }
-    let t = time[best];
+    extreme_at(model, column, time, values, best)
+}
+
+/// The extreme at sample `i`: its value, time and the reference wheel's
+/// position then.
+fn extreme_at(model: &Model, column: &Column, time: &[f64], values: &[f64], i: usize) -> Extreme {
+    let t = time[i];
     let p = column.position;
     Extreme {
-        value: values[best],
+        value: values[i],
         time: t,
         position: model.vehicles[p.vehicle].front_position(t) - p.offset,
     }

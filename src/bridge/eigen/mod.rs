@@ -198,21 +198,7 @@ impl Pencil {
                 extra *= 2;
                 continue;
             };
-            let inertia = match gap {
-                Gap::Between(shift) => {
-                    let found = self.count_below(shift)?;
-                    let expected = cluster_end(&eigenvalues, count);
-                    if found != expected {
-                        return Err(BridgeError::ModesMissing {
-                            below: shift.sqrt() / (2.0 * std::f64::consts::PI),
-                            solved: expected,
-                            counted: found,
-                        });
-                    }
-                    Some((shift, found))
-                }
-                Gap::All => None,
-            };
+            let inertia = inertia_check(gap, &eigenvalues, count, |shift| self.count_below(shift))?;
             return Ok(Eigenpairs {
                 eigenvalues: eigenvalues[..count].to_vec(),
                 vectors: vectors.subcols(0, count).to_owned(),
@@ -234,6 +220,30 @@ enum Gap {
     Between(f64),
     /// Every mode of the model was found: nothing to count.
     All,
+}
+
+/// The completeness check: at a shift in the gap, the inertia count
+/// (`count_below`) must equal the number of eigenvalues solved below it;
+/// returns (shift, count), or `None` when every mode was solved.
+fn inertia_check(
+    gap: Gap,
+    eigenvalues: &[f64],
+    count: usize,
+    count_below: impl FnOnce(f64) -> Result<usize, BridgeError>,
+) -> Result<Option<(f64, usize)>, BridgeError> {
+    let Gap::Between(shift) = gap else {
+        return Ok(None);
+    };
+    let found = count_below(shift)?;
+    let expected = cluster_end(eigenvalues, count);
+    if found != expected {
+        return Err(BridgeError::ModesMissing {
+            below: shift.sqrt() / (2.0 * std::f64::consts::PI),
+            solved: expected,
+            counted: found,
+        });
+    }
+    Ok(Some((shift, found)))
 }
 
 /// Index one past the cluster that contains eigenvalue `count − 1`.
@@ -364,22 +374,10 @@ pub fn check_dense(
             false,
         )
     };
-    let inertia = match first_gap(eigenvalues, count, true) {
-        Some(Gap::Between(shift)) => {
-            let pencil = Pencil::new(to_sparse(stiffness)?, to_sparse(mass)?);
-            let found = pencil.count_below(shift)?;
-            let expected = cluster_end(eigenvalues, count);
-            if found != expected {
-                return Err(BridgeError::ModesMissing {
-                    below: shift.sqrt() / (2.0 * std::f64::consts::PI),
-                    solved: expected,
-                    counted: found,
-                });
-            }
-            Some((shift, found))
-        }
-        _ => None,
-    };
+    let gap = first_gap(eigenvalues, count, true).unwrap_or(Gap::All);
+    let inertia = inertia_check(gap, eigenvalues, count, |shift| {
+        Pencil::new(to_sparse(stiffness)?, to_sparse(mass)?).count_below(shift)
+    })?;
     let kept = vectors.subcols(0, count).to_owned();
     let stiffness_llt = stiffness
         .llt(faer::Side::Lower)
