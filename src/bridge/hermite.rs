@@ -77,12 +77,6 @@ impl HermiteField {
         }
     }
 
-    /// The same field with only its first `components` components.
-    pub fn truncated(&self, components: usize) -> Self {
-        let components = components.min(self.components);
-        Self::from_fn(self.node_x.clone(), components, |n, c| self.nodal(n, c))
-    }
-
     /// Number of components.
     pub fn components(&self) -> usize {
         self.components

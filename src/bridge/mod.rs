@@ -382,23 +382,6 @@ impl ModalBridge {
             .collect()
     }
 
-    /// Keeps only the lowest `count` modes, recording why.
-    pub fn truncate(&mut self, count: usize, selection: String) {
-        let count = count.clamp(1, self.mode_count());
-        self.circular_frequencies.truncate(count);
-        self.damping_ratios.truncate(count);
-        match &mut self.shapes {
-            Shapes::Beam { shapes, .. } => *shapes = shapes.truncated(count),
-            Shapes::Plate { modes, lines } => {
-                modes.truncate(count);
-                for (_, line) in lines.iter_mut() {
-                    *line = line.truncated(count);
-                }
-            }
-        }
-        self.selection = selection;
-    }
-
     /// Number of kept modes.
     pub fn mode_count(&self) -> usize {
         self.circular_frequencies.len()

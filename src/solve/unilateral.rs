@@ -69,6 +69,9 @@ struct VehicleStep {
     previous_velocity: DVector<f64>,
     previous_acceleration: DVector<f64>,
     previous_displacement: DVector<f64>,
+    /// u̇ₙ + (1−γ)Δt üₙ, m/s, and the recovered ü_{n+1}, m/s².
+    predicted_velocity: DVector<f64>,
+    recovered_acceleration: DVector<f64>,
 }
 
 /// Integrates the model with unilateral contact.
@@ -134,6 +137,8 @@ pub fn run(
             previous_velocity: DVector::zeros(n),
             previous_acceleration: DVector::zeros(n),
             previous_displacement: DVector::zeros(n),
+            predicted_velocity: DVector::zeros(n),
+            recovered_acceleration: DVector::zeros(n),
         });
     }
 
@@ -367,22 +372,21 @@ pub fn run(
             vs.recovery_load += &vehicle.gravity_load;
             vs.recovery_load
                 .gemv(-w, &vehicle.stiffness, &vs.predictor, 1.0);
-            // Reuse `inertia_history` as the predicted velocity u̇ₙ + (1−γ)Δt üₙ.
-            vs.inertia_history.copy_from(&vs.previous_velocity);
-            vs.inertia_history
+            vs.predicted_velocity.copy_from(&vs.previous_velocity);
+            vs.predicted_velocity
                 .axpy(nm.a6, &vs.previous_acceleration, 1.0);
             vs.recovery_load
-                .gemv(-w, &vehicle.damping, &vs.inertia_history, 1.0);
+                .gemv(-w, &vehicle.damping, &vs.predicted_velocity, 1.0);
             if nm.alpha != 0.0 {
                 vs.recovery_load
                     .gemv(nm.alpha, &vehicle.damping, &vs.previous_velocity, 1.0);
                 vs.recovery_load
                     .gemv(nm.alpha, &vehicle.stiffness, &vs.previous_displacement, 1.0);
             }
-            vs.damping_history
+            vs.recovered_acceleration
                 .gemv(1.0, recovery, &vs.recovery_load, 0.0);
             for k in 0..state.displacement.len() {
-                let a_new = vs.damping_history[k];
+                let a_new = vs.recovered_acceleration[k];
                 state.velocity[k] =
                     nm.velocity(vs.previous_velocity[k], vs.previous_acceleration[k], a_new);
                 state.acceleration[k] = a_new;

@@ -12,7 +12,6 @@
 //! (cᵀKc = 1 from the reduction). Sequential (`Par::Seq`): bit-identical
 //! whatever the thread count. Cost O(n³) time, O(n²) memory.
 
-use faer::linalg::solvers::Solve;
 use faer::{Mat, Par, Side};
 
 use crate::bridge::BridgeError;
@@ -76,16 +75,6 @@ pub fn lowest_inverted(
         }
     }
     Ok((eigenvalues, sorted))
-}
-
-/// Solves K u = b for symmetric positive definite K (Cholesky). O(n³).
-pub fn solve_spd(stiffness: &Mat<f64>, mut rhs: Mat<f64>) -> Result<Mat<f64>, BridgeError> {
-    faer::set_global_parallelism(Par::Seq);
-    let llt = stiffness
-        .llt(Side::Lower)
-        .map_err(|_| BridgeError::StiffnessNotPositive)?;
-    llt.solve_in_place(rhs.as_mut());
-    Ok(rhs)
 }
 
 /// Checks that `copies` matrices of `rows × cols` f64 can be allocated,

@@ -289,6 +289,7 @@ pub fn verify(
     let mut m_vectors = Mat::<f64>::zeros(n, count);
     let mut m_phi = vec![0.0; n];
     let mut residual = vec![0.0; n];
+    let mut flexible = vec![0.0; n];
     let mut largest_residual = 0.0f64;
     let mut largest_plain_residual = 0.0f64;
     for (mode, &lambda) in eigenvalues.iter().enumerate() {
@@ -301,13 +302,9 @@ pub fn verify(
         }
         let plain = residual.iter().map(|v| v * v).sum::<f64>().sqrt() / norm_k;
         // ‖r‖²_{K⁻¹} = rᵀK⁻¹r; ‖Kφ‖²_{K⁻¹} = φᵀKφ.
-        let r_squared_plain: Vec<f64> = residual.clone();
-        solve_stiffness(&mut residual);
-        let energy_r: f64 = r_squared_plain
-            .iter()
-            .zip(&residual)
-            .map(|(a, b)| a * b)
-            .sum();
+        flexible.copy_from_slice(&residual);
+        solve_stiffness(&mut flexible);
+        let energy_r: f64 = residual.iter().zip(&flexible).map(|(a, b)| a * b).sum();
         let energy_phi: f64 = phi.iter().zip(&k_phi).map(|(a, b)| a * b).sum();
         let relative = (energy_r.abs() / energy_phi).sqrt();
         let accepted = lambda > 0.0 && lambda.is_finite() && relative <= RESIDUAL_BOUND;

@@ -58,22 +58,6 @@ pub fn multiply(matrix: &SymmetricSparse, x: &[f64], y: &mut [f64]) {
     }
 }
 
-/// xᵀ A y for a sparse symmetric A. Cost O(nnz).
-pub fn quadratic_form(matrix: &SymmetricSparse, x: &[f64], y: &[f64]) -> f64 {
-    let col_ptr = matrix.symbolic().col_ptr();
-    let row_idx = matrix.symbolic().row_idx();
-    let values = matrix.val();
-    let mut sum = 0.0;
-    for (j, &yj) in y.iter().enumerate() {
-        let mut column = 0.0;
-        for p in col_ptr[j]..col_ptr[j + 1] {
-            column += values[p] * x[row_idx[p]];
-        }
-        sum += column * yj;
-    }
-    sum
-}
-
 /// A − σB on the union of both patterns.
 pub fn shifted(
     a: &SymmetricSparse,
@@ -102,9 +86,6 @@ pub struct Factor {
     values: Vec<f64>,
     /// Number of negative pivots of D.
     negative_pivots: usize,
-    /// Smallest |pivot| relative to the largest: a near-singular matrix
-    /// (a shift on an eigenvalue, an unsupported bridge) shows here.
-    pub pivot_ratio: f64,
     solve_scratch: faer::dyn_stack::StackReq,
 }
 
@@ -154,7 +135,6 @@ impl Factor {
             symbolic,
             values,
             negative_pivots,
-            pivot_ratio: smallest / largest,
             solve_scratch,
         })
     }
