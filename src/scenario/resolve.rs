@@ -299,6 +299,22 @@ pub(super) fn resolve(
         // so the resolved scenario reproduces the choice.
         let (cutoff, dynamic, top) = content::mode_cutoff(&modal, &excitations);
         if dynamic {
+            // The cut-off the excitation asks for may keep more modes than the
+            // budget allows (a very long or very flexible span): count them
+            // with one factorisation before solving for them.
+            let kept = ModalBridge::count_up_to(&bridge, cutoff)
+                .ok()
+                .flatten()
+                .map_or(minimum, |n| n.max(minimum));
+            if !budget.check(
+                ck,
+                "bridge.spans",
+                "modes",
+                &format!("bridge modes up to the {cutoff:.4} Hz the vehicles excite"),
+                kept as f64,
+            ) {
+                return None;
+            }
             modal = match build(ModeRequest::AtLeastUpTo(minimum, cutoff)) {
                 Ok(m) => m,
                 Err((path, message)) => {

@@ -223,6 +223,11 @@ case("size-beam-dofs-budget", "budget", "a 200,000-DOF beam is more than the def
 case("size-modes-count", "budget", "more modes than the budget",
      scene(bridge=BEAM + "  elements_per_span: 900\n  modes: {count: @@1000}\n",
            extra="limits: {dofs: 2000}\n"), "limits.modes")
+case("size-modes-automatic", "budget",
+     "a 100 km span whose automatic cut-off keeps thousands of modes (found by tests/fuzz.rs: "
+     "it used to solve for all of them inside `vbi check`)",
+     "name: hostile\nbridge:\n  type: beam\n  spans: @@[100000]\n  bending_stiffness: 8.323e9\n"
+     "  mass_per_length: 2303.0\n  elements_per_span: 10000\nvehicles:\n" + OSC, "limits.modes")
 case("size-modes-max-frequency", "budget", "a cut-off frequency that keeps all 600 modes",
      scene(bridge=BEAM + "  elements_per_span: 300\n  modes: @@{max_frequency: 1.0e12}\n",
            extra="solver: {time_step: 1.0e-3}\n"), "limits.modes")
