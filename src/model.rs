@@ -85,6 +85,8 @@ pub struct Model {
     pub static_wheel_loads: Vec<f64>,
     /// Time step, s.
     pub time_step: f64,
+    /// How the time step was chosen, in words.
+    pub time_step_selection: String,
     /// Number of steps.
     pub steps: usize,
     /// Newmark β.
@@ -153,6 +155,7 @@ impl Model {
             wheel_y,
             static_wheel_loads,
             time_step,
+            time_step_selection: scenario.solver.time_step_selection.clone(),
             steps,
             beta: scenario.solver.newmark.beta,
             gamma: scenario.solver.newmark.gamma,

@@ -386,7 +386,7 @@ fn bridge_acceleration_matches_closed_form() {
              damping: {{type: modal, ratio: {zeta}}}}}\n\
              vehicles: [{{type: moving_force, loads: [{force}], speed: {speed}}}]\n\
              solver: {{time_step: {dt}, free_vibration: {period}}}\n\
-             record: [{{name: acc, quantity: bridge_acceleration, x: {}}}]\n",
+             record: [{{name: acc, quantity: bridge_acceleration, x: {}, max_frequency: 1000}}]\n",
             length / 2.0
         ));
         let ours = column(&outcome, "acc");
@@ -414,4 +414,80 @@ fn bridge_acceleration_matches_closed_form() {
         assert!((1.8..2.3).contains(&order), "order {order}: {errors:?}");
     }
     assert!(errors[2] < 1.5e-3, "acceleration history {:e}", errors[2]);
+}
+
+/// The deck-acceleration filter of EN 1990 A2.4.4.2.1(4): by default a
+/// bridge acceleration sums the modes up to max(30 Hz, 1.5 f₁, f₃). On the
+/// 25 m span above (f₁ = 4.78 Hz, f₃ = 9 f₁ = 43.0 Hz, f₄ = 76.5 Hz) that is
+/// the first three modes, so with six modes kept the record must equal the
+/// three-term closed-form series (same tolerance as the six-term test at
+/// 4000 steps per period), and differ from the six-term one by the modes it
+/// leaves out. The automatic mode choice keeps every mode up to the cut-off.
+#[test]
+fn bridge_acceleration_is_filtered_to_the_code_cut_off() {
+    let (length, ei, m, force, zeta) = (25.0, 8.323e9, 2303.0, 1.0e5, 0.02);
+    let f1 =
+        exact::simply_supported_circular_frequency(1, length, ei, m) / (2.0 * std::f64::consts::PI);
+    let speed = 0.5 * 2.0 * f1 * length;
+    let case = exact::MovingForceBeam {
+        length,
+        bending_stiffness: ei,
+        mass_per_length: m,
+        damping_ratio: zeta,
+        force,
+        speed,
+    };
+    let period = 1.0 / f1;
+    let t_end = length / speed + period;
+    let dt = t_end / (4000.0 * t_end / period).ceil();
+    let outcome = run_yaml(&format!(
+        "name: filtered\nbridge: {{type: beam, spans: [{length}], bending_stiffness: {ei}, \
+         mass_per_length: {m}, elements_per_span: 40, modes: {{count: 6}}, \
+         damping: {{type: modal, ratio: {zeta}}}}}\n\
+         vehicles: [{{type: moving_force, loads: [{force}], speed: {speed}}}]\n\
+         solver: {{time_step: {dt}, free_vibration: {period}}}\n\
+         record: [{{name: acc, quantity: bridge_acceleration, x: {}}}]\n",
+        length / 2.0
+    ));
+    let ours = column(&outcome, "acc");
+    let series = |terms: usize| -> Vec<f64> {
+        outcome
+            .history
+            .time
+            .iter()
+            .map(|&t| -exact::moving_force_acceleration(length / 2.0, t, &case, terms))
+            .collect()
+    };
+    let worst = |reference: &[f64]| {
+        let peak = max_abs(reference);
+        ours.iter()
+            .zip(reference)
+            .fold(0.0f64, |w, (a, b)| w.max((a - b).abs()))
+            / peak
+    };
+    let (three, six) = (worst(&series(3)), worst(&series(6)));
+    eprintln!("filtered acceleration against 3 terms {three:.3e}, against 6 terms {six:.3e}");
+    assert!(three < 3e-4, "against the 3-term series: {three:e}"); // measured 6.1e-5
+    assert!(six > 10.0 * three, "modes 4–6 were not left out: {six:e}");
+
+    // Automatic modes: every mode up to the cut-off is kept and resolved.yaml
+    // states the cut-off.
+    let loaded = vbi::scenario::load_str(
+        &format!(
+            "name: automatic\nbridge: {{type: beam, spans: [{length}], bending_stiffness: {ei}, \
+             mass_per_length: {m}}}\n\
+             vehicles: [{{type: moving_force, loads: [{force}], speed: 20}}]\n\
+             record: [{{name: acc, quantity: bridge_acceleration, x: 12.5}}]\n"
+        ),
+        "automatic.yaml",
+    )
+    .unwrap();
+    let cut = loaded.scenario.record[0].max_frequency.unwrap();
+    let frequencies = loaded.bridge.frequencies();
+    assert!((cut - 9.0 * f1).abs() < 1e-3 * cut, "cut-off {cut} Hz");
+    assert!(
+        frequencies.iter().filter(|&&f| f <= cut).count() == 3
+            && *frequencies.last().unwrap() >= cut,
+        "modes kept {frequencies:?} for a cut-off of {cut} Hz"
+    );
 }

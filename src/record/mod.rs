@@ -253,6 +253,19 @@ impl<'m> Recorder<'m> {
                         };
                         (probe, "m", lead)
                     } else {
+                        // The deck-acceleration filter: modes above the
+                        // record's cut-off do not contribute (a sharp modal
+                        // low-pass, EN 1990 A2.4.4.2.1(4)).
+                        if let Some(cut) = record.max_frequency {
+                            let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
+                            for (value, omega) in
+                                shape.iter_mut().zip(&model.bridge.circular_frequencies)
+                            {
+                                if *omega > limit {
+                                    *value = 0.0;
+                                }
+                            }
+                        }
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
                 }

@@ -29,6 +29,8 @@ pub struct Limits {
     pub dofs: f64,
     /// Bridge modes kept.
     pub modes: f64,
+    /// DOFs × modes² of a beam's eigen solve.
+    pub eigen_work: f64,
     /// Time steps of one run.
     pub steps: f64,
     /// Time steps over all runs of a study.
@@ -53,6 +55,7 @@ impl Default for Limits {
         Limits {
             dofs: 2000.0,
             modes: 500.0,
+            eigen_work: 1e9,
             steps: 1e7,
             study_steps: 2e8,
             wheels: 500.0,
@@ -94,6 +97,7 @@ impl Limits {
         Limits {
             dofs: pick("dofs", raw.dofs, d.dofs),
             modes: pick("modes", raw.modes, d.modes),
+            eigen_work: pick("eigen_work", raw.eigen_work, d.eigen_work),
             steps: pick("steps", raw.steps, d.steps),
             study_steps: pick("study_steps", raw.study_steps, d.study_steps),
             wheels: pick("wheels", raw.wheels, d.wheels),
@@ -218,11 +222,37 @@ impl Budget {
         fits
     }
 
+    /// Whether a beam's eigen solve for `modes` modes fits
+    /// `limits.eigen_work` (n k², the Lanczos basis's re-orthogonalisation);
+    /// a plate's Ritz problem is bounded by `dofs` already. `path` is where
+    /// the mode count comes from.
+    pub(super) fn eigen(
+        &self,
+        ck: &mut Checker<'_>,
+        path: &str,
+        bridge: &Bridge,
+        modes: usize,
+    ) -> bool {
+        let Bridge::Beam(_) = bridge else {
+            return true;
+        };
+        let dofs = crate::bridge::ModalBridge::available_of(bridge) as f64;
+        let work = dofs * (modes as f64).powi(2);
+        self.check(
+            ck,
+            path,
+            "eigen_work",
+            &format!("work of the eigen solve for {modes} modes of {dofs} DOFs (DOFs × modes²)"),
+            work,
+        )
+    }
+
     fn limit(&self, key: &str) -> f64 {
         let l = &self.limits;
         match key {
             "dofs" => l.dofs,
             "modes" => l.modes,
+            "eigen_work" => l.eigen_work,
             "steps" => l.steps,
             "study_steps" => l.study_steps,
             "wheels" => l.wheels,

@@ -653,6 +653,14 @@ pub struct RecordRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::dof_name)]
     pub dof: Option<String>,
+    /// Highest mode frequency a bridge acceleration includes, Hz
+    /// (`bridge_acceleration` only). Default, as EN 1990 A2.4.4.2.1(4) and
+    /// EN 1991-2 6.4.6.5(3) ask for the deck-acceleration check: the greater
+    /// of 30 Hz, 1.5 f₁ and f₃. The automatic mode choice keeps every mode up
+    /// to it.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub max_frequency: Option<f64>,
 }
 
 /// Recordable quantities.

@@ -22,8 +22,42 @@ fn wheel_count(vehicle: &Vehicle) -> usize {
     }
 }
 
+/// The default highest mode frequency of a bridge acceleration, Hz: the
+/// greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4); EN 1991-2
+/// 6.4.6.5(3)), from the bridge's lowest frequencies `frequencies` (Hz,
+/// ascending; the highest one stands in for f₃ when fewer than three exist).
+pub fn acceleration_cutoff(frequencies: &[f64]) -> f64 {
+    let first = frequencies.first().copied().unwrap_or(0.0);
+    let third = frequencies
+        .get(2)
+        .or(frequencies.last())
+        .copied()
+        .unwrap_or(0.0);
+    30.0_f64.max(1.5 * first).max(third)
+}
+
+/// The highest mode frequency any bridge acceleration record sums, Hz
+/// (`None` without such records): what the automatic mode choice must keep.
+pub(super) fn highest_acceleration_cutoff(
+    raws: Option<&[raw::RecordRaw]>,
+    frequencies: &[f64],
+) -> Option<f64> {
+    raws?
+        .iter()
+        .filter(|r| r.quantity == Quantity::BridgeAcceleration)
+        .map(|r| {
+            r.max_frequency
+                .filter(|f| f.is_finite() && *f > 0.0)
+                .unwrap_or_else(|| acceleration_cutoff(frequencies))
+        })
+        .reduce(f64::max)
+}
+
+/// `frequencies` are the bridge's lowest natural frequencies, Hz (for the
+/// default acceleration cut-off).
 pub(super) fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
+    frequencies: &[f64],
     bridge: &Bridge,
     vehicles: &[Vehicle],
     contact: &Contact,
@@ -109,6 +143,26 @@ pub(super) fn resolve_records(
         if !is_vehicle_dof && r.dof.is_some() {
             ck.error(&format!("{at}.dof"), unused("dof"));
         }
+        let max_frequency = if q == Quantity::BridgeAcceleration {
+            match r.max_frequency {
+                Some(f) if !(f.is_finite() && f > 0.0) => {
+                    ck.error(
+                        &format!("{at}.max_frequency"),
+                        format!(
+                            "the acceleration cut-off must be a positive frequency in Hz, got {f}"
+                        ),
+                    );
+                    None
+                }
+                Some(f) => Some(f),
+                None => Some(acceleration_cutoff(frequencies)),
+            }
+        } else {
+            if r.max_frequency.is_some() {
+                ck.error(&format!("{at}.max_frequency"), unused("max_frequency"));
+            }
+            None
+        };
         let mut vehicle = None;
         if !is_bridge {
             let v = r.vehicle.unwrap_or(1);
@@ -187,6 +241,7 @@ pub(super) fn resolve_records(
             vehicle,
             wheel,
             dof: r.dof.clone(),
+            max_frequency,
         });
     }
     out
@@ -209,6 +264,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 vehicle: None,
                 wheel: None,
                 dof: None,
+                max_frequency: None,
             }),
             Bridge::Plate(plate) => {
                 for (g, &y) in plate.girder_lines.iter().enumerate() {
@@ -220,6 +276,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                         vehicle: None,
                         wheel: None,
                         dof: None,
+                        max_frequency: None,
                     });
                 }
             }
@@ -236,6 +293,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 vehicle: Some(v + 1),
                 wheel: Some(w + 1),
                 dof: None,
+                max_frequency: None,
             });
             if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
                 out.push(Record {
@@ -246,6 +304,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     vehicle: Some(v + 1),
                     wheel: Some(w + 1),
                     dof: None,
+                    max_frequency: None,
                 });
             }
         }

@@ -209,7 +209,8 @@ pub(super) fn resolve(
         None => (minimum, "bridge.spans"),
     };
     if (automatic || bridge.modes().count.is_some())
-        && !budget.check(ck, asked_path, "modes", "bridge modes kept", asked as f64)
+        && !(budget.check(ck, asked_path, "modes", "bridge modes kept", asked as f64)
+            && budget.eigen(ck, asked_path, &bridge, asked))
     {
         return None;
     }
@@ -219,13 +220,13 @@ pub(super) fn resolve(
         _ => None,
     };
     if let Some(kept) = cut_off
-        && !budget.check(
+        && !(budget.check(
             ck,
             "bridge.modes",
             "modes",
             "bridge modes kept",
             kept as f64,
-        )
+        ) && budget.eigen(ck, "bridge.modes", &bridge, kept))
     {
         return None;
     }
@@ -297,7 +298,28 @@ pub(super) fn resolve(
     if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
-        let (cutoff, dynamic, top) = content::mode_cutoff(&modal, &excitations);
+        let (mut cutoff, mut dynamic, top) = content::mode_cutoff(&modal, &excitations);
+        // Deck accelerations sum every mode up to their own cut-off (30 Hz
+        // or more, EN 1990 A2.4.4.2.1(4)): keep all of them, so that the
+        // filtered acceleration is complete and converges with the step.
+        let acceleration_cut = super::records::highest_acceleration_cutoff(
+            raw.record.as_deref(),
+            &modal.frequencies(),
+        )
+        .filter(|&cut| cut > cutoff);
+        if let Some(cut) = acceleration_cut {
+            cutoff = cut;
+            dynamic = true;
+        }
+        // Heavy wheels feel the bridge's acceleration under them, which a
+        // few modes resolve poorly: keep twice the minimum.
+        let heavy = content::heavy_wheels(&vehicles, &bridge);
+        let floor = if heavy {
+            (2 * minimum).min(ModalBridge::available_of(&bridge))
+        } else {
+            minimum
+        };
+        dynamic |= heavy;
         if dynamic {
             // The cut-off the excitation asks for may keep more modes than the
             // budget allows (a very long or very flexible span): count them
@@ -305,17 +327,18 @@ pub(super) fn resolve(
             let kept = ModalBridge::count_up_to(&bridge, cutoff)
                 .ok()
                 .flatten()
-                .map_or(minimum, |n| n.max(minimum));
+                .map_or(floor, |n| n.max(floor));
             if !budget.check(
                 ck,
                 "bridge.spans",
                 "modes",
                 &format!("bridge modes up to the {cutoff:.4} Hz the vehicles excite"),
                 kept as f64,
-            ) {
+            ) || !budget.eigen(ck, "bridge.spans", &bridge, kept)
+            {
                 return None;
             }
-            modal = match build(ModeRequest::AtLeastUpTo(minimum, cutoff)) {
+            modal = match build(ModeRequest::AtLeastUpTo(floor, cutoff)) {
                 Ok(m) => m,
                 Err((path, message)) => {
                     ck.error(path, message);
@@ -323,13 +346,30 @@ pub(super) fn resolve(
                 }
             };
         }
-        modal.selection = content::mode_reason(
-            modal.mode_count(),
-            cutoff,
-            dynamic,
-            &top,
-            content::modes_per_span(&bridge),
-        );
+        // The cut-off written back must reproduce the modes kept.
+        cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
+        modal.selection = match acceleration_cut {
+            _ if heavy => format!(
+                "automatic: {} modes up to {cutoff:.2} Hz, at least twice the {minimum} of the \
+                 minimum because a wheel's mass exceeds {} of a span's (its contact force \
+                 follows the deck's acceleration under it)",
+                modal.mode_count(),
+                content::HEAVY_WHEEL_RATIO
+            ),
+            Some(cut) => format!(
+                "automatic: {} modes, every one up to {cut:.2} Hz that the deck accelerations \
+                 sum (EN 1990 A2.4.4.2.1: max(30 Hz, 1.5 f₁, f₃) unless the record sets \
+                 `max_frequency`)",
+                modal.mode_count()
+            ),
+            None => content::mode_reason(
+                modal.mode_count(),
+                cutoff,
+                dynamic,
+                &top,
+                content::modes_per_span(&bridge),
+            ),
+        };
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
     // The modes kept, however chosen (a high `max_frequency` keeps many).
@@ -355,9 +395,6 @@ pub(super) fn resolve(
         .iter()
         .map(|v| (length + v.length()) / v.speed())
         .fold(f64::INFINITY, f64::min);
-    let time_step = solver_raw
-        .time_step
-        .unwrap_or_else(|| content::time_step(highest, &excitations, shortest_crossing));
     let duration = |vehicles: &[Vehicle]| {
         let last_exit = vehicles
             .iter()
@@ -366,6 +403,8 @@ pub(super) fn resolve(
         last_exit + free_vibration
     };
     let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
+    let record_cutoff =
+        super::records::highest_acceleration_cutoff(raw.record.as_deref(), &modal.frequencies());
     // A separation map's slowest point (its smallest velocity ratio) runs
     // longest: v = 2 α f₁ L.
     if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
@@ -376,6 +415,23 @@ pub(super) fn resolve(
             longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
         }
     }
+    let time_step = solver_raw.time_step.unwrap_or_else(|| {
+        let step = content::time_step(highest, &excitations, shortest_crossing);
+        // Deck accelerations: their highest mode keeps its phase over the run.
+        let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
+        step.min(content::phase_time_step(acceleration_top, longest_run))
+    });
+    let time_step_selection = if solver_raw.time_step.is_some() {
+        "set in the file".to_owned()
+    } else {
+        format!(
+            "automatic: {} steps per period of the highest frequency kept or excited, at \
+             least 200 steps over the shortest crossing, and for deck accelerations a phase \
+             drift of their highest mode below {} rad over the run",
+            content::STEPS_PER_PERIOD,
+            content::PHASE_BUDGET
+        )
+    };
     let steps = shortest_run / time_step;
     if steps < 10.0 {
         ck.error(
@@ -403,7 +459,14 @@ pub(super) fn resolve(
 
     let method = resolve_method(solver_raw.method, &contact, ck);
     let iteration = resolve_iteration(&solver_raw, method, ck);
-    let record = resolve_records(raw.record.as_deref(), &bridge, &vehicles, &contact, ck);
+    let record = resolve_records(
+        raw.record.as_deref(),
+        &modal.frequencies(),
+        &bridge,
+        &vehicles,
+        &contact,
+        ck,
+    );
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -459,6 +522,7 @@ pub(super) fn resolve(
             newmark,
             free_vibration,
             iteration,
+            time_step_selection,
         },
         record,
         study,

@@ -535,6 +535,10 @@ pub struct Solver {
     /// Convergence settings (`iterative` only).
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
     pub iteration: Option<Iteration>,
+    /// How the time step was chosen, in words (the summary states it; not
+    /// written to `resolved.yaml`, which gives the step itself).
+    #[serde(skip)]
+    pub time_step_selection: String,
 }
 
 /// Convergence settings of the `iterative` solver.
@@ -588,4 +592,9 @@ pub struct Record {
     /// Vehicle DOF name.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dof: Option<String>,
+    /// Bridge accelerations: the highest mode frequency summed, Hz (modes
+    /// above it are left out, the deck-acceleration filter of EN 1990
+    /// A2.4.4.2.1(4)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_frequency: Option<f64>,
 }

@@ -104,6 +104,7 @@ pub fn point_scenario(
         vehicle: Some(1),
         wheel: Some(1),
         dof: None,
+        max_frequency: None,
     }];
     scenario
 }

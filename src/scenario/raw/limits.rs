@@ -17,6 +17,11 @@ pub struct LimitsRaw {
     /// Most bridge modes kept. Default 500.
     #[serde(default)]
     pub modes: Option<f64>,
+    /// Most work of a beam's eigen solve, DOFs × modes² (shift-invert
+    /// Lanczos with full re-orthogonalisation: time ∝ n k²). Default 1e9,
+    /// a few seconds.
+    #[serde(default)]
+    pub eigen_work: Option<f64>,
     /// Most time steps of one run. Default 1e7.
     #[serde(default)]
     pub steps: Option<f64>,
