@@ -47,6 +47,29 @@ enum Command {
         /// Also write the history plot as SVG (history.svg).
         #[arg(long)]
         svg: bool,
+        /// Run only shard K of N of the study (a contiguous slice of its
+        /// runs) and write part-K-of-N.json into the output folder; `vbi
+        /// merge` combines the parts.
+        #[arg(long, value_name = "K/N", value_parser = vbi::study::shard::Shard::parse, conflicts_with = "sample")]
+        shard: Option<vbi::study::shard::Shard>,
+        /// Run sample K (from 1) of a Monte Carlo study alone, as a single
+        /// scene (its first case: first surface, first speed), and write the
+        /// single-run outputs.
+        #[arg(long, value_name = "K", value_parser = clap::value_parser!(u64).range(1..))]
+        sample: Option<u64>,
+    },
+    /// Combine the part files of a sharded study into exactly the files an
+    /// unsharded run writes (summary.json's wall_time: the parts' sum).
+    Merge {
+        /// The part files (part-K-of-N.json), all N of them.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        /// Output folder.
+        #[arg(long)]
+        out: PathBuf,
+        /// No closing message.
+        #[arg(long, short)]
+        quiet: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -150,7 +173,14 @@ fn main() -> ExitCode {
             out,
             quiet,
             svg,
-        } => run(load(&file), &file, out, quiet, svg),
+            shard,
+            sample,
+        } => match (shard, sample) {
+            (Some(shard), _) => run_shard(load(&file), &file, options, out, quiet, shard),
+            (None, Some(k)) => run_sample(load(&file), &file, out, quiet, svg, k),
+            (None, None) => run(load(&file), &file, out, quiet, svg),
+        },
+        Command::Merge { parts, out, quiet } => merge(&parts, &out, quiet),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -238,48 +268,7 @@ fn run(
     bar.finish_and_clear();
     let outcome = match results {
         vbi::run::Results::Scene(outcome) => outcome,
-        vbi::run::Results::SeparationMap(map) => {
-            if let Err(e) = vbi::run::write_study(&out, &scenario, &map) {
-                errln!("error: {e}");
-                return ExitCode::from(EXIT_FAILED);
-            }
-            if !quiet {
-                errln!(
-                    "{}: separation map of {} points, {} separated, {:.2} s",
-                    scenario.name,
-                    map.points.len(),
-                    map.separated_count(),
-                    map.wall_time
-                );
-                errln!("results in {}", out.display());
-            }
-            return ExitCode::SUCCESS;
-        }
-        vbi::run::Results::SpeedSweep(sweep) => {
-            if let Err(e) = vbi::run::write_speed_sweep(&out, &scenario, &sweep) {
-                errln!("error: {e}");
-                return ExitCode::from(EXIT_FAILED);
-            }
-            if !quiet {
-                let largest = vbi::study::speed_sweep::SweepSummary::new(&scenario.name, &sweep)
-                    .largest_daf
-                    .map(|l| {
-                        format!(
-                            ", largest DAF {:.4} ({}, {}, {:.1} km/h)",
-                            l.daf, l.column, l.roughness, l.speed_km_h
-                        )
-                    })
-                    .unwrap_or_default();
-                errln!(
-                    "{}: speed sweep of {} runs{largest}, {:.2} s",
-                    scenario.name,
-                    sweep.points.len(),
-                    sweep.wall_time
-                );
-                errln!("results in {}", out.display());
-            }
-            return ExitCode::SUCCESS;
-        }
+        study => return write_study(&out, &scenario, &study, quiet),
     };
     if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
         errln!("error: {e}");
@@ -311,6 +300,223 @@ fn run(
         errln!("results in {}", out.display());
     }
     ExitCode::SUCCESS
+}
+
+/// Writes a study's results into `out` and says what it found.
+fn write_study(
+    out: &Path,
+    scenario: &vbi::scenario::resolved::Scenario,
+    results: &vbi::run::Results,
+    quiet: bool,
+) -> ExitCode {
+    use vbi::run::Results;
+    let written = match results {
+        Results::Scene(_) => unreachable!("a study's results"),
+        Results::SeparationMap(map) => vbi::run::write_study(out, scenario, map),
+        Results::SpeedSweep(sweep) => vbi::run::write_speed_sweep(out, scenario, sweep),
+        Results::MonteCarlo(mc) => vbi::study::monte_carlo::write(out, scenario, mc),
+    };
+    if let Err(e) = written {
+        errln!("error: {e}");
+        return ExitCode::from(EXIT_FAILED);
+    }
+    if quiet {
+        return ExitCode::SUCCESS;
+    }
+    match results {
+        Results::Scene(_) => {}
+        Results::SeparationMap(map) => errln!(
+            "{}: separation map of {} points, {} separated, {:.2} s",
+            scenario.name,
+            map.points.len(),
+            map.separated_count(),
+            map.wall_time
+        ),
+        Results::SpeedSweep(sweep) => {
+            let largest = vbi::study::speed_sweep::SweepSummary::new(&scenario.name, sweep)
+                .largest_daf
+                .map(|l| {
+                    format!(
+                        ", largest DAF {:.4} ({}, {}, {:.1} km/h)",
+                        l.daf, l.column, l.roughness, l.speed_km_h
+                    )
+                })
+                .unwrap_or_default();
+            errln!(
+                "{}: speed sweep of {} runs{largest}, {:.2} s",
+                scenario.name,
+                sweep.points.len(),
+                sweep.wall_time
+            );
+        }
+        Results::MonteCarlo(mc) => {
+            let highest = (0..mc.cases.len())
+                .flat_map(|c| mc.wheel_statistics(c))
+                .map(|w| w.probability)
+                .fold(0.0, f64::max);
+            errln!(
+                "{}: Monte Carlo of {} runs ({} cases × {} samples), highest probability of separation {highest:.4}, {:.2} s",
+                scenario.name,
+                mc.sample_results.len(),
+                mc.cases.len(),
+                mc.samples,
+                mc.wall_time
+            );
+        }
+    }
+    errln!("results in {}", out.display());
+    ExitCode::SUCCESS
+}
+
+fn progress_bar(quiet: bool, message: &str) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    // indicatif draws nothing when stderr is not a terminal.
+    let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {pos}/{len} eta {eta}")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    bar.set_message(message.to_string());
+    bar
+}
+
+/// `vbi run --shard K/N`: the slice's part file in the output folder.
+fn run_shard(
+    loaded: Result<scenario::Loaded, LoadError>,
+    file: &Path,
+    options: scenario::LoadOptions,
+    out: Option<PathBuf>,
+    quiet: bool,
+    shard: vbi::study::shard::Shard,
+) -> ExitCode {
+    use vbi::study::shard::{self, ShardError};
+    let loaded = match loaded {
+        Ok(l) => l,
+        Err(e) => return load_error(&e),
+    };
+    // The text as loaded goes into the part, so that the merge needs no
+    // access to the file; a file changed since is caught by the hash.
+    let source = match std::fs::read_to_string(file) {
+        Ok(s) => s,
+        Err(e) => {
+            errln!("error: {}: cannot read: {e}", file.display());
+            return ExitCode::from(EXIT_INVALID);
+        }
+    };
+    let out = out.unwrap_or_else(|| default_out(file, ""));
+    let bar = progress_bar(
+        quiet,
+        &format!(
+            "{} shard {}/{}",
+            loaded.scenario.name, shard.index, shard.count
+        ),
+    );
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let name = file.display().to_string();
+    let part = match shard::run_shard(&loaded, &name, &source, options, shard, &progress) {
+        Ok(p) => p,
+        Err(e) => {
+            bar.abandon();
+            errln!("error: {e}");
+            let code = match e {
+                ShardError::Run(_) => EXIT_FAILED,
+                _ => EXIT_INVALID,
+            };
+            return ExitCode::from(code);
+        }
+    };
+    bar.finish_and_clear();
+    let path = out.join(shard.file_name());
+    let written = std::fs::create_dir_all(&out).and_then(|()| {
+        vbi::report::write_atomic(&path, shard::part_json(&part).as_bytes())
+            .map_err(std::io::Error::other)
+    });
+    if let Err(e) = written {
+        errln!("error: {}: {e}", path.display());
+        return ExitCode::from(EXIT_FAILED);
+    }
+    if !quiet {
+        errln!(
+            "{}: shard {} of {}: runs {}..{} of {}, {:.2} s; part in {}",
+            loaded.scenario.name,
+            part.shard,
+            part.shards,
+            part.first,
+            part.end,
+            part.size,
+            part.wall_time,
+            path.display()
+        );
+    }
+    ExitCode::SUCCESS
+}
+
+/// `vbi run --sample K`: sample K of a Monte Carlo study as one scene.
+fn run_sample(
+    loaded: Result<scenario::Loaded, LoadError>,
+    file: &Path,
+    out: Option<PathBuf>,
+    quiet: bool,
+    svg: bool,
+    k: u64,
+) -> ExitCode {
+    use vbi::scenario::resolved::Study;
+    let loaded = match loaded {
+        Ok(l) => l,
+        Err(e) => return load_error(&e),
+    };
+    let Some(Study::MonteCarlo(mc)) = &loaded.scenario.study else {
+        errln!(
+            "error: {}: --sample applies to a Monte Carlo study (`study: {{type: monte_carlo, ...}}`)",
+            file.display()
+        );
+        return ExitCode::from(EXIT_INVALID);
+    };
+    if k > mc.samples as u64 {
+        errln!(
+            "error: {}: sample {k} does not exist; the study has {} samples (counted from 1)",
+            file.display(),
+            mc.samples
+        );
+        return ExitCode::from(EXIT_INVALID);
+    }
+    let case = vbi::study::monte_carlo::cases(mc)[0];
+    let scenario = vbi::study::monte_carlo::sample_scenario(
+        &loaded.scenario,
+        &loaded.bridge,
+        mc,
+        case,
+        (k - 1) as usize,
+    );
+    let loaded = scenario::Loaded {
+        scenario,
+        bridge: loaded.bridge,
+    };
+    let out = out.unwrap_or_else(|| default_out(file, &format!("-sample{k}")));
+    run(Ok(loaded), file, Some(out), quiet, svg)
+}
+
+/// `vbi merge`: the parts' study written as an unsharded run writes it.
+fn merge(parts: &[PathBuf], out: &Path, quiet: bool) -> ExitCode {
+    use vbi::study::shard::{self, ShardError};
+    let merged = match shard::merge(parts) {
+        Ok(m) => m,
+        Err(e) => {
+            errln!("error: {e}");
+            let code = match e {
+                ShardError::Run(_) => EXIT_FAILED,
+                _ => EXIT_INVALID,
+            };
+            return ExitCode::from(code);
+        }
+    };
+    write_study(out, &merged.loaded.scenario, &merged.results, quiet)
 }
 
 fn check(
