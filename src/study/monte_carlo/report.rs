@@ -36,7 +36,19 @@ pub fn wilson_interval(successes: usize, n: usize, z: f64) -> (f64, f64) {
     let denominator = 1.0 + z2 / n;
     let centre = (p + z2 / (2.0 * n)) / denominator;
     let half = z / denominator * (p * (1.0 - p) / n + z2 / (4.0 * n * n)).sqrt();
-    ((centre - half).max(0.0), (centre + half).min(1.0))
+    // At p̂ = 0 (1) the lower (upper) end is exactly 0 (1); the formula
+    // reaches it only up to round-off.
+    let low = if successes == 0 {
+        0.0
+    } else {
+        (centre - half).max(0.0)
+    };
+    let high = if p == 1.0 {
+        1.0
+    } else {
+        (centre + half).min(1.0)
+    };
+    (low, high)
 }
 
 /// Separation statistics of one wheel in one case.
@@ -349,28 +361,26 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
 /// separation_probability.png and expected_gap.png against speed, one line
 /// per surface and wheel (Figs. 8 and 9).
 fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Result<(), RunError> {
-    let speeds: Vec<Option<f64>> = results.cases.iter().map(|c| c.speed).collect();
-    let per_surface = speeds.iter().filter(|s| **s == speeds[0]).count();
-    let n_speeds = results.cases.len() / per_surface.max(1);
     if results.cases.iter().all(|c| c.speed.is_none()) {
         return Ok(());
     }
-    let stats: Vec<Vec<super::report::WheelStatistics>> = (0..results.cases.len())
+    // Cases are surface-major: each surface has the same run of speeds.
+    let surfaces = results.cases.last().map_or(0, |c| c.roughness + 1);
+    let n_speeds = results.cases.len() / surfaces.max(1);
+    let stats: Vec<Vec<WheelStatistics>> = (0..results.cases.len())
         .map(|c| results.wheel_statistics(c))
         .collect();
-    let wheels = stats.first().map_or(0, Vec::len);
     let mut labels = Vec::new();
     let mut xs = Vec::new();
     let mut probability = Vec::new();
     let mut gap = Vec::new();
-    for s in 0..per_surface {
+    for s in 0..surfaces {
         let cases: Vec<usize> = (s * n_speeds..(s + 1) * n_speeds).collect();
         let km_h: Vec<f64> = cases
             .iter()
             .map(|&c| results.speed(c).unwrap_or(f64::NAN) * KM_H)
             .collect();
-        for w in 0..wheels {
-            let first = &stats[cases[0]][w];
+        for (w, first) in stats[cases[0]].iter().enumerate() {
             labels.push(format!(
                 "{}, vehicle {} wheel {}",
                 results.labels[cases[0]], first.vehicle, first.wheel
