@@ -333,7 +333,7 @@ fn cover(lo: usize, hi: usize, a: usize, b: usize, out: &mut Vec<(usize, usize)>
 
 /// Total runs of the study: cases × samples.
 pub fn size(mc: &MonteCarlo) -> usize {
-    mc.cases() * mc.samples
+    mc.cases().saturating_mul(mc.samples)
 }
 
 /// Runs the runs `range` of the flat list (the whole study: `0..size`) in
