@@ -224,6 +224,16 @@ fn missing_duplicated_and_foreign_parts_are_refused() {
         &[part("a", 1), part("b", 2), part("a", 3)],
         "is from another scenario",
     );
+    // A part whose results were cut (or edited) is refused, not indexed.
+    let mut value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(part("a", 2)).unwrap()).unwrap();
+    value["data"]["samples"].as_array_mut().unwrap().pop();
+    let cut = scratch.path("cut.json");
+    std::fs::write(&cut, value.to_string()).unwrap();
+    refused(
+        &[part("a", 1), cut.display().to_string(), part("a", 3)],
+        "shard 2 of 3: it holds",
+    );
     let junk = scratch.path("junk.json");
     std::fs::write(&junk, "{\"format\": 1}").unwrap();
     refused(&[junk.display().to_string()], "not a vbi part file");

@@ -240,6 +240,12 @@ pub struct MonteCarloResults {
 /// Why the parts of a study do not make the whole study.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum AssembleError {
+    /// Two parts reduced different records or time axes for one case.
+    #[error("the parts disagree on the records or time steps of case {case}")]
+    Shape {
+        /// Case index.
+        case: usize,
+    },
     /// A sample is in no part.
     #[error("sample {sample} of case {case} is in no part")]
     Missing {
@@ -375,7 +381,7 @@ pub fn run_slice(
             .collect::<Result<_, _>>()?
     };
     let mut part = MonteCarloPart {
-        samples: Vec::with_capacity(total),
+        samples: Vec::new(),
         nodes: Vec::with_capacity(reduced.len()),
     };
     for (case, lo, hi, (moments, samples)) in reduced {
@@ -388,6 +394,71 @@ pub fn run_slice(
         });
     }
     Ok(part)
+}
+
+impl MonteCarloPart {
+    /// Checks that the part holds what a run of the slice `range` of `mc`
+    /// writes: one sample per index in order, every node whole inside the
+    /// slice and of one shape (records × steps), the same wheels in every
+    /// sample. A part file is input: nothing downstream indexes past what
+    /// this checks.
+    pub fn check(&self, mc: &MonteCarlo, range: Range<usize>) -> Result<(), String> {
+        let s = mc.samples.max(1);
+        if self.samples.len() != range.len() {
+            return Err(format!(
+                "it holds {} samples for the {} runs {}..{}",
+                self.samples.len(),
+                range.len(),
+                range.start,
+                range.end
+            ));
+        }
+        let wheels: Vec<(usize, usize)> = self
+            .samples
+            .first()
+            .map(|r| r.wheels.iter().map(|w| (w.vehicle, w.wheel)).collect())
+            .unwrap_or_default();
+        for (flat, r) in range.clone().zip(&self.samples) {
+            if (r.case, r.sample) != (flat / s, flat % s + 1) {
+                return Err(format!(
+                    "run {flat} should be sample {} of case {}, it is sample {} of case {}",
+                    flat % s + 1,
+                    flat / s,
+                    r.sample,
+                    r.case
+                ));
+            }
+            let these: Vec<(usize, usize)> =
+                r.wheels.iter().map(|w| (w.vehicle, w.wheel)).collect();
+            if these != wheels {
+                return Err(format!(
+                    "run {flat} has other wheels than the part's first run"
+                ));
+            }
+        }
+        for node in &self.nodes {
+            let (a, b) = (node.case * s + node.lo, node.case * s + node.hi);
+            let m = &node.moments;
+            let shaped = |rows: &Vec<Vec<f64>>| {
+                rows.len() == m.names.len() && rows.iter().all(|r| r.len() == m.time.len())
+            };
+            if node.lo >= node.hi
+                || node.hi > s
+                || a < range.start
+                || b > range.end
+                || m.count != node.hi - node.lo
+                || m.units.len() != m.names.len()
+                || !shaped(&m.mean)
+                || !shaped(&m.m2)
+            {
+                return Err(format!(
+                    "its reduction node (case {}, samples {}..{}) does not fit its slice or its shape",
+                    node.case, node.lo, node.hi
+                ));
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Evaluates the tree of one case from the given nodes.
@@ -409,6 +480,9 @@ fn evaluate(
     let mid = lo + (hi - lo) / 2;
     let a = evaluate(case, lo, mid, given)?;
     let b = evaluate(case, mid, hi, given)?;
+    if a.names != b.names || a.time.len() != b.time.len() {
+        return Err(AssembleError::Shape { case });
+    }
     Ok(Moments::combine(a, &b))
 }
 

@@ -411,11 +411,15 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
             velocity_ratio,
             mass_ratio,
         } => {
-            let mut points = Vec::with_capacity(size);
+            let mut points = Vec::new();
             for p in parts {
+                let count = p.end - p.first;
                 let PartData::SeparationMap { points: more } = p.data else {
                     return Err(wrong());
                 };
+                if more.len() != count {
+                    return Err(short(p.shard, more.len(), count));
+                }
                 points.extend(more);
             }
             Results::SeparationMap(separation_map::assemble(
@@ -426,11 +430,23 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
             ))
         }
         Study::SpeedSweep(sweep) => {
-            let mut points = Vec::with_capacity(size);
+            // The shape every point must have: its DAF and force columns,
+            // a surface of the sweep.
+            let layout = speed_sweep::assemble(&loaded.scenario, sweep, Vec::new(), 0.0);
+            let fits = |q: &SweepPoint| {
+                q.dafs.len() == layout.daf_sources.len()
+                    && q.max_forces.len() == layout.force_records.len()
+                    && q.roughness < layout.roughness.len()
+            };
+            let mut points = Vec::new();
             for p in parts {
+                let count = p.end - p.first;
                 let PartData::SpeedSweep { points: more } = p.data else {
                     return Err(wrong());
                 };
+                if more.len() != count || !more.iter().all(fits) {
+                    return Err(short(p.shard, more.len(), count));
+                }
                 points.extend(more);
             }
             Results::SpeedSweep(speed_sweep::assemble(
@@ -446,6 +462,9 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
                 let PartData::MonteCarlo(slice) = p.data else {
                     return Err(wrong());
                 };
+                slice.check(mc, p.first..p.end).map_err(|e| {
+                    ShardError::Mismatch(format!("shard {} of {count}: {e}", p.shard))
+                })?;
                 slices.push(slice);
             }
             Results::MonteCarlo(
@@ -455,6 +474,12 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
         }
     };
     Ok(Merged { loaded, results })
+}
+
+fn short(shard: usize, got: usize, want: usize) -> ShardError {
+    ShardError::Mismatch(format!(
+        "shard {shard} holds {got} points of another shape or count than the {want} of its slice"
+    ))
 }
 
 fn any_file(parts: &[Part]) -> String {
