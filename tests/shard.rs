@@ -105,8 +105,9 @@ fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     out
 }
 
-/// Runs `text` unsharded and in 1, 3 and 7 shards, merges, and compares.
-fn sharded_equals_unsharded(test: &str, text: &str) {
+/// Runs `text` unsharded and in 1, 3 and 7 shards, merges, and compares;
+/// gives the names of the files compared.
+fn sharded_equals_unsharded(test: &str, text: &str) -> Vec<String> {
     let scratch = Scratch::new("shard", test);
     let scene = scratch.path("scene.yaml");
     std::fs::write(&scene, text).unwrap();
@@ -155,21 +156,38 @@ fn sharded_equals_unsharded(test: &str, text: &str) {
             assert!(a == b, "{test}: {name} differs after merging {n} shards");
         }
     }
+    reference.into_iter().map(|f| f.0).collect()
 }
 
 #[test]
 fn monte_carlo_shards_merge_to_the_unsharded_files() {
-    sharded_equals_unsharded("mc", &monte_carlo());
+    let names = sharded_equals_unsharded("mc", &monte_carlo());
+    // Every output of a Monte Carlo study with speeds, compared above.
+    for file in [
+        "envelope_force.png",
+        "envelope_midspan.png",
+        "envelopes.csv",
+        "expected_gap.png",
+        "resolved.yaml",
+        "separation.csv",
+        "separation_probability.png",
+        "study.csv",
+        "summary.json",
+    ] {
+        assert!(names.iter().any(|n| n == file), "{file} missing: {names:?}");
+    }
 }
 
 #[test]
 fn separation_map_shards_merge_to_the_unsharded_files() {
-    sharded_equals_unsharded("map", &separation_map());
+    let names = sharded_equals_unsharded("map", &separation_map());
+    assert!(names.iter().any(|n| n == "separation_map.png"));
 }
 
 #[test]
 fn speed_sweep_shards_merge_to_the_unsharded_files() {
-    sharded_equals_unsharded("sweep", &speed_sweep());
+    let names = sharded_equals_unsharded("sweep", &speed_sweep());
+    assert!(names.iter().any(|n| n == "daf_map.png"));
 }
 
 #[test]
