@@ -132,7 +132,7 @@ pub struct SampleResult {
     /// Per wheel with a DOF, under unilateral contact (empty under
     /// permanent contact).
     pub wheels: Vec<WheelOutcome>,
-    /// The recorded histories, for the first `show` samples of a case only
+    /// The recorded histories, for the first `show` samples of the first case only
     /// (drawn in grey behind the envelopes).
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub histories: Option<Vec<Vec<f64>>>,
@@ -289,7 +289,8 @@ fn run_sample(
         m2: values.iter().map(|v| vec![0.0; v.len()]).collect(),
         mean: values.clone(),
     };
-    let histories = (index < mc.show).then_some(values);
+    // Only the first case is plotted: other cases keep no histories.
+    let histories = (case == 0 && index < mc.show).then_some(values);
     let seed = sample_seed(mc.seed, index);
     Ok((
         moments,
