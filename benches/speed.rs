@@ -8,7 +8,9 @@
 //! Sections: `step` (per-step cost of the coupled and LCP solvers on the same
 //! scene), `foundation` (the foundation scene end to end through the library)
 //! `map` (40 × 40 separation maps, all threads and one thread) and `plate`
-//! (the plate paper's orthotropic deck, 45 modes, one H20-44 truck, one crossing).
+//! (the plate paper's orthotropic deck, 45 modes, one H20-44 truck, one crossing)
+//! and `monte_carlo` (1000 random-surface samples of the Fig. 7-like oscillator
+//! scene: per-sample against single-crossing cost, threads, shards + merge).
 //!
 //! Every case is run once to warm up, then repeated N times with N chosen from
 //! the warm-up so that the case takes at least about `VBI_BENCH_SECONDS`
@@ -52,6 +54,123 @@ fn main() {
     if wanted("eigen") {
         eigen(budget);
     }
+    if wanted("monte_carlo") {
+        monte_carlo(budget);
+    }
+}
+
+/// 1000 samples of the Fig. 7-like scene (scenarios/lcp-fig7-monte-carlo.yaml:
+/// the 2-DOF oscillator with elastic LCP contact at 300 km/h on the 32 m
+/// beam over random surface samples): one crossing, the whole study on all
+/// threads and on one, and the same study in 4 shards (run one after another
+/// here, each writing its part file) merged.
+fn monte_carlo(budget: f64) {
+    use vbi::study::shard::{self, Shard};
+    println!("## Monte Carlo: 1000 samples of the Fig. 7-like oscillator scene\n");
+    let text = read_scenario("lcp-fig7-monte-carlo.yaml").replace("samples: 20", "samples: 1000");
+    let loaded = load(&text, "mc");
+    let mut single = loaded.clone();
+    single.scenario.study = None;
+    let steps = simulate(&single).model.steps;
+    let (one, _) = median_min(sample(budget, || {
+        let start = Instant::now();
+        simulate(&single);
+        start.elapsed().as_secs_f64()
+    }));
+    // The same 1000 sample scenes one by one through `simulate`, without the
+    // study's reduction: separates the physics of the samples (each surface
+    // differs) from the study's own overhead.
+    let Some(vbi::scenario::resolved::Study::MonteCarlo(mc)) = loaded.scenario.study.clone() else {
+        panic!("a Monte Carlo study")
+    };
+    let case = vbi::study::monte_carlo::cases(&mc)[0];
+    let scenes: Vec<Loaded> = (0..1000)
+        .map(|k| Loaded {
+            scenario: vbi::study::monte_carlo::sample_scenario(
+                &loaded.scenario,
+                &loaded.bridge,
+                &mc,
+                case,
+                k,
+            ),
+            bridge: loaded.bridge.clone(),
+        })
+        .collect();
+    let (one_by_one, _) = median_min(sample(budget, || {
+        let start = Instant::now();
+        for scene in &scenes {
+            simulate(scene);
+        }
+        start.elapsed().as_secs_f64()
+    }));
+    let study = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool");
+        let times = sample(budget, || {
+            let start = Instant::now();
+            match pool.install(|| vbi::run::execute(loaded.clone(), &|_, _| {})) {
+                Ok(Results::MonteCarlo(_)) => {}
+                _ => panic!("a Monte Carlo study"),
+            }
+            start.elapsed().as_secs_f64()
+        });
+        median_min(times).0
+    };
+    let threads = rayon::current_num_threads();
+    let all = study(threads);
+    let serial = study(1);
+    let dir = std::env::temp_dir().join(format!("vbi-bench-mc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    let (sharded, _) = median_min(sample(budget, || {
+        let start = Instant::now();
+        let mut parts = Vec::new();
+        for k in 1..=4 {
+            let shard = Shard { index: k, count: 4 };
+            let part = shard::run_shard(
+                &loaded,
+                "mc.yaml",
+                &text,
+                Default::default(),
+                shard,
+                &|_, _| {},
+            )
+            .expect("shard");
+            let path = dir.join(shard.file_name());
+            std::fs::write(&path, shard::part_json(&part)).expect("part written");
+            parts.push(path);
+        }
+        shard::merge(&parts).expect("merge");
+        start.elapsed().as_secs_f64()
+    }));
+    let _ = std::fs::remove_dir_all(&dir);
+    println!("| case | wall (median) | per sample |");
+    println!("|---|---|---|");
+    println!("| one crossing ({steps} steps) | {:.2} ms | |", 1e3 * one);
+    println!(
+        "| 1000 samples, {threads} threads | {:.3} s | {:.3} ms |",
+        all, all
+    );
+    println!(
+        "| 1000 samples, 1 thread | {:.3} s | {:.3} ms ({:.2}× one crossing) |",
+        serial,
+        serial,
+        serial / 1000.0 / one
+    );
+    println!(
+        "| the 1000 sample scenes one by one (`simulate`), 1 thread | {:.3} s | {:.3} ms ({:.2}× one crossing) |",
+        one_by_one,
+        one_by_one,
+        one_by_one / 1000.0 / one
+    );
+    println!(
+        "| 1000 samples as 4 shards + merge, {threads} threads | {:.3} s | {:.3} ms ({:+.1} % against unsharded) |",
+        sharded,
+        sharded,
+        100.0 * (sharded / all - 1.0)
+    );
+    println!();
 }
 
 /// The checked eigen path on large beams: the lowest 100 modes of a 30-span

@@ -47,6 +47,29 @@ enum Command {
         /// Also write the history plot as SVG (history.svg).
         #[arg(long)]
         svg: bool,
+        /// Run only shard K of N of the study (a contiguous slice of its
+        /// runs) and write part-K-of-N.json into the output folder; `vbi
+        /// merge` combines the parts.
+        #[arg(long, value_name = "K/N", value_parser = vbi::study::shard::Shard::parse, conflicts_with = "sample")]
+        shard: Option<vbi::study::shard::Shard>,
+        /// Run sample K (from 1) of a Monte Carlo study alone, as a single
+        /// scene (its first case: first surface, first speed), and write the
+        /// single-run outputs.
+        #[arg(long, value_name = "K", value_parser = clap::value_parser!(u64).range(1..))]
+        sample: Option<u64>,
+    },
+    /// Combine the part files of a sharded study into exactly the files an
+    /// unsharded run writes (summary.json's wall_time: the parts' sum).
+    Merge {
+        /// The part files (part-K-of-N.json), all N of them.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        /// Output folder.
+        #[arg(long)]
+        out: PathBuf,
+        /// No closing message.
+        #[arg(long, short)]
+        quiet: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -138,6 +161,10 @@ macro_rules! errln {
 const EXIT_FAILED: u8 = 1;
 const EXIT_INVALID: u8 = 2;
 
+// After the macros, which it uses.
+mod studies;
+use studies::{merge, run_sample, run_shard, write_study};
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let options = scenario::LoadOptions {
@@ -150,7 +177,14 @@ fn main() -> ExitCode {
             out,
             quiet,
             svg,
-        } => run(load(&file), &file, out, quiet, svg),
+            shard,
+            sample,
+        } => match (shard, sample) {
+            (Some(shard), _) => run_shard(load(&file), &file, options, out, quiet, shard),
+            (None, Some(k)) => run_sample(load(&file), &file, out, quiet, svg, k),
+            (None, None) => run(load(&file), &file, out, quiet, svg),
+        },
+        Command::Merge { parts, out, quiet } => merge(&parts, &out, quiet),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -238,48 +272,7 @@ fn run(
     bar.finish_and_clear();
     let outcome = match results {
         vbi::run::Results::Scene(outcome) => outcome,
-        vbi::run::Results::SeparationMap(map) => {
-            if let Err(e) = vbi::run::write_study(&out, &scenario, &map) {
-                errln!("error: {e}");
-                return ExitCode::from(EXIT_FAILED);
-            }
-            if !quiet {
-                errln!(
-                    "{}: separation map of {} points, {} separated, {:.2} s",
-                    scenario.name,
-                    map.points.len(),
-                    map.separated_count(),
-                    map.wall_time
-                );
-                errln!("results in {}", out.display());
-            }
-            return ExitCode::SUCCESS;
-        }
-        vbi::run::Results::SpeedSweep(sweep) => {
-            if let Err(e) = vbi::run::write_speed_sweep(&out, &scenario, &sweep) {
-                errln!("error: {e}");
-                return ExitCode::from(EXIT_FAILED);
-            }
-            if !quiet {
-                let largest = vbi::study::speed_sweep::SweepSummary::new(&scenario.name, &sweep)
-                    .largest_daf
-                    .map(|l| {
-                        format!(
-                            ", largest DAF {:.4} ({}, {}, {:.1} km/h)",
-                            l.daf, l.column, l.roughness, l.speed_km_h
-                        )
-                    })
-                    .unwrap_or_default();
-                errln!(
-                    "{}: speed sweep of {} runs{largest}, {:.2} s",
-                    scenario.name,
-                    sweep.points.len(),
-                    sweep.wall_time
-                );
-                errln!("results in {}", out.display());
-            }
-            return ExitCode::SUCCESS;
-        }
+        study => return write_study(&out, &scenario, &study, quiet),
     };
     if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
         errln!("error: {e}");

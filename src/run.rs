@@ -12,6 +12,7 @@ use crate::report::{self, ReportError};
 use crate::scenario::Loaded;
 use crate::scenario::resolved::{Scenario, Study};
 use crate::solve::{self, Progress, SolveError};
+use crate::study::monte_carlo::{self, MonteCarloResults};
 use crate::study::separation_map::{self, SeparationMap};
 use crate::study::speed_sweep::{self, SweepResults};
 
@@ -41,6 +42,8 @@ pub enum Results {
     SeparationMap(SeparationMap),
     /// A speed sweep.
     SpeedSweep(SweepResults),
+    /// A Monte Carlo study.
+    MonteCarlo(MonteCarloResults),
 }
 
 /// Runs the scenario's study if it has one, else the scene.
@@ -64,6 +67,12 @@ pub fn execute(
             &loaded.scenario,
             &loaded.bridge,
             sweep,
+            progress,
+        )?)),
+        Some(Study::MonteCarlo(mc)) => Ok(Results::MonteCarlo(monte_carlo::run(
+            &loaded.scenario,
+            &loaded.bridge,
+            mc,
             progress,
         )?)),
         None => Ok(Results::Scene(Box::new(simulate(loaded, &mut |d, t| {

@@ -32,6 +32,7 @@ use serde_json::Value;
 use vbi::record::History;
 use vbi::run::Outcome;
 use vbi::run::Results;
+use vbi::study::monte_carlo::MonteCarloResults;
 use vbi::study::separation_map::SeparationMap;
 use vbi::study::speed_sweep::SweepResults;
 
@@ -293,6 +294,7 @@ fn study(path: &Path) -> Option<Result<(String, String), String>> {
     Some(match catch(|| vbi::run::execute(loaded, &|_, _| {})) {
         Ok(Ok(Results::SeparationMap(map))) => Ok(study_snapshots(&map)),
         Ok(Ok(Results::SpeedSweep(sweep))) => Ok(sweep_snapshots(&sweep)),
+        Ok(Ok(Results::MonteCarlo(mc))) => Ok(monte_carlo_snapshots(&mc)),
         Ok(Ok(Results::Scene(_))) => Err("a study scenario ran as a scene".into()),
         Ok(Err(e)) => Err(format!("study failed: {e}")),
         Err(e) => Err(e),
@@ -351,6 +353,79 @@ fn sweep_snapshots(sweep: &SweepResults) -> (String, String) {
             dafs.join(" "),
             forces.join(" ")
         ));
+    }
+    (summary, table)
+}
+
+/// A Monte Carlo study as (per case and wheel the probability of separation
+/// with its interval and the expected largest gap; every sample's seed,
+/// separation and largest gap, then each record's mean and standard
+/// deviation at 11 evenly spaced steps of each case), rounded to 6
+/// significant digits.
+fn monte_carlo_snapshots(mc: &MonteCarloResults) -> (String, String) {
+    let mut summary = format!(
+        "runs: {}\ncases: {}\nsamples: {}\nseed: {}\n",
+        mc.sample_results.len(),
+        mc.cases.len(),
+        mc.samples,
+        mc.seed
+    );
+    for c in 0..mc.cases.len() {
+        for w in mc.wheel_statistics(c) {
+            summary.push_str(&format!(
+                "{} {} v{} w{}: separated {} p {} [{}, {}] E[max gap] {} ± {}\n",
+                mc.labels[c],
+                mc.speed(c)
+                    .map_or("-".into(), |v| significant(v).to_string()),
+                w.vehicle,
+                w.wheel,
+                w.separated,
+                significant(w.probability),
+                significant(w.probability_low),
+                significant(w.probability_high),
+                significant(w.expected_max_gap),
+                significant(w.expected_max_gap_std_error),
+            ));
+        }
+    }
+    let mut table = String::from("case sample seed separated max_gap\n");
+    for r in &mc.sample_results {
+        let wheels: Vec<String> = r
+            .wheels
+            .iter()
+            .map(|w| format!("{} {}", w.separated, significant(w.max_gap)))
+            .collect();
+        table.push_str(&format!(
+            "{} {} {} {}\n",
+            r.case,
+            r.sample,
+            r.seed,
+            wheels.join(" ")
+        ));
+    }
+    for (c, m) in mc.envelopes.iter().enumerate() {
+        let std = m.std_dev();
+        let n = m.time.len();
+        for k in 0..=10 {
+            let i = k * (n - 1) / 10;
+            let cells: Vec<String> = (0..m.names.len())
+                .map(|r| {
+                    let exp = quantum_exponent(max_abs(&m.mean[r]));
+                    let sexp = quantum_exponent(max_abs(&std[r]));
+                    format!(
+                        "{}={} ±{}",
+                        m.names[r],
+                        quantise(m.mean[r][i], exp),
+                        quantise(std[r][i], sexp)
+                    )
+                })
+                .collect();
+            table.push_str(&format!(
+                "case {c} t {} {}\n",
+                significant(m.time[i]),
+                cells.join(" ")
+            ));
+        }
     }
     (summary, table)
 }

@@ -48,6 +48,9 @@ const TRUE_COLOUR: RGBColor = RGBColor(150, 150, 150);
 /// Fill of a `false` cell in [`binary_map`].
 const FALSE_COLOUR: RGBColor = RGBColor(255, 255, 255);
 
+/// Colour of background sample lines in [`line_chart_over_samples`].
+const GREY_LINE: RGBColor = RGBColor(190, 190, 190);
+
 /// Line colours, cycled (the "tab10" palette).
 const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
@@ -163,7 +166,22 @@ pub fn line_chart(
     log_x: bool,
     log_y: bool,
 ) -> Result<(), PlotError> {
-    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y)?;
+    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y, 0)?;
+    write_png(path, &rendered.rgb)
+}
+
+/// [`line_chart`] with the first `grey` series drawn thin and grey behind
+/// the others (sample histories behind a Monte Carlo study's envelopes, as
+/// in the LCP separation paper's Fig. 7), linear axes.
+pub fn line_chart_over_samples(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    grey: usize,
+) -> Result<(), PlotError> {
+    let rendered = render_line_chart(title, x_label, y_label, series, false, false, grey)?;
     write_png(path, &rendered.rgb)
 }
 

@@ -342,6 +342,9 @@ pub(super) fn resolve_study(
         raw::StudyRaw::SpeedSweep(sweep) => Some(Study::SpeedSweep(super::sweep::resolve(
             sweep, bridge, surface, ck,
         ))),
+        raw::StudyRaw::MonteCarlo(mc) => Some(Study::MonteCarlo(
+            super::sweep::resolve_monte_carlo(mc, surface, ck),
+        )),
         raw::StudyRaw::SeparationMap(map) => {
             check_grid(ck, "study.velocity_ratio", &map.velocity_ratio);
             check_grid(ck, "study.mass_ratio", &map.mass_ratio);

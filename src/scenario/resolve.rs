@@ -290,9 +290,24 @@ pub(super) fn resolve(
     // A speed sweep runs the scene at every speed of its grid: the automatic
     // choices must serve its fastest run.
     let excitations = match &study {
-        Some(Study::SpeedSweep(sweep)) => {
-            super::sweep::excitations(sweep, &vehicles, &contact, &surface, &bridge, gravity)
-        }
+        Some(Study::SpeedSweep(sweep)) => super::sweep::excitations(
+            Some(sweep.speed_range().1),
+            &super::sweep::entries_of(sweep.roughness.as_deref()),
+            &vehicles,
+            &contact,
+            &surface,
+            &bridge,
+            gravity,
+        ),
+        Some(Study::MonteCarlo(mc)) => super::sweep::excitations(
+            mc.speed_range().map(|r| r.1),
+            &super::sweep::entries_of(mc.roughness.as_deref()),
+            &vehicles,
+            &contact,
+            &surface,
+            &bridge,
+            gravity,
+        ),
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
     if automatic {

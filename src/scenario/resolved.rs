@@ -491,6 +491,24 @@ pub enum Surface {
     },
 }
 
+impl Surface {
+    /// Whether the profile is a random sample (it has a seed): a Monte Carlo
+    /// study draws its samples by reseeding it.
+    pub fn is_random(&self) -> bool {
+        matches!(self, Surface::Random { .. })
+    }
+
+    /// The same surface with seed `seed` (a deterministic surface is
+    /// returned unchanged: it has no seed).
+    pub fn reseeded(&self, seed: u64) -> Surface {
+        let mut out = self.clone();
+        if let Surface::Random { seed: s, .. } = &mut out {
+            *s = seed;
+        }
+        out
+    }
+}
+
 /// Contact model.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 #[serde(tag = "type", rename_all = "snake_case")]

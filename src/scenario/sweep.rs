@@ -3,9 +3,11 @@
 //! excitation the automatic defaults must cover over the whole sweep.
 
 use super::content::{self, Excitation};
-use super::raw::SpeedSweepRaw;
+use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
-use super::resolved::{Bridge, Contact, SpeedSweep, Study, Surface, SweepRoughness, Vehicle};
+use super::resolved::{
+    Bridge, Contact, MonteCarlo, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
+};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS};
 
 /// Most values on the speed grid.
@@ -33,6 +35,10 @@ pub(super) fn extreme_vehicles(
     match study {
         Some(Study::SpeedSweep(sweep)) => {
             let (slow, fast) = sweep.speed_range();
+            (with_speed(vehicles, fast), with_speed(vehicles, slow))
+        }
+        Some(Study::MonteCarlo(mc)) if mc.speeds.is_some() => {
+            let (slow, fast) = mc.speed_range().expect("speeds given");
             (with_speed(vehicles, fast), with_speed(vehicles, slow))
         }
         _ => (vehicles.to_vec(), vehicles.to_vec()),
@@ -104,29 +110,30 @@ pub fn surface(
     }
 }
 
-/// Excitations over the whole sweep: every vehicle at the top speed on
-/// each swept surface, so that the automatic mode cut-off and time step
-/// serve every run.
+/// Excitations over the whole study: every vehicle at the top speed (`None`:
+/// the scene's own speeds) on each swept surface (`None` entry: the scene's
+/// own), so that the automatic mode cut-off and time step serve every run.
 pub(super) fn excitations(
-    sweep: &SpeedSweep,
+    top: Option<f64>,
+    entries: &[Option<SweepRoughness>],
     vehicles: &[Vehicle],
     contact: &Contact,
     base: &Surface,
     bridge: &Bridge,
     gravity: f64,
 ) -> Vec<Excitation> {
-    let (_, top) = sweep.speed_range();
-    let fast = with_speed(vehicles, top);
-    let entries: Vec<Option<SweepRoughness>> = match &sweep.roughness {
-        None => vec![None],
-        Some(list) => list.iter().copied().map(Some).collect(),
+    let fast = match top {
+        Some(top) => with_speed(vehicles, top),
+        None => vehicles.to_vec(),
     };
     let mut out = Vec::new();
-    for entry in entries {
+    for &entry in entries {
         let surface = surface(base, entry, 0, bridge.length());
         for mut e in content::excitations(&fast, contact, &surface, bridge.spans(), gravity) {
-            if e.source.contains("(v /") {
-                e.source = format!("{} at the sweep's top speed, {top} m/s", e.source);
+            if let Some(top) = top
+                && e.source.contains("(v /")
+            {
+                e.source = format!("{} at the study's top speed, {top} m/s", e.source);
             }
             if !out.contains(&e) {
                 out.push(e);
@@ -134,6 +141,68 @@ pub(super) fn excitations(
         }
     }
     out
+}
+
+/// The surfaces of a `roughness` list (`None`: the scene's own only).
+pub fn entries_of(list: Option<&[SweepRoughness]>) -> Vec<Option<SweepRoughness>> {
+    match list {
+        None => vec![None],
+        Some(list) => list.iter().copied().map(Some).collect(),
+    }
+}
+
+/// Most sample histories a Monte Carlo plot draws in grey.
+pub const MAX_SHOWN: usize = 20;
+
+/// Checks the `study` section of a Monte Carlo study and fills its
+/// defaults; refuses a study with nothing random to sample.
+pub(super) fn resolve_monte_carlo(
+    raw: &MonteCarloRaw,
+    surface: &Surface,
+    ck: &mut Checker<'_>,
+) -> MonteCarlo {
+    if raw.samples == 0 {
+        ck.error("study.samples", "`samples` must be at least 1, got 0");
+    }
+    let speeds = raw.speeds.as_ref().map(|g| g.in_m_s());
+    if let Some(grid) = &speeds {
+        check_speeds(ck, grid);
+    }
+    check_roughness(ck, raw.roughness.as_deref());
+    match &raw.roughness {
+        None if !surface.is_random() => ck.error(
+            "study",
+            "a Monte Carlo study samples a random surface, but the scene's `surface` is not random; give `surface: {type: random, ...}` or a `roughness` list of classes in the study",
+        ),
+        None => {}
+        Some(list) => {
+            for (i, entry) in list.iter().enumerate() {
+                if entry.class().is_none() {
+                    ck.error(
+                        &format!("study.roughness[{i}]"),
+                        format!(
+                            "`{}` is not random: a Monte Carlo study samples random surfaces only",
+                            entry.name()
+                        ),
+                    );
+                }
+            }
+        }
+    }
+    let show = raw.show.unwrap_or(5);
+    if show > MAX_SHOWN {
+        ck.error(
+            "study.show",
+            format!("`show` draws at most {MAX_SHOWN} sample histories, got {show}"),
+        );
+    }
+    MonteCarlo {
+        samples: raw.samples,
+        seed: raw.seed.unwrap_or(1),
+        speeds,
+        roughness: raw.roughness.clone(),
+        show: show.min(raw.samples),
+    }
 }
 
 /// Checks the `study` section of a speed sweep and fills its defaults.
@@ -144,59 +213,8 @@ pub(super) fn resolve(
     ck: &mut Checker<'_>,
 ) -> SpeedSweep {
     let grid = &raw.speeds.in_m_s();
-    if grid.from <= 0.0 {
-        ck.error(
-            "study.speeds.from",
-            format!("the sweep's speeds must be positive, got {}", grid.from),
-        );
-    }
-    if grid.to < grid.from {
-        ck.error(
-            "study.speeds.to",
-            format!("`to` ({}) is below `from` ({})", grid.to, grid.from),
-        );
-    } else if grid.to == grid.from && grid.count > 1 {
-        ck.error(
-            "study.speeds.to",
-            format!(
-                "{} speeds from {} to {} are all the same; raise `to` or use `count: 1`",
-                grid.count, grid.from, grid.to
-            ),
-        );
-    }
-    if grid.to > MAX_SPEED {
-        ck.error(
-            "study.speeds.to",
-            format!("a speed of {} m/s is above {MAX_SPEED} m/s", grid.to),
-        );
-    }
-    if !(1..=MAX_SPEEDS).contains(&grid.count) {
-        ck.error(
-            "study.speeds.count",
-            format!(
-                "a speed sweep needs 1 to {MAX_SPEEDS} speeds, got {}",
-                grid.count
-            ),
-        );
-    }
-    if let Some(list) = &raw.roughness {
-        if list.is_empty() {
-            ck.error(
-                "study.roughness",
-                "`roughness` needs at least one surface (or leave it out to sweep the scene's own)",
-            );
-        }
-        // A set of the names seen keeps this linear in the list's length.
-        let mut seen = std::collections::HashSet::new();
-        for (i, entry) in list.iter().enumerate() {
-            if !seen.insert(*entry) {
-                ck.error(
-                    &format!("study.roughness[{i}]"),
-                    format!("`{}` is listed twice", entry.name()),
-                );
-            }
-        }
-    }
+    check_speeds(ck, grid);
+    check_roughness(ck, raw.roughness.as_deref());
     let entries: Vec<Option<SweepRoughness>> = match &raw.roughness {
         None => vec![None],
         Some(list) => list.iter().copied().map(Some).collect(),
@@ -258,6 +276,68 @@ pub(super) fn resolve(
     }
 }
 
+/// Checks a study's speed grid (m/s): positive, ordered, below the speed
+/// limit, 1 to [`MAX_SPEEDS`] values.
+fn check_speeds(ck: &mut Checker<'_>, grid: &super::raw::GridRaw) {
+    if grid.from <= 0.0 {
+        ck.error(
+            "study.speeds.from",
+            format!("the sweep's speeds must be positive, got {}", grid.from),
+        );
+    }
+    if grid.to < grid.from {
+        ck.error(
+            "study.speeds.to",
+            format!("`to` ({}) is below `from` ({})", grid.to, grid.from),
+        );
+    } else if grid.to == grid.from && grid.count > 1 {
+        ck.error(
+            "study.speeds.to",
+            format!(
+                "{} speeds from {} to {} are all the same; raise `to` or use `count: 1`",
+                grid.count, grid.from, grid.to
+            ),
+        );
+    }
+    if grid.to > MAX_SPEED {
+        ck.error(
+            "study.speeds.to",
+            format!("a speed of {} m/s is above {MAX_SPEED} m/s", grid.to),
+        );
+    }
+    if !(1..=MAX_SPEEDS).contains(&grid.count) {
+        ck.error(
+            "study.speeds.count",
+            format!(
+                "a speed sweep needs 1 to {MAX_SPEEDS} speeds, got {}",
+                grid.count
+            ),
+        );
+    }
+}
+
+/// Checks a study's `roughness` list: not empty, no entry twice.
+fn check_roughness(ck: &mut Checker<'_>, list: Option<&[SweepRoughness]>) {
+    if let Some(list) = list {
+        if list.is_empty() {
+            ck.error(
+                "study.roughness",
+                "`roughness` needs at least one surface (or leave it out to sweep the scene's own)",
+            );
+        }
+        // A set of the names seen keeps this linear in the list's length.
+        let mut seen = std::collections::HashSet::new();
+        for (i, entry) in list.iter().enumerate() {
+            if !seen.insert(*entry) {
+                ck.error(
+                    &format!("study.roughness[{i}]"),
+                    format!("`{}` is listed twice", entry.name()),
+                );
+            }
+        }
+    }
+}
+
 /// Runs a study makes: speeds × (samples per random surface, one per
 /// deterministic one) for a sweep, the grid's points for a separation map.
 /// In `f64`, so no count can wrap.
@@ -284,5 +364,10 @@ pub fn study_points(study: &Study, base: &Surface) -> f64 {
             velocity_ratio,
             mass_ratio,
         } => velocity_ratio.count as f64 * mass_ratio.count as f64,
+        Study::MonteCarlo(mc) => {
+            mc.roughness.as_ref().map_or(1.0, |l| l.len() as f64)
+                * mc.speeds.as_ref().map_or(1.0, |g| g.count as f64)
+                * mc.samples as f64
+        }
     }
 }

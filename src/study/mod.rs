@@ -4,5 +4,7 @@
 //! one after another so their wall times do not compete.
 
 pub mod converge;
+pub mod monte_carlo;
 pub mod separation_map;
+pub mod shard;
 pub mod speed_sweep;

@@ -20,7 +20,7 @@ use crate::scenario::resolved::{Contact, Grid, Quantity, Record, Scenario, Vehic
 use crate::solve;
 
 /// Result of one grid point.
-#[derive(Debug, Clone, Serialize, PartialEq)]
+#[derive(Debug, Clone, Serialize, serde::Deserialize, PartialEq)]
 pub struct MapPoint {
     /// α = v / (2 f₁ L).
     pub velocity_ratio: f64,
@@ -149,9 +149,63 @@ fn run_point(
     })
 }
 
+/// The grid points, velocity ratio major.
+fn grid(velocity_ratio: &Grid, mass_ratio: &Grid) -> Vec<(f64, f64)> {
+    let mass_ratios = mass_ratio.values();
+    velocity_ratio
+        .values()
+        .into_iter()
+        .flat_map(|a| mass_ratios.iter().map(move |&m| (a, m)))
+        .collect()
+}
+
+/// Points of the map.
+pub fn size(velocity_ratio: &Grid, mass_ratio: &Grid) -> usize {
+    velocity_ratio.count.max(1) * mass_ratio.count.max(1)
+}
+
+/// Runs the points `range` of the grid (in parallel) and collects them in
+/// grid order. `progress` is called with (points done, points in the range)
+/// as points finish.
+pub fn run_slice(
+    base: &Scenario,
+    bridge: &ModalBridge,
+    velocity_ratio: &Grid,
+    mass_ratio: &Grid,
+    range: std::ops::Range<usize>,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<MapPoint>, RunError> {
+    let grid = grid(velocity_ratio, mass_ratio);
+    let total = range.len();
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    grid[range]
+        .par_iter()
+        .map(|&(a, m)| {
+            let point = run_point(base, bridge, a, m);
+            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            progress(n, total);
+            point
+        })
+        .collect()
+}
+
+/// The map from all its points in grid order.
+pub fn assemble(
+    velocity_ratio: &Grid,
+    mass_ratio: &Grid,
+    points: Vec<MapPoint>,
+    wall_time: f64,
+) -> SeparationMap {
+    SeparationMap {
+        velocity_ratios: velocity_ratio.values(),
+        mass_ratios: mass_ratio.values(),
+        points,
+        wall_time,
+    }
+}
+
 /// Runs every grid point (in parallel) and collects them in grid order.
-/// `progress` is called with (points done, total) from the calling thread's
-/// point of view as points finish.
+/// `progress` is called with (points done, total) as points finish.
 pub fn run(
     base: &Scenario,
     bridge: &ModalBridge,
@@ -160,29 +214,14 @@ pub fn run(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<SeparationMap, RunError> {
     let start = Instant::now();
-    let velocity_ratios = velocity_ratio.values();
-    let mass_ratios = mass_ratio.values();
-    let grid: Vec<(f64, f64)> = velocity_ratios
-        .iter()
-        .flat_map(|&a| mass_ratios.iter().map(move |&m| (a, m)))
-        .collect();
-    let total = grid.len();
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let points = grid
-        .par_iter()
-        .map(|&(a, m)| {
-            let point = run_point(base, bridge, a, m);
-            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            progress(n, total);
-            point
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(SeparationMap {
-        velocity_ratios,
-        mass_ratios,
+    let all = 0..size(velocity_ratio, mass_ratio);
+    let points = run_slice(base, bridge, velocity_ratio, mass_ratio, all, progress)?;
+    Ok(assemble(
+        velocity_ratio,
+        mass_ratio,
         points,
-        wall_time: start.elapsed().as_secs_f64(),
-    })
+        start.elapsed().as_secs_f64(),
+    ))
 }
 
 impl SeparationMap {

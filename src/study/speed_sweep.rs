@@ -72,7 +72,7 @@ pub fn daf_columns(sources: &[DafSource]) -> Vec<String> {
 }
 
 /// One run of the sweep.
-#[derive(Debug, Clone, Serialize, PartialEq)]
+#[derive(Debug, Clone, Serialize, serde::Deserialize, PartialEq)]
 pub struct SweepPoint {
     /// Surface: index into [`SweepResults::roughness`].
     pub roughness: usize,
@@ -205,15 +205,17 @@ fn run_point(
     })
 }
 
-/// Runs every point of the sweep (in parallel) and collects them in sweep
-/// order. `progress` is called with (points done, total) as points finish.
-pub fn run(
+/// The sweep's layout without its points (`points` empty, `wall_time` 0)
+/// and its jobs: (surface index, surface, sample from 0, speed) in sweep
+/// order.
+#[allow(clippy::type_complexity)]
+fn layout(
     base: &Scenario,
-    bridge: &ModalBridge,
     study: &SpeedSweep,
-    progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<SweepResults, RunError> {
-    let start = Instant::now();
+) -> (
+    SweepResults,
+    Vec<(usize, Option<SweepRoughness>, usize, f64)>,
+) {
     let speeds = study.speed_values();
     let entries = entries(study);
     let runs: Vec<usize> = entries
@@ -269,18 +271,7 @@ pub fn run(
             (0..n).flat_map(move |k| speeds.iter().map(move |&v| (i, e, k, v)))
         })
         .collect();
-    let total = jobs.len();
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let points = jobs
-        .par_iter()
-        .map(|&job| {
-            let point = run_point(base, bridge, &daf_sources, job);
-            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            progress(n, total);
-            point
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(SweepResults {
+    let results = SweepResults {
         speeds,
         roughness: entries
             .iter()
@@ -296,9 +287,66 @@ pub fn run(
         daf_columns: daf_columns(&daf_sources),
         daf_sources,
         force_records,
-        points,
-        wall_time: start.elapsed().as_secs_f64(),
-    })
+        points: Vec::new(),
+        wall_time: 0.0,
+    };
+    (results, jobs)
+}
+
+/// Runs of the sweep.
+pub fn size(base: &Scenario, study: &SpeedSweep) -> usize {
+    layout(base, study).1.len()
+}
+
+/// Runs the points `range` of the sweep (in parallel) and collects them in
+/// sweep order. `progress` is called with (points done, points in the
+/// range) as points finish.
+pub fn run_slice(
+    base: &Scenario,
+    bridge: &ModalBridge,
+    study: &SpeedSweep,
+    range: std::ops::Range<usize>,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<SweepPoint>, RunError> {
+    let (layout, jobs) = layout(base, study);
+    let total = range.len();
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    jobs[range]
+        .par_iter()
+        .map(|&job| {
+            let point = run_point(base, bridge, &layout.daf_sources, job);
+            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            progress(n, total);
+            point
+        })
+        .collect()
+}
+
+/// The sweep from all its points in sweep order.
+pub fn assemble(
+    base: &Scenario,
+    study: &SpeedSweep,
+    points: Vec<SweepPoint>,
+    wall_time: f64,
+) -> SweepResults {
+    let mut results = layout(base, study).0;
+    results.points = points;
+    results.wall_time = wall_time;
+    results
+}
+
+/// Runs every point of the sweep (in parallel) and collects them in sweep
+/// order. `progress` is called with (points done, total) as points finish.
+pub fn run(
+    base: &Scenario,
+    bridge: &ModalBridge,
+    study: &SpeedSweep,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<SweepResults, RunError> {
+    let start = Instant::now();
+    let all = 0..size(base, study);
+    let points = run_slice(base, bridge, study, all, progress)?;
+    Ok(assemble(base, study, points, start.elapsed().as_secs_f64()))
 }
 
 impl SweepResults {

@@ -12,6 +12,7 @@ pub(super) fn render_line_chart(
     series: &[Series],
     log_x: bool,
     log_y: bool,
+    grey: usize,
 ) -> Result<Rendered, PlotError> {
     for s in series {
         if s.x.len() != s.y.len() {
@@ -73,6 +74,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            grey,
         ),
         (true, false) => draw_line_chart(
             root,
@@ -81,6 +83,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            grey,
         ),
         (false, true) => draw_line_chart(
             root,
@@ -89,6 +92,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            grey,
         ),
         (true, true) => draw_line_chart(
             root,
@@ -97,6 +101,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            grey,
         ),
     })
 }
@@ -116,6 +121,7 @@ pub(super) fn draw_line_chart<X, Y>(
     text: &LineChartText,
     series: &[Series],
     runs: &[Vec<Vec<(f64, f64)>>],
+    grey: usize,
 ) -> Result<Geometry, PlotError>
 where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
@@ -148,8 +154,15 @@ where
 
     let mut any_label = false;
     for (k, (s, runs)) in series.iter().zip(runs).enumerate() {
-        let colour = PALETTE[k % PALETTE.len()];
-        let style = colour.stroke_width(2);
+        // The first `grey` series are background samples (thin, grey, no
+        // markers); the others take the palette from its start.
+        let background = k < grey;
+        let colour = if background {
+            GREY_LINE
+        } else {
+            PALETTE[(k - grey) % PALETTE.len()]
+        };
+        let style = colour.stroke_width(if background { 1 } else { 2 });
         if !s.label.is_empty() {
             any_label = true;
             // An empty series carries the legend entry, so that series without any
@@ -163,7 +176,7 @@ where
         // Few points are computed points (a sweep's speeds, a ladder's
         // runs): mark each, so that the line is not read as a continuum.
         let points: usize = runs.iter().map(Vec::len).sum();
-        if points <= MAX_MARKED_POINTS {
+        if points <= MAX_MARKED_POINTS && !background {
             chart
                 .draw_series(
                     runs.iter()

@@ -25,6 +25,47 @@ pub enum StudyRaw {
     /// automatic mode cut-off and time step cover the whole sweep (its top
     /// speed and its slowest, longest run).
     SpeedSweep(SpeedSweepRaw),
+    /// Monte Carlo study (the LCP separation paper, Section 5.2, Figs. 7–9):
+    /// `samples` random profiles of the scene's random surface (or of each
+    /// class of `roughness`), sample k's seed mixed from `seed` and k, at
+    /// the scene's speed or at each speed of `speeds`. Per case (surface ×
+    /// speed): the mean, standard deviation and mean ± 3σ of every recorded
+    /// history, and per wheel the probability of separation and the expected
+    /// largest gap with their confidence intervals. Writes study.csv,
+    /// envelopes.csv, envelopes.png, and with several speeds
+    /// separation_probability.png and expected_gap.png.
+    MonteCarlo(MonteCarloRaw),
+}
+
+/// A Monte Carlo study over random surface profiles.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MonteCarloRaw {
+    /// Random profiles per case (≥ 1; dimensionless count).
+    #[schemars(range(min = 1))]
+    #[schemars(transform = crate::schema::at_least_one)]
+    pub samples: usize,
+    /// Study seed: sample k (from 1) uses the k-th output of SplitMix64
+    /// started from this seed (the same k-th seed on every case, every
+    /// machine and every thread count). Default 1.
+    #[serde(default)]
+    #[schemars(extend("default" = 1))]
+    pub seed: Option<u64>,
+    /// Speeds (each > 0), m/s or with their unit; every vehicle takes each
+    /// in turn (keeping its entry time). Default: the scene's own speeds.
+    #[serde(default)]
+    pub speeds: Option<super::SpeedGridRaw>,
+    /// Roughness classes (`very_good` … `very_poor`), each replacing the
+    /// scene's surface as in a speed sweep. Default: the scene's own random
+    /// surface. `smooth` is refused: it is not random.
+    #[serde(default)]
+    pub roughness: Option<Vec<SweepRoughnessRaw>>,
+    /// Sample histories drawn in grey behind the envelopes (0 to 20;
+    /// dimensionless count). Default 5.
+    #[serde(default)]
+    #[schemars(range(max = 20))]
+    #[schemars(extend("default" = 5))]
+    pub show: Option<usize>,
 }
 
 /// Grid of a separation map.

@@ -18,6 +18,42 @@ pub enum Study {
     },
     /// DAF against vehicle speed, on one or more surfaces.
     SpeedSweep(SpeedSweep),
+    /// Monte Carlo over random surface samples.
+    MonteCarlo(MonteCarlo),
+}
+
+/// A Monte Carlo study. See [`crate::scenario::raw::MonteCarloRaw`].
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MonteCarlo {
+    /// Samples per case.
+    pub samples: usize,
+    /// Study seed.
+    pub seed: u64,
+    /// Speeds, m/s; `None`: the scene's own.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speeds: Option<Grid>,
+    /// Surfaces; `None`: the scene's own random surface.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roughness: Option<Vec<SweepRoughness>>,
+    /// Sample histories drawn behind the envelopes.
+    pub show: usize,
+}
+
+impl MonteCarlo {
+    /// Cases (surfaces × speeds), each run `samples` times.
+    pub fn cases(&self) -> usize {
+        self.roughness.as_ref().map_or(1, Vec::len) * self.speeds.as_ref().map_or(1, |g| g.count)
+    }
+
+    /// Slowest and fastest swept speed, m/s (`None`: the scene's own).
+    pub fn speed_range(&self) -> Option<(f64, f64)> {
+        let g = self.speeds.as_ref()?;
+        Some(if g.count <= 1 {
+            (g.from, g.from)
+        } else {
+            (g.from.min(g.to), g.from.max(g.to))
+        })
+    }
 }
 
 /// A speed sweep. See [`crate::scenario::raw::SpeedSweepRaw`].

@@ -1,0 +1,227 @@
+//! The study commands of the `vbi` command line: writing a study's
+//! results, `vbi run --shard K/N`, `vbi run --sample K` and `vbi merge`.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use super::{EXIT_FAILED, EXIT_INVALID, default_out, emit, load_error, run};
+use vbi::scenario::{self, LoadError};
+
+/// Writes a study's results into `out` and says what it found.
+pub(super) fn write_study(
+    out: &Path,
+    scenario: &vbi::scenario::resolved::Scenario,
+    results: &vbi::run::Results,
+    quiet: bool,
+) -> ExitCode {
+    use vbi::run::Results;
+    let written = match results {
+        Results::Scene(_) => unreachable!("a study's results"),
+        Results::SeparationMap(map) => vbi::run::write_study(out, scenario, map),
+        Results::SpeedSweep(sweep) => vbi::run::write_speed_sweep(out, scenario, sweep),
+        Results::MonteCarlo(mc) => vbi::study::monte_carlo::write(out, scenario, mc),
+    };
+    if let Err(e) = written {
+        errln!("error: {e}");
+        return ExitCode::from(EXIT_FAILED);
+    }
+    if quiet {
+        return ExitCode::SUCCESS;
+    }
+    match results {
+        Results::Scene(_) => {}
+        Results::SeparationMap(map) => errln!(
+            "{}: separation map of {} points, {} separated, {:.2} s",
+            scenario.name,
+            map.points.len(),
+            map.separated_count(),
+            map.wall_time
+        ),
+        Results::SpeedSweep(sweep) => {
+            let largest = vbi::study::speed_sweep::SweepSummary::new(&scenario.name, sweep)
+                .largest_daf
+                .map(|l| {
+                    format!(
+                        ", largest DAF {:.4} ({}, {}, {:.1} km/h)",
+                        l.daf, l.column, l.roughness, l.speed_km_h
+                    )
+                })
+                .unwrap_or_default();
+            errln!(
+                "{}: speed sweep of {} runs{largest}, {:.2} s",
+                scenario.name,
+                sweep.points.len(),
+                sweep.wall_time
+            );
+        }
+        Results::MonteCarlo(mc) => {
+            let highest = (0..mc.cases.len())
+                .flat_map(|c| mc.wheel_statistics(c))
+                .map(|w| w.probability)
+                .fold(0.0, f64::max);
+            errln!(
+                "{}: Monte Carlo of {} runs ({} cases × {} samples), highest probability of separation {highest:.4}, {:.2} s",
+                scenario.name,
+                mc.sample_results.len(),
+                mc.cases.len(),
+                mc.samples,
+                mc.wall_time
+            );
+        }
+    }
+    errln!("results in {}", out.display());
+    ExitCode::SUCCESS
+}
+
+fn progress_bar(quiet: bool, message: &str) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    // indicatif draws nothing when stderr is not a terminal.
+    let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {pos}/{len} eta {eta}")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    bar.set_message(message.to_string());
+    bar
+}
+
+/// `vbi run --shard K/N`: the slice's part file in the output folder.
+pub(super) fn run_shard(
+    loaded: Result<scenario::Loaded, LoadError>,
+    file: &Path,
+    options: scenario::LoadOptions,
+    out: Option<PathBuf>,
+    quiet: bool,
+    shard: vbi::study::shard::Shard,
+) -> ExitCode {
+    use vbi::study::shard::{self, ShardError};
+    let loaded = match loaded {
+        Ok(l) => l,
+        Err(e) => return load_error(&e),
+    };
+    // The text as loaded goes into the part, so that the merge needs no
+    // access to the file; a file changed since is caught by the hash.
+    let source = match std::fs::read_to_string(file) {
+        Ok(s) => s,
+        Err(e) => {
+            errln!("error: {}: cannot read: {e}", file.display());
+            return ExitCode::from(EXIT_INVALID);
+        }
+    };
+    let out = out.unwrap_or_else(|| default_out(file, ""));
+    let bar = progress_bar(
+        quiet,
+        &format!(
+            "{} shard {}/{}",
+            loaded.scenario.name, shard.index, shard.count
+        ),
+    );
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let name = file.display().to_string();
+    let part = match shard::run_shard(&loaded, &name, &source, options, shard, &progress) {
+        Ok(p) => p,
+        Err(e) => {
+            bar.abandon();
+            errln!("error: {e}");
+            let code = match e {
+                ShardError::Run(_) => EXIT_FAILED,
+                _ => EXIT_INVALID,
+            };
+            return ExitCode::from(code);
+        }
+    };
+    bar.finish_and_clear();
+    let path = out.join(shard.file_name());
+    let written = std::fs::create_dir_all(&out).and_then(|()| {
+        vbi::report::write_atomic(&path, shard::part_json(&part).as_bytes())
+            .map_err(std::io::Error::other)
+    });
+    if let Err(e) = written {
+        errln!("error: {}: {e}", path.display());
+        return ExitCode::from(EXIT_FAILED);
+    }
+    if !quiet {
+        errln!(
+            "{}: shard {} of {}: runs {}..{} of {}, {:.2} s; part in {}",
+            loaded.scenario.name,
+            part.shard,
+            part.shards,
+            part.first,
+            part.end,
+            part.size,
+            part.wall_time,
+            path.display()
+        );
+    }
+    ExitCode::SUCCESS
+}
+
+/// `vbi run --sample K`: sample K of a Monte Carlo study as one scene.
+pub(super) fn run_sample(
+    loaded: Result<scenario::Loaded, LoadError>,
+    file: &Path,
+    out: Option<PathBuf>,
+    quiet: bool,
+    svg: bool,
+    k: u64,
+) -> ExitCode {
+    use vbi::scenario::resolved::Study;
+    let loaded = match loaded {
+        Ok(l) => l,
+        Err(e) => return load_error(&e),
+    };
+    let Some(Study::MonteCarlo(mc)) = &loaded.scenario.study else {
+        errln!(
+            "error: {}: --sample applies to a Monte Carlo study (`study: {{type: monte_carlo, ...}}`)",
+            file.display()
+        );
+        return ExitCode::from(EXIT_INVALID);
+    };
+    if k > mc.samples as u64 {
+        errln!(
+            "error: {}: sample {k} does not exist; the study has {} samples (counted from 1)",
+            file.display(),
+            mc.samples
+        );
+        return ExitCode::from(EXIT_INVALID);
+    }
+    let case = vbi::study::monte_carlo::cases(mc)[0];
+    let scenario = vbi::study::monte_carlo::sample_scenario(
+        &loaded.scenario,
+        &loaded.bridge,
+        mc,
+        case,
+        (k - 1) as usize,
+    );
+    let loaded = scenario::Loaded {
+        scenario,
+        bridge: loaded.bridge,
+    };
+    let out = out.unwrap_or_else(|| default_out(file, &format!("-sample{k}")));
+    run(Ok(loaded), file, Some(out), quiet, svg)
+}
+
+/// `vbi merge`: the parts' study written as an unsharded run writes it.
+pub(super) fn merge(parts: &[PathBuf], out: &Path, quiet: bool) -> ExitCode {
+    use vbi::study::shard::{self, ShardError};
+    let merged = match shard::merge(parts) {
+        Ok(m) => m,
+        Err(e) => {
+            errln!("error: {e}");
+            let code = match e {
+                ShardError::Run(_) => EXIT_FAILED,
+                _ => EXIT_INVALID,
+            };
+            return ExitCode::from(code);
+        }
+    };
+    write_study(out, &merged.loaded.scenario, &merged.results, quiet)
+}

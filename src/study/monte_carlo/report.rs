@@ -1,0 +1,476 @@
+//! A Monte Carlo study's outputs: study.csv (one row per sample),
+//! separation.csv (per case and wheel: probability of separation and
+//! expected largest gap with 95 % intervals), envelopes.csv (per case, mean,
+//! standard deviation and mean ± 3σ of every record at every step),
+//! envelope_<record>.png (the first case, a few samples in grey as in the
+//! LCP separation paper's Fig. 7), with several speeds
+//! separation_probability.png and expected_gap.png (Figs. 8 and 9),
+//! resolved.yaml and, last, summary.json.
+
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::MonteCarloResults;
+use crate::report::plot::{Series, line_chart, line_chart_over_samples};
+use crate::report::{number, write_atomic};
+use crate::run::RunError;
+use crate::scenario::resolved::Scenario;
+use crate::study::speed_sweep::KM_H;
+
+/// Standard normal quantile of a two-sided 95 % interval.
+pub const Z95: f64 = 1.959_963_984_540_054;
+
+/// Wilson score interval of a proportion (Wilson 1927; Agresti & Coull
+/// 1998, eq. 2) at normal quantile `z`: `successes` out of `n` trials gives
+/// (p̂ + z²/2n ± z √(p̂(1−p̂)/n + z²/4n²)) / (1 + z²/n). Unlike the normal
+/// (Wald) interval it stays inside [0, 1] and is not empty at p̂ = 0 or 1,
+/// the cases a separation study meets most.
+pub fn wilson_interval(successes: usize, n: usize, z: f64) -> (f64, f64) {
+    if n == 0 {
+        return (0.0, 1.0);
+    }
+    let n = n as f64;
+    let p = successes as f64 / n;
+    let z2 = z * z;
+    let denominator = 1.0 + z2 / n;
+    let centre = (p + z2 / (2.0 * n)) / denominator;
+    let half = z / denominator * (p * (1.0 - p) / n + z2 / (4.0 * n * n)).sqrt();
+    // At p̂ = 0 (1) the lower (upper) end is exactly 0 (1); the formula
+    // reaches it only up to round-off.
+    let low = if successes == 0 {
+        0.0
+    } else {
+        (centre - half).max(0.0)
+    };
+    let high = if p == 1.0 {
+        1.0
+    } else {
+        (centre + half).min(1.0)
+    };
+    (low, high)
+}
+
+/// Separation statistics of one wheel in one case.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct WheelStatistics {
+    /// Vehicle number from 1.
+    pub vehicle: usize,
+    /// Wheel number from 1.
+    pub wheel: usize,
+    /// Samples in which the wheel lost contact.
+    pub separated: usize,
+    /// Estimated probability of separation, separated / samples.
+    pub probability: f64,
+    /// Wilson 95 % interval of the probability, lower end.
+    pub probability_low: f64,
+    /// Wilson 95 % interval of the probability, upper end.
+    pub probability_high: f64,
+    /// Mean over the samples of the largest gap, m (a sample that never
+    /// separates counts 0).
+    pub expected_max_gap: f64,
+    /// Standard error of that mean, s/√n, m (s the sample standard deviation).
+    pub expected_max_gap_std_error: f64,
+    /// Normal 95 % interval of the mean, lower end, m (mean − 1.96 SE).
+    pub expected_max_gap_low: f64,
+    /// Normal 95 % interval of the mean, upper end, m (mean + 1.96 SE).
+    pub expected_max_gap_high: f64,
+}
+
+/// One case of summary.json.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct CaseSummary {
+    /// Surface label.
+    pub roughness: String,
+    /// Speed, m/s (`null`: several vehicles at their own speeds).
+    pub speed_m_s: Option<f64>,
+    /// Per wheel.
+    pub wheels: Vec<WheelStatistics>,
+}
+
+/// summary.json of a Monte Carlo study.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MonteCarloSummary {
+    /// Study type.
+    pub study: &'static str,
+    /// Scenario name.
+    pub scenario: String,
+    /// vbi version.
+    pub vbi_version: &'static str,
+    /// Wall time of all runs, s (summed over the parts when merged).
+    pub wall_time: f64,
+    /// Runs.
+    pub runs: usize,
+    /// Samples per case.
+    pub samples: usize,
+    /// Study seed.
+    pub seed: u64,
+    /// How the intervals are computed.
+    pub intervals: &'static str,
+    /// Per case.
+    pub cases: Vec<CaseSummary>,
+}
+
+const INTERVALS: &str = "probability: Wilson score 95 % interval; expected largest gap: mean ± 1.96 standard errors (s/sqrt(n))";
+
+impl MonteCarloResults {
+    /// The speed of case `c`, m/s: swept, or the first vehicle's own.
+    pub fn speed(&self, c: usize) -> Option<f64> {
+        self.cases[c].speed.or(self.own_speed)
+    }
+
+    /// Per wheel separation statistics of case `c`, sums in sample order.
+    pub fn wheel_statistics(&self, c: usize) -> Vec<WheelStatistics> {
+        let n = self.samples;
+        let rows = &self.sample_results[c * n..(c + 1) * n];
+        let Some(first) = rows.first() else {
+            return Vec::new();
+        };
+        (0..first.wheels.len())
+            .map(|w| {
+                let separated = rows.iter().filter(|r| r.wheels[w].separated).count();
+                let (low, high) = wilson_interval(separated, n, Z95);
+                let gaps: Vec<f64> = rows.iter().map(|r| r.wheels[w].max_gap).collect();
+                let mean = gaps.iter().sum::<f64>() / n as f64;
+                let std_error = if n > 1 {
+                    let var =
+                        gaps.iter().map(|g| (g - mean).powi(2)).sum::<f64>() / (n as f64 - 1.0);
+                    (var / n as f64).sqrt()
+                } else {
+                    0.0
+                };
+                WheelStatistics {
+                    vehicle: first.wheels[w].vehicle,
+                    wheel: first.wheels[w].wheel,
+                    separated,
+                    probability: separated as f64 / n as f64,
+                    probability_low: low,
+                    probability_high: high,
+                    expected_max_gap: mean,
+                    expected_max_gap_std_error: std_error,
+                    expected_max_gap_low: mean - Z95 * std_error,
+                    expected_max_gap_high: mean + Z95 * std_error,
+                }
+            })
+            .collect()
+    }
+
+    /// The summary of the study of scene `name`.
+    pub fn summary(&self, name: &str) -> MonteCarloSummary {
+        MonteCarloSummary {
+            study: "monte_carlo",
+            scenario: name.to_string(),
+            vbi_version: env!("CARGO_PKG_VERSION"),
+            wall_time: self.wall_time,
+            runs: self.sample_results.len(),
+            samples: self.samples,
+            seed: self.seed,
+            intervals: INTERVALS,
+            cases: (0..self.cases.len())
+                .map(|c| CaseSummary {
+                    roughness: self.labels[c].clone(),
+                    speed_m_s: self.speed(c),
+                    wheels: self.wheel_statistics(c),
+                })
+                .collect(),
+        }
+    }
+
+    fn case_cells(&self, c: usize) -> [String; 3] {
+        let speed = self.speed(c);
+        [
+            self.labels[c].clone(),
+            speed.map(number).unwrap_or_default(),
+            speed.map(|v| number(v * KM_H)).unwrap_or_default(),
+        ]
+    }
+
+    /// study.csv: one row per sample (flat order) with its seed, and per
+    /// wheel whether it separated and its largest gap (m).
+    pub fn samples_csv(&self) -> Vec<u8> {
+        let mut out = csv::Writer::from_writer(Vec::new());
+        let mut header: Vec<String> = ["roughness", "speed_m_s", "speed_km_h", "sample", "seed"]
+            .map(String::from)
+            .to_vec();
+        if let Some(first) = self.sample_results.first() {
+            for w in &first.wheels {
+                header.push(format!("separated_v{}_w{}", w.vehicle, w.wheel));
+                header.push(format!("max_gap_v{}_w{}_m", w.vehicle, w.wheel));
+            }
+        }
+        out.write_record(&header).expect("writing to memory");
+        for r in &self.sample_results {
+            let mut row = self.case_cells(r.case).to_vec();
+            row.push(r.sample.to_string());
+            row.push(r.seed.to_string());
+            for w in &r.wheels {
+                row.push(w.separated.to_string());
+                row.push(number(w.max_gap));
+            }
+            out.write_record(&row).expect("writing to memory");
+        }
+        out.into_inner().expect("writing to memory")
+    }
+
+    /// separation.csv: per case and wheel, the statistics of
+    /// [`WheelStatistics`].
+    pub fn separation_csv(&self) -> Vec<u8> {
+        let mut out = csv::Writer::from_writer(Vec::new());
+        out.write_record([
+            "roughness",
+            "speed_m_s",
+            "speed_km_h",
+            "vehicle",
+            "wheel",
+            "samples",
+            "separated",
+            "probability",
+            "probability_low",
+            "probability_high",
+            "expected_max_gap_m",
+            "expected_max_gap_std_error_m",
+            "expected_max_gap_low_m",
+            "expected_max_gap_high_m",
+        ])
+        .expect("writing to memory");
+        for c in 0..self.cases.len() {
+            for w in self.wheel_statistics(c) {
+                let mut row = self.case_cells(c).to_vec();
+                row.extend([
+                    w.vehicle.to_string(),
+                    w.wheel.to_string(),
+                    self.samples.to_string(),
+                    w.separated.to_string(),
+                    number(w.probability),
+                    number(w.probability_low),
+                    number(w.probability_high),
+                    number(w.expected_max_gap),
+                    number(w.expected_max_gap_std_error),
+                    number(w.expected_max_gap_low),
+                    number(w.expected_max_gap_high),
+                ]);
+                out.write_record(&row).expect("writing to memory");
+            }
+        }
+        out.into_inner().expect("writing to memory")
+    }
+
+    /// envelopes.csv: per case and step, each record's mean, standard
+    /// deviation σ and mean ∓ 3σ (`<record>_mean`, `_std`, `_lower`, `_upper`).
+    pub fn envelopes_csv(&self) -> Vec<u8> {
+        let mut out = csv::Writer::from_writer(Vec::new());
+        let mut header: Vec<String> = ["roughness", "speed_m_s", "speed_km_h", "time_s"]
+            .map(String::from)
+            .to_vec();
+        if let Some(first) = self.envelopes.first() {
+            for (name, unit) in first.names.iter().zip(&first.units) {
+                for what in ["mean", "std", "lower", "upper"] {
+                    header.push(format!("{name}_{what}_{unit}"));
+                }
+            }
+        }
+        out.write_record(&header).expect("writing to memory");
+        for (c, m) in self.envelopes.iter().enumerate() {
+            let std = m.std_dev();
+            let cells = self.case_cells(c);
+            for (i, &t) in m.time.iter().enumerate() {
+                let mut row = cells.to_vec();
+                row.push(number(t));
+                for (mean, s) in m.mean.iter().zip(&std) {
+                    let (mu, sigma) = (mean[i], s[i]);
+                    row.extend([
+                        number(mu),
+                        number(sigma),
+                        number(mu - 3.0 * sigma),
+                        number(mu + 3.0 * sigma),
+                    ]);
+                }
+                out.write_record(&row).expect("writing to memory");
+            }
+        }
+        out.into_inner().expect("writing to memory")
+    }
+}
+
+/// envelope_<record>.png for every record of the first case: the first
+/// `show` samples in grey, the mean and mean ± 3σ over them.
+fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result<(), RunError> {
+    let Some(m) = results.envelopes.first() else {
+        return Ok(());
+    };
+    let std = m.std_dev();
+    let shown: Vec<&Vec<Vec<f64>>> = results.sample_results[..results.samples]
+        .iter()
+        .filter_map(|r| r.histories.as_ref())
+        .collect();
+    let case = match results.speed(0) {
+        Some(v) => format!("{}, {:.1} km/h", results.labels[0], v * KM_H),
+        None => results.labels[0].clone(),
+    };
+    for (r, (record, unit)) in m.names.iter().zip(&m.units).enumerate() {
+        let lower: Vec<f64> = m.mean[r]
+            .iter()
+            .zip(&std[r])
+            .map(|(mu, s)| mu - 3.0 * s)
+            .collect();
+        let upper: Vec<f64> = m.mean[r]
+            .iter()
+            .zip(&std[r])
+            .map(|(mu, s)| mu + 3.0 * s)
+            .collect();
+        let mut series: Vec<Series> = shown
+            .iter()
+            .map(|h| Series {
+                label: "",
+                x: &m.time,
+                y: &h[r],
+            })
+            .collect();
+        let grey = series.len();
+        series.push(Series {
+            label: "mean",
+            x: &m.time,
+            y: &m.mean[r],
+        });
+        series.push(Series {
+            label: "mean - 3σ",
+            x: &m.time,
+            y: &lower,
+        });
+        series.push(Series {
+            label: "mean + 3σ",
+            x: &m.time,
+            y: &upper,
+        });
+        let file = format!(
+            "envelope_{}.png",
+            crate::scenario::names::folder_name(record)
+        );
+        line_chart_over_samples(
+            &out.join(file),
+            &format!("{name}: {record} over {} samples ({case})", m.count),
+            "time (s)",
+            &format!("{record} ({unit})"),
+            &series,
+            grey,
+        )?;
+    }
+    Ok(())
+}
+
+/// separation_probability.png and expected_gap.png against speed, one line
+/// per surface and wheel (Figs. 8 and 9).
+fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Result<(), RunError> {
+    if results.cases.iter().all(|c| c.speed.is_none()) {
+        return Ok(());
+    }
+    // Cases are surface-major: each surface has the same run of speeds.
+    let surfaces = results.cases.last().map_or(0, |c| c.roughness + 1);
+    let n_speeds = results.cases.len() / surfaces.max(1);
+    let stats: Vec<Vec<WheelStatistics>> = (0..results.cases.len())
+        .map(|c| results.wheel_statistics(c))
+        .collect();
+    let mut labels = Vec::new();
+    let mut xs = Vec::new();
+    let mut probability = Vec::new();
+    let mut gap = Vec::new();
+    for s in 0..surfaces {
+        let cases: Vec<usize> = (s * n_speeds..(s + 1) * n_speeds).collect();
+        let km_h: Vec<f64> = cases
+            .iter()
+            .map(|&c| results.speed(c).unwrap_or(f64::NAN) * KM_H)
+            .collect();
+        for (w, first) in stats[cases[0]].iter().enumerate() {
+            labels.push(format!(
+                "{}, vehicle {} wheel {}",
+                results.labels[cases[0]], first.vehicle, first.wheel
+            ));
+            xs.push(km_h.clone());
+            probability.push(cases.iter().map(|&c| stats[c][w].probability).collect());
+            gap.push(
+                cases
+                    .iter()
+                    .map(|&c| stats[c][w].expected_max_gap * 1e3)
+                    .collect::<Vec<f64>>(),
+            );
+        }
+    }
+    let series = |ys: &[Vec<f64>]| -> Vec<(String, Vec<f64>, Vec<f64>)> {
+        labels
+            .iter()
+            .zip(&xs)
+            .zip(ys)
+            .map(|((l, x), y)| (l.clone(), x.clone(), y.clone()))
+            .collect()
+    };
+    for (file, title, y_label, data) in [
+        (
+            "separation_probability.png",
+            "probability of separation",
+            "probability of separation",
+            series(&probability),
+        ),
+        (
+            "expected_gap.png",
+            "expected largest separation",
+            "expected largest gap (mm)",
+            series(&gap),
+        ),
+    ] {
+        let lines: Vec<Series> = data
+            .iter()
+            .map(|(label, x, y)| Series { label, x, y })
+            .collect();
+        line_chart(
+            &out.join(file),
+            &format!("{name}: {title} over {} samples", results.samples),
+            "speed (km/h)",
+            y_label,
+            &lines,
+            false,
+            false,
+        )?;
+    }
+    Ok(())
+}
+
+/// Writes every output of the study into `out`, summary.json last.
+pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Result<(), RunError> {
+    crate::run::create_out(out)?;
+    write_atomic(&out.join("study.csv"), &results.samples_csv())?;
+    write_atomic(&out.join("separation.csv"), &results.separation_csv())?;
+    write_atomic(&out.join("envelopes.csv"), &results.envelopes_csv())?;
+    plot_envelopes(out, &scenario.name, results)?;
+    plot_against_speed(out, &scenario.name, results)?;
+    write_atomic(
+        &out.join("resolved.yaml"),
+        crate::run::resolved_yaml(scenario).as_bytes(),
+    )?;
+    let text = serde_json::to_string_pretty(&results.summary(&scenario.name))
+        .expect("summary serialises")
+        + "\n";
+    write_atomic(&out.join("summary.json"), text.as_bytes())?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wilson_interval_against_hand_values() {
+        // 3 of 10 at z = 1.96, by hand from Agresti & Coull 1998, eq. 2:
+        // centre (0.3 + 0.19208)/1.38416 = 0.355508, half 1.96/1.38416 ·
+        // √(0.021 + 0.009604) = 0.247719: (0.107789, 0.603227).
+        let (lo, hi) = wilson_interval(3, 10, 1.96);
+        assert!((lo - 0.107_789).abs() < 2e-6, "{lo}");
+        assert!((hi - 0.603_227).abs() < 2e-6, "{hi}");
+        // 0 of n: lower end exactly 0, upper z²/(n + z²).
+        let (lo, hi) = wilson_interval(0, 100, 1.96);
+        assert_eq!(lo, 0.0);
+        assert!((hi - 1.96f64.powi(2) / (100.0 + 1.96f64.powi(2))).abs() < 1e-15);
+        let (lo, hi) = wilson_interval(100, 100, 1.96);
+        assert!((lo - 100.0 / (100.0 + 1.96f64.powi(2))).abs() < 1e-15);
+        assert_eq!(hi, 1.0);
+    }
+}

@@ -1,0 +1,527 @@
+//! Sharding a study across machines: `vbi run study.yaml --shard K/N` runs
+//! a slice of the study's flat list of runs and writes a part file; `vbi
+//! merge PARTS… --out DIR` checks the parts and writes exactly the files an
+//! unsharded run writes.
+//!
+//! The flat list is the study's own run order (a separation map's grid
+//! points velocity-ratio major; a speed sweep's surface by surface, sample
+//! by sample, speed by speed; a Monte Carlo study's case by case, sample by
+//! sample). Shard K of N (from 1) takes the contiguous slice
+//! [⌊(K−1)·T/N⌋, ⌊K·T/N⌋) of the T runs, so the slices tile the list and
+//! differ in size by at most one. Merging concatenates the points in order
+//! and, for a Monte Carlo study, evaluates the same fixed reduction tree as
+//! the unsharded run ([`super::monte_carlo`]): the files are byte for byte
+//! those of the unsharded run, except `wall_time` in summary.json, which is
+//! the sum of the parts' wall times.
+//!
+//! A part file (`part-K-of-N.json`) is self-describing: format version, the
+//! scenario's text and file name, a hash of the resolved scenario, the study
+//! type and size, K, N and the slice, the wall time and the slice's results
+//! (floats written in shortest round-trip form and read back exactly).
+
+use std::collections::BTreeMap;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use super::monte_carlo::{self, MonteCarloPart};
+use super::separation_map::{self, MapPoint};
+use super::speed_sweep::{self, SweepPoint};
+use crate::run::{Results, RunError};
+use crate::scenario::resolved::Study;
+use crate::scenario::{self, LoadOptions, Loaded};
+
+/// Version tag of the part format.
+pub const PART_FORMAT: &str = "vbi-part-1";
+
+/// Which shard of how many: K of N, both from 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// This shard, 1 ≤ K ≤ N.
+    pub index: usize,
+    /// Shards in all.
+    pub count: usize,
+}
+
+impl Shard {
+    /// Reads `K/N` (1 ≤ K ≤ N).
+    pub fn parse(text: &str) -> Result<Shard, String> {
+        let (k, n) = text
+            .split_once('/')
+            .ok_or_else(|| format!("a shard is written K/N, e.g. 3/8; got `{text}`"))?;
+        let parse = |s: &str, what: &str| {
+            s.trim()
+                .parse::<usize>()
+                .map_err(|_| format!("{what} `{s}` in `{text}` is not a whole number"))
+        };
+        let (index, count) = (parse(k, "K")?, parse(n, "N")?);
+        if count == 0 || index == 0 || index > count {
+            return Err(format!(
+                "a shard K/N needs 1 ≤ K ≤ N (counted from 1); got `{text}`"
+            ));
+        }
+        Ok(Shard { index, count })
+    }
+
+    /// The slice of a study of `size` runs: [⌊(K−1)·T/N⌋, ⌊K·T/N⌋).
+    pub fn range(self, size: usize) -> Range<usize> {
+        let at = |k: usize| (k as u128 * size as u128 / self.count as u128) as usize;
+        at(self.index - 1)..at(self.index)
+    }
+
+    /// The part file's name: `part-K-of-N.json`.
+    pub fn file_name(self) -> String {
+        format!("part-{}-of-{}.json", self.index, self.count)
+    }
+}
+
+/// The results of one slice.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "study", rename_all = "snake_case")]
+pub enum PartData {
+    /// Separation-map points of the slice.
+    SeparationMap {
+        /// Points in grid order.
+        points: Vec<MapPoint>,
+    },
+    /// Speed-sweep points of the slice.
+    SpeedSweep {
+        /// Points in sweep order.
+        points: Vec<SweepPoint>,
+    },
+    /// Monte Carlo samples and reduced tree nodes of the slice.
+    MonteCarlo(MonteCarloPart),
+}
+
+/// A part file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Part {
+    /// [`PART_FORMAT`].
+    pub format: String,
+    /// vbi version that wrote it.
+    pub vbi_version: String,
+    /// FNV-1a 64 of the resolved scenario (resolved.yaml), hex.
+    pub scenario_hash: String,
+    /// The scenario file as given to `vbi run`.
+    pub scenario_file: String,
+    /// Its text.
+    pub scenario_source: String,
+    /// Whether the run lifted the resource limits (`--allow-large`).
+    pub allow_large: bool,
+    /// Study type.
+    pub study: String,
+    /// Runs in the whole study.
+    pub size: usize,
+    /// This shard, from 1.
+    pub shard: usize,
+    /// Shards in all.
+    pub shards: usize,
+    /// First run index of the slice (from 0).
+    pub first: usize,
+    /// One past the last run index.
+    pub end: usize,
+    /// Wall time of the slice, s.
+    pub wall_time: f64,
+    /// The slice's results.
+    pub data: PartData,
+}
+
+/// Why a shard cannot run or parts cannot be merged.
+#[derive(Debug, Error)]
+pub enum ShardError {
+    /// The scene has no study to shard.
+    #[error("{file}: --shard and --sample apply to a study; this scene has no `study` section")]
+    NoStudy {
+        /// The scenario file.
+        file: String,
+    },
+    /// A part file could not be read.
+    #[error("{}: cannot read: {source}", path.display())]
+    Read {
+        /// The part file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// A part file is not a part.
+    #[error("{}: not a vbi part file: {message}", path.display())]
+    NotAPart {
+        /// The part file.
+        path: PathBuf,
+        /// What failed.
+        message: String,
+    },
+    /// Parts disagree or do not tile the study.
+    #[error("{0}")]
+    Mismatch(String),
+    /// The scenario in the parts no longer loads.
+    #[error(transparent)]
+    Load(#[from] scenario::LoadError),
+    /// Running the slice failed.
+    #[error(transparent)]
+    Run(#[from] RunError),
+}
+
+/// FNV-1a 64-bit hash (Fowler, Noll & Vo), hex: identifies the resolved
+/// scenario of a part (a check against mixing parts of different studies,
+/// not a cryptographic digest).
+pub fn fnv1a(bytes: &[u8]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0100_0000_01b3);
+    }
+    format!("{h:016x}")
+}
+
+/// The hash of a loaded scenario.
+pub fn scenario_hash(loaded: &Loaded) -> String {
+    fnv1a(crate::run::resolved_yaml(&loaded.scenario).as_bytes())
+}
+
+/// Study type name and number of runs.
+fn study_size(loaded: &Loaded, study: &Study) -> (&'static str, usize) {
+    match study {
+        Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        } => (
+            "separation_map",
+            separation_map::size(velocity_ratio, mass_ratio),
+        ),
+        Study::SpeedSweep(sweep) => ("speed_sweep", speed_sweep::size(&loaded.scenario, sweep)),
+        Study::MonteCarlo(mc) => ("monte_carlo", monte_carlo::size(mc)),
+    }
+}
+
+/// Runs shard `shard` of the study of `loaded` (read from `file`, whose
+/// text is `source`) and returns its part.
+pub fn run_shard(
+    loaded: &Loaded,
+    file: &str,
+    source: &str,
+    options: LoadOptions,
+    shard: Shard,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Part, ShardError> {
+    let study = loaded
+        .scenario
+        .study
+        .as_ref()
+        .ok_or_else(|| ShardError::NoStudy {
+            file: file.to_string(),
+        })?;
+    let (name, size) = study_size(loaded, study);
+    let range = shard.range(size);
+    let start = Instant::now();
+    let (base, bridge) = (&loaded.scenario, &loaded.bridge);
+    let data = match study {
+        Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        } => PartData::SeparationMap {
+            points: separation_map::run_slice(
+                base,
+                bridge,
+                velocity_ratio,
+                mass_ratio,
+                range.clone(),
+                progress,
+            )?,
+        },
+        Study::SpeedSweep(sweep) => PartData::SpeedSweep {
+            points: speed_sweep::run_slice(base, bridge, sweep, range.clone(), progress)?,
+        },
+        Study::MonteCarlo(mc) => PartData::MonteCarlo(monte_carlo::run_slice(
+            base,
+            bridge,
+            mc,
+            range.clone(),
+            progress,
+        )?),
+    };
+    Ok(Part {
+        format: PART_FORMAT.into(),
+        vbi_version: env!("CARGO_PKG_VERSION").into(),
+        scenario_hash: scenario_hash(loaded),
+        scenario_file: file.to_string(),
+        scenario_source: source.to_string(),
+        allow_large: options.allow_large,
+        study: name.into(),
+        size,
+        shard: shard.index,
+        shards: shard.count,
+        first: range.start,
+        end: range.end,
+        wall_time: start.elapsed().as_secs_f64(),
+        data,
+    })
+}
+
+/// The part as JSON text.
+pub fn part_json(part: &Part) -> String {
+    serde_json::to_string(part).expect("a part serialises") + "\n"
+}
+
+/// Reads a part file.
+pub fn read_part(path: &Path) -> Result<Part, ShardError> {
+    let text = std::fs::read_to_string(path).map_err(|source| ShardError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let part: Part = serde_json::from_str(&text).map_err(|e| ShardError::NotAPart {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    if part.format != PART_FORMAT {
+        return Err(ShardError::NotAPart {
+            path: path.to_path_buf(),
+            message: format!("format `{}`, this vbi reads `{PART_FORMAT}`", part.format),
+        });
+    }
+    Ok(part)
+}
+
+/// The merged study and the scene it belongs to.
+#[derive(Debug)]
+pub struct Merged {
+    /// The scene, loaded again from the parts' scenario text.
+    pub loaded: Loaded,
+    /// The study's results, as an unsharded run gives them.
+    pub results: Results,
+}
+
+/// Checks that `parts` (read from `paths`) are the N distinct shards of one
+/// study and assembles them.
+pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
+    let mut parts = Vec::with_capacity(paths.len());
+    for path in paths {
+        parts.push((path.clone(), read_part(path)?));
+    }
+    let Some((first_path, first)) = parts.first() else {
+        return Err(ShardError::Mismatch("no part files given".into()));
+    };
+    let shown = |p: &Path| p.display().to_string();
+    for (path, part) in &parts[1..] {
+        if part.scenario_hash != first.scenario_hash
+            || part.scenario_source != first.scenario_source
+        {
+            return Err(ShardError::Mismatch(format!(
+                "{} is from another scenario than {} (scenario hash {} against {})",
+                shown(path),
+                shown(first_path),
+                part.scenario_hash,
+                first.scenario_hash
+            )));
+        }
+        if part.shards != first.shards || part.size != first.size || part.study != first.study {
+            return Err(ShardError::Mismatch(format!(
+                "{} is shard {} of {} of a {}-run {} study, but {} is of {} shards of a {}-run {} study",
+                shown(path),
+                part.shard,
+                part.shards,
+                part.size,
+                part.study,
+                shown(first_path),
+                first.shards,
+                first.size,
+                first.study
+            )));
+        }
+    }
+    let mut by_index: BTreeMap<usize, (PathBuf, Part)> = BTreeMap::new();
+    for (path, part) in parts {
+        let shard = Shard {
+            index: part.shard,
+            count: part.shards,
+        };
+        if part.shard == 0
+            || part.shard > part.shards
+            || shard.range(part.size) != (part.first..part.end)
+        {
+            return Err(ShardError::Mismatch(format!(
+                "{}: shard {} of {} should hold runs {:?}, it says {}..{}",
+                shown(&path),
+                part.shard,
+                part.shards,
+                if part.shard >= 1 && part.shard <= part.shards {
+                    Some(shard.range(part.size))
+                } else {
+                    None
+                },
+                part.first,
+                part.end
+            )));
+        }
+        if let Some((other, _)) = by_index.get(&part.shard) {
+            return Err(ShardError::Mismatch(format!(
+                "shard {} of {} is given twice: {} and {}",
+                part.shard,
+                part.shards,
+                shown(other),
+                shown(&path)
+            )));
+        }
+        by_index.insert(part.shard, (path, part));
+    }
+    let (_, any) = by_index.values().next().expect("at least one part");
+    let (count, size) = (any.shards, any.size);
+    let missing: Vec<String> = (1..=count)
+        .filter(|k| !by_index.contains_key(k))
+        .map(|k| {
+            let r = Shard { index: k, count }.range(size);
+            format!("{k} (runs {}..{})", r.start, r.end)
+        })
+        .collect();
+    if !missing.is_empty() {
+        return Err(ShardError::Mismatch(format!(
+            "{} of {count} shards missing: {}",
+            missing.len(),
+            missing.join(", ")
+        )));
+    }
+    let options = LoadOptions {
+        allow_large: any.allow_large,
+    };
+    let loaded = scenario::load_str_with(&any.scenario_source, &any.scenario_file, options)?;
+    if scenario_hash(&loaded) != any.scenario_hash {
+        return Err(ShardError::Mismatch(format!(
+            "the parts' scenario resolves differently with this vbi {} (hash {} against {}); merge with the vbi that ran them ({})",
+            env!("CARGO_PKG_VERSION"),
+            scenario_hash(&loaded),
+            any.scenario_hash,
+            any.vbi_version
+        )));
+    }
+    let parts: Vec<Part> = by_index.into_values().map(|(_, p)| p).collect();
+    let wall_time: f64 = parts.iter().map(|p| p.wall_time).sum();
+    let study = loaded
+        .scenario
+        .study
+        .clone()
+        .ok_or_else(|| ShardError::NoStudy {
+            file: any_file(&parts),
+        })?;
+    let wrong = || ShardError::Mismatch("a part's results do not match its study type".into());
+    let results = match &study {
+        Study::SeparationMap {
+            velocity_ratio,
+            mass_ratio,
+        } => {
+            let mut points = Vec::new();
+            for p in parts {
+                let count = p.end - p.first;
+                let PartData::SeparationMap { points: more } = p.data else {
+                    return Err(wrong());
+                };
+                if more.len() != count {
+                    return Err(short(p.shard, more.len(), count));
+                }
+                points.extend(more);
+            }
+            Results::SeparationMap(separation_map::assemble(
+                velocity_ratio,
+                mass_ratio,
+                points,
+                wall_time,
+            ))
+        }
+        Study::SpeedSweep(sweep) => {
+            // The shape every point must have: its DAF and force columns,
+            // a surface of the sweep.
+            let layout = speed_sweep::assemble(&loaded.scenario, sweep, Vec::new(), 0.0);
+            let fits = |q: &SweepPoint| {
+                q.dafs.len() == layout.daf_sources.len()
+                    && q.max_forces.len() == layout.force_records.len()
+                    && q.roughness < layout.roughness.len()
+            };
+            let mut points = Vec::new();
+            for p in parts {
+                let count = p.end - p.first;
+                let PartData::SpeedSweep { points: more } = p.data else {
+                    return Err(wrong());
+                };
+                if more.len() != count || !more.iter().all(fits) {
+                    return Err(short(p.shard, more.len(), count));
+                }
+                points.extend(more);
+            }
+            Results::SpeedSweep(speed_sweep::assemble(
+                &loaded.scenario,
+                sweep,
+                points,
+                wall_time,
+            ))
+        }
+        Study::MonteCarlo(mc) => {
+            let mut slices = Vec::with_capacity(parts.len());
+            for p in parts {
+                let PartData::MonteCarlo(slice) = p.data else {
+                    return Err(wrong());
+                };
+                slice.check(mc, p.first..p.end).map_err(|e| {
+                    ShardError::Mismatch(format!("shard {} of {count}: {e}", p.shard))
+                })?;
+                slices.push(slice);
+            }
+            Results::MonteCarlo(
+                monte_carlo::assemble(&loaded.scenario, mc, slices, wall_time)
+                    .map_err(|e| ShardError::Mismatch(e.to_string()))?,
+            )
+        }
+    };
+    Ok(Merged { loaded, results })
+}
+
+fn short(shard: usize, got: usize, want: usize) -> ShardError {
+    ShardError::Mismatch(format!(
+        "shard {shard} holds {got} points of another shape or count than the {want} of its slice"
+    ))
+}
+
+fn any_file(parts: &[Part]) -> String {
+    parts
+        .first()
+        .map_or_else(String::new, |p| p.scenario_file.clone())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slices_tile_the_study() {
+        for size in [0, 1, 5, 7, 100, 1001] {
+            for count in 1..=9 {
+                let mut at = 0;
+                for index in 1..=count {
+                    let r = Shard { index, count }.range(size);
+                    assert_eq!(r.start, at);
+                    assert!(r.len() <= size / count + 1);
+                    at = r.end;
+                }
+                assert_eq!(at, size);
+            }
+        }
+    }
+
+    #[test]
+    fn shard_syntax() {
+        assert_eq!(Shard::parse("3/8"), Ok(Shard { index: 3, count: 8 }));
+        assert!(Shard::parse("0/8").is_err());
+        assert!(Shard::parse("9/8").is_err());
+        assert!(Shard::parse("3").is_err());
+        assert!(Shard::parse("a/2").is_err());
+    }
+
+    #[test]
+    fn fnv1a_reference_values() {
+        // Published FNV-1a 64 test vectors (Fowler/Noll/Vo reference code).
+        assert_eq!(fnv1a(b""), "cbf29ce484222325");
+        assert_eq!(fnv1a(b"a"), "af63dc4c8601ec8c");
+        assert_eq!(fnv1a(b"foobar"), "85944171f73967e8");
+    }
+}

@@ -1,0 +1,277 @@
+//! The `monte_carlo` study (the LCP separation paper, Section 5.2): the
+//! results do not depend on the thread count; sample k run alone is sample k
+//! of the study, bit for bit; the envelopes equal a two-pass mean and
+//! standard deviation of the samples; the separation probability is exact
+//! where the answer is known (0 under a tiny roughness at walking pace, 1
+//! far beyond the threshold); a scene with nothing random is refused with
+//! its location and exit code 2.
+
+mod support;
+
+use std::process::Command;
+
+use support::{Scratch, on_threads};
+use vbi::run::{Results, execute, simulate};
+use vbi::scenario::Loaded;
+use vbi::scenario::load_str;
+use vbi::scenario::resolved::Study;
+use vbi::study::monte_carlo::{self, MonteCarloResults};
+
+/// The 2-DOF oscillator with elastic contact on a 20 m beam, over a random
+/// surface of coefficient `coefficient` (m³/cycle), at `speed` (m/s), with
+/// the study line `study`.
+fn scene(coefficient: f64, speed: f64, study: &str) -> String {
+    format!(
+        "name: mc
+bridge: {{type: beam, spans: [20.0], bending_stiffness: 3.2423e9, mass_per_length: 2000.0, elements_per_span: 10, modes: {{count: 4}}, damping: {{type: modal, ratio: 0.02}}}}
+vehicles:
+  - {{type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: {speed}}}
+contact: {{type: elastic, stiffness: 4.0e8}}
+surface: {{type: random, coefficient: {coefficient:e}, sampling_length: 40.0, terms: 80, seed: 3}}
+solver: {{method: lcp, time_step: 1.0e-3, free_vibration: 0.05}}
+record:
+  - {{name: midspan, quantity: bridge_displacement, x: 10.0}}
+  - {{name: force, quantity: contact_force, wheel: 1}}
+study: {study}
+"
+    )
+}
+
+fn load(text: &str) -> Loaded {
+    load_str(text, "mc.yaml").unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn study(loaded: Loaded, threads: Option<usize>) -> MonteCarloResults {
+    on_threads(threads, || match execute(loaded, &|_, _| {}) {
+        Ok(Results::MonteCarlo(mc)) => mc,
+        Ok(_) => panic!("expected a Monte Carlo study"),
+        Err(e) => panic!("{e}"),
+    })
+}
+
+const STUDY: &str = "{type: monte_carlo, samples: 9, seed: 11, show: 9}";
+
+#[test]
+fn one_and_two_threads_give_the_same_bytes() {
+    let text = scene(256e-6, 30.0, STUDY);
+    let one = study(load(&text), Some(1));
+    let two = study(load(&text), Some(2));
+    assert_eq!(one.samples_csv(), two.samples_csv());
+    assert_eq!(one.separation_csv(), two.separation_csv());
+    assert_eq!(one.envelopes_csv(), two.envelopes_csv());
+    // The case is not trivial: some samples separate, some gaps differ.
+    let stats = one.wheel_statistics(0);
+    assert!(stats[0].expected_max_gap > 0.0, "{stats:?}");
+}
+
+#[test]
+fn a_sample_run_alone_is_that_sample_of_the_study() {
+    let text = scene(256e-6, 30.0, STUDY);
+    let loaded = load(&text);
+    let Some(Study::MonteCarlo(mc)) = loaded.scenario.study.clone() else {
+        panic!("a Monte Carlo study")
+    };
+    let results = study(loaded.clone(), None);
+    let case = monte_carlo::cases(&mc)[0];
+    for k in [0, 4, 8] {
+        let scenario = monte_carlo::sample_scenario(&loaded.scenario, &loaded.bridge, &mc, case, k);
+        let seed = match scenario.surface {
+            vbi::scenario::resolved::Surface::Random { seed, .. } => seed,
+            _ => panic!("a random surface"),
+        };
+        assert_eq!(seed, monte_carlo::sample_seed(11, k));
+        let alone = simulate(
+            Loaded {
+                scenario,
+                bridge: loaded.bridge.clone(),
+            },
+            &mut |_, _| {},
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let in_study = &results.sample_results[k];
+        assert_eq!(in_study.sample, k + 1);
+        assert_eq!(in_study.seed, seed);
+        let histories = in_study
+            .histories
+            .as_ref()
+            .expect("shown samples keep histories");
+        for (column, values) in alone.history.columns.iter().zip(histories) {
+            let a: Vec<u64> = column.values.iter().map(|v| v.to_bits()).collect();
+            let b: Vec<u64> = values.iter().map(|v| v.to_bits()).collect();
+            assert_eq!(a, b, "sample {} column {}", k + 1, column.name);
+        }
+        let sep = &alone.history.separation[0];
+        assert_eq!(in_study.wheels[0].separated, sep.separated);
+        assert_eq!(in_study.wheels[0].max_gap.to_bits(), sep.max_gap.to_bits());
+    }
+}
+
+#[test]
+fn envelopes_equal_a_two_pass_mean_and_deviation_of_the_samples() {
+    // Independent reference: the textbook two-pass mean and (n − 1)
+    // standard deviation of the 9 kept histories, against the tree of
+    // pairwise (Chan) updates; agreement to round-off (1e-12 of the
+    // column's peak).
+    let results = study(load(&scene(256e-6, 30.0, STUDY)), None);
+    let m = &results.envelopes[0];
+    let std = m.std_dev();
+    let histories: Vec<&Vec<Vec<f64>>> = results
+        .sample_results
+        .iter()
+        .map(|r| r.histories.as_ref().unwrap())
+        .collect();
+    let n = histories.len() as f64;
+    assert_eq!(m.count, 9);
+    for r in 0..m.names.len() {
+        let peak = m.mean[r].iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        for i in 0..m.time.len() {
+            let mean = histories.iter().map(|h| h[r][i]).sum::<f64>() / n;
+            let var = histories
+                .iter()
+                .map(|h| (h[r][i] - mean).powi(2))
+                .sum::<f64>()
+                / (n - 1.0);
+            assert!((m.mean[r][i] - mean).abs() <= 1e-12 * peak);
+            assert!((std[r][i] - var.sqrt()).abs() <= 1e-9 * peak.max(1e-30));
+        }
+    }
+}
+
+#[test]
+fn separation_probability_is_exact_where_the_answer_is_known() {
+    // A roughness of A_r = 1e-12 m³/cycle (amplitudes of micrometres) at
+    // 2 m/s: the static wheel load (5000 kg × g = 49 kN) is never lifted, so
+    // no sample separates: probability exactly 0, Wilson upper end
+    // z²/(n + z²).
+    let calm = study(
+        load(&scene(
+            1e-12,
+            2.0,
+            "{type: monte_carlo, samples: 12, seed: 5}",
+        )),
+        None,
+    );
+    let w = &calm.wheel_statistics(0)[0];
+    assert_eq!(w.separated, 0);
+    assert_eq!(w.probability, 0.0);
+    assert_eq!(w.expected_max_gap, 0.0);
+    let z2 = monte_carlo::report::Z95.powi(2);
+    assert!((w.probability_high - z2 / (12.0 + z2)).abs() < 1e-15);
+    // A very poor road (A_r = 1024e-6 m³/cycle) at 40 m/s with a stiff
+    // contact: every sample lifts the wheel.
+    let rough = study(
+        load(&scene(
+            1024e-6,
+            40.0,
+            "{type: monte_carlo, samples: 12, seed: 5}",
+        )),
+        None,
+    );
+    let w = &rough.wheel_statistics(0)[0];
+    assert_eq!(w.separated, 12);
+    assert_eq!(w.probability, 1.0);
+    assert!(w.expected_max_gap > 0.0);
+}
+
+#[test]
+fn speeds_and_classes_make_cases_in_order() {
+    let text = scene(
+        16e-6,
+        20.0,
+        "{type: monte_carlo, samples: 3, speeds: {from: 10, to: 30, count: 3}, roughness: [good, poor]}",
+    );
+    let results = study(load(&text), None);
+    assert_eq!(results.cases.len(), 6);
+    assert_eq!(
+        results.labels,
+        ["good", "good", "good", "poor", "poor", "poor"]
+    );
+    let speeds: Vec<f64> = (0..6).map(|c| results.speed(c).unwrap()).collect();
+    assert_eq!(speeds, [10.0, 20.0, 30.0, 10.0, 20.0, 30.0]);
+    // The same k-th seed on every case (common random numbers).
+    for c in 0..6 {
+        for k in 0..3 {
+            assert_eq!(
+                results.sample_results[c * 3 + k].seed,
+                monte_carlo::sample_seed(1, k)
+            );
+        }
+    }
+    // A rougher class separates at least as much at each speed here.
+    for s in 0..3 {
+        let good = results.wheel_statistics(s)[0].expected_max_gap;
+        let poor = results.wheel_statistics(3 + s)[0].expected_max_gap;
+        assert!(poor >= good, "speed {s}: {poor} < {good}");
+    }
+}
+
+fn vbi(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .output()
+        .expect("vbi runs")
+}
+
+#[test]
+fn a_scene_without_a_random_surface_is_refused_with_its_location() {
+    let scratch = Scratch::new("monte_carlo", "refused");
+    let smooth = scene(16e-6, 20.0, "{type: monte_carlo, samples: 3}").replace(
+        "surface: {type: random, coefficient: 1.6e-5, sampling_length: 40.0, terms: 80, seed: 3}",
+        "surface: {type: smooth}",
+    );
+    assert!(smooth.contains("type: smooth"));
+    let path = scratch.path("smooth.yaml");
+    std::fs::write(&path, &smooth).unwrap();
+    let out = vbi(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        scratch.path("out").to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("smooth.yaml:11:"), "{stderr}");
+    assert!(stderr.contains("not random"), "{stderr}");
+    assert!(!scratch.path("out").exists());
+    // `smooth` in a roughness list is refused at its entry.
+    let listed = scene(
+        16e-6,
+        20.0,
+        "{type: monte_carlo, samples: 3, roughness: [good, smooth]}",
+    );
+    let err = load_str(&listed, "listed.yaml").unwrap_err().to_string();
+    assert!(
+        err.contains("listed.yaml:11:") && err.contains("`smooth` is not random"),
+        "{err}"
+    );
+}
+
+#[test]
+fn sample_flag_runs_one_sample_as_a_scene() {
+    let scratch = Scratch::new("monte_carlo", "sample-flag");
+    let path = scratch.path("mc.yaml");
+    std::fs::write(&path, scene(256e-6, 30.0, STUDY)).unwrap();
+    let out_dir = scratch.path("s5");
+    let out = vbi(&[
+        "run",
+        path.to_str().unwrap(),
+        "--sample",
+        "5",
+        "-q",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let resolved = std::fs::read_to_string(out_dir.join("resolved.yaml")).unwrap();
+    let seed = monte_carlo::sample_seed(11, 4);
+    assert!(resolved.contains(&format!("seed: {seed}")), "{resolved}");
+    assert!(!resolved.contains("monte_carlo"));
+    let out = vbi(&["run", path.to_str().unwrap(), "--sample", "10", "-q"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("9 samples"));
+}
