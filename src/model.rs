@@ -18,6 +18,9 @@ pub enum BuildError {
     /// A vehicle could not be built.
     #[error(transparent)]
     Vehicle(#[from] VehicleError),
+    /// The surface profile could not be built.
+    #[error(transparent)]
+    Surface(#[from] crate::surface::SurfaceError),
 }
 
 /// Identifies one wheel: vehicle index and wheel index within it (from 0).
@@ -156,7 +159,7 @@ impl Model {
         Ok(Self {
             bridge,
             vehicles,
-            profile: Profile::build(&scenario.surface, reach),
+            profile: Profile::build(&scenario.surface, reach)?,
             contact,
             wheels,
             wheel_y,

@@ -160,7 +160,7 @@ fn mean_sample_variance_is_the_band_integral() {
         let mut lines = 0.0;
         for seed in 1..=samples {
             let series = SpectralSeries::new(&spectrum, short, long, terms, seed, 0);
-            let nodes = series.sample(0.0, 0.5, 4000);
+            let nodes = series.sample(0.0, 0.5, 4000).unwrap();
             mean += nodes.iter().map(|n| n.0 * n.0).sum::<f64>() / nodes.len() as f64;
             lines += series.variance();
         }
@@ -198,6 +198,7 @@ fn welch_estimate_follows_the_fra_density() {
         .map(|seed| {
             SpectralSeries::new(&spectrum, 1.0, 80.0, 190, seed, 0)
                 .sample(0.0, h, n)
+                .unwrap()
                 .into_iter()
                 .map(|t| t.0)
                 .collect()
@@ -251,7 +252,7 @@ fn fra(class: u8, seed: u64, rails: Rails) -> Surface {
 #[test]
 fn sampled_grid_interpolates_the_series() {
     let surface = fra(3, 42, Rails::Identical);
-    let profile = Profile::build(&surface, 60.0);
+    let profile = Profile::build(&surface, 60.0).unwrap();
     let series = SpectralSeries::new(&Spectrum::Fra { class: 3 }, 1.0, 80.0, 190, 42, 0);
     let r0 = series.at(0.0).0;
     let (mut e, mut rms) = ([0.0f64; 3], [0.0f64; 3]);
@@ -284,8 +285,8 @@ fn sampled_grid_interpolates_the_series() {
 /// rail of independent rails, another one; identical rails are one profile.
 #[test]
 fn seeds_and_rails() {
-    let a = Profile::build(&fra(5, 9, Rails::Independent), 50.0);
-    let b = Profile::build(&fra(5, 9, Rails::Independent), 50.0);
+    let a = Profile::build(&fra(5, 9, Rails::Independent), 50.0).unwrap();
+    let b = Profile::build(&fra(5, 9, Rails::Independent), 50.0).unwrap();
     assert_eq!(a, b);
     for x in [0.3, 7.7, 31.2] {
         assert_eq!(
@@ -297,9 +298,9 @@ fn seeds_and_rails() {
             a.elevation_on(Rail::Right, x)
         );
     }
-    let c = Profile::build(&fra(5, 10, Rails::Independent), 50.0);
+    let c = Profile::build(&fra(5, 10, Rails::Independent), 50.0).unwrap();
     assert_ne!(a.elevation(20.0), c.elevation(20.0));
-    let same = Profile::build(&fra(5, 9, Rails::Identical), 50.0);
+    let same = Profile::build(&fra(5, 9, Rails::Identical), 50.0).unwrap();
     assert_eq!(
         same.elevation_on(Rail::Left, 12.0),
         same.elevation_on(Rail::Right, 12.0)
@@ -349,7 +350,8 @@ fn shapes_by_hand() {
             height: 0.02,
         },
         20.0,
-    );
+    )
+    .unwrap();
     assert_eq!(ramp.elevation_slope_curvature(1.0), (0.0, 0.0, 0.0));
     assert_eq!(ramp.elevation_slope_curvature(3.0), (0.005, 0.005, 0.0));
     assert_eq!(ramp.elevation_slope_curvature(9.0), (0.02, 0.0, 0.0));
@@ -359,7 +361,8 @@ fn shapes_by_hand() {
             height: -0.003,
         },
         20.0,
-    );
+    )
+    .unwrap();
     assert_eq!(step.elevation(4.999), 0.0);
     assert_eq!(step.elevation(5.0), -0.003);
     // Bump 10 mm over 2 m from x = 3: peak at 4 m; at 3.5 m r = h/2, slope
@@ -369,7 +372,7 @@ fn shapes_by_hand() {
         length: 2.0,
         height: 0.01,
     };
-    let p = Profile::build(&bump, 20.0);
+    let p = Profile::build(&bump, 20.0).unwrap();
     assert!((p.elevation(4.0) - 0.01).abs() < 1e-15);
     let (r, s, c) = p.elevation_slope_curvature(3.5);
     assert!((r - 0.005).abs() < 1e-15 && (s - 0.005 * PI).abs() < 1e-15 && c.abs() < 1e-15);
@@ -382,7 +385,8 @@ fn shapes_by_hand() {
             points: vec![[0.0, 0.0], [2.0, 0.004], [5.0, -0.002]],
         },
         20.0,
-    );
+    )
+    .unwrap();
     assert_eq!(pl.elevation_slope_curvature(1.0), (0.002, 0.002, 0.0));
     assert!((pl.elevation(3.5) - 0.001).abs() < 1e-15);
     assert_eq!(pl.elevation(-1.0), 0.0);
@@ -474,7 +478,7 @@ fn measured_profile_reproduces_its_points() {
         &[("track.csv", &csv)],
     );
     let loaded = loaded.unwrap_or_else(|e| panic!("{e}"));
-    let profile = Profile::build(&loaded.scenario.surface, 30.0);
+    let profile = Profile::build(&loaded.scenario.surface, 30.0).unwrap();
     for (x, l, r) in &points {
         assert!((profile.elevation_on(Rail::Left, *x) - l).abs() < 1e-15);
         assert!((profile.elevation_on(Rail::Right, *x) - r).abs() < 1e-15);

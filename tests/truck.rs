@@ -141,7 +141,7 @@ fn random_profile_is_the_papers_series() {
         terms: 312,
         seed: 7,
     };
-    let profile = Profile::build(&surface, 100.0);
+    let profile = Profile::build(&surface, 100.0).unwrap();
     let Profile::Random {
         fundamental,
         ref terms,
@@ -190,7 +190,7 @@ fn random_profile_is_the_papers_series() {
             "curvature at {x}"
         );
     }
-    assert_eq!(Profile::build(&surface, 100.0), profile);
+    assert_eq!(Profile::build(&surface, 100.0).unwrap(), profile);
     let other = Profile::build(
         &Surface::Random {
             class: None,
@@ -200,7 +200,8 @@ fn random_profile_is_the_papers_series() {
             seed: 8,
         },
         100.0,
-    );
+    )
+    .unwrap();
     assert!((other.elevation(30.0) - profile.elevation(30.0)).abs() > 1e-6);
 }
 
@@ -219,7 +220,8 @@ fn random_profile_variance_is_the_spectrum_integral() {
             seed: 11,
         },
         100.0,
-    );
+    )
+    .unwrap();
     let n = 20_000;
     let samples: Vec<f64> = (0..n)
         .map(|i| profile.elevation(length * i as f64 / n as f64))

@@ -24,31 +24,35 @@ pub struct QuinticGrid {
 }
 
 impl QuinticGrid {
-    /// From node values (r, r′, r″) at x = start + j·spacing (at least one).
-    pub fn new(start: f64, spacing: f64, nodes: &[Triple]) -> Self {
+    /// From node values (r, r′, r″) at x = start + j·spacing (at least
+    /// one). Fails only if the memory for the coefficients cannot be had.
+    pub fn new(
+        start: f64,
+        spacing: f64,
+        nodes: &[Triple],
+    ) -> Result<Self, std::collections::TryReserveError> {
         let h = spacing;
-        let coefficients = nodes
-            .windows(2)
-            .map(|w| {
-                let (p0, m0, c0) = (w[0].0, w[0].1 * h, w[0].2 * h * h);
-                let (p1, m1, c1) = (w[1].0, w[1].1 * h, w[1].2 * h * h);
-                let d = p1 - p0;
-                [
-                    p0,
-                    m0,
-                    0.5 * c0,
-                    10.0 * d - 6.0 * m0 - 4.0 * m1 - 0.5 * (3.0 * c0 - c1),
-                    -15.0 * d + 8.0 * m0 + 7.0 * m1 + 0.5 * (3.0 * c0 - 2.0 * c1),
-                    6.0 * d - 3.0 * (m0 + m1) - 0.5 * (c0 - c1),
-                ]
-            })
-            .collect();
-        Self {
+        let mut coefficients = Vec::new();
+        coefficients.try_reserve_exact(nodes.len().saturating_sub(1))?;
+        coefficients.extend(nodes.windows(2).map(|w| {
+            let (p0, m0, c0) = (w[0].0, w[0].1 * h, w[0].2 * h * h);
+            let (p1, m1, c1) = (w[1].0, w[1].1 * h, w[1].2 * h * h);
+            let d = p1 - p0;
+            [
+                p0,
+                m0,
+                0.5 * c0,
+                10.0 * d - 6.0 * m0 - 4.0 * m1 - 0.5 * (3.0 * c0 - c1),
+                -15.0 * d + 8.0 * m0 + 7.0 * m1 + 0.5 * (3.0 * c0 - 2.0 * c1),
+                6.0 * d - 3.0 * (m0 + m1) - 0.5 * (c0 - c1),
+            ]
+        }));
+        Ok(Self {
             start,
             spacing,
             coefficients,
             last: nodes.last().copied().unwrap_or((0.0, 0.0, 0.0)),
-        }
+        })
     }
 
     /// x of the last node, m.
@@ -194,7 +198,7 @@ mod tests {
                 (f(x).0, d(x), dd(x))
             })
             .collect();
-        let g = QuinticGrid::new(-1.0, 0.7, &nodes);
+        let g = QuinticGrid::new(-1.0, 0.7, &nodes).unwrap();
         for k in 0..50 {
             let x = -1.0 + 2.8 * k as f64 / 50.0;
             let (r, s, c) = g.at(x);

@@ -37,6 +37,19 @@ use crate::scenario::resolved::{Rails, Sampling, Surface};
 /// ([`QuinticGrid`]).
 pub const NODES_PER_WAVELENGTH: f64 = 10.0;
 
+/// Why a profile could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SurfaceError {
+    /// The sampled grid does not fit in memory.
+    #[error(
+        "the sampled surface profile needs {nodes} grid nodes, more than this machine's memory holds"
+    )]
+    OutOfMemory {
+        /// Nodes asked for.
+        nodes: usize,
+    },
+}
+
 /// The rail (wheel track) a wheel runs on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rail {
@@ -118,8 +131,8 @@ impl Profile {
     /// Builds the profile of a resolved surface; a random spectrum is
     /// sampled from the entrance to `reach` (m), the farthest any wheel
     /// goes during the run (past it r is held).
-    pub fn build(surface: &Surface, reach: f64) -> Self {
-        match *surface {
+    pub fn build(surface: &Surface, reach: f64) -> Result<Self, SurfaceError> {
+        Ok(match *surface {
             Surface::Smooth => Profile::Smooth,
             Surface::Harmonic {
                 amplitude,
@@ -185,20 +198,20 @@ impl Profile {
                 points: points.iter().map(|p| (p[0], p[1])).collect(),
             }),
             Surface::Fra { class, sampling } => {
-                Self::sampled(Spectrum::Fra { class }, sampling, reach)
+                Self::sampled(Spectrum::Fra { class }, sampling, reach)?
             }
             Surface::German {
                 interference,
                 sampling,
-            } => Self::sampled(Spectrum::German { interference }, sampling, reach),
+            } => Self::sampled(Spectrum::German { interference }, sampling, reach)?,
             Surface::Iso8608 { class, sampling } => {
-                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach)
+                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach)?
             }
-        }
+        })
     }
 
     /// A random sample of `spectrum` on a grid from 0 to `reach` (m).
-    fn sampled(spectrum: Spectrum, sampling: Sampling, reach: f64) -> Self {
+    fn sampled(spectrum: Spectrum, sampling: Sampling, reach: f64) -> Result<Self, SurfaceError> {
         let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
         let count = grid_nodes(reach, sampling.shortest_wavelength) as usize;
         let grid = |stream| {
@@ -210,17 +223,21 @@ impl Profile {
                 sampling.seed,
                 stream,
             );
-            let mut nodes = series.sample(0.0, spacing, count);
+            let oom = |_| SurfaceError::OutOfMemory { nodes: count };
+            let mut nodes = series.sample(0.0, spacing, count).map_err(oom)?;
             let r0 = nodes[0].0;
             for n in &mut nodes {
                 n.0 -= r0;
             }
-            QuinticGrid::new(0.0, spacing, &nodes)
+            QuinticGrid::new(0.0, spacing, &nodes).map_err(oom)
         };
-        Profile::Sampled {
-            left: grid(0),
-            right: (sampling.rails == Rails::Independent).then(|| grid(1)),
-        }
+        Ok(Profile::Sampled {
+            left: grid(0)?,
+            right: match sampling.rails {
+                Rails::Independent => Some(grid(1)?),
+                Rails::Identical => None,
+            },
+        })
     }
 
     /// Elevation, slope and curvature of the random series at x ≥ 0: with
@@ -375,7 +392,8 @@ mod tests {
                 phase: 0.5,
             },
             10.0,
-        );
+        )
+        .unwrap();
         let p = |x| p.elevation(x);
         assert_eq!(p(-1.0), 0.0);
         assert!((p(0.0) - 0.003 * 0.5f64.sin()).abs() < 1e-15);

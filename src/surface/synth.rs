@@ -80,9 +80,17 @@ impl SpectralSeries {
     /// (r, r′, r″) at x_j = start + j·spacing, j < count: each term's angle
     /// advanced by one complex rotation per node (re-anchored every 512
     /// nodes so round-off stays near 1e-13), O(N · count) multiply-adds.
-    pub fn sample(&self, start: f64, spacing: f64, count: usize) -> Vec<Triple> {
+    /// Fails only if the memory for `count` nodes cannot be had.
+    pub fn sample(
+        &self,
+        start: f64,
+        spacing: f64,
+        count: usize,
+    ) -> Result<Vec<Triple>, std::collections::TryReserveError> {
         const ANCHOR: usize = 512;
-        let mut nodes = vec![(0.0, 0.0, 0.0); count];
+        let mut nodes = Vec::new();
+        nodes.try_reserve_exact(count)?;
+        nodes.resize(count, (0.0, 0.0, 0.0));
         for &(w, a, p) in &self.terms {
             let (step_sin, step_cos) = (w * spacing).sin_cos();
             let (aw, aww) = (a * w, a * w * w);
@@ -99,7 +107,7 @@ impl SpectralSeries {
                 }
             }
         }
-        nodes
+        Ok(nodes)
     }
 }
 
@@ -116,7 +124,7 @@ mod tests {
     #[test]
     fn grid_sampling_equals_the_direct_sum() {
         let s = SpectralSeries::new(&Spectrum::Fra { class: 4 }, 1.0, 80.0, 190, 7, 0);
-        let nodes = s.sample(0.0, 0.1, 1500);
+        let nodes = s.sample(0.0, 0.1, 1500).unwrap();
         for j in [0, 1, 511, 512, 513, 1499] {
             let (r, sl, c) = s.at(0.1 * j as f64);
             let (gr, gs, gc) = nodes[j];
