@@ -506,10 +506,7 @@ fn values_are_completed_from_enums_with_their_descriptions() {
             "surface:\n  type: german\n  interference: ",
             &["low", "high"],
         ),
-        (
-            "surface:\n  type: iso8608\n  class: ",
-            &["A", "C", "H"],
-        ),
+        ("surface:\n  type: iso8608\n  class: ", &["A", "C", "H"]),
         (
             "surface:\n  type: fra\n  rails: ",
             &["identical", "independent"],

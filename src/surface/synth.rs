@@ -80,6 +80,8 @@ impl SpectralSeries {
     /// (r, r′, r″) at x_j = start + j·spacing, j < count: each term's angle
     /// advanced by one complex rotation per node (re-anchored every 512
     /// nodes so round-off stays near 1e-13), O(N · count) multiply-adds.
+    /// Terms go eight at a time, so eight independent rotations overlap in
+    /// the pipeline (one alone is a serial chain of multiply-adds).
     /// Fails only if the memory for `count` nodes cannot be had.
     pub fn sample(
         &self,
@@ -88,22 +90,34 @@ impl SpectralSeries {
         count: usize,
     ) -> Result<Vec<Triple>, std::collections::TryReserveError> {
         const ANCHOR: usize = 512;
+        const LANES: usize = 8;
         let mut nodes = Vec::new();
         nodes.try_reserve_exact(count)?;
         nodes.resize(count, (0.0, 0.0, 0.0));
-        for &(w, a, p) in &self.terms {
-            let (step_sin, step_cos) = (w * spacing).sin_cos();
-            let (aw, aww) = (a * w, a * w * w);
+        for group in self.terms.chunks(LANES) {
+            // Missing lanes of the last group carry a zero amplitude.
+            let mut lane = [(0.0, 0.0, 0.0); LANES];
+            lane[..group.len()].copy_from_slice(group);
+            let step: [(f64, f64); LANES] = lane.map(|(w, _, _)| (w * spacing).sin_cos());
+            let a = lane.map(|t| t.1);
+            let aw = lane.map(|t| t.1 * t.0);
+            let aww = lane.map(|t| t.1 * t.0 * t.0);
             for (block, chunk) in nodes.chunks_mut(ANCHOR).enumerate() {
                 let x = start + (block * ANCHOR) as f64 * spacing;
-                let (mut sin, mut cos) = (w * x + p).sin_cos();
+                let mut rot: [(f64, f64); LANES] = lane.map(|(w, _, p)| (w * x + p).sin_cos());
                 for node in chunk {
-                    node.0 += a * cos;
-                    node.1 -= aw * sin;
-                    node.2 -= aww * cos;
-                    let next = cos * step_cos - sin * step_sin;
-                    sin = sin * step_cos + cos * step_sin;
-                    cos = next;
+                    let (mut value, mut slope, mut curvature) = (0.0, 0.0, 0.0);
+                    for k in 0..LANES {
+                        let (sin, cos) = rot[k];
+                        value += a[k] * cos;
+                        slope += aw[k] * sin;
+                        curvature += aww[k] * cos;
+                        let (ss, sc) = step[k];
+                        rot[k] = (sin * sc + cos * ss, cos * sc - sin * ss);
+                    }
+                    node.0 += value;
+                    node.1 -= slope;
+                    node.2 -= curvature;
                 }
             }
         }
