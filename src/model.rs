@@ -76,6 +76,10 @@ pub struct Model {
     pub vehicles: Vec<VehicleModel>,
     /// The surface under the wheels.
     pub profile: Profile,
+    /// How far from the entrance [`Model::profile`] was sampled, m: the
+    /// farthest front axle at the last step. A Monte Carlo sample swaps
+    /// the profile with `Profile::build(&surface.reseeded(seed), reach)`.
+    pub profile_reach: f64,
     /// The contact law.
     pub contact: ContactLaw,
     /// Every wheel of every vehicle, flattened in vehicle order.
@@ -160,6 +164,7 @@ impl Model {
             bridge,
             vehicles,
             profile: Profile::build(&scenario.surface, reach)?,
+            profile_reach: reach,
             contact,
             wheels,
             wheel_y,

@@ -629,6 +629,14 @@ solver: {{method: lcp, time_step: 1.0e-3}}
         model.profile.elevation_on(Rail::Left, 10.0),
         model.profile.elevation_on(Rail::Right, 10.0)
     );
+    // A Monte Carlo sample swaps the profile: the same as building the
+    // model of the reseeded scene.
+    let mut reseeded = loaded.scenario.clone();
+    reseeded.surface = reseeded.surface.reseeded(9);
+    let swapped = Profile::build(&reseeded.surface, model.profile_reach).unwrap();
+    let rebuilt = vbi::model::Model::build(&reseeded, loaded.bridge.clone()).unwrap();
+    assert_eq!(swapped, rebuilt.profile);
+    assert_ne!(swapped, model.profile);
     vbi::run::simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
     let loaded = vbi::scenario::load_str(&scene("identical"), "rails.yaml").unwrap();
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap();
