@@ -5,7 +5,8 @@
 //! log Ω (bin i: [e_{i−1}, e_i], e_i = Ω_lo (Ω_hi/Ω_lo)^(i/N)). In each bin the
 //! frequency Ωᵢ is uniform in the bin, the phase θᵢ uniform on [0, 2π), and
 //! aᵢ = √(2 G(Ωᵢ) ΔΩᵢ) with G the one-sided PSD and ΔΩᵢ the bin width
-//! (Shinozuka & Deodatis 1991, Eq. 45, with a random frequency inside each
+//! (the spectral representation of Shinozuka & Deodatis 1991, Appl. Mech.
+//! Rev. 44(4), with a random frequency inside each
 //! bin). Then E[aᵢ²/2] = E[G(Ωᵢ)] ΔΩᵢ = ∫_bin G dΩ exactly: the ensemble
 //! variance is ∫ G over the band and the ensemble PSD is G at every Ω in the
 //! band (no discretisation bias even for the steep Ω⁻⁴ low end of the rail
