@@ -240,6 +240,7 @@ fn fra(class: u8, seed: u64, rails: Rails) -> Surface {
             terms: 190,
             seed,
             rails,
+            run_in: 0.0,
         },
     }
 }
@@ -279,6 +280,43 @@ fn sampled_grid_interpolates_the_series() {
     assert!(e[0] < 1e-5 * rms[0] && e[1] < 1e-4 * rms[1] && e[2] < 1e-2 * rms[2]);
     assert_eq!(profile.elevation_slope_curvature(-2.0), (0.0, 0.0, 0.0));
     assert_eq!(profile.elevation(0.0), 0.0);
+}
+
+/// A run-in of 30 m: 0 with zero slope and curvature before x = −30 m, the
+/// unshifted series from the entrance on (within the grid's error), and
+/// r, r′, r″ continuous through the fade (no jump larger than the change
+/// over a thousandth of the run-in).
+#[test]
+fn run_in_fades_the_profile_in_on_the_approach() {
+    let Surface::Fra {
+        class,
+        mut sampling,
+    } = fra(4, 5, Rails::Identical)
+    else {
+        unreachable!()
+    };
+    sampling.run_in = 30.0;
+    let profile = Profile::build(&Surface::Fra { class, sampling }, 40.0).unwrap();
+    let series = SpectralSeries::new(&Spectrum::Fra { class: 4 }, 1.0, 80.0, 190, 5, 0);
+    assert_eq!(profile.elevation_slope_curvature(-30.0), (0.0, 0.0, 0.0));
+    assert_eq!(profile.elevation_slope_curvature(-45.0), (0.0, 0.0, 0.0));
+    let rms = (series.variance()).sqrt();
+    for x in [0.0, 0.05, 3.3, 17.71, 39.0] {
+        assert!(
+            (profile.elevation(x) - series.at(x).0).abs() < 1e-6 * rms,
+            "{x}"
+        );
+    }
+    let mut previous = profile.elevation_slope_curvature(-30.0);
+    let step = 0.03;
+    for i in 1..=1000 {
+        let now = profile.elevation_slope_curvature(-30.0 + step * i as f64);
+        assert!((now.0 - previous.0).abs() < 0.05 * rms);
+        previous = now;
+    }
+    // Halfway, S(1/2) = 1/2.
+    let half = profile.elevation(-15.0);
+    assert!((half - 0.5 * series.at(-15.0).0).abs() < 1e-6 * rms);
 }
 
 /// The same seed gives a bit-identical profile; another seed, or the other
@@ -544,6 +582,13 @@ fn bad_surfaces_are_located() {
             &[("p.csv", "-2,0\n5,0\n4,0\n30,0\n")],
             "p.csv",
             "p.csv:3: column 1: x = 4 does not exceed the previous row's 5",
+        ),
+        (
+            "run-in-too-long",
+            "{type: fra, class: 5, run_in: 10.0}",
+            &[],
+            "10.0}",
+            "the run-in starts at x = -10 m but a vehicle's front axle starts at x = -2.0000 m",
         ),
         (
             "bump-length",

@@ -151,6 +151,7 @@ pub(super) fn resolve_surface(
             terms,
             seed,
             rails,
+            run_in,
         } => {
             if !(1..=6).contains(class) {
                 ck.error(
@@ -164,6 +165,7 @@ pub(super) fn resolve_surface(
                 *terms,
                 *seed,
                 *rails,
+                *run_in,
                 ck,
             );
             Surface::Fra {
@@ -178,6 +180,7 @@ pub(super) fn resolve_surface(
             terms,
             seed,
             rails,
+            run_in,
         } => Surface::German {
             interference: *interference,
             sampling: resolve_sampling(
@@ -186,6 +189,7 @@ pub(super) fn resolve_surface(
                 *terms,
                 *seed,
                 *rails,
+                *run_in,
                 ck,
             ),
         },
@@ -196,6 +200,7 @@ pub(super) fn resolve_surface(
             terms,
             seed,
             rails,
+            run_in,
         } => Surface::Iso8608 {
             class: *class,
             sampling: resolve_sampling(
@@ -204,6 +209,7 @@ pub(super) fn resolve_surface(
                 *terms,
                 *seed,
                 *rails,
+                *run_in,
                 ck,
             ),
         },
@@ -311,8 +317,11 @@ fn resolve_sampling(
     terms: Option<usize>,
     seed: Option<u64>,
     rails: Option<RailsRaw>,
+    run_in: Option<f64>,
     ck: &mut Checker<'_>,
 ) -> Sampling {
+    let run_in = run_in.unwrap_or(0.0);
+    ck.non_negative("surface.run_in", run_in, "run-in length");
     let shortest = shortest.unwrap_or(default_short);
     let longest = longest.unwrap_or(default_long);
     ck.positive(
@@ -355,18 +364,30 @@ fn resolve_sampling(
         terms,
         seed: seed.unwrap_or(1),
         rails: rails.unwrap_or(RailsRaw::Identical),
+        run_in,
     }
 }
 
-/// Where the wheels travel, m from the entrance: from the rearmost wheel at
-/// the start to the farthest front axle at the end of the run (the last
-/// exit plus the free vibration), as [`crate::model::Model`] will run it.
+/// Where the wheels travel, m from the entrance, as
+/// [`crate::model::Model`] will run it.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Travel {
+    /// The rearmost wheel at the start.
+    pub start: f64,
+    /// The front axle that starts nearest the entrance.
+    pub front_start: f64,
+    /// The farthest front axle at the end of the run (the last exit plus
+    /// the free vibration).
+    pub end: f64,
+}
+
+/// Where the wheels of `vehicles` travel over a bridge of `length` m.
 pub(super) fn travel(
     vehicles: &[Vehicle],
     gravity: f64,
     length: f64,
     free_vibration: f64,
-) -> (f64, f64) {
+) -> Travel {
     let models: Vec<VehicleModel> = vehicles
         .iter()
         .map(|v| VehicleModel::build(v, gravity))
@@ -384,19 +405,41 @@ pub(super) fn travel(
         .iter()
         .map(|m| m.front_position(end_time))
         .fold(0.0, f64::max);
-    (start, end)
+    let front_start = models
+        .iter()
+        .map(|m| m.front_position(0.0))
+        .fold(f64::NEG_INFINITY, f64::max);
+    Travel {
+        start,
+        front_start,
+        end,
+    }
 }
 
 /// Checks that the profile serves the wheels' travel `(start, end)` (m):
 /// a sampled grid's size fits the budget, a measured profile covers it.
 pub(super) fn check_reach(
     surface: &Surface,
-    (start, end): (f64, f64),
+    travel: Travel,
     budget: &Budget,
     ck: &mut Checker<'_>,
 ) -> bool {
+    let Travel { start, end, .. } = travel;
     if let Some((_, sampling)) = surface.spectrum() {
-        let nodes = grid_nodes(end, sampling.shortest_wavelength);
+        if sampling.run_in > 0.0 && travel.front_start > -sampling.run_in {
+            ck.error(
+                "surface.run_in",
+                format!(
+                    "the run-in starts at x = {} m but a vehicle's front axle starts at x = {:.4} m: \
+                     start every vehicle at or before the run-in (`start_position`, or a later \
+                     `entry_time`)",
+                    -sampling.run_in,
+                    travel.front_start
+                ),
+            );
+            return false;
+        }
+        let nodes = grid_nodes(end + sampling.run_in, sampling.shortest_wavelength);
         let rails = if sampling.rails == RailsRaw::Independent {
             2.0
         } else {

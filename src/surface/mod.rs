@@ -70,6 +70,21 @@ impl Rail {
     }
 }
 
+/// The profile (r, r′, r″) at ξ = (x + L)/L of a run-in of length `run_in` =
+/// L, multiplied by the quintic smoothstep S(ξ) = 10ξ³ − 15ξ⁴ + 6ξ⁵ (S = 0,
+/// S′ = S″ = 0 at ξ = 0; S = 1, S′ = S″ = 0 at ξ = 1), so the product and
+/// its first two derivatives are continuous: (S r)″ = S″r + 2S′r′ + S r″.
+fn fade_in((r, dr, ddr): Triple, xi: f64, run_in: f64) -> Triple {
+    if xi >= 1.0 {
+        return (r, dr, ddr);
+    }
+    let xi = xi.max(0.0);
+    let s = xi * xi * xi * (10.0 + xi * (-15.0 + 6.0 * xi));
+    let ds = 30.0 * xi * xi * (1.0 - xi) * (1.0 - xi) / run_in;
+    let dds = 60.0 * xi * (1.0 - xi) * (1.0 - 2.0 * xi) / (run_in * run_in);
+    (s * r, ds * r + s * dr, dds * r + 2.0 * ds * dr + s * ddr)
+}
+
 /// Nodes of the grid a sampled profile needs to reach `reach` (m from the
 /// entrance) with the given shortest wavelength (m); f64 so a hostile size
 /// cannot wrap (budgeted while resolving).
@@ -109,7 +124,9 @@ pub enum Profile {
         offset: f64,
     },
     /// A random sample on a grid from the entrance on, shifted so r(0) = 0
-    /// (as the other random profiles: the approach is smooth); 0 for x < 0.
+    /// (as the other random profiles: the approach is smooth), 0 for x < 0;
+    /// or with a run-in of L m, unshifted from the entrance on and faded in
+    /// over [−L, 0], 0 before.
     Sampled {
         /// The left rail (and every wheel if `right` is `None`).
         left: QuinticGrid,
@@ -213,7 +230,8 @@ impl Profile {
     /// A random sample of `spectrum` on a grid from 0 to `reach` (m).
     fn sampled(spectrum: Spectrum, sampling: Sampling, reach: f64) -> Result<Self, SurfaceError> {
         let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
-        let count = grid_nodes(reach, sampling.shortest_wavelength) as usize;
+        let run_in = sampling.run_in;
+        let count = grid_nodes(reach + run_in, sampling.shortest_wavelength) as usize;
         let grid = |stream| {
             let series = SpectralSeries::new(
                 &spectrum,
@@ -224,12 +242,18 @@ impl Profile {
                 stream,
             );
             let oom = |_| SurfaceError::OutOfMemory { nodes: count };
-            let mut nodes = series.sample(0.0, spacing, count).map_err(oom)?;
-            let r0 = nodes[0].0;
-            for n in &mut nodes {
-                n.0 -= r0;
+            let mut nodes = series.sample(-run_in, spacing, count).map_err(oom)?;
+            if run_in > 0.0 {
+                for (j, n) in nodes.iter_mut().enumerate() {
+                    *n = fade_in(*n, (j as f64 * spacing) / run_in, run_in);
+                }
+            } else {
+                let r0 = nodes[0].0;
+                for n in &mut nodes {
+                    n.0 -= r0;
+                }
             }
-            QuinticGrid::new(0.0, spacing, &nodes).map_err(oom)
+            QuinticGrid::new(-run_in, spacing, &nodes).map_err(oom)
         };
         Ok(Profile::Sampled {
             left: grid(0)?,
@@ -311,11 +335,7 @@ impl Profile {
     pub fn elevation_on(&self, rail: Rail, x: f64) -> f64 {
         match *self {
             Profile::Smooth => 0.0,
-            Profile::Harmonic { .. } | Profile::Random { .. } | Profile::Sampled { .. }
-                if x < 0.0 =>
-            {
-                0.0
-            }
+            Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => 0.0,
             Profile::Harmonic {
                 amplitude,
                 wavenumber,
@@ -338,11 +358,7 @@ impl Profile {
     pub fn elevation_slope_curvature_on(&self, rail: Rail, x: f64) -> Triple {
         match *self {
             Profile::Smooth => (0.0, 0.0, 0.0),
-            Profile::Harmonic { .. } | Profile::Random { .. } | Profile::Sampled { .. }
-                if x < 0.0 =>
-            {
-                (0.0, 0.0, 0.0)
-            }
+            Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => (0.0, 0.0, 0.0),
             Profile::Harmonic {
                 amplitude,
                 wavenumber,

@@ -84,6 +84,15 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
     },
     /// Random vertical track profile from the German high-speed spectrum:
     /// G(Ω) = A_v Ω_c² / ((Ω² + Ω_r²)(Ω² + Ω_c²)) (one-sided, m²/(rad/m);
@@ -114,6 +123,15 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
     },
     /// Random road profile of an ISO 8608 class: G_d(n) = G_d(n₀)(n/n₀)⁻²,
     /// n₀ = 0.1 cycle/m, G_d(n₀) = 16e-6 m³ for class A, four times more per
@@ -143,6 +161,15 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
     },
     /// A measured profile from a CSV file: rows `x, elevation` (one profile
     /// under every wheel) or `x, left, right` (per rail; a wheel with

@@ -21,6 +21,9 @@ pub struct Sampling {
     pub seed: u64,
     /// Identical or independent rails.
     pub rails: Rails,
+    /// Fade-in length on the approach, m (0: start at the entrance with
+    /// r(0) = 0).
+    pub run_in: f64,
 }
 
 /// A measured profile as read from its CSV file.
