@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
 use crate::scenario::resolved::{Contact, Iteration, Scenario, SolverMethod};
-use crate::surface::Profile;
+use crate::surface::{Profile, Rail};
 use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
 
 /// Errors of the build stage.
@@ -18,6 +18,9 @@ pub enum BuildError {
     /// A vehicle could not be built.
     #[error(transparent)]
     Vehicle(#[from] VehicleError),
+    /// The surface profile could not be built.
+    #[error(transparent)]
+    Surface(#[from] crate::surface::SurfaceError),
 }
 
 /// Identifies one wheel: vehicle index and wheel index within it (from 0).
@@ -73,6 +76,10 @@ pub struct Model {
     pub vehicles: Vec<VehicleModel>,
     /// The surface under the wheels.
     pub profile: Profile,
+    /// How far from the entrance [`Model::profile`] was sampled, m: the
+    /// farthest front axle at the last step. A Monte Carlo sample swaps
+    /// the profile with `Profile::build(&surface.reseeded(seed), reach)`.
+    pub profile_reach: f64,
     /// The contact law.
     pub contact: ContactLaw,
     /// Every wheel of every vehicle, flattened in vehicle order.
@@ -80,6 +87,8 @@ pub struct Model {
     /// Transverse position y of every flattened wheel on the deck, m
     /// (constant: vehicles keep their lane).
     pub wheel_y: Vec<f64>,
+    /// The rail (wheel track) of every flattened wheel ([`Rail::of_lateral`]).
+    pub wheel_rail: Vec<Rail>,
     /// Static wheel loads on level ground, N, per flattened wheel: the load of
     /// a moving force, or the contact force of the vehicle's static equilibrium.
     pub static_wheel_loads: Vec<f64>,
@@ -122,6 +131,7 @@ impl Model {
         let mut wheels = Vec::new();
         let mut static_wheel_loads = Vec::new();
         let mut wheel_y = Vec::new();
+        let mut wheel_rail = Vec::new();
         for (v, vehicle) in vehicles.iter().enumerate() {
             let (_, forces) = vehicle.static_equilibrium(v + 1, &|f| contact.compression(f))?;
             for (w, wheel) in vehicle.wheels.iter().enumerate() {
@@ -130,6 +140,7 @@ impl Model {
                     wheel: w,
                 });
                 wheel_y.push(vehicle.wheel_y(w));
+                wheel_rail.push(Rail::of_lateral(wheel.lateral));
                 static_wheel_loads.push(match wheel.kind {
                     WheelKind::Load(load) => load,
                     WheelKind::Dof(_) => forces[w],
@@ -146,13 +157,20 @@ impl Model {
         // A step count that reaches the end time; the last step may overshoot
         // by less than one step.
         let steps = (end_time / time_step - 1e-9).ceil().max(1.0) as usize;
+        // The farthest any wheel goes: the front axles at the last step.
+        let reach = vehicles
+            .iter()
+            .map(|v| v.front_position(steps as f64 * time_step))
+            .fold(0.0, f64::max);
         Ok(Self {
             bridge,
             vehicles,
-            profile: Profile::build(&scenario.surface),
+            profile: Profile::build(&scenario.surface, reach)?,
+            profile_reach: reach,
             contact,
             wheels,
             wheel_y,
+            wheel_rail,
             static_wheel_loads,
             time_step,
             time_step_selection: scenario.solver.time_step_selection.clone(),

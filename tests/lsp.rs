@@ -486,6 +486,32 @@ fn values_are_completed_from_enums_with_their_descriptions() {
             &["very_good", "good", "average", "poor", "very_poor"],
         ),
         (
+            "surface:\n  type: ",
+            &[
+                "smooth",
+                "harmonic",
+                "random",
+                "fra",
+                "german",
+                "iso8608",
+                "measured",
+                "ramp",
+                "step",
+                "bump",
+                "dip",
+                "piecewise_linear",
+            ],
+        ),
+        (
+            "surface:\n  type: german\n  interference: ",
+            &["low", "high"],
+        ),
+        ("surface:\n  type: iso8608\n  class: ", &["A", "C", "H"]),
+        (
+            "surface:\n  type: fra\n  rails: ",
+            &["identical", "independent"],
+        ),
+        (
             "record:\n  - quantity: ",
             &[
                 "bridge_displacement",

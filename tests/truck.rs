@@ -141,7 +141,7 @@ fn random_profile_is_the_papers_series() {
         terms: 312,
         seed: 7,
     };
-    let profile = Profile::build(&surface);
+    let profile = Profile::build(&surface, 100.0).unwrap();
     let Profile::Random {
         fundamental,
         ref terms,
@@ -190,14 +190,18 @@ fn random_profile_is_the_papers_series() {
             "curvature at {x}"
         );
     }
-    assert_eq!(Profile::build(&surface), profile);
-    let other = Profile::build(&Surface::Random {
-        class: None,
-        coefficient: 16e-6,
-        sampling_length: 156.0,
-        terms: 312,
-        seed: 8,
-    });
+    assert_eq!(Profile::build(&surface, 100.0).unwrap(), profile);
+    let other = Profile::build(
+        &Surface::Random {
+            class: None,
+            coefficient: 16e-6,
+            sampling_length: 156.0,
+            terms: 312,
+            seed: 8,
+        },
+        100.0,
+    )
+    .unwrap();
     assert!((other.elevation(30.0) - profile.elevation(30.0)).abs() > 1e-6);
 }
 
@@ -207,13 +211,17 @@ fn random_profile_is_the_papers_series() {
 #[test]
 fn random_profile_variance_is_the_spectrum_integral() {
     let (coefficient, length, terms) = (64e-6, 100.0, 200);
-    let profile = Profile::build(&Surface::Random {
-        class: None,
-        coefficient,
-        sampling_length: length,
-        terms,
-        seed: 11,
-    });
+    let profile = Profile::build(
+        &Surface::Random {
+            class: None,
+            coefficient,
+            sampling_length: length,
+            terms,
+            seed: 11,
+        },
+        100.0,
+    )
+    .unwrap();
     let n = 20_000;
     let samples: Vec<f64> = (0..n)
         .map(|i| profile.elevation(length * i as f64 / n as f64))

@@ -43,6 +43,9 @@ pub struct Limits {
     pub study_points: f64,
     /// Terms of a random road's series.
     pub road_terms: f64,
+    /// Points of a surface profile: grid nodes of a sampled random track
+    /// or road, rows of a measured profile's file.
+    pub profile_points: f64,
     /// Bytes of results written (estimate), bytes.
     pub output_bytes: f64,
 }
@@ -62,6 +65,7 @@ impl Default for Limits {
             records: 500.0,
             study_points: 10_000.0,
             road_terms: 20_000.0,
+            profile_points: 2_000_000.0,
             output_bytes: 2e9,
         }
     }
@@ -104,6 +108,7 @@ impl Limits {
             records: pick("records", raw.records, d.records),
             study_points: pick("study_points", raw.study_points, d.study_points),
             road_terms: pick("road_terms", raw.road_terms, d.road_terms),
+            profile_points: pick("profile_points", raw.profile_points, d.profile_points),
             output_bytes: pick("output_bytes", raw.output_bytes, d.output_bytes),
         }
     }
@@ -205,18 +210,24 @@ impl Budget {
                 count as f64,
             );
         }
-        if let Surface::Random { terms, .. } = surface {
+        let terms = match surface {
+            Surface::Random { terms, .. } => Some(*terms),
+            _ => surface.spectrum().map(|(_, s)| s.terms),
+        };
+        if let Some(terms) = terms {
             let path = if ck.has("surface.terms") {
                 "surface.terms"
-            } else {
+            } else if matches!(surface, Surface::Random { .. }) {
                 "surface.sampling_length"
+            } else {
+                "surface.shortest_wavelength"
             };
             fits &= self.check(
                 ck,
                 path,
                 "road_terms",
-                "terms of the random road's series",
-                *terms as f64,
+                "terms of the random profile's series",
+                terms as f64,
             );
         }
         fits
@@ -259,6 +270,7 @@ impl Budget {
             "records" => l.records,
             "study_points" => l.study_points,
             "road_terms" => l.road_terms,
+            "profile_points" => l.profile_points,
             _ => l.output_bytes,
         }
     }

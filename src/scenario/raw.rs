@@ -14,10 +14,12 @@ use serde::Deserialize;
 mod limits;
 mod speed;
 mod study;
+mod surface;
 mod truck;
 pub use self::limits::*;
 pub use self::speed::*;
 pub use self::study::*;
+pub use self::surface::*;
 pub use self::truck::*;
 
 /// One vehicle–bridge interaction scene: a bridge, the vehicles crossing it,
@@ -412,73 +414,6 @@ pub struct DimensionlessRaw {
     #[schemars(transform = crate::schema::ratio)]
     #[schemars(extend("default" = 0.0))]
     pub damping_ratio: Option<f64>,
-}
-
-/// Surface profile (roughness) under the wheels. It starts at the bridge
-/// entrance and continues past the exit; the approach is smooth.
-#[derive(Debug, Clone, Deserialize, JsonSchema)]
-#[serde(rename_all = "snake_case", deny_unknown_fields)]
-#[schemars(tag = "type")]
-pub enum SurfaceRaw {
-    /// Perfectly smooth surface.
-    Smooth,
-    /// r(x) = amplitude · sin(2π x / wavelength + phase) for x ≥ 0, positive upward.
-    Harmonic {
-        /// Amplitude, m.
-        amplitude: f64,
-        /// Wavelength, m.
-        #[schemars(transform = crate::schema::positive)]
-        wavelength: f64,
-        /// Phase at the entrance, rad. Default 0.
-        #[serde(default)]
-        #[schemars(extend("default" = 0.0))]
-        phase: Option<f64>,
-    },
-    /// Random road profile, a stationary Gaussian process with the power
-    /// spectral density S(Ω) = A_r (Ω/Ω₀)⁻², Ω₀ = 1/2π, sampled by the
-    /// trigonometric series of the plate paper's Eq. 17 with random phases.
-    /// It is shifted so that r(0) = 0 at the entrance. The same profile lies
-    /// under every wheel track. Give `class` or `coefficient`.
-    Random {
-        /// Roughness class: `very_good`, `good`, `average`, `poor` or
-        /// `very_poor` (A_r the geometric mean of the class's range).
-        #[serde(default)]
-        class: Option<RoughnessClassRaw>,
-        /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
-        #[serde(default)]
-        #[schemars(transform = crate::schema::non_negative)]
-        coefficient: Option<f64>,
-        /// Length L_c the series repeats over, m. Default: twice the bridge length.
-        #[serde(default)]
-        sampling_length: Option<f64>,
-        /// Number of terms N of the series. Default: enough for wavelengths
-        /// down to 0.5 m (N = L_c / 0.5).
-        #[serde(default)]
-        terms: Option<usize>,
-        /// Seed of the random phases (ChaCha8). Default 1. The same seed gives
-        /// the same profile on every machine.
-        #[serde(default)]
-        #[schemars(extend("default" = 1))]
-        seed: Option<u64>,
-    },
-}
-
-/// Road roughness classes (A_r ranges in m³/cycle): very good 2e-6–8e-6,
-/// good 8e-6–32e-6, average 32e-6–128e-6, poor 128e-6–512e-6, very poor
-/// 512e-6–2048e-6.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum RoughnessClassRaw {
-    /// A_r = 4e-6.
-    VeryGood,
-    /// A_r = 16e-6.
-    Good,
-    /// A_r = 64e-6.
-    Average,
-    /// A_r = 256e-6.
-    Poor,
-    /// A_r = 1024e-6.
-    VeryPoor,
 }
 
 /// Wheel–bridge contact model.

@@ -71,6 +71,12 @@ impl<'a> Checker<'a> {
         self.diagnostics.push(diagnostic);
     }
 
+    /// The scenario file's name as given (relative paths in the scene are
+    /// relative to its folder).
+    pub(super) fn file(&self) -> &str {
+        self.file
+    }
+
     pub(super) fn positive(&mut self, path: &str, value: f64, what: &str) {
         if value <= 0.0 {
             self.error(path, format!("{what} must be positive, got {value}"));
@@ -143,7 +149,8 @@ pub(super) fn resolve(
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
-    let surface = resolve_surface(raw.surface.as_ref(), bridge_length, ck);
+    let surface =
+        super::surfaces::resolve_surface(raw.surface.as_ref(), bridge_length, &budget, ck);
     let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
@@ -265,6 +272,10 @@ pub(super) fn resolve(
     }
     plausible::check_contact(ck, &contact);
     if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    let travel = super::surfaces::travel(&vehicles, gravity, bridge.length(), free_vibration);
+    if !super::surfaces::check_reach(&surface, travel, &budget, ck) {
         return None;
     }
     let study = resolve_study(
@@ -753,43 +764,5 @@ pub(super) fn lateral(
             }
             Some(y)
         }
-    }
-}
-
-fn resolve_surface(
-    raw: Option<&raw::SurfaceRaw>,
-    bridge_length: f64,
-    ck: &mut Checker<'_>,
-) -> Surface {
-    match raw {
-        None | Some(raw::SurfaceRaw::Smooth) => Surface::Smooth,
-        Some(raw::SurfaceRaw::Harmonic {
-            amplitude,
-            wavelength,
-            phase,
-        }) => {
-            ck.non_negative("surface.amplitude", *amplitude, "roughness amplitude");
-            ck.positive("surface.wavelength", *wavelength, "roughness wavelength");
-            Surface::Harmonic {
-                amplitude: *amplitude,
-                wavelength: *wavelength,
-                phase: phase.unwrap_or(0.0),
-            }
-        }
-        Some(raw::SurfaceRaw::Random {
-            class,
-            coefficient,
-            sampling_length,
-            terms,
-            seed,
-        }) => super::surfaces::resolve_random(
-            *class,
-            *coefficient,
-            *sampling_length,
-            *terms,
-            *seed,
-            bridge_length,
-            ck,
-        ),
     }
 }

@@ -7,12 +7,13 @@
 use serde::Serialize;
 
 mod study;
+mod surface;
 pub use self::study::*;
+pub use self::surface::*;
 pub use super::budget::Limits;
 
 pub use super::raw::{
-    GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, RoughnessClassRaw as RoughnessClass,
-    SolverMethod, TermsRaw as Terms,
+    GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, SolverMethod, TermsRaw as Terms,
 };
 
 /// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
@@ -458,55 +459,6 @@ pub struct Oscillator {
     /// The dimensionless groups these values were derived from, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dimensionless: Option<Dimensionless>,
-}
-
-/// Surface profile.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-#[serde(tag = "type", rename_all = "snake_case")]
-pub enum Surface {
-    /// Smooth.
-    Smooth,
-    /// r(x) = amplitude · sin(2πx/wavelength + phase), x ≥ 0.
-    Harmonic {
-        /// m
-        amplitude: f64,
-        /// m
-        wavelength: f64,
-        /// rad
-        phase: f64,
-    },
-    /// Random profile from the PSD A_r (Ω/Ω₀)⁻².
-    Random {
-        /// The class A_r was taken from.
-        #[serde(skip_serializing_if = "Option::is_none")]
-        class: Option<RoughnessClass>,
-        /// A_r, m³/cycle.
-        coefficient: f64,
-        /// L_c, m.
-        sampling_length: f64,
-        /// N.
-        terms: usize,
-        /// Seed.
-        seed: u64,
-    },
-}
-
-impl Surface {
-    /// Whether the profile is a random sample (it has a seed): a Monte Carlo
-    /// study draws its samples by reseeding it.
-    pub fn is_random(&self) -> bool {
-        matches!(self, Surface::Random { .. })
-    }
-
-    /// The same surface with seed `seed` (a deterministic surface is
-    /// returned unchanged: it has no seed).
-    pub fn reseeded(&self, seed: u64) -> Surface {
-        let mut out = self.clone();
-        if let Surface::Random { seed: s, .. } = &mut out {
-            *s = seed;
-        }
-        out
-    }
 }
 
 /// Contact model.

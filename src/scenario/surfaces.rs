@@ -1,9 +1,20 @@
-//! Resolving `surface: {type: random}`: the roughness class or coefficient
-//! and the sampling of the series.
+//! Resolving `surface`: the roughness class or coefficient and the
+//! sampling of the power-law series, the spectra's bands, the measured
+//! profile's file and the shapes' parameters; then, once the vehicles are
+//! known, whether the profile reaches every position the wheels travel.
 
-use super::raw::RoughnessClassRaw;
+use std::path::Path;
+use std::sync::Arc;
+
+use super::budget::Budget;
+use super::raw::{self, RailsRaw, RoughnessClassRaw};
 use super::resolve::Checker;
-use super::resolved::Surface;
+use super::resolved::{Sampling, Surface, Vehicle};
+use crate::surface::grid_nodes;
+use crate::surface::synth::default_terms;
+use crate::vehicle::VehicleModel;
+
+mod measured;
 
 /// Shortest wavelength the default series resolves, m.
 pub const DEFAULT_SHORTEST_WAVELENGTH: f64 = 0.5;
@@ -90,4 +101,377 @@ pub(super) fn resolve_random(
         terms,
         seed: seed.unwrap_or(1),
     }
+}
+
+/// Resolves the `surface` section (`None`: smooth). `bridge_length` in m.
+pub(super) fn resolve_surface(
+    raw: Option<&raw::SurfaceRaw>,
+    bridge_length: f64,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Surface {
+    use raw::SurfaceRaw as R;
+    let Some(raw) = raw else {
+        return Surface::Smooth;
+    };
+    match raw {
+        R::Smooth => Surface::Smooth,
+        R::Harmonic {
+            amplitude,
+            wavelength,
+            phase,
+        } => {
+            ck.non_negative("surface.amplitude", *amplitude, "roughness amplitude");
+            ck.positive("surface.wavelength", *wavelength, "roughness wavelength");
+            Surface::Harmonic {
+                amplitude: *amplitude,
+                wavelength: *wavelength,
+                phase: phase.unwrap_or(0.0),
+            }
+        }
+        R::Random {
+            class,
+            coefficient,
+            sampling_length,
+            terms,
+            seed,
+        } => resolve_random(
+            *class,
+            *coefficient,
+            *sampling_length,
+            *terms,
+            *seed,
+            bridge_length,
+            ck,
+        ),
+        R::Fra {
+            class,
+            shortest_wavelength,
+            longest_wavelength,
+            terms,
+            seed,
+            rails,
+            run_in,
+        } => {
+            if !(1..=6).contains(class) {
+                ck.error(
+                    "surface.class",
+                    format!("FRA track classes are 1 (worst) to 6 (best), got {class}"),
+                );
+            }
+            let sampling = resolve_sampling(
+                (*shortest_wavelength, *longest_wavelength),
+                RAIL_BAND,
+                *terms,
+                *seed,
+                *rails,
+                *run_in,
+                ck,
+            );
+            Surface::Fra {
+                class: *class,
+                sampling,
+            }
+        }
+        R::German {
+            interference,
+            shortest_wavelength,
+            longest_wavelength,
+            terms,
+            seed,
+            rails,
+            run_in,
+        } => Surface::German {
+            interference: *interference,
+            sampling: resolve_sampling(
+                (*shortest_wavelength, *longest_wavelength),
+                RAIL_BAND,
+                *terms,
+                *seed,
+                *rails,
+                *run_in,
+                ck,
+            ),
+        },
+        R::Iso8608 {
+            class,
+            shortest_wavelength,
+            longest_wavelength,
+            terms,
+            seed,
+            rails,
+            run_in,
+        } => Surface::Iso8608 {
+            class: *class,
+            sampling: resolve_sampling(
+                (*shortest_wavelength, *longest_wavelength),
+                ROAD_BAND,
+                *terms,
+                *seed,
+                *rails,
+                *run_in,
+                ck,
+            ),
+        },
+        R::Measured { file } => {
+            let base = Path::new(ck.file()).parent().unwrap_or(Path::new(""));
+            let path = base.join(file);
+            let path = std::path::absolute(&path).unwrap_or(path);
+            match measured::read(&path, budget, ck) {
+                Some(profile) => Surface::Measured {
+                    file: path.display().to_string(),
+                    profile: Arc::new(profile),
+                },
+                None => Surface::Smooth,
+            }
+        }
+        R::Ramp {
+            start,
+            length,
+            height,
+        } => {
+            ck.positive("surface.length", *length, "ramp length");
+            Surface::Ramp {
+                start: *start,
+                length: *length,
+                height: *height,
+            }
+        }
+        R::Step { position, height } => Surface::Step {
+            position: *position,
+            height: *height,
+        },
+        R::Bump {
+            start,
+            length,
+            height,
+        } => {
+            ck.positive("surface.length", *length, "bump length");
+            ck.positive(
+                "surface.height",
+                *height,
+                "bump height (use `type: dip` for a depression)",
+            );
+            Surface::Bump {
+                start: *start,
+                length: *length,
+                height: *height,
+            }
+        }
+        R::Dip {
+            start,
+            length,
+            depth,
+        } => {
+            ck.positive("surface.length", *length, "dip length");
+            ck.positive("surface.depth", *depth, "dip depth");
+            Surface::Bump {
+                start: *start,
+                length: *length,
+                height: -*depth,
+            }
+        }
+        R::PiecewiseLinear { points } => {
+            if points.len() < 2 {
+                ck.error(
+                    "surface.points",
+                    format!(
+                        "a piecewise-linear profile needs at least two [x, r] points, got {}",
+                        points.len()
+                    ),
+                );
+            }
+            for (i, w) in points.windows(2).enumerate() {
+                if w[1][0] <= w[0][0] {
+                    ck.error(
+                        &format!("surface.points[{}]", i + 1),
+                        format!(
+                            "x must increase strictly along the points: {} follows {}",
+                            w[1][0], w[0][0]
+                        ),
+                    );
+                    break;
+                }
+            }
+            Surface::PiecewiseLinear {
+                points: points.clone(),
+            }
+        }
+    }
+}
+
+/// Default wavelength band of the rail spectra, m: 1–80 m, the waves a rail
+/// car's suspension and the bridge respond to (shorter ones are filtered by
+/// the contact patch and rail bending, longer ones pass as quasi-static
+/// gradients).
+pub const RAIL_BAND: (f64, f64) = (1.0, 80.0);
+/// Default wavelength band of ISO 8608 roads, m: 0.5–100 m (ISO 8608 needs
+/// no lower spatial frequency than 0.01 cycle/m for on-road vehicles; waves
+/// below 0.5 m are enveloped by the tyre).
+pub const ROAD_BAND: (f64, f64) = (0.5, 100.0);
+
+/// Band, terms, seed and rails of a spectral profile.
+fn resolve_sampling(
+    (shortest, longest): (Option<f64>, Option<f64>),
+    (default_short, default_long): (f64, f64),
+    terms: Option<usize>,
+    seed: Option<u64>,
+    rails: Option<RailsRaw>,
+    run_in: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Sampling {
+    let run_in = run_in.unwrap_or(0.0);
+    ck.non_negative("surface.run_in", run_in, "run-in length");
+    let shortest = shortest.unwrap_or(default_short);
+    let longest = longest.unwrap_or(default_long);
+    ck.positive(
+        "surface.shortest_wavelength",
+        shortest,
+        "shortest wavelength",
+    );
+    ck.positive("surface.longest_wavelength", longest, "longest wavelength");
+    let band_ok = shortest > 0.0 && longest > shortest;
+    if shortest > 0.0 && longest > 0.0 && !band_ok {
+        let at = if ck.has("surface.longest_wavelength") {
+            "surface.longest_wavelength"
+        } else {
+            "surface.shortest_wavelength"
+        };
+        ck.error(
+            at,
+            format!(
+                "the wavelength band is empty: the longest wavelength ({longest} m) must exceed \
+                 the shortest ({shortest} m)"
+            ),
+        );
+    }
+    let terms = terms.unwrap_or_else(|| {
+        if band_ok {
+            default_terms(shortest, longest).min(MAX_TERMS)
+        } else {
+            1
+        }
+    });
+    if !(1..=MAX_TERMS).contains(&terms) {
+        ck.error(
+            "surface.terms",
+            format!("the series needs between 1 and {MAX_TERMS} terms, got {terms}"),
+        );
+    }
+    Sampling {
+        shortest_wavelength: shortest,
+        longest_wavelength: longest,
+        terms,
+        seed: seed.unwrap_or(1),
+        rails: rails.unwrap_or(RailsRaw::Identical),
+        run_in,
+    }
+}
+
+/// Where the wheels travel, m from the entrance, as
+/// [`crate::model::Model`] will run it.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Travel {
+    /// The rearmost wheel at the start.
+    pub start: f64,
+    /// The front axle that starts nearest the entrance.
+    pub front_start: f64,
+    /// The farthest front axle at the end of the run (the last exit plus
+    /// the free vibration).
+    pub end: f64,
+}
+
+/// Where the wheels of `vehicles` travel over a bridge of `length` m.
+pub(super) fn travel(
+    vehicles: &[Vehicle],
+    gravity: f64,
+    length: f64,
+    free_vibration: f64,
+) -> Travel {
+    let models: Vec<VehicleModel> = vehicles
+        .iter()
+        .map(|v| VehicleModel::build(v, gravity))
+        .collect();
+    let end_time = models
+        .iter()
+        .map(|m| m.exit_time(length))
+        .fold(0.0, f64::max)
+        + free_vibration;
+    let start = models
+        .iter()
+        .map(|m| m.front_position(0.0) - m.wheels.iter().map(|w| w.offset).fold(0.0, f64::max))
+        .fold(0.0, f64::min);
+    let end = models
+        .iter()
+        .map(|m| m.front_position(end_time))
+        .fold(0.0, f64::max);
+    let front_start = models
+        .iter()
+        .map(|m| m.front_position(0.0))
+        .fold(f64::NEG_INFINITY, f64::max);
+    Travel {
+        start,
+        front_start,
+        end,
+    }
+}
+
+/// Checks that the profile serves the wheels' travel `(start, end)` (m):
+/// a sampled grid's size fits the budget, a measured profile covers it.
+pub(super) fn check_reach(
+    surface: &Surface,
+    travel: Travel,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> bool {
+    let Travel { start, end, .. } = travel;
+    if let Some((_, sampling)) = surface.spectrum() {
+        if sampling.run_in > 0.0 && travel.front_start > -sampling.run_in {
+            ck.error(
+                "surface.run_in",
+                format!(
+                    "the run-in starts at x = {} m but a vehicle's front axle starts at x = {:.4} m: \
+                     start every vehicle at or before the run-in (`start_position`, or a later \
+                     `entry_time`)",
+                    -sampling.run_in,
+                    travel.front_start
+                ),
+            );
+            return false;
+        }
+        let nodes = grid_nodes(end + sampling.run_in, sampling.shortest_wavelength);
+        let rails = if sampling.rails == RailsRaw::Independent {
+            2.0
+        } else {
+            1.0
+        };
+        return budget.check(
+            ck,
+            "surface.shortest_wavelength",
+            "profile_points",
+            &format!(
+                "grid nodes of the sampled profile ({} per shortest wavelength over the {end:.1} m the wheels reach, per rail)",
+                crate::surface::NODES_PER_WAVELENGTH
+            ),
+            nodes * rails,
+        );
+    }
+    if let Surface::Measured { file, profile } = surface {
+        let (first, last) = (profile.x[0], profile.x[profile.x.len() - 1]);
+        // A hair of slack for the rounding of start and end times.
+        let slack = 1e-9 * (1.0 + end.abs() + start.abs());
+        if first > start + slack || last < end - slack {
+            ck.error(
+                "surface.file",
+                format!(
+                    "{file} covers x = {first} … {last} m, but the wheels travel from x = {start:.4} m \
+                     (the rearmost wheel at the start, on the approach) to x = {end:.4} m (the front \
+                     axle at the end of the run, free vibration included): extend the measured \
+                     profile or move the start, free vibration or speed"
+                ),
+            );
+            return false;
+        }
+    }
+    true
 }

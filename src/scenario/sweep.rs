@@ -48,7 +48,7 @@ pub(super) fn extreme_vehicles(
 /// Whether the surface of `entry` (`None`: the scene's own) is random.
 pub fn is_random(base: &Surface, entry: Option<SweepRoughness>) -> bool {
     match entry {
-        None => matches!(base, Surface::Random { .. }),
+        None => base.is_random(),
         Some(e) => e.class().is_some(),
     }
 }
@@ -58,10 +58,7 @@ pub fn is_random(base: &Surface, entry: Option<SweepRoughness>) -> bool {
 pub fn label(base: &Surface, entry: Option<SweepRoughness>) -> String {
     match (entry, base) {
         (Some(e), _) => e.name().to_string(),
-        (None, Surface::Smooth) => "smooth".into(),
-        (None, Surface::Harmonic { .. }) => "harmonic".into(),
-        (None, Surface::Random { class: Some(c), .. }) => c.name().into(),
-        (None, Surface::Random { class: None, .. }) => "random".into(),
+        (None, base) => base.label(),
     }
 }
 
@@ -78,11 +75,10 @@ pub fn surface(
 ) -> Surface {
     let advance = |seed: u64| seed.wrapping_add(k as u64);
     let Some(entry) = entry else {
-        let mut own = base.clone();
-        if let Surface::Random { seed, .. } = &mut own {
-            *seed = advance(*seed);
-        }
-        return own;
+        return match base.seed() {
+            Some(seed) => base.reseeded(advance(seed)),
+            None => base.clone(),
+        };
     };
     let Some(class) = entry.class() else {
         return Surface::Smooth;

@@ -221,7 +221,9 @@ impl PermanentContacts {
                 s.acceleration_row[i] =
                     nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
             }
-            let (r, dr, ddr) = model.profile.elevation_slope_curvature(x);
+            let (r, dr, ddr) = model
+                .profile
+                .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
             self.surface[c] = (r, dr, ddr);
             self.base[c] = [
                 dot(&s.values, q_star) + r,

@@ -245,8 +245,11 @@ pub fn run(
                 scaled_c[i] = phi[i] * modal.contact_flexibility[i];
             }
             let deck: f64 = phi.iter().zip(&modal.predictor).map(|(p, q)| p * q).sum();
-            free_gap[c] =
-                steps[contact.vehicle].predictor[contact.dof] - deck - model.profile.elevation(x);
+            free_gap[c] = steps[contact.vehicle].predictor[contact.dof]
+                - deck
+                - model
+                    .profile
+                    .elevation_on(model.wheel_rail[contact.wheel], x);
         }
         for a in 0..nc {
             for b in 0..=a {
@@ -414,7 +417,9 @@ pub fn run(
                     &mut landing_curvatures,
                 );
                 let v = model.vehicles[contact.vehicle].speed;
-                let (_, dr, ddr) = model.profile.elevation_slope_curvature(x);
+                let (_, dr, ddr) = model
+                    .profile
+                    .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
                 let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
                 for i in 0..modes {
                     let (q, qd, qdd) = (

@@ -3,14 +3,94 @@
 //! r(x) is the elevation of the running surface above the deck's neutral
 //! line, m, positive upward, as a function of the position x along the bridge
 //! (m). It starts at the entrance (x = 0) and continues past the exit; the
-//! approach (x < 0) is smooth.
+//! approach (x < 0) is smooth, except for measured and piecewise-linear
+//! profiles and shapes, which are defined wherever their data say.
+//!
+//! Two rails: a wheel with lateral offset > 0 (to the left of travel) runs
+//! on the [`Rail::Left`], < 0 on the [`Rail::Right`], and a wheel on the
+//! vehicle's path line (single-track models: oscillators, moving forces)
+//! on the left one. Profiles with one elevation give it to both rails.
+//!
+//! Evaluation is O(1) per wheel per step for every random spectrum (a
+//! quintic Hermite grid sampled once), O(log n) for a measured profile;
+//! only the plate paper's power-law `random` keeps its exact O(terms)
+//! series so its published results stay reproduced bit for bit.
+
+pub mod interp;
+pub mod shapes;
+pub mod spectrum;
+pub mod synth;
 
 use std::f64::consts::PI;
 
 use rand_chacha::ChaCha8Rng;
-use rand_chacha::rand_core::{Rng, SeedableRng};
+use rand_chacha::rand_core::SeedableRng;
 
-use crate::scenario::resolved::Surface;
+use self::interp::{CubicSpline, QuinticGrid, Triple};
+use self::shapes::Shape;
+use self::spectrum::Spectrum;
+use self::synth::{SpectralSeries, uniform};
+use crate::scenario::resolved::{Rails, Sampling, Surface};
+
+/// Grid nodes per shortest wavelength of a sampled random profile: quintic
+/// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude
+/// ([`QuinticGrid`]).
+pub const NODES_PER_WAVELENGTH: f64 = 10.0;
+
+/// Why a profile could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SurfaceError {
+    /// The sampled grid does not fit in memory.
+    #[error(
+        "the sampled surface profile needs {nodes} grid nodes, more than this machine's memory holds"
+    )]
+    OutOfMemory {
+        /// Nodes asked for.
+        nodes: usize,
+    },
+}
+
+/// The rail (wheel track) a wheel runs on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rail {
+    /// Lateral offset ≥ 0 (left of travel, or on the path line).
+    Left,
+    /// Lateral offset < 0.
+    Right,
+}
+
+impl Rail {
+    /// The rail of a wheel at lateral offset `lateral` (m, + to the left).
+    pub fn of_lateral(lateral: f64) -> Rail {
+        if lateral < 0.0 {
+            Rail::Right
+        } else {
+            Rail::Left
+        }
+    }
+}
+
+/// The profile (r, r′, r″) at ξ = (x + L)/L of a run-in of length `run_in` =
+/// L, multiplied by the quintic smoothstep S(ξ) = 10ξ³ − 15ξ⁴ + 6ξ⁵ (S = 0,
+/// S′ = S″ = 0 at ξ = 0; S = 1, S′ = S″ = 0 at ξ = 1), so the product and
+/// its first two derivatives are continuous: (S r)″ = S″r + 2S′r′ + S r″.
+fn fade_in((r, dr, ddr): Triple, xi: f64, run_in: f64) -> Triple {
+    if xi >= 1.0 {
+        return (r, dr, ddr);
+    }
+    let xi = xi.max(0.0);
+    let s = xi * xi * xi * (10.0 + xi * (-15.0 + 6.0 * xi));
+    let ds = 30.0 * xi * xi * (1.0 - xi) * (1.0 - xi) / run_in;
+    let dds = 60.0 * xi * (1.0 - xi) * (1.0 - 2.0 * xi) / (run_in * run_in);
+    (s * r, ds * r + s * dr, dds * r + 2.0 * ds * dr + s * ddr)
+}
+
+/// Nodes of the grid a sampled profile needs to reach `reach` (m from the
+/// entrance) with the given shortest wavelength (m); f64 so a hostile size
+/// cannot wrap (budgeted while resolving).
+pub fn grid_nodes(reach: f64, shortest_wavelength: f64) -> f64 {
+    (reach.max(0.0) / (shortest_wavelength / NODES_PER_WAVELENGTH)).ceil() + 2.0
+}
 
 /// Ω₀ of the road PSD S(Ω) = A_r (Ω/Ω₀)⁻², rad/m (the plate paper's Eq. 14:
 /// the discontinuity frequency 1/2π).
@@ -43,17 +123,33 @@ pub enum Profile {
         /// r₀, m.
         offset: f64,
     },
-}
-
-/// Uniform sample in [0, 1) from the top 53 bits of a 64-bit draw.
-fn uniform(rng: &mut ChaCha8Rng) -> f64 {
-    (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    /// A random sample on a grid from the entrance on, shifted so r(0) = 0
+    /// (as the other random profiles: the approach is smooth), 0 for x < 0;
+    /// or with a run-in of L m, unshifted from the entrance on and faded in
+    /// over [−L, 0], 0 before.
+    Sampled {
+        /// The left rail (and every wheel if `right` is `None`).
+        left: QuinticGrid,
+        /// The right rail, if independent.
+        right: Option<QuinticGrid>,
+    },
+    /// A measured profile.
+    Measured {
+        /// The left rail (and every wheel if `right` is `None`).
+        left: CubicSpline,
+        /// The right rail, if measured.
+        right: Option<CubicSpline>,
+    },
+    /// A deterministic shape.
+    Shape(Shape),
 }
 
 impl Profile {
-    /// Builds the profile of a resolved surface.
-    pub fn build(surface: &Surface) -> Self {
-        match *surface {
+    /// Builds the profile of a resolved surface; a random spectrum is
+    /// sampled from the entrance to `reach` (m), the farthest any wheel
+    /// goes during the run (past it r is held).
+    pub fn build(surface: &Surface, reach: f64) -> Result<Self, SurfaceError> {
+        Ok(match *surface {
             Surface::Smooth => Profile::Smooth,
             Surface::Harmonic {
                 amplitude,
@@ -89,7 +185,83 @@ impl Profile {
                     offset,
                 }
             }
-        }
+            Surface::Measured { ref profile, .. } => Profile::Measured {
+                left: CubicSpline::new(profile.x.clone(), profile.left.clone()),
+                right: profile
+                    .right
+                    .as_ref()
+                    .map(|r| CubicSpline::new(profile.x.clone(), r.clone())),
+            },
+            Surface::Ramp {
+                start,
+                length,
+                height,
+            } => Profile::Shape(Shape::Ramp {
+                start,
+                length,
+                height,
+            }),
+            Surface::Step { position, height } => Profile::Shape(Shape::Step { position, height }),
+            Surface::Bump {
+                start,
+                length,
+                height,
+            } => Profile::Shape(Shape::Bump {
+                start,
+                length,
+                height,
+            }),
+            Surface::PiecewiseLinear { ref points } => Profile::Shape(Shape::PiecewiseLinear {
+                points: points.iter().map(|p| (p[0], p[1])).collect(),
+            }),
+            Surface::Fra { class, sampling } => {
+                Self::sampled(Spectrum::Fra { class }, sampling, reach)?
+            }
+            Surface::German {
+                interference,
+                sampling,
+            } => Self::sampled(Spectrum::German { interference }, sampling, reach)?,
+            Surface::Iso8608 { class, sampling } => {
+                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach)?
+            }
+        })
+    }
+
+    /// A random sample of `spectrum` on a grid from 0 to `reach` (m).
+    fn sampled(spectrum: Spectrum, sampling: Sampling, reach: f64) -> Result<Self, SurfaceError> {
+        let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
+        let run_in = sampling.run_in;
+        let count = grid_nodes(reach + run_in, sampling.shortest_wavelength) as usize;
+        let grid = |stream| {
+            let series = SpectralSeries::new(
+                &spectrum,
+                sampling.shortest_wavelength,
+                sampling.longest_wavelength,
+                sampling.terms,
+                sampling.seed,
+                stream,
+            );
+            let oom = |_| SurfaceError::OutOfMemory { nodes: count };
+            let mut nodes = series.sample(-run_in, spacing, count).map_err(oom)?;
+            if run_in > 0.0 {
+                for (j, n) in nodes.iter_mut().enumerate() {
+                    *n = fade_in(*n, (j as f64 * spacing) / run_in, run_in);
+                }
+            } else {
+                let r0 = nodes[0].0;
+                for n in &mut nodes {
+                    n.0 -= r0;
+                }
+            }
+            QuinticGrid::new(-run_in, spacing, &nodes).map_err(oom)
+        };
+        Ok(Profile::Sampled {
+            left: grid(0)?,
+            right: match sampling.rails {
+                Rails::Independent => Some(grid(1)?),
+                Rails::Identical => None,
+            },
+        })
     }
 
     /// Elevation, slope and curvature of the random series at x ≥ 0: with
@@ -116,7 +288,8 @@ impl Profile {
     }
 
     /// A scale of the profile's slope (dimensionless): a·k for a harmonic
-    /// profile, the RMS slope √(Σ (k aᵢ)²/2) for a random one.
+    /// profile, the RMS slope √(Σ (k aᵢ)²/2) for the power-law random one,
+    /// the largest slope at the grid nodes or data points for the others.
     pub fn slope_scale(&self) -> f64 {
         match self {
             Profile::Smooth => 0.0,
@@ -134,37 +307,58 @@ impl Profile {
                 .sum::<f64>()
                 / 2.0)
                 .sqrt(),
+            Profile::Sampled { left, right } => left
+                .max_slope()
+                .max(right.as_ref().map_or(0.0, QuinticGrid::max_slope)),
+            Profile::Measured { left, right } => left
+                .max_slope()
+                .max(right.as_ref().map_or(0.0, CubicSpline::max_slope)),
+            Profile::Shape(shape) => shape.max_slope(),
         }
     }
 
-    /// Elevation at `x`, m.
+    /// Elevation at `x` (m) under the left rail (or the one profile), m.
     #[inline]
     pub fn elevation(&self, x: f64) -> f64 {
+        self.elevation_on(Rail::Left, x)
+    }
+
+    /// Elevation, slope and curvature at `x` (m) under the left rail (or
+    /// the one profile): [`Profile::elevation_slope_curvature_on`].
+    #[inline]
+    pub fn elevation_slope_curvature(&self, x: f64) -> Triple {
+        self.elevation_slope_curvature_on(Rail::Left, x)
+    }
+
+    /// Elevation at `x` (m) under `rail`, m.
+    #[inline]
+    pub fn elevation_on(&self, rail: Rail, x: f64) -> f64 {
         match *self {
             Profile::Smooth => 0.0,
-            Profile::Harmonic { .. } if x < 0.0 => 0.0,
+            Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => 0.0,
             Profile::Harmonic {
                 amplitude,
                 wavenumber,
                 phase,
             } => amplitude * (wavenumber * x + phase).sin(),
-            Profile::Random { .. } if x < 0.0 => 0.0,
             Profile::Random {
                 fundamental,
                 ref terms,
                 offset,
             } => Self::random_at(fundamental, terms, offset, x).0,
+            _ => self.elevation_slope_curvature_on(rail, x).0,
         }
     }
 
     /// Elevation r (m), slope dr/dx (dimensionless) and curvature d²r/dx²
-    /// (1/m) at `x`. The harmonic profile's slope jumps at the entrance unless
-    /// its phase is ±π/2: a kink the wheels feel as a step in vertical velocity.
+    /// (1/m) at `x` under `rail`. The harmonic profile's slope jumps at the
+    /// entrance unless its phase is ±π/2, and a random one's at the
+    /// entrance: a kink the wheels feel as a step in vertical velocity.
     #[inline]
-    pub fn elevation_slope_curvature(&self, x: f64) -> (f64, f64, f64) {
+    pub fn elevation_slope_curvature_on(&self, rail: Rail, x: f64) -> Triple {
         match *self {
             Profile::Smooth => (0.0, 0.0, 0.0),
-            Profile::Harmonic { .. } if x < 0.0 => (0.0, 0.0, 0.0),
+            Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => (0.0, 0.0, 0.0),
             Profile::Harmonic {
                 amplitude,
                 wavenumber,
@@ -177,12 +371,26 @@ impl Profile {
                     -amplitude * wavenumber * wavenumber * s,
                 )
             }
-            Profile::Random { .. } if x < 0.0 => (0.0, 0.0, 0.0),
             Profile::Random {
                 fundamental,
                 ref terms,
                 offset,
             } => Self::random_at(fundamental, terms, offset, x),
+            Profile::Sampled {
+                ref left,
+                ref right,
+            } => match (rail, right) {
+                (Rail::Right, Some(r)) => r.at(x),
+                _ => left.at(x),
+            },
+            Profile::Measured {
+                ref left,
+                ref right,
+            } => match (rail, right) {
+                (Rail::Right, Some(r)) => r.at(x),
+                _ => left.at(x),
+            },
+            Profile::Shape(ref shape) => shape.at(x),
         }
     }
 }
@@ -193,14 +401,19 @@ mod tests {
 
     #[test]
     fn harmonic_profile_starts_at_entrance() {
-        let p = Profile::build(&Surface::Harmonic {
-            amplitude: 0.003,
-            wavelength: 1.5,
-            phase: 0.5,
-        });
-        assert_eq!(p.elevation(-1.0), 0.0);
-        assert!((p.elevation(0.0) - 0.003 * 0.5f64.sin()).abs() < 1e-15);
-        assert!((p.elevation(1.5) - p.elevation(0.0)).abs() < 1e-15);
-        assert!((p.elevation(0.375 - 0.5 / (2.0 * PI) * 1.5) - 0.003).abs() < 1e-12);
+        let p = Profile::build(
+            &Surface::Harmonic {
+                amplitude: 0.003,
+                wavelength: 1.5,
+                phase: 0.5,
+            },
+            10.0,
+        )
+        .unwrap();
+        let p = |x| p.elevation(x);
+        assert_eq!(p(-1.0), 0.0);
+        assert!((p(0.0) - 0.003 * 0.5f64.sin()).abs() < 1e-15);
+        assert!((p(1.5) - p(0.0)).abs() < 1e-15);
+        assert!((p(0.375 - 0.5 / (2.0 * PI) * 1.5) - 0.003).abs() < 1e-12);
     }
 }

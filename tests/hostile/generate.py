@@ -271,6 +271,11 @@ case("size-map-points", "budget", "a 250,000-point separation map",
      "mass_ratio: {from: 0.1, to: 2.0, count: 500}}\n", "limits.study_points")
 case("size-road-terms", "budget", "a random road of 1e6 terms",
      scene(extra="surface: {type: random, class: good, terms: @@1000000}\n"), "limits.road_terms")
+case("size-track-grid", "budget", "an FRA track sampled at 1e-9 m",
+     scene(extra="surface: {type: fra, class: 5, shortest_wavelength: @@1.0e-9, terms: 100}\n"),
+     "limits.profile_points")
+case("size-track-terms", "budget", "an FRA track of 1e6 terms",
+     scene(extra="surface: {type: fra, class: 5, terms: @@1000000}\n"), "limits.road_terms")
 case("size-road-sampling", "budget", "a random road sampled over 1e12 m",
      scene(extra="surface: {type: random, class: good, sampling_length: @@1.0e12}\n"),
      "limits.road_terms")
@@ -405,6 +410,15 @@ structural = [
     ("random-terms-zero", scene(extra="surface: {type: random, class: good, terms: @@0}\n"), "between 1 and"),
     ("random-seed-negative", scene(extra="surface: {type: random, class: good, seed: @@-1}\n"), "out of range"),
     ("harmonic-wavelength-zero", scene(extra="surface: {type: harmonic, amplitude: 0.001, wavelength: @@0}\n"), "must be positive"),
+    ("fra-class-7", scene(extra="surface: {type: fra, class: @@7}\n"), "1 (worst) to 6 (best)"),
+    ("fra-class-huge", scene(extra="surface: {type: fra, class: @@300}\n"), "out of range"),
+    ("fra-band-negative", scene(extra="surface: {type: fra, class: 5, longest_wavelength: @@-80}\n"), "must be positive"),
+    ("german-band-empty", scene(extra="surface: {type: german, interference: high, shortest_wavelength: 50, longest_wavelength: @@5}\n"), "band is empty"),
+    ("iso-class-unknown", scene(extra="surface: {type: iso8608, class: @@Z}\n"), "unknown variant"),
+    ("measured-missing", scene(extra="surface: {type: measured, file: @@no-such-profile.csv}\n"), "cannot read the measured profile"),
+    ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a file"),
+    ("dip-depth-zero", scene(extra="surface: {type: dip, start: 2, length: 1, depth: @@0}\n"), "must be positive"),
+    ("piecewise-one-point", scene(extra="surface: {type: piecewise_linear, points: @@[[0, 0]]}\n"), "at least two"),
     ("dimensionless-velocity-huge", "name: d\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: {velocity_ratio: 1e9, mass_ratio: 1.0, frequency_ratio: 0.5}\n".replace("velocity_ratio: 1e9", "velocity_ratio: @@1e9"), "above 1000"),
 ]
 for slug, text, message in structural:

@@ -40,6 +40,11 @@ pub struct LimitsRaw {
     /// Most terms of a random road profile's series. Default 20000.
     #[serde(default)]
     pub road_terms: Option<f64>,
+    /// Most points of a surface profile: grid nodes of a sampled random
+    /// track or road (10 per shortest wavelength over the distance the
+    /// wheels travel), or rows of a measured profile's file. Default 2e6.
+    #[serde(default)]
+    pub profile_points: Option<f64>,
     /// Most bytes of results written (estimated), bytes. Default 2e9.
     #[serde(default)]
     pub output_bytes: Option<f64>,

@@ -1,0 +1,264 @@
+//! The `surface` section: the profile under the wheels.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+pub use crate::surface::spectrum::{Interference, IsoClass};
+
+/// Surface profile (roughness) under the wheels. It starts at the bridge
+/// entrance and continues past the exit; the approach is smooth unless a
+/// measured, piecewise-linear or shape profile says otherwise.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum SurfaceRaw {
+    /// Perfectly smooth surface.
+    Smooth,
+    /// r(x) = amplitude · sin(2π x / wavelength + phase) for x ≥ 0, positive upward.
+    Harmonic {
+        /// Amplitude, m.
+        amplitude: f64,
+        /// Wavelength, m.
+        #[schemars(transform = crate::schema::positive)]
+        wavelength: f64,
+        /// Phase at the entrance, rad. Default 0.
+        #[serde(default)]
+        #[schemars(extend("default" = 0.0))]
+        phase: Option<f64>,
+    },
+    /// Random road profile, a stationary Gaussian process with the power
+    /// spectral density S(Ω) = A_r (Ω/Ω₀)⁻², Ω₀ = 1/2π, sampled by the
+    /// trigonometric series of the plate paper's Eq. 17 with random phases.
+    /// It is shifted so that r(0) = 0 at the entrance. The same profile lies
+    /// under every wheel track. Give `class` or `coefficient`.
+    Random {
+        /// Roughness class: `very_good`, `good`, `average`, `poor` or
+        /// `very_poor` (A_r the geometric mean of the class's range).
+        #[serde(default)]
+        class: Option<RoughnessClassRaw>,
+        /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        coefficient: Option<f64>,
+        /// Length L_c the series repeats over, m. Default: twice the bridge length.
+        #[serde(default)]
+        sampling_length: Option<f64>,
+        /// Number of terms N of the series. Default: enough for wavelengths
+        /// down to 0.5 m (N = L_c / 0.5).
+        #[serde(default)]
+        terms: Option<usize>,
+        /// Seed of the random phases (ChaCha8). Default 1. The same seed gives
+        /// the same profile on every machine.
+        #[serde(default)]
+        #[schemars(extend("default" = 1))]
+        seed: Option<u64>,
+    },
+    /// Random vertical track profile from the US FRA spectrum of a track
+    /// class: G(Ω) = k A_v Ω_c² / (Ω² (Ω² + Ω_c²)) (one-sided, m²/(rad/m),
+    /// Ω in rad/m; k = 0.25, Ω_c = 0.8245 rad/m, A_v per class), sampled
+    /// by the spectral representation over the wavelength band. Starts at 0
+    /// at the entrance (the approach is smooth).
+    Fra {
+        /// Track class, 1 (worst) to 6 (best).
+        #[schemars(range(min = 1, max = 6))]
+        class: u8,
+        /// Shortest wavelength sampled, m. Default: 1 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        shortest_wavelength: Option<f64>,
+        /// Longest wavelength sampled, m. Default: 80 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        longest_wavelength: Option<f64>,
+        /// Number of terms N of the series (frequency bins of equal width in
+        /// log Ω). Default: 100 per decade of the wavelength band.
+        #[serde(default)]
+        terms: Option<usize>,
+        /// Seed of the random frequencies and phases (ChaCha8). Default 1.
+        /// The same seed gives the same profile on every machine.
+        #[serde(default)]
+        #[schemars(extend("default" = 1))]
+        seed: Option<u64>,
+        /// `identical`: both rails (wheel tracks) carry the same profile;
+        /// `independent`: the left and right ones are independent samples.
+        /// Default `identical`.
+        #[serde(default)]
+        rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
+    },
+    /// Random vertical track profile from the German high-speed spectrum:
+    /// G(Ω) = A_v Ω_c² / ((Ω² + Ω_r²)(Ω² + Ω_c²)) (one-sided, m²/(rad/m);
+    /// Ω_c = 0.8246, Ω_r = 0.0206 rad/m; A_v = 4.032e-7 m·rad for low,
+    /// 1.080e-6 for high interference). Starts at 0 at the entrance.
+    German {
+        /// `low` or `high` interference.
+        interference: Interference,
+        /// Shortest wavelength sampled, m. Default: 1 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        shortest_wavelength: Option<f64>,
+        /// Longest wavelength sampled, m. Default: 80 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        longest_wavelength: Option<f64>,
+        /// Number of terms N of the series (frequency bins of equal width in
+        /// log Ω). Default: 100 per decade of the wavelength band.
+        #[serde(default)]
+        terms: Option<usize>,
+        /// Seed of the random frequencies and phases (ChaCha8). Default 1.
+        /// The same seed gives the same profile on every machine.
+        #[serde(default)]
+        #[schemars(extend("default" = 1))]
+        seed: Option<u64>,
+        /// `identical`: both rails (wheel tracks) carry the same profile;
+        /// `independent`: the left and right ones are independent samples.
+        /// Default `identical`.
+        #[serde(default)]
+        rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
+    },
+    /// Random road profile of an ISO 8608 class: G_d(n) = G_d(n₀)(n/n₀)⁻²,
+    /// n₀ = 0.1 cycle/m, G_d(n₀) = 16e-6 m³ for class A, four times more per
+    /// class up to H. Starts at 0 at the entrance.
+    Iso8608 {
+        /// Road class `A` (best) to `H`.
+        class: IsoClass,
+        /// Shortest wavelength sampled, m. Default: 0.5 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        shortest_wavelength: Option<f64>,
+        /// Longest wavelength sampled, m. Default: 100 m.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::positive)]
+        longest_wavelength: Option<f64>,
+        /// Number of terms N of the series (frequency bins of equal width in
+        /// log Ω). Default: 100 per decade of the wavelength band.
+        #[serde(default)]
+        terms: Option<usize>,
+        /// Seed of the random frequencies and phases (ChaCha8). Default 1.
+        /// The same seed gives the same profile on every machine.
+        #[serde(default)]
+        #[schemars(extend("default" = 1))]
+        seed: Option<u64>,
+        /// `identical`: both rails (wheel tracks) carry the same profile;
+        /// `independent`: the left and right ones are independent samples.
+        /// Default `identical`.
+        #[serde(default)]
+        rails: Option<RailsRaw>,
+        /// Length of the run-in on the approach, m. 0 (default): the profile
+        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
+        /// there, a kick the wheels feel). L > 0: the full profile lies on
+        /// the bridge and is faded in over the last L m of the approach by
+        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
+        /// every vehicle must start at or before x = −L.
+        #[serde(default)]
+        #[schemars(transform = crate::schema::non_negative)]
+        run_in: Option<f64>,
+    },
+    /// A measured profile from a CSV file: rows `x, elevation` (one profile
+    /// under every wheel) or `x, left, right` (per rail; a wheel with
+    /// lateral offset > 0 runs on the left rail, < 0 on the right, 0 on
+    /// the left), x in m from the bridge entrance (negative on the
+    /// approach), strictly increasing, elevations in m, positive upward.
+    /// Lines starting with `#` and a header line are skipped. Interpolated
+    /// by a natural cubic spline; it must cover every position the wheels
+    /// reach during the run.
+    Measured {
+        /// The CSV file, relative to the scenario file's folder.
+        file: String,
+    },
+    /// r = 0 before `start`, rising linearly by `height` over `length`,
+    /// then `height`.
+    Ramp {
+        /// Where the ramp starts, m from the entrance.
+        start: f64,
+        /// Horizontal length, m.
+        #[schemars(transform = crate::schema::positive)]
+        length: f64,
+        /// Rise, m (negative: a descent).
+        height: f64,
+    },
+    /// r = 0 before `position`, `height` from there on (a sudden change of
+    /// level).
+    Step {
+        /// Where the step is, m from the entrance.
+        position: f64,
+        /// Change of level, m (negative: a step down).
+        height: f64,
+    },
+    /// A cosine bump: r = (height/2)(1 − cos(2π(x − start)/length)) over
+    /// `length` from `start`, 0 elsewhere.
+    Bump {
+        /// Where the bump starts, m from the entrance.
+        start: f64,
+        /// Length, m.
+        #[schemars(transform = crate::schema::positive)]
+        length: f64,
+        /// Peak height, m.
+        #[schemars(transform = crate::schema::positive)]
+        height: f64,
+    },
+    /// A cosine dip: r = −(depth/2)(1 − cos(2π(x − start)/length)) over
+    /// `length` from `start`, 0 elsewhere.
+    Dip {
+        /// Where the dip starts, m from the entrance.
+        start: f64,
+        /// Length, m.
+        #[schemars(transform = crate::schema::positive)]
+        length: f64,
+        /// Deepest point below the level, m.
+        #[schemars(transform = crate::schema::positive)]
+        depth: f64,
+    },
+    /// Straight lines between points `[x, r]` (x in m from the entrance,
+    /// strictly increasing; r in m, positive upward), held at the end
+    /// values before the first and after the last point.
+    PiecewiseLinear {
+        /// At least two `[x, r]` pairs, m.
+        points: Vec<[f64; 2]>,
+    },
+}
+
+/// Road roughness classes (A_r ranges in m³/cycle): very good 2e-6–8e-6,
+/// good 8e-6–32e-6, average 32e-6–128e-6, poor 128e-6–512e-6, very poor
+/// 512e-6–2048e-6.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RoughnessClassRaw {
+    /// A_r = 4e-6.
+    VeryGood,
+    /// A_r = 16e-6.
+    Good,
+    /// A_r = 64e-6.
+    Average,
+    /// A_r = 256e-6.
+    Poor,
+    /// A_r = 1024e-6.
+    VeryPoor,
+}
+
+/// Whether the two rails (wheel tracks) carry the same random profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RailsRaw {
+    /// The same sample under both.
+    Identical,
+    /// Independent samples (ChaCha8 streams 0 and 1 of the seed).
+    Independent,
+}

@@ -1,0 +1,203 @@
+//! The resolved surface profile.
+
+use std::sync::Arc;
+
+use serde::Serialize;
+
+pub use crate::scenario::raw::{RailsRaw as Rails, RoughnessClassRaw as RoughnessClass};
+use crate::surface::spectrum::Spectrum;
+
+/// How a random track or road profile is sampled (the spectral
+/// representation of [`crate::surface::synth`]).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Sampling {
+    /// Shortest wavelength of the band, m.
+    pub shortest_wavelength: f64,
+    /// Longest wavelength of the band, m.
+    pub longest_wavelength: f64,
+    /// Number of terms N.
+    pub terms: usize,
+    /// Seed of the ChaCha8 streams.
+    pub seed: u64,
+    /// Identical or independent rails.
+    pub rails: Rails,
+    /// Fade-in length on the approach, m (0: start at the entrance with
+    /// r(0) = 0).
+    pub run_in: f64,
+}
+
+/// A measured profile as read from its CSV file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeasuredProfile {
+    /// x of the points, m from the entrance, strictly increasing.
+    pub x: Vec<f64>,
+    /// Elevation under the left rail (or every wheel), m.
+    pub left: Vec<f64>,
+    /// Elevation under the right rail, m, if the file gives one.
+    pub right: Option<Vec<f64>>,
+}
+
+/// Surface profile. Serialises to the input format (`type` and its fields),
+/// so the resolved scenario can be run again.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum Surface {
+    /// Smooth.
+    Smooth,
+    /// r(x) = amplitude · sin(2πx/wavelength + phase), x ≥ 0.
+    Harmonic {
+        /// m
+        amplitude: f64,
+        /// m
+        wavelength: f64,
+        /// rad
+        phase: f64,
+    },
+    /// Random profile from the PSD A_r (Ω/Ω₀)⁻² (the plate paper's series).
+    Random {
+        /// The class A_r was taken from.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        class: Option<RoughnessClass>,
+        /// A_r, m³/cycle.
+        coefficient: f64,
+        /// L_c, m.
+        sampling_length: f64,
+        /// N.
+        terms: usize,
+        /// Seed.
+        seed: u64,
+    },
+    /// FRA vertical track profile.
+    Fra {
+        /// Track class 1–6.
+        class: u8,
+        /// Band, terms, seed, rails.
+        #[serde(flatten)]
+        sampling: Sampling,
+    },
+    /// German high-speed vertical track profile.
+    German {
+        /// Interference level.
+        interference: crate::surface::spectrum::Interference,
+        /// Band, terms, seed, rails.
+        #[serde(flatten)]
+        sampling: Sampling,
+    },
+    /// ISO 8608 road profile.
+    Iso8608 {
+        /// Road class A–H.
+        class: crate::surface::spectrum::IsoClass,
+        /// Band, terms, seed, rails.
+        #[serde(flatten)]
+        sampling: Sampling,
+    },
+    /// A measured profile.
+    Measured {
+        /// The CSV file as resolved (relative to the scenario's folder, made
+        /// absolute so the written scenario runs from anywhere).
+        file: String,
+        /// The points read from it.
+        #[serde(skip)]
+        profile: Arc<MeasuredProfile>,
+    },
+    /// A linear ramp ([`crate::surface::shapes::Shape::Ramp`]), m.
+    Ramp {
+        /// m
+        start: f64,
+        /// m
+        length: f64,
+        /// m
+        height: f64,
+    },
+    /// A step ([`crate::surface::shapes::Shape::Step`]), m.
+    Step {
+        /// m
+        position: f64,
+        /// m
+        height: f64,
+    },
+    /// A cosine bump, or a dip with negative height
+    /// ([`crate::surface::shapes::Shape::Bump`]), m.
+    Bump {
+        /// m
+        start: f64,
+        /// m
+        length: f64,
+        /// m (negative: a dip)
+        height: f64,
+    },
+    /// Straight lines between `[x, r]` points, m.
+    PiecewiseLinear {
+        /// `[x, r]`, m.
+        points: Vec<[f64; 2]>,
+    },
+}
+
+impl Surface {
+    /// Whether the profile is a random sample (its seed picks it).
+    pub fn is_random(&self) -> bool {
+        matches!(
+            self,
+            Surface::Random { .. }
+                | Surface::Fra { .. }
+                | Surface::German { .. }
+                | Surface::Iso8608 { .. }
+        )
+    }
+
+    /// The same surface with its seed replaced (random kinds), or itself
+    /// (deterministic ones): one sample of a Monte Carlo study.
+    pub fn reseeded(&self, seed: u64) -> Surface {
+        let mut out = self.clone();
+        match &mut out {
+            Surface::Random { seed: s, .. } => *s = seed,
+            Surface::Fra { sampling, .. }
+            | Surface::German { sampling, .. }
+            | Surface::Iso8608 { sampling, .. } => sampling.seed = seed,
+            _ => {}
+        }
+        out
+    }
+
+    /// The seed of a random profile.
+    pub fn seed(&self) -> Option<u64> {
+        match self {
+            Surface::Random { seed, .. } => Some(*seed),
+            _ => self.spectrum().map(|(_, s)| s.seed),
+        }
+    }
+
+    /// A short name for tables and plots: `smooth`, `harmonic`, the
+    /// power-law class or `random`, `fra-5`, `german-low`, `iso-C`,
+    /// `measured`, `ramp`, `step`, `bump`, `dip`, `piecewise-linear`.
+    pub fn label(&self) -> String {
+        match self {
+            Surface::Smooth => "smooth".into(),
+            Surface::Harmonic { .. } => "harmonic".into(),
+            Surface::Random { class: Some(c), .. } => c.name().into(),
+            Surface::Random { class: None, .. } => "random".into(),
+            Surface::Fra { .. } | Surface::German { .. } | Surface::Iso8608 { .. } => {
+                self.spectrum().map(|(s, _)| s.label()).unwrap_or_default()
+            }
+            Surface::Measured { .. } => "measured".into(),
+            Surface::Ramp { .. } => "ramp".into(),
+            Surface::Step { .. } => "step".into(),
+            Surface::Bump { height, .. } if *height < 0.0 => "dip".into(),
+            Surface::Bump { .. } => "bump".into(),
+            Surface::PiecewiseLinear { .. } => "piecewise-linear".into(),
+        }
+    }
+
+    /// The spectrum and sampling of a spectral random profile.
+    pub fn spectrum(&self) -> Option<(Spectrum, Sampling)> {
+        match *self {
+            Surface::Fra { class, sampling } => Some((Spectrum::Fra { class }, sampling)),
+            Surface::German {
+                interference,
+                sampling,
+            } => Some((Spectrum::German { interference }, sampling)),
+            Surface::Iso8608 { class, sampling } => Some((Spectrum::Iso8608 { class }, sampling)),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,180 @@
+//! Reading a measured profile's CSV file: rows `x, elevation` or
+//! `x, left, right` (m), `#` comments and blank lines skipped, an optional
+//! header as the first row. Every problem is reported at the scenario's
+//! `surface.file` with the CSV's own line and column in the message; the
+//! file's size and row count are budgeted before anything is allocated per
+//! row.
+
+use std::io::Read;
+use std::path::Path;
+
+use super::super::budget::Budget;
+use super::super::resolve::Checker;
+use super::super::resolved::MeasuredProfile;
+
+/// Fewest bytes a data row takes (`0,0` and a line break).
+const MIN_ROW_BYTES: f64 = 4.0;
+
+/// Reads the profile at `path`; `None` after reporting why not.
+pub(super) fn read(path: &Path, budget: &Budget, ck: &mut Checker<'_>) -> Option<MeasuredProfile> {
+    const AT: &str = "surface.file";
+    let shown = path.display().to_string();
+    let size = match std::fs::metadata(path) {
+        Ok(m) if m.is_file() => m.len(),
+        Ok(_) => {
+            ck.error(AT, format!("{shown} is not a file"));
+            return None;
+        }
+        Err(e) => {
+            ck.error(AT, format!("cannot read the measured profile {shown}: {e}"));
+            return None;
+        }
+    };
+    // At most size/4 rows: budget them before reading the file whole.
+    let most_rows = (size as f64 / MIN_ROW_BYTES).ceil();
+    if !budget.check(
+        ck,
+        AT,
+        "profile_points",
+        &format!(
+            "rows the measured profile {shown} may hold ({size} bytes, 4 bytes a row at least)"
+        ),
+        most_rows,
+    ) {
+        return None;
+    }
+    let mut text = String::new();
+    let read = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
+    if let Err(e) = read {
+        ck.error(AT, format!("cannot read the measured profile {shown}: {e}"));
+        return None;
+    }
+    match parse(&text) {
+        Ok(p) => Some(p),
+        Err((line, message)) => {
+            ck.error(AT, format!("{shown}:{line}: {message}"));
+            None
+        }
+    }
+}
+
+/// Parses the CSV text; an error is (1-based line, message).
+pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
+    let rows = text
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .count();
+    let mut x = Vec::with_capacity(rows);
+    let mut left = Vec::with_capacity(rows);
+    let mut right: Vec<f64> = Vec::new();
+    let mut columns = None;
+    let mut first_row = true;
+    for (i, line) in text.lines().enumerate() {
+        let n = i + 1;
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = if line.contains(',') {
+            line.split(',').map(str::trim).collect()
+        } else {
+            line.split_whitespace().collect()
+        };
+        let is_header = first_row && fields.iter().any(|f| f.parse::<f64>().is_err());
+        first_row = false;
+        if is_header {
+            continue;
+        }
+        let count = fields.len();
+        if !(2..=3).contains(&count) {
+            return Err((
+                n,
+                format!(
+                    "a row has 2 columns (x, elevation) or 3 (x, left, right), this one has {count}"
+                ),
+            ));
+        }
+        match columns {
+            None => {
+                columns = Some(count);
+                if count == 3 {
+                    right.reserve(rows);
+                }
+            }
+            Some(c) if c != count => {
+                return Err((
+                    n,
+                    format!("this row has {count} columns, the rows above have {c}"),
+                ));
+            }
+            Some(_) => {}
+        }
+        let mut values = [0.0; 3];
+        for (k, field) in fields.iter().enumerate() {
+            let v: f64 = field
+                .parse()
+                .map_err(|_| (n, format!("column {}: `{field}` is not a number", k + 1)))?;
+            if !v.is_finite() {
+                return Err((
+                    n,
+                    format!("column {}: `{field}` is not a finite number", k + 1),
+                ));
+            }
+            values[k] = v;
+        }
+        if let Some(&prev) = x.last()
+            && values[0] <= prev
+        {
+            return Err((
+                n,
+                format!(
+                    "column 1: x = {} does not exceed the previous row's {prev} (x must increase strictly)",
+                    values[0]
+                ),
+            ));
+        }
+        x.push(values[0]);
+        left.push(values[1]);
+        if count == 3 {
+            right.push(values[2]);
+        }
+    }
+    if x.len() < 2 {
+        return Err((
+            text.lines().count().max(1),
+            format!(
+                "a measured profile needs at least two rows, this file has {}",
+                x.len()
+            ),
+        ));
+    }
+    Ok(MeasuredProfile {
+        x,
+        left,
+        right: (columns == Some(3)).then_some(right),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_header_comments_and_two_rails() {
+        let p = parse("# track 2\nx,left,right\n0, 0.001, 0.002\n\n1.5,0,-0.001\n").unwrap();
+        assert_eq!(p.x, vec![0.0, 1.5]);
+        assert_eq!(p.left, vec![0.001, 0.0]);
+        assert_eq!(p.right, Some(vec![0.002, -0.001]));
+        let p = parse("0 0\n1 1e-3\n").unwrap();
+        assert_eq!(p.right, None);
+    }
+
+    #[test]
+    fn bad_rows_are_located() {
+        assert_eq!(parse("x,r\n0,0\n1,nan\n").unwrap_err().0, 3);
+        assert_eq!(parse("0,0\n1,abc\n").unwrap_err().0, 2);
+        assert_eq!(parse("0,0\n0,1\n").unwrap_err().0, 2);
+        assert_eq!(parse("0,0\n1,1,1\n").unwrap_err().0, 2);
+        assert!(parse("0,0\n").is_err());
+    }
+}
