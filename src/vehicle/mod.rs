@@ -8,6 +8,7 @@
 pub mod h20_44;
 pub mod moving_force;
 pub mod oscillator;
+pub mod rail_car;
 
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
@@ -56,7 +57,7 @@ pub struct Wheel {
 #[derive(Debug, Clone)]
 pub struct VehicleModel {
     /// Names of the DOFs, as used by `record: … dof:`.
-    pub dof_names: Vec<&'static str>,
+    pub dof_names: Vec<String>,
     /// Mass matrix, kg (kg·m² for rotations).
     pub mass: DMatrix<f64>,
     /// Damping matrix, N·s/m.
@@ -83,6 +84,8 @@ impl VehicleModel {
             Vehicle::MovingForce(v) => moving_force::build(v),
             Vehicle::Oscillator(v) => oscillator::build(v, gravity),
             Vehicle::H20Truck(v) => h20_44::build(v, gravity),
+            Vehicle::RailCar(v) => rail_car::build(v, gravity),
+            Vehicle::Train(v) => rail_car::build_train(v, gravity),
         }
     }
 
