@@ -87,14 +87,18 @@ impl Guard {
     pub fn energy(model: &Model, modal: &ModalStep, states: &[VehicleState]) -> f64 {
         let mut energy = modal.energy();
         for (vehicle, state) in model.vehicles.iter().zip(states) {
-            let n = vehicle.dofs();
-            for i in 0..n {
-                let di = state.displacement[i] - state.static_displacement[i];
-                for j in 0..n {
+            // Over the diagonal blocks only (a train's cars), column by
+            // column (the matrices are column-major).
+            for block in &vehicle.blocks {
+                for j in block.clone() {
                     let dj = state.displacement[j] - state.static_displacement[j];
-                    energy += 0.5
-                        * (state.velocity[i] * vehicle.mass[(i, j)] * state.velocity[j]
-                            + di * vehicle.stiffness[(i, j)] * dj);
+                    let (mass, stiffness) = (vehicle.mass.column(j), vehicle.stiffness.column(j));
+                    for i in block.clone() {
+                        let di = state.displacement[i] - state.static_displacement[i];
+                        energy += 0.5
+                            * (state.velocity[i] * mass[i] * state.velocity[j]
+                                + di * stiffness[i] * dj);
+                    }
                 }
             }
         }

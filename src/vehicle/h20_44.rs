@@ -155,6 +155,7 @@ pub fn build(v: &H20Truck, gravity: f64) -> VehicleModel {
         damping,
         stiffness,
         gravity_load,
+        blocks: std::iter::once(0..DOFS).collect(),
         wheels,
         speed: v.speed,
         entry_time: v.entry_time,

@@ -66,6 +66,11 @@ pub struct VehicleModel {
     pub stiffness: DMatrix<f64>,
     /// Gravity loads on the DOFs, N (negative: downward).
     pub gravity_load: DVector<f64>,
+    /// Independent diagonal blocks of M, C and K (DOF ranges, in order,
+    /// covering every DOF): the matrices are zero outside them. One block
+    /// for a single vehicle; one per car for a train, whose cars are not
+    /// coupled, so the solvers multiply by the blocks only.
+    pub blocks: Vec<std::ops::Range<usize>>,
     /// Wheels, front first.
     pub wheels: Vec<Wheel>,
     /// Constant speed, m/s.

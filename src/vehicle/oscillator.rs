@@ -27,6 +27,7 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
             -v.sprung_mass * gravity,
             -v.unsprung_mass * gravity,
         ]),
+        blocks: std::iter::once(0..2).collect(),
         wheels: vec![Wheel {
             offset: 0.0,
             lateral: 0.0,

@@ -182,6 +182,7 @@ fn assemble(
         damping,
         stiffness,
         gravity_load,
+        blocks: (0..cars.len()).map(|k| DOFS * k..DOFS * (k + 1)).collect(),
         wheels,
         speed,
         entry_time,
