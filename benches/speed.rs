@@ -57,6 +57,9 @@ fn main() {
     if wanted("monte_carlo") {
         monte_carlo(budget);
     }
+    if wanted("train") {
+        train(budget);
+    }
 }
 
 /// 1000 samples of the Fig. 7-like scene (scenarios/lcp-fig7-monte-carlo.yaml:
@@ -169,6 +172,84 @@ fn monte_carlo(budget: f64) {
         sharded,
         sharded,
         100.0 * (sharded / all - 1.0)
+    );
+    println!();
+}
+
+/// An 8-car train (32 wheelsets, the LCP paper's Table 2 cars 25 m apart)
+/// at 300 km/h over the 32 m beam of `lcp-rail-car-elastic.yaml`, elastic
+/// LCP contact: the cost of a step against the cost of its contact problem,
+/// a 32 × 32 LCP with every wheel in contact, solved once from the last
+/// step's contact set (`solve_warm`, one Gaussian elimination, n³/3 ≈ 11k
+/// multiply-adds, plus an O(n²) check) and once by Lemke from scratch
+/// (n + 1 pivots of n(2n + 2) multiply-adds ≈ 70k, plus the cleanup).
+fn train(budget: f64) {
+    use vbi::solve::lcp::{LcpWorkspace, solve, solve_warm};
+    println!("## 8-car train, elastic LCP: step against contact problem\n");
+    let scene = read_scenario("lcp-rail-car-elastic.yaml").replace(
+        "  - type: rail_car\n    speed: 300 km/h",
+        "  - type: train\n    speed: 300 km/h\n    count: 8\n    car_spacing: 25.0",
+    );
+    let scene: String = scene
+        .lines()
+        .take_while(|l| !l.starts_with("record:"))
+        .map(|l| format!("{l}\n"))
+        .collect::<String>()
+        + "record:\n  - {name: midspan, quantity: bridge_displacement, x: 16.0}\n";
+    let loaded = load(&scene, "train8");
+    let steps = simulate(&loaded).summary.run.steps;
+    let per_step = sample(budget, || {
+        let out = simulate(&loaded);
+        out.summary.run.wall_time / out.summary.run.steps as f64 * 1e9
+    });
+    // A contact problem of the same size and shape: wheelset compliance
+    // 1e-9 m/N on the diagonal (the 1e9 N/m contact spring), coupled by a
+    // smaller symmetric positive definite part (the deck and the car), every
+    // wheel pressed (q < 0).
+    let n = 32;
+    let mut m = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            let d = (i as f64 - j as f64).abs();
+            m[i * n + j] = 2e-10 * (-d / 4.0).exp();
+        }
+        m[i * n + i] += 1e-9;
+    }
+    let q: Vec<f64> = (0..n)
+        .map(|i| -1e-4 * (1.0 + 0.1 * (i % 4) as f64))
+        .collect();
+    let mut z = vec![0.0; n];
+    let mut work = LcpWorkspace::new(n);
+    let reps = 2000;
+    let lemke = sample(budget, || {
+        let start = Instant::now();
+        for _ in 0..reps {
+            solve(&m, &q, &mut z, &mut work).expect("solves");
+        }
+        start.elapsed().as_secs_f64() / reps as f64 * 1e9
+    });
+    let previous = z.clone();
+    let warm = sample(budget, || {
+        let start = Instant::now();
+        for _ in 0..reps {
+            let pivots = solve_warm(&m, &q, &mut z, &mut work, &previous).expect("solves");
+            assert_eq!(pivots, 0);
+        }
+        start.elapsed().as_secs_f64() / reps as f64 * 1e9
+    });
+    let (step_med, step_min) = median_min(per_step);
+    let (lemke_med, lemke_min) = median_min(lemke);
+    let (warm_med, warm_min) = median_min(warm);
+    println!("| case | median ns | min ns | step / case (min / min) |");
+    println!("|---|---:|---:|---:|");
+    println!("| step of the train ({steps} steps) | {step_med:.0} | {step_min:.0} | 1 |");
+    println!(
+        "| 32 × 32 LCP, warm start (accepted) | {warm_med:.0} | {warm_min:.0} | {:.2}× |",
+        step_min / warm_min
+    );
+    println!(
+        "| 32 × 32 LCP, Lemke from scratch | {lemke_med:.0} | {lemke_min:.0} | {:.2}× |",
+        step_min / lemke_min
     );
     println!();
 }

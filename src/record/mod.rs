@@ -290,7 +290,7 @@ impl<'m> Recorder<'m> {
                             model.vehicles[vehicle]
                                 .dof_names
                                 .iter()
-                                .position(|n| *n == d)
+                                .position(|n| n == d)
                         })
                         .expect("DOF names were validated when resolving");
                     let position = PositionRef {

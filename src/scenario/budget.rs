@@ -295,7 +295,7 @@ fn count(x: f64) -> String {
 }
 
 /// Wheels over the raw vehicles (axle loads, one per oscillator, four per
-/// truck), counted before anything is resolved.
+/// truck or rail car, four per car of a train), counted before anything is resolved.
 pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
     vehicles
         .iter()
@@ -303,6 +303,11 @@ pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
             raw::VehicleRaw::MovingForce(m) => m.loads.len().max(1) as f64,
             raw::VehicleRaw::Oscillator(_) => 1.0,
             raw::VehicleRaw::H20Truck(_) => 4.0,
+            raw::VehicleRaw::RailCar(_) => 4.0,
+            raw::VehicleRaw::Train(t) => {
+                let cars = t.cars.as_ref().map_or(0, Vec::len) as f64;
+                4.0 * (t.count.map_or(0.0, |n| n as f64) + cars).max(1.0)
+            }
         })
         .sum()
 }
@@ -359,6 +364,8 @@ pub(super) fn steps_cause(
             Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::RailCar(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Train(v)) if v.start_position.is_some() => "start_position",
             _ => "entry_time",
         };
         return format!("vehicles[{i}].{field}");

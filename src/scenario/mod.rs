@@ -17,6 +17,7 @@ pub mod derive;
 pub mod diagnostic;
 pub mod names;
 mod plausible;
+pub mod rail;
 pub mod raw;
 mod records;
 pub mod resolve;

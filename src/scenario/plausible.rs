@@ -124,6 +124,14 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
                 "N·s/m",
             );
         }
+        Vehicle::RailCar(c) => {
+            super::rail::check_plausible(ck, &p("parameters"), None, &c.parameters);
+        }
+        Vehicle::Train(t) => {
+            for (k, car) in t.cars.iter().enumerate() {
+                super::rail::check_plausible(ck, at, Some(k + 1), &car.parameters);
+            }
+        }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
             for (field, value) in [

@@ -12,11 +12,13 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 mod limits;
+mod rail;
 mod speed;
 mod study;
 mod surface;
 mod truck;
 pub use self::limits::*;
+pub use self::rail::*;
 pub use self::speed::*;
 pub use self::study::*;
 pub use self::surface::*;
@@ -308,6 +310,17 @@ pub enum VehicleRaw {
     /// (see `parameters`).
     #[serde(rename = "h20_44")]
     H20Truck(H20TruckRaw),
+    /// Four-axle rail car with ten DOFs: car body and two bogies (bounce
+    /// and pitch each) over four wheelsets (bounce), a primary
+    /// spring–dashpot between each wheelset and its bogie and a secondary
+    /// one between each bogie and the body (the LCP separation paper's
+    /// Section 5.2). The wheelsets ride the rail through the contact model.
+    /// Parameters default to the paper's Table 2 (see `parameters`).
+    RailCar(RailCarRaw),
+    /// A train of rail cars at one speed: `count` identical cars at
+    /// `car_spacing`, or a `cars` list. Resolved into one vehicle whose
+    /// wheels are every car's wheelsets, numbered front to rear.
+    Train(TrainRaw),
 }
 
 /// Where and how fast a vehicle travels.
@@ -318,9 +331,16 @@ pub struct MovingForceRaw {
     #[schemars(transform = crate::schema::positive_list)]
     pub loads: Vec<f64>,
     /// Distances between consecutive axles, m; one fewer than `loads`.
+    /// Give this or `axle_positions`.
     #[serde(default)]
     #[schemars(transform = crate::schema::positive_items)]
     pub axle_spacings: Option<Vec<f64>>,
+    /// Distance of each axle behind the front axle, m: 0 first, then
+    /// increasing; one per load (an axle-load train such as an HSLM train).
+    /// Give this or `axle_spacings`.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_negative_list)]
+    pub axle_positions: Option<Vec<f64>>,
     /// Constant speed: m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
@@ -579,12 +599,19 @@ pub struct RecordRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::at_least_one)]
     pub vehicle: Option<usize>,
-    /// Wheel number within the vehicle, counted from 1 front to rear (contact forces).
+    /// Wheel number within the vehicle, counted from 1 front to rear
+    /// (contact forces); on a train, over the whole train, or within `car`.
     #[serde(default)]
     #[schemars(transform = crate::schema::at_least_one)]
     pub wheel: Option<usize>,
-    /// Vehicle degree of freedom by name, e.g. `sprung` or `wheel` for the oscillator
-    /// (vehicle quantities).
+    /// Car of a train, counted from 1 front to rear: `wheel` then counts
+    /// that car's wheelsets (1–4) and `dof` names that car's DOF.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::at_least_one)]
+    pub car: Option<usize>,
+    /// Vehicle degree of freedom by name, e.g. `sprung` or `wheel` for the
+    /// oscillator, `body_bounce` or `wheelset3` for a rail car (of a train:
+    /// with `car`) (vehicle quantities).
     #[serde(default)]
     #[schemars(transform = crate::schema::dof_name)]
     pub dof: Option<String>,

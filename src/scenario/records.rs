@@ -5,20 +5,27 @@ use super::raw;
 use super::resolve::Checker;
 use super::resolved::*;
 
-/// DOF names of a resolved vehicle, as the vehicle module defines them.
+use crate::vehicle::rail_car;
+
+/// DOF names a record may give for a resolved vehicle, as the vehicle module
+/// defines them (for a train: one car's names, picked with `car`).
 fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
         Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
         Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
+        Vehicle::RailCar(_) | Vehicle::Train(_) => &rail_car::DOF_NAMES,
     }
 }
 
+/// Wheels of a resolved vehicle (of a train: over all its cars).
 fn wheel_count(vehicle: &Vehicle) -> usize {
     match vehicle {
         Vehicle::MovingForce(v) => v.loads.len(),
         Vehicle::Oscillator(_) => 1,
         Vehicle::H20Truck(_) => 4,
+        Vehicle::RailCar(_) => rail_car::WHEELSETS,
+        Vehicle::Train(t) => rail_car::WHEELSETS * t.cars.len(),
     }
 }
 
@@ -179,24 +186,59 @@ pub(super) fn resolve_records(
                 vehicle = Some(v);
             }
         }
+        // A train's car: wheels and DOFs are then the car's own.
+        let mut car = None;
+        if let Some(k) = r.car {
+            match vehicle.map(|v| &vehicles[v - 1]) {
+                _ if !is_wheel && !is_vehicle_dof => {
+                    ck.error(&format!("{at}.car"), unused("car"));
+                }
+                Some(Vehicle::Train(t)) if k >= 1 && k <= t.cars.len() => car = Some(k),
+                Some(Vehicle::Train(t)) => ck.error(
+                    &format!("{at}.car"),
+                    format!(
+                        "car {k} does not exist; the train (vehicle {}) has cars 1 to {}",
+                        vehicle.unwrap_or(1),
+                        t.cars.len()
+                    ),
+                ),
+                Some(other) => ck.error(
+                    &format!("{at}.car"),
+                    format!(
+                        "`car` picks a car of a train; vehicle {} is a {}",
+                        vehicle.unwrap_or(1),
+                        other.type_name()
+                    ),
+                ),
+                None => {}
+            }
+        }
         let mut wheel = None;
         if is_wheel {
             let w = r.wheel.unwrap_or(1);
             if let Some(v) = vehicle {
-                let n = wheel_count(&vehicles[v - 1]);
+                let n = if car.is_some() {
+                    rail_car::WHEELSETS
+                } else {
+                    wheel_count(&vehicles[v - 1])
+                };
                 if w == 0 || w > n {
                     let kind = vehicles[v - 1].type_name();
                     let wheels = match n {
                         1 => "only wheel 1".to_owned(),
                         n => format!("wheels 1 to {n}"),
                     };
+                    let car_of = car.map_or(String::new(), |k| format!(" car {k}"));
                     ck.error(
                         &format!("{at}.wheel"),
-                        format!("wheel {w} does not exist; vehicle {v} ({kind}) has {wheels}"),
+                        format!(
+                            "wheel {w} does not exist; vehicle {v} ({kind}){car_of} has {wheels}"
+                        ),
                     );
                 }
             }
-            wheel = Some(w);
+            // Stored counted over the whole train.
+            wheel = Some(car.map_or(w, |k| rail_car::WHEELSETS * (k - 1) + w));
         }
         if let (true, Some(v)) = (is_vehicle_dof, vehicle) {
             let names = dof_names(&vehicles[v - 1]);
@@ -228,6 +270,12 @@ pub(super) fn resolve_records(
                 ),
                 _ => {}
             }
+            if matches!(vehicles[v - 1], Vehicle::Train(_)) && car.is_none() && r.dof.is_some() {
+                ck.error(
+                    &at,
+                    format!("vehicle {v} is a train: pick the car with `car:` (from 1)"),
+                );
+            }
         }
         out.push(Record {
             name: r.name.clone(),
@@ -240,7 +288,10 @@ pub(super) fn resolve_records(
             },
             vehicle,
             wheel,
-            dof: r.dof.clone(),
+            dof: match car {
+                Some(k) => r.dof.as_deref().map(|d| rail_car::train_dof_name(k, d)),
+                None => r.dof.clone(),
+            },
             max_frequency,
         });
     }
@@ -285,8 +336,17 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
     }
     for (v, vehicle) in vehicles.iter().enumerate() {
         for w in 0..wheel_count(vehicle) {
+            // A train's wheels are named by car and wheelset within the car.
+            let wheel_name = match vehicle {
+                Vehicle::Train(_) => format!(
+                    "car{}_wheel{}",
+                    w / rail_car::WHEELSETS + 1,
+                    w % rail_car::WHEELSETS + 1
+                ),
+                _ => format!("wheel{}", w + 1),
+            };
             out.push(Record {
-                name: format!("vehicle{}_wheel{}_force", v + 1, w + 1),
+                name: format!("vehicle{}_{wheel_name}_force", v + 1),
                 quantity: Quantity::ContactForce,
                 x: None,
                 y: None,
@@ -297,7 +357,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
             });
             if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
                 out.push(Record {
-                    name: format!("vehicle{}_wheel{}_gap", v + 1, w + 1),
+                    name: format!("vehicle{}_{wheel_name}_gap", v + 1),
                     quantity: Quantity::ContactGap,
                     x: None,
                     y: None,

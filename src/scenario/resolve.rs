@@ -637,8 +637,19 @@ fn resolve_vehicles(
                 for (k, &p) in v.loads.iter().enumerate() {
                     ck.positive(&format!("{at}.loads[{k}]"), p, "an axle load");
                 }
-                let spacings = v.axle_spacings.clone().unwrap_or_default();
-                if spacings.len() + 1 != v.loads.len().max(1) {
+                let spacings = match (&v.axle_positions, &v.axle_spacings) {
+                    (Some(positions), given) => {
+                        if given.is_some() {
+                            ck.error(
+                                &format!("{at}.axle_positions"),
+                                "give `axle_spacings` or `axle_positions`, not both",
+                            );
+                        }
+                        axle_positions_to_spacings(ck, &at, positions, v.loads.len())
+                    }
+                    (None, given) => given.clone().unwrap_or_default(),
+                };
+                if v.axle_positions.is_none() && spacings.len() + 1 != v.loads.len().max(1) {
                     let path = if v.axle_spacings.is_some() {
                         format!("{at}.axle_spacings")
                     } else {
@@ -722,9 +733,60 @@ fn resolve_vehicles(
             raw::VehicleRaw::H20Truck(v) => {
                 out.push(super::truck::resolve_h20(v, &at, width, ck));
             }
+            raw::VehicleRaw::RailCar(v) => {
+                out.push(super::rail::resolve_rail_car(v, &at, width, ck));
+            }
+            raw::VehicleRaw::Train(v) => {
+                out.push(super::rail::resolve_train(v, &at, width, ck));
+            }
         }
     }
     (ck.diagnostics.len() == before).then_some(out)
+}
+
+/// An axle-load train's axle positions behind its front axle (0 first,
+/// strictly increasing, one per load) as the spacings between consecutive
+/// axles, m; errors at `{at}.axle_positions`.
+fn axle_positions_to_spacings(
+    ck: &mut Checker<'_>,
+    at: &str,
+    positions: &[f64],
+    loads: usize,
+) -> Vec<f64> {
+    let path = format!("{at}.axle_positions");
+    if positions.len() != loads {
+        ck.error(
+            &path,
+            format!(
+                "{loads} axle loads need {loads} axle positions, found {}",
+                positions.len()
+            ),
+        );
+        return Vec::new();
+    }
+    if let Some(&first) = positions.first()
+        && first != 0.0
+    {
+        ck.error(
+            &format!("{path}[0]"),
+            format!("the front axle is the reference: its position must be 0, got {first}"),
+        );
+    }
+    let mut spacings = Vec::with_capacity(positions.len().saturating_sub(1));
+    for (k, pair) in positions.windows(2).enumerate() {
+        let spacing = pair[1] - pair[0];
+        if spacing <= 0.0 {
+            ck.error(
+                &format!("{path}[{}]", k + 1),
+                format!(
+                    "axle positions must increase from front to rear: {} m follows {} m",
+                    pair[1], pair[0]
+                ),
+            );
+        }
+        spacings.push(spacing);
+    }
+    spacings
 }
 
 /// The transverse position of a vehicle's path: only on a plate (default

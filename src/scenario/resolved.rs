@@ -6,8 +6,10 @@
 
 use serde::Serialize;
 
+mod rail;
 mod study;
 mod surface;
+pub use self::rail::*;
 pub use self::study::*;
 pub use self::surface::*;
 pub use super::budget::Limits;
@@ -313,6 +315,10 @@ pub enum Vehicle {
     /// H20-44 seven-DOF truck.
     #[serde(rename = "h20_44")]
     H20Truck(H20Truck),
+    /// Four-axle 10-DOF rail car.
+    RailCar(RailCar),
+    /// A train of rail cars.
+    Train(Train),
 }
 
 impl Vehicle {
@@ -322,6 +328,8 @@ impl Vehicle {
             Vehicle::MovingForce(v) => v.lateral_position,
             Vehicle::Oscillator(v) => v.lateral_position,
             Vehicle::H20Truck(v) => v.lateral_position,
+            Vehicle::RailCar(v) => v.lateral_position,
+            Vehicle::Train(v) => v.lateral_position,
         }
     }
 
@@ -331,6 +339,8 @@ impl Vehicle {
             Vehicle::MovingForce(v) => v.speed,
             Vehicle::Oscillator(v) => v.speed,
             Vehicle::H20Truck(v) => v.speed,
+            Vehicle::RailCar(v) => v.speed,
+            Vehicle::Train(v) => v.speed,
         }
     }
     /// Time at which the front axle reaches the entrance, s.
@@ -339,6 +349,8 @@ impl Vehicle {
             Vehicle::MovingForce(v) => v.entry_time,
             Vehicle::Oscillator(v) => v.entry_time,
             Vehicle::H20Truck(v) => v.entry_time,
+            Vehicle::RailCar(v) => v.entry_time,
+            Vehicle::Train(v) => v.entry_time,
         }
     }
     /// Distance from the front axle back to the rear axle, m.
@@ -349,6 +361,8 @@ impl Vehicle {
             Vehicle::H20Truck(v) => {
                 v.parameters.front_axle_to_centre + v.parameters.centre_to_rear_axle
             }
+            Vehicle::RailCar(v) => crate::vehicle::rail_car::wheelset_span(&v.parameters),
+            Vehicle::Train(v) => v.length(),
         }
     }
     /// Type name as written in the format.
@@ -357,6 +371,8 @@ impl Vehicle {
             Vehicle::MovingForce(_) => "moving_force",
             Vehicle::Oscillator(_) => "oscillator",
             Vehicle::H20Truck(_) => "h20_44",
+            Vehicle::RailCar(_) => "rail_car",
+            Vehicle::Train(_) => "train",
         }
     }
 }
@@ -556,10 +572,11 @@ pub struct Record {
     /// Vehicle number from 1.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vehicle: Option<usize>,
-    /// Wheel number from 1.
+    /// Wheel number from 1 (on a train, counted over the whole train: car
+    /// k's wheelsets are 4k−3 … 4k).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wheel: Option<usize>,
-    /// Vehicle DOF name.
+    /// Vehicle DOF name (on a train, `car{k}_` and the car's DOF name).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dof: Option<String>,
     /// Bridge accelerations: the highest mode frequency summed, Hz (modes

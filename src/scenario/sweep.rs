@@ -21,6 +21,8 @@ pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
             Vehicle::MovingForce(v) => v.speed = speed,
             Vehicle::Oscillator(v) => v.speed = speed,
             Vehicle::H20Truck(v) => v.speed = speed,
+            Vehicle::RailCar(v) => v.speed = speed,
+            Vehicle::Train(v) => v.speed = speed,
         }
     }
     out

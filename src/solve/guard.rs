@@ -87,14 +87,30 @@ impl Guard {
     pub fn energy(model: &Model, modal: &ModalStep, states: &[VehicleState]) -> f64 {
         let mut energy = modal.energy();
         for (vehicle, state) in model.vehicles.iter().zip(states) {
+            // Over the diagonal blocks only (a train's cars), column by
+            // column on the column-major storage.
             let n = vehicle.dofs();
-            for i in 0..n {
-                let di = state.displacement[i] - state.static_displacement[i];
-                for j in 0..n {
-                    let dj = state.displacement[j] - state.static_displacement[j];
-                    energy += 0.5
-                        * (state.velocity[i] * vehicle.mass[(i, j)] * state.velocity[j]
-                            + di * vehicle.stiffness[(i, j)] * dj);
+            let (mass, stiffness) = (vehicle.mass.as_slice(), vehicle.stiffness.as_slice());
+            let (u, u0, v) = (
+                state.displacement.as_slice(),
+                state.static_displacement.as_slice(),
+                state.velocity.as_slice(),
+            );
+            for block in &vehicle.blocks {
+                for j in block.clone() {
+                    let (dj, vj) = (u[j] - u0[j], v[j]);
+                    let column = j * n + block.start..j * n + block.end;
+                    let (mass, stiffness) = (&mass[column.clone()], &stiffness[column]);
+                    let rows = block.clone();
+                    let (ub, u0b, vb) = (&u[rows.clone()], &u0[rows.clone()], &v[rows]);
+                    // Two short independent sums per column rather than one
+                    // long dependent chain over the whole block.
+                    let (mut momentum, mut force) = (0.0, 0.0);
+                    for i in 0..block.len() {
+                        momentum += vb[i] * mass[i];
+                        force += (ub[i] - u0b[i]) * stiffness[i];
+                    }
+                    energy += 0.5 * (momentum * vj + force * dj);
                 }
             }
         }

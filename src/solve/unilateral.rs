@@ -28,7 +28,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::guard::Guard;
-use super::lcp::{LcpWorkspace, solve as solve_lcp};
+use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
@@ -48,6 +48,8 @@ struct ContactWheel {
     dof: usize,
     /// Column of this wheel in its vehicle's H.
     column: usize,
+    /// The vehicle's diagonal block that holds `dof`: first DOF and size.
+    block: (usize, usize),
 }
 
 #[derive(Debug, Clone)]
@@ -91,11 +93,18 @@ pub fn run(
     for (flat, r) in model.wheels.iter().enumerate() {
         match model.vehicles[r.vehicle].wheels[r.wheel].kind {
             WheelKind::Dof(dof) => {
+                let vehicle = &model.vehicles[r.vehicle];
+                let block = vehicle
+                    .blocks
+                    .iter()
+                    .find(|b| b.contains(&dof))
+                    .map_or((0, vehicle.dofs()), |b| (b.start, b.len()));
                 contacts.push(ContactWheel {
                     wheel: flat,
                     vehicle: r.vehicle,
                     dof,
                     column: columns[r.vehicle],
+                    block,
                 });
                 columns[r.vehicle] += 1;
             }
@@ -111,12 +120,12 @@ pub fn run(
         let effective =
             &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
         let effective_flexibility =
-            effective
-                .try_inverse()
-                .ok_or_else(|| SolveError::SingularContact {
+            block_inverse(&effective, &vehicle.blocks).ok_or_else(|| {
+                SolveError::SingularContact {
                     time: 0.0,
                     reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-                })?;
+                }
+            })?;
         let mut contact_response = DMatrix::zeros(n, columns[v]);
         for c in contacts.iter().filter(|c| c.vehicle == v) {
             contact_response.set_column(
@@ -132,7 +141,10 @@ pub fn run(
             inertia_history: DVector::zeros(n),
             damping_history: DVector::zeros(n),
             predictor: DVector::zeros(n),
-            recovery: (&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)).try_inverse(),
+            recovery: block_inverse(
+                &(&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)),
+                &vehicle.blocks,
+            ),
             recovery_load: DVector::zeros(n),
             previous_velocity: DVector::zeros(n),
             previous_acceleration: DVector::zeros(n),
@@ -159,6 +171,8 @@ pub fn run(
     let mut was_apart = vec![false; nc];
     let mut scaled = vec![0.0; nc * modes];
     let mut free_gap = vec![0.0; nc];
+    // Whether each contact wheel is on the deck this step.
+    let mut on_deck = vec![false; nc];
     let mut compliance = vec![0.0; nc * nc];
     let mut lcp_matrix = vec![0.0; nc * nc];
     let mut lcp_vector = vec![0.0; nc];
@@ -213,16 +227,37 @@ pub fn run(
                 vs.inertia_history[k] = nm.inertia_history(u, v, a);
                 vs.damping_history[k] = nm.damping_history(u, v, a);
             }
+            let blocks = &vehicle.blocks;
             vs.effective_load.copy_from(&vehicle.gravity_load);
-            vs.effective_load
-                .gemv(1.0, &vehicle.mass, &vs.inertia_history, 1.0);
-            vs.effective_load
-                .gemv(nm.weight(), &vehicle.damping, &vs.damping_history, 1.0);
+            block_gemv(
+                &mut vs.effective_load,
+                1.0,
+                &vehicle.mass,
+                &vs.inertia_history,
+                blocks,
+            );
+            block_gemv(
+                &mut vs.effective_load,
+                nm.weight(),
+                &vehicle.damping,
+                &vs.damping_history,
+                blocks,
+            );
             if nm.alpha != 0.0 {
-                vs.effective_load
-                    .gemv(nm.alpha, &vehicle.damping, &state.velocity, 1.0);
-                vs.effective_load
-                    .gemv(nm.alpha, &vehicle.stiffness, &state.displacement, 1.0);
+                block_gemv(
+                    &mut vs.effective_load,
+                    nm.alpha,
+                    &vehicle.damping,
+                    &state.velocity,
+                    blocks,
+                );
+                block_gemv(
+                    &mut vs.effective_load,
+                    nm.alpha,
+                    &vehicle.stiffness,
+                    &state.displacement,
+                    blocks,
+                );
             }
         }
         if nm.alpha != 0.0 {
@@ -230,21 +265,35 @@ pub fn run(
                 steps[contact.vehicle].effective_load[contact.dof] -= nm.alpha * carried[c];
             }
         }
-        for vs in steps.iter_mut() {
-            vs.predictor
-                .gemv(1.0, &vs.effective_flexibility, &vs.effective_load, 0.0);
+        for (vs, vehicle) in steps.iter_mut().zip(&model.vehicles) {
+            vs.predictor.fill(0.0);
+            block_gemv(
+                &mut vs.predictor,
+                1.0,
+                &vs.effective_flexibility,
+                &vs.effective_load,
+                &vehicle.blocks,
+            );
         }
 
         // Free gaps g* and the contact compliance W.
         for (c, contact) in contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
+            on_deck[c] = bridge.is_on(x);
             let phi = &mut shapes[c * modes..(c + 1) * modes];
-            bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
             let scaled_c = &mut scaled[c * modes..(c + 1) * modes];
-            for i in 0..modes {
-                scaled_c[i] = phi[i] * modal.contact_flexibility[i];
+            // Off the deck every mode value is 0: no lookup needed.
+            let mut deck = 0.0;
+            if on_deck[c] {
+                bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
+                for i in 0..modes {
+                    scaled_c[i] = phi[i] * modal.contact_flexibility[i];
+                }
+                deck = phi.iter().zip(&modal.predictor).map(|(p, q)| p * q).sum();
+            } else {
+                phi.fill(0.0);
+                scaled_c.fill(0.0);
             }
-            let deck: f64 = phi.iter().zip(&modal.predictor).map(|(p, q)| p * q).sum();
             free_gap[c] = steps[contact.vehicle].predictor[contact.dof]
                 - deck
                 - model
@@ -253,18 +302,28 @@ pub fn run(
         }
         for a in 0..nc {
             for b in 0..=a {
-                let pa = &shapes[a * modes..(a + 1) * modes];
-                let sb = &scaled[b * modes..(b + 1) * modes];
-                let mut w: f64 = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
-                // The modes left out add their static flexibility between the
-                // two contacts (contact static correction; 0 when off).
-                w += bridge.residual_flexibility(
-                    wheel_positions[contacts[a].wheel],
-                    wheel_positions[contacts[b].wheel],
-                    pa,
-                    &shapes[b * modes..(b + 1) * modes],
-                );
                 let (ca, cb) = (contacts[a], contacts[b]);
+                // A wheel off the deck has no mode values and no residual
+                // flexibility (both exactly 0): skip the O(modes) work, which
+                // dominates long trains with most wheels off the bridge.
+                let mut w = 0.0;
+                if on_deck[a] && on_deck[b] {
+                    let pa = &shapes[a * modes..(a + 1) * modes];
+                    let sb = &scaled[b * modes..(b + 1) * modes];
+                    w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
+                    // The modes left out add their static flexibility between the
+                    // two contacts (contact static correction; 0 when off).
+                    w += bridge.residual_flexibility(
+                        wheel_positions[ca.wheel],
+                        wheel_positions[cb.wheel],
+                        pa,
+                        &shapes[b * modes..(b + 1) * modes],
+                    );
+                } else if ca.vehicle != cb.vehicle {
+                    compliance[a * nc + b] = 0.0;
+                    compliance[b * nc + a] = 0.0;
+                    continue;
+                }
                 if ca.vehicle == cb.vehicle {
                     w += steps[ca.vehicle].contact_response[(ca.dof, cb.column)];
                 }
@@ -288,8 +347,16 @@ pub fn run(
                             lcp_matrix[c * nc + c] += 1.0 / stiffness;
                         }
                     }
-                    solve_lcp(&lcp_matrix, &free_gap, &mut lambda, &mut workspace)
-                        .map_err(|e| fail(e.to_string()))?;
+                    // Warm start from the last step's contact set.
+                    previous.copy_from_slice(&lambda);
+                    solve_warm(
+                        &lcp_matrix,
+                        &free_gap,
+                        &mut lambda,
+                        &mut workspace,
+                        &previous,
+                    )
+                    .map_err(|e| fail(e.to_string()))?;
                 }
                 ContactLaw::Hertz { coefficient } => {
                     previous.copy_from_slice(&lambda);
@@ -306,8 +373,15 @@ pub fn run(
                             lcp_matrix[c * nc + c] += 1.0 / tangent;
                             lcp_vector[c] = free_gap[c] + delta / 3.0;
                         }
-                        solve_lcp(&lcp_matrix, &lcp_vector, &mut lambda, &mut workspace)
-                            .map_err(|e| fail(e.to_string()))?;
+                        // Warm start from the current iterate's contact set.
+                        solve_warm(
+                            &lcp_matrix,
+                            &lcp_vector,
+                            &mut lambda,
+                            &mut workspace,
+                            &previous,
+                        )
+                        .map_err(|e| fail(e.to_string()))?;
                         let scale = lambda
                             .iter()
                             .chain(&previous)
@@ -339,10 +413,17 @@ pub fn run(
             contact_gaps[contact.wheel] =
                 free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
             contact_forces[contact.wheel] = lambda[c];
-            modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
+            if on_deck[c] {
+                modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
+            }
             let vs = &mut steps[contact.vehicle];
-            vs.predictor
-                .axpy(lambda[c], &vs.contact_response.column(contact.column), 1.0);
+            // The response is zero outside the wheel's block (its car).
+            let (start, len) = contact.block;
+            vs.predictor.rows_mut(start, len).axpy(
+                lambda[c],
+                &vs.contact_response.column(contact.column).rows(start, len),
+                1.0,
+            );
         }
         modal.finish(&nm);
         // The external forces of the step on each vehicle: f_g + wEλ_{n+1} − αEλₙ.
@@ -372,22 +453,49 @@ pub fn run(
             vs.previous_velocity.copy_from(&state.velocity);
             vs.previous_acceleration.copy_from(&state.acceleration);
             vs.previous_displacement.copy_from(&state.displacement);
+            let blocks = &vehicle.blocks;
             vs.recovery_load += &vehicle.gravity_load;
-            vs.recovery_load
-                .gemv(-w, &vehicle.stiffness, &vs.predictor, 1.0);
+            block_gemv(
+                &mut vs.recovery_load,
+                -w,
+                &vehicle.stiffness,
+                &vs.predictor,
+                blocks,
+            );
             vs.predicted_velocity.copy_from(&vs.previous_velocity);
             vs.predicted_velocity
                 .axpy(nm.a6, &vs.previous_acceleration, 1.0);
-            vs.recovery_load
-                .gemv(-w, &vehicle.damping, &vs.predicted_velocity, 1.0);
+            block_gemv(
+                &mut vs.recovery_load,
+                -w,
+                &vehicle.damping,
+                &vs.predicted_velocity,
+                blocks,
+            );
             if nm.alpha != 0.0 {
-                vs.recovery_load
-                    .gemv(nm.alpha, &vehicle.damping, &vs.previous_velocity, 1.0);
-                vs.recovery_load
-                    .gemv(nm.alpha, &vehicle.stiffness, &vs.previous_displacement, 1.0);
+                block_gemv(
+                    &mut vs.recovery_load,
+                    nm.alpha,
+                    &vehicle.damping,
+                    &vs.previous_velocity,
+                    blocks,
+                );
+                block_gemv(
+                    &mut vs.recovery_load,
+                    nm.alpha,
+                    &vehicle.stiffness,
+                    &vs.previous_displacement,
+                    blocks,
+                );
             }
-            vs.recovered_acceleration
-                .gemv(1.0, recovery, &vs.recovery_load, 0.0);
+            vs.recovered_acceleration.fill(0.0);
+            block_gemv(
+                &mut vs.recovered_acceleration,
+                1.0,
+                recovery,
+                &vs.recovery_load,
+                blocks,
+            );
             for k in 0..state.displacement.len() {
                 let a_new = vs.recovered_acceleration[k];
                 state.velocity[k] =
@@ -457,4 +565,59 @@ pub fn run(
         }
     }
     Ok(())
+}
+
+/// y += a · A x over the diagonal blocks `blocks` of A (zero outside them:
+/// a train's cars), so a train of N cars costs N small products instead
+/// of one N²-times larger dense one: column by column on the column-major
+/// storage, y += (a xⱼ) A[:, j]. One block covering every DOF (every
+/// vehicle but a train) keeps nalgebra's dense product.
+fn block_gemv(
+    y: &mut DVector<f64>,
+    a: f64,
+    matrix: &DMatrix<f64>,
+    x: &DVector<f64>,
+    blocks: &[std::ops::Range<usize>],
+) {
+    let n = matrix.nrows();
+    if blocks.len() == 1 && blocks[0] == (0..n) {
+        // One vehicle: nalgebra's product, whose rounding the golden
+        // snapshots of rigid contact (chattering wheels) are sensitive to.
+        y.gemv(a, matrix, x, 1.0);
+        return;
+    }
+    let (data, x, y) = (matrix.as_slice(), x.as_slice(), y.as_mut_slice());
+    for block in blocks {
+        let y = &mut y[block.clone()];
+        for j in block.clone() {
+            let factor = a * x[j];
+            let column = &data[j * n + block.start..j * n + block.end];
+            for (yi, aij) in y.iter_mut().zip(column) {
+                *yi += factor * aij;
+            }
+        }
+    }
+}
+
+/// Inverse of a matrix that is zero outside its diagonal blocks `blocks`,
+/// block by block (so the inverse is exactly zero outside them too); the
+/// plain inverse for one block covering every DOF. `None` if a block is
+/// singular.
+fn block_inverse(matrix: &DMatrix<f64>, blocks: &[std::ops::Range<usize>]) -> Option<DMatrix<f64>> {
+    let n = matrix.nrows();
+    if blocks.len() == 1 && blocks[0] == (0..n) {
+        return matrix.clone().try_inverse();
+    }
+    let mut inverse = DMatrix::zeros(n, n);
+    for block in blocks {
+        let (start, len) = (block.start, block.len());
+        let part = matrix
+            .view((start, start), (len, len))
+            .into_owned()
+            .try_inverse()?;
+        inverse
+            .view_mut((start, start), (len, len))
+            .copy_from(&part);
+    }
+    Some(inverse)
 }

@@ -150,11 +150,12 @@ pub fn build(v: &H20Truck, gravity: f64) -> VehicleModel {
     gravity_load[3] = -p.front_axle_mass * gravity;
     gravity_load[5] = -p.rear_axle_mass * gravity;
     VehicleModel {
-        dof_names: DOF_NAMES.to_vec(),
+        dof_names: DOF_NAMES.iter().map(|&n| n.to_owned()).collect(),
         mass,
         damping,
         stiffness,
         gravity_load,
+        blocks: std::iter::once(0..DOFS).collect(),
         wheels,
         speed: v.speed,
         entry_time: v.entry_time,

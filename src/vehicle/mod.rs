@@ -8,6 +8,7 @@
 pub mod h20_44;
 pub mod moving_force;
 pub mod oscillator;
+pub mod rail_car;
 
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
@@ -56,7 +57,7 @@ pub struct Wheel {
 #[derive(Debug, Clone)]
 pub struct VehicleModel {
     /// Names of the DOFs, as used by `record: … dof:`.
-    pub dof_names: Vec<&'static str>,
+    pub dof_names: Vec<String>,
     /// Mass matrix, kg (kg·m² for rotations).
     pub mass: DMatrix<f64>,
     /// Damping matrix, N·s/m.
@@ -65,6 +66,11 @@ pub struct VehicleModel {
     pub stiffness: DMatrix<f64>,
     /// Gravity loads on the DOFs, N (negative: downward).
     pub gravity_load: DVector<f64>,
+    /// Independent diagonal blocks of M, C and K (DOF ranges, in order,
+    /// covering every DOF): the matrices are zero outside them. One block
+    /// for a single vehicle; one per car for a train, whose cars are not
+    /// coupled, so the solvers multiply by the blocks only.
+    pub blocks: Vec<std::ops::Range<usize>>,
     /// Wheels, front first.
     pub wheels: Vec<Wheel>,
     /// Constant speed, m/s.
@@ -83,6 +89,8 @@ impl VehicleModel {
             Vehicle::MovingForce(v) => moving_force::build(v),
             Vehicle::Oscillator(v) => oscillator::build(v, gravity),
             Vehicle::H20Truck(v) => h20_44::build(v, gravity),
+            Vehicle::RailCar(v) => rail_car::build(v, gravity),
+            Vehicle::Train(v) => rail_car::build_train(v, gravity),
         }
     }
 

@@ -30,6 +30,7 @@ pub fn build(v: &MovingForce) -> VehicleModel {
         damping: DMatrix::zeros(0, 0),
         stiffness: DMatrix::zeros(0, 0),
         gravity_load: DVector::zeros(0),
+        blocks: Vec::new(),
         wheels,
         speed: v.speed,
         entry_time: v.entry_time,

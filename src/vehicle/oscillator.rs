@@ -19,7 +19,7 @@ pub const DOF_NAMES: [&str; 2] = ["sprung", "wheel"];
 pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
     let (k, c) = (v.stiffness, v.damping);
     VehicleModel {
-        dof_names: DOF_NAMES.to_vec(),
+        dof_names: DOF_NAMES.iter().map(|&n| n.to_owned()).collect(),
         mass: DMatrix::from_row_slice(2, 2, &[v.sprung_mass, 0.0, 0.0, v.unsprung_mass]),
         damping: DMatrix::from_row_slice(2, 2, &[c, -c, -c, c]),
         stiffness: DMatrix::from_row_slice(2, 2, &[k, -k, -k, k]),
@@ -27,6 +27,7 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
             -v.sprung_mass * gravity,
             -v.unsprung_mass * gravity,
         ]),
+        blocks: std::iter::once(0..2).collect(),
         wheels: vec![Wheel {
             offset: 0.0,
             lateral: 0.0,

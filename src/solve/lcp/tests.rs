@@ -160,6 +160,55 @@ fn run(m: &[f64], q: &[f64]) -> (Result<usize, LcpError>, Vec<f64>) {
     (r, z)
 }
 
+/// Warm start: on 600 random SPD LCPs (n = 1..32, planted solutions with
+/// random contact sets) `solve_warm` returns a valid solution equal to
+/// Lemke's (1e-9 of ‖z‖∞; the P-matrix LCP has one solution) whatever the
+/// guess: the right contact set (0 pivots: accepted without Lemke), a
+/// wrong one, none, or everything (these fall back to Lemke unless they
+/// happen to verify).
+#[test]
+fn warm_start_agrees_with_lemke() {
+    let mut rng = Rng(0x5151_2026_1123_0011);
+    let mut ws = LcpWorkspace::new(2);
+    for case in 0..600 {
+        let n = 1 + case % 32;
+        let m = random_spd(&mut rng, n);
+        let active: Vec<bool> = (0..n).map(|_| rng.unif(0.0, 1.0) < 0.6).collect();
+        let zs: Vec<f64> = active
+            .iter()
+            .map(|&a| if a { rng.unif(0.1, 2.0) } else { 0.0 })
+            .collect();
+        let ss: Vec<f64> = active
+            .iter()
+            .map(|&a| if a { 0.0 } else { rng.unif(0.1, 2.0) })
+            .collect();
+        let q = planted(&m, &zs, &ss);
+        let (reference, z_ref) = run(&m, &q);
+        reference.expect("Lemke solves an SPD LCP");
+        let wrong: Vec<f64> = active.iter().map(|&a| if a { 0.0 } else { 1.0 }).collect();
+        for (label, guess) in [
+            ("right", zs.clone()),
+            ("wrong", wrong),
+            ("none", vec![0.0; n]),
+            ("all", vec![1.0; n]),
+        ] {
+            let mut z = vec![f64::NAN; n];
+            let pivots = solve_warm(&m, &q, &mut z, &mut ws, &guess).expect("solves");
+            if label == "right" && active.iter().any(|&a| a) {
+                assert_eq!(pivots, 0, "case {case}: the right set needs no pivot");
+            }
+            assert_valid(&m, &q, &z, 1e-9);
+            let scale = z_ref.iter().fold(1e-300f64, |a, v| a.max(v.abs()));
+            for (a, b) in z.iter().zip(&z_ref) {
+                assert!(
+                    (a - b).abs() <= 1e-9 * scale,
+                    "case {case} ({label}): {a} against {b}"
+                );
+            }
+        }
+    }
+}
+
 /// Test 1: 3 840 random P-matrix LCPs (SPD AᵀA + εI, diagonally dominant nonsymmetric, SPD
 /// with condition number 1e8), n = 1..10, M and q scaled by random factors 1e±6, against
 /// brute-force enumeration (unique solution). Tolerance ‖z − z_ref‖∞ ≤ tol·‖z_ref‖∞ with

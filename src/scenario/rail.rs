@@ -1,0 +1,299 @@
+//! Resolving rail vehicles: the rail car's preset and overrides, and a
+//! train's expansion into cars.
+
+use super::plausible::{DAMPING, MASS, STIFFNESS, within};
+use super::raw;
+use super::resolve::{Checker, check_speed, entry_time, lateral};
+use super::resolved::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
+use crate::vehicle::rail_car::wheelset_span;
+
+/// The rail car preset: the LCP separation paper's Table 2 (Section 5.2),
+/// whose values are legible in our copy: car body M_c = 31 994 kg and
+/// J_c = 2.1e6 kg·m²; bogie M_b = 3 333 kg and J_b = 3 200 kg·m²; wheelset
+/// M_w = 1 650 kg; primary suspension k_p = 4 720 kN/m and c_p = 160 kN·s/m
+/// per wheelset; secondary suspension k_s = 160 kN/m and c_s = 200 kN·s/m
+/// per bogie; half bogie spacing a = 8.75 m; half wheelbase b = 1.25 m.
+/// Every value can be overridden in `parameters`.
+pub const LCP_RAIL_CAR_PRESET: RailCarParameters = RailCarParameters {
+    body_mass: 31_994.0,
+    body_pitch_inertia: 2.1e6,
+    bogie_mass: 3_333.0,
+    bogie_pitch_inertia: 3_200.0,
+    wheelset_mass: 1_650.0,
+    primary_stiffness: 4.72e6,
+    primary_damping: 1.6e5,
+    secondary_stiffness: 1.6e5,
+    secondary_damping: 2.0e5,
+    half_bogie_spacing: 8.75,
+    half_wheelbase: 1.25,
+};
+
+/// Most cars in one train (a freight train of 3 km has ~200 cars); the
+/// wheel budget (`limits.wheels`) usually binds first.
+pub const MAX_CARS: usize = 1_000;
+
+/// Applies the overrides `o` (at `path`) to `p`, checking each given value.
+fn apply(
+    p: &mut RailCarParameters,
+    o: Option<&raw::RailCarParametersRaw>,
+    path: &str,
+    ck: &mut Checker<'_>,
+) {
+    let Some(o) = o else { return };
+    let mut take = |target: &mut f64, given: Option<f64>, name: &str, allow_zero: bool| {
+        if let Some(value) = given {
+            let at = format!("{path}.{name}");
+            if allow_zero {
+                ck.non_negative(&at, value, name);
+            } else {
+                ck.positive(&at, value, name);
+            }
+            *target = value;
+        }
+    };
+    take(&mut p.body_mass, o.body_mass, "body_mass", false);
+    take(
+        &mut p.body_pitch_inertia,
+        o.body_pitch_inertia,
+        "body_pitch_inertia",
+        false,
+    );
+    take(&mut p.bogie_mass, o.bogie_mass, "bogie_mass", false);
+    take(
+        &mut p.bogie_pitch_inertia,
+        o.bogie_pitch_inertia,
+        "bogie_pitch_inertia",
+        false,
+    );
+    take(
+        &mut p.wheelset_mass,
+        o.wheelset_mass,
+        "wheelset_mass",
+        false,
+    );
+    take(
+        &mut p.primary_stiffness,
+        o.primary_stiffness,
+        "primary_stiffness",
+        false,
+    );
+    take(
+        &mut p.primary_damping,
+        o.primary_damping,
+        "primary_damping",
+        true,
+    );
+    take(
+        &mut p.secondary_stiffness,
+        o.secondary_stiffness,
+        "secondary_stiffness",
+        false,
+    );
+    take(
+        &mut p.secondary_damping,
+        o.secondary_damping,
+        "secondary_damping",
+        true,
+    );
+    take(
+        &mut p.half_bogie_spacing,
+        o.half_bogie_spacing,
+        "half_bogie_spacing",
+        true,
+    );
+    take(
+        &mut p.half_wheelbase,
+        o.half_wheelbase,
+        "half_wheelbase",
+        true,
+    );
+}
+
+/// Resolves one rail car at `at` (e.g. `vehicles[0]`).
+pub(super) fn resolve_rail_car(
+    v: &raw::RailCarRaw,
+    at: &str,
+    width: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Vehicle {
+    check_speed(ck, at, v.speed.0);
+    let mut p = LCP_RAIL_CAR_PRESET;
+    apply(
+        &mut p,
+        v.parameters.as_ref(),
+        &format!("{at}.parameters"),
+        ck,
+    );
+    Vehicle::RailCar(RailCar {
+        speed: v.speed.0,
+        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
+        lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
+        parameters: p,
+    })
+}
+
+/// Resolves a train at `at`: `count` cars at `car_spacing`, or the `cars`
+/// list, each car's front-wheelset offset behind the first car's summed
+/// from the spacings. A spacing shorter than the car ahead's wheelset span
+/// would put wheels of two cars out of order on the track and is refused.
+pub(super) fn resolve_train(
+    v: &raw::TrainRaw,
+    at: &str,
+    width: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Vehicle {
+    check_speed(ck, at, v.speed.0);
+    let mut shared = LCP_RAIL_CAR_PRESET;
+    apply(
+        &mut shared,
+        v.parameters.as_ref(),
+        &format!("{at}.parameters"),
+        ck,
+    );
+    let mut cars = Vec::new();
+    match (v.count, v.car_spacing, &v.cars) {
+        (Some(n), spacing, None) => {
+            if n == 0 || n > MAX_CARS {
+                ck.error(
+                    &format!("{at}.count"),
+                    format!("a train has 1 to {MAX_CARS} cars, got {n}"),
+                );
+            } else if n > 1 && spacing.is_none() {
+                ck.error(at, "`count` cars need `car_spacing`, m");
+            } else {
+                let spacing = spacing.unwrap_or(0.0);
+                if n > 1 {
+                    check_spacing(ck, &format!("{at}.car_spacing"), spacing, &shared);
+                }
+                cars.extend((0..n).map(|k| TrainCar {
+                    offset: k as f64 * spacing,
+                    parameters: shared,
+                }));
+            }
+        }
+        (None, None, Some(list)) => {
+            if list.is_empty() {
+                ck.error(&format!("{at}.cars"), "`cars` needs at least one car");
+            }
+            let mut offset = 0.0;
+            let mut previous: Option<RailCarParameters> = None;
+            for (k, car) in list.iter().enumerate() {
+                let path = format!("{at}.cars[{k}]");
+                let mut p = shared;
+                apply(
+                    &mut p,
+                    car.parameters.as_ref(),
+                    &format!("{path}.parameters"),
+                    ck,
+                );
+                match (previous, car.spacing) {
+                    (None, Some(_)) => ck.error(
+                        &format!("{path}.spacing"),
+                        "the first car has no car ahead: leave out its `spacing`",
+                    ),
+                    (Some(_), None) => ck.error(
+                        &path,
+                        "every car but the first needs `spacing`, m from the front wheelset \
+                         of the car ahead",
+                    ),
+                    (Some(ahead), Some(s)) => {
+                        check_spacing(ck, &format!("{path}.spacing"), s, &ahead);
+                        offset += s;
+                    }
+                    (None, None) => {}
+                }
+                cars.push(TrainCar {
+                    offset,
+                    parameters: p,
+                });
+                previous = Some(p);
+            }
+        }
+        (Some(_), _, Some(_)) => ck.error(
+            &format!("{at}.cars"),
+            "give `count` (with `car_spacing`) or `cars`, not both",
+        ),
+        (None, Some(_), Some(_)) => ck.error(
+            &format!("{at}.car_spacing"),
+            "`car_spacing` goes with `count`; in a `cars` list each car gives its `spacing`",
+        ),
+        (None, _, None) => ck.error(
+            at,
+            "a train needs `count` (with `car_spacing`) or a `cars` list",
+        ),
+    }
+    Vehicle::Train(Train {
+        speed: v.speed.0,
+        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
+        lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
+        cars,
+    })
+}
+
+/// A car spacing must leave the car ahead's wheelsets in front of this
+/// car's: spacing > 2(a + b) of the car ahead.
+fn check_spacing(ck: &mut Checker<'_>, path: &str, spacing: f64, ahead: &RailCarParameters) {
+    ck.positive(path, spacing, "car spacing");
+    let span = wheelset_span(ahead);
+    if spacing > 0.0 && spacing <= span {
+        ck.error(
+            path,
+            format!(
+                "a car spacing of {spacing} m overlaps the car ahead, whose wheelsets span \
+                 {span} m (2 × (half_bogie_spacing + half_wheelbase)); cars are spaced front \
+                 wheelset to front wheelset"
+            ),
+        );
+    }
+}
+
+/// Plausible masses, springs and dampers of one car's parameters; `at` is
+/// where they are blamed and `car` names the car of a train in messages.
+pub(super) fn check_plausible(
+    ck: &mut Checker<'_>,
+    at: &str,
+    car: Option<usize>,
+    p: &RailCarParameters,
+) {
+    let what = |s: &str| match car {
+        Some(k) => format!("car {k}: {s}"),
+        None => s.to_owned(),
+    };
+    let path = |field: &str| match car {
+        Some(_) => at.to_owned(),
+        None => format!("{at}.{field}"),
+    };
+    for (field, value) in [
+        ("body_mass", p.body_mass),
+        ("bogie_mass", p.bogie_mass),
+        ("wheelset_mass", p.wheelset_mass),
+    ] {
+        within(ck, &path(field), &what("a mass"), value, MASS, "kg");
+    }
+    for (field, value) in [
+        ("primary_stiffness", p.primary_stiffness),
+        ("secondary_stiffness", p.secondary_stiffness),
+    ] {
+        within(
+            ck,
+            &path(field),
+            &what("a spring stiffness"),
+            value,
+            STIFFNESS,
+            "N/m",
+        );
+    }
+    for (field, value) in [
+        ("primary_damping", p.primary_damping),
+        ("secondary_damping", p.secondary_damping),
+    ] {
+        within(
+            ck,
+            &path(field),
+            &what("a suspension damping"),
+            value,
+            DAMPING,
+            "N·s/m",
+        );
+    }
+}

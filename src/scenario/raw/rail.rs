@@ -1,0 +1,130 @@
+//! Rail vehicles as written in a scenario: the 10-DOF rail car and trains.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+/// Four-axle rail car.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RailCarRaw {
+    /// Constant speed: m/s, or with its unit (`300 km/h`).
+    pub speed: super::SpeedRaw,
+    /// Time at which the front wheelset reaches the bridge entrance, s. Default 0.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(extend("default" = 0.0))]
+    pub entry_time: Option<f64>,
+    /// Position of the front wheelset at t = 0, m (≤ 0).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_positive)]
+    pub start_position: Option<f64>,
+    /// Transverse position y of the track's centre line on a plate deck, m.
+    /// Default: the deck's centre line.
+    #[serde(default)]
+    pub lateral_position: Option<f64>,
+    /// Overrides of the preset's parameters; omitted ones keep the preset.
+    /// The preset is the LCP separation paper's Table 2 (Section 5.2): body
+    /// 31 994 kg and 2.1e6 kg·m²; bogie 3 333 kg and 3 200 kg·m²; wheelset
+    /// 1 650 kg; primary suspension 4 720 kN/m and 160 kN·s/m per wheelset;
+    /// secondary 160 kN/m and 200 kN·s/m per bogie; half bogie spacing
+    /// 8.75 m; half wheelbase 1.25 m.
+    #[serde(default)]
+    pub parameters: Option<RailCarParametersRaw>,
+}
+
+/// Rail car parameters (each optional: the preset fills the rest).
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RailCarParametersRaw {
+    /// Car body mass M_c, kg.
+    #[serde(default)]
+    pub body_mass: Option<f64>,
+    /// Car body pitch moment of inertia J_c, kg·m².
+    #[serde(default)]
+    pub body_pitch_inertia: Option<f64>,
+    /// Mass of one bogie frame M_b, kg.
+    #[serde(default)]
+    pub bogie_mass: Option<f64>,
+    /// Pitch moment of inertia of one bogie J_b, kg·m².
+    #[serde(default)]
+    pub bogie_pitch_inertia: Option<f64>,
+    /// Mass of one wheelset M_w, kg (the contact DOF's mass).
+    #[serde(default)]
+    pub wheelset_mass: Option<f64>,
+    /// Primary suspension stiffness per wheelset (bogie ↔ wheelset) k_p, N/m.
+    #[serde(default)]
+    pub primary_stiffness: Option<f64>,
+    /// Primary suspension damping per wheelset c_p, N·s/m.
+    #[serde(default)]
+    pub primary_damping: Option<f64>,
+    /// Secondary suspension stiffness per bogie (body ↔ bogie) k_s, N/m.
+    #[serde(default)]
+    pub secondary_stiffness: Option<f64>,
+    /// Secondary suspension damping per bogie c_s, N·s/m.
+    #[serde(default)]
+    pub secondary_damping: Option<f64>,
+    /// Half the distance between the two bogie centres a, m (≥ 0).
+    #[serde(default)]
+    pub half_bogie_spacing: Option<f64>,
+    /// Half the distance between the two wheelsets of a bogie b, m (≥ 0).
+    #[serde(default)]
+    pub half_wheelbase: Option<f64>,
+}
+
+/// A train of rail cars at one speed. Give `count` identical cars with
+/// `car_spacing`, or the `cars` list. Every car is the rail car of
+/// `type: rail_car` (the preset, with `parameters` overriding it for every
+/// car and each car's own `parameters` on top). Wheels are numbered front to
+/// rear over the whole train (car k has wheels 4k−3 … 4k); `record` picks a
+/// car with `car:`.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TrainRaw {
+    /// Constant speed: m/s, or with its unit (`300 km/h`).
+    pub speed: super::SpeedRaw,
+    /// Time at which the first car's front wheelset reaches the bridge
+    /// entrance, s. Default 0.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(extend("default" = 0.0))]
+    pub entry_time: Option<f64>,
+    /// Position of the first car's front wheelset at t = 0, m (≤ 0).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_positive)]
+    pub start_position: Option<f64>,
+    /// Transverse position y of the track's centre line on a plate deck, m.
+    /// Default: the deck's centre line.
+    #[serde(default)]
+    pub lateral_position: Option<f64>,
+    /// Number of identical cars (with `car_spacing`).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::at_least_one)]
+    pub count: Option<usize>,
+    /// Distance between the front wheelsets of consecutive cars, m (with
+    /// `count`); at least a car's wheelset span 2(a + b).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub car_spacing: Option<f64>,
+    /// The cars, front first (instead of `count`).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_empty)]
+    pub cars: Option<Vec<TrainCarRaw>>,
+    /// Overrides of the rail car preset for every car.
+    #[serde(default)]
+    pub parameters: Option<RailCarParametersRaw>,
+}
+
+/// One car of a `cars` list.
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TrainCarRaw {
+    /// Distance from the previous car's front wheelset to this car's front
+    /// wheelset, m; at least the previous car's wheelset span. Required for
+    /// every car but the first (which has none).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub spacing: Option<f64>,
+    /// Overrides for this car, on top of the train's `parameters`.
+    #[serde(default)]
+    pub parameters: Option<RailCarParametersRaw>,
+}
