@@ -275,3 +275,31 @@ fn sample_flag_runs_one_sample_as_a_scene() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("9 samples"));
 }
+
+/// A vehicle placed before a track's run-in (`start_position: -40`) stays
+/// there at every swept speed: a speed case scales its entry time. (It used
+/// to keep the entry time of the scene's own speed, so at a third of it the
+/// rail car started 13 m from the entrance, inside the faded-in track, and
+/// every front wheelset "separated" by 5 cm at 100 km/h.)
+#[test]
+fn swept_speeds_keep_the_start_position() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios/lcp-fig9-rail-car-fra.yaml");
+    let loaded = vbi::scenario::load_file(&path).expect("shipped scene loads");
+    let Some(vbi::scenario::resolved::Study::MonteCarlo(mc)) = &loaded.scenario.study else {
+        panic!("a Monte Carlo study");
+    };
+    let cases = vbi::study::monte_carlo::cases(mc);
+    assert_eq!(cases.len(), 9);
+    for case in cases {
+        let scene =
+            vbi::study::monte_carlo::sample_scenario(&loaded.scenario, &loaded.bridge, mc, case, 0);
+        let vehicle = &scene.vehicles[0];
+        let start = -vehicle.speed() * vehicle.entry_time();
+        assert!(
+            (start + 40.0).abs() < 1e-9,
+            "{:?}: the car starts at {start} m, not -40 m",
+            case.speed
+        );
+    }
+}

@@ -33,7 +33,7 @@ fn beam_scene(speed: &str, extra: &str) -> String {
         "name: sweep-beam
 bridge: {{type: beam, spans: [20.0, 25.0], bending_stiffness: 3.2423e9, mass_per_length: 2000.0, modes: {{count: 8}}, damping: {{type: modal, ratio: 0.02}}}}
 vehicles:
-  - {{type: moving_force, loads: [6.0e4, 1.4e5], axle_spacings: [4.3], speed: {speed}, entry_time: 0.05}}
+  - {{type: moving_force, loads: [6.0e4, 1.4e5], axle_spacings: [4.3], speed: {speed}, start_position: -1.0}}
 solver: {{time_step: 1.0e-3, free_vibration: 0.1}}
 record:
   - {{name: mid1, quantity: bridge_displacement, x: 10.0}}

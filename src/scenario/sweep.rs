@@ -6,23 +6,36 @@ use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
 use super::resolved::{
-    Bridge, Contact, MonteCarlo, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
+    Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
-use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS};
+use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use crate::surface::synth::default_terms;
 
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
 
 /// `vehicles` with every speed set to `speed` (m/s); entry times are kept.
 pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
+    // Each vehicle keeps its start position x₀ = −v·t_entry (a vehicle placed
+    // before a track's run-in must stay there at every speed), so its entry
+    // time scales with the speed ratio.
+    fn set(vehicle_speed: &mut f64, entry_time: &mut f64, speed: f64) {
+        if *vehicle_speed > 0.0 && speed > 0.0 {
+            // The start position first, as resolution computes the entry
+            // time from it (t = −x₀ / v), so a point equals the single run.
+            let start = -*entry_time * *vehicle_speed;
+            *entry_time = -start / speed;
+        }
+        *vehicle_speed = speed;
+    }
     let mut out = vehicles.to_vec();
     for vehicle in &mut out {
         match vehicle {
-            Vehicle::MovingForce(v) => v.speed = speed,
-            Vehicle::Oscillator(v) => v.speed = speed,
-            Vehicle::H20Truck(v) => v.speed = speed,
-            Vehicle::RailCar(v) => v.speed = speed,
-            Vehicle::Train(v) => v.speed = speed,
+            Vehicle::MovingForce(v) => set(&mut v.speed, &mut v.entry_time, speed),
+            Vehicle::Oscillator(v) => set(&mut v.speed, &mut v.entry_time, speed),
+            Vehicle::H20Truck(v) => set(&mut v.speed, &mut v.entry_time, speed),
+            Vehicle::RailCar(v) => set(&mut v.speed, &mut v.entry_time, speed),
+            Vehicle::Train(v) => set(&mut v.speed, &mut v.entry_time, speed),
         }
     }
     out
@@ -51,7 +64,7 @@ pub(super) fn extreme_vehicles(
 pub fn is_random(base: &Surface, entry: Option<SweepRoughness>) -> bool {
     match entry {
         None => base.is_random(),
-        Some(e) => e.class().is_some(),
+        Some(e) => e.is_random(),
     }
 }
 
@@ -82,6 +95,23 @@ pub fn surface(
             None => base.clone(),
         };
     };
+    if let Some(class) = entry.fra_class() {
+        // The scene's own spectral sampling (band, terms, rails, run-in) if
+        // it has one, else the rail defaults; the seed advanced by `k`.
+        let mut sampling = base.spectrum().map_or(
+            Sampling {
+                shortest_wavelength: RAIL_BAND.0,
+                longest_wavelength: RAIL_BAND.1,
+                terms: default_terms(RAIL_BAND.0, RAIL_BAND.1).min(MAX_TERMS),
+                seed: 1,
+                rails: crate::scenario::resolved::Rails::Identical,
+                run_in: 0.0,
+            },
+            |(_, sampling)| sampling,
+        );
+        sampling.seed = advance(sampling.seed);
+        return Surface::Fra { class, sampling };
+    }
     let Some(class) = entry.class() else {
         return Surface::Smooth;
     };
@@ -175,7 +205,7 @@ pub(super) fn resolve_monte_carlo(
         None => {}
         Some(list) => {
             for (i, entry) in list.iter().enumerate() {
-                if entry.class().is_none() {
+                if !entry.is_random() {
                     ck.error(
                         &format!("study.roughness[{i}]"),
                         format!(

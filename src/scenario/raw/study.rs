@@ -163,13 +163,33 @@ pub enum SweepRoughnessRaw {
     Poor,
     /// Random profile with A_r = 1024e-6 m³/cycle.
     VeryPoor,
+    /// FRA track class 1 vertical profile (the scene's rail sampling, or
+    /// the 1–80 m band), as in the LCP paper's Figs. 8–9.
+    Fra1,
+    /// FRA track class 2.
+    Fra2,
+    /// FRA track class 3.
+    Fra3,
+    /// FRA track class 4.
+    Fra4,
+    /// FRA track class 5.
+    Fra5,
+    /// FRA track class 6.
+    Fra6,
 }
 
 impl SweepRoughnessRaw {
-    /// The roughness class of a random entry (`None` for `smooth`).
+    /// The power-law roughness class of an entry (`None` for `smooth` and
+    /// the FRA track classes).
     pub fn class(self) -> Option<RoughnessClassRaw> {
         match self {
-            SweepRoughnessRaw::Smooth => None,
+            SweepRoughnessRaw::Smooth
+            | SweepRoughnessRaw::Fra1
+            | SweepRoughnessRaw::Fra2
+            | SweepRoughnessRaw::Fra3
+            | SweepRoughnessRaw::Fra4
+            | SweepRoughnessRaw::Fra5
+            | SweepRoughnessRaw::Fra6 => None,
             SweepRoughnessRaw::VeryGood => Some(RoughnessClassRaw::VeryGood),
             SweepRoughnessRaw::Good => Some(RoughnessClassRaw::Good),
             SweepRoughnessRaw::Average => Some(RoughnessClassRaw::Average),
@@ -178,8 +198,29 @@ impl SweepRoughnessRaw {
         }
     }
 
+    /// The FRA track class (1–6) of an FRA entry.
+    pub fn fra_class(self) -> Option<u8> {
+        match self {
+            SweepRoughnessRaw::Fra1 => Some(1),
+            SweepRoughnessRaw::Fra2 => Some(2),
+            SweepRoughnessRaw::Fra3 => Some(3),
+            SweepRoughnessRaw::Fra4 => Some(4),
+            SweepRoughnessRaw::Fra5 => Some(5),
+            SweepRoughnessRaw::Fra6 => Some(6),
+            _ => None,
+        }
+    }
+
+    /// Whether the entry is a random profile (a power-law or FRA class).
+    pub fn is_random(self) -> bool {
+        self.class().is_some() || self.fra_class().is_some()
+    }
+
     /// The entry's name as written in the format.
     pub fn name(self) -> &'static str {
-        self.class().map_or("smooth", RoughnessClassRaw::name)
+        match self.fra_class() {
+            Some(c) => ["fra1", "fra2", "fra3", "fra4", "fra5", "fra6"][usize::from(c) - 1],
+            None => self.class().map_or("smooth", RoughnessClassRaw::name),
+        }
     }
 }
