@@ -58,10 +58,17 @@ pub(super) fn resolve_random(
     ck: &mut Checker<'_>,
 ) -> Surface {
     let coefficient = match (class, coefficient) {
-        (Some(_), Some(_)) => {
+        // The resolved scenario writes both; they must agree.
+        (Some(c), Some(a)) if a == c.coefficient() => a,
+        (Some(c), Some(a)) => {
             ck.error(
                 "surface.coefficient",
-                "give the roughness `class` or its `coefficient`, not both",
+                format!(
+                    "give the roughness `class` or its `coefficient`, not both: class `{}` has \
+                     A_r = {:e} m³/cycle, not {a:e}",
+                    c.name(),
+                    c.coefficient()
+                ),
             );
             0.0
         }
