@@ -351,6 +351,24 @@ fn slow_crossing_is_quasi_static() {
     assert!((daf - 1.0).abs() < 0.005, "DAF {daf}");
 }
 
+/// Frýba's problem used by the acceleration tests: a 100 kN force at half
+/// the critical speed (α = v / (2 f₁ L) = 0.5) over the Yang & Yau 25 m
+/// span with 2 % damping; returns the case and f₁ (Hz).
+fn fryba_half_critical() -> (exact::MovingForceBeam, f64) {
+    let (length, ei, m) = (25.0, 8.323e9, 2303.0);
+    let f1 =
+        exact::simply_supported_circular_frequency(1, length, ei, m) / (2.0 * std::f64::consts::PI);
+    let case = exact::MovingForceBeam {
+        length,
+        bending_stiffness: ei,
+        mass_per_length: m,
+        damping_ratio: 0.02,
+        force: 1.0e5,
+        speed: 0.5 * 2.0 * f1 * length,
+    };
+    (case, f1)
+}
+
 /// Bridge acceleration against the closed form: a constant force crossing a
 /// simply supported beam (Frýba's problem, 2 % damping, α = 0.5), vbi's
 /// mid-span `bridge_acceleration` history against the series solution
@@ -363,18 +381,16 @@ fn slow_crossing_is_quasi_static() {
 /// within 1.5e-3 at 4000 steps (6× the measured 2.3e-4).
 #[test]
 fn bridge_acceleration_matches_closed_form() {
-    let (length, ei, m, force, zeta, modes) = (25.0, 8.323e9, 2303.0, 1.0e5, 0.02, 6usize);
-    let f1 =
-        exact::simply_supported_circular_frequency(1, length, ei, m) / (2.0 * std::f64::consts::PI);
-    let speed = 0.5 * 2.0 * f1 * length;
-    let case = exact::MovingForceBeam {
-        length,
-        bending_stiffness: ei,
-        mass_per_length: m,
-        damping_ratio: zeta,
-        force,
-        speed,
-    };
+    let modes = 6usize;
+    let (case, f1) = fryba_half_critical();
+    let (length, ei, m, force, zeta, speed) = (
+        case.length,
+        case.bending_stiffness,
+        case.mass_per_length,
+        case.force,
+        case.damping_ratio,
+        case.speed,
+    );
     let period = 1.0 / f1;
     let t_end = length / speed + period;
     let mut errors = Vec::new();
@@ -425,18 +441,15 @@ fn bridge_acceleration_matches_closed_form() {
 /// leaves out. The automatic mode choice keeps every mode up to the cut-off.
 #[test]
 fn bridge_acceleration_is_filtered_to_the_code_cut_off() {
-    let (length, ei, m, force, zeta) = (25.0, 8.323e9, 2303.0, 1.0e5, 0.02);
-    let f1 =
-        exact::simply_supported_circular_frequency(1, length, ei, m) / (2.0 * std::f64::consts::PI);
-    let speed = 0.5 * 2.0 * f1 * length;
-    let case = exact::MovingForceBeam {
-        length,
-        bending_stiffness: ei,
-        mass_per_length: m,
-        damping_ratio: zeta,
-        force,
-        speed,
-    };
+    let (case, f1) = fryba_half_critical();
+    let (length, ei, m, force, zeta, speed) = (
+        case.length,
+        case.bending_stiffness,
+        case.mass_per_length,
+        case.force,
+        case.damping_ratio,
+        case.speed,
+    );
     let period = 1.0 / f1;
     let t_end = length / speed + period;
     let dt = t_end / (4000.0 * t_end / period).ceil();

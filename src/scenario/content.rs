@@ -35,14 +35,19 @@ pub const PLATE_FAMILIES: usize = 3;
 /// lcp-oscillator scenes (0.025 m L) are within 0.3 % with 5.
 pub const HEAVY_WHEEL_RATIO: f64 = 0.1;
 
-/// Whether a vehicle's wheel mass exceeds [`HEAVY_WHEEL_RATIO`] of the
-/// lightest span's mass.
-pub fn heavy_wheels(vehicles: &[Vehicle], bridge: &super::resolved::Bridge) -> bool {
+/// Whether a wheel's own mass (the mass on its contact DOF: an oscillator's
+/// unsprung mass, a rail car's wheelset; 0 for the truck's massless tyre
+/// contact points and for moving forces) exceeds [`HEAVY_WHEEL_RATIO`] of
+/// the lightest span's mass.
+pub fn heavy_wheels(vehicles: &[Vehicle], bridge: &super::resolved::Bridge, gravity: f64) -> bool {
     let shortest = bridge.spans().iter().copied().fold(f64::INFINITY, f64::min);
-    let span_mass = bridge.mass_per_length() * shortest;
-    vehicles.iter().any(|vehicle| match vehicle {
-        Vehicle::Oscillator(o) => o.unsprung_mass > HEAVY_WHEEL_RATIO * span_mass,
-        _ => false,
+    let limit = HEAVY_WHEEL_RATIO * bridge.mass_per_length() * shortest;
+    vehicles.iter().any(|vehicle| {
+        let model = VehicleModel::build(vehicle, gravity);
+        model.wheels.iter().any(|wheel| match wheel.kind {
+            WheelKind::Dof(dof) => model.mass[(dof, dof)] > limit,
+            WheelKind::Load(_) => false,
+        })
     })
 }
 

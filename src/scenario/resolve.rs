@@ -321,6 +321,10 @@ pub(super) fn resolve(
         ),
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
+    // The highest mode frequency any deck acceleration sums (it needs only
+    // f₁ and f₃, which the minimum modes already give).
+    let record_cutoff =
+        super::records::highest_acceleration_cutoff(raw.record.as_deref(), &modal.frequencies());
     if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
@@ -328,18 +332,14 @@ pub(super) fn resolve(
         // Deck accelerations sum every mode up to their own cut-off (30 Hz
         // or more, EN 1990 A2.4.4.2.1(4)): keep all of them, so that the
         // filtered acceleration is complete and converges with the step.
-        let acceleration_cut = super::records::highest_acceleration_cutoff(
-            raw.record.as_deref(),
-            &modal.frequencies(),
-        )
-        .filter(|&cut| cut > cutoff);
+        let acceleration_cut = record_cutoff.filter(|&cut| cut > cutoff);
         if let Some(cut) = acceleration_cut {
             cutoff = cut;
             dynamic = true;
         }
         // Heavy wheels feel the bridge's acceleration under them, which a
         // few modes resolve poorly: keep twice the minimum.
-        let heavy = content::heavy_wheels(&vehicles, &bridge);
+        let heavy = content::heavy_wheels(&vehicles, &bridge, gravity);
         let floor = if heavy {
             (2 * minimum).min(ModalBridge::available_of(&bridge))
         } else {
@@ -429,8 +429,6 @@ pub(super) fn resolve(
         last_exit + free_vibration
     };
     let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
-    let record_cutoff =
-        super::records::highest_acceleration_cutoff(raw.record.as_deref(), &modal.frequencies());
     // A separation map's slowest point (its smallest velocity ratio) runs
     // longest: v = 2 α f₁ L.
     if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
