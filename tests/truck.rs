@@ -127,9 +127,9 @@ fn matrices_match_the_equations_of_motion() {
     assert_eq!(model.damping, model.damping.transpose());
 }
 
-/// The random profile is the plate paper's Eq. 17 exactly: at sample points
-/// the fast recurrence equals the series summed term by term with its own
-/// cosines (1e-12 of the amplitude), r(0) = 0, the slope and curvature are
+/// The random profile is the plate paper's Eq. 17: at sample points
+/// the period grid equals the series summed term by term with its own
+/// cosines (1e-10 of the summed amplitudes), r(0) = 0, the slope and curvature are
 /// the series' derivatives (central differences, 1e-6 relative), the same
 /// seed gives the same profile and another seed another one.
 #[test]
@@ -146,6 +146,7 @@ fn random_profile_is_the_papers_series() {
         fundamental,
         ref terms,
         offset,
+        ..
     } = profile
     else {
         panic!("a random profile");
@@ -173,7 +174,9 @@ fn random_profile_is_the_papers_series() {
     assert_eq!(profile.elevation(-3.0), 0.0);
     for &x in &[0.37, 12.9, 55.5, 101.25, 155.0] {
         let (r, slope, curvature) = profile.elevation_slope_curvature(x);
-        assert!((r - direct(x)).abs() <= 1e-12 * scale, "x = {x}");
+        // The period grid interpolates the series (quintic Hermite, 32
+        // nodes per shortest wave): measured 1.7e-11 of the largest |r|.
+        assert!((r - direct(x)).abs() <= 1e-10 * scale, "x = {x}");
         let h = 1e-4;
         let fd_slope = (direct(x + h) - direct(x - h)) / (2.0 * h);
         let (slope_plus, slope_minus) = (

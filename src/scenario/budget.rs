@@ -46,6 +46,9 @@ pub struct Limits {
     /// Points of a surface profile: grid nodes of a sampled random track
     /// or road, rows of a measured profile's file.
     pub profile_points: f64,
+    /// Multiply-adds of sampling a random profile's series on its grid
+    /// (terms × grid nodes, per rail).
+    pub profile_work: f64,
     /// Bytes of results written (estimate), bytes.
     pub output_bytes: f64,
 }
@@ -66,6 +69,7 @@ impl Default for Limits {
             study_points: 10_000.0,
             road_terms: 20_000.0,
             profile_points: 2_000_000.0,
+            profile_work: 2e9,
             output_bytes: 2e9,
         }
     }
@@ -109,6 +113,7 @@ impl Limits {
             study_points: pick("study_points", raw.study_points, d.study_points),
             road_terms: pick("road_terms", raw.road_terms, d.road_terms),
             profile_points: pick("profile_points", raw.profile_points, d.profile_points),
+            profile_work: pick("profile_work", raw.profile_work, d.profile_work),
             output_bytes: pick("output_bytes", raw.output_bytes, d.output_bytes),
         }
     }
@@ -271,6 +276,7 @@ impl Budget {
             "study_points" => l.study_points,
             "road_terms" => l.road_terms,
             "profile_points" => l.profile_points,
+            "profile_work" => l.profile_work,
             _ => l.output_bytes,
         }
     }

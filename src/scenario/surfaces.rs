@@ -452,6 +452,7 @@ pub(super) fn check_reach(
         } else {
             1.0
         };
+        let work = nodes * rails * sampling.terms as f64;
         return budget.check(
             ck,
             "surface.shortest_wavelength",
@@ -461,6 +462,39 @@ pub(super) fn check_reach(
                 crate::surface::NODES_PER_WAVELENGTH
             ),
             nodes * rails,
+        ) && budget.check(
+            ck,
+            if ck.has("surface.terms") {
+                "surface.terms"
+            } else {
+                "surface.shortest_wavelength"
+            },
+            "profile_work",
+            "multiply-adds of sampling the profile's series on its grid (terms × grid nodes × rails)",
+            work,
+        );
+    }
+    if let Surface::Random { terms, .. } = *surface {
+        // The power-law series is sampled over one period (32 nodes per
+        // shortest wavelength), whatever the wheels' travel.
+        let nodes = crate::surface::power_law_grid_nodes(terms) as f64;
+        let path = if ck.has("surface.terms") {
+            "surface.terms"
+        } else {
+            "surface.sampling_length"
+        };
+        return budget.check(
+            ck,
+            path,
+            "profile_points",
+            "grid nodes of the power-law profile (32 per shortest wavelength over one period)",
+            nodes,
+        ) && budget.check(
+            ck,
+            path,
+            "profile_work",
+            "multiply-adds of sampling the power-law series over its period (terms × grid nodes)",
+            nodes * terms as f64,
         );
     }
     if let Surface::Measured { file, profile } = surface {

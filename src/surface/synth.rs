@@ -63,6 +63,11 @@ impl SpectralSeries {
         Self { terms }
     }
 
+    /// A series of given terms (Ωᵢ rad/m, aᵢ m, θᵢ rad): r = Σ aᵢ cos(Ωᵢ x + θᵢ).
+    pub fn from_terms(terms: Vec<(f64, f64, f64)>) -> Self {
+        Self { terms }
+    }
+
     /// (r, r′, r″) at `x` by summing every term: O(N), for checks.
     pub fn at(&self, x: f64) -> Triple {
         self.terms

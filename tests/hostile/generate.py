@@ -274,6 +274,11 @@ case("size-road-terms", "budget", "a random road of 1e6 terms",
 case("size-track-grid", "budget", "an FRA track sampled at 1e-9 m",
      scene(extra="surface: {type: fra, class: 5, shortest_wavelength: @@1.0e-9, terms: 100}\n"),
      "limits.profile_points")
+case("size-track-work", "budget", "an FRA track of 20,000 terms on a 0.2 mm grid (5e9 multiply-adds)",
+     scene(extra="surface: {type: fra, class: 5, shortest_wavelength: 0.002, terms: @@20000}\n"),
+     "limits.profile_work")
+case("size-road-work", "budget", "a power-law road of 19,000 terms (1.2e10 multiply-adds for its period grid)",
+     scene(extra="surface: {type: random, class: good, terms: @@19000}\n"), "limits.profile_work")
 case("size-track-terms", "budget", "an FRA track of 1e6 terms",
      scene(extra="surface: {type: fra, class: 5, terms: @@1000000}\n"), "limits.road_terms")
 case("size-road-sampling", "budget", "a random road sampled over 1e12 m",

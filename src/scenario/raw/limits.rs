@@ -45,6 +45,10 @@ pub struct LimitsRaw {
     /// wheels travel), or rows of a measured profile's file. Default 2e6.
     #[serde(default)]
     pub profile_points: Option<f64>,
+    /// Most multiply-adds of sampling a random profile's series on its
+    /// grid: terms × grid nodes, per rail (about 1 ns each). Default 2e9.
+    #[serde(default)]
+    pub profile_work: Option<f64>,
     /// Most bytes of results written (estimated), bytes. Default 2e9.
     #[serde(default)]
     pub output_bytes: Option<f64>,
