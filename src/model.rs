@@ -111,6 +111,10 @@ pub struct Model {
     /// Transverse positions y of the girder lines, m (a beam: one line): the
     /// recorder tabulates the DAF at every span's middle on each.
     pub girder_lines: Vec<f64>,
+    /// Gravitational acceleration g, m/s² (> 0).
+    pub gravity: f64,
+    /// Earthquake ground motion (vertical support excitation), if any.
+    pub ground: Option<crate::ground::GroundExcitation>,
 }
 
 impl Model {
@@ -152,6 +156,13 @@ impl Model {
         bridge.prepare_lines(&wheel_y);
         // The contacts' static correction needs K⁻¹ once (beams).
         bridge.prepare_contact_correction()?;
+        // Ground motion loads the modes through their participation
+        // factors (computed once, from the kept modes).
+        let bridge_participation = if scenario.ground_motion.is_empty() {
+            (Vec::new(), 0.0)
+        } else {
+            bridge.vertical_participation(&scenario.bridge)
+        };
         let end_time = end_time(scenario, &vehicles, bridge.length);
         let time_step = scenario.solver.time_step;
         // A step count that reaches the end time; the last step may overshoot
@@ -181,7 +192,26 @@ impl Model {
             method: scenario.solver.method,
             iteration: scenario.solver.iteration.unwrap_or_default(),
             girder_lines: scenario.bridge.girder_lines(),
+            gravity: scenario.gravity,
+            ground: ground_excitation(scenario, &bridge_participation),
         })
+    }
+
+    /// Vertical ground acceleration at run time `t` (s), m/s² (0 without
+    /// ground motion).
+    #[inline]
+    pub fn ground_acceleration(&self, t: f64) -> f64 {
+        self.ground
+            .as_ref()
+            .map_or(0.0, |g| g.vertical_acceleration(t))
+    }
+
+    /// Participation factors of a vertical support motion (empty without
+    /// ground motion), √kg.
+    pub fn ground_participation(&self) -> &[f64] {
+        self.ground
+            .as_ref()
+            .map_or(&[], |g| g.participation.as_slice())
     }
 
     /// Position of a flattened wheel at time `t`, m.
@@ -227,4 +257,24 @@ pub fn end_time(scenario: &Scenario, vehicles: &[VehicleModel], length: f64) -> 
         .map(|v| v.exit_time(length))
         .fold(0.0, f64::max);
     last_exit + scenario.solver.free_vibration
+}
+
+/// The vertical support excitation of `scenario`, if it has ground motion.
+fn ground_excitation(
+    scenario: &Scenario,
+    (participation, total_mass): &(Vec<f64>, f64),
+) -> Option<crate::ground::GroundExcitation> {
+    if scenario.ground_motion.is_empty() {
+        return None;
+    }
+    Some(crate::ground::GroundExcitation {
+        vertical: scenario
+            .ground_motion
+            .iter()
+            .filter(|g| g.direction == crate::ground::Direction::Vertical)
+            .map(|g| g.record.clone())
+            .collect(),
+        participation: participation.clone(),
+        total_mass: *total_mass,
+    })
 }

@@ -110,7 +110,11 @@ fn seeds() -> Vec<String> {
         let Ok(entries) = fs::read_dir(root.join(dir)) else {
             continue;
         };
-        let mut paths: Vec<PathBuf> = entries.map(|e| e.unwrap().path()).collect();
+        // Scenes only (the corpus also holds the data files its cases name).
+        let mut paths: Vec<PathBuf> = entries
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+            .collect();
         paths.sort(); // read_dir order differs between file systems
         for path in paths {
             if fs::metadata(&path).map(|m| m.len()).unwrap_or(u64::MAX) > MAX_SEED_BYTES {

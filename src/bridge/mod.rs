@@ -7,6 +7,7 @@
 
 pub mod beam;
 pub mod eigen;
+pub mod ground;
 pub mod hermite;
 pub mod plate;
 

@@ -162,6 +162,21 @@ pub struct Column {
     /// Whose position the summary reports with each extreme.
     pub position: PositionRef,
     probe: Probe,
+    /// Under ground motion: the upward deflection per unit upward ground
+    /// acceleration that the kept modes leave out (bridge displacements on
+    /// a beam with the static correction; [`crate::bridge::ModalBridge::ground_static_share`]),
+    /// m/(m/s²); 0 otherwise.
+    ground_static: f64,
+    /// Under ground motion, an absolute record adds the ground's own
+    /// displacement or acceleration.
+    absolute: Option<GroundTerm>,
+}
+
+/// Which motion of the ground an absolute record adds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum GroundTerm {
+    Displacement,
+    Acceleration,
 }
 
 /// All recorded columns with their common time axis.
@@ -310,6 +325,7 @@ impl<'m> Recorder<'m> {
             };
             let static_values = matches!(probe, Probe::BridgeDisplacement { .. })
                 .then(|| Vec::with_capacity(capacity));
+            let (ground_static, absolute) = ground_terms(model, record, &probe)?;
             columns.push(Column {
                 name: record.name.clone(),
                 quantity: record.quantity,
@@ -318,6 +334,8 @@ impl<'m> Recorder<'m> {
                 static_values,
                 position,
                 probe,
+                ground_static,
+                absolute,
             });
         }
         let separation = if model.contact.is_unilateral() {
@@ -410,6 +428,52 @@ impl<'m> Recorder<'m> {
             .collect();
         self.history
     }
+}
+
+/// The ground-motion terms of a record's column: the static share of the
+/// modes left out per unit ground acceleration, and what an absolute record
+/// adds. Both vanish without ground motion; rotations and contact
+/// quantities are the same in both frames.
+fn ground_terms(
+    model: &Model,
+    record: &Record,
+    probe: &Probe,
+) -> Result<(f64, Option<GroundTerm>), BridgeError> {
+    let Some(ground) = &model.ground else {
+        return Ok((0.0, None));
+    };
+    let absolute = record.frame == crate::scenario::resolved::Frame::Absolute;
+    Ok(match *probe {
+        Probe::BridgeDisplacement { .. } => {
+            let share = if model.bridge.static_correction {
+                model
+                    .bridge
+                    .ground_static_share(
+                        ground.total_mass / model.bridge.length,
+                        record.x.unwrap_or(0.0),
+                        &ground.participation,
+                    )?
+                    .unwrap_or(0.0)
+            } else {
+                0.0
+            };
+            (share, absolute.then_some(GroundTerm::Displacement))
+        }
+        Probe::BridgeAcceleration { .. } => (0.0, absolute.then_some(GroundTerm::Acceleration)),
+        Probe::VehicleDisplacement { vehicle, dof }
+        | Probe::VehicleAcceleration { vehicle, dof } => {
+            // Only translations move with the ground: the DOFs that carry
+            // weight.
+            let translation = model.vehicles[vehicle].gravity_load[dof] != 0.0;
+            let term = if matches!(probe, Probe::VehicleDisplacement { .. }) {
+                GroundTerm::Displacement
+            } else {
+                GroundTerm::Acceleration
+            };
+            (0.0, (absolute && translation).then_some(term))
+        }
+        Probe::ContactForce { .. } | Probe::ContactGap { .. } => (0.0, None),
+    })
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
@@ -505,6 +569,18 @@ impl Observer for Recorder<'_> {
                 }
                 Probe::VehicleAcceleration { vehicle, dof } => {
                     view.vehicles[*vehicle].acceleration[*dof]
+                }
+            };
+            let value = match &model.ground {
+                None => value,
+                Some(ground) => {
+                    let acceleration = ground.vertical_acceleration(view.time);
+                    let own = match column.absolute {
+                        None => 0.0,
+                        Some(GroundTerm::Acceleration) => acceleration,
+                        Some(GroundTerm::Displacement) => ground.vertical_motion(view.time).1,
+                    };
+                    value + column.ground_static * acceleration + own
                 }
             };
             column.values.push(value);

@@ -49,6 +49,8 @@ pub struct Limits {
     /// Multiply-adds of sampling a random profile's series on its grid
     /// (terms × grid nodes, per rail).
     pub profile_work: f64,
+    /// Samples of a ground-motion record.
+    pub ground_points: f64,
     /// Bytes of results written (estimate), bytes.
     pub output_bytes: f64,
 }
@@ -70,6 +72,7 @@ impl Default for Limits {
             road_terms: 20_000.0,
             profile_points: 2_000_000.0,
             profile_work: 2e9,
+            ground_points: 1e7,
             output_bytes: 2e9,
         }
     }
@@ -114,6 +117,7 @@ impl Limits {
             road_terms: pick("road_terms", raw.road_terms, d.road_terms),
             profile_points: pick("profile_points", raw.profile_points, d.profile_points),
             profile_work: pick("profile_work", raw.profile_work, d.profile_work),
+            ground_points: pick("ground_points", raw.ground_points, d.ground_points),
             output_bytes: pick("output_bytes", raw.output_bytes, d.output_bytes),
         }
     }
@@ -263,6 +267,11 @@ impl Budget {
         )
     }
 
+    /// The limit `key` in force (`limits.{key}`).
+    pub(super) fn limit_of(&self, key: &str) -> f64 {
+        self.limit(key)
+    }
+
     fn limit(&self, key: &str) -> f64 {
         let l = &self.limits;
         match key {
@@ -277,6 +286,7 @@ impl Budget {
             "road_terms" => l.road_terms,
             "profile_points" => l.profile_points,
             "profile_work" => l.profile_work,
+            "ground_points" => l.ground_points,
             _ => l.output_bytes,
         }
     }

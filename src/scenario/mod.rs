@@ -15,6 +15,7 @@ pub mod de;
 pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
+mod ground;
 pub mod names;
 mod plausible;
 pub mod rail;

@@ -11,12 +11,14 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod ground;
 mod limits;
 mod rail;
 mod speed;
 mod study;
 mod surface;
 mod truck;
+pub use self::ground::*;
 pub use self::limits::*;
 pub use self::rail::*;
 pub use self::speed::*;
@@ -64,6 +66,10 @@ pub struct ScenarioRaw {
     /// span and the contact force of every wheel.
     #[serde(default)]
     pub record: Option<Vec<RecordRaw>>,
+    /// Earthquake ground motion: acceleration records, each in one
+    /// direction, applied as a uniform support excitation. Default: none.
+    #[serde(default)]
+    pub ground_motion: Option<Vec<GroundMotionRaw>>,
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,
@@ -623,6 +629,13 @@ pub struct RecordRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::positive)]
     pub max_frequency: Option<f64>,
+    /// Under ground motion: `relative` to the moving ground (the default:
+    /// deflections, what loads the structure) or `absolute` (adds the
+    /// ground's own displacement or acceleration; what passengers feel).
+    /// Bridge and vehicle displacements and accelerations only.
+    #[serde(default)]
+    #[schemars(extend("default" = "relative"))]
+    pub frame: Option<crate::scenario::resolved::Frame>,
 }
 
 /// Recordable quantities.

@@ -150,6 +150,11 @@ pub(super) fn resolve_records(
         if !is_vehicle_dof && r.dof.is_some() {
             ck.error(&format!("{at}.dof"), unused("dof"));
         }
+        // Contact forces and gaps are the same in both frames.
+        if is_wheel && r.frame.is_some() {
+            ck.error(&format!("{at}.frame"), unused("frame"));
+        }
+        let frame = r.frame.unwrap_or_default();
         let max_frequency = if q == Quantity::BridgeAcceleration {
             match r.max_frequency {
                 Some(f) if !(f.is_finite() && f > 0.0) => {
@@ -293,6 +298,7 @@ pub(super) fn resolve_records(
                 None => r.dof.clone(),
             },
             max_frequency,
+            frame,
         });
     }
     out
@@ -316,6 +322,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 wheel: None,
                 dof: None,
                 max_frequency: None,
+                frame: Frame::Relative,
             }),
             Bridge::Plate(plate) => {
                 for (g, &y) in plate.girder_lines.iter().enumerate() {
@@ -328,6 +335,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                         wheel: None,
                         dof: None,
                         max_frequency: None,
+                        frame: Frame::Relative,
                     });
                 }
             }
@@ -354,6 +362,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 wheel: Some(w + 1),
                 dof: None,
                 max_frequency: None,
+                frame: Frame::Relative,
             });
             if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
                 out.push(Record {
@@ -365,6 +374,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     wheel: Some(w + 1),
                     dof: None,
                     max_frequency: None,
+                    frame: Frame::Relative,
                 });
             }
         }

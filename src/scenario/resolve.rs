@@ -115,6 +115,10 @@ impl<'a> Checker<'a> {
     }
 }
 
+/// Share of the bridge's mass the automatic modes carry under ground
+/// motion (EN 1998-1 4.3.3.3.1(3)).
+const GROUND_MASS_SHARE: f64 = 0.9;
+
 /// Resolves a parsed scenario. Returns the scenario with every default filled
 /// in and the modal bridge built on the way (mode selection and the default
 /// time step depend on the natural frequencies).
@@ -151,6 +155,8 @@ pub(super) fn resolve(
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
     let surface =
         super::surfaces::resolve_surface(raw.surface.as_ref(), bridge_length, &budget, ck);
+    let ground_motion =
+        super::ground::resolve(raw.ground_motion.as_deref(), bridge.as_ref(), &budget, ck);
     let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
@@ -396,6 +402,48 @@ pub(super) fn resolve(
                 content::modes_per_span(&bridge),
             ),
         };
+        // Ground motion: keep modes until they carry 90 % of the bridge's
+        // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
+        // vertical record excites the symmetric modes, each less than the
+        // last, so a few suffice.
+        if !ground_motion.is_empty() {
+            let available = ModalBridge::available_of(&bridge);
+            loop {
+                let (participation, mass) = modal.vertical_participation(&bridge);
+                let ratio = participation.iter().map(|g| g * g).sum::<f64>() / mass;
+                let count = modal.mode_count();
+                if ratio >= GROUND_MASS_SHARE || count >= available {
+                    if ratio >= GROUND_MASS_SHARE {
+                        modal.selection.push_str(&format!(
+                            "; for the ground motion they carry {:.1} % of the bridge's mass (EN 1998-1 4.3.3.3.1: at least {:.0} %)",
+                            100.0 * ratio,
+                            100.0 * GROUND_MASS_SHARE
+                        ));
+                    }
+                    break;
+                }
+                let more = (2 * count).min(available);
+                if !budget.check(
+                    ck,
+                    "ground_motion",
+                    "modes",
+                    "bridge modes for 90 % of the mass under ground motion",
+                    more as f64,
+                ) || !budget.eigen(ck, "ground_motion", &bridge, more)
+                {
+                    return None;
+                }
+                modal = match build(ModeRequest::Lowest(more)) {
+                    Ok(m) => m,
+                    Err((path, message)) => {
+                        ck.error(path, message);
+                        return None;
+                    }
+                };
+            }
+            let top = modal.frequencies().last().copied().unwrap_or(0.0);
+            cutoff = cutoff.max(top);
+        }
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
     // The modes kept, however chosen (a high `max_frequency` keeps many).
@@ -441,6 +489,12 @@ pub(super) fn resolve(
     }
     let time_step = solver_raw.time_step.unwrap_or_else(|| {
         let step = content::time_step(highest, &excitations, shortest_crossing);
+        // A ground-motion record is linear between its samples: a step no
+        // longer than its shortest interval sees every peak.
+        let step = ground_motion
+            .iter()
+            .map(|g| g.record.shortest_interval())
+            .fold(step, f64::min);
         // Deck accelerations: their highest mode keeps its phase over the run.
         let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
         step.min(content::phase_time_step(acceleration_top, longest_run))
@@ -549,6 +603,7 @@ pub(super) fn resolve(
             time_step_selection,
         },
         record,
+        ground_motion,
         study,
         limits,
     };

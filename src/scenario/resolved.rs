@@ -6,9 +6,11 @@
 
 use serde::Serialize;
 
+mod ground;
 mod rail;
 mod study;
 mod surface;
+pub use self::ground::*;
 pub use self::rail::*;
 pub use self::study::*;
 pub use self::surface::*;
@@ -40,6 +42,9 @@ pub struct Scenario {
     pub solver: Solver,
     /// Recorded quantities.
     pub record: Vec<Record>,
+    /// Earthquake ground motion components (none: the ground is still).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub ground_motion: Vec<GroundMotion>,
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
@@ -584,4 +589,8 @@ pub struct Record {
     /// A2.4.4.2.1(4)).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_frequency: Option<f64>,
+    /// Relative to the moving ground, or absolute (bridge and vehicle
+    /// displacements and accelerations under ground motion).
+    #[serde(skip_serializing_if = "Frame::is_relative")]
+    pub frame: Frame,
 }

@@ -10,6 +10,7 @@
 //! O(modes·wheels²) + O(Σ dofᵥ²) + O(wheels³); nothing is allocated in the
 //! loop.
 
+use super::GroundStep;
 use super::dense::lu_solve;
 use super::guard::Guard;
 use super::modal::ModalStep;
@@ -27,7 +28,7 @@ pub fn run(
 ) -> Result<(), SolveError> {
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm);
+    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
     let mut step_state = PermanentContacts::new(model, &nm)?;
     let nc = step_state.count();
 
@@ -52,10 +53,12 @@ pub fn run(
     ));
 
     let guard = Guard::new(model);
+    let mut ground = GroundStep::new(model, &nm);
     let report_every = (model.steps / 200).max(1);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
+        step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
         step_state.begin_step(model, &nm, &mut modal, &wheel_positions, &contact_forces);
 
         // Sensitivities of the wheel kinematics to λ.

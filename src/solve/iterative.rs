@@ -27,6 +27,7 @@
 //! tolerance, so the two agree to it. Cost per iteration O(modes·wheels) +
 //! O(Σ wheelsᵥ²); nothing is allocated in the loop.
 
+use super::GroundStep;
 use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
@@ -48,7 +49,7 @@ pub fn run(
 ) -> Result<SolveStats, SolveError> {
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm);
+    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
     let mut step_state = PermanentContacts::new(model, &nm)?;
     let nc = step_state.count();
     let (tolerance, max_iterations) = (model.iteration.tolerance, model.iteration.max_iterations);
@@ -80,11 +81,13 @@ pub fn run(
     ));
 
     let guard = Guard::new(model);
+    let mut ground = GroundStep::new(model, &nm);
     let report_every = (model.steps / 200).max(1);
     let (mut total_iterations, mut most_iterations) = (0usize, 0usize);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
+        step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
         step_state.begin_step(model, &nm, &mut modal, &wheel_positions, &contact_forces);
 
         let mut relaxation = 1.0;

@@ -197,3 +197,44 @@ pub(crate) fn describe_positions(model: &Model, t: f64) -> String {
         .collect::<Vec<_>>()
         .join(", ")
 }
+
+/// The ground motion's share of each step: sets the bridge's vertical
+/// ground acceleration at t_{n+1} and returns the vehicles' extra weight
+/// ratio (1+α)üg(t_{n+1}) − α üg(tₙ), over g — HHT weights the external
+/// loads as it weights the contact forces. Without ground motion every
+/// value is exactly 0 and nothing changes.
+#[derive(Debug, Clone, Copy)]
+pub struct GroundStep {
+    weight: f64,
+    alpha: f64,
+    gravity: f64,
+    previous: f64,
+    active: bool,
+}
+
+impl GroundStep {
+    /// At rest at t = 0 (the record's acceleration there is taken as the
+    /// previous step's).
+    pub fn new(model: &Model, nm: &newmark::Newmark) -> Self {
+        Self {
+            weight: nm.weight(),
+            alpha: nm.alpha,
+            gravity: model.gravity,
+            previous: model.ground_acceleration(0.0),
+            active: model.ground.is_some(),
+        }
+    }
+
+    /// Advances to the step ending at `t` (s) of `model`.
+    #[inline]
+    pub fn step_of(&mut self, model: &Model, modal: &mut modal::ModalStep, t: f64) -> f64 {
+        if !self.active {
+            return 0.0;
+        }
+        let now = model.ground_acceleration(t);
+        modal.ground_acceleration = now;
+        let ratio = (self.weight * now - self.alpha * self.previous) / self.gravity;
+        self.previous = now;
+        ratio
+    }
+}

@@ -39,6 +39,12 @@ pub struct ModalStep {
     /// h_v = a₁q + a₄q̇ + a₅q̈ at tₙ.
     pub damping_history: Vec<f64>,
     shape_work: Vec<f64>,
+    /// Participation factors Γᵢ of a vertical support motion, √kg (empty
+    /// without ground motion; [`crate::ground`]).
+    ground_participation: Vec<f64>,
+    /// Vertical ground acceleration at the end of the step being formed,
+    /// m/s² (set by the solver before [`Self::predict`]).
+    pub ground_acceleration: f64,
 }
 
 impl ModalStep {
@@ -72,7 +78,16 @@ impl ModalStep {
             inertia_history: vec![0.0; modes],
             damping_history: vec![0.0; modes],
             shape_work: vec![0.0; modes],
+            ground_participation: Vec::new(),
+            ground_acceleration: 0.0,
         }
+    }
+
+    /// The same step with the modal forces −Γᵢ üg of a vertical support
+    /// motion added to every step's loads (`participation` empty: none).
+    pub fn with_ground(mut self, participation: &[f64]) -> Self {
+        self.ground_participation = participation.to_vec();
+        self
     }
 
     /// Forms the predictor q* for a step with the given moving loads
@@ -92,6 +107,14 @@ impl ModalStep {
                     *f -= load * phi;
                 }
             }
+        }
+        // Uniform support motion: the deck's inertia −M δ üg in modal form.
+        for (f, gamma) in self
+            .current_force
+            .iter_mut()
+            .zip(&self.ground_participation)
+        {
+            *f -= gamma * self.ground_acceleration;
         }
         let (w, alpha) = (nm.weight(), nm.alpha);
         for i in 0..self.predictor.len() {

@@ -55,6 +55,9 @@ pub struct Partition {
     pub condensed_stiffness: DMatrix<f64>,
     gravity_f: DVector<f64>,
     gravity_w: DVector<f64>,
+    /// This step's extra weight as a multiple of the gravity loads (ground
+    /// motion), dimensionless.
+    gravity_ratio: f64,
     weight: f64,
     alpha: f64,
     // Work vectors.
@@ -107,6 +110,7 @@ impl Partition {
             stiffness_w_all: select(&vehicle.stiffness, w, &all),
             gravity_f: pick(&vehicle.gravity_load, f),
             gravity_w: pick(&vehicle.gravity_load, w),
+            gravity_ratio: 0.0,
             weight,
             alpha: nm.alpha,
             inertia_history: DVector::zeros(f.len()),
@@ -133,6 +137,7 @@ impl Partition {
     pub fn begin_step(
         &mut self,
         nm: &Newmark,
+        gravity_ratio: f64,
         displacement: &DVector<f64>,
         velocity: &DVector<f64>,
         acceleration: &DVector<f64>,
@@ -144,7 +149,12 @@ impl Partition {
             self.damping_history[k] = nm.damping_history(u, v, a);
         }
         let (w, alpha) = (self.weight, self.alpha);
+        self.gravity_ratio = gravity_ratio;
         self.effective_load.copy_from(&self.gravity_f);
+        if gravity_ratio != 0.0 {
+            self.effective_load
+                .axpy(gravity_ratio, &self.gravity_f, 1.0);
+        }
         self.effective_load
             .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
         self.effective_load
@@ -159,6 +169,9 @@ impl Partition {
         }
         // λ⁰ = T R̂_F − M_WF hₐ − w C_WF h_v − α(C_W·u̇ₙ + K_W·uₙ) − f_g,W + αλₙ.
         self.base_forces.copy_from(&self.gravity_w);
+        if gravity_ratio != 0.0 {
+            self.base_forces.axpy(gravity_ratio, &self.gravity_w, 1.0);
+        }
         self.base_forces
             .gemv(1.0, &self.transfer, &self.effective_load, -1.0);
         self.base_forces
@@ -208,6 +221,10 @@ impl Partition {
         // Recovery load: every term but the free DOFs' new velocity's
         // unknown part; the wheel DOFs are already at t_{n+1}.
         self.recovery_load.copy_from(&self.gravity_f);
+        if self.gravity_ratio != 0.0 {
+            self.recovery_load
+                .axpy(self.gravity_ratio, &self.gravity_f, 1.0);
+        }
         self.recovery_load += &self.alpha_terms;
         for (k, &d) in self.free_dofs.iter().enumerate() {
             displacement[d] = self.free_solution[k];

@@ -100,6 +100,11 @@ pub struct PermanentContacts {
     /// row-major nc × nc ([`crate::bridge::ModalBridge::residual_flexibility`]);
     /// empty when the contact static correction is off.
     pub residual: Vec<f64>,
+    /// This step's vehicle loads as a multiple of their weights beyond 1:
+    /// the HHT-weighted vertical ground acceleration over g (a vertical
+    /// record acts on a vehicle as gravity g + üg). Set by the solver
+    /// before [`Self::begin_step`]; 0 without ground motion.
+    pub gravity_ratio: f64,
 }
 
 impl PermanentContacts {
@@ -145,6 +150,7 @@ impl PermanentContacts {
             partitions.push(partition);
         }
         Ok(Self {
+            gravity_ratio: 0.0,
             shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
             base: vec![[0.0; 3]; nc],
             surface: vec![(0.0, 0.0, 0.0); nc],
@@ -262,6 +268,7 @@ impl PermanentContacts {
             let state = &self.states[v];
             partition.begin_step(
                 nm,
+                self.gravity_ratio,
                 &state.displacement,
                 &state.velocity,
                 &state.acceleration,

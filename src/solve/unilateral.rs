@@ -27,6 +27,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use super::GroundStep;
 use super::guard::Guard;
 use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
@@ -85,7 +86,7 @@ pub fn run(
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
     let modes = bridge.mode_count();
-    let mut modal = ModalStep::new(bridge, &nm);
+    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
 
     let mut contacts: Vec<ContactWheel> = Vec::new();
     let mut load_wheels = Vec::new();
@@ -204,10 +205,12 @@ pub fn run(
     ));
 
     let guard = Guard::new(model);
+    let mut ground = GroundStep::new(model, &nm);
     let report_every = (model.steps / 200).max(1);
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
+        let gravity_ratio = ground.step_of(model, &mut modal, t);
         modal.predict(
             &nm,
             bridge,
@@ -229,6 +232,10 @@ pub fn run(
             }
             let blocks = &vehicle.blocks;
             vs.effective_load.copy_from(&vehicle.gravity_load);
+            if gravity_ratio != 0.0 {
+                vs.effective_load
+                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
+            }
             block_gemv(
                 &mut vs.effective_load,
                 1.0,
@@ -455,6 +462,10 @@ pub fn run(
             vs.previous_displacement.copy_from(&state.displacement);
             let blocks = &vehicle.blocks;
             vs.recovery_load += &vehicle.gravity_load;
+            if gravity_ratio != 0.0 {
+                vs.recovery_load
+                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
+            }
             block_gemv(
                 &mut vs.recovery_load,
                 -w,

@@ -105,6 +105,7 @@ pub fn point_scenario(
         wheel: Some(1),
         dof: None,
         max_frequency: None,
+        frame: Default::default(),
     }];
     scenario
 }

@@ -430,6 +430,32 @@ for slug, text, message in structural:
     outcome = "budget" if message.startswith("limits.") else "rejected"
     case("struct-" + slug, outcome, slug.replace("-", " "), text, message)
 
+# Ground-motion records: data files written beside the cases.
+AT2_HEAD = ("PEER NGA STRONG MOTION DATABASE RECORD\nhostile\n"
+            "ACCELERATION TIME SERIES IN UNITS OF G\n")
+side_files = {
+    "quake-huge-npts.AT2": AT2_HEAD + "NPTS= 1000000000000, DT= .0100 SEC\n0.1 0.2\n",
+    "quake-short.AT2": AT2_HEAD + "NPTS=   10, DT= .0100 SEC\n0.1 0.2 0.3\n",
+    "quake-nan.csv": "time [s], acceleration [g]\n0, 0\n0.01, nan\n",
+    "quake-backwards.csv": "time [s], acceleration [g]\n0, 0\n0.02, 0.1\n0.01, 0.1\n",
+    "quake-no-units.csv": "0, 0\n0.01, 0.1\n",
+    "quake-ok.csv": "time [s], acceleration [g]\n0, 0\n0.01, 0.1\n0.02, 0\n",
+}
+ground = [
+    ("huge-npts", "{file: @@quake-huge-npts.AT2}", "NPTS = 1000000000000"),
+    ("short-at2", "{file: @@quake-short.AT2}", "declares NPTS = 10"),
+    ("nan", "{file: @@quake-nan.csv}", "quake-nan.csv:3: column 2"),
+    ("backwards", "{file: @@quake-backwards.csv}", "must increase strictly"),
+    ("no-units", "{file: @@quake-no-units.csv}", "does not state the units"),
+    ("missing", "{file: @@no-such-record.AT2}", "cannot read the ground-motion record"),
+    ("lateral", "{file: quake-ok.csv, direction: @@lateral}", "lateral modes"),
+    ("scale-nan", "{file: quake-ok.csv, scale: @@.nan}", "finite"),
+    ("units-disagree", "{file: quake-ok.csv, units: @@m/s^2}", "disagrees"),
+]
+for slug, component, message in ground:
+    case("ground-" + slug, "rejected", "ground motion: " + slug.replace("-", " "),
+         scene(extra="ground_motion:\n  - " + component + "\n"), message)
+
 
 def locate(text):
     """Removes the `@@` marker; returns (text, line, col) of the marker."""
@@ -467,6 +493,9 @@ def main():
         # scanner notices it at the end) only needs some FILE:LINE:COL.
         where = f"{line}:{col}" if line is not None else "-"
         rows.append("\t".join([file + ".yaml", outcome, where, message, what]))
+    for file, text in side_files.items():
+        with open(os.path.join(CASES, file), "w", encoding="utf-8") as f:
+            f.write(text)
     with open(os.path.join(HERE, "expected.tsv"), "w", encoding="utf-8") as f:
         f.write("\n".join(rows) + "\n")
     print(f"{len(cases)} cases written to {CASES}")

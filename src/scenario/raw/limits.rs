@@ -49,6 +49,9 @@ pub struct LimitsRaw {
     /// grid: terms × grid nodes, per rail (about 1 ns each). Default 2e9.
     #[serde(default)]
     pub profile_work: Option<f64>,
+    /// Most samples of a ground-motion record (AT2 or CSV). Default 1e7.
+    #[serde(default)]
+    pub ground_points: Option<f64>,
     /// Most bytes of results written (estimated), bytes. Default 2e9.
     #[serde(default)]
     pub output_bytes: Option<f64>,

@@ -1,0 +1,297 @@
+//! Earthquake ground motion: acceleration records and the uniform support
+//! excitation they impose.
+//!
+//! A record is a time series of ground acceleration üg(t) (m/s²) in one
+//! direction, read from a PEER NGA `.AT2` file ([`at2`]) or a CSV table
+//! ([`table`]), scaled and shifted to start at a given time of the run.
+//! Between samples üg is linear in time, so its integrals, the ground
+//! velocity and displacement, are exact cubic and quadratic polynomials
+//! ([`GroundRecord::velocity_displacement`]); before the record starts and
+//! after it ends üg = 0.
+//!
+//! The motion acts as a uniform support excitation in relative coordinates
+//! (EMBS paper, Eqs. 3 and 6; Chopra, Dynamics of Structures, §9.4): with
+//! u = u_abs − δ u_g every structure obeys M ü + C u̇ + K u = f − M δ üg,
+//! δ the rigid-body displacement of every DOF for a unit ground motion. A
+//! vertical record thus acts on the vehicles exactly as a change of gravity
+//! from g to g + üg, and on the bridge as the modal forces −Γᵢ üg with
+//! Γᵢ = φᵢᵀ M δ (kg^½, the modal participation factors).
+
+pub mod at2;
+pub mod table;
+
+use serde::Serialize;
+
+/// Direction of a ground-motion component.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Direction {
+    /// Vertical, positive upward.
+    Vertical,
+    /// Lateral (across the track), positive to the left of travel.
+    Lateral,
+    /// Longitudinal (along the track), positive in the direction of travel.
+    Longitudinal,
+}
+
+impl Direction {
+    /// The name used in the scenario file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::Vertical => "vertical",
+            Direction::Lateral => "lateral",
+            Direction::Longitudinal => "longitudinal",
+        }
+    }
+}
+
+/// Units a record's accelerations are given in.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
+)]
+pub enum AccelerationUnit {
+    /// m/s².
+    #[serde(rename = "m/s^2")]
+    MetresPerSecondSquared,
+    /// cm/s² (gal).
+    #[serde(rename = "cm/s^2")]
+    CentimetresPerSecondSquared,
+    /// Standard gravity g = 9.80665 m/s² (ISO 80000-3), the unit of PEER
+    /// records, whatever the scene's own `gravity`.
+    #[serde(rename = "g")]
+    StandardGravity,
+}
+
+/// Standard acceleration of gravity, m/s² (ISO 80000-3; CGPM 1901).
+pub const STANDARD_GRAVITY: f64 = 9.80665;
+
+impl AccelerationUnit {
+    /// Metres per second squared per unit.
+    pub fn in_si(self) -> f64 {
+        match self {
+            AccelerationUnit::MetresPerSecondSquared => 1.0,
+            AccelerationUnit::CentimetresPerSecondSquared => 0.01,
+            AccelerationUnit::StandardGravity => STANDARD_GRAVITY,
+        }
+    }
+
+    /// The unit as written in files and messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            AccelerationUnit::MetresPerSecondSquared => "m/s^2",
+            AccelerationUnit::CentimetresPerSecondSquared => "cm/s^2",
+            AccelerationUnit::StandardGravity => "g",
+        }
+    }
+
+    /// Recognises a unit written in a file header: `g`, `G`, `m/s^2`,
+    /// `m/s2`, `m/s/s`, `cm/s^2`, `gal`, … (case and spaces ignored).
+    pub fn parse(text: &str) -> Option<Self> {
+        let t: String = text
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .collect::<String>()
+            .to_ascii_lowercase()
+            .replace("sec", "s")
+            .replace('²', "^2");
+        match t.as_str() {
+            "g" | "g's" | "gs" => Some(AccelerationUnit::StandardGravity),
+            "m/s^2" | "m/s2" | "m/s/s" | "ms^-2" | "ms-2" => {
+                Some(AccelerationUnit::MetresPerSecondSquared)
+            }
+            "cm/s^2" | "cm/s2" | "cm/s/s" | "gal" | "cms^-2" | "cms-2" => {
+                Some(AccelerationUnit::CentimetresPerSecondSquared)
+            }
+            _ => None,
+        }
+    }
+}
+
+/// A ground acceleration record on the run's clock, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroundRecord {
+    /// Sample times on the run's clock, s, strictly increasing.
+    time: Vec<f64>,
+    /// Ground acceleration at each sample, m/s² (scaled).
+    acceleration: Vec<f64>,
+    /// Ground velocity at each sample, m/s (from rest at the first one).
+    velocity: Vec<f64>,
+    /// Ground displacement at each sample, m (from 0 at the first one).
+    displacement: Vec<f64>,
+}
+
+impl GroundRecord {
+    /// A record from samples (`time` strictly increasing, s, on the file's
+    /// clock; `acceleration` in m/s² before `scale`), shifted so that its
+    /// time 0 falls at `start_time` (s) of the run. The caller has checked
+    /// the samples (finite, increasing, at least two).
+    pub fn new(time: &[f64], acceleration: &[f64], scale: f64, start_time: f64) -> Self {
+        let time: Vec<f64> = time.iter().map(|t| t + start_time).collect();
+        let acceleration: Vec<f64> = acceleration.iter().map(|a| a * scale).collect();
+        let n = time.len();
+        let (mut velocity, mut displacement) = (vec![0.0; n], vec![0.0; n]);
+        for k in 1..n {
+            let h = time[k] - time[k - 1];
+            let (a0, a1) = (acceleration[k - 1], acceleration[k]);
+            // Exact integrals of the linear acceleration over the interval.
+            velocity[k] = velocity[k - 1] + 0.5 * h * (a0 + a1);
+            displacement[k] =
+                displacement[k - 1] + velocity[k - 1] * h + h * h * (a0 / 3.0 + a1 / 6.0);
+        }
+        Self {
+            time,
+            acceleration,
+            velocity,
+            displacement,
+        }
+    }
+
+    /// Shortest sampling interval, s.
+    pub fn shortest_interval(&self) -> f64 {
+        self.time
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Time of the last sample on the run's clock, s.
+    pub fn end_time(&self) -> f64 {
+        self.time.last().copied().unwrap_or(0.0)
+    }
+
+    /// Largest |üg|, m/s².
+    pub fn peak_acceleration(&self) -> f64 {
+        self.acceleration.iter().fold(0.0, |m, a| m.max(a.abs()))
+    }
+
+    /// The interval k with time[k] ≤ t < time[k+1], if t is inside.
+    #[inline]
+    fn interval(&self, t: f64) -> Option<usize> {
+        let n = self.time.len();
+        if n < 2 || t.is_nan() || t < self.time[0] || t > self.time[n - 1] {
+            return None;
+        }
+        Some(self.time.partition_point(|&s| s <= t).clamp(1, n - 1) - 1)
+    }
+
+    /// Ground acceleration at run time `t` (s), m/s²: linear between
+    /// samples, 0 outside the record. O(log n).
+    #[inline]
+    pub fn acceleration_at(&self, t: f64) -> f64 {
+        let Some(k) = self.interval(t) else {
+            return 0.0;
+        };
+        let (t0, t1) = (self.time[k], self.time[k + 1]);
+        let s = (t - t0) / (t1 - t0);
+        self.acceleration[k] + s * (self.acceleration[k + 1] - self.acceleration[k])
+    }
+
+    /// Ground velocity (m/s) and displacement (m) at run time `t` (s): the
+    /// exact integrals of the piecewise-linear acceleration from rest at the
+    /// record's start; after its end the ground keeps its last velocity (no
+    /// baseline correction: PEER records come corrected). O(log n).
+    pub fn velocity_displacement(&self, t: f64) -> (f64, f64) {
+        let n = self.time.len();
+        if n == 0 || t.is_nan() || t <= self.time[0] {
+            return (0.0, 0.0);
+        }
+        if t >= self.time[n - 1] {
+            let tau = t - self.time[n - 1];
+            return (
+                self.velocity[n - 1],
+                self.displacement[n - 1] + self.velocity[n - 1] * tau,
+            );
+        }
+        let k = self.interval(t).unwrap_or(0);
+        let (t0, t1) = (self.time[k], self.time[k + 1]);
+        let (h, tau) = (t1 - t0, t - t0);
+        let (a0, a1) = (self.acceleration[k], self.acceleration[k + 1]);
+        let slope = (a1 - a0) / h;
+        let velocity = self.velocity[k] + a0 * tau + 0.5 * slope * tau * tau;
+        let displacement = self.displacement[k]
+            + self.velocity[k] * tau
+            + 0.5 * a0 * tau * tau
+            + slope * tau * tau * tau / 6.0;
+        (velocity, displacement)
+    }
+}
+
+/// The vertical support excitation of a run: its records and what they do
+/// to the kept modes.
+#[derive(Debug, Clone)]
+pub struct GroundExcitation {
+    /// The vertical components (their accelerations add up).
+    pub vertical: Vec<std::sync::Arc<GroundRecord>>,
+    /// Participation factors Γᵢ = φᵢᵀ M δ of the kept modes, √kg.
+    pub participation: Vec<f64>,
+    /// Total mass of the bridge, kg.
+    pub total_mass: f64,
+}
+
+impl GroundExcitation {
+    /// Vertical ground acceleration at run time `t` (s), m/s².
+    #[inline]
+    pub fn vertical_acceleration(&self, t: f64) -> f64 {
+        self.vertical.iter().map(|r| r.acceleration_at(t)).sum()
+    }
+
+    /// Vertical ground velocity (m/s) and displacement (m) at `t` (s).
+    pub fn vertical_motion(&self, t: f64) -> (f64, f64) {
+        self.vertical
+            .iter()
+            .map(|r| r.velocity_displacement(t))
+            .fold((0.0, 0.0), |(v, u), (dv, du)| (v + dv, u + du))
+    }
+
+    /// Σ Γᵢ² / total mass: the share of the bridge's mass the kept modes
+    /// move under a vertical support motion (dimensionless, ≤ 1).
+    pub fn effective_mass_ratio(&self) -> f64 {
+        self.participation.iter().map(|g| g * g).sum::<f64>() / self.total_mass
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A constant acceleration a from t = 1 s: v = a(t − 1), u = a(t − 1)²/2
+    /// exactly; a ramp a = t: v = t²/2, u = t³/6.
+    #[test]
+    fn integrals_are_exact_for_linear_acceleration() {
+        let r = GroundRecord::new(&[0.0, 0.5, 2.0], &[2.0, 2.0, 2.0], 1.5, 1.0);
+        assert_eq!(r.acceleration_at(0.5), 0.0);
+        assert_eq!(r.acceleration_at(2.0), 3.0);
+        let (v, u) = r.velocity_displacement(2.2);
+        assert!((v - 3.0 * 1.2).abs() < 1e-14 && (u - 1.5 * 1.44).abs() < 1e-14);
+        let r = GroundRecord::new(&[0.0, 0.3, 1.0, 1.7], &[0.0, 0.3, 1.0, 1.7], 1.0, 0.0);
+        for t in [0.1, 0.3, 0.77, 1.5] {
+            let (v, u) = r.velocity_displacement(t);
+            assert!((r.acceleration_at(t) - t).abs() < 1e-15);
+            assert!((v - t * t / 2.0).abs() < 1e-15, "v at {t}");
+            assert!((u - t * t * t / 6.0).abs() < 1e-15, "u at {t}");
+        }
+        // After the end: the last velocity is kept.
+        let (v, u) = r.velocity_displacement(2.7);
+        assert!((v - 1.445).abs() < 1e-14);
+        assert!((u - (1.7f64.powi(3) / 6.0 + 1.445)).abs() < 1e-13);
+    }
+
+    #[test]
+    fn units_are_recognised() {
+        assert_eq!(
+            AccelerationUnit::parse("G"),
+            Some(AccelerationUnit::StandardGravity)
+        );
+        assert_eq!(
+            AccelerationUnit::parse("cm/sec/sec"),
+            Some(AccelerationUnit::CentimetresPerSecondSquared)
+        );
+        assert_eq!(
+            AccelerationUnit::parse(" m/s² "),
+            Some(AccelerationUnit::MetresPerSecondSquared)
+        );
+        assert_eq!(AccelerationUnit::parse("in/s^2"), None);
+    }
+}

@@ -1,0 +1,153 @@
+//! Ground acceleration tables in CSV: rows `time, acceleration` (s, and
+//! the unit of the header or of the scenario's `units`), `#` comments and
+//! blank lines skipped, time strictly increasing (the samples need not be
+//! evenly spaced). A header row names the unit in brackets,
+//! `time [s], acceleration [g]` (or `[m/s^2]`, `[cm/s^2]`).
+
+use super::AccelerationUnit;
+
+/// A parsed table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// Sample times, s.
+    pub time: Vec<f64>,
+    /// Accelerations in `unit`.
+    pub acceleration: Vec<f64>,
+    /// The unit the header states, if it does.
+    pub unit: Option<AccelerationUnit>,
+}
+
+/// Why a table could not be read: (1-based line, message).
+pub type TableError = (usize, String);
+
+/// The unit in brackets of a header field, `acceleration [g]` → g.
+fn bracketed_unit(field: &str, line: usize) -> Result<Option<AccelerationUnit>, TableError> {
+    let (Some(open), Some(close)) = (field.find('['), field.rfind(']')) else {
+        return Ok(None);
+    };
+    if close <= open {
+        return Ok(None);
+    }
+    let inner = &field[open + 1..close];
+    AccelerationUnit::parse(inner).map(Some).ok_or((
+        line,
+        format!("the header's acceleration unit `[{inner}]` is not g, m/s^2 or cm/s^2"),
+    ))
+}
+
+/// Parses the CSV text; the caller has budgeted its size.
+pub fn parse(text: &str) -> Result<Table, TableError> {
+    let mut table = Table {
+        time: Vec::new(),
+        acceleration: Vec::new(),
+        unit: None,
+    };
+    let mut first_row = true;
+    for (i, line) in text.lines().enumerate() {
+        let n = i + 1;
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = if line.contains(',') {
+            line.split(',').map(str::trim).collect()
+        } else {
+            line.split_whitespace().collect()
+        };
+        let header = first_row && fields.iter().any(|f| f.parse::<f64>().is_err());
+        first_row = false;
+        if header {
+            if let Some(field) = fields.get(1) {
+                table.unit = bracketed_unit(field, n)?;
+            }
+            if let Some(time) = fields.first()
+                && let (Some(open), Some(close)) = (time.find('['), time.rfind(']'))
+                && close > open
+                && !matches!(time[open + 1..close].trim(), "s" | "sec" | "seconds")
+            {
+                return Err((
+                    n,
+                    format!("the time column must be in seconds, `[s]`; found `{time}`"),
+                ));
+            }
+            continue;
+        }
+        if fields.len() != 2 {
+            return Err((
+                n,
+                format!(
+                    "a row has 2 columns (time, acceleration), this one has {}",
+                    fields.len()
+                ),
+            ));
+        }
+        let mut values = [0.0; 2];
+        for (k, field) in fields.iter().enumerate() {
+            let v: f64 = field
+                .parse()
+                .map_err(|_| (n, format!("column {}: `{field}` is not a number", k + 1)))?;
+            if !v.is_finite() {
+                return Err((
+                    n,
+                    format!("column {}: `{field}` is not a finite number", k + 1),
+                ));
+            }
+            values[k] = v;
+        }
+        if let Some(&previous) = table.time.last()
+            && values[0] <= previous
+        {
+            return Err((
+                n,
+                format!(
+                    "column 1: time {} s does not exceed the previous row's {previous} s (time must increase strictly)",
+                    values[0]
+                ),
+            ));
+        }
+        table.time.push(values[0]);
+        table.acceleration.push(values[1]);
+    }
+    if table.time.len() < 2 {
+        return Err((
+            text.lines().count().max(1),
+            format!(
+                "a ground-motion record needs at least two rows, this file has {}",
+                table.time.len()
+            ),
+        ));
+    }
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_units_from_the_header() {
+        let t = parse("# El Centro\ntime [s], acceleration [g]\n0, 0.01\n0.02, -0.02\n").unwrap();
+        assert_eq!(t.unit, Some(AccelerationUnit::StandardGravity));
+        assert_eq!(t.time, vec![0.0, 0.02]);
+        let t = parse("0 1\n0.5 2\n").unwrap();
+        assert_eq!(t.unit, None);
+    }
+
+    #[test]
+    fn bad_rows_are_located() {
+        assert_eq!(parse("t,a\n0,0\n0,1\n").unwrap_err().0, 3);
+        assert_eq!(parse("0,0\n1,inf\n").unwrap_err().0, 2);
+        assert_eq!(parse("0,0\n1,1,1\n").unwrap_err().0, 2);
+        assert_eq!(
+            parse("time [s], acceleration [ft/s^2]\n0,0\n")
+                .unwrap_err()
+                .0,
+            1
+        );
+        assert_eq!(
+            parse("time [ms], acceleration [g]\n0,0\n").unwrap_err().0,
+            1
+        );
+        assert!(parse("0,0\n").is_err());
+    }
+}

@@ -1,0 +1,206 @@
+//! Resolving the `ground_motion` section: each record read, checked and
+//! put on the run's clock. Problems are reported at the component's field
+//! (`ground_motion[i].file` for the file's own, with the file's line in
+//! the message); the file's size and its declared sample count are budgeted
+//! (`limits.ground_points`) before anything is allocated per sample.
+
+use std::io::Read;
+use std::path::Path;
+use std::sync::Arc;
+
+use super::budget::Budget;
+use super::raw::GroundMotionRaw;
+use super::resolve::Checker;
+use super::resolved::{Bridge, GroundMotion};
+use crate::ground::{AccelerationUnit, Direction, GroundRecord, at2, table};
+
+/// Fewest bytes a sample takes in a file (`0 ` or `0,0` and a break).
+const MIN_SAMPLE_BYTES: f64 = 2.0;
+
+/// Resolves every component; those with errors are reported and left out.
+pub(super) fn resolve(
+    raw: Option<&[GroundMotionRaw]>,
+    bridge: Option<&Bridge>,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Vec<GroundMotion> {
+    let mut out = Vec::new();
+    for (i, component) in raw.unwrap_or_default().iter().enumerate() {
+        let at = format!("ground_motion[{i}]");
+        let direction = component.direction.unwrap_or(Direction::Vertical);
+        match direction {
+            Direction::Vertical => {}
+            Direction::Lateral => {
+                let kind = match bridge {
+                    Some(Bridge::Plate(_)) => "plate",
+                    _ => "beam",
+                };
+                ck.error(
+                    &format!("{at}.direction"),
+                    format!(
+                        "a lateral ground motion needs a bridge with lateral modes; the {kind} \
+                         bridge is a vertical model (its modes move only up and down), so the \
+                         record would have no effect"
+                    ),
+                );
+                continue;
+            }
+            Direction::Longitudinal => {
+                ck.error(
+                    &format!("{at}.direction"),
+                    "a longitudinal ground motion has no effect on these bridge models (they have \
+                     no longitudinal degrees of freedom, and the supports moving together along \
+                     the track only carry the vehicles with them); leave it out",
+                );
+                continue;
+            }
+        }
+        let scale = component.scale.unwrap_or(1.0);
+        if !scale.is_finite() {
+            ck.error(
+                &format!("{at}.scale"),
+                format!("the scale must be a finite number, got {scale}"),
+            );
+            continue;
+        }
+        let start_time = component.start_time.unwrap_or(0.0);
+        if !start_time.is_finite() {
+            ck.error(
+                &format!("{at}.start_time"),
+                format!("the start time must be a finite number of seconds, got {start_time}"),
+            );
+            continue;
+        }
+        let base = Path::new(ck.file()).parent().unwrap_or(Path::new(""));
+        let path = base.join(&component.file);
+        let path = std::path::absolute(&path).unwrap_or(path);
+        let Some((time, acceleration, units)) = read(&path, component.units, &at, budget, ck)
+        else {
+            continue;
+        };
+        let si: Vec<f64> = acceleration.iter().map(|a| a * units.in_si()).collect();
+        out.push(GroundMotion {
+            file: path.display().to_string(),
+            direction,
+            scale,
+            start_time,
+            units,
+            record: Arc::new(GroundRecord::new(&time, &si, scale, start_time)),
+        });
+    }
+    out
+}
+
+/// Reads a record file: (times s, accelerations in `units`, units).
+fn read(
+    path: &Path,
+    given: Option<AccelerationUnit>,
+    at: &str,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Option<(Vec<f64>, Vec<f64>, AccelerationUnit)> {
+    let field = format!("{at}.file");
+    let shown = path.display().to_string();
+    let size = match std::fs::metadata(path) {
+        Ok(m) if m.is_file() => m.len(),
+        Ok(_) => {
+            ck.error(&field, format!("{shown} is not a file"));
+            return None;
+        }
+        Err(e) => {
+            ck.error(
+                &field,
+                format!("cannot read the ground-motion record {shown}: {e}"),
+            );
+            return None;
+        }
+    };
+    let most = (size as f64 / MIN_SAMPLE_BYTES).ceil();
+    if !budget.check(
+        ck,
+        &field,
+        "ground_points",
+        &format!("samples the ground-motion record {shown} may hold ({size} bytes)"),
+        most,
+    ) {
+        return None;
+    }
+    let mut text = String::new();
+    let result = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
+    if let Err(e) = result {
+        ck.error(
+            &field,
+            format!("cannot read the ground-motion record {shown}: {e}"),
+        );
+        return None;
+    }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let is_at2 = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("at2"));
+    let located = |ck: &mut Checker<'_>, (line, message): (usize, String)| {
+        ck.error(&field, format!("{shown}:{line}: {message}"));
+    };
+    if is_at2 {
+        // The size bound above already caps the samples; NPTS is checked
+        // against it again inside the parser before it allocates.
+        let max_points = most.min(budget.limit_of("ground_points")) as usize;
+        let record = match at2::parse(text, max_points) {
+            Ok(r) => r,
+            Err(e) => {
+                located(ck, e);
+                return None;
+            }
+        };
+        if let Some(g) = given
+            && g != record.unit
+        {
+            ck.error(
+                &format!("{at}.units"),
+                format!(
+                    "`units: {}` disagrees with {shown}, whose header states {}",
+                    g.name(),
+                    record.unit.name()
+                ),
+            );
+            return None;
+        }
+        let time = (0..record.acceleration.len())
+            .map(|k| k as f64 * record.interval)
+            .collect();
+        return Some((time, record.acceleration, record.unit));
+    }
+    let table = match table::parse(text) {
+        Ok(t) => t,
+        Err(e) => {
+            located(ck, e);
+            return None;
+        }
+    };
+    let units = match (table.unit, given) {
+        (Some(a), Some(b)) if a != b => {
+            ck.error(
+                &format!("{at}.units"),
+                format!(
+                    "`units: {}` disagrees with {shown}, whose header states {}",
+                    b.name(),
+                    a.name()
+                ),
+            );
+            return None;
+        }
+        (Some(u), _) | (None, Some(u)) => u,
+        (None, None) => {
+            ck.error(
+                &field,
+                format!(
+                    "{shown} does not state the units of its accelerations: give a header \
+                     `time [s], acceleration [g]` (or [m/s^2], [cm/s^2]) or `units:` here"
+                ),
+            );
+            return None;
+        }
+    };
+    Some((table.time, table.acceleration, units))
+}
