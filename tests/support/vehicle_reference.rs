@@ -32,6 +32,18 @@
 //! evaluated pointwise (no event location): the law is C⁰ (linear) or C¹
 //! (Hertz) at δ = 0, so a switch costs O(h²) locally. Losses are sign changes
 //! of δ between steps, located by linear interpolation.
+//!
+//! Rigid contact (`rigid: true`) for wheels on massless contact points (the
+//! truck's): in contact the point moves with the surface, u = s = w + r and
+//! u̇ = ṡ = Σφ_j q̇_j + v(Σφ′_j q_j + r′), and the contact force is what holds
+//! it there, λ = −Q_c at u̇_c = ṡ (its tyre spring and dashpot); free, λ = 0
+//! and Q_c = 0 gives u̇_c. The point has no mass, so a landing needs no
+//! impact rule: u̇_c jumps to ṡ, λ jumps to c_t·(ṡ − u̇_free) > 0, nothing is
+//! lost or restituted. Events are located exactly: a step in which some
+//! wheel's λ turns negative (lift-off) or some free point falls below the
+//! surface (landing) is redone up to the earliest event, found by bisection
+//! on a single RK4 step of variable length (to 1e-15 s), the wheel switches
+//! and the step is finished from there.
 #![allow(dead_code)]
 #![allow(clippy::needless_range_loop)]
 
@@ -80,6 +92,26 @@ pub enum Road {
 }
 
 impl Road {
+    /// dr/dx, 1.
+    fn slope(&self, x: f64) -> f64 {
+        match *self {
+            Road::Harmonic(a, lambda, phase) => {
+                if x < 0.0 {
+                    0.0
+                } else {
+                    a * 2.0 * PI / lambda * (2.0 * PI * x / lambda + phase).cos()
+                }
+            }
+            Road::Bump(start, length, height) => {
+                if x < start || x > start + length {
+                    0.0
+                } else {
+                    0.5 * height * 2.0 * PI / length * (2.0 * PI * (x - start) / length).sin()
+                }
+            }
+        }
+    }
+
     fn at(&self, x: f64) -> f64 {
         match *self {
             Road::Harmonic(a, lambda, phase) => {
@@ -155,6 +187,8 @@ pub struct Case {
     pub contact_coefficient: f64,
     /// n.
     pub contact_exponent: f64,
+    /// Rigid contact instead (coefficient and exponent unused).
+    pub rigid: bool,
     pub vehicles: Vec<Vehicle>,
     /// Where the deck deflection is sampled, (x, y) m.
     pub probe: (f64, f64),
@@ -265,12 +299,12 @@ impl Vehicle {
     /// compression of its static load, (P/k_c)^(1/n) below 0: the coordinates
     /// other than the wheels' from K u = −weights − K_w u_w, then the wheels'
     /// equilibrium checked against the static loads (1e-9 relative).
-    fn static_state(&self, coefficient: f64, exponent: f64) -> Vec<f64> {
+    fn static_state(&self, compression: impl Fn(f64) -> f64) -> Vec<f64> {
         let n = self.dofs();
         let mut u = vec![0.0; n];
         let fixed: Vec<usize> = self.wheels.iter().map(|w| w.dof).collect();
         for w in &self.wheels {
-            u[w.dof] = -(w.static_load / coefficient).powf(1.0 / exponent);
+            u[w.dof] = -compression(w.static_load);
         }
         let free: Vec<usize> = (0..n).filter(|i| !fixed.contains(i)).collect();
         // Columns of K by unit displacements (the forces are linear in u).
@@ -318,8 +352,28 @@ struct Work {
     du: Vec<f64>,
     contact: Vec<f64>,
     q: Vec<f64>,
+    /// ∂φ/∂x at one point, 1/m, and cos(kπx/L).
+    slope: Vec<f64>,
+    along_cos: Vec<f64>,
+    /// Per wheel: ṡ (m/s), the contact force (N), whether in contact
+    /// (rigid contact only).
+    surface_rate: Vec<f64>,
+    force: Vec<f64>,
+    in_contact: Vec<bool>,
     /// Per vehicle, per coordinate: [`Vehicle::own_damping`].
     own_damping: Vec<Vec<f64>>,
+}
+
+/// cos(k·a) for k = 0 … out.len() − 1, by the same recurrence.
+fn cosines(a: f64, out: &mut [f64]) {
+    let c2 = 2.0 * a.cos();
+    for k in 0..out.len() {
+        out[k] = match k {
+            0 => 1.0,
+            1 => a.cos(),
+            _ => c2 * out[k - 1] - out[k - 2],
+        };
+    }
 }
 
 /// sin(k·a) for k = 0 … out.len() − 1.
@@ -428,19 +482,25 @@ impl Case {
         let out = &mut work.shape;
         if !(0.0..=self.length()).contains(&x) {
             out.fill(0.0);
+            work.slope.fill(0.0);
             return;
         }
-        sines(PI * x / self.length(), &mut work.along);
+        let l = self.length();
+        sines(PI * x / l, &mut work.along);
+        cosines(PI * x / l, &mut work.along_cos);
         match self.deck {
             Deck::Beam { .. } => {
-                for (o, mode) in out.iter_mut().zip(modes) {
-                    *o = work.along[mode.m];
+                for (j, mode) in modes.iter().enumerate() {
+                    out[j] = work.along[mode.m];
+                    work.slope[j] = mode.m as f64 * PI / l * work.along_cos[mode.m];
                 }
             }
             Deck::Plate { width, .. } => {
                 sines(PI * y / width, &mut work.across);
-                for (o, mode) in out.iter_mut().zip(modes) {
-                    *o = work.along[mode.m] * work.across[mode.n];
+                for (j, mode) in modes.iter().enumerate() {
+                    out[j] = work.along[mode.m] * work.across[mode.n];
+                    work.slope[j] =
+                        mode.m as f64 * PI / l * work.along_cos[mode.m] * work.across[mode.n];
                 }
             }
         }
@@ -469,6 +529,10 @@ impl Case {
                 work.under[w * nm..(w + 1) * nm].copy_from_slice(&work.shape);
                 let deck: f64 = work.shape.iter().zip(y).map(|(p, q)| p * q).sum();
                 delta[w] = self.road.at(x) + deck - y[layout.offsets[v] + wheel.dof];
+                let deck_rate: f64 = work.shape.iter().zip(&y[nm..]).map(|(p, q)| p * q).sum();
+                let deck_slope: f64 = work.slope.iter().zip(y).map(|(p, q)| p * q).sum();
+                work.surface_rate[w] =
+                    deck_rate + vehicle.speed * (deck_slope + self.road.slope(x));
                 w += 1;
             }
         }
@@ -504,18 +568,15 @@ impl Case {
             contact.resize(n, 0.0);
             q.resize(n, 0.0);
             let u = &y[b..b + n];
+            let first = w;
             for wheel in &vehicle.wheels {
-                let f = self.law(delta[w]);
-                contact[wheel.dof] += f;
-                if f != 0.0 {
-                    let under = &work.under[w * nm..(w + 1) * nm];
-                    for (j, mode) in modes.iter().enumerate() {
-                        dy[nm + j] -= f * under[j] / mode.mass;
-                    }
+                if !self.rigid {
+                    contact[wheel.dof] += self.law(delta[w]);
                 }
                 w += 1;
             }
-            // Massless coordinates first: Q_i(u̇_i) = 0 is linear in u̇_i.
+            // Massless coordinates first: Q_i(u̇_i) = 0 is linear in u̇_i;
+            // a rigidly held one moves with the surface.
             for i in 0..n {
                 if vehicle.masses[i] == 0.0 {
                     du[i] = 0.0;
@@ -527,7 +588,34 @@ impl Case {
                     du[i] = (q[i] + contact[i]) / work.own_damping[v][i];
                 }
             }
+            if self.rigid {
+                for (k, wheel) in vehicle.wheels.iter().enumerate() {
+                    if work.in_contact[first + k] {
+                        du[wheel.dof] = work.surface_rate[first + k];
+                    }
+                }
+            }
             vehicle.forces(u, du, q);
+            for (k, wheel) in vehicle.wheels.iter().enumerate() {
+                let c = first + k;
+                if self.rigid {
+                    // λ = −Q_c holds the point (0 when free: Q_c = 0 then).
+                    let f = if work.in_contact[c] {
+                        -q[wheel.dof]
+                    } else {
+                        0.0
+                    };
+                    contact[wheel.dof] += f;
+                }
+                let f = contact[wheel.dof];
+                work.force[c] = f;
+                if f != 0.0 {
+                    let under = &work.under[c * nm..(c + 1) * nm];
+                    for (j, mode) in modes.iter().enumerate() {
+                        dy[nm + j] -= f * under[j] / mode.mass;
+                    }
+                }
+            }
             for i in 0..n {
                 dy[b + i] = du[i];
                 dy[b + n + i] = if vehicle.masses[i] == 0.0 {
@@ -536,6 +624,84 @@ impl Case {
                     (q[i] + contact[i]) / vehicle.masses[i]
                 };
             }
+        }
+    }
+
+    /// One RK4 step of length `h` from (t, y) into `out`.
+    #[allow(clippy::too_many_arguments)]
+    fn rk4(
+        &self,
+        modes: &[Mode],
+        layout: &Layout,
+        t: f64,
+        y: &[f64],
+        h: f64,
+        out: &mut [f64],
+        scratch: &mut Scratch,
+        work: &mut Work,
+    ) {
+        let dim = y.len();
+        let stages = [(0.0, 0usize), (0.5, 0), (0.5, 1), (1.0, 2)];
+        for (s, &(c, from)) in stages.iter().enumerate() {
+            if s == 0 {
+                scratch.yt.copy_from_slice(y);
+            } else {
+                for m in 0..dim {
+                    scratch.yt[m] = y[m] + c * h * scratch.k[from][m];
+                }
+            }
+            let (_, tail) = scratch.k.split_at_mut(s);
+            self.rhs(
+                modes,
+                layout,
+                t + c * h,
+                &scratch.yt,
+                &mut tail[0],
+                &mut scratch.delta,
+                &mut scratch.position,
+                work,
+            );
+        }
+        let k = &scratch.k;
+        for m in 0..dim {
+            out[m] = y[m] + h / 6.0 * (k[0][m] + 2.0 * k[1][m] + 2.0 * k[2][m] + k[3][m]);
+        }
+    }
+
+    /// Contact forces (into `work.force`), compressions and positions at (t, y).
+    #[allow(clippy::too_many_arguments)]
+    fn evaluate(
+        &self,
+        modes: &[Mode],
+        layout: &Layout,
+        t: f64,
+        y: &[f64],
+        scratch: &mut Scratch,
+        work: &mut Work,
+    ) {
+        let mut dy = std::mem::take(&mut scratch.dy);
+        self.rhs(
+            modes,
+            layout,
+            t,
+            y,
+            &mut dy,
+            &mut scratch.delta,
+            &mut scratch.position,
+            work,
+        );
+        scratch.dy = dy;
+    }
+
+    /// The rigid-contact event of wheel `c` at the current evaluation: how
+    /// far past it the state is (> 0: a held wheel's force below 0, or a
+    /// free point below the surface, m or N).
+    fn event(&self, c: usize, scratch: &Scratch, work: &Work) -> f64 {
+        if work.in_contact[c] {
+            -work.force[c]
+        } else {
+            // Below the surface by more than 10 fm (round-off of s).
+            scratch.delta[c] - 1e-14
         }
     }
 
@@ -549,18 +715,42 @@ impl Case {
         let mut y = vec![0.0; dim];
         for (v, vehicle) in self.vehicles.iter().enumerate() {
             assert!(vehicle.entry_time >= 0.0 && vehicle.speed > 0.0);
-            let u = vehicle.static_state(self.contact_coefficient, self.contact_exponent);
+            let u = vehicle.static_state(|p| {
+                if self.rigid {
+                    0.0
+                } else {
+                    (p / self.contact_coefficient).powf(1.0 / self.contact_exponent)
+                }
+            });
             let b = layout.offsets[v];
             y[b..b + vehicle.dofs()].copy_from_slice(&u);
             for (i, &m) in vehicle.masses.iter().enumerate() {
                 assert!(m > 0.0 || vehicle.own_damping(i) > 0.0);
             }
+            if self.rigid {
+                assert!(
+                    vehicle.wheels.iter().all(|w| vehicle.masses[w.dof] == 0.0),
+                    "rigid contact: massless contact points only"
+                );
+            }
         }
         let nw: usize = self.vehicles.iter().map(|v| v.wheels.len()).sum();
+        // Which coordinate of the state each wheel's point is.
+        let wheel_dofs: Vec<usize> = self
+            .vehicles
+            .iter()
+            .enumerate()
+            .flat_map(|(v, vehicle)| vehicle.wheels.iter().map(move |w| (v, w.dof)))
+            .map(|(v, dof)| layout.offsets[v] + dof)
+            .collect();
         let steps = (t_end / h).round() as usize;
-        let mut k = vec![vec![0.0; dim]; 4];
-        let mut yt = vec![0.0; dim];
-        let (mut delta, mut pos) = (vec![0.0; nw], vec![0.0; nw]);
+        let mut scratch = Scratch {
+            k: vec![vec![0.0; dim]; 4],
+            yt: vec![0.0; dim],
+            dy: vec![0.0; dim],
+            delta: vec![0.0; nw],
+            position: vec![0.0; nw],
+        };
         let top = modes.iter().map(|m| m.m.max(m.n)).max().unwrap_or(0) + 1;
         let mut work = Work {
             shape: vec![0.0; nm],
@@ -570,6 +760,11 @@ impl Case {
             du: Vec::new(),
             contact: Vec::new(),
             q: Vec::new(),
+            slope: vec![0.0; nm],
+            along_cos: vec![0.0; top],
+            surface_rate: vec![0.0; nw],
+            force: vec![0.0; nw],
+            in_contact: vec![true; nw],
             own_damping: self
                 .vehicles
                 .iter()
@@ -586,56 +781,155 @@ impl Case {
             .iter()
             .map(|mode| self.shape(mode, probe.0, probe.1))
             .collect();
-        let sample = |y: &[f64], delta: &[f64], out: &mut History| {
+        let sample = |y: &[f64], force: &[f64], out: &mut History| {
             out.deflection
                 .push(probe_shape.iter().zip(y).map(|(p, q)| p * q).sum());
-            for (c, d) in delta.iter().enumerate() {
-                out.contact_force[c].push(self.law(*d));
+            for (c, f) in force.iter().enumerate() {
+                out.contact_force[c].push(*f);
             }
         };
-        self.wheel_states(&modes, &layout, 0.0, &y, &mut delta, &mut pos, &mut work);
+        self.evaluate(&modes, &layout, 0.0, &y, &mut scratch, &mut work);
         let mut next = 0usize;
         while next < times.len() && times[next] <= 0.5 * h {
-            sample(&y, &delta, &mut out);
+            sample(&y, &work.force, &mut out);
             next += 1;
         }
-        let mut previous = delta.clone();
-        let mut previous_position = pos.clone();
+        let mut previous = scratch.delta.clone();
+        let mut previous_position = scratch.position.clone();
+        let (mut y_end, mut y_try) = (vec![0.0; dim], vec![0.0; dim]);
+        // The contact forces of the two previous grid points, per wheel.
+        let mut recent: Vec<[f64; 2]> = work.force.iter().map(|&f| [f, f]).collect();
         for i in 0..steps {
             let t = i as f64 * h;
-            let stages = [(0.0, 0usize), (0.5, 0), (0.5, 1), (1.0, 2)];
-            for (s, &(c, from)) in stages.iter().enumerate() {
-                if s == 0 {
-                    yt.copy_from_slice(&y);
-                } else {
-                    for m in 0..dim {
-                        yt[m] = y[m] + c * h * k[from][m];
+            let t1 = (i + 1) as f64 * h;
+            if self.rigid {
+                // Step to t1, stopping at every event on the way.
+                let mut tc = t;
+                loop {
+                    let rest = t1 - tc;
+                    self.rk4(
+                        &modes,
+                        &layout,
+                        tc,
+                        &y,
+                        rest,
+                        &mut y_end,
+                        &mut scratch,
+                        &mut work,
+                    );
+                    self.evaluate(&modes, &layout, t1, &y_end, &mut scratch, &mut work);
+                    let crossed: Vec<usize> = (0..nw)
+                        .filter(|&c| self.event(c, &scratch, &work) > 0.0)
+                        .collect();
+                    if crossed.is_empty() {
+                        y.copy_from_slice(&y_end);
+                        break;
+                    }
+                    // Earliest event: bisection on the step length.
+                    let mut earliest = (rest, crossed[0]);
+                    for &c in &crossed {
+                        let (mut lo, mut hi) = (0.0, rest);
+                        while hi - lo > 1e-15 {
+                            let mid = 0.5 * (lo + hi);
+                            self.rk4(
+                                &modes,
+                                &layout,
+                                tc,
+                                &y,
+                                mid,
+                                &mut y_try,
+                                &mut scratch,
+                                &mut work,
+                            );
+                            self.evaluate(
+                                &modes,
+                                &layout,
+                                tc + mid,
+                                &y_try,
+                                &mut scratch,
+                                &mut work,
+                            );
+                            if self.event(c, &scratch, &work) > 0.0 {
+                                hi = mid;
+                            } else {
+                                lo = mid;
+                            }
+                        }
+                        if hi < earliest.0 {
+                            earliest = (hi, c);
+                        }
+                    }
+                    let (tau, c) = earliest;
+                    self.rk4(
+                        &modes,
+                        &layout,
+                        tc,
+                        &y,
+                        tau,
+                        &mut y_end,
+                        &mut scratch,
+                        &mut work,
+                    );
+                    y.copy_from_slice(&y_end);
+                    tc += tau;
+                    self.evaluate(&modes, &layout, tc, &y, &mut scratch, &mut work);
+                    // The point is on the surface at the event: put it there
+                    // exactly (removes the 1e-15 s of the bracket).
+                    y[wheel_dofs[c]] += scratch.delta[c];
+                    let w = &mut out.wheels[c];
+                    if work.in_contact[c] {
+                        w.losses += 1;
+                        if w.first_loss.is_none() {
+                            w.first_loss = Some((tc, scratch.position[c]));
+                        }
+                    }
+                    work.in_contact[c] = !work.in_contact[c];
+                    if t1 - tc <= 1e-15 {
+                        break;
                     }
                 }
-                let (head, tail) = k.split_at_mut(s);
-                let _ = head;
-                self.rhs(
+                // Held points stay on the surface (RK4 drift, 1e-16 m).
+                self.evaluate(&modes, &layout, t1, &y, &mut scratch, &mut work);
+                for c in 0..nw {
+                    if work.in_contact[c] {
+                        y[wheel_dofs[c]] += scratch.delta[c];
+                    }
+                }
+            } else {
+                self.rk4(
                     &modes,
                     &layout,
-                    t + c * h,
-                    &yt,
-                    &mut tail[0],
-                    &mut delta,
-                    &mut pos,
+                    t,
+                    &y,
+                    h,
+                    &mut y_end,
+                    &mut scratch,
                     &mut work,
                 );
+                y.copy_from_slice(&y_end);
             }
-            for m in 0..dim {
-                y[m] += h / 6.0 * (k[0][m] + 2.0 * k[1][m] + 2.0 * k[2][m] + k[3][m]);
-            }
-            let t1 = (i + 1) as f64 * h;
-            self.wheel_states(&modes, &layout, t1, &y, &mut delta, &mut pos, &mut work);
+            self.evaluate(&modes, &layout, t1, &y, &mut scratch, &mut work);
+            let (delta, pos) = (&scratch.delta, &scratch.position);
             for c in 0..nw {
                 let w = &mut out.wheels[c];
                 let d = delta[c];
-                w.max_force = w.max_force.max(self.law(d));
+                let f = work.force[c];
+                w.max_force = w.max_force.max(f);
+                // A smooth peak between grid points: the vertex of the
+                // parabola through the last three values (O(h³) instead of
+                // the grid's O(h²)), where the correction is small (not at a
+                // rigid landing's jump).
+                let [f0, f1] = recent[c];
+                let bend = 2.0 * f1 - f0 - f;
+                if f1 >= f0 && f1 >= f && bend > 0.0 {
+                    let correction = (f0 - f) * (f0 - f) / (8.0 * bend);
+                    if correction < 1e-4 * f1 {
+                        w.max_force = w.max_force.max(f1 + correction);
+                    }
+                }
+                recent[c] = [f1, f];
                 w.max_gap = w.max_gap.max(-d);
-                if previous[c] > 0.0 && d <= 0.0 {
+                if !self.rigid && previous[c] > 0.0 && d <= 0.0 {
                     w.losses += 1;
                     if w.first_loss.is_none() {
                         let s = previous[c] / (previous[c] - d);
@@ -646,10 +940,10 @@ impl Case {
                     }
                 }
             }
-            previous.copy_from_slice(&delta);
-            previous_position.copy_from_slice(&pos);
+            previous.copy_from_slice(delta);
+            previous_position.copy_from_slice(pos);
             while next < times.len() && (times[next] - t1).abs() <= 0.5 * h {
-                sample(&y, &delta, &mut out);
+                sample(&y, &work.force, &mut out);
                 next += 1;
             }
         }
@@ -660,6 +954,15 @@ impl Case {
         );
         out
     }
+}
+
+/// Scratch space of the stepping.
+struct Scratch {
+    k: Vec<Vec<f64>>,
+    yt: Vec<f64>,
+    dy: Vec<f64>,
+    delta: Vec<f64>,
+    position: Vec<f64>,
 }
 
 #[cfg(test)]
