@@ -92,6 +92,28 @@ pub enum Road {
 }
 
 impl Road {
+    /// d²r/dx², 1/m.
+    fn curvature(&self, x: f64) -> f64 {
+        match *self {
+            Road::Harmonic(a, lambda, phase) => {
+                if x < 0.0 {
+                    0.0
+                } else {
+                    let k = 2.0 * PI / lambda;
+                    -a * k * k * (k * x + phase).sin()
+                }
+            }
+            Road::Bump(start, length, height) => {
+                if x < start || x > start + length {
+                    0.0
+                } else {
+                    let k = 2.0 * PI / length;
+                    0.5 * height * k * k * (k * (x - start)).cos()
+                }
+            }
+        }
+    }
+
     /// dr/dx, 1.
     fn slope(&self, x: f64) -> f64 {
         match *self {
@@ -201,6 +223,9 @@ pub struct WheelStatistics {
     pub losses: usize,
     /// Time and position of the first loss, s and m.
     pub first_loss: Option<(f64, f64)>,
+    /// First time on the grid of h at which the gap exceeds 1 nm (vbi's
+    /// definition of a wheel apart), s.
+    pub first_nanometre: Option<f64>,
     /// Largest gap −δ, m.
     pub max_gap: f64,
     /// Largest contact force, N.
@@ -216,6 +241,8 @@ pub struct History {
     /// Per wheel, per sample, N.
     pub contact_force: Vec<Vec<f64>>,
     pub wheels: Vec<WheelStatistics>,
+    /// Rigid contact: the first landing of any wheel, s.
+    pub first_landing: Option<f64>,
 }
 
 /// One deck mode: ω (rad/s), modal mass (kg), half-waves (m, n).
@@ -352,12 +379,15 @@ struct Work {
     du: Vec<f64>,
     contact: Vec<f64>,
     q: Vec<f64>,
-    /// ∂φ/∂x at one point, 1/m, and cos(kπx/L).
+    /// ∂φ/∂x (1/m) and ∂²φ/∂x² (1/m²) at one point, and cos(kπx/L).
     slope: Vec<f64>,
+    curvature: Vec<f64>,
     along_cos: Vec<f64>,
-    /// Per wheel: ṡ (m/s), the contact force (N), whether in contact
-    /// (rigid contact only).
+    /// Per wheel: ṡ (m/s), the part of s̈ not from the deck's modal
+    /// accelerations, 2vΣφ′q̇ + v²(Σφ″q + r″) (m/s²), the contact force (N),
+    /// whether in contact (rigid contact only).
     surface_rate: Vec<f64>,
+    surface_transport: Vec<f64>,
     force: Vec<f64>,
     in_contact: Vec<bool>,
     /// Per vehicle, per coordinate: [`Vehicle::own_damping`].
@@ -483,6 +513,7 @@ impl Case {
         if !(0.0..=self.length()).contains(&x) {
             out.fill(0.0);
             work.slope.fill(0.0);
+            work.curvature.fill(0.0);
             return;
         }
         let l = self.length();
@@ -491,16 +522,19 @@ impl Case {
         match self.deck {
             Deck::Beam { .. } => {
                 for (j, mode) in modes.iter().enumerate() {
+                    let k = mode.m as f64 * PI / l;
                     out[j] = work.along[mode.m];
-                    work.slope[j] = mode.m as f64 * PI / l * work.along_cos[mode.m];
+                    work.slope[j] = k * work.along_cos[mode.m];
+                    work.curvature[j] = -k * k * out[j];
                 }
             }
             Deck::Plate { width, .. } => {
                 sines(PI * y / width, &mut work.across);
                 for (j, mode) in modes.iter().enumerate() {
+                    let k = mode.m as f64 * PI / l;
                     out[j] = work.along[mode.m] * work.across[mode.n];
-                    work.slope[j] =
-                        mode.m as f64 * PI / l * work.along_cos[mode.m] * work.across[mode.n];
+                    work.slope[j] = k * work.along_cos[mode.m] * work.across[mode.n];
+                    work.curvature[j] = -k * k * out[j];
                 }
             }
         }
@@ -533,6 +567,11 @@ impl Case {
                 let deck_slope: f64 = work.slope.iter().zip(y).map(|(p, q)| p * q).sum();
                 work.surface_rate[w] =
                     deck_rate + vehicle.speed * (deck_slope + self.road.slope(x));
+                let slope_rate: f64 = work.slope.iter().zip(&y[nm..]).map(|(p, q)| p * q).sum();
+                let deck_curvature: f64 = work.curvature.iter().zip(y).map(|(p, q)| p * q).sum();
+                let v = vehicle.speed;
+                work.surface_transport[w] =
+                    2.0 * v * slope_rate + v * v * (deck_curvature + self.road.curvature(x));
                 w += 1;
             }
         }
@@ -598,7 +637,7 @@ impl Case {
             vehicle.forces(u, du, q);
             for (k, wheel) in vehicle.wheels.iter().enumerate() {
                 let c = first + k;
-                if self.rigid {
+                if self.rigid && vehicle.masses[wheel.dof] == 0.0 {
                     // λ = −Q_c holds the point (0 when free: Q_c = 0 then).
                     let f = if work.in_contact[c] {
                         -q[wheel.dof]
@@ -623,6 +662,66 @@ impl Case {
                 } else {
                     (q[i] + contact[i]) / vehicle.masses[i]
                 };
+            }
+        }
+        if self.rigid {
+            self.hold_wheels_with_mass(modes, layout, dy, work);
+        }
+    }
+
+    /// Rigid contact of the wheels with mass that are in contact: their
+    /// accelerations must equal the surface's, ü_c = s̈_c =
+    /// Σφ_j(x_c) q̈_j + 2vΣφ′_j q̇_j + v²(Σφ″_j q_j + r″), with
+    /// ü_c = ü⁰_c + λ_c/m_c and q̈_j = q̈⁰_j − Σ_d λ_d φ_j(x_d)/M_j (⁰: without
+    /// these forces, as `dy` holds them): a linear system for the λ's of all
+    /// such wheels at once (they couple through the deck),
+    /// λ_c/m_c + Σ_d (Σ_j φ_j(x_c)φ_j(x_d)/M_j) λ_d = Σφ_j(x_c)q̈⁰_j + transport_c − ü⁰_c.
+    fn hold_wheels_with_mass(
+        &self,
+        modes: &[Mode],
+        layout: &Layout,
+        dy: &mut [f64],
+        work: &mut Work,
+    ) {
+        let nm = modes.len();
+        let mut held = Vec::new();
+        let mut c = 0;
+        for (v, vehicle) in self.vehicles.iter().enumerate() {
+            for wheel in &vehicle.wheels {
+                let m = vehicle.masses[wheel.dof];
+                if m > 0.0 && work.in_contact[c] {
+                    held.push((c, layout.offsets[v] + vehicle.dofs() + wheel.dof, m));
+                }
+                c += 1;
+            }
+        }
+        if held.is_empty() {
+            return;
+        }
+        let k = held.len();
+        let mut a = vec![vec![0.0; k]; k];
+        let mut b = vec![0.0; k];
+        for (r, &(c, acc, m)) in held.iter().enumerate() {
+            let uc = &work.under[c * nm..(c + 1) * nm];
+            for (s, &(d, _, _)) in held.iter().enumerate() {
+                let ud = &work.under[d * nm..(d + 1) * nm];
+                a[r][s] = modes
+                    .iter()
+                    .enumerate()
+                    .map(|(j, mode)| uc[j] * ud[j] / mode.mass)
+                    .sum();
+            }
+            a[r][r] += 1.0 / m;
+            let deck: f64 = (0..nm).map(|j| uc[j] * dy[nm + j]).sum();
+            b[r] = deck + work.surface_transport[c] - dy[acc];
+        }
+        let lambda = solve(a, b);
+        for (&(c, acc, m), &l) in held.iter().zip(&lambda) {
+            dy[acc] += l / m;
+            work.force[c] = l;
+            let uc = &work.under[c * nm..(c + 1) * nm];
+            for (j, mode) in modes.iter().enumerate() {
+                dy[nm + j] -= l * uc[j] / mode.mass;
             }
         }
     }
@@ -727,12 +826,6 @@ impl Case {
             for (i, &m) in vehicle.masses.iter().enumerate() {
                 assert!(m > 0.0 || vehicle.own_damping(i) > 0.0);
             }
-            if self.rigid {
-                assert!(
-                    vehicle.wheels.iter().all(|w| vehicle.masses[w.dof] == 0.0),
-                    "rigid contact: massless contact points only"
-                );
-            }
         }
         let nw: usize = self.vehicles.iter().map(|v| v.wheels.len()).sum();
         // Which coordinate of the state each wheel's point is.
@@ -742,6 +835,19 @@ impl Case {
             .enumerate()
             .flat_map(|(v, vehicle)| vehicle.wheels.iter().map(move |w| (v, w.dof)))
             .map(|(v, dof)| layout.offsets[v] + dof)
+            .collect();
+        // Each wheel's mass (0: a massless point) and velocity coordinate.
+        let wheel_masses: Vec<(f64, usize)> = self
+            .vehicles
+            .iter()
+            .enumerate()
+            .flat_map(|(v, vehicle)| {
+                let base = layout.offsets[v] + vehicle.dofs();
+                vehicle
+                    .wheels
+                    .iter()
+                    .map(move |w| (vehicle.masses[w.dof], base + w.dof))
+            })
             .collect();
         let steps = (t_end / h).round() as usize;
         let mut scratch = Scratch {
@@ -761,6 +867,8 @@ impl Case {
             contact: Vec::new(),
             q: Vec::new(),
             slope: vec![0.0; nm],
+            curvature: vec![0.0; nm],
+            surface_transport: vec![0.0; nw],
             along_cos: vec![0.0; top],
             surface_rate: vec![0.0; nw],
             force: vec![0.0; nw],
@@ -882,17 +990,41 @@ impl Case {
                         if w.first_loss.is_none() {
                             w.first_loss = Some((tc, scratch.position[c]));
                         }
+                    } else {
+                        out.first_landing.get_or_insert(tc);
+                        let (m, velocity) = wheel_masses[c];
+                        if m > 0.0 {
+                            // A wheel with mass lands: a plastic impact on this
+                            // wheel alone, Λ = −(u̇ − ṡ)/(1/m + Σφ²/M) up on the
+                            // wheel and down on the deck. (With other wheels
+                            // held on the deck a full impact would be a
+                            // multi-contact problem: compare only up to
+                            // `first_landing`.)
+                            let under = &work.under[c * nm..(c + 1) * nm];
+                            let relative = y[velocity] - work.surface_rate[c];
+                            let deck: f64 =
+                                modes.iter().zip(under).map(|(mo, p)| p * p / mo.mass).sum();
+                            let impulse = -relative / (1.0 / m + deck);
+                            y[velocity] += impulse / m;
+                            for (j, mode) in modes.iter().enumerate() {
+                                y[nm + j] -= impulse * under[j] / mode.mass;
+                            }
+                        }
                     }
                     work.in_contact[c] = !work.in_contact[c];
                     if t1 - tc <= 1e-15 {
                         break;
                     }
                 }
-                // Held points stay on the surface (RK4 drift, 1e-16 m).
+                // Held points stay on the surface (RK4 drift, 1e-16 m), and
+                // held wheels with mass move with it.
                 self.evaluate(&modes, &layout, t1, &y, &mut scratch, &mut work);
                 for c in 0..nw {
                     if work.in_contact[c] {
                         y[wheel_dofs[c]] += scratch.delta[c];
+                        if wheel_masses[c].0 > 0.0 {
+                            y[wheel_masses[c].1] = work.surface_rate[c];
+                        }
                     }
                 }
             } else {
@@ -929,6 +1061,9 @@ impl Case {
                 }
                 recent[c] = [f1, f];
                 w.max_gap = w.max_gap.max(-d);
+                if -d > 1e-9 && w.first_nanometre.is_none() {
+                    w.first_nanometre = Some(t1);
+                }
                 if !self.rigid && previous[c] > 0.0 && d <= 0.0 {
                     w.losses += 1;
                     if w.first_loss.is_none() {
