@@ -6,6 +6,7 @@
 pub mod event_reference;
 pub mod multi_reference;
 pub mod reference;
+pub mod vehicle_reference;
 
 use std::path::{Path, PathBuf};
 
