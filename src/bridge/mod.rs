@@ -9,6 +9,7 @@ pub mod beam;
 pub mod eigen;
 pub mod hermite;
 pub mod plate;
+pub mod section;
 
 use std::f64::consts::PI;
 

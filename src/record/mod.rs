@@ -4,6 +4,7 @@
 
 use crate::bridge::BridgeError;
 use crate::bridge::hermite::HermiteField;
+use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
 use crate::scenario::resolved::{Quantity, Record};
 use crate::solve::{Observer, StepView};
@@ -32,6 +33,11 @@ enum Probe {
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
+    /// Bending moment (or, with `shear`, shear force) of a beam section.
+    Section {
+        section: Box<SectionProbe>,
+        shear: bool,
+    },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
     /// Flattened wheel index.
@@ -269,6 +275,20 @@ impl<'m> Recorder<'m> {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
                 }
+                Quantity::BridgeMoment | Quantity::BridgeShear => {
+                    let x = record.x.unwrap_or(0.0);
+                    let section = model
+                        .bridge
+                        .section_probe(x)?
+                        .expect("moments and shears on a plate were refused when resolving");
+                    let shear = record.quantity == Quantity::BridgeShear;
+                    let unit = if shear { "N" } else { "N*m" };
+                    let probe = Probe::Section {
+                        section: Box::new(section),
+                        shear,
+                    };
+                    (probe, unit, lead)
+                }
                 Quantity::ContactForce | Quantity::ContactGap => {
                     let wheel = record.wheel.map_or(0, |w| w - 1);
                     let flat = model
@@ -372,9 +392,12 @@ impl<'m> Recorder<'m> {
         }
         let corrected = model.bridge.static_correction
             && (!daf_probes.is_empty()
-                || columns
-                    .iter()
-                    .any(|c| matches!(c.probe, Probe::BridgeDisplacement { .. })));
+                || columns.iter().any(|c| {
+                    matches!(
+                        c.probe,
+                        Probe::BridgeDisplacement { .. } | Probe::Section { .. }
+                    )
+                }));
         let wheel_modes = if corrected {
             vec![0.0; model.wheels.len() * modes]
         } else {
@@ -497,6 +520,16 @@ impl Observer for Recorder<'_> {
                     }
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::Section { section, shear } => {
+                    let loads = SectionLoads {
+                        modal: view.modal_displacement,
+                        positions: view.wheel_positions,
+                        forces: view.contact_forces,
+                        wheel_modes: &self.wheel_modes,
+                    };
+                    let forces = section.forces(&loads, model.bridge.static_correction);
+                    if *shear { forces.shear } else { forces.moment }
+                }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
                 Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
                 Probe::VehicleDisplacement { vehicle, dof } => {

@@ -635,6 +635,13 @@ pub enum Quantity {
     BridgeDisplacement,
     /// Bridge vertical acceleration at `x` (and `y` on a plate), m/s², positive upward.
     BridgeAcceleration,
+    /// Bending moment of a beam bridge at `x`, N·m, positive sagging; from
+    /// the modes with the mode-acceleration static correction (beams only).
+    BridgeMoment,
+    /// Shear force of a beam bridge at `x`, N: dM/dx, the resultant of the
+    /// upward forces left of the section; its right-hand limit where a wheel
+    /// stands on the section (beams only).
+    BridgeShear,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,
     /// Gap between a wheel and the surface under it, m: positive when the wheel
