@@ -173,3 +173,126 @@ fn the_correction_converges_faster_with_modes() {
     // keeps percents of error at 20 modes.
     assert!(plain[2].0 < plain[0].0 && plain[2].1 < plain[0].1);
 }
+
+/// The slow crossing with envelopes at every node and records at the node
+/// x = 6.25 m (20 elements of 1.25 m).
+fn envelope_scene() -> String {
+    scene(10, true)
+        + "  - {name: w_quarter, quantity: bridge_displacement, x: 6.25}
+  - {name: a_quarter, quantity: bridge_acceleration, x: 6.25}
+envelopes: {quantities: [bridge_displacement, bridge_moment, bridge_shear, bridge_acceleration]}
+"
+}
+
+/// The envelope at a node holds exactly the extremes of the history
+/// recorded there (the same formula, bit for bit), with the time of each.
+#[test]
+fn envelope_at_a_node_equals_the_recorded_extremes() {
+    let outcome = run_yaml(&envelope_scene());
+    let envelope = outcome.history.envelope.as_ref().expect("envelope");
+    assert_eq!(envelope.x.len(), 21, "every node of 20 elements");
+    let node = envelope
+        .x
+        .iter()
+        .position(|&x| x == 6.25)
+        .expect("node at 6.25 m");
+    let time = &outcome.history.time;
+    for (column, name) in
+        envelope
+            .columns
+            .iter()
+            .zip(["w_quarter", "m_quarter", "v_quarter", "a_quarter"])
+    {
+        let values = column_values(&outcome, name);
+        let e = column.extremes[node];
+        let (hi, lo) = (max(values), min(values));
+        assert_eq!(e.max, hi, "{name} max");
+        assert_eq!(e.min, lo, "{name} min");
+        let at_max = values.iter().position(|&v| v == hi).unwrap();
+        let at_min = values.iter().position(|&v| v == lo).unwrap();
+        assert_eq!(e.max_time, time[at_max], "{name} time of max");
+        assert_eq!(e.min_time, time[at_min], "{name} time of min");
+        // The lead (only) axle's position at that time (entry at t = 0).
+        assert!((e.max_position - V * time[at_max]).abs() < 1e-9);
+    }
+}
+
+fn column_values<'a>(outcome: &'a vbi::run::Outcome, name: &str) -> &'a [f64] {
+    column(outcome, name)
+}
+
+/// The max-moment envelope of a slow crossing is the absolute maximum
+/// moment curve of one moving force, P x (L − x)/L (the load over the
+/// section), within 1e-3 of PL/4 at every node (measured 7.4e-5); the shear
+/// envelope spans R_A = P (L − x)/L to −P x/L within 1e-3 of P (measured
+/// 3.5e-4).
+#[test]
+fn moment_envelope_of_a_slow_crossing_is_the_closed_form_curve() {
+    let outcome = run_yaml(&envelope_scene());
+    let envelope = outcome.history.envelope.as_ref().expect("envelope");
+    let (moment, shear) = (&envelope.columns[1], &envelope.columns[2]);
+    let mut worst = (0.0f64, 0.0f64);
+    for (i, &x) in envelope.x.iter().enumerate() {
+        let exact = P * x * (L - x) / L;
+        let err = (moment.extremes[i].max - exact).abs() / (P * L / 4.0);
+        worst.0 = worst.0.max(err);
+        // Shear extremes away from the ends' jumps.
+        if x > 0.0 && x < L {
+            let (hi, lo) = (P * (L - x) / L, -P * x / L);
+            let err =
+                ((shear.extremes[i].max - hi).abs()).max((shear.extremes[i].min - lo).abs()) / P;
+            worst.1 = worst.1.max(err);
+        }
+    }
+    eprintln!(
+        "worst envelope errors: moment {:.2e}, shear {:.2e}",
+        worst.0, worst.1
+    );
+    assert!(worst.0 < 1e-3, "moment envelope {:.2e}", worst.0);
+    assert!(worst.1 < 1e-3, "shear envelope {:.2e}", worst.1);
+}
+
+/// `envelopes.csv` is written with units in its header, one row per point.
+#[test]
+fn envelopes_csv_is_written() {
+    let scratch = support::Scratch::new("section_forces", "envelopes_csv");
+    let loaded = vbi::scenario::load_str(&envelope_scene(), "test.yaml").unwrap();
+    let scenario = loaded.scenario.clone();
+    let outcome = vbi::run::simulate(loaded, &mut |_, _| {}).unwrap();
+    vbi::run::write_results(scratch.dir(), &scenario, &outcome).unwrap();
+    let text = std::fs::read_to_string(scratch.path("envelopes.csv")).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    assert!(header.starts_with("x_m,bridge_displacement_max_m,bridge_displacement_max_time_s"));
+    assert!(header.contains("bridge_moment_max_N*m") && header.contains("bridge_shear_min_N"));
+    assert!(header.contains("bridge_acceleration_max_m/s^2"));
+    assert_eq!(lines.count(), 21);
+}
+
+/// Moments, shears and envelopes are beam quantities: a plate refuses them
+/// with a located message.
+#[test]
+fn a_plate_refuses_moments_and_envelopes() {
+    let plate = "name: p
+bridge:
+  type: plate
+  spans: [20.0]
+  width: 8.0
+  thickness: 0.8
+  density: 2500.0
+  rigidity: {type: isotropic, youngs_modulus: 3.5e10, poisson_ratio: 0.2}
+  modes: {count: 10}
+vehicles: [{type: moving_force, loads: [1.0e5], speed: 20.0}]
+record:
+  - {name: m, quantity: bridge_moment, x: 10.0}
+envelopes: {}
+";
+    let error = match vbi::scenario::load_str(plate, "plate.yaml") {
+        Ok(_) => panic!("a plate accepted a moment record"),
+        Err(e) => e.to_string(),
+    };
+    eprintln!("{error}");
+    assert!(error.contains("plate.yaml:12:"), "{error}");
+    assert!(error.contains("beam bridges only"), "{error}");
+    assert!(error.contains("envelopes"), "{error}");
+}

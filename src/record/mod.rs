@@ -2,11 +2,14 @@
 //! preallocated columns, and alongside each bridge displacement the static
 //! response of the same load set crossing (the DAF reference).
 
+pub mod envelope;
+
+use self::envelope::{Envelope, EnvelopeTracker};
 use crate::bridge::BridgeError;
 use crate::bridge::hermite::HermiteField;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
-use crate::scenario::resolved::{Quantity, Record};
+use crate::scenario::resolved::{Envelopes, Quantity, Record};
 use crate::solve::{Observer, StepView};
 
 /// What the summary reports as "position" of an extreme value: the position
@@ -151,6 +154,40 @@ fn truncated_static_share(
     full - modal
 }
 
+/// The deck-acceleration filter: the mode values `shape` with the modes
+/// above the cut-off `max_frequency` (Hz) zeroed (a sharp modal low-pass,
+/// EN 1990 A2.4.4.2.1(4)).
+fn filtered_shape(model: &Model, shape: &[f64], max_frequency: Option<f64>) -> Vec<f64> {
+    let mut shape = shape.to_vec();
+    if let Some(cut) = max_frequency {
+        let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
+        for (value, omega) in shape.iter_mut().zip(&model.bridge.circular_frequencies) {
+            if *omega > limit {
+                *value = 0.0;
+            }
+        }
+    }
+    shape
+}
+
+/// A recorded bridge displacement (m, upward): the modal sum, plus the
+/// static share of the modes left out when `wheel_modes` is filled (the
+/// static correction is on).
+fn corrected_displacement(
+    shape: &[f64],
+    statics: &StaticProbe,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+) -> f64 {
+    let modal = dot(shape, view.modal_displacement);
+    if wheel_modes.is_empty() {
+        modal
+    } else {
+        modal + truncated_static_share(statics, static_shape, wheel_modes, view)
+    }
+}
+
 /// One recorded time history.
 #[derive(Debug, Clone)]
 pub struct Column {
@@ -183,6 +220,8 @@ pub struct History {
     /// The DAF at the middle of every span on every girder line, span by
     /// span (a beam has one line, at y = 0).
     pub girder_dafs: Vec<GirderDaf>,
+    /// Envelopes along the deck, when the scene asks for them.
+    pub envelope: Option<Envelope>,
 }
 
 /// Gap above which a wheel with zero contact force counts as separated, m.
@@ -225,6 +264,8 @@ pub struct Recorder<'m> {
     /// Mode values at every wheel this step (wheel-major), for the static
     /// correction; empty when it is off or nothing needs it.
     wheel_modes: Vec<f64>,
+    /// Envelopes along the deck, when asked for.
+    envelope: Option<EnvelopeTracker>,
 }
 
 impl<'m> Recorder<'m> {
@@ -259,19 +300,7 @@ impl<'m> Recorder<'m> {
                         };
                         (probe, "m", lead)
                     } else {
-                        // The deck-acceleration filter: modes above the
-                        // record's cut-off do not contribute (a sharp modal
-                        // low-pass, EN 1990 A2.4.4.2.1(4)).
-                        if let Some(cut) = record.max_frequency {
-                            let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
-                            for (value, omega) in
-                                shape.iter_mut().zip(&model.bridge.circular_frequencies)
-                            {
-                                if *omega > limit {
-                                    *value = 0.0;
-                                }
-                            }
-                        }
+                        let shape = filtered_shape(model, &shape, record.max_frequency);
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
                 }
@@ -410,14 +439,35 @@ impl<'m> Recorder<'m> {
                 columns,
                 separation,
                 girder_dafs: Vec::new(),
+                envelope: None,
             },
             daf_probes,
             wheel_modes,
+            envelope: None,
         })
+    }
+
+    /// Also tracks the envelopes along the deck of `envelopes` (resolved,
+    /// on a beam).
+    pub fn with_envelopes(mut self, envelopes: Option<&Envelopes>) -> Result<Self, BridgeError> {
+        let Some(envelopes) = envelopes else {
+            return Ok(self);
+        };
+        let tracker = EnvelopeTracker::new(self.model, envelopes)?;
+        let model = self.model;
+        if model.bridge.static_correction
+            && tracker.needs_wheel_modes()
+            && self.wheel_modes.is_empty()
+        {
+            self.wheel_modes = vec![0.0; model.wheels.len() * model.bridge.mode_count()];
+        }
+        self.envelope = Some(tracker);
+        Ok(self)
     }
 
     /// The recorded history.
     pub fn finish(mut self) -> History {
+        self.history.envelope = self.envelope.take().map(EnvelopeTracker::finish);
         self.history.girder_dafs = self
             .daf_probes
             .into_iter()
@@ -479,6 +529,9 @@ impl Observer for Recorder<'_> {
                     .mode_values(view.wheel_positions[w], model.wheel_y[w], values);
             }
         }
+        if let Some(envelope) = &mut self.envelope {
+            envelope.observe(model, view, &self.wheel_modes);
+        }
         for probe in &mut self.daf_probes {
             let mut dynamic = dot(&probe.shape, view.modal_displacement);
             if !self.wheel_modes.is_empty() {
@@ -511,13 +564,7 @@ impl Observer for Recorder<'_> {
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
-                    let modal = dot(shape, view.modal_displacement);
-                    if self.wheel_modes.is_empty() {
-                        modal
-                    } else {
-                        modal
-                            + truncated_static_share(statics, static_shape, &self.wheel_modes, view)
-                    }
+                    corrected_displacement(shape, statics, static_shape, &self.wheel_modes, view)
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
                 Probe::Section { section, shear } => {

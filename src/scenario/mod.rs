@@ -15,6 +15,7 @@ pub mod de;
 pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
+pub mod envelopes;
 pub mod names;
 mod plausible;
 pub mod rail;
@@ -36,6 +37,7 @@ use thiserror::Error;
 pub use self::budget::LoadOptions;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
+pub use self::records::quantity_name_of;
 use self::resolved::Scenario;
 use self::yaml::Location;
 use crate::bridge::ModalBridge;

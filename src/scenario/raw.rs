@@ -11,12 +11,14 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod envelopes;
 mod limits;
 mod rail;
 mod speed;
 mod study;
 mod surface;
 mod truck;
+pub use self::envelopes::*;
 pub use self::limits::*;
 pub use self::rail::*;
 pub use self::speed::*;
@@ -64,6 +66,10 @@ pub struct ScenarioRaw {
     /// span and the contact force of every wheel.
     #[serde(default)]
     pub record: Option<Vec<RecordRaw>>,
+    /// Maxima and minima of bridge quantities at every point along the deck
+    /// (beams), written to `envelopes.csv`. Default: none.
+    #[serde(default)]
+    pub envelopes: Option<EnvelopesRaw>,
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,

@@ -325,6 +325,13 @@ pub(super) fn resolve(
     // f₁ and f₃, which the minimum modes already give).
     let record_cutoff =
         super::records::highest_acceleration_cutoff(raw.record.as_deref(), &modal.frequencies());
+    let record_cutoff = match (
+        record_cutoff,
+        super::envelopes::acceleration_cut(raw.envelopes.as_ref(), &modal.frequencies()),
+    ) {
+        (Some(a), Some(b)) => Some(a.max(b)),
+        (a, b) => a.or(b),
+    };
     if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
@@ -491,6 +498,12 @@ pub(super) fn resolve(
         &contact,
         ck,
     );
+    let envelopes = super::envelopes::resolve_envelopes(
+        raw.envelopes.as_ref(),
+        &modal.frequencies(),
+        &bridge,
+        ck,
+    );
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -549,6 +562,7 @@ pub(super) fn resolve(
             time_step_selection,
         },
         record,
+        envelopes,
         study,
         limits,
     };
