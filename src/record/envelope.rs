@@ -13,7 +13,7 @@
 //! so that the arithmetic is the record's), and each wheel through each
 //! point's static influence lines.
 
-use super::{StaticProbe, corrected_displacement, dot, filtered_shape, static_shape};
+use super::{StaticProbe, corrected_displacement, dot, filtered_shape, static_shape, unit_of};
 use crate::bridge::BridgeError;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
@@ -98,16 +98,6 @@ struct PointProbe {
 pub(super) struct EnvelopeTracker {
     envelope: Envelope,
     points: Vec<PointProbe>,
-}
-
-/// The unit of an enveloped quantity.
-pub fn unit_of(quantity: Quantity) -> &'static str {
-    match quantity {
-        Quantity::BridgeAcceleration => "m/s^2",
-        Quantity::BridgeMoment => "N*m",
-        Quantity::BridgeShear => "N",
-        _ => "m",
-    }
 }
 
 impl EnvelopeTracker {

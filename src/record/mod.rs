@@ -154,6 +154,17 @@ fn truncated_static_share(
     full - modal
 }
 
+/// The unit a quantity's values are recorded in (SI; a vehicle's rotation
+/// DOF is in rad, rad/s², under the same column unit as its translations).
+pub fn unit_of(quantity: Quantity) -> &'static str {
+    match quantity {
+        Quantity::BridgeDisplacement | Quantity::ContactGap | Quantity::VehicleDisplacement => "m",
+        Quantity::BridgeAcceleration | Quantity::VehicleAcceleration => "m/s^2",
+        Quantity::BridgeMoment => "N*m",
+        Quantity::BridgeShear | Quantity::ContactForce => "N",
+    }
+}
+
 /// The deck-acceleration filter: the mode values `shape` with the modes
 /// above the cut-off `max_frequency` (Hz) zeroed (a sharp modal low-pass,
 /// EN 1990 A2.4.4.2.1(4)).

@@ -436,6 +436,7 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
             let fits = |q: &SweepPoint| {
                 q.dafs.len() == layout.daf_sources.len()
                     && q.max_forces.len() == layout.force_records.len()
+                    && q.max_abs.len() == layout.records.len()
                     && q.roughness < layout.roughness.len()
             };
             let mut points = Vec::new();
