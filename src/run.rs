@@ -44,6 +44,8 @@ pub enum Results {
     SpeedSweep(SweepResults),
     /// A Monte Carlo study.
     MonteCarlo(MonteCarloResults),
+    /// A railway resonance check.
+    ResonanceCheck(crate::study::resonance::ResonanceResults),
 }
 
 /// Runs the scenario's study if it has one, else the scene.
@@ -69,6 +71,9 @@ pub fn execute(
             sweep,
             progress,
         )?)),
+        Some(Study::ResonanceCheck(check)) => Ok(Results::ResonanceCheck(
+            crate::study::resonance::run(&loaded.scenario, &loaded.bridge, check, progress)?,
+        )),
         Some(Study::MonteCarlo(mc)) => Ok(Results::MonteCarlo(monte_carlo::run(
             &loaded.scenario,
             &loaded.bridge,

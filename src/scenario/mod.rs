@@ -23,6 +23,7 @@ pub mod raw;
 mod records;
 pub mod resolve;
 pub mod resolved;
+pub mod resonance;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;

@@ -12,15 +12,19 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 mod envelopes;
+mod hslm;
 mod limits;
 mod rail;
+mod resonance;
 mod speed;
 mod study;
 mod surface;
 mod truck;
 pub use self::envelopes::*;
+pub use self::hslm::*;
 pub use self::limits::*;
 pub use self::rail::*;
+pub use self::resonance::*;
 pub use self::speed::*;
 pub use self::study::*;
 pub use self::surface::*;
@@ -327,6 +331,9 @@ pub enum VehicleRaw {
     /// `car_spacing`, or a `cars` list. Resolved into one vehicle whose
     /// wheels are every car's wheelsets, numbered front to rear.
     Train(TrainRaw),
+    /// An HSLM-A train of EN 1991-2 Annex E (`model: A1` … `A10`) as moving
+    /// axle forces; resolved into a `moving_force` with its axle positions.
+    Hslm(HslmRaw),
 }
 
 /// Where and how fast a vehicle travels.

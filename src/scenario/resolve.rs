@@ -284,6 +284,7 @@ pub(super) fn resolve(
         &vehicles,
         &contact,
         &surface,
+        &modal.frequencies(),
         ck,
     );
     let points = study
@@ -319,6 +320,15 @@ pub(super) fn resolve(
             &bridge,
             gravity,
         ),
+        // Every train of a resonance check at its top speed.
+        Some(Study::ResonanceCheck(check)) => {
+            let trains: Vec<Vehicle> = check
+                .trains
+                .iter()
+                .map(|&t| super::resonance::train_vehicle(t, check.speeds.to))
+                .collect();
+            content::excitations(&trains, &contact, &surface, bridge.spans(), gravity)
+        }
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
     // The highest mode frequency any deck acceleration sums (it needs only
@@ -637,6 +647,15 @@ fn resolve_vehicles(
     let mut out = Vec::with_capacity(raws.len());
     for (i, raw) in raws.iter().enumerate() {
         let at = format!("vehicles[{i}]");
+        // An HSLM train is its table's moving forces.
+        let hslm;
+        let raw = match raw {
+            raw::VehicleRaw::Hslm(h) => {
+                hslm = raw::VehicleRaw::MovingForce(h.moving_force());
+                &hslm
+            }
+            other => other,
+        };
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
                 check_speed(ck, &at, v.speed.0);
@@ -748,6 +767,8 @@ fn resolve_vehicles(
             raw::VehicleRaw::RailCar(v) => {
                 out.push(super::rail::resolve_rail_car(v, &at, width, ck));
             }
+            // Turned into moving forces above.
+            raw::VehicleRaw::Hslm(_) => {}
             raw::VehicleRaw::Train(v) => {
                 out.push(super::rail::resolve_train(v, &at, width, ck));
             }
