@@ -81,8 +81,10 @@ pub struct SectionLoads<'a> {
     /// Wheel forces on the deck, N, positive downward (compression).
     pub forces: &'a [f64],
     /// Mode values at every wheel, wheel-major; empty without the static
-    /// correction.
+    /// correction. Read only for the wheels `on_deck`.
     pub wheel_modes: &'a [f64],
+    /// The wheels on the deck (indices): only they load it.
+    pub on_deck: &'a [usize],
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
@@ -203,12 +205,19 @@ impl SectionProbe {
     /// Exact static moment and shear at the section under downward point
     /// forces `forces` (N) at `positions` (m); loads off the deck count for
     /// nothing.
-    pub fn static_forces(&self, positions: &[f64], forces: &[f64]) -> SectionForces {
+    /// Only the wheels `on_deck` (indices) are summed.
+    pub fn static_forces(
+        &self,
+        positions: &[f64],
+        forces: &[f64],
+        on_deck: &[usize],
+    ) -> SectionForces {
         let mut moment = 0.0;
         let mut shear = 0.0;
         let h = self.element_length;
         let s = self.x - self.element_start;
-        for (&at, &p) in positions.iter().zip(forces) {
+        for &w in on_deck {
+            let (at, p) = (positions[w], forces[w]);
             moment += p * self.moment_line.value_at(at);
             shear += p * self.shear_line.value_at(at);
             let a = at - self.element_start;
@@ -231,13 +240,15 @@ impl SectionProbe {
         let mut moment = dot(&self.modal_moment, loads.modal);
         let mut shear = dot(&self.modal_shear, loads.modal);
         if corrected {
-            let statics = self.static_forces(loads.positions, loads.forces);
+            let statics = self.static_forces(loads.positions, loads.forces, loads.on_deck);
             moment += statics.moment;
             shear += statics.shear;
             let modes = self.modal_moment.len();
             if modes > 0 {
                 // − Σⱼ Eⱼ qⱼ,static with qⱼ,static = −Σ_w φⱼ(ξ_w) F_w/ωⱼ².
-                for (values, &force) in loads.wheel_modes.chunks(modes).zip(loads.forces) {
+                for &w in loads.on_deck {
+                    let values = &loads.wheel_modes[w * modes..(w + 1) * modes];
+                    let force = loads.forces[w];
                     moment += force * dot(&self.static_modal_moment, values);
                     shear += force * dot(&self.static_modal_shear, values);
                 }

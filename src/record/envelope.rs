@@ -150,7 +150,13 @@ impl EnvelopeTracker {
         !self.points.is_empty()
     }
 
-    pub(super) fn observe(&mut self, model: &Model, view: &StepView<'_>, wheel_modes: &[f64]) {
+    pub(super) fn observe(
+        &mut self,
+        model: &Model,
+        view: &StepView<'_>,
+        wheel_modes: &[f64],
+        on_deck: &[usize],
+    ) {
         // Where the lead vehicle is: its first wheel plus that wheel's
         // distance behind the front axle.
         let position = match (view.wheel_positions.first(), model.wheels.first()) {
@@ -162,6 +168,7 @@ impl EnvelopeTracker {
             positions: view.wheel_positions,
             forces: view.contact_forces,
             wheel_modes,
+            on_deck,
         };
         let corrected = model.bridge.static_correction;
         for (p, point) in self.points.iter().enumerate() {
@@ -174,6 +181,7 @@ impl EnvelopeTracker {
                         &point.static_shape,
                         wheel_modes,
                         view,
+                        on_deck,
                     ),
                     Quantity::BridgeAcceleration => {
                         dot(&point.acceleration_shape, view.modal_acceleration)

@@ -86,12 +86,12 @@ impl StaticProbe {
 
     /// Static deflection at the point, m (upward positive), with every wheel
     /// carrying its static load at `positions`.
-    fn deflection(&self, positions: &[f64], loads: &[f64]) -> f64 {
-        positions
+    /// Only the wheels `on_deck` (indices) are summed: the influence
+    /// lines vanish off the deck.
+    fn deflection(&self, positions: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
+        on_deck
             .iter()
-            .zip(loads)
-            .zip(&self.wheel_influence)
-            .map(|((&x, &load), &line)| -load * self.influences[line].value_at(x))
+            .map(|&w| -loads[w] * self.influences[self.wheel_influence[w]].value_at(positions[w]))
             .sum()
     }
 }
@@ -143,13 +143,16 @@ fn truncated_static_share(
     static_shape: &[f64],
     wheel_modes: &[f64],
     view: &StepView<'_>,
+    on_deck: &[usize],
 ) -> f64 {
     let modes = static_shape.len();
-    let full = statics.deflection(view.wheel_positions, view.contact_forces);
-    let modal: f64 = wheel_modes
-        .chunks(modes)
-        .zip(view.contact_forces)
-        .map(|(values, force)| -force * dot(static_shape, values))
+    let full = statics.deflection(view.wheel_positions, view.contact_forces, on_deck);
+    let modal: f64 = on_deck
+        .iter()
+        .map(|&w| {
+            let values = &wheel_modes[w * modes..(w + 1) * modes];
+            -view.contact_forces[w] * dot(static_shape, values)
+        })
         .sum();
     full - modal
 }
@@ -190,12 +193,13 @@ fn corrected_displacement(
     static_shape: &[f64],
     wheel_modes: &[f64],
     view: &StepView<'_>,
+    on_deck: &[usize],
 ) -> f64 {
     let modal = dot(shape, view.modal_displacement);
     if wheel_modes.is_empty() {
         modal
     } else {
-        modal + truncated_static_share(statics, static_shape, wheel_modes, view)
+        modal + truncated_static_share(statics, static_shape, wheel_modes, view, on_deck)
     }
 }
 
@@ -277,6 +281,9 @@ pub struct Recorder<'m> {
     wheel_modes: Vec<f64>,
     /// Envelopes along the deck, when asked for.
     envelope: Option<EnvelopeTracker>,
+    /// The wheels on the deck this step (indices): only they load it, so
+    /// the static parts sum over them alone.
+    on_deck: Vec<usize>,
 }
 
 impl<'m> Recorder<'m> {
@@ -455,6 +462,7 @@ impl<'m> Recorder<'m> {
             daf_probes,
             wheel_modes,
             envelope: None,
+            on_deck: Vec::with_capacity(model.wheels.len()),
         })
     }
 
@@ -533,15 +541,23 @@ impl Observer for Recorder<'_> {
         // modal part, w_c = Σ_w F_w [G(x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²]
         // (Williams 1945; Cornwell, Craig & Johnson 1983; F_w downward).
         let modes = model.bridge.mode_count();
+        self.on_deck.clear();
+        self.on_deck.extend(
+            (0..view.wheel_positions.len())
+                .filter(|&w| model.bridge.is_on(view.wheel_positions[w])),
+        );
+        let on_deck = &self.on_deck;
         if !self.wheel_modes.is_empty() {
-            for (w, values) in self.wheel_modes.chunks_mut(modes).enumerate() {
-                model
-                    .bridge
-                    .mode_values(view.wheel_positions[w], model.wheel_y[w], values);
+            for &w in on_deck {
+                model.bridge.mode_values(
+                    view.wheel_positions[w],
+                    model.wheel_y[w],
+                    &mut self.wheel_modes[w * modes..(w + 1) * modes],
+                );
             }
         }
         if let Some(envelope) = &mut self.envelope {
-            envelope.observe(model, view, &self.wheel_modes);
+            envelope.observe(model, view, &self.wheel_modes, on_deck);
         }
         for probe in &mut self.daf_probes {
             let mut dynamic = dot(&probe.shape, view.modal_displacement);
@@ -551,11 +567,13 @@ impl Observer for Recorder<'_> {
                     &probe.static_shape,
                     &self.wheel_modes,
                     view,
+                    on_deck,
                 );
             }
-            let statics = probe
-                .statics
-                .deflection(view.wheel_positions, &model.static_wheel_loads);
+            let statics =
+                probe
+                    .statics
+                    .deflection(view.wheel_positions, &model.static_wheel_loads, on_deck);
             let r = &mut probe.result;
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
@@ -570,12 +588,22 @@ impl Observer for Recorder<'_> {
                     // Static crossing: each wheel's static load at its
                     // current position through the influence line of its
                     // lane (full stiffness, no modal truncation).
-                    let static_w =
-                        statics.deflection(view.wheel_positions, &model.static_wheel_loads);
+                    let static_w = statics.deflection(
+                        view.wheel_positions,
+                        &model.static_wheel_loads,
+                        on_deck,
+                    );
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
-                    corrected_displacement(shape, statics, static_shape, &self.wheel_modes, view)
+                    corrected_displacement(
+                        shape,
+                        statics,
+                        static_shape,
+                        &self.wheel_modes,
+                        view,
+                        on_deck,
+                    )
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
                 Probe::Section { section, shear } => {
@@ -584,6 +612,7 @@ impl Observer for Recorder<'_> {
                         positions: view.wheel_positions,
                         forces: view.contact_forces,
                         wheel_modes: &self.wheel_modes,
+                        on_deck,
                     };
                     let forces = section.forces(&loads, model.bridge.static_correction);
                     if *shear { forces.shear } else { forces.moment }
