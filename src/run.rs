@@ -44,6 +44,8 @@ pub enum Results {
     SpeedSweep(SweepResults),
     /// A Monte Carlo study.
     MonteCarlo(MonteCarloResults),
+    /// A railway resonance check.
+    ResonanceCheck(crate::study::resonance::ResonanceResults),
 }
 
 /// Runs the scenario's study if it has one, else the scene.
@@ -69,6 +71,9 @@ pub fn execute(
             sweep,
             progress,
         )?)),
+        Some(Study::ResonanceCheck(check)) => Ok(Results::ResonanceCheck(
+            crate::study::resonance::run(&loaded.scenario, &loaded.bridge, check, progress)?,
+        )),
         Some(Study::MonteCarlo(mc)) => Ok(Results::MonteCarlo(monte_carlo::run(
             &loaded.scenario,
             &loaded.bridge,
@@ -197,7 +202,9 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     let start = Instant::now();
     let Loaded { scenario, bridge } = loaded;
     let model = Model::build(&scenario, bridge)?;
-    let mut recorder = Recorder::new(&model, &scenario.record).map_err(BuildError::from)?;
+    let mut recorder = Recorder::new(&model, &scenario.record)
+        .and_then(|r| r.with_envelopes(scenario.envelopes.as_ref()))
+        .map_err(BuildError::from)?;
     let stats = solve::run(&model, &mut recorder, progress)?;
     let history = recorder.finish();
     let wall_time = start.elapsed().as_secs_f64();
@@ -231,6 +238,12 @@ pub fn write_results_with(
         &report::history_csv(&outcome.history),
     )?;
     report::write_atomic(&out.join("resolved.yaml"), yaml.as_bytes())?;
+    if let Some(envelope) = &outcome.history.envelope {
+        report::write_atomic(
+            &out.join("envelopes.csv"),
+            crate::record::envelope::envelope_csv(envelope).as_bytes(),
+        )?;
+    }
     if outcome.model.bridge.width().is_some() {
         report::write_atomic(
             &out.join("daf_table.csv"),

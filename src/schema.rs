@@ -200,6 +200,11 @@ pub fn at_least_one(schema: &mut Schema) {
     set(schema, "minimum", 1);
 }
 
+/// A count ≥ 2 (envelope points: both deck ends).
+pub fn at_least_two(schema: &mut Schema) {
+    set(schema, "minimum", 2);
+}
+
 /// A list with at least one entry.
 pub fn non_empty(schema: &mut Schema) {
     set(schema, "minItems", 1);

@@ -22,6 +22,7 @@ pub(super) fn write_study(
         Results::SeparationMap(map) => vbi::run::write_study(out, scenario, map),
         Results::SpeedSweep(sweep) => vbi::run::write_speed_sweep(out, scenario, sweep),
         Results::MonteCarlo(mc) => vbi::study::monte_carlo::write(out, scenario, mc),
+        Results::ResonanceCheck(check) => vbi::study::resonance::write(out, scenario, check),
     };
     if let Err(e) = written {
         errln!("error: {e}");
@@ -32,6 +33,29 @@ pub(super) fn write_study(
     }
     match results {
         Results::Scene(_) => {}
+        Results::ResonanceCheck(check) => {
+            let summary = check.summary(&scenario.name);
+            let governing = summary
+                .governing_acceleration
+                .map(|g| {
+                    format!(
+                        ", largest deck acceleration {:.3} m/s^2 ({}, {:.1} km/h, x = {} m): {} the {} m/s^2 limit",
+                        g.value,
+                        g.train,
+                        g.speed_km_h,
+                        g.x,
+                        if summary.passes { "within" } else { "ABOVE" },
+                        summary.acceleration_limit
+                    )
+                })
+                .unwrap_or_default();
+            errln!(
+                "{}: resonance check of {} runs{governing}, {:.2} s",
+                scenario.name,
+                check.points.len(),
+                check.wall_time
+            );
+        }
         Results::SeparationMap(map) => errln!(
             "{}: separation map of {} points, {} separated, {:.2} s",
             scenario.name,

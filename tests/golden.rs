@@ -295,10 +295,58 @@ fn study(path: &Path) -> Option<Result<(String, String), String>> {
         Ok(Ok(Results::SeparationMap(map))) => Ok(study_snapshots(&map)),
         Ok(Ok(Results::SpeedSweep(sweep))) => Ok(sweep_snapshots(&sweep)),
         Ok(Ok(Results::MonteCarlo(mc))) => Ok(monte_carlo_snapshots(&mc)),
+        Ok(Ok(Results::ResonanceCheck(check))) => Ok(resonance_snapshots(&check)),
         Ok(Ok(Results::Scene(_))) => Err("a study scenario ran as a scene".into()),
         Ok(Err(e)) => Err(format!("study failed: {e}")),
         Err(e) => Err(e),
     })
+}
+
+/// A resonance check as (its governing runs and verdict; every run's peak
+/// displacement and acceleration with where and the time step), each value
+/// rounded to 6 significant digits.
+fn resonance_snapshots(check: &vbi::study::resonance::ResonanceResults) -> (String, String) {
+    let number = |v: f64| significant(v).to_string();
+    let summary = check.summary("golden");
+    let governing = |g: &Option<vbi::study::resonance::Governing>| {
+        g.as_ref().map_or("-".to_string(), |g| {
+            format!(
+                "{} at {} km/h: {} at x = {} m",
+                g.train,
+                number(g.speed_km_h),
+                number(g.value),
+                number(g.x)
+            )
+        })
+    };
+    let text = format!(
+        "runs: {}\ndeck: {} (limit {} m/s^2)\nmax_frequency_hz: {}\nline_speed_m_s: {}\n\
+         governing acceleration: {}\ngoverning displacement: {}\npasses: {}\n",
+        summary.runs,
+        summary.deck,
+        summary.acceleration_limit,
+        number(summary.max_frequency),
+        number(summary.line_speed_m_s),
+        governing(&summary.governing_acceleration),
+        governing(&summary.governing_displacement),
+        summary.passes
+    );
+    let mut table = String::from(
+        "train speed_km_h max_displacement_m at_m max_acceleration_m/s^2 at_m time_step_s\n",
+    );
+    for p in &check.points {
+        table.push_str(&format!(
+            "{} {} {} {} {} {} {}\n",
+            check.trains[p.train],
+            number(p.speed * 3.6),
+            number(p.max_displacement),
+            number(p.displacement_at),
+            number(p.max_acceleration),
+            number(p.acceleration_at),
+            number(p.time_step)
+        ));
+    }
+    (text, table)
 }
 
 /// A speed sweep as (its surfaces, seeds and the mean DAF at its span and

@@ -190,6 +190,30 @@ fn speed_sweep_shards_merge_to_the_unsharded_files() {
     assert!(names.iter().any(|n| n == "daf_map.png"));
 }
 
+/// A resonance check with two trains and five speeds on a 20 m span.
+fn resonance_check() -> String {
+    "name: resonance-shard
+bridge: {type: beam, spans: [20.0], bending_stiffness: 2.43e10, mass_per_length: 15000.0, modes: {max_frequency: 50.0}, damping: {type: modal, ratio: 0.01}}
+vehicles: [{type: hslm, model: A1, speed: 300 km/h}]
+study: {type: resonance_check, trains: [A1, A10], line_speed: 300 km/h, speeds: {from: 280 km/h, to: 360 km/h, step: 20 km/h}}
+"
+    .to_owned()
+}
+
+#[test]
+fn resonance_check_shards_merge_to_the_unsharded_files() {
+    let names = sharded_equals_unsharded("resonance", &resonance_check());
+    for file in [
+        "resolved.yaml",
+        "resonance.csv",
+        "resonance.png",
+        "resonance_displacement.png",
+        "summary.json",
+    ] {
+        assert!(names.iter().any(|n| n == file), "{file} missing: {names:?}");
+    }
+}
+
 #[test]
 fn missing_duplicated_and_foreign_parts_are_refused() {
     let scratch = Scratch::new("shard", "refused");

@@ -306,7 +306,8 @@ fn run_writes_every_output_and_nothing_on_failure() {
     assert_eq!(
         lines[0],
         "roughness,sample,seed,speed_m_s,speed_km_h,daf_span1_girder1,daf_span2_girder1,\
-         daf_mid1,daf_mid2,daf_quarter,max_rear_N"
+         daf_mid1,daf_mid2,daf_quarter,max_rear_N,max_abs_mid1_m,max_abs_mid2_m,\
+         max_abs_quarter_m,max_abs_rear_N"
     );
     assert!(lines[1].starts_with("smooth,1,,10,36,"), "{}", lines[1]);
     assert!(lines[5].starts_with("good,1,1,10,36,"), "{}", lines[5]);
@@ -367,4 +368,49 @@ fn run_writes_every_output_and_nothing_on_failure() {
     assert_eq!(run.status.code(), Some(1), "{}", stderr(&run));
     assert_eq!(std::fs::read_to_string(&blocked).unwrap(), "keep");
     assert!(!stderr(&run).contains("panicked"));
+}
+
+/// Every recorded quantity survives a sweep (a deck acceleration filtered at
+/// its record's `max_frequency`, a moment, a shear, a contact force): each
+/// point's largest |value| per record equals the single run's bit for bit,
+/// and study.csv gives each with its unit in the header.
+#[test]
+fn a_sweep_keeps_every_recorded_quantity() {
+    let records = "  - {name: acc, quantity: bridge_acceleration, x: 10.0, max_frequency: 20.0}
+  - {name: moment, quantity: bridge_moment, x: 10.0}
+  - {name: shear, quantity: bridge_shear, x: 2.0}
+";
+    let study = "study: {type: speed_sweep, speeds: {from: 10.0, to: 30.0, count: 3}}\n";
+    let results = sweep(&beam_scene("20.0", &format!("{records}{study}")), Some(1));
+    let names: Vec<&str> = results.records.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        ["mid1", "mid2", "quarter", "rear", "acc", "moment", "shear"]
+    );
+    for (point, &speed) in results.points.iter().zip(&results.speeds) {
+        let single = run_yaml(&beam_scene(&format!("{speed:?}"), records));
+        for (i, name) in names.iter().enumerate() {
+            let peak = support::max_abs(support::column(&single, name));
+            assert_eq!(
+                point.max_abs[i].to_bits(),
+                peak.to_bits(),
+                "{name} at {speed} m/s"
+            );
+            assert!(peak > 0.0, "{name} at {speed} m/s is 0");
+        }
+    }
+    let csv = String::from_utf8(results.to_csv()).unwrap();
+    let header = csv.lines().next().unwrap();
+    for column in [
+        "max_abs_acc_m/s^2",
+        "max_abs_moment_N*m",
+        "max_abs_shear_N",
+        "max_abs_mid1_m",
+        "max_abs_rear_N",
+    ] {
+        assert!(
+            header.split(',').any(|c| c == column),
+            "{column} in {header}"
+        );
+    }
 }

@@ -42,6 +42,20 @@ pub fn shape_curvatures(xi: f64, h: f64) -> [f64; 4] {
     ]
 }
 
+/// The common element length of a mesh whose elements agree to 1e-12
+/// relative, else `None`.
+fn uniform_spacing(node_x: &[f64]) -> Option<f64> {
+    if node_x.len() < 2 {
+        return None;
+    }
+    let h = (node_x[node_x.len() - 1] - node_x[0]) / (node_x.len() - 1) as f64;
+    (h > 0.0
+        && node_x
+            .windows(2)
+            .all(|w| ((w[1] - w[0]) - h).abs() <= 1e-12 * h))
+    .then_some(h)
+}
+
 /// A field with `components` values per node on a beam mesh.
 #[derive(Debug, Clone)]
 pub struct HermiteField {
@@ -52,6 +66,9 @@ pub struct HermiteField {
     /// Nodal data laid out `[node][w, θ][component]` so one point's
     /// evaluation reads two contiguous node blocks.
     nodal: Vec<f64>,
+    /// The element length when the mesh is uniform (to 1e-12 relative), m:
+    /// the element of a point is then found in O(1) instead of a binary search.
+    spacing: Option<f64>,
 }
 
 impl HermiteField {
@@ -70,10 +87,12 @@ impl HermiteField {
                 nodal[(2 * n + 1) * components + c] = theta;
             }
         }
+        let spacing = uniform_spacing(&node_x);
         Self {
             node_x,
             components,
             nodal,
+            spacing,
         }
     }
 
@@ -108,9 +127,27 @@ impl HermiteField {
         if !(x >= first && x <= last) {
             return None;
         }
-        // partition_point gives the first node strictly right of x.
-        let right = self.node_x.partition_point(|&nx| nx <= x);
-        let element = right.clamp(1, self.node_x.len() - 1) - 1;
+        // The last element starting at or left of x (the last element for
+        // x at the end): a guess from a uniform spacing, corrected to the
+        // exact answer of the binary search, or the binary search itself.
+        let nodes = self.node_x.len();
+        let element = match self.spacing {
+            Some(h) => {
+                let mut e = (((x - first) / h) as usize).min(nodes - 2);
+                while e > 0 && self.node_x[e] > x {
+                    e -= 1;
+                }
+                while e + 2 < nodes && self.node_x[e + 1] <= x {
+                    e += 1;
+                }
+                e
+            }
+            None => {
+                // partition_point gives the first node strictly right of x.
+                let right = self.node_x.partition_point(|&nx| nx <= x);
+                right.clamp(1, nodes - 1) - 1
+            }
+        };
         let xa = self.node_x[element];
         let h = self.node_x[element + 1] - xa;
         Some((element, ((x - xa) / h).clamp(0.0, 1.0), h))

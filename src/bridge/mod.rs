@@ -10,6 +10,7 @@ pub mod eigen;
 pub mod ground;
 pub mod hermite;
 pub mod plate;
+pub mod section;
 
 use std::f64::consts::PI;
 

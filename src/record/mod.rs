@@ -2,10 +2,14 @@
 //! preallocated columns, and alongside each bridge displacement the static
 //! response of the same load set crossing (the DAF reference).
 
+pub mod envelope;
+
+use self::envelope::{Envelope, EnvelopeTracker};
 use crate::bridge::BridgeError;
 use crate::bridge::hermite::HermiteField;
+use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
-use crate::scenario::resolved::{Quantity, Record};
+use crate::scenario::resolved::{Envelopes, Quantity, Record};
 use crate::solve::{Observer, StepView};
 
 /// What the summary reports as "position" of an extreme value: the position
@@ -32,6 +36,11 @@ enum Probe {
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
+    /// Bending moment (or, with `shear`, shear force) of a beam section.
+    Section {
+        section: Box<SectionProbe>,
+        shear: bool,
+    },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
     /// Flattened wheel index.
@@ -77,12 +86,12 @@ impl StaticProbe {
 
     /// Static deflection at the point, m (upward positive), with every wheel
     /// carrying its static load at `positions`.
-    fn deflection(&self, positions: &[f64], loads: &[f64]) -> f64 {
-        positions
+    /// Only the wheels `on_deck` (indices) are summed: the influence
+    /// lines vanish off the deck.
+    fn deflection(&self, positions: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
+        on_deck
             .iter()
-            .zip(loads)
-            .zip(&self.wheel_influence)
-            .map(|((&x, &load), &line)| -load * self.influences[line].value_at(x))
+            .map(|&w| -loads[w] * self.influences[self.wheel_influence[w]].value_at(positions[w]))
             .sum()
     }
 }
@@ -134,15 +143,64 @@ fn truncated_static_share(
     static_shape: &[f64],
     wheel_modes: &[f64],
     view: &StepView<'_>,
+    on_deck: &[usize],
 ) -> f64 {
     let modes = static_shape.len();
-    let full = statics.deflection(view.wheel_positions, view.contact_forces);
-    let modal: f64 = wheel_modes
-        .chunks(modes)
-        .zip(view.contact_forces)
-        .map(|(values, force)| -force * dot(static_shape, values))
+    let full = statics.deflection(view.wheel_positions, view.contact_forces, on_deck);
+    let modal: f64 = on_deck
+        .iter()
+        .map(|&w| {
+            let values = &wheel_modes[w * modes..(w + 1) * modes];
+            -view.contact_forces[w] * dot(static_shape, values)
+        })
         .sum();
     full - modal
+}
+
+/// The unit a quantity's values are recorded in (SI; a vehicle's rotation
+/// DOF is in rad, rad/s², under the same column unit as its translations).
+pub fn unit_of(quantity: Quantity) -> &'static str {
+    match quantity {
+        Quantity::BridgeDisplacement | Quantity::ContactGap | Quantity::VehicleDisplacement => "m",
+        Quantity::BridgeAcceleration | Quantity::VehicleAcceleration => "m/s^2",
+        Quantity::BridgeMoment => "N*m",
+        Quantity::BridgeShear | Quantity::ContactForce => "N",
+    }
+}
+
+/// The deck-acceleration filter: the mode values `shape` with the modes
+/// above the cut-off `max_frequency` (Hz) zeroed (a sharp modal low-pass,
+/// EN 1990 A2.4.4.2.1(4)).
+fn filtered_shape(model: &Model, shape: &[f64], max_frequency: Option<f64>) -> Vec<f64> {
+    let mut shape = shape.to_vec();
+    if let Some(cut) = max_frequency {
+        let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
+        for (value, omega) in shape.iter_mut().zip(&model.bridge.circular_frequencies) {
+            if *omega > limit {
+                *value = 0.0;
+            }
+        }
+    }
+    shape
+}
+
+/// A recorded bridge displacement (m, upward): the modal sum, plus the
+/// static share of the modes left out when `wheel_modes` is filled (the
+/// static correction is on).
+fn corrected_displacement(
+    shape: &[f64],
+    statics: &StaticProbe,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+    on_deck: &[usize],
+) -> f64 {
+    let modal = dot(shape, view.modal_displacement);
+    if wheel_modes.is_empty() {
+        modal
+    } else {
+        modal + truncated_static_share(statics, static_shape, wheel_modes, view, on_deck)
+    }
 }
 
 /// One recorded time history.
@@ -192,6 +250,8 @@ pub struct History {
     /// The DAF at the middle of every span on every girder line, span by
     /// span (a beam has one line, at y = 0).
     pub girder_dafs: Vec<GirderDaf>,
+    /// Envelopes along the deck, when the scene asks for them.
+    pub envelope: Option<Envelope>,
 }
 
 /// Gap above which a wheel with zero contact force counts as separated, m.
@@ -234,6 +294,11 @@ pub struct Recorder<'m> {
     /// Mode values at every wheel this step (wheel-major), for the static
     /// correction; empty when it is off or nothing needs it.
     wheel_modes: Vec<f64>,
+    /// Envelopes along the deck, when asked for.
+    envelope: Option<EnvelopeTracker>,
+    /// The wheels on the deck this step (indices): only they load it, so
+    /// the static parts sum over them alone.
+    on_deck: Vec<usize>,
 }
 
 impl<'m> Recorder<'m> {
@@ -268,21 +333,23 @@ impl<'m> Recorder<'m> {
                         };
                         (probe, "m", lead)
                     } else {
-                        // The deck-acceleration filter: modes above the
-                        // record's cut-off do not contribute (a sharp modal
-                        // low-pass, EN 1990 A2.4.4.2.1(4)).
-                        if let Some(cut) = record.max_frequency {
-                            let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
-                            for (value, omega) in
-                                shape.iter_mut().zip(&model.bridge.circular_frequencies)
-                            {
-                                if *omega > limit {
-                                    *value = 0.0;
-                                }
-                            }
-                        }
+                        let shape = filtered_shape(model, &shape, record.max_frequency);
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
+                }
+                Quantity::BridgeMoment | Quantity::BridgeShear => {
+                    let x = record.x.unwrap_or(0.0);
+                    let section = model
+                        .bridge
+                        .section_probe(x)?
+                        .expect("moments and shears on a plate were refused when resolving");
+                    let shear = record.quantity == Quantity::BridgeShear;
+                    let unit = if shear { "N" } else { "N*m" };
+                    let probe = Probe::Section {
+                        section: Box::new(section),
+                        shear,
+                    };
+                    (probe, unit, lead)
                 }
                 Quantity::ContactForce | Quantity::ContactGap => {
                     let wheel = record.wheel.map_or(0, |w| w - 1);
@@ -390,9 +457,12 @@ impl<'m> Recorder<'m> {
         }
         let corrected = model.bridge.static_correction
             && (!daf_probes.is_empty()
-                || columns
-                    .iter()
-                    .any(|c| matches!(c.probe, Probe::BridgeDisplacement { .. })));
+                || columns.iter().any(|c| {
+                    matches!(
+                        c.probe,
+                        Probe::BridgeDisplacement { .. } | Probe::Section { .. }
+                    )
+                }));
         let wheel_modes = if corrected {
             vec![0.0; model.wheels.len() * modes]
         } else {
@@ -405,14 +475,36 @@ impl<'m> Recorder<'m> {
                 columns,
                 separation,
                 girder_dafs: Vec::new(),
+                envelope: None,
             },
             daf_probes,
             wheel_modes,
+            envelope: None,
+            on_deck: Vec::with_capacity(model.wheels.len()),
         })
+    }
+
+    /// Also tracks the envelopes along the deck of `envelopes` (resolved,
+    /// on a beam).
+    pub fn with_envelopes(mut self, envelopes: Option<&Envelopes>) -> Result<Self, BridgeError> {
+        let Some(envelopes) = envelopes else {
+            return Ok(self);
+        };
+        let tracker = EnvelopeTracker::new(self.model, envelopes)?;
+        let model = self.model;
+        if model.bridge.static_correction
+            && tracker.needs_wheel_modes()
+            && self.wheel_modes.is_empty()
+        {
+            self.wheel_modes = vec![0.0; model.wheels.len() * model.bridge.mode_count()];
+        }
+        self.envelope = Some(tracker);
+        Ok(self)
     }
 
     /// The recorded history.
     pub fn finish(mut self) -> History {
+        self.history.envelope = self.envelope.take().map(EnvelopeTracker::finish);
         self.history.girder_dafs = self
             .daf_probes
             .into_iter()
@@ -472,6 +564,20 @@ fn ground_terms(
             };
             (0.0, (absolute && translation).then_some(term))
         }
+        Probe::Section { ref section, shear } => {
+            // Moments and shears are frame-independent (relative motion).
+            let share = if model.bridge.static_correction {
+                let forces = model.bridge.ground_section_share(
+                    section,
+                    ground.total_mass / model.bridge.length,
+                    &ground.participation,
+                );
+                if shear { forces.shear } else { forces.moment }
+            } else {
+                0.0
+            };
+            (share, None)
+        }
         Probe::ContactForce { .. } | Probe::ContactGap { .. } => (0.0, None),
     })
 }
@@ -513,12 +619,23 @@ impl Observer for Recorder<'_> {
         // modal part, w_c = Σ_w F_w [G(x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²]
         // (Williams 1945; Cornwell, Craig & Johnson 1983; F_w downward).
         let modes = model.bridge.mode_count();
+        self.on_deck.clear();
+        self.on_deck.extend(
+            (0..view.wheel_positions.len())
+                .filter(|&w| model.bridge.is_on(view.wheel_positions[w])),
+        );
+        let on_deck = &self.on_deck;
         if !self.wheel_modes.is_empty() {
-            for (w, values) in self.wheel_modes.chunks_mut(modes).enumerate() {
-                model
-                    .bridge
-                    .mode_values(view.wheel_positions[w], model.wheel_y[w], values);
+            for &w in on_deck {
+                model.bridge.mode_values(
+                    view.wheel_positions[w],
+                    model.wheel_y[w],
+                    &mut self.wheel_modes[w * modes..(w + 1) * modes],
+                );
             }
+        }
+        if let Some(envelope) = &mut self.envelope {
+            envelope.observe(model, view, &self.wheel_modes, on_deck);
         }
         for probe in &mut self.daf_probes {
             let mut dynamic = dot(&probe.shape, view.modal_displacement);
@@ -528,11 +645,13 @@ impl Observer for Recorder<'_> {
                     &probe.static_shape,
                     &self.wheel_modes,
                     view,
+                    on_deck,
                 );
             }
-            let statics = probe
-                .statics
-                .deflection(view.wheel_positions, &model.static_wheel_loads);
+            let statics =
+                probe
+                    .statics
+                    .deflection(view.wheel_positions, &model.static_wheel_loads, on_deck);
             let r = &mut probe.result;
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
@@ -547,20 +666,35 @@ impl Observer for Recorder<'_> {
                     // Static crossing: each wheel's static load at its
                     // current position through the influence line of its
                     // lane (full stiffness, no modal truncation).
-                    let static_w =
-                        statics.deflection(view.wheel_positions, &model.static_wheel_loads);
+                    let static_w = statics.deflection(
+                        view.wheel_positions,
+                        &model.static_wheel_loads,
+                        on_deck,
+                    );
                     if let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
-                    let modal = dot(shape, view.modal_displacement);
-                    if self.wheel_modes.is_empty() {
-                        modal
-                    } else {
-                        modal
-                            + truncated_static_share(statics, static_shape, &self.wheel_modes, view)
-                    }
+                    corrected_displacement(
+                        shape,
+                        statics,
+                        static_shape,
+                        &self.wheel_modes,
+                        view,
+                        on_deck,
+                    )
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::Section { section, shear } => {
+                    let loads = SectionLoads {
+                        modal: view.modal_displacement,
+                        positions: view.wheel_positions,
+                        forces: view.contact_forces,
+                        wheel_modes: &self.wheel_modes,
+                        on_deck,
+                    };
+                    let forces = section.forces(&loads, model.bridge.static_correction);
+                    if *shear { forces.shear } else { forces.moment }
+                }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
                 Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
                 Probe::VehicleDisplacement { vehicle, dof } => {

@@ -53,7 +53,10 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
         .filter(|q| {
             matches!(
                 q.quantity,
-                Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+                Quantity::BridgeDisplacement
+                    | Quantity::BridgeAcceleration
+                    | Quantity::BridgeMoment
+                    | Quantity::BridgeShear
             ) && q.max_abs.time >= last
                 && q.max_abs.value != 0.0
         })

@@ -14,6 +14,8 @@ fn axis_name(quantity: Quantity) -> &'static str {
     match quantity {
         Quantity::BridgeDisplacement => "bridge displacement",
         Quantity::BridgeAcceleration => "bridge acceleration",
+        Quantity::BridgeMoment => "bending moment",
+        Quantity::BridgeShear => "shear force",
         Quantity::ContactForce => "contact force",
         Quantity::ContactGap => "contact gap",
         Quantity::VehicleDisplacement => "vehicle displacement",

@@ -320,6 +320,7 @@ pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
             raw::VehicleRaw::Oscillator(_) => 1.0,
             raw::VehicleRaw::H20Truck(_) => 4.0,
             raw::VehicleRaw::RailCar(_) => 4.0,
+            raw::VehicleRaw::Hslm(h) => h.model.train().axle_count() as f64,
             raw::VehicleRaw::Train(t) => {
                 let cars = t.cars.as_ref().map_or(0, Vec::len) as f64;
                 4.0 * (t.count.map_or(0.0, |n| n as f64) + cars).max(1.0)
@@ -382,6 +383,7 @@ pub(super) fn steps_cause(
             Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::RailCar(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::Train(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Hslm(v)) if v.start_position.is_some() => "start_position",
             _ => "entry_time",
         };
         return format!("vehicles[{i}].{field}");

@@ -336,9 +336,13 @@ pub(super) fn resolve_study(
     vehicles: &[Vehicle],
     contact: &Contact,
     surface: &Surface,
+    frequencies: &[f64],
     ck: &mut Checker<'_>,
 ) -> Option<Study> {
     match raw? {
+        raw::StudyRaw::ResonanceCheck(check) => Some(Study::ResonanceCheck(
+            super::resonance::resolve_resonance(check, bridge, frequencies, ck),
+        )),
         raw::StudyRaw::SpeedSweep(sweep) => Some(Study::SpeedSweep(super::sweep::resolve(
             sweep, bridge, surface, ck,
         ))),

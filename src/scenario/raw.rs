@@ -11,16 +11,22 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod envelopes;
 mod ground;
+mod hslm;
 mod limits;
 mod rail;
+mod resonance;
 mod speed;
 mod study;
 mod surface;
 mod truck;
+pub use self::envelopes::*;
 pub use self::ground::*;
+pub use self::hslm::*;
 pub use self::limits::*;
 pub use self::rail::*;
+pub use self::resonance::*;
 pub use self::speed::*;
 pub use self::study::*;
 pub use self::surface::*;
@@ -70,6 +76,10 @@ pub struct ScenarioRaw {
     /// direction, applied as a uniform support excitation. Default: none.
     #[serde(default)]
     pub ground_motion: Option<Vec<GroundMotionRaw>>,
+    /// Maxima and minima of bridge quantities at every point along the deck
+    /// (beams), written to `envelopes.csv`. Default: none.
+    #[serde(default)]
+    pub envelopes: Option<EnvelopesRaw>,
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,
@@ -327,6 +337,9 @@ pub enum VehicleRaw {
     /// `car_spacing`, or a `cars` list. Resolved into one vehicle whose
     /// wheels are every car's wheelsets, numbered front to rear.
     Train(TrainRaw),
+    /// An HSLM-A train of EN 1991-2 Annex E (`model: A1` … `A10`) as moving
+    /// axle forces; resolved into a `moving_force` with its axle positions.
+    Hslm(HslmRaw),
 }
 
 /// Where and how fast a vehicle travels.
@@ -648,6 +661,13 @@ pub enum Quantity {
     BridgeDisplacement,
     /// Bridge vertical acceleration at `x` (and `y` on a plate), m/s², positive upward.
     BridgeAcceleration,
+    /// Bending moment of a beam bridge at `x`, N·m, positive sagging; from
+    /// the modes with the mode-acceleration static correction (beams only).
+    BridgeMoment,
+    /// Shear force of a beam bridge at `x`, N: dM/dx, the resultant of the
+    /// upward forces left of the section; its right-hand limit where a wheel
+    /// stands on the section (beams only).
+    BridgeShear,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,
     /// Gap between a wheel and the surface under it, m: positive when the wheel

@@ -60,6 +60,14 @@ pub(super) fn highest_acceleration_cutoff(
         .reduce(f64::max)
 }
 
+/// The quantity's name as the format writes it.
+pub fn quantity_name_of(q: Quantity) -> String {
+    serde_json::to_value(q)
+        .ok()
+        .and_then(|v| v.as_str().map(String::from))
+        .unwrap_or_default()
+}
+
 /// `frequencies` are the bridge's lowest natural frequencies, Hz (for the
 /// default acceleration cut-off).
 pub(super) fn resolve_records(
@@ -98,16 +106,28 @@ pub(super) fn resolve_records(
         let q = r.quantity;
         let is_bridge = matches!(
             q,
-            Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+            Quantity::BridgeDisplacement
+                | Quantity::BridgeAcceleration
+                | Quantity::BridgeMoment
+                | Quantity::BridgeShear
         );
+        if matches!(q, Quantity::BridgeMoment | Quantity::BridgeShear)
+            && matches!(bridge, Bridge::Plate(_))
+        {
+            ck.error(
+                &format!("{at}.quantity"),
+                format!(
+                    "`{}` is computed for beam bridges only; on a plate deck record \
+                     `bridge_displacement` or `bridge_acceleration`",
+                    quantity_name_of(q)
+                ),
+            );
+        }
         let is_vehicle_dof = matches!(
             q,
             Quantity::VehicleDisplacement | Quantity::VehicleAcceleration
         );
-        let quantity_name = serde_json::to_value(q)
-            .ok()
-            .and_then(|v| v.as_str().map(String::from))
-            .unwrap_or_default();
+        let quantity_name = quantity_name_of(q);
         let unused = |field: &str| format!("`{field}` is not used by `{quantity_name}`");
         if is_bridge {
             match r.x {

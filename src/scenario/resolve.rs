@@ -290,6 +290,7 @@ pub(super) fn resolve(
         &vehicles,
         &contact,
         &surface,
+        &modal.frequencies(),
         ck,
     );
     let points = study
@@ -325,12 +326,28 @@ pub(super) fn resolve(
             &bridge,
             gravity,
         ),
+        // Every train of a resonance check at its top speed.
+        Some(Study::ResonanceCheck(check)) => {
+            let trains: Vec<Vehicle> = check
+                .trains
+                .iter()
+                .map(|&t| super::resonance::train_vehicle(t, check.speeds.to))
+                .collect();
+            content::excitations(&trains, &contact, &surface, bridge.spans(), gravity)
+        }
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
     // The highest mode frequency any deck acceleration sums (it needs only
     // f₁ and f₃, which the minimum modes already give).
     let record_cutoff =
         super::records::highest_acceleration_cutoff(raw.record.as_deref(), &modal.frequencies());
+    let record_cutoff = match (
+        record_cutoff,
+        super::envelopes::acceleration_cut(raw.envelopes.as_ref(), &modal.frequencies()),
+    ) {
+        (Some(a), Some(b)) => Some(a.max(b)),
+        (a, b) => a.or(b),
+    };
     if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
@@ -545,6 +562,12 @@ pub(super) fn resolve(
         &contact,
         ck,
     );
+    let envelopes = super::envelopes::resolve_envelopes(
+        raw.envelopes.as_ref(),
+        &modal.frequencies(),
+        &bridge,
+        ck,
+    );
     if !ck.diagnostics.is_empty() {
         return None;
     }
@@ -604,6 +627,7 @@ pub(super) fn resolve(
         },
         record,
         ground_motion,
+        envelopes,
         study,
         limits,
     };
@@ -678,6 +702,15 @@ fn resolve_vehicles(
     let mut out = Vec::with_capacity(raws.len());
     for (i, raw) in raws.iter().enumerate() {
         let at = format!("vehicles[{i}]");
+        // An HSLM train is its table's moving forces.
+        let hslm;
+        let raw = match raw {
+            raw::VehicleRaw::Hslm(h) => {
+                hslm = raw::VehicleRaw::MovingForce(h.moving_force());
+                &hslm
+            }
+            other => other,
+        };
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
                 check_speed(ck, &at, v.speed.0);
@@ -789,6 +822,8 @@ fn resolve_vehicles(
             raw::VehicleRaw::RailCar(v) => {
                 out.push(super::rail::resolve_rail_car(v, &at, width, ck));
             }
+            // Turned into moving forces above.
+            raw::VehicleRaw::Hslm(_) => {}
             raw::VehicleRaw::Train(v) => {
                 out.push(super::rail::resolve_train(v, &at, width, ck));
             }

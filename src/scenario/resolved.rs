@@ -45,6 +45,9 @@ pub struct Scenario {
     /// Earthquake ground motion components (none: the ground is still).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub ground_motion: Vec<GroundMotion>,
+    /// Envelopes along the deck.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub envelopes: Option<Envelopes>,
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
@@ -559,6 +562,19 @@ pub struct Newmark {
     pub gamma: f64,
     /// HHT α (0 = plain Newmark).
     pub alpha: f64,
+}
+
+/// Envelopes along the deck (beams; see the raw format).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Envelopes {
+    /// The bridge quantities enveloped, in output order.
+    pub quantities: Vec<Quantity>,
+    /// Evenly spaced points from entrance to exit; `None`: every mesh node.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub points: Option<usize>,
+    /// Highest mode frequency of the acceleration envelope, Hz.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_frequency: Option<f64>,
 }
 
 /// One recorded quantity.

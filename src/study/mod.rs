@@ -5,6 +5,7 @@
 
 pub mod converge;
 pub mod monte_carlo;
+pub mod resonance;
 pub mod separation_map;
 pub mod shard;
 pub mod speed_sweep;

@@ -94,6 +94,11 @@ pub enum PartData {
     },
     /// Monte Carlo samples and reduced tree nodes of the slice.
     MonteCarlo(MonteCarloPart),
+    /// Resonance-check runs of the slice.
+    ResonanceCheck {
+        /// Runs in study order.
+        points: Vec<crate::study::resonance::ResonancePoint>,
+    },
 }
 
 /// A part file.
@@ -194,6 +199,7 @@ fn study_size(loaded: &Loaded, study: &Study) -> (&'static str, usize) {
         ),
         Study::SpeedSweep(sweep) => ("speed_sweep", speed_sweep::size(&loaded.scenario, sweep)),
         Study::MonteCarlo(mc) => ("monte_carlo", monte_carlo::size(mc)),
+        Study::ResonanceCheck(check) => ("resonance_check", crate::study::resonance::size(check)),
     }
 }
 
@@ -234,6 +240,15 @@ pub fn run_shard(
         },
         Study::SpeedSweep(sweep) => PartData::SpeedSweep {
             points: speed_sweep::run_slice(base, bridge, sweep, range.clone(), progress)?,
+        },
+        Study::ResonanceCheck(check) => PartData::ResonanceCheck {
+            points: crate::study::resonance::run_slice(
+                base,
+                bridge,
+                check,
+                range.clone(),
+                progress,
+            )?,
         },
         Study::MonteCarlo(mc) => PartData::MonteCarlo(monte_carlo::run_slice(
             base,
@@ -436,6 +451,7 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
             let fits = |q: &SweepPoint| {
                 q.dafs.len() == layout.daf_sources.len()
                     && q.max_forces.len() == layout.force_records.len()
+                    && q.max_abs.len() == layout.records.len()
                     && q.roughness < layout.roughness.len()
             };
             let mut points = Vec::new();
@@ -455,6 +471,22 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
                 points,
                 wall_time,
             ))
+        }
+        Study::ResonanceCheck(check) => {
+            let mut points = Vec::new();
+            for p in parts {
+                let count = p.end - p.first;
+                let PartData::ResonanceCheck { points: more } = p.data else {
+                    return Err(wrong());
+                };
+                let fits =
+                    |q: &crate::study::resonance::ResonancePoint| q.train < check.trains.len();
+                if more.len() != count || !more.iter().all(fits) {
+                    return Err(short(p.shard, more.len(), count));
+                }
+                points.extend(more);
+            }
+            Results::ResonanceCheck(crate::study::resonance::assemble(check, points, wall_time))
         }
         Study::MonteCarlo(mc) => {
             let mut slices = Vec::with_capacity(parts.len());

@@ -87,6 +87,11 @@ pub struct SweepPoint {
     pub dafs: Vec<Option<f64>>,
     /// Largest contact force per [`SweepResults::force_records`], N.
     pub max_forces: Vec<f64>,
+    /// Largest |value| of every record of the scene, in record order
+    /// ([`SweepResults::records`]), in the record's unit (bridge
+    /// accelerations filtered at the record's `max_frequency`).
+    #[serde(default)]
+    pub max_abs: Vec<f64>,
 }
 
 /// The whole sweep.
@@ -117,6 +122,8 @@ pub struct SweepResults {
     pub daf_columns: Vec<String>,
     /// Names of the `contact_force` records.
     pub force_records: Vec<String>,
+    /// Every record of the scene: (name, unit), in record order.
+    pub records: Vec<(String, String)>,
     /// Points: surface by surface, sample by sample, speed by speed.
     pub points: Vec<SweepPoint>,
     /// Wall time of all points, s.
@@ -195,6 +202,11 @@ fn run_point(
         crate::scenario::resolved::Surface::Random { seed, .. } => Some(seed),
         _ => None,
     };
+    let max_abs = history
+        .columns
+        .iter()
+        .map(|c| c.values.iter().fold(0.0f64, |m, v| m.max(v.abs())))
+        .collect();
     Ok(SweepPoint {
         roughness,
         sample: k + 1,
@@ -202,6 +214,7 @@ fn run_point(
         speed,
         dafs,
         max_forces,
+        max_abs,
     })
 }
 
@@ -287,6 +300,16 @@ fn layout(
         daf_columns: daf_columns(&daf_sources),
         daf_sources,
         force_records,
+        records: base
+            .record
+            .iter()
+            .map(|r| {
+                (
+                    r.name.clone(),
+                    crate::record::unit_of(r.quantity).to_owned(),
+                )
+            })
+            .collect(),
         points: Vec::new(),
         wall_time: 0.0,
     };
@@ -405,7 +428,8 @@ impl SweepResults {
 
     /// The sweep as CSV: one row per (surface, sample, speed) with
     /// `roughness,sample,seed,speed_m_s,speed_km_h`, a `daf_…` column per
-    /// DAF source and a `max_<record>_N` column per contact force record.
+    /// DAF source, a `max_<record>_N` column per contact force record, and a
+    /// `max_abs_<record>_<unit>` column per record (every quantity).
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
         let mut header: Vec<String> = ["roughness", "sample", "seed", "speed_m_s", "speed_km_h"]
@@ -413,6 +437,11 @@ impl SweepResults {
             .to_vec();
         header.extend(self.daf_columns.iter().cloned());
         header.extend(self.force_records.iter().map(|n| format!("max_{n}_N")));
+        header.extend(
+            self.records
+                .iter()
+                .map(|(name, unit)| format!("max_abs_{name}_{unit}")),
+        );
         out.write_record(&header).expect("writing to memory");
         let number = crate::report::number;
         for p in &self.points {
@@ -425,6 +454,7 @@ impl SweepResults {
             ];
             row.extend(p.dafs.iter().map(|d| d.map(number).unwrap_or_default()));
             row.extend(p.max_forces.iter().copied().map(number));
+            row.extend(p.max_abs.iter().copied().map(number));
             out.write_record(&row).expect("writing to memory");
         }
         out.into_inner().expect("writing to memory")

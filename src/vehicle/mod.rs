@@ -6,6 +6,7 @@
 //! degree of freedom, which DOF follows the surface).
 
 pub mod h20_44;
+pub mod hslm;
 pub mod moving_force;
 pub mod oscillator;
 pub mod rail_car;

@@ -35,6 +35,9 @@ pub enum StudyRaw {
     /// envelopes.csv, envelopes.png, and with several speeds
     /// separation_probability.png and expected_gap.png.
     MonteCarlo(MonteCarloRaw),
+    /// Railway resonance check with the HSLM-A trains of EN 1991-2 Annex E:
+    /// see its fields.
+    ResonanceCheck(super::ResonanceCheckRaw),
 }
 
 /// A Monte Carlo study over random surface profiles.

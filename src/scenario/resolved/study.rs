@@ -20,6 +20,49 @@ pub enum Study {
     SpeedSweep(SpeedSweep),
     /// Monte Carlo over random surface samples.
     MonteCarlo(MonteCarlo),
+    /// HSLM-A resonance check (EN 1991-2 6.4.6).
+    ResonanceCheck(ResonanceCheck),
+}
+
+/// A resonance check. See [`crate::scenario::raw::ResonanceCheckRaw`].
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct ResonanceCheck {
+    /// Trains, in run order.
+    pub trains: Vec<crate::scenario::raw::HslmModel>,
+    /// Maximum line speed, m/s.
+    pub line_speed: f64,
+    /// Speeds, m/s.
+    pub speeds: ResonanceSpeeds,
+    /// The track on the deck.
+    pub deck: crate::scenario::raw::DeckRaw,
+    /// Highest mode frequency of the deck acceleration, Hz.
+    pub max_frequency: f64,
+}
+
+/// Speeds of a resonance check, m/s.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct ResonanceSpeeds {
+    /// Lowest, m/s.
+    pub from: f64,
+    /// Highest, m/s.
+    pub to: f64,
+    /// Step, m/s.
+    pub step: f64,
+}
+
+impl ResonanceSpeeds {
+    /// Number of speeds: from, from + step, … up to `to` (within 1e-9 of a
+    /// step, so that 5 km/h steps land on a round top speed).
+    pub fn count(&self) -> usize {
+        ((self.to - self.from) / self.step + 1e-9).floor() as usize + 1
+    }
+
+    /// The speeds, m/s.
+    pub fn values(&self) -> Vec<f64> {
+        (0..self.count())
+            .map(|i| self.from + i as f64 * self.step)
+            .collect()
+    }
 }
 
 /// A Monte Carlo study. See [`crate::scenario::raw::MonteCarloRaw`].

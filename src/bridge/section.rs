@@ -1,0 +1,268 @@
+//! Bending moment and shear force at a section of a beam bridge, converging
+//! with the mode count by the mode-acceleration method.
+//!
+//! Sign conventions: the moment M is positive sagging (N·m), the shear
+//! V = dM/dx (N) is the resultant of the upward forces left of the section.
+//! Where a point load sits exactly on the section V jumps; the right-hand
+//! limit V(x⁺) is reported.
+//!
+//! The effect E (M or V) at x is split as in the mode-acceleration method
+//! (Williams 1945; Clough & Penzien, *Dynamics of Structures*, 2nd ed.,
+//! §13-6; Chopra, *Dynamics of Structures*, §12.11):
+//!
+//! E(x, t) = E_static(x; F(t)) + Σⱼ Eⱼ(x) (qⱼ − qⱼ,static),
+//! qⱼ,static = Σ_w φⱼ(ξ_w) f_w / ωⱼ²,
+//!
+//! where F(t) are the current wheel forces at positions ξ_w (f_w = −F_w
+//! upward on the deck) and Eⱼ the modal moment EI φⱼ″ (shear EI φⱼ‴) of a
+//! unit modal coordinate. The quasi-static part comes from the full
+//! stiffness, so the modes left out are accounted for and the modal sum only
+//! carries the (fast-converging) dynamic remainder. Without the static
+//! correction the plain modal sum Σⱼ Eⱼ qⱼ is used.
+//!
+//! The static part is exact for point loads on the Hermite-cubic mesh of a
+//! uniform Euler–Bernoulli beam: the finite-element nodal displacements are
+//! exact for consistent point loads (Tong 1969), so in an element with no
+//! load inside it the cubic, and its EI w″ and EI w‴, are exact; a load
+//! inside the section's own element adds the fixed–fixed particular solution
+//! of that element (the load between clamped ends: M_A = −P a b²/h²,
+//! R_A = P b²(3a + b)/h³; Roark's Formulas, Table 8.1 case 1d).
+//!
+//! The modal curvature of a Hermite element is linear and its third
+//! derivative constant per element, both jumping at nodes; they are
+//! recovered by nodal averaging (the mean of the two elements meeting at a
+//! node, the end element's value at the ends) and interpolated linearly
+//! within the element, which is second-order accurate for the smooth mode
+//! shapes (Zienkiewicz & Zhu 1992, superconvergent patch recovery in 1-D).
+
+use super::hermite::{HermiteField, shape_curvatures};
+use super::{BridgeError, ModalBridge, Shapes};
+
+/// The moment and shear of one beam section.
+#[derive(Debug, Clone)]
+pub struct SectionProbe {
+    /// Section position, m.
+    pub x: f64,
+    /// Start of the section's element, m.
+    element_start: f64,
+    /// Length of the section's element, m.
+    element_length: f64,
+    /// M at x under a unit downward load at ξ from the finite-element
+    /// displacements (N·m/N), exact for ξ outside the element.
+    moment_line: HermiteField,
+    /// V at x under a unit downward load at ξ (N/N), likewise.
+    shear_line: HermiteField,
+    /// EI φⱼ″(x) per mode, N·m per unit modal coordinate.
+    modal_moment: Vec<f64>,
+    /// EI φⱼ‴(x) per mode, N per unit modal coordinate.
+    modal_shear: Vec<f64>,
+    /// EI φⱼ″(x)/ωⱼ², for the static modal part.
+    static_modal_moment: Vec<f64>,
+    /// EI φⱼ‴(x)/ωⱼ².
+    static_modal_shear: Vec<f64>,
+}
+
+/// Bending moment (N·m, sagging positive) and shear (N, right-hand limit).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SectionForces {
+    /// Bending moment, N·m.
+    pub moment: f64,
+    /// Shear force, N.
+    pub shear: f64,
+}
+
+/// The load state of one step as the section sees it.
+#[derive(Debug, Clone, Copy)]
+pub struct SectionLoads<'a> {
+    /// Modal displacements q, kept modes.
+    pub modal: &'a [f64],
+    /// Wheel positions along the bridge, m.
+    pub positions: &'a [f64],
+    /// Wheel forces on the deck, N, positive downward (compression).
+    pub forces: &'a [f64],
+    /// Mode values at every wheel, wheel-major; empty without the static
+    /// correction. Read only for the wheels `on_deck`.
+    pub wheel_modes: &'a [f64],
+    /// The wheels on the deck (indices): only they load it.
+    pub on_deck: &'a [usize],
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+impl ModalBridge {
+    /// The section probe at `x` (m), `None` on a plate deck (moments and
+    /// shears are beam quantities here). Two sparse solves.
+    pub fn section_probe(&self, x: f64) -> Result<Option<SectionProbe>, BridgeError> {
+        let Shapes::Beam { shapes, model } = &self.shapes else {
+            return Ok(None);
+        };
+        let nodes = &model.node_x;
+        let right = nodes.partition_point(|&nx| nx <= x);
+        let element = right.clamp(1, nodes.len() - 1) - 1;
+        let start = nodes[element];
+        let h = nodes[element + 1] - start;
+        let xi = ((x - start) / h).clamp(0.0, 1.0);
+        let ei = model.bending_stiffness;
+        // Müller-Breslau in finite elements: M(x; ξ) = N(ξ)ᵀ K⁻¹ g with
+        // g = −EI B(x) on the element's dofs (w positive downward, so
+        // sagging is −EI w″), and g = −EI B′(x) for V = dM/dx.
+        let curvature = shape_curvatures(xi, h);
+        let third = [
+            12.0 / (h * h * h),
+            6.0 / (h * h),
+            -12.0 / (h * h * h),
+            6.0 / (h * h),
+        ];
+        let moment_line = model.kink_line(element, curvature.map(|b| -ei * b))?;
+        let shear_line = model.kink_line(element, third.map(|b| -ei * b))?;
+        let (curvatures, thirds) = recovered_derivatives(shapes, element, xi);
+        let modal_moment: Vec<f64> = curvatures.iter().map(|c| ei * c).collect();
+        let modal_shear: Vec<f64> = thirds.iter().map(|t| ei * t).collect();
+        let per_stiffness = |values: &[f64]| -> Vec<f64> {
+            values
+                .iter()
+                .zip(&self.circular_frequencies)
+                .map(|(v, w)| v / (w * w))
+                .collect()
+        };
+        Ok(Some(SectionProbe {
+            x,
+            element_start: start,
+            element_length: h,
+            static_modal_moment: per_stiffness(&modal_moment),
+            static_modal_shear: per_stiffness(&modal_shear),
+            moment_line,
+            shear_line,
+            modal_moment,
+            modal_shear,
+        }))
+    }
+}
+
+/// Nodally averaged φ″ and φ‴ of every component of `shapes` at local
+/// coordinate `xi` of `element` (see the module doc).
+fn recovered_derivatives(shapes: &HermiteField, element: usize, xi: f64) -> (Vec<f64>, Vec<f64>) {
+    let nodes = shapes.node_x();
+    let modes = shapes.components();
+    // End curvatures (at ξ = 0 and 1) and the constant third derivative of
+    // element e, component c.
+    let element_values = |e: usize, c: usize| -> (f64, f64, f64) {
+        let h = nodes[e + 1] - nodes[e];
+        let (wa, ta) = shapes.nodal(e, c);
+        let (wb, tb) = shapes.nodal(e + 1, c);
+        let dofs = [wa, ta, wb, tb];
+        let at = |xi: f64| dot(&shape_curvatures(xi, h), &dofs);
+        let (ka, kb) = (at(0.0), at(1.0));
+        (ka, kb, (kb - ka) / h)
+    };
+    let last = nodes.len() - 2;
+    let mut curvatures = vec![0.0; modes];
+    let mut thirds = vec![0.0; modes];
+    for c in 0..modes {
+        let (ka, kb, t) = element_values(element, c);
+        let (left_k, left_t) = if element > 0 {
+            let (_, kb_left, t_left) = element_values(element - 1, c);
+            (0.5 * (kb_left + ka), 0.5 * (t_left + t))
+        } else {
+            (ka, t)
+        };
+        let (right_k, right_t) = if element < last {
+            let (ka_right, _, t_right) = element_values(element + 1, c);
+            (0.5 * (kb + ka_right), 0.5 * (t + t_right))
+        } else {
+            (kb, t)
+        };
+        curvatures[c] = (1.0 - xi) * left_k + xi * right_k;
+        thirds[c] = (1.0 - xi) * left_t + xi * right_t;
+    }
+    (curvatures, thirds)
+}
+
+impl super::beam::BeamModel {
+    /// K⁻¹ g for an element load vector `g` on `element`'s dofs, as a
+    /// Hermite field over the mesh (the influence line of the section
+    /// quantity g represents, by reciprocity). One sparse solve.
+    fn kink_line(&self, element: usize, g: [f64; 4]) -> Result<HermiteField, BridgeError> {
+        let mut load = vec![0.0; self.free_dofs()];
+        for (a, value) in g.into_iter().enumerate() {
+            if let Some(i) = self.free_index[2 * element + a] {
+                load[i] += value;
+            }
+        }
+        let factor = self.pencil.stiffness_factor()?;
+        factor.solve_in_place(&mut load, &mut factor.workspace()?);
+        Ok(HermiteField::from_fn(self.node_x.clone(), 1, |n, _| {
+            let w = self.free_index[2 * n].map_or(0.0, |i| load[i]);
+            let theta = self.free_index[2 * n + 1].map_or(0.0, |i| load[i]);
+            (w, theta)
+        }))
+    }
+}
+
+impl SectionProbe {
+    /// Exact static moment and shear at the section under downward point
+    /// forces `forces` (N) at `positions` (m); loads off the deck count for
+    /// nothing.
+    /// Only the wheels `on_deck` (indices) are summed.
+    pub fn static_forces(
+        &self,
+        positions: &[f64],
+        forces: &[f64],
+        on_deck: &[usize],
+    ) -> SectionForces {
+        let mut moment = 0.0;
+        let mut shear = 0.0;
+        let h = self.element_length;
+        let s = self.x - self.element_start;
+        for &w in on_deck {
+            let (at, p) = (positions[w], forces[w]);
+            moment += p * self.moment_line.value_at(at);
+            shear += p * self.shear_line.value_at(at);
+            let a = at - self.element_start;
+            if (0.0..=h).contains(&a) {
+                // The load between the element's clamped ends (module doc).
+                let b = h - a;
+                let end_moment = -p * a * b * b / (h * h);
+                let reaction = p * b * b * (3.0 * a + b) / (h * h * h);
+                let beyond = s >= a;
+                moment += end_moment + reaction * s - if beyond { p * (s - a) } else { 0.0 };
+                shear += reaction - if beyond { p } else { 0.0 };
+            }
+        }
+        SectionForces { moment, shear }
+    }
+
+    /// The static modal part Σⱼ (EIφⱼ″(x), EIφⱼ‴(x))/ωⱼ² · vⱼ for a modal
+    /// load vector `v` (per mode, N·√kg… the units of Γ or φ·F).
+    pub fn static_modal(&self, v: &[f64]) -> SectionForces {
+        SectionForces {
+            moment: dot(&self.static_modal_moment, v),
+            shear: dot(&self.static_modal_shear, v),
+        }
+    }
+
+    /// Moment and shear this step; `corrected` selects the mode-acceleration
+    /// form (module doc), else the plain modal sum. Cost O(modes × wheels).
+    pub fn forces(&self, loads: &SectionLoads<'_>, corrected: bool) -> SectionForces {
+        let mut moment = dot(&self.modal_moment, loads.modal);
+        let mut shear = dot(&self.modal_shear, loads.modal);
+        if corrected {
+            let statics = self.static_forces(loads.positions, loads.forces, loads.on_deck);
+            moment += statics.moment;
+            shear += statics.shear;
+            let modes = self.modal_moment.len();
+            if modes > 0 {
+                // − Σⱼ Eⱼ qⱼ,static with qⱼ,static = −Σ_w φⱼ(ξ_w) F_w/ωⱼ².
+                for &w in loads.on_deck {
+                    let values = &loads.wheel_modes[w * modes..(w + 1) * modes];
+                    let force = loads.forces[w];
+                    moment += force * dot(&self.static_modal_moment, values);
+                    shear += force * dot(&self.static_modal_shear, values);
+                }
+            }
+        }
+        SectionForces { moment, shear }
+    }
+}

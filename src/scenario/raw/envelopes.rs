@@ -1,0 +1,32 @@
+//! `envelopes:` — maxima and minima of bridge quantities at every point along
+//! the deck, computed during the run (no histories kept).
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+use super::Quantity;
+
+/// Envelopes along the whole deck (beams): at every mesh node, or at
+/// `points` evenly spaced points, the largest and smallest value of each
+/// quantity over the run, with the time and the lead vehicle's position
+/// when each occurred, written to `envelopes.csv`.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EnvelopesRaw {
+    /// The bridge quantities enveloped: any of `bridge_displacement`,
+    /// `bridge_acceleration`, `bridge_moment`, `bridge_shear`. Default: all four.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_empty)]
+    pub quantities: Option<Vec<Quantity>>,
+    /// Number of evenly spaced points from the entrance to the exit, both
+    /// included (at least 2). Default: every node of the beam's mesh.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::at_least_two)]
+    pub points: Option<usize>,
+    /// Highest mode frequency the acceleration envelope includes, Hz.
+    /// Default as for a `bridge_acceleration` record: the greater of 30 Hz,
+    /// 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub max_frequency: Option<f64>,
+}

@@ -1,0 +1,77 @@
+//! `study: {type: resonance_check}` — the railway deck-acceleration check of
+//! EN 1991-2 6.4.6 with the HSLM-A trains.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+use super::{HslmModel, SpeedRaw};
+
+/// The track on the deck, which sets the deck-acceleration limit of
+/// EN 1990 A2.4.4.2.1(1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum DeckRaw {
+    /// Ballasted track: 3.5 m/s².
+    Ballasted,
+    /// Direct-fastened track: 5 m/s².
+    DirectFastening,
+}
+
+impl DeckRaw {
+    /// The peak deck-acceleration limit, m/s² (EN 1990 A2.4.4.2.1(1)).
+    pub fn acceleration_limit(self) -> f64 {
+        match self {
+            DeckRaw::Ballasted => 3.5,
+            DeckRaw::DirectFastening => 5.0,
+        }
+    }
+}
+
+/// Speeds of a resonance check.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ResonanceSpeedsRaw {
+    /// Lowest speed, m/s or with its unit. Default 40 m/s (EN 1991-2
+    /// 6.4.6.2(1)).
+    #[serde(default)]
+    pub from: Option<SpeedRaw>,
+    /// Highest speed, m/s or with its unit. Default 1.2 × `line_speed`
+    /// (EN 1991-2 6.4.6.2(1)).
+    #[serde(default)]
+    pub to: Option<SpeedRaw>,
+    /// Speed step, m/s or with its unit. Default 5 km/h (EN 1991-2 6.4.6.2
+    /// asks for smaller steps near resonance: refine there).
+    #[serde(default)]
+    pub step: Option<SpeedRaw>,
+}
+
+/// Resonance check (EN 1991-2 6.4.6 with Annex E): each HSLM-A train of
+/// `trains` crosses the bridge alone, as moving axle forces, at every speed
+/// from `speeds.from` to `speeds.to` (default 1.2 × `line_speed`); each run
+/// gives the largest |displacement| and |acceleration| along the deck
+/// (acceleration filtered at `max_frequency`, EN 1990 A2.4.4.2.1(4)).
+/// Writes resonance.csv, resonance.png and a summary with the governing
+/// train and speed against the deck-acceleration limit. The scene's own
+/// vehicles are replaced; beams only.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ResonanceCheckRaw {
+    /// Trains to run, `A1` … `A10`. Default: all ten.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::non_empty)]
+    pub trains: Option<Vec<HslmModel>>,
+    /// The maximum line speed, m/s or with its unit (`300 km/h`).
+    pub line_speed: SpeedRaw,
+    /// Speeds to run. Defaults: 40 m/s to 1.2 × `line_speed` in 5 km/h steps.
+    #[serde(default)]
+    pub speeds: Option<ResonanceSpeedsRaw>,
+    /// The track: `ballasted` (limit 3.5 m/s²) or `direct_fastening`
+    /// (5 m/s²). Default `ballasted`.
+    #[serde(default)]
+    pub deck: Option<DeckRaw>,
+    /// Highest mode frequency the deck acceleration includes, Hz. Default:
+    /// the greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub max_frequency: Option<f64>,
+}

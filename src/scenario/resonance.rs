@@ -1,0 +1,122 @@
+//! Resolving a resonance check: trains, speeds, deck and filter checked,
+//! every default filled in.
+
+use super::raw::{self, DeckRaw, HslmModel, km_h_to_m_s};
+use super::records::acceleration_cutoff;
+use super::resolve::{Checker, MAX_SPEED};
+use super::resolved::{Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
+
+/// Most speeds per train (a count from the input, checked before the grid
+/// is built).
+pub const MAX_RESONANCE_SPEEDS: usize = 10_000;
+
+/// EN 1991-2 6.4.6.2(1): speeds from 40 m/s.
+pub const DEFAULT_LOWEST_SPEED: f64 = 40.0;
+
+/// `frequencies`: the bridge's lowest natural frequencies, Hz.
+pub(super) fn resolve_resonance(
+    raw: &raw::ResonanceCheckRaw,
+    bridge: &Bridge,
+    frequencies: &[f64],
+    ck: &mut Checker<'_>,
+) -> ResonanceCheck {
+    if matches!(bridge, Bridge::Plate(_)) {
+        ck.error(
+            "study",
+            "a resonance check is computed on beam bridges only (it envelopes the deck along \
+             its length)",
+        );
+    }
+    let trains = raw
+        .trains
+        .clone()
+        .unwrap_or_else(|| HslmModel::ALL.to_vec());
+    if trains.is_empty() {
+        ck.error(
+            "study.trains",
+            "list at least one train, or leave `trains` out for all ten",
+        );
+    }
+    for (i, t) in trains.iter().enumerate() {
+        if trains[..i].contains(t) {
+            ck.error(
+                &format!("study.trains[{i}]"),
+                format!("{} is listed twice", t.label()),
+            );
+        }
+    }
+    let line_speed = raw.line_speed.meters_per_second();
+    let speed_ok = |ck: &mut Checker<'_>, at: &str, v: f64| {
+        let fine = v.is_finite() && v > 0.0 && v <= MAX_SPEED;
+        if !fine {
+            ck.error(
+                at,
+                format!("a speed must be positive and at most {MAX_SPEED} m/s, got {v} m/s"),
+            );
+        }
+        fine
+    };
+    speed_ok(ck, "study.line_speed", line_speed);
+    let given = raw.speeds.as_ref();
+    let from = given
+        .and_then(|s| s.from)
+        .map_or(DEFAULT_LOWEST_SPEED, |v| v.meters_per_second());
+    let to = given
+        .and_then(|s| s.to)
+        .map_or(1.2 * line_speed, |v| v.meters_per_second());
+    let step = given
+        .and_then(|s| s.step)
+        .map_or(km_h_to_m_s(5.0), |v| v.meters_per_second());
+    let fine = speed_ok(ck, "study.speeds.from", from)
+        & speed_ok(ck, "study.speeds.to", to)
+        & speed_ok(ck, "study.speeds.step", step);
+    let speeds = ResonanceSpeeds { from, to, step };
+    if fine {
+        if to < from {
+            ck.error(
+                "study.speeds",
+                format!("the highest speed {to} m/s is below the lowest {from} m/s"),
+            );
+        } else if (to - from) / step >= MAX_RESONANCE_SPEEDS as f64 {
+            ck.error(
+                "study.speeds.step",
+                format!(
+                    "{from} to {to} m/s in steps of {step} m/s are more than \
+                     {MAX_RESONANCE_SPEEDS} speeds; take a larger step"
+                ),
+            );
+        }
+    }
+    let max_frequency = match raw.max_frequency {
+        Some(f) if !(f.is_finite() && f > 0.0) => {
+            ck.error(
+                "study.max_frequency",
+                format!("the acceleration cut-off must be a positive frequency in Hz, got {f}"),
+            );
+            f64::NAN
+        }
+        Some(f) => f,
+        None => acceleration_cutoff(frequencies),
+    };
+    ResonanceCheck {
+        trains,
+        line_speed,
+        speeds,
+        deck: raw.deck.unwrap_or(DeckRaw::Ballasted),
+        max_frequency,
+    }
+}
+
+/// The vehicle of one run: `train` alone at `speed` (m/s), its front axle
+/// entering at t = 0.
+pub fn train_vehicle(train: HslmModel, speed: f64) -> Vehicle {
+    let raw = train.train();
+    let positions = raw.axle_positions();
+    Vehicle::MovingForce(super::resolved::MovingForce {
+        loads: vec![raw.axle_force; positions.len()],
+        axle_spacings: positions.windows(2).map(|w| w[1] - w[0]).collect(),
+        speed,
+        entry_time: 0.0,
+        lateral_position: None,
+    })
+}
