@@ -341,8 +341,14 @@ pub struct MovingForceRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::non_negative_list)]
     pub axle_positions: Option<Vec<f64>>,
-    /// Constant speed: m/s, or with its unit (`100 km/h`).
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
@@ -382,10 +388,16 @@ pub struct OscillatorRaw {
     #[schemars(transform = crate::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub damping: Option<f64>,
-    /// Constant speed: m/s, or with its unit (`100 km/h`). Required unless
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`). Required unless
     /// `dimensionless` is given.
     #[serde(default)]
     pub speed: Option<SpeedRaw>,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]

@@ -79,6 +79,7 @@ impl Dimensionless {
             stiffness,
             damping: 2.0 * self.damping_ratio * (stiffness * sprung_mass).sqrt(),
             speed: 2.0 * self.velocity_ratio * f1 * length,
+            acceleration: 0.0,
             entry_time,
             lateral_position: None,
             dimensionless: Some(*self),
@@ -333,7 +334,40 @@ impl Vehicle {
         }
     }
 
-    /// Constant speed, m/s.
+    /// Constant acceleration, m/s².
+    pub fn acceleration(&self) -> f64 {
+        match self {
+            Vehicle::MovingForce(v) => v.acceleration,
+            Vehicle::Oscillator(v) => v.acceleration,
+            Vehicle::H20Truck(v) => v.acceleration,
+            Vehicle::RailCar(v) => v.acceleration,
+            Vehicle::Train(v) => v.acceleration,
+        }
+    }
+
+    /// How the vehicle travels (speed at t = 0, acceleration, entry time).
+    pub fn motion(&self) -> crate::vehicle::motion::Motion {
+        crate::vehicle::motion::Motion {
+            speed: self.speed(),
+            acceleration: self.acceleration(),
+            entry_time: self.entry_time(),
+        }
+    }
+
+    /// Time at which the last axle leaves a bridge of length `length` (m), s;
+    /// for a vehicle that brakes to a stop before, the time it stops.
+    pub fn exit_time(&self, length: f64) -> f64 {
+        if self.acceleration() == 0.0 {
+            return self.entry_time() + (length + self.length()) / self.speed();
+        }
+        let motion = self.motion();
+        motion
+            .time_at(length + self.length())
+            .or(motion.stop_time())
+            .unwrap_or(f64::INFINITY)
+    }
+
+    /// Speed at t = 0, m/s.
     pub fn speed(&self) -> f64 {
         match self {
             Vehicle::MovingForce(v) => v.speed,
@@ -384,8 +418,11 @@ pub struct MovingForce {
     pub loads: Vec<f64>,
     /// Spacings between consecutive axles, m.
     pub axle_spacings: Vec<f64>,
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the front axle reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position on a plate deck, m.
@@ -396,8 +433,11 @@ pub struct MovingForce {
 /// H20-44 truck.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct H20Truck {
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the front axle reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position of the centre line on a plate deck, m.
@@ -465,8 +505,11 @@ pub struct Oscillator {
     pub stiffness: f64,
     /// Suspension damping, N·s/m.
     pub damping: f64,
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the wheel reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position on a plate deck, m.
