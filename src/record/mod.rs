@@ -1,6 +1,15 @@
 //! The record stage: samples the requested quantities at every step into
 //! preallocated columns, and alongside each bridge displacement the static
 //! response of the same load set crossing (the DAF reference).
+//!
+//! Every step feeds the running extremes ([`extremes`]), so the summary's
+//! maxima, minima and DAFs are exact; only every `every`-th step
+//! (`output.every`) is kept as a sample of the history, and none when the
+//! history is not wanted (a study's runs).
+
+pub mod extremes;
+
+use self::extremes::ColumnExtremes;
 
 use crate::bridge::BridgeError;
 use crate::bridge::hermite::HermiteField;
@@ -154,7 +163,8 @@ pub struct Column {
     pub quantity: Quantity,
     /// Unit of the values.
     pub unit: &'static str,
-    /// Sampled values, one per step (including t = 0).
+    /// Sampled values, one per written step (t = 0 and every `every`-th
+    /// step after it).
     pub values: Vec<f64>,
     /// For bridge displacements: the static crossing response at the same
     /// point, m (positive upward).
@@ -171,6 +181,10 @@ pub struct History {
     pub time: Vec<f64>,
     /// The columns in scenario order.
     pub columns: Vec<Column>,
+    /// Each column's extremes over every step (not only the written ones).
+    pub extremes: Vec<ColumnExtremes>,
+    /// Steps between written samples (1: every step).
+    pub every: usize,
     /// Separation statistics of every wheel with a DOF, under unilateral
     /// contact (empty under permanent contact).
     pub separation: Vec<WheelSeparation>,
@@ -219,6 +233,8 @@ pub struct Recorder<'m> {
     /// Mode values at every wheel this step (wheel-major), for the static
     /// correction; empty when it is off or nothing needs it.
     wheel_modes: Vec<f64>,
+    /// Whether samples are kept at all (else only the extremes).
+    keep: bool,
 }
 
 impl<'m> Recorder<'m> {
@@ -230,6 +246,7 @@ impl<'m> Recorder<'m> {
         // but a history larger than that grows as it is recorded rather than
         // being reserved (and possibly refused by the allocator) up front.
         let capacity = model.steps.saturating_add(1).min(1 << 20);
+        let extremes = vec![ColumnExtremes::default(); records.len()];
         let lead = PositionRef {
             vehicle: 0,
             offset: 0.0,
@@ -385,12 +402,44 @@ impl<'m> Recorder<'m> {
             history: History {
                 time: Vec::with_capacity(capacity),
                 columns,
+                extremes,
+                every: 1,
                 separation,
                 girder_dafs: Vec::new(),
             },
             daf_probes,
             wheel_modes,
+            keep: true,
         })
+    }
+
+    /// Keeps only every `every`-th step's sample (t = 0 first); the extremes
+    /// still see every step.
+    pub fn every(mut self, every: usize) -> Self {
+        let every = every.max(1);
+        self.history.every = every;
+        let capacity = (self.model.steps / every).saturating_add(1).min(1 << 20);
+        self.history.time = Vec::with_capacity(capacity);
+        for c in &mut self.history.columns {
+            c.values = Vec::with_capacity(capacity);
+            c.static_values = c
+                .static_values
+                .as_ref()
+                .map(|_| Vec::with_capacity(capacity));
+        }
+        self
+    }
+
+    /// Keeps no samples at all, only the extremes and statistics (a study's
+    /// run whose history nobody writes).
+    pub fn without_samples(mut self) -> Self {
+        self.keep = false;
+        self.history.time = Vec::new();
+        for c in &mut self.history.columns {
+            c.values = Vec::new();
+            c.static_values = c.static_values.as_ref().map(|_| Vec::new());
+        }
+        self
     }
 
     /// The recorded history.
@@ -418,7 +467,15 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 impl Observer for Recorder<'_> {
     fn observe(&mut self, view: &StepView<'_>) {
-        self.history.time.push(view.time);
+        let sampled = self.keep && view.step.is_multiple_of(self.history.every);
+        if sampled {
+            self.history.time.push(view.time);
+        }
+        // Whether at least one axle is on the deck (the summary's `on_bridge`).
+        let on_deck = view
+            .wheel_positions
+            .iter()
+            .any(|&x| self.model.bridge.is_on(x));
         let dt = self.model.time_step;
         for wheel in &mut self.history.separation {
             let gap = view.contact_gaps[wheel.flat];
@@ -473,7 +530,12 @@ impl Observer for Recorder<'_> {
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
         }
-        for column in &mut self.history.columns {
+        for (column, extremes) in self
+            .history
+            .columns
+            .iter_mut()
+            .zip(&mut self.history.extremes)
+        {
             let value = match &column.probe {
                 Probe::BridgeDisplacement {
                     shape,
@@ -485,7 +547,8 @@ impl Observer for Recorder<'_> {
                     // lane (full stiffness, no modal truncation).
                     let static_w =
                         statics.deflection(view.wheel_positions, &model.static_wheel_loads);
-                    if let Some(s) = column.static_values.as_mut() {
+                    extremes.statics.push(view.step, view.time, static_w);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
                     let modal = dot(shape, view.modal_displacement);
@@ -507,7 +570,13 @@ impl Observer for Recorder<'_> {
                     view.vehicles[*vehicle].acceleration[*dof]
                 }
             };
-            column.values.push(value);
+            extremes.all.push(view.step, view.time, value);
+            if on_deck {
+                extremes.on_bridge.push(view.step, view.time, value);
+            }
+            if sampled {
+                column.values.push(value);
+            }
         }
     }
 }

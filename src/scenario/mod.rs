@@ -16,6 +16,7 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod names;
+mod output;
 mod plausible;
 pub mod rail;
 pub mod raw;

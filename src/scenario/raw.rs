@@ -12,12 +12,14 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 mod limits;
+mod output;
 mod rail;
 mod speed;
 mod study;
 mod surface;
 mod truck;
 pub use self::limits::*;
+pub use self::output::*;
 pub use self::rail::*;
 pub use self::speed::*;
 pub use self::study::*;
@@ -64,6 +66,10 @@ pub struct ScenarioRaw {
     /// span and the contact force of every wheel.
     #[serde(default)]
     pub record: Option<Vec<RecordRaw>>,
+    /// How the recorded history is written: every N-th step or an interval
+    /// in seconds, CSV and/or NPY. Default: every step, CSV.
+    #[serde(default)]
+    pub output: Option<OutputRaw>,
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,

@@ -525,6 +525,7 @@ pub(super) fn resolve(
             record.len() as f64,
         );
     }
+    let output = super::output::resolve_output(raw.output.as_ref(), time_step, ck);
     if study.is_none() {
         let columns: f64 = record
             .iter()
@@ -536,17 +537,21 @@ pub(super) fn resolve(
                 }
             })
             .sum();
-        let path = if raw.record.is_some() {
+        let path = if raw.output.is_some() {
+            "output"
+        } else if raw.record.is_some() {
             "record"
         } else {
             steps_path.as_str()
         };
+        // The rows written: t = 0 and every `every`-th step after it.
+        let rows = (steps / output.every as f64).floor() + 1.0;
         budget.check(
             ck,
             path,
             "output_bytes",
-            "bytes of history.csv (estimated)",
-            budget::history_bytes(steps, columns),
+            "bytes of the history files (estimated; thin them with `output: {every: N}`)",
+            budget::history_bytes(rows, columns, output.format),
         );
         if !ck.diagnostics.is_empty() {
             return None;
@@ -569,6 +574,7 @@ pub(super) fn resolve(
             time_step_selection,
         },
         record,
+        output,
         study,
         limits,
     };

@@ -40,12 +40,32 @@ pub struct Scenario {
     pub solver: Solver,
     /// Recorded quantities.
     pub record: Vec<Record>,
+    /// How the history is written.
+    pub output: Output,
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
     /// Resource budgets; written only when the file raised one.
     #[serde(skip_serializing_if = "Limits::is_default")]
     pub limits: Limits,
+}
+
+/// How the history is written (see the raw format's `output`).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Output {
+    /// Steps between written samples (1: every step).
+    pub every: usize,
+    /// File format of the history.
+    pub format: crate::scenario::raw::HistoryFormat,
+}
+
+impl Default for Output {
+    fn default() -> Self {
+        Self {
+            every: 1,
+            format: crate::scenario::raw::HistoryFormat::Csv,
+        }
+    }
 }
 
 /// Dimensionless groups of an oscillator (see the raw format).
