@@ -246,7 +246,6 @@ impl<'m> Recorder<'m> {
         // but a history larger than that grows as it is recorded rather than
         // being reserved (and possibly refused by the allocator) up front.
         let capacity = model.steps.saturating_add(1).min(1 << 20);
-        let extremes = vec![ColumnExtremes::default(); records.len()];
         let lead = PositionRef {
             vehicle: 0,
             offset: 0.0,
@@ -401,8 +400,9 @@ impl<'m> Recorder<'m> {
             model,
             history: History {
                 time: Vec::with_capacity(capacity),
+                // One per column, however the columns came to be.
+                extremes: vec![ColumnExtremes::default(); columns.len()],
                 columns,
-                extremes,
                 every: 1,
                 separation,
                 girder_dafs: Vec::new(),
