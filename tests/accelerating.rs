@@ -394,3 +394,29 @@ fn stopping_before_the_bridge_is_refused() {
         "{error}"
     );
 }
+
+/// A speed sweep sets each vehicle's speed at t = 0 and keeps its
+/// acceleration and start position: a braking vehicle that the sweep's
+/// slowest speed would stop before the bridge is refused, at `study.speeds`
+/// (10 m/s braking at 1 m/s² covers 50 m, not the 60 m to the entrance);
+/// from 12 m/s (72 m) the sweep is accepted.
+#[test]
+fn a_sweep_too_slow_for_a_braking_vehicle_is_refused() {
+    let sweep = |from: f64| {
+        format!(
+            "name: sweep\n{}vehicles:\n  - type: moving_force\n    loads: [1.0e5]\n    speed: 20\n    \
+             acceleration: -1\n    start_position: -60\n\
+             study:\n  type: speed_sweep\n  speeds: {{from: {from}, to: 20, count: 3}}\n",
+            beam_yaml(0.0)
+        )
+    };
+    let Err(error) = vbi::scenario::load_str(&sweep(10.0), "sweep.yaml") else {
+        panic!("a sweep that stops the vehicle before the bridge was accepted");
+    };
+    let error = error.to_string();
+    assert!(
+        error.contains("sweep.yaml:11:") && error.contains("brakes to a stop before"),
+        "{error}"
+    );
+    assert!(vbi::scenario::load_str(&sweep(12.0), "sweep.yaml").is_ok());
+}
