@@ -204,7 +204,8 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     let model = Model::build(&scenario, bridge)?;
     let mut recorder = Recorder::new(&model, &scenario.record)
         .and_then(|r| r.with_envelopes(scenario.envelopes.as_ref()))
-        .map_err(BuildError::from)?;
+        .map_err(BuildError::from)?
+        .every(scenario.output.every);
     let stats = solve::run(&model, &mut recorder, progress)?;
     let history = recorder.finish();
     let wall_time = start.elapsed().as_secs_f64();
@@ -216,8 +217,9 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     })
 }
 
-/// Writes `summary.json`, `history.csv`, `history.png` and `resolved.yaml`
-/// into `out` (created if needed), each atomically.
+/// Writes `summary.json`, the history (`history.csv` and/or `history.npy`
+/// with `history_columns.txt`, as `output.format` asks), `history.png` and
+/// `resolved.yaml` into `out` (created if needed), each atomically.
 pub fn write_results(out: &Path, scenario: &Scenario, outcome: &Outcome) -> Result<(), RunError> {
     write_results_with(out, scenario, outcome, false)
 }
@@ -233,9 +235,11 @@ pub fn write_results_with(
     let summary =
         serde_json::to_string_pretty(&outcome.summary).expect("summary serialises") + "\n";
     let yaml = resolved_yaml(scenario);
-    report::write_atomic(
-        &out.join("history.csv"),
-        &report::history_csv(&outcome.history),
+    report::history_files::write_history(
+        out,
+        &outcome.history,
+        outcome.model.time_step,
+        scenario.output.format,
     )?;
     report::write_atomic(&out.join("resolved.yaml"), yaml.as_bytes())?;
     if let Some(envelope) = &outcome.history.envelope {

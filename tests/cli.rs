@@ -145,9 +145,15 @@ fn run_writes_summary_history_and_resolved_scenario() {
     let history = std::fs::read_to_string(out_dir.join("history.csv")).expect("history.csv");
     let mut lines = history.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    assert_eq!(header[0], "time");
+    // Every header carries its unit: `time [s]`, `name [unit]`.
+    assert_eq!(header[0], "time [s]");
     for name in &names {
-        assert!(header.contains(name), "{name} not in {header:?}");
+        assert!(
+            header.iter().any(
+                |h| h.strip_prefix(name).is_some_and(|u| u.starts_with(" [")) && h.ends_with(']')
+            ),
+            "{name} with its unit not in {header:?}"
+        );
     }
     let rows: Vec<&str> = lines.collect();
     assert_eq!(rows.len(), steps + 1, "one row per step plus t = 0");

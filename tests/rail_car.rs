@@ -20,6 +20,7 @@ fn preset_car() -> VehicleModel {
     rail_car::build(
         &RailCar {
             speed: 20.0,
+            acceleration: 0.0,
             entry_time: 0.0,
             lateral_position: None,
             parameters: LCP_RAIL_CAR_PRESET,
@@ -191,6 +192,7 @@ fn natural_frequencies_on_rigid_ground_match_closed_forms() {
         let model = rail_car::build(
             &RailCar {
                 speed: 20.0,
+                acceleration: 0.0,
                 entry_time: 0.0,
                 lateral_position: None,
                 parameters: p,

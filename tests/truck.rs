@@ -16,6 +16,7 @@ use vbi::vehicle::h20_44;
 fn preset_truck() -> vbi::vehicle::VehicleModel {
     let truck = H20Truck {
         speed: 20.0,
+        acceleration: 0.0,
         entry_time: 0.0,
         lateral_position: None,
         parameters: H20_44_PRESET,

@@ -1,6 +1,15 @@
 //! The record stage: samples the requested quantities at every step into
 //! preallocated columns, and alongside each bridge displacement the static
 //! response of the same load set crossing (the DAF reference).
+//!
+//! Every step feeds the running extremes ([`extremes`]), so the summary's
+//! maxima, minima and DAFs are exact; only every `every`-th step
+//! (`output.every`) is kept as a sample of the history, and none when the
+//! history is not wanted (a study's runs).
+
+pub mod extremes;
+
+use self::extremes::ColumnExtremes;
 
 pub mod envelope;
 
@@ -212,7 +221,8 @@ pub struct Column {
     pub quantity: Quantity,
     /// Unit of the values.
     pub unit: &'static str,
-    /// Sampled values, one per step (including t = 0).
+    /// Sampled values, one per written step (t = 0 and every `every`-th
+    /// step after it).
     pub values: Vec<f64>,
     /// For bridge displacements: the static crossing response at the same
     /// point, m (positive upward).
@@ -244,6 +254,10 @@ pub struct History {
     pub time: Vec<f64>,
     /// The columns in scenario order.
     pub columns: Vec<Column>,
+    /// Each column's extremes over every step (not only the written ones).
+    pub extremes: Vec<ColumnExtremes>,
+    /// Steps between written samples (1: every step).
+    pub every: usize,
     /// Separation statistics of every wheel with a DOF, under unilateral
     /// contact (empty under permanent contact).
     pub separation: Vec<WheelSeparation>,
@@ -299,6 +313,8 @@ pub struct Recorder<'m> {
     /// The wheels on the deck this step (indices): only they load it, so
     /// the static parts sum over them alone.
     on_deck: Vec<usize>,
+    /// Whether samples are kept at all (else only the extremes).
+    keep: bool,
 }
 
 impl<'m> Recorder<'m> {
@@ -472,7 +488,10 @@ impl<'m> Recorder<'m> {
             model,
             history: History {
                 time: Vec::with_capacity(capacity),
+                // One per column, however the columns came to be.
+                extremes: vec![ColumnExtremes::default(); columns.len()],
                 columns,
+                every: 1,
                 separation,
                 girder_dafs: Vec::new(),
                 envelope: None,
@@ -481,6 +500,7 @@ impl<'m> Recorder<'m> {
             wheel_modes,
             envelope: None,
             on_deck: Vec::with_capacity(model.wheels.len()),
+            keep: true,
         })
     }
 
@@ -500,6 +520,35 @@ impl<'m> Recorder<'m> {
         }
         self.envelope = Some(tracker);
         Ok(self)
+    }
+
+    /// Keeps only every `every`-th step's sample (t = 0 first); the extremes
+    /// still see every step.
+    pub fn every(mut self, every: usize) -> Self {
+        let every = every.max(1);
+        self.history.every = every;
+        let capacity = (self.model.steps / every).saturating_add(1).min(1 << 20);
+        self.history.time = Vec::with_capacity(capacity);
+        for c in &mut self.history.columns {
+            c.values = Vec::with_capacity(capacity);
+            c.static_values = c
+                .static_values
+                .as_ref()
+                .map(|_| Vec::with_capacity(capacity));
+        }
+        self
+    }
+
+    /// Keeps no samples at all, only the extremes and statistics (a study's
+    /// run whose history nobody writes).
+    pub fn without_samples(mut self) -> Self {
+        self.keep = false;
+        self.history.time = Vec::new();
+        for c in &mut self.history.columns {
+            c.values = Vec::new();
+            c.static_values = c.static_values.as_ref().map(|_| Vec::new());
+        }
+        self
     }
 
     /// The recorded history.
@@ -588,7 +637,15 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 impl Observer for Recorder<'_> {
     fn observe(&mut self, view: &StepView<'_>) {
-        self.history.time.push(view.time);
+        let sampled = self.keep && view.step.is_multiple_of(self.history.every);
+        if sampled {
+            self.history.time.push(view.time);
+        }
+        // Whether at least one axle is on the deck (the summary's `on_bridge`).
+        let any_on_deck = view
+            .wheel_positions
+            .iter()
+            .any(|&x| self.model.bridge.is_on(x));
         let dt = self.model.time_step;
         for wheel in &mut self.history.separation {
             let gap = view.contact_gaps[wheel.flat];
@@ -656,7 +713,12 @@ impl Observer for Recorder<'_> {
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
         }
-        for column in &mut self.history.columns {
+        for (column, extremes) in self
+            .history
+            .columns
+            .iter_mut()
+            .zip(&mut self.history.extremes)
+        {
             let value = match &column.probe {
                 Probe::BridgeDisplacement {
                     shape,
@@ -671,7 +733,8 @@ impl Observer for Recorder<'_> {
                         &model.static_wheel_loads,
                         on_deck,
                     );
-                    if let Some(s) = column.static_values.as_mut() {
+                    extremes.statics.push(view.step, view.time, static_w);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
                     corrected_displacement(
@@ -717,7 +780,13 @@ impl Observer for Recorder<'_> {
                     value + column.ground_static * acceleration + own
                 }
             };
-            column.values.push(value);
+            extremes.all.push(view.step, view.time, value);
+            if any_on_deck {
+                extremes.on_bridge.push(view.step, view.time, value);
+            }
+            if sampled {
+                column.values.push(value);
+            }
         }
     }
 }

@@ -12,12 +12,25 @@ use crate::scenario::resolved::{Quantity, Scenario, Study};
 /// is most often a km/h value typed where m/s is meant.
 pub const IMPLAUSIBLE_SPEED: f64 = 130.0;
 
+/// Largest plausible |acceleration| along the path, m/s²: a road vehicle's
+/// emergency braking on dry asphalt reaches about 1 g; trains brake at
+/// 1–1.5 m/s² (service) to about 2.5 m/s² (emergency with track brakes).
+pub const IMPLAUSIBLE_ACCELERATION: f64 = 10.0;
+
 /// Warnings about the scene itself, before it runs.
 pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
     let mut out = Vec::new();
     for (i, vehicle) in scenario.vehicles.iter().enumerate() {
         if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed()) {
             out.push(w);
+        }
+        let a = vehicle.acceleration();
+        if a.abs() > IMPLAUSIBLE_ACCELERATION {
+            out.push(format!(
+                "vehicle {}: an acceleration of {a} m/s² is more than a vehicle on wheels \
+                 reaches ({IMPLAUSIBLE_ACCELERATION} m/s², about 1 g of braking); accelerations are in m/s²",
+                i + 1
+            ));
         }
     }
     if let Some(Study::SpeedSweep(sweep)) = &scenario.study

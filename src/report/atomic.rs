@@ -44,6 +44,41 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     written
 }
 
+/// Writes what `write` produces to `path` atomically, streamed through a
+/// buffer into the temporary file (nothing is assembled in memory); the
+/// same guarantees as [`write_atomic`].
+pub fn write_atomic_with(
+    path: &Path,
+    write: &dyn Fn(&mut dyn Write) -> io::Result<()>,
+) -> io::Result<()> {
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let file_name = path.file_name().ok_or_else(|| {
+        io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("'{}' names no file", path.display()),
+        )
+    })?;
+    let tmp_name = super::partial_name(
+        &file_name.to_string_lossy(),
+        &format!("-s{}", COUNTER.fetch_add(1, Ordering::Relaxed)),
+    );
+    let tmp = path.with_file_name(tmp_name);
+    let file = File::create_new(&tmp)?;
+    let mut buffered = io::BufWriter::with_capacity(1 << 16, file);
+    let written = write(&mut buffered)
+        .and_then(|()| {
+            buffered
+                .into_inner()
+                .map_err(io::IntoInnerError::into_error)
+        })
+        .and_then(|file| file.sync_all())
+        .and_then(|()| fs::rename(&tmp, path));
+    if written.is_err() {
+        let _ = fs::remove_file(&tmp);
+    }
+    written
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -44,8 +44,13 @@ pub fn bridge_markers(scenario: &Scenario) -> Vec<Marker> {
                     label: format!("{who}enters"),
                 },
                 Marker {
-                    x: entry + (length + v.length()) / v.speed(),
-                    label: format!("{who}leaves"),
+                    x: v.exit_time(length),
+                    // A braking vehicle may stop on the bridge instead.
+                    label: if v.motion().time_at(length + v.length()).is_some() {
+                        format!("{who}leaves")
+                    } else {
+                        format!("{who}stops")
+                    },
                 },
             ]
         })

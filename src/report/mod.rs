@@ -3,6 +3,7 @@
 
 pub mod advice;
 pub mod atomic;
+pub mod history_files;
 pub mod history_plot;
 pub mod plot;
 pub mod summary;
@@ -84,48 +85,12 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {
     })
 }
 
-/// The time history as CSV: `time` then one column per recorded quantity
-/// (`name`), and `name_static` after each bridge displacement. Values in SI
-/// units, shortest round-trip formatting (ryu), so a reader gets the exact f64.
-pub fn history_csv(history: &History) -> Vec<u8> {
-    let width = 1 + history
-        .columns
-        .iter()
-        .map(|c| 1 + usize::from(c.static_values.is_some()))
-        .sum::<usize>();
-    let mut out = csv::Writer::from_writer(Vec::with_capacity(
-        // An estimate, capped: the buffer grows if it needs more.
-        history
-            .time
-            .len()
-            .saturating_mul(width)
-            .saturating_mul(20)
-            .min(1 << 26),
-    ));
-    let mut header = vec!["time".to_string()];
-    for c in &history.columns {
-        header.push(c.name.clone());
-        if c.static_values.is_some() {
-            header.push(format!("{}_static", c.name));
-        }
-    }
-    out.write_record(&header).expect("writing to memory");
-    let mut buffer = ryu::Buffer::new();
-    let mut field = |out: &mut csv::Writer<Vec<u8>>, x: f64| {
-        let text = if x == 0.0 { "0" } else { buffer.format(x) };
-        out.write_field(text).expect("writing to memory");
-    };
-    for (i, &t) in history.time.iter().enumerate() {
-        field(&mut out, t);
-        for c in &history.columns {
-            field(&mut out, c.values[i]);
-            if let Some(s) = &c.static_values {
-                field(&mut out, s[i]);
-            }
-        }
-        out.write_record(None::<&[u8]>).expect("writing to memory");
-    }
-    out.into_inner().expect("writing to memory")
+/// The time history as CSV text (see [`history_files::write_csv`]), Δt
+/// `time_step` s.
+pub fn history_csv(history: &History, time_step: f64) -> Vec<u8> {
+    let mut out = Vec::new();
+    history_files::write_csv(&mut out, history, time_step).expect("writing to memory");
+    out
 }
 
 /// Shortest round-trip text of `x`: plain notation for moderate magnitudes,

@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use crate::model::Model;
+use crate::record::extremes::{Running, Sample};
 use crate::record::{Column, GirderDaf, History, WheelSeparation};
 use crate::scenario::resolved::{Quantity, SolverMethod};
 use crate::solve::SolveStats;
@@ -158,57 +159,24 @@ static loads on level ground (moving-force loads, or the vehicle's static contac
 along its own line across the deck, deflection from the whole Ritz stiffness via influence lines \
 (no inertia, no modal truncation), at the same point and times";
 
-/// Extremes of `values` over the samples where `mask` is true; `None` if it
-/// is true nowhere.
-fn masked_extremes(
-    model: &Model,
-    column: &Column,
-    time: &[f64],
-    values: &[f64],
-    mask: &[bool],
-) -> Option<Extremes> {
-    let pick = |better: &dyn Fn(f64, f64) -> bool| {
-        let mut best: Option<usize> = None;
-        for (i, &v) in values.iter().enumerate() {
-            if mask[i] && best.is_none_or(|b| better(v, values[b])) {
-                best = Some(i);
-            }
-        }
-        best.map(|i| extreme_at(model, column, time, values, i))
-    };
-    Some(Extremes {
-        max: pick(&|a, b| a > b)?,
-        min: pick(&|a, b| a < b)?,
-        max_abs: pick(&|a, b| a.abs() > b.abs())?,
-    })
-}
-
-fn extreme(
-    model: &Model,
-    column: &Column,
-    time: &[f64],
-    values: &[f64],
-    pick: impl Fn(f64, f64) -> bool,
-) -> Extreme {
-    let mut best = 0;
-    for (i, &v) in values.iter().enumerate() {
-        if pick(v, values[best]) {
-            best = i;
-        }
-    }
-    extreme_at(model, column, time, values, best)
-}
-
-/// The extreme at sample `i`: its value, time and the reference wheel's
-/// position then.
-fn extreme_at(model: &Model, column: &Column, time: &[f64], values: &[f64], i: usize) -> Extreme {
-    let t = time[i];
+/// The extreme `sample` of `column`: its value, time and the reference
+/// wheel's position then.
+fn extreme_of(model: &Model, column: &Column, sample: Sample) -> Extreme {
     let p = column.position;
     Extreme {
-        value: values[i],
-        time: t,
-        position: model.vehicles[p.vehicle].front_position(t) - p.offset,
+        value: sample.value,
+        time: sample.time,
+        position: model.vehicles[p.vehicle].front_position(sample.time) - p.offset,
     }
+}
+
+/// The three extremes of `running`, `None` if it saw no step.
+fn extremes_of(model: &Model, column: &Column, running: &Running) -> Option<Extremes> {
+    Some(Extremes {
+        max: extreme_of(model, column, running.max?),
+        min: extreme_of(model, column, running.min?),
+        max_abs: extreme_of(model, column, running.max_abs?),
+    })
 }
 
 /// The error the automatic choices aim at: each recorded quantity's
@@ -255,27 +223,22 @@ impl Summary {
         stats: &SolveStats,
         wall_time: f64,
     ) -> Self {
-        // Samples at which at least one axle is on the deck.
-        let on_deck: Vec<bool> = history
-            .time
-            .iter()
-            .map(|&t| {
-                (0..model.wheels.len()).any(|w| model.bridge.is_on(model.wheel_position(w, t)))
-            })
-            .collect();
+        // Every step's extremes, tracked during the run (exact whatever
+        // `output.every` wrote).
         let quantities = history
             .columns
             .iter()
-            .map(|column| {
-                let t = &history.time;
-                let on_bridge = masked_extremes(model, column, t, &column.values, &on_deck);
-                let max = extreme(model, column, t, &column.values, |a, b| a > b);
-                let min = extreme(model, column, t, &column.values, |a, b| a < b);
-                let max_abs = extreme(model, column, t, &column.values, |a, b| a.abs() > b.abs());
+            .zip(&history.extremes)
+            .map(|(column, extremes)| {
+                let all = extremes_of(model, column, &extremes.all)
+                    .expect("every run records t = 0 at least");
+                let (max, min, max_abs) = (all.max, all.min, all.max_abs);
+                let on_bridge = extremes_of(model, column, &extremes.on_bridge);
                 let static_max_abs = column
                     .static_values
                     .as_ref()
-                    .map(|s| extreme(model, column, t, s, |a, b| a.abs() > b.abs()));
+                    .and(extremes.statics.max_abs)
+                    .map(|s| extreme_of(model, column, s));
                 let daf = static_max_abs
                     .as_ref()
                     .filter(|s| s.value != 0.0)

@@ -403,11 +403,17 @@ pub(super) fn steps_cause(
     format!("vehicles[{}].speed", slowest.0)
 }
 
-/// Bytes of `history.csv`: one row per step, a time column and one column
-/// per record (two for a bridge displacement, which also gets its static
-/// part), each at most 24 characters (ryu's longest f64 and a separator).
-pub(super) fn history_bytes(steps: f64, columns: f64) -> f64 {
-    (steps + 1.0) * (columns + 1.0) * 24.0
+/// Bytes of the history files for `rows` written rows: a time column and
+/// one column per record (two for a bridge displacement, which also gets its
+/// static part); in CSV each value at most 24 characters (ryu's longest f64
+/// and a separator), in NPY 8 bytes.
+pub(super) fn history_bytes(
+    rows: f64,
+    columns: f64,
+    format: crate::scenario::raw::HistoryFormat,
+) -> f64 {
+    let per_value = if format.csv() { 24.0 } else { 0.0 } + if format.npy() { 8.0 } else { 0.0 };
+    rows * (columns + 1.0) * per_value
 }
 
 #[cfg(test)]

@@ -142,7 +142,12 @@ pub fn excitations(
     for (i, vehicle) in vehicles.iter().enumerate() {
         let n = i + 1;
         let model = VehicleModel::build(vehicle, gravity);
-        let v = vehicle.speed();
+        // An accelerating vehicle excites at its fastest on the bridge: the
+        // larger of its speed at t = 0 and at its exit (or stop).
+        let length: f64 = spans.iter().sum();
+        let v = vehicle
+            .motion()
+            .top_speed(vehicle.exit_time(length).min(f64::MAX));
         let shortest = spans.iter().copied().fold(f64::INFINITY, f64::min);
         out.push(Excitation {
             source: format!("vehicle {n} crossing the shortest span (v / 2L)"),

@@ -114,8 +114,15 @@ pub(super) fn derive_dimensionless(
             derived.speed,
             "speed",
         );
-        derived.entry_time =
-            super::resolve::entry_time(ck, &at, derived.speed, o.entry_time, o.start_position);
+        derived.acceleration = super::resolve::check_acceleration(ck, &at, o.acceleration);
+        derived.entry_time = super::resolve::entry_time(
+            ck,
+            &at,
+            derived.speed,
+            derived.acceleration,
+            o.entry_time,
+            o.start_position,
+        );
         derived.lateral_position = vehicle.lateral_position();
         *vehicle = Vehicle::Oscillator(derived);
     }

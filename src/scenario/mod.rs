@@ -18,6 +18,7 @@ pub mod diagnostic;
 pub mod envelopes;
 mod ground;
 pub mod names;
+mod output;
 mod plausible;
 pub mod rail;
 pub mod raw;

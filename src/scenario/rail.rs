@@ -3,7 +3,7 @@
 
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
 use super::raw;
-use super::resolve::{Checker, check_speed, entry_time, lateral};
+use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
 use super::resolved::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
 use crate::vehicle::rail_car::wheelset_span;
 
@@ -126,7 +126,15 @@ pub(super) fn resolve_rail_car(
     );
     Vehicle::RailCar(RailCar {
         speed: v.speed.0,
-        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
+        acceleration: check_acceleration(ck, at, v.acceleration),
+        entry_time: entry_time(
+            ck,
+            at,
+            v.speed.0,
+            v.acceleration.unwrap_or(0.0),
+            v.entry_time,
+            v.start_position,
+        ),
         lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
         parameters: p,
     })
@@ -224,7 +232,15 @@ pub(super) fn resolve_train(
     }
     Vehicle::Train(Train {
         speed: v.speed.0,
-        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
+        acceleration: check_acceleration(ck, at, v.acceleration),
+        entry_time: entry_time(
+            ck,
+            at,
+            v.speed.0,
+            v.acceleration.unwrap_or(0.0),
+            v.entry_time,
+            v.start_position,
+        ),
         lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
         cars,
     })

@@ -15,6 +15,7 @@ mod envelopes;
 mod ground;
 mod hslm;
 mod limits;
+mod output;
 mod rail;
 mod resonance;
 mod speed;
@@ -25,6 +26,7 @@ pub use self::envelopes::*;
 pub use self::ground::*;
 pub use self::hslm::*;
 pub use self::limits::*;
+pub use self::output::*;
 pub use self::rail::*;
 pub use self::resonance::*;
 pub use self::speed::*;
@@ -80,6 +82,10 @@ pub struct ScenarioRaw {
     /// (beams), written to `envelopes.csv`. Default: none.
     #[serde(default)]
     pub envelopes: Option<EnvelopesRaw>,
+    /// How the recorded history is written: every N-th step or an interval
+    /// in seconds, CSV and/or NPY. Default: every step, CSV.
+    #[serde(default)]
+    pub output: Option<OutputRaw>,
     /// A study over many variants of this scene instead of one run.
     #[serde(default)]
     pub study: Option<StudyRaw>,
@@ -360,8 +366,14 @@ pub struct MovingForceRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::non_negative_list)]
     pub axle_positions: Option<Vec<f64>>,
-    /// Constant speed: m/s, or with its unit (`100 km/h`).
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
@@ -401,10 +413,16 @@ pub struct OscillatorRaw {
     #[schemars(transform = crate::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub damping: Option<f64>,
-    /// Constant speed: m/s, or with its unit (`100 km/h`). Required unless
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`). Required unless
     /// `dimensionless` is given.
     #[serde(default)]
     pub speed: Option<SpeedRaw>,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]

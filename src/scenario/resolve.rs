@@ -476,6 +476,26 @@ pub(super) fn resolve(
     if !ck.diagnostics.is_empty() {
         return None;
     }
+    // A braking vehicle started slower may stop before the bridge.
+    let slowest = match &study {
+        Some(Study::SpeedSweep(sweep)) => Some(sweep.speed_range().0),
+        Some(Study::MonteCarlo(mc)) => mc.speed_range().map(|r| r.0),
+        _ => None,
+    };
+    if let Some(speed) = slowest
+        && let Some(i) = super::sweep::stops_before_entry(&vehicles, speed)
+    {
+        ck.error(
+            "study.speeds",
+            format!(
+                "at the study's slowest speed, {speed} m/s, vehicle {} brakes to a stop before \
+                 the bridge (acceleration {} m/s²): start it closer or sweep faster speeds",
+                i + 1,
+                vehicles[i].acceleration()
+            ),
+        );
+        return None;
+    }
 
     // Default step: resolve the highest frequency kept or excited. A speed
     // sweep's step serves its fastest run; its slowest run is the longest.
@@ -484,12 +504,12 @@ pub(super) fn resolve(
     let length = modal.length;
     let shortest_crossing = fast
         .iter()
-        .map(|v| (length + v.length()) / v.speed())
+        .map(|v| v.exit_time(length) - v.entry_time())
         .fold(f64::INFINITY, f64::min);
     let duration = |vehicles: &[Vehicle]| {
         let last_exit = vehicles
             .iter()
-            .map(|v| v.entry_time() + (length + v.length()) / v.speed())
+            .map(|v| v.exit_time(length))
             .fold(0.0, f64::max);
         last_exit + free_vibration
     };
@@ -582,6 +602,7 @@ pub(super) fn resolve(
             record.len() as f64,
         );
     }
+    let output = super::output::resolve_output(raw.output.as_ref(), time_step, ck);
     if study.is_none() {
         let columns: f64 = record
             .iter()
@@ -593,17 +614,21 @@ pub(super) fn resolve(
                 }
             })
             .sum();
-        let path = if raw.record.is_some() {
+        let path = if raw.output.is_some() {
+            "output"
+        } else if raw.record.is_some() {
             "record"
         } else {
             steps_path.as_str()
         };
+        // The rows written: t = 0 and every `every`-th step after it.
+        let rows = (steps / output.every as f64).floor() + 1.0;
         budget.check(
             ck,
             path,
             "output_bytes",
-            "bytes of history.csv (estimated)",
-            budget::history_bytes(steps, columns),
+            "bytes of the history files (estimated; thin them with `output: {every: N}`)",
+            budget::history_bytes(rows, columns, output.format),
         );
         if !ck.diagnostics.is_empty() {
             return None;
@@ -628,6 +653,7 @@ pub(super) fn resolve(
         record,
         ground_motion,
         envelopes,
+        output,
         study,
         limits,
     };
@@ -643,14 +669,24 @@ pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
     }
 }
 
-/// Entry time from `entry_time` / `start_position` (front axle at t = 0).
+/// Entry time from `entry_time` / `start_position` (front axle at t = 0),
+/// for a vehicle at `speed` (m/s, at t = 0) with constant `acceleration`
+/// (m/s²). A braking vehicle must still be moving when it reaches the
+/// entrance: one that stops before gets a located error.
 pub(super) fn entry_time(
     ck: &mut Checker<'_>,
     at: &str,
     speed: f64,
+    acceleration: f64,
     entry_time: Option<f64>,
     start_position: Option<f64>,
 ) -> f64 {
+    let stop = crate::vehicle::motion::Motion {
+        speed,
+        acceleration,
+        entry_time: 0.0,
+    }
+    .stop_time();
     match (entry_time, start_position) {
         (Some(_), Some(_)) => {
             ck.error(
@@ -661,6 +697,15 @@ pub(super) fn entry_time(
         }
         (Some(t), None) => {
             ck.non_negative(&format!("{at}.entry_time"), t, "entry time");
+            if let Some(stop) = stop.filter(|&stop| t >= stop && speed > 0.0) {
+                ck.error(
+                    &format!("{at}.entry_time"),
+                    format!(
+                        "braking at {acceleration} m/s² from {speed} m/s, the vehicle stops at \
+                         t = {stop:.4} s, before its entry time of {t} s"
+                    ),
+                );
+            }
             t
         }
         (None, Some(x)) => {
@@ -670,10 +715,44 @@ pub(super) fn entry_time(
                     format!("the vehicle must start on the approach (start_position ≤ 0), got {x}"),
                 );
             }
-            if speed > 0.0 { -x / speed } else { 0.0 }
+            if speed <= 0.0 || !acceleration.is_finite() {
+                return 0.0;
+            }
+            match crate::vehicle::motion::time_to_cover(speed, acceleration, (-x).max(0.0)) {
+                Some(t) => t,
+                None => {
+                    let reach = speed * speed / (-2.0 * acceleration);
+                    ck.error(
+                        &format!("{at}.acceleration"),
+                        format!(
+                            "braking at {acceleration} m/s² from {speed} m/s, the vehicle stops \
+                             after {reach:.4} m, {:.4} m before the bridge (start_position {x})",
+                            -x - reach
+                        ),
+                    );
+                    0.0
+                }
+            }
         }
         (None, None) => 0.0,
     }
+}
+
+/// Largest |acceleration| accepted, m/s² (ten times what any train or road
+/// vehicle brakes at; beyond it the input is surely a unit mistake).
+pub const MAX_ACCELERATION: f64 = 100.0;
+
+/// Checks a vehicle's acceleration (`None`: 0) and returns it, m/s².
+pub(super) fn check_acceleration(ck: &mut Checker<'_>, at: &str, acceleration: Option<f64>) -> f64 {
+    let a = acceleration.unwrap_or(0.0);
+    if !a.is_finite() || a.abs() > MAX_ACCELERATION {
+        ck.error(
+            &format!("{at}.acceleration"),
+            format!("an acceleration must be a number within ±{MAX_ACCELERATION} m/s², got {a}"),
+        );
+        return 0.0;
+    }
+    a
 }
 
 /// Highest vehicle speed accepted, m/s (beyond any vehicle; keeps the time
@@ -754,11 +833,20 @@ fn resolve_vehicles(
                 for (k, &s) in spacings.iter().enumerate() {
                     ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
                 }
-                let entry = entry_time(ck, &at, v.speed.0, v.entry_time, v.start_position);
+                let acceleration = check_acceleration(ck, &at, v.acceleration);
+                let entry = entry_time(
+                    ck,
+                    &at,
+                    v.speed.0,
+                    acceleration,
+                    v.entry_time,
+                    v.start_position,
+                );
                 out.push(Vehicle::MovingForce(MovingForce {
                     loads: v.loads.clone(),
                     axle_spacings: spacings,
                     speed: v.speed.0,
+                    acceleration,
                     entry_time: entry,
                     lateral_position: lateral(ck, &at, v.lateral_position, width, 0.0),
                 }));
@@ -775,6 +863,7 @@ fn resolve_vehicles(
                         stiffness: 0.0,
                         damping: 0.0,
                         speed: 0.0,
+                        acceleration: 0.0,
                         entry_time: 0.0,
                         lateral_position,
                         dimensionless: None,
@@ -804,13 +893,16 @@ fn resolve_vehicles(
                     "suspension stiffness",
                 );
                 ck.non_negative(&format!("{at}.damping"), damping, "suspension damping");
-                let entry = entry_time(ck, &at, speed, v.entry_time, v.start_position);
+                let acceleration = check_acceleration(ck, &at, v.acceleration);
+                let entry =
+                    entry_time(ck, &at, speed, acceleration, v.entry_time, v.start_position);
                 out.push(Vehicle::Oscillator(Oscillator {
                     sprung_mass: sprung,
                     unsprung_mass: unsprung,
                     stiffness,
                     damping,
                     speed,
+                    acceleration,
                     entry_time: entry,
                     lateral_position,
                     dimensionless: None,

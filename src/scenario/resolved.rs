@@ -48,12 +48,32 @@ pub struct Scenario {
     /// Envelopes along the deck.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub envelopes: Option<Envelopes>,
+    /// How the history is written.
+    pub output: Output,
     /// A study over variants of the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub study: Option<Study>,
     /// Resource budgets; written only when the file raised one.
     #[serde(skip_serializing_if = "Limits::is_default")]
     pub limits: Limits,
+}
+
+/// How the history is written (see the raw format's `output`).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Output {
+    /// Steps between written samples (1: every step).
+    pub every: usize,
+    /// File format of the history.
+    pub format: crate::scenario::raw::HistoryFormat,
+}
+
+impl Default for Output {
+    fn default() -> Self {
+        Self {
+            every: 1,
+            format: crate::scenario::raw::HistoryFormat::Csv,
+        }
+    }
 }
 
 /// Dimensionless groups of an oscillator (see the raw format).
@@ -87,6 +107,7 @@ impl Dimensionless {
             stiffness,
             damping: 2.0 * self.damping_ratio * (stiffness * sprung_mass).sqrt(),
             speed: 2.0 * self.velocity_ratio * f1 * length,
+            acceleration: 0.0,
             entry_time,
             lateral_position: None,
             dimensionless: Some(*self),
@@ -341,7 +362,40 @@ impl Vehicle {
         }
     }
 
-    /// Constant speed, m/s.
+    /// Constant acceleration, m/s².
+    pub fn acceleration(&self) -> f64 {
+        match self {
+            Vehicle::MovingForce(v) => v.acceleration,
+            Vehicle::Oscillator(v) => v.acceleration,
+            Vehicle::H20Truck(v) => v.acceleration,
+            Vehicle::RailCar(v) => v.acceleration,
+            Vehicle::Train(v) => v.acceleration,
+        }
+    }
+
+    /// How the vehicle travels (speed at t = 0, acceleration, entry time).
+    pub fn motion(&self) -> crate::vehicle::motion::Motion {
+        crate::vehicle::motion::Motion {
+            speed: self.speed(),
+            acceleration: self.acceleration(),
+            entry_time: self.entry_time(),
+        }
+    }
+
+    /// Time at which the last axle leaves a bridge of length `length` (m), s;
+    /// for a vehicle that brakes to a stop before, the time it stops.
+    pub fn exit_time(&self, length: f64) -> f64 {
+        if self.acceleration() == 0.0 {
+            return self.entry_time() + (length + self.length()) / self.speed();
+        }
+        let motion = self.motion();
+        motion
+            .time_at(length + self.length())
+            .or(motion.stop_time())
+            .unwrap_or(f64::INFINITY)
+    }
+
+    /// Speed at t = 0, m/s.
     pub fn speed(&self) -> f64 {
         match self {
             Vehicle::MovingForce(v) => v.speed,
@@ -392,8 +446,11 @@ pub struct MovingForce {
     pub loads: Vec<f64>,
     /// Spacings between consecutive axles, m.
     pub axle_spacings: Vec<f64>,
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the front axle reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position on a plate deck, m.
@@ -404,8 +461,11 @@ pub struct MovingForce {
 /// H20-44 truck.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct H20Truck {
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the front axle reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position of the centre line on a plate deck, m.
@@ -473,8 +533,11 @@ pub struct Oscillator {
     pub stiffness: f64,
     /// Suspension damping, N·s/m.
     pub damping: f64,
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the wheel reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position on a plate deck, m.

@@ -118,5 +118,6 @@ pub fn train_vehicle(train: HslmModel, speed: f64) -> Vehicle {
         speed,
         entry_time: 0.0,
         lateral_position: None,
+        acceleration: 0.0,
     })
 }

@@ -14,31 +14,66 @@ use crate::surface::synth::default_terms;
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
 
-/// `vehicles` with every speed set to `speed` (m/s); entry times are kept.
+/// `vehicles` with every speed set to `speed` (m/s); start positions and
+/// accelerations are kept. A vehicle that accelerates or brakes takes
+/// `speed` as its speed at t = 0 and keeps its acceleration, so a sweep of
+/// a braking train sweeps the speed it starts braking from. One that would
+/// stop before the entrance at `speed` keeps its old entry time
+/// ([`stops_before_entry`] refuses such a sweep when resolving).
 pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
-    // Each vehicle keeps its start position x₀ = −v·t_entry (a vehicle placed
-    // before a track's run-in must stay there at every speed), so its entry
-    // time scales with the speed ratio.
-    fn set(vehicle_speed: &mut f64, entry_time: &mut f64, speed: f64) {
+    // Each vehicle keeps its start position x₀ (a vehicle placed before a
+    // track's run-in must stay there at every speed), so its entry time
+    // follows the speed.
+    fn set(vehicle_speed: &mut f64, entry_time: &mut f64, acceleration: f64, speed: f64) {
         if *vehicle_speed > 0.0 && speed > 0.0 {
-            // The start position first, as resolution computes the entry
-            // time from it (t = −x₀ / v), so a point equals the single run.
-            let start = -*entry_time * *vehicle_speed;
-            *entry_time = -start / speed;
+            if acceleration == 0.0 {
+                // The start position first, as resolution computes the
+                // entry time from it (t = −x₀ / v), so a point equals the
+                // single run.
+                let start = -*entry_time * *vehicle_speed;
+                *entry_time = -start / speed;
+            } else {
+                let start = crate::vehicle::motion::Motion {
+                    speed: *vehicle_speed,
+                    acceleration,
+                    entry_time: *entry_time,
+                }
+                .position(0.0);
+                if let Some(t) =
+                    crate::vehicle::motion::time_to_cover(speed, acceleration, (-start).max(0.0))
+                {
+                    *entry_time = t;
+                }
+            }
         }
         *vehicle_speed = speed;
     }
     let mut out = vehicles.to_vec();
     for vehicle in &mut out {
         match vehicle {
-            Vehicle::MovingForce(v) => set(&mut v.speed, &mut v.entry_time, speed),
-            Vehicle::Oscillator(v) => set(&mut v.speed, &mut v.entry_time, speed),
-            Vehicle::H20Truck(v) => set(&mut v.speed, &mut v.entry_time, speed),
-            Vehicle::RailCar(v) => set(&mut v.speed, &mut v.entry_time, speed),
-            Vehicle::Train(v) => set(&mut v.speed, &mut v.entry_time, speed),
+            Vehicle::MovingForce(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
+            Vehicle::Oscillator(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
+            Vehicle::H20Truck(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
+            Vehicle::RailCar(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
+            Vehicle::Train(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
         }
     }
     out
+}
+
+/// Whether every vehicle, started at `speed` (m/s) from its start position
+/// with its own acceleration, reaches the bridge entrance (a braking one may
+/// stop before at a low speed). `Some(vehicle index)` of the first that
+/// does not.
+pub fn stops_before_entry(vehicles: &[Vehicle], speed: f64) -> Option<usize> {
+    vehicles.iter().position(|v| {
+        let a = v.acceleration();
+        if a >= 0.0 {
+            return false;
+        }
+        let start = v.motion().position(0.0);
+        crate::vehicle::motion::time_to_cover(speed, a, (-start).max(0.0)).is_none()
+    })
 }
 
 /// The vehicles of the sweep's fastest and slowest runs (the scene's own

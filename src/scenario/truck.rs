@@ -1,7 +1,7 @@
 //! Resolving the H20-44 truck: the preset and the user's overrides.
 
 use super::raw;
-use super::resolve::{Checker, check_speed, entry_time, lateral};
+use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
 use super::resolved::{H20Truck, H20TruckParameters, Vehicle};
 
 /// The H20-44 preset.
@@ -187,7 +187,15 @@ pub(super) fn resolve_h20(
     let lateral_position = lateral(ck, at, v.lateral_position, width, half_track);
     Vehicle::H20Truck(H20Truck {
         speed: v.speed.0,
-        entry_time: entry_time(ck, at, v.speed.0, v.entry_time, v.start_position),
+        acceleration: check_acceleration(ck, at, v.acceleration),
+        entry_time: entry_time(
+            ck,
+            at,
+            v.speed.0,
+            v.acceleration.unwrap_or(0.0),
+            v.entry_time,
+            v.start_position,
+        ),
         lateral_position,
         parameters: p,
     })

@@ -55,7 +55,8 @@ impl Guard {
             .iter()
             .map(|v| {
                 let mass: f64 = v.mass.diagonal().iter().sum();
-                let rough = v.speed * slope;
+                // The fastest the vehicle goes during the run.
+                let rough = v.motion().top_speed(model.end_time()) * slope;
                 0.5 * mass * (1.0 + rough * rough)
             })
             .sum();

@@ -88,7 +88,7 @@ pub fn run(
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
         step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
-        step_state.begin_step(model, &nm, &mut modal, &wheel_positions, &contact_forces);
+        step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
 
         let mut relaxation = 1.0;
         let mut iterations = 0;

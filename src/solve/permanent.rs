@@ -1,12 +1,16 @@
 //! The permanent-contact step shared by the `coupled` and `iterative`
 //! solvers.
 //!
-//! A wheel at x(t) = v t + x₀ (and fixed transverse position y) on a deck
-//! with deflection w = Σ φᵢ(x, y) qᵢ and roughness r(x) moves with
+//! A wheel at x(t) (and fixed transverse position y) on a deck with
+//! deflection w = Σ φᵢ(x, y) qᵢ and roughness r(x) moves with
 //! u_w = φ·q + r,  u̇_w = φ·q̇ + v(φ′·q + r′),
-//! ü_w = φ·q̈ + 2v φ′·q̇ + v²(φ″·q + r″)   (′ = ∂/∂x along the path),
-//! as in the "traditional permanent contact model" of the LCP separation
-//! paper (Section 2) and Yang & Yau (1997). Within a Newmark step the bridge
+//! ü_w = φ·q̈ + 2v φ′·q̇ + v²(φ″·q + r″) + a(φ′·q + r′)
+//! (′ = ∂/∂x along the path, v = ẋ, a = ẍ), as in the "traditional
+//! permanent contact model" of the LCP separation paper (Section 2) and
+//! Yang & Yau (1997) for constant speed (a = 0); the a-term is the chain
+//! rule's d/dt of v(t) in u̇_w when the vehicle speeds up or brakes
+//! ([`crate::vehicle::motion`]). v and a are taken at t_{n+1}, where the
+//! step's wheel positions are. Within a Newmark step the bridge
 //! gives q = q* − DΦᵀλ (D = diag((1+α)/k̂ᵢ), λ the contact forces,
 //! compression positive), so each wheel's displacement, velocity and
 //! acceleration are affine in λ; each vehicle's condensed wheel rows
@@ -30,8 +34,6 @@ pub struct ContactWheel {
     pub vehicle: usize,
     /// The wheel's DOF in its vehicle.
     pub dof: usize,
-    /// Vehicle speed, m/s.
-    pub speed: f64,
     /// Transverse position on the deck, m.
     pub y: f64,
 }
@@ -49,7 +51,7 @@ pub struct ContactShapes {
     pub scaled: Vec<f64>,
     /// P₁ = a₁φ + vφ′: the velocity row acting on q_{n+1}.
     pub velocity_row: Vec<f64>,
-    /// P₂ = a₀φ + 2va₁φ′ + v²φ″: the acceleration row acting on q_{n+1}.
+    /// P₂ = a₀φ + 2va₁φ′ + v²φ″ + aφ′: the acceleration row acting on q_{n+1}.
     pub acceleration_row: Vec<f64>,
 }
 
@@ -94,6 +96,9 @@ pub struct PermanentContacts {
     /// and curvature r″ (1/m); evaluated once in `begin_step` (a random
     /// profile costs O(terms)) and reused by `finish_step`.
     surface: Vec<(f64, f64, f64)>,
+    /// Each contact's speed (m/s) and acceleration (m/s²) along its path
+    /// this step, at t_{n+1}.
+    path: Vec<(f64, f64)>,
     /// Modal correction −DΦᵀλ work vector.
     correction: Vec<f64>,
     /// Residual (static) flexibility between the contacts this step, m/N,
@@ -122,7 +127,6 @@ impl PermanentContacts {
                         wheel: flat,
                         vehicle: r.vehicle,
                         dof,
-                        speed: vehicle.speed,
                         y: model.wheel_y[flat],
                     });
                     wheel_dofs[r.vehicle].push(dof);
@@ -154,6 +158,7 @@ impl PermanentContacts {
             shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
             base: vec![[0.0; 3]; nc],
             surface: vec![(0.0, 0.0, 0.0); nc],
+            path: vec![(0.0, 0.0); nc],
             correction: vec![0.0; modes],
             residual: if model.bridge.corrects_contacts() {
                 vec![0.0; nc * nc]
@@ -185,7 +190,7 @@ impl PermanentContacts {
         self.contacts.len()
     }
 
-    /// Begins a step at the given wheel positions: the bridge predictor with
+    /// Begins the step to time `t` (s) at the given wheel positions: the bridge predictor with
     /// the moving loads, each contact's shape rows and λ = 0 kinematics, and
     /// each vehicle's condensed wheel rows from its state at tₙ and the
     /// previous contact forces. Cost O(modes·(loads + contacts)) + O(Σ dofᵥ²).
@@ -194,6 +199,7 @@ impl PermanentContacts {
         model: &Model,
         nm: &Newmark,
         modal: &mut ModalStep,
+        t: f64,
         wheel_positions: &[f64],
         contact_forces: &[f64],
     ) {
@@ -212,7 +218,9 @@ impl PermanentContacts {
         );
         for (c, contact) in self.contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
-            let v = contact.speed;
+            let vehicle = &model.vehicles[contact.vehicle];
+            let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
+            self.path[c] = (v, a);
             let s = &mut self.shapes[c];
             bridge.mode_values_slopes_curvatures(
                 x,
@@ -227,6 +235,13 @@ impl PermanentContacts {
                 s.acceleration_row[i] =
                     nm.a0 * s.values[i] + 2.0 * v * nm.a1 * s.slopes[i] + v * v * s.curvatures[i];
             }
+            // The a-terms only where the vehicle accelerates, so a scene at
+            // constant speed computes exactly what it did before.
+            if a != 0.0 {
+                for (row, slope) in s.acceleration_row.iter_mut().zip(&s.slopes) {
+                    *row += a * slope;
+                }
+            }
             let (r, dr, ddr) = model
                 .profile
                 .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
@@ -237,7 +252,8 @@ impl PermanentContacts {
                 dot(&s.acceleration_row, q_star)
                     - dot(&s.values, inertia_history)
                     - 2.0 * v * dot(&s.slopes, damping_history)
-                    + v * v * ddr,
+                    + v * v * ddr
+                    + if a != 0.0 { a * dr } else { 0.0 },
             ];
         }
         if !self.residual.is_empty() {
@@ -336,7 +352,7 @@ impl PermanentContacts {
         let (q, qd, qdd) = (&modal.displacement, &modal.velocity, &modal.acceleration);
         for (c, contact) in self.contacts.iter().enumerate() {
             let s = &self.shapes[c];
-            let v = contact.speed;
+            let (v, a) = self.path[c];
             let (r, dr, ddr) = self.surface[c];
             let (w, wx, wxx) = (dot(&s.values, q), dot(&s.slopes, q), dot(&s.curvatures, q));
             let residual = self.residual_deflection(c, forces);
@@ -345,6 +361,9 @@ impl PermanentContacts {
             state.velocity[contact.dof] = dot(&s.values, qd) + v * (wx + dr);
             state.acceleration[contact.dof] =
                 dot(&s.values, qdd) + 2.0 * v * dot(&s.slopes, qd) + v * v * (wxx + ddr);
+            if a != 0.0 {
+                state.acceleration[contact.dof] += a * (wx + dr);
+            }
             contact_forces[contact.wheel] = forces[c];
         }
         for (state, partition) in self.states.iter_mut().zip(self.partitions.iter_mut()) {

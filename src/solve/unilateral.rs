@@ -535,11 +535,17 @@ pub fn run(
                     &mut landing_slopes,
                     &mut landing_curvatures,
                 );
-                let v = model.vehicles[contact.vehicle].speed;
+                // v and a along the path at t_{n+1}; the a-terms are those
+                // of an accelerating vehicle (see `permanent`).
+                let vehicle = &model.vehicles[contact.vehicle];
+                let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
                 let (_, dr, ddr) = model
                     .profile
                     .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
                 let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
+                if a != 0.0 {
+                    acceleration += a * dr;
+                }
                 for i in 0..modes {
                     let (q, qd, qdd) = (
                         modal.displacement[i],
@@ -550,6 +556,9 @@ pub fn run(
                     acceleration += landing_values[i] * qdd
                         + 2.0 * v * landing_slopes[i] * qd
                         + v * v * landing_curvatures[i] * q;
+                    if a != 0.0 {
+                        acceleration += a * landing_slopes[i] * q;
+                    }
                 }
                 let state = &mut states[contact.vehicle];
                 state.velocity[contact.dof] = velocity;

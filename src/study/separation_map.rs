@@ -118,8 +118,10 @@ fn run_point(
 ) -> Result<MapPoint, RunError> {
     let scenario = point_scenario(base, bridge, velocity_ratio, mass_ratio);
     let model = Model::build(&scenario, bridge.clone())?;
-    let mut recorder =
-        Recorder::new(&model, &scenario.record).map_err(crate::model::BuildError::from)?;
+    // A map writes no run's history: only extremes and statistics are kept.
+    let mut recorder = Recorder::new(&model, &scenario.record)
+        .map_err(crate::model::BuildError::from)?
+        .without_samples();
     solve::run(&model, &mut recorder, &mut |_, _| {})?;
     let history = recorder.finish();
     let Vehicle::Oscillator(o) = &scenario.vehicles[0] else {
@@ -142,11 +144,11 @@ fn run_point(
         episodes: wheel.episodes,
         first_loss_position: wheel.first_loss_position,
         max_gap: wheel.max_gap,
-        min_contact_force: history.columns[0]
-            .values
-            .iter()
-            .copied()
-            .fold(f64::INFINITY, f64::min),
+        // The contact force's smallest value over every step.
+        min_contact_force: history.extremes[0]
+            .all
+            .min
+            .map_or(f64::INFINITY, |m| m.value),
     })
 }
 

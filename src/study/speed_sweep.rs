@@ -171,8 +171,10 @@ fn run_point(
 ) -> Result<SweepPoint, RunError> {
     let scenario = point_scenario(base, bridge, entry, k, speed);
     let model = Model::build(&scenario, bridge.clone())?;
-    let mut recorder =
-        Recorder::new(&model, &scenario.record).map_err(crate::model::BuildError::from)?;
+    // A sweep writes no run's history: only the extremes are kept.
+    let mut recorder = Recorder::new(&model, &scenario.record)
+        .map_err(crate::model::BuildError::from)?
+        .without_samples();
     let stats = solve::run(&model, &mut recorder, &mut |_, _| {})?;
     let history = recorder.finish();
     let summary = Summary::new(&scenario.name, &model, &history, &stats, 0.0);

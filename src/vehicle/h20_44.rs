@@ -158,6 +158,7 @@ pub fn build(v: &H20Truck, gravity: f64) -> VehicleModel {
         blocks: std::iter::once(0..DOFS).collect(),
         wheels,
         speed: v.speed,
+        acceleration: 0.0,
         entry_time: v.entry_time,
         path_y: v.lateral_position.unwrap_or(0.0),
     }

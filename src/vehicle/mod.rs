@@ -7,6 +7,7 @@
 
 pub mod h20_44;
 pub mod hslm;
+pub mod motion;
 pub mod moving_force;
 pub mod oscillator;
 pub mod rail_car;
@@ -74,8 +75,11 @@ pub struct VehicleModel {
     pub blocks: Vec<std::ops::Range<usize>>,
     /// Wheels, front first.
     pub wheels: Vec<Wheel>,
-    /// Constant speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration, m/s² (negative: braking to a stop; see
+    /// [`motion::Motion`]).
+    pub acceleration: f64,
     /// Time the front axle reaches the entrance x = 0, s.
     pub entry_time: f64,
     /// Transverse position y of the vehicle's path line on the deck, m
@@ -86,13 +90,37 @@ pub struct VehicleModel {
 impl VehicleModel {
     /// Builds the model of a resolved vehicle.
     pub fn build(vehicle: &Vehicle, gravity: f64) -> Self {
-        match vehicle {
+        let mut model = match vehicle {
             Vehicle::MovingForce(v) => moving_force::build(v),
             Vehicle::Oscillator(v) => oscillator::build(v, gravity),
             Vehicle::H20Truck(v) => h20_44::build(v, gravity),
             Vehicle::RailCar(v) => rail_car::build(v, gravity),
             Vehicle::Train(v) => rail_car::build_train(v, gravity),
+        };
+        model.acceleration = vehicle.acceleration();
+        model
+    }
+
+    /// How the vehicle travels.
+    #[inline]
+    pub fn motion(&self) -> motion::Motion {
+        motion::Motion {
+            speed: self.speed,
+            acceleration: self.acceleration,
+            entry_time: self.entry_time,
         }
+    }
+
+    /// Speed at time `t`, m/s.
+    #[inline]
+    pub fn speed_at(&self, t: f64) -> f64 {
+        self.motion().speed_at(t)
+    }
+
+    /// Acceleration along the path at time `t`, m/s².
+    #[inline]
+    pub fn acceleration_at(&self, t: f64) -> f64 {
+        self.motion().acceleration_at(t)
     }
 
     /// Number of degrees of freedom.
@@ -103,7 +131,7 @@ impl VehicleModel {
     /// Front-axle position at time `t`, m.
     #[inline]
     pub fn front_position(&self, t: f64) -> f64 {
-        self.speed * (t - self.entry_time)
+        self.motion().position(t)
     }
 
     /// Position of wheel `w` at time `t`, m.
@@ -118,10 +146,18 @@ impl VehicleModel {
         self.path_y + self.wheels[w].lateral
     }
 
-    /// Time at which the last wheel leaves a bridge of length `length`, s.
+    /// Time at which the last wheel leaves a bridge of length `length`, s,
+    /// or, for a vehicle that brakes to a stop first, the time it stops.
     pub fn exit_time(&self, length: f64) -> f64 {
         let rear = self.wheels.iter().map(|w| w.offset).fold(0.0, f64::max);
-        self.entry_time + (length + rear) / self.speed
+        let motion = self.motion();
+        if self.acceleration == 0.0 {
+            return self.entry_time + (length + rear) / self.speed;
+        }
+        motion
+            .time_at(length + rear)
+            .or(motion.stop_time())
+            .unwrap_or(f64::INFINITY)
     }
 
     /// Static equilibrium on level ground: DOF displacements u₀ (m) and the

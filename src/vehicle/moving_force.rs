@@ -33,6 +33,7 @@ pub fn build(v: &MovingForce) -> VehicleModel {
         blocks: Vec::new(),
         wheels,
         speed: v.speed,
+        acceleration: 0.0,
         entry_time: v.entry_time,
         path_y: v.lateral_position.unwrap_or(0.0),
     }

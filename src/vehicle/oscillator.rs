@@ -34,6 +34,7 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
             kind: WheelKind::Dof(1),
         }],
         speed: v.speed,
+        acceleration: 0.0,
         entry_time: v.entry_time,
         path_y: v.lateral_position.unwrap_or(0.0),
     }

@@ -185,6 +185,7 @@ fn assemble(
         blocks: (0..cars.len()).map(|k| DOFS * k..DOFS * (k + 1)).collect(),
         wheels,
         speed,
+        acceleration: 0.0,
         entry_time,
         path_y,
     }

@@ -93,6 +93,8 @@ impl HslmRaw {
             entry_time: self.entry_time,
             start_position: self.start_position,
             lateral_position: self.lateral_position,
+            // The HSLM trains of EN 1991-2 run at constant speeds.
+            acceleration: None,
         }
     }
 }

@@ -7,8 +7,14 @@ use serde::Deserialize;
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RailCarRaw {
-    /// Constant speed: m/s, or with its unit (`300 km/h`).
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`300 km/h`).
     pub speed: super::SpeedRaw,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the front wheelset reaches the bridge entrance, s. Default 0.
     #[serde(default)]
     #[schemars(transform = crate::schema::non_negative)]
@@ -80,8 +86,14 @@ pub struct RailCarParametersRaw {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TrainRaw {
-    /// Constant speed: m/s, or with its unit (`300 km/h`).
+    /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`300 km/h`).
     pub speed: super::SpeedRaw,
+    /// Constant acceleration along the path, m/s² (negative: braking). The
+    /// speed changes from `speed` at t = 0 as v(t) = v₀ + a·t; a braking
+    /// vehicle that comes to a stop stays stopped. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub acceleration: Option<f64>,
     /// Time at which the first car's front wheelset reaches the bridge
     /// entrance, s. Default 0.
     #[serde(default)]

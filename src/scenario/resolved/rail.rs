@@ -5,8 +5,11 @@ use serde::Serialize;
 /// Four-axle rail car (10 DOFs).
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct RailCar {
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the front wheelset reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position of the track's centre line on a plate deck, m.
@@ -46,8 +49,11 @@ pub struct RailCarParameters {
 /// A train of rail cars running together.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Train {
-    /// Speed, m/s.
+    /// Speed at t = 0, m/s.
     pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
     /// Time the first car's front wheelset reaches x = 0, s.
     pub entry_time: f64,
     /// Transverse position of the track's centre line on a plate deck, m.
