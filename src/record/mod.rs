@@ -3,7 +3,7 @@
 //! response of the same load set crossing (the DAF reference).
 
 use crate::bridge::BridgeError;
-use crate::bridge::hermite::HermiteField;
+use crate::bridge::InfluenceLine;
 use crate::model::Model;
 use crate::scenario::resolved::{Quantity, Record};
 use crate::solve::{Observer, StepView};
@@ -46,7 +46,7 @@ enum Probe {
 /// wheel: one line per distinct wheel y, and which one each flattened wheel uses.
 #[derive(Debug, Clone)]
 struct StaticProbe {
-    influences: Vec<HermiteField>,
+    influences: Vec<InfluenceLine>,
     wheel_influence: Vec<usize>,
 }
 

@@ -15,6 +15,7 @@ pub mod de;
 pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
+mod fe_import;
 pub mod names;
 mod plausible;
 pub mod rail;

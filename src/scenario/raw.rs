@@ -11,12 +11,14 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+mod fe_import;
 mod limits;
 mod rail;
 mod speed;
 mod study;
 mod surface;
 mod truck;
+pub use self::fe_import::*;
 pub use self::limits::*;
 pub use self::rail::*;
 pub use self::speed::*;
@@ -90,6 +92,8 @@ pub enum BridgeRaw {
     /// paper's intermodal coupling). y runs across the deck from the edge
     /// y = 0 (the right-hand edge for traffic in +x) to y = width.
     Plate(PlateRaw),
+    /// A finite-element model imported from files (matrices, DOF map, rails).
+    FeImport(FeImportRaw),
 }
 
 /// Plate deck.

@@ -307,7 +307,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
     for (i, span) in bridge.spans().iter().enumerate() {
         let x = Some(start + span / 2.0);
         match bridge {
-            Bridge::Beam(_) => out.push(Record {
+            Bridge::Beam(_) | Bridge::FeImport(_) => out.push(Record {
                 name: format!("span{}_midspan", i + 1),
                 quantity: Quantity::BridgeDisplacement,
                 x,

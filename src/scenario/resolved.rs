@@ -6,9 +6,11 @@
 
 use serde::Serialize;
 
+mod fe_import;
 mod rail;
 mod study;
 mod surface;
+pub use self::fe_import::*;
 pub use self::rail::*;
 pub use self::study::*;
 pub use self::surface::*;
@@ -94,6 +96,8 @@ pub enum Bridge {
     Beam(Beam),
     /// Thin orthotropic plate deck.
     Plate(Plate),
+    /// A finite-element model imported from files.
+    FeImport(FeImport),
 }
 
 impl Bridge {
@@ -107,13 +111,14 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &beam.spans,
             Bridge::Plate(plate) => &plate.spans,
+            Bridge::FeImport(f) => &f.spans,
         }
     }
 
     /// Deck width, m (`None` for a beam, which has no transverse extent).
     pub fn width(&self) -> Option<f64> {
         match self {
-            Bridge::Beam(_) => None,
+            Bridge::Beam(_) | Bridge::FeImport(_) => None,
             Bridge::Plate(plate) => Some(plate.width),
         }
     }
@@ -123,6 +128,7 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &beam.modes,
             Bridge::Plate(plate) => &plate.modes,
+            Bridge::FeImport(f) => &f.modes,
         }
     }
 
@@ -131,6 +137,7 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &mut beam.modes,
             Bridge::Plate(plate) => &mut plate.modes,
+            Bridge::FeImport(f) => &mut f.modes,
         }
     }
 
@@ -139,13 +146,16 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => beam.mass_per_length,
             Bridge::Plate(plate) => plate.mass_per_area * plate.width,
+            // The mass a rigid vertical translation moves, per deck length
+            // (piers and all, when the model has them).
+            Bridge::FeImport(f) => f.model.vertical_mass / f.model.length,
         }
     }
 
     /// Transverse lines on which the summary tabulates DAFs, m (a beam: one line at 0).
     pub fn girder_lines(&self) -> Vec<f64> {
         match self {
-            Bridge::Beam(_) => vec![0.0],
+            Bridge::Beam(_) | Bridge::FeImport(_) => vec![0.0],
             Bridge::Plate(plate) => plate.girder_lines.clone(),
         }
     }
