@@ -347,3 +347,47 @@ fn malformed_files_are_refused_with_their_line() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+/// A record at a node's uz DOF is the record at that node's x along the
+/// rail (node 7 of 12 elements on 20 m sits at x = 10 m), static share and
+/// all, to round-off; a record at a node that has no such DOF is refused.
+#[test]
+fn node_records_equal_track_records_at_the_node() {
+    let scratch = Scratch::new("fe_import", "node_records");
+    let yaml = beam_scene(
+        "[20.0]",
+        OSCILLATOR,
+        "{type: permanent}",
+        "{time_step: 5.0e-4}",
+        "modes: {count: 4}",
+    );
+    let (_, _) = export_and_import(&yaml, scratch.dir());
+    let path = scratch.path("scenario.yaml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let with_node = text.replace(
+        "record:\n",
+        "record:\n  - {name: node7, quantity: bridge_displacement, node: 7, direction: uz}\n  \
+         - {name: node7_acc, quantity: bridge_acceleration, node: 7}\n",
+    );
+    assert_ne!(with_node, text);
+    std::fs::write(&path, &with_node).unwrap();
+    let outcome = run(load_file(&path).unwrap_or_else(|e| panic!("{e}")));
+    for (node, track) in [("node7", "middle"), ("node7_acc", "middle_acc")] {
+        let (a, b) = (
+            support::column(&outcome, node),
+            support::column(&outcome, track),
+        );
+        let peak = max_abs(b);
+        assert!(peak > 0.0);
+        for (x, y) in a.iter().zip(b) {
+            assert!(
+                (x - y).abs() <= 1e-12 * peak,
+                "{node}: {x} against {track}: {y}"
+            );
+        }
+    }
+    let bad = with_node.replace("node: 7, direction: uz", "node: 99, direction: uz");
+    std::fs::write(&path, bad).unwrap();
+    let message = load_file(&path).err().expect("refused").to_string();
+    assert!(message.contains("node 99 has no free uz DOF"), "{message}");
+}

@@ -75,6 +75,15 @@ impl StaticProbe {
         })
     }
 
+    /// The probe of free DOF `dof` of an imported model: one influence line
+    /// along its track, which every wheel uses.
+    fn of_dof(model: &Model, dof: usize) -> Result<Self, BridgeError> {
+        Ok(Self {
+            influences: vec![model.bridge.dof_influence_line(dof)?],
+            wheel_influence: vec![0; model.wheel_y.len()],
+        })
+    }
+
     /// Static deflection at the point, m (upward positive), with every wheel
     /// carrying its static load at `positions`.
     fn deflection(&self, positions: &[f64], loads: &[f64]) -> f64 {
@@ -242,9 +251,30 @@ impl<'m> Recorder<'m> {
                     let x = record.x.unwrap_or(0.0);
                     let y = record.y.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
-                    model.bridge.mode_values(x, y, &mut shape);
+                    // A node's DOF of an imported model (validated when
+                    // resolving), or a point along the track or deck.
+                    let dof = match record.node {
+                        Some(node) => {
+                            let direction = record.direction.unwrap_or_default();
+                            let dof = model
+                                .bridge
+                                .imported_dof(node, direction)
+                                .ok()
+                                .flatten()
+                                .expect("record nodes were validated when resolving");
+                            model.bridge.dof_mode_values(dof, &mut shape);
+                            Some(dof)
+                        }
+                        None => {
+                            model.bridge.mode_values(x, y, &mut shape);
+                            None
+                        }
+                    };
                     if record.quantity == Quantity::BridgeDisplacement {
-                        let statics = StaticProbe::new(model, x, y)?;
+                        let statics = match dof {
+                            Some(dof) => StaticProbe::of_dof(model, dof)?,
+                            None => StaticProbe::new(model, x, y)?,
+                        };
                         let static_shape = static_shape(model, &shape);
                         let probe = Probe::BridgeDisplacement {
                             shape,

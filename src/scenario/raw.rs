@@ -594,6 +594,13 @@ pub struct RecordRaw {
     /// Position along the bridge, m (bridge quantities).
     #[serde(default)]
     pub x: Option<f64>,
+    /// Node of an imported (`fe_import`) bridge, instead of `x`: the
+    /// quantity at that node's DOF `direction`.
+    #[serde(default)]
+    pub node: Option<u64>,
+    /// Direction of the node's DOF (ux, uy, uz, rx, ry, rz). Default uz.
+    #[serde(default)]
+    pub direction: Option<crate::bridge::fe_import::Direction>,
     /// Position across a plate deck, m (bridge quantities on a plate).
     /// Default: the deck's centre line.
     #[serde(default)]

@@ -576,6 +576,12 @@ pub struct Record {
     /// Position along the bridge, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub x: Option<f64>,
+    /// Node of an imported bridge (instead of `x`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub node: Option<u64>,
+    /// Direction of the node's DOF.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub direction: Option<crate::bridge::fe_import::Direction>,
     /// Position across a plate deck, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub y: Option<f64>,

@@ -26,7 +26,18 @@ use self::track::RailDofs;
 
 /// A displacement or rotation direction of a node.
 #[derive(
-    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize, JsonSchema,
+    Debug,
+    Clone,
+    Copy,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    PartialOrd,
+    Ord,
+    Serialize,
+    Deserialize,
+    JsonSchema,
 )]
 #[serde(rename_all = "snake_case")]
 pub enum Direction {
@@ -35,6 +46,7 @@ pub enum Direction {
     /// Lateral, m.
     Uy,
     /// Vertical, up, m.
+    #[default]
     Uz,
     /// Rotation about x, rad.
     Rx,
