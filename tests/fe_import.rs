@@ -15,7 +15,7 @@ mod support;
 use std::path::Path;
 
 use support::{Scratch, max_abs};
-use vbi::bridge::fe_import::{Direction, abaqus};
+use vbi::bridge::fe_import::{Direction, abaqus, harwell_boeing};
 use vbi::run::{Outcome, simulate};
 use vbi::scenario::{Loaded, load_file, load_str};
 
@@ -173,9 +173,10 @@ fn exported_beam_runs_the_truck_permanent_and_lcp() {
 
 /// A tiny model (a 4-element simply supported beam, L = 8 m) written in
 /// every format: Matrix Market symmetric (the export's), Matrix Market
-/// general (both triangles written out here), and Abaqus coordinate
-/// output (written by `abaqus::write_symmetric` from the same entries).
-/// All three give the same frequencies to 1e-12.
+/// general (both triangles written out here), Abaqus coordinate output and
+/// Harwell–Boeing RSA with an ANSYS-style mapping file (written by
+/// `abaqus::write_symmetric` and `harwell_boeing::write_symmetric` from the
+/// same entries). All give the same frequencies to 1e-12.
 #[test]
 fn every_format_reads_the_same_model() {
     let scratch = Scratch::new("fe_import", "formats");
@@ -241,6 +242,18 @@ vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e4]}]
             abaqus::write_symmetric(&dofs, &lower),
         )
         .unwrap();
+        std::fs::write(
+            dir.join(format!("{name}.hb")),
+            harwell_boeing::write_symmetric(size[0], &lower, "vbi test"),
+        )
+        .unwrap();
+        // ANSYS's mapping file: equation, node, DOF label.
+        let mut mapping = String::from(" Matrix Eqn   Node   DOF\n");
+        for (i, (node, d)) in dofs.iter().enumerate() {
+            let label = if *d == Direction::Uz { "UZ" } else { "ROTY" };
+            mapping.push_str(&format!("{:>8}{:>8}{:>8}\n", i + 1, node, label));
+        }
+        std::fs::write(dir.join("hb.mapping"), mapping).unwrap();
     }
     let general = scenario
         .replace("\"K.mtx\"", "\"K-general.mtx\"")
@@ -249,8 +262,17 @@ vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e4]}]
         .replace("\"K.mtx\"", "\"K.abq\"")
         .replace("\"M.mtx\"", "\"M.abq\"")
         .replace("  dof_map: \"dofs.csv\"\n", "");
+    let hb = scenario
+        .replace("\"K.mtx\"", "\"K.hb\"")
+        .replace("\"M.mtx\"", "\"M.hb\"")
+        .replace("\"dofs.csv\"", "\"hb.mapping\"");
     assert_ne!(abaqus, scenario);
-    for (name, text) in [("general.yaml", general), ("abaqus.yaml", abaqus)] {
+    assert_ne!(hb, scenario);
+    for (name, text) in [
+        ("general.yaml", general),
+        ("abaqus.yaml", abaqus),
+        ("hb.yaml", hb),
+    ] {
         std::fs::write(dir.join(name), text).unwrap();
         let loaded = load_file(&dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         for (a, b) in reference.iter().zip(loaded.bridge.frequencies()) {
@@ -390,4 +412,39 @@ fn node_records_equal_track_records_at_the_node() {
     std::fs::write(&path, bad).unwrap();
     let message = load_file(&path).err().expect("refused").to_string();
     assert!(message.contains("node 99 has no free uz DOF"), "{message}");
+}
+
+/// A Harwell–Boeing file typed by hand in fixed-width Fortran fields, the
+/// values touching (`(3E10.3)`: ` 2.000E+06-1.000E+06 2.000E+06`), with an
+/// ANSYS mapping file: the two-DOF model of `the_good_two_dof_model_loads`,
+/// ω² = 10⁴ s⁻² for its first mode.
+#[test]
+fn a_fixed_width_harwell_boeing_file_with_a_mapping_reads() {
+    let hb = "two DOFs                                                                KEY     
+             3             1             1             1             0
+RSA                        2             2             3             0
+(3I8)           (3I8)           (3E10.3)            
+       1       3       4
+       1       2       2
+ 2.000E+06-1.000E+06 2.000E+06
+";
+    let mapping = " Matrix Eqn   Node   DOF\n       1       1      UZ\n       2       2      UZ\n";
+    let loaded = load_model("hb", &[("K.mtx", hb), ("dofs.csv", mapping)], "")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let f = loaded.bridge.frequencies();
+    let expected = 1e4f64.sqrt() / (2.0 * std::f64::consts::PI);
+    assert!((f[0] - expected).abs() <= 1e-12 * expected, "{f:?}");
+    // The same file cut short, and with an index out of range.
+    let short = &hb[..hb.len() - 12];
+    let message = refused("hb_short", &[("K.mtx", short)], "");
+    assert!(
+        message.contains("K.mtx:7: the file ends after 2 of the 3 values"),
+        "{message}"
+    );
+    let range = hb.replace("       1       2       2\n", "       1       2       5\n");
+    let message = refused("hb_range", &[("K.mtx", &range)], "");
+    assert!(
+        message.contains("K.mtx:6:17: row index 5 is outside 1 … 2"),
+        "{message}"
+    );
 }

@@ -12,7 +12,8 @@ use super::raw;
 use super::resolve::Checker;
 use super::resolved::*;
 use crate::bridge::fe_import::{
-    Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, matrix_market, tables,
+    Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market,
+    tables,
 };
 
 /// Fewest bytes a matrix entry line takes (`1 1 1` and a line break is 6;
@@ -172,12 +173,18 @@ pub(super) fn resolve(
         Some(path) => {
             let shown = path.display().to_string();
             let text = read_text(path, "bridge.dof_map", budget, ck)?;
-            Some(located(
-                tables::dof_map(&text, stiffness.order),
-                &shown,
-                "bridge.dof_map",
-                ck,
-            )?)
+            // A CSV with its header, or ANSYS's `.mapping` file.
+            let csv = text
+                .lines()
+                .map(str::trim)
+                .find(|l| !l.is_empty() && !l.starts_with('#'))
+                .is_some_and(|l| l.to_ascii_lowercase().replace(' ', "").starts_with("dof,"));
+            let read = if csv {
+                tables::dof_map(&text, stiffness.order)
+            } else {
+                harwell_boeing::mapping(&text, stiffness.order)
+            };
+            Some(located(read, &shown, "bridge.dof_map", ck)?)
         }
         None => None,
     };
@@ -279,7 +286,8 @@ fn read_text(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Op
     Some(text)
 }
 
-/// Reads a matrix file, Matrix Market or Abaqus by its first line.
+/// Reads a matrix file: Matrix Market by its banner, Abaqus by its comma
+/// separated entry lines, Harwell–Boeing otherwise.
 fn read_matrix(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<MatrixFile> {
     let text = read_text(path, at, budget, ck)?;
     let shown = path.display().to_string();
@@ -308,8 +316,21 @@ fn read_matrix(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> 
             Ok(())
         };
         matrix_market::parse(&text, &mut sizes)
-    } else {
+    } else if looks_like_abaqus(&text) {
         abaqus::parse(&text)
+    } else {
+        let mut sizes = |rows: u64, entries: u64| -> Result<(), String> {
+            // Harwell–Boeing writes an index and a value per entry, 2 bytes at least.
+            if entries as f64 > bytes / 2.0 || rows as f64 > dofs_limit {
+                return Err(format!(
+                    "the header declares {rows} rows and {entries} entries: more than the file's \
+                     {bytes} bytes can hold, or than the {dofs_limit} DOFs `limits.dofs` allows \
+                     an imported model (50 DOFs a unit)"
+                ));
+            }
+            Ok(())
+        };
+        harwell_boeing::parse(&text, &mut sizes)
     };
     let file = located(result, &shown, at, ck)?;
     if file.order as f64 > dofs_limit {
@@ -324,6 +345,16 @@ fn read_matrix(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> 
         return None;
     }
     Some(file)
+}
+
+/// Whether `text` is Abaqus coordinate output: its first line that is not
+/// blank or a `*` keyword has 5 comma-separated fields (a Harwell–Boeing
+/// file starts with a free title and a line of 5 fixed-width integers).
+fn looks_like_abaqus(text: &str) -> bool {
+    text.lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('*'))
+        .is_some_and(|l| l.split(',').count() == 5)
 }
 
 /// The most DOFs of an imported model the budget allows.

@@ -11,6 +11,7 @@
 //! units (K in N/m and N·m/rad, M in kg and kg·m², C in N·s/m).
 
 pub mod abaqus;
+pub mod harwell_boeing;
 pub mod matrix_market;
 pub mod modal;
 pub mod tables;
