@@ -11,10 +11,13 @@ use std::collections::BTreeMap;
 
 use super::{Direction, MatrixFile, ReadError};
 
+/// A (node, Abaqus DOF number) key.
+type Key = (u64, u8);
+
 /// Parses an Abaqus coordinate matrix.
 pub fn parse(text: &str) -> Result<MatrixFile, ReadError> {
-    let mut raw: Vec<((u64, u8), (u64, u8), f64)> = Vec::new();
-    let mut keys: BTreeMap<(u64, u8), usize> = BTreeMap::new();
+    let mut raw: Vec<(Key, Key, f64)> = Vec::new();
+    let mut keys: BTreeMap<Key, usize> = BTreeMap::new();
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         let trimmed = line.trim();
