@@ -75,7 +75,7 @@ fn automatic_choices_meet_the_stated_tolerance_on_every_shipped_scene() {
         }
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
         let text = automatic(&text);
-        let loaded = scenario::load_str(&text, &name)
+        let loaded = scenario::load_str(&text, &file.to_string_lossy())
             .unwrap_or_else(|e| panic!("{name} without its settings: {e}"));
         assert!(
             loaded.bridge.selection.starts_with("automatic"),

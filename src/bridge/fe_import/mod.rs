@@ -335,6 +335,9 @@ impl ImportedModel {
                 );
             }
         }
+        if let Some(short) = rails.iter().position(|r| r.1.len() < 2) {
+            return fail(Source::Rail(short), "a rail needs at least two nodes");
+        }
         // Rails: every node in the map with uz; deck coordinates from the
         // first node of any rail.
         let origin = rails.iter().map(|r| r.1[0].1).fold(f64::INFINITY, f64::min);
