@@ -9,6 +9,7 @@
 #![warn(missing_docs)]
 
 pub mod bridge;
+pub mod export;
 pub mod ground;
 pub mod model;
 pub mod record;

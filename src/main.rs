@@ -79,6 +79,19 @@ enum Command {
     },
     /// Print the JSON Schema of the scenario format.
     Schema,
+    /// Write a scene's bridge as an imported FE model: `vbi export beam
+    /// SCENE --out DIR` writes K.mtx, M.mtx (Matrix Market), dofs.csv,
+    /// rail.csv and scenario.yaml (the same crossing on those files).
+    Export {
+        /// What to export: `beam` (a `type: beam` bridge).
+        #[arg(value_parser = ["beam"])]
+        what: String,
+        /// The scenario file.
+        file: PathBuf,
+        /// Output folder.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Natural frequencies (and, with --shapes, mode shapes) of a scene's bridge.
     Modes {
         /// The scenario file.
@@ -190,6 +203,23 @@ fn main() -> ExitCode {
             out!("{}", vbi::schema::schema_json());
             ExitCode::SUCCESS
         }
+        Command::Export { what: _, file, out } => match load(&file) {
+            Ok(loaded) => match vbi::export::export_beam(&loaded.scenario, &out) {
+                Ok(()) => {
+                    errln!("wrote {}", out.join("scenario.yaml").display());
+                    ExitCode::SUCCESS
+                }
+                Err(e @ vbi::export::ExportError::NotABeam) => {
+                    errln!("error: {}: {e}", file.display());
+                    ExitCode::from(EXIT_INVALID)
+                }
+                Err(e) => {
+                    errln!("error: {e}");
+                    ExitCode::from(EXIT_FAILED)
+                }
+            },
+            Err(e) => load_error(&e),
+        },
         Command::Modes { file, shapes, json } => modes(&file, shapes.as_deref(), json),
         Command::Converge {
             file,

@@ -70,7 +70,7 @@ const CASES: &[Case] = &[
         "unknown-bridge-type.yaml",
         4,
         Some(9),
-        "unknown variant `truss`, expected `beam`",
+        "unknown variant `truss`, expected one of `beam`, `plate`, `fe_import`",
     ),
     case(
         "list-not-mapping.yaml",

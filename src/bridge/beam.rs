@@ -28,6 +28,8 @@ pub struct BeamModel {
     pub pencil: Pencil,
     /// Bending stiffness EI, N·m².
     pub bending_stiffness: f64,
+    /// Mass per length, kg/m.
+    pub mass_per_length: f64,
 }
 
 impl BeamModel {
@@ -87,6 +89,7 @@ impl BeamModel {
             free_index,
             pencil,
             bending_stiffness: ei,
+            mass_per_length: m,
         })
     }
 
@@ -314,4 +317,35 @@ fn element_mass(m: f64, h: f64) -> [[f64; 4]; 4] {
         [54.0 * c, 13.0 * h * c, 156.0 * c, -22.0 * h * c],
         [-13.0 * h * c, -3.0 * h2 * c, -22.0 * h * c, 4.0 * h2 * c],
     ]
+}
+
+/// The beam's assembled matrices on every DOF (supports not removed), for
+/// export: node positions (m), and the lower triangles of K and M on the
+/// DOFs (w, θ) of node 0, 1, … (row 2n is node n's w, 2n + 1 its θ),
+/// duplicates summed, sorted by (row, column).
+pub type FullMatrices = (Vec<f64>, Vec<(usize, usize, f64)>, Vec<(usize, usize, f64)>);
+
+impl BeamModel {
+    /// [`FullMatrices`] of the beam. Cost O(elements).
+    pub fn full_matrices(&self) -> FullMatrices {
+        use std::collections::BTreeMap;
+        let mut k: BTreeMap<(usize, usize), f64> = BTreeMap::new();
+        let mut m: BTreeMap<(usize, usize), f64> = BTreeMap::new();
+        for e in 0..self.node_x.len() - 1 {
+            let h = self.node_x[e + 1] - self.node_x[e];
+            let ke = element_stiffness(self.bending_stiffness, h);
+            let me = element_mass(self.mass_per_length, h);
+            for a in 0..4 {
+                for b in 0..=a {
+                    // Dofs of an element are ascending, so a ≥ b is the lower triangle.
+                    let key = (2 * e + a, 2 * e + b);
+                    *k.entry(key).or_insert(0.0) += ke[a][b];
+                    *m.entry(key).or_insert(0.0) += me[a][b];
+                }
+            }
+        }
+        let flat =
+            |t: BTreeMap<(usize, usize), f64>| t.into_iter().map(|((r, c), v)| (r, c, v)).collect();
+        (self.node_x.clone(), flat(k), flat(m))
+    }
 }

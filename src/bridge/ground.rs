@@ -38,12 +38,16 @@ impl ModalBridge {
     /// the resolved description the modes were built from (for the mass
     /// per length or area). Cost O(elements · modes) (a plate: 32× that).
     pub fn vertical_participation(&self, bridge: &Bridge) -> (Vec<f64>, f64) {
+        if let Shapes::Imported(imported) = &self.shapes {
+            return imported_participation(imported);
+        }
         let modes = self.mode_count();
         let mut participation = vec![0.0; modes];
         let mut values = vec![0.0; modes];
         let nodes = self.node_x().to_vec();
         let (density, across): (f64, Vec<(f64, f64)>) = match bridge {
             Bridge::Beam(beam) => (beam.mass_per_length, vec![(0.0, 1.0)]),
+            Bridge::FeImport(_) => return (participation, 0.0),
             Bridge::Plate(plate) => {
                 let strip = plate.width / WIDTH_STRIPS as f64;
                 let points = (0..WIDTH_STRIPS)
@@ -71,7 +75,7 @@ impl ModalBridge {
         }
         let extent = match bridge {
             Bridge::Plate(plate) => plate.width,
-            Bridge::Beam(_) => 1.0,
+            Bridge::Beam(_) | Bridge::FeImport(_) => 1.0,
         };
         (participation, density * self.length * extent)
     }
@@ -88,6 +92,11 @@ impl ModalBridge {
         x: f64,
         participation: &[f64],
     ) -> Result<Option<f64>, BridgeError> {
+        if let Shapes::Imported(imported) = &self.shapes {
+            // K⁻¹ M δ at the track point, minus the modes' share of it.
+            let full = imported.inertia_field()?.value_at(x);
+            return Ok(Some(-(full - self.modal_static_at(x, participation))));
+        }
         let Shapes::Beam { .. } = &self.shapes else {
             return Ok(None);
         };
@@ -98,22 +107,28 @@ impl ModalBridge {
         for pair in nodes.windows(2) {
             let (x0, h) = (pair[0], pair[1] - pair[0]);
             for &(p, w) in &GAUSS_2 {
-                line.values_at(x0 + 0.5 * h * (p + 1.0), &mut g);
+                g[0] = line.value_at(x0 + 0.5 * h * (p + 1.0));
                 full += mass_per_length * 0.5 * h * w * g[0];
             }
         }
-        let mut values = vec![0.0; self.mode_count()];
-        self.mode_values(x, 0.0, &mut values);
-        let modal: f64 = values
-            .iter()
-            .zip(participation)
-            .zip(&self.circular_frequencies)
-            .map(|((phi, gamma), w)| phi * gamma / (w * w))
-            .sum();
+        let modal = self.modal_static_at(x, participation);
         // G is the downward deflection per downward load; the load per unit
         // upward üg is m downward, so the upward deflection is −(full), and
         // the modal part q = −Γ/ω² gives −Σφ Γ/ω².
         Ok(Some(-(full - modal)))
+    }
+
+    /// Σᵢ φᵢ(x) Γᵢ / ωᵢ²: the kept modes' static deflection at `x` (m)
+    /// under the inertia load of a unit ground acceleration, m/(m/s²).
+    fn modal_static_at(&self, x: f64, participation: &[f64]) -> f64 {
+        let mut values = vec![0.0; self.mode_count()];
+        self.mode_values(x, 0.0, &mut values);
+        values
+            .iter()
+            .zip(participation)
+            .zip(&self.circular_frequencies)
+            .map(|((phi, gamma), w)| phi * gamma / (w * w))
+            .sum()
     }
 
     /// The moment (N·m) and shear (N) at a beam section per unit upward
@@ -155,4 +170,32 @@ impl ModalBridge {
             shear: full.shear + modal.shear,
         }
     }
+}
+
+/// Γ = Φᵀ M δ of an imported model, δ = 1 on every vertical (uz) DOF —
+/// the constrained ones too when the file lists them (their mass coupling
+/// M_fs δ_s is kept: [`super::fe_import::ImportedModel::vertical_inertia`]);
+/// supports already removed from the matrices take that coupling with them
+/// (none for a lumped mass). Returns Γ and the free vertical mass δᵀ M δ
+/// (kg) that Σ Γ² tends to. Cost O(n · modes).
+fn imported_participation(imported: &super::fe_import::modal::ImportedShapes) -> (Vec<f64>, f64) {
+    use super::fe_import::Direction as Dof;
+    let model = &imported.model;
+    let n = model.dofs.len();
+    let vertical: Vec<f64> = model
+        .dofs
+        .iter()
+        .map(|(_, d)| if *d == Dof::Uz { 1.0 } else { 0.0 })
+        .collect();
+    let mut mass_delta = vec![0.0; n];
+    for &(i, j, m) in &model.mass {
+        mass_delta[i] += m * vertical[j];
+    }
+    let total: f64 = vertical.iter().zip(&mass_delta).map(|(d, m)| d * m).sum();
+    let inertia = &model.vertical_inertia;
+    let modes = imported.vectors.ncols();
+    let participation = (0..modes)
+        .map(|c| (0..n).map(|i| imported.vectors[(i, c)] * inertia[i]).sum())
+        .collect();
+    (participation, total)
 }

@@ -7,6 +7,7 @@
 
 pub mod beam;
 pub mod eigen;
+pub mod fe_import;
 pub mod ground;
 pub mod hermite;
 pub mod plate;
@@ -17,6 +18,8 @@ use std::f64::consts::PI;
 use thiserror::Error;
 
 use self::beam::BeamModel;
+use self::fe_import::modal::{ImportedFlexibility, ImportedShapes};
+use self::fe_import::track::TrackField;
 use self::hermite::HermiteField;
 use self::plate::PlateModes;
 use crate::scenario::resolved::{Bridge, Modes};
@@ -109,9 +112,47 @@ pub struct ModalBridge {
     pub static_correction: bool,
     /// The static flexibility between contact points, for the contact
     /// static correction ([`ModalBridge::prepare_contact_correction`]).
-    contact_flexibility: Option<std::sync::Arc<beam::BeamFlexibility>>,
+    contact_flexibility: Option<std::sync::Arc<Flexibility>>,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
+}
+
+/// The static flexibility between contact points of a beam or an imported model.
+#[derive(Debug, Clone)]
+enum Flexibility {
+    Beam(beam::BeamFlexibility),
+    Imported(ImportedFlexibility),
+}
+
+impl Flexibility {
+    #[inline]
+    fn green(&self, x: f64, xi: f64) -> f64 {
+        match self {
+            Flexibility::Beam(f) => f.green(x, xi),
+            Flexibility::Imported(f) => f.green(x, xi),
+        }
+    }
+}
+
+/// A static influence line: along a beam or plate line (Hermite), or along
+/// an imported model's track.
+#[derive(Debug, Clone)]
+pub enum InfluenceLine {
+    /// A Hermite field.
+    Hermite(HermiteField),
+    /// An imported model's track.
+    Track(TrackField),
+}
+
+impl InfluenceLine {
+    /// G at `x` (m), m/N.
+    #[inline]
+    pub fn value_at(&self, x: f64) -> f64 {
+        match self {
+            InfluenceLine::Hermite(f) => f.value_at(x),
+            InfluenceLine::Track(f) => f.value_at(x),
+        }
+    }
 }
 
 /// Mode shapes of each bridge type.
@@ -130,6 +171,9 @@ enum Shapes {
         modes: Box<PlateModes>,
         lines: Vec<(f64, HermiteField)>,
     },
+    /// An imported finite-element model: the kept modes on its DOFs and
+    /// along its track.
+    Imported(Box<ImportedShapes>),
 }
 
 /// Most free dofs of a beam whose contacts get the static correction (K⁻¹
@@ -174,6 +218,7 @@ impl ModalBridge {
         match bridge {
             Bridge::Beam(beam) => BeamModel::free_dofs_of(beam),
             Bridge::Plate(plate) => plate.terms.longitudinal * plate.terms.transverse,
+            Bridge::FeImport(f) => f.model.dofs.len(),
         }
     }
 
@@ -188,6 +233,11 @@ impl ModalBridge {
                 let count = model
                     .pencil
                     .count_below(eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
+                Ok(Some(count))
+            }
+            Bridge::FeImport(f) => {
+                let pencil = fe_import::modal::pencil(&f.model)?;
+                let count = pencil.count_below(eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
                 Ok(Some(count))
             }
             Bridge::Plate(_) => Ok(None),
@@ -270,12 +320,34 @@ impl ModalBridge {
                 };
                 (omegas, shapes, check)
             }
+            Bridge::FeImport(f) => {
+                let pencil = fe_import::modal::pencil(&f.model)?;
+                let count = select_count(
+                    request,
+                    available,
+                    |g| pencil.count_below(eigenvalue_of(g)),
+                    || Ok(pencil.lowest(1)?.eigenvalues[0].sqrt() / (2.0 * PI)),
+                )?;
+                let modes = pencil.lowest(count)?;
+                let omegas: Vec<f64> = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
+                let shapes = ImportedShapes::new(f.model.clone(), pencil, modes.vectors);
+                (omegas, Shapes::Imported(Box::new(shapes)), modes.check)
+            }
         };
-        let damping = match bridge {
-            Bridge::Beam(beam) => &beam.damping,
-            Bridge::Plate(plate) => &plate.damping,
+        let damping_ratios = match (bridge, &shapes) {
+            (Bridge::Beam(beam), _) => omegas.iter().map(|&w| beam.damping.ratio_at(w)).collect(),
+            (Bridge::Plate(plate), _) => {
+                omegas.iter().map(|&w| plate.damping.ratio_at(w)).collect()
+            }
+            (Bridge::FeImport(f), Shapes::Imported(imported)) => {
+                match (f.damping.rule(), &f.model.damping) {
+                    (Some(rule), _) => omegas.iter().map(|&w| rule.ratio_at(w)).collect(),
+                    (None, Some(matrix)) => imported.projected_damping(matrix, &omegas)?,
+                    (None, None) => vec![0.0; omegas.len()],
+                }
+            }
+            (Bridge::FeImport(_), _) => vec![0.0; omegas.len()],
         };
-        let damping_ratios = omegas.iter().map(|&w| damping.ratio_at(w)).collect();
         Ok(Self {
             length: x,
             supports,
@@ -299,10 +371,18 @@ impl ModalBridge {
         if !self.static_correction || self.contact_flexibility.is_some() {
             return Ok(());
         }
-        if let Shapes::Beam { model, .. } = &self.shapes {
-            self.contact_flexibility = model
-                .flexibility(CONTACT_CORRECTION_DOFS)?
-                .map(std::sync::Arc::new);
+        match &self.shapes {
+            Shapes::Beam { model, .. } => {
+                self.contact_flexibility = model
+                    .flexibility(CONTACT_CORRECTION_DOFS)?
+                    .map(|f| std::sync::Arc::new(Flexibility::Beam(f)));
+            }
+            Shapes::Imported(imported) => {
+                self.contact_flexibility = imported
+                    .flexibility(CONTACT_CORRECTION_DOFS)?
+                    .map(|f| std::sync::Arc::new(Flexibility::Imported(f)));
+            }
+            Shapes::Plate { .. } => {}
         }
         Ok(())
     }
@@ -354,7 +434,7 @@ impl ModalBridge {
     /// Deck width, m (`None` for a beam).
     pub fn width(&self) -> Option<f64> {
         match &self.shapes {
-            Shapes::Beam { .. } => None,
+            Shapes::Beam { .. } | Shapes::Imported(_) => None,
             Shapes::Plate { modes, .. } => Some(modes.width),
         }
     }
@@ -364,6 +444,7 @@ impl ModalBridge {
     pub fn mode_character(&self, mode: usize) -> String {
         match &self.shapes {
             Shapes::Beam { .. } => format!("bending {}", mode + 1),
+            Shapes::Imported(_) => format!("mode {}", mode + 1),
             Shapes::Plate { modes, .. } => {
                 let (m, n) = modes.character(mode);
                 format!("({m}, {n})")
@@ -409,6 +490,7 @@ impl ModalBridge {
     pub fn mode_values(&self, x: f64, y: f64, values: &mut [f64]) {
         match &self.shapes {
             Shapes::Beam { shapes, .. } => shapes.values_at(x, values),
+            Shapes::Imported(imported) => imported.track.evaluate(x, values, &mut [], &mut []),
             Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
                 Some((_, line)) => line.values_at(x, values),
                 None => modes.values_at(x, y, values),
@@ -431,6 +513,9 @@ impl ModalBridge {
             Shapes::Beam { shapes, .. } => {
                 shapes.values_slopes_curvatures_at(x, values, slopes, curvatures)
             }
+            // Along the track: Hermite with the ry DOFs, else linear with
+            // zero curvature inside each element (fe_import::track).
+            Shapes::Imported(imported) => imported.track.evaluate(x, values, slopes, curvatures),
             Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
                 Some((_, line)) => line.values_slopes_curvatures_at(x, values, slopes, curvatures),
                 None => modes.values_slopes_curvatures_at(x, y, values, slopes, curvatures),
@@ -448,10 +533,49 @@ impl ModalBridge {
         x_point: f64,
         y_point: f64,
         y_load: f64,
-    ) -> Result<HermiteField, BridgeError> {
+    ) -> Result<InfluenceLine, BridgeError> {
         match &self.shapes {
-            Shapes::Beam { model, .. } => model.influence_line(x_point),
-            Shapes::Plate { modes, .. } => modes.influence_line(x_point, y_point, y_load),
+            Shapes::Beam { model, .. } => model.influence_line(x_point).map(InfluenceLine::Hermite),
+            Shapes::Plate { modes, .. } => modes
+                .influence_line(x_point, y_point, y_load)
+                .map(InfluenceLine::Hermite),
+            Shapes::Imported(imported) => {
+                imported.influence_line(x_point).map(InfluenceLine::Track)
+            }
+        }
+    }
+
+    /// The free DOF of an imported model's (node, direction), if the
+    /// bridge is imported and the DOF free; `Err` with the reason otherwise.
+    pub fn imported_dof(
+        &self,
+        node: u64,
+        direction: fe_import::Direction,
+    ) -> Result<Option<usize>, String> {
+        match &self.shapes {
+            Shapes::Imported(imported) => Ok(imported.model.dof(node, direction)),
+            _ => Err("only an imported (fe_import) bridge has nodes".into()),
+        }
+    }
+
+    /// Mode values (1/√kg) at free DOF `dof` of an imported model; zeros
+    /// for any other bridge.
+    pub fn dof_mode_values(&self, dof: usize, values: &mut [f64]) {
+        values.fill(0.0);
+        if let Shapes::Imported(imported) = &self.shapes {
+            imported.dof_values(dof, values);
+        }
+    }
+
+    /// Static influence line of free DOF `dof` of an imported model for
+    /// loads along its track, m/N (the DOF's displacement opposite to its
+    /// direction under a unit downward load).
+    pub fn dof_influence_line(&self, dof: usize) -> Result<InfluenceLine, BridgeError> {
+        match &self.shapes {
+            Shapes::Imported(imported) => {
+                imported.dof_influence_line(dof).map(InfluenceLine::Track)
+            }
+            _ => Err(BridgeError::EigenFailed),
         }
     }
 
@@ -460,6 +584,7 @@ impl ModalBridge {
         match &self.shapes {
             Shapes::Beam { shapes, .. } => shapes.node_x(),
             Shapes::Plate { modes, .. } => modes.node_x(),
+            Shapes::Imported(imported) => imported.track.node_x(),
         }
     }
 }

@@ -15,7 +15,7 @@ pub mod envelope;
 
 use self::envelope::{Envelope, EnvelopeTracker};
 use crate::bridge::BridgeError;
-use crate::bridge::hermite::HermiteField;
+use crate::bridge::InfluenceLine;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
 use crate::scenario::resolved::{Envelopes, Quantity, Record};
@@ -64,7 +64,7 @@ enum Probe {
 /// wheel: one line per distinct wheel y, and which one each flattened wheel uses.
 #[derive(Debug, Clone)]
 struct StaticProbe {
-    influences: Vec<HermiteField>,
+    influences: Vec<InfluenceLine>,
     wheel_influence: Vec<usize>,
 }
 
@@ -90,6 +90,15 @@ impl StaticProbe {
         Ok(Self {
             influences,
             wheel_influence,
+        })
+    }
+
+    /// The probe of free DOF `dof` of an imported model: one influence line
+    /// along its track, which every wheel uses.
+    fn of_dof(model: &Model, dof: usize) -> Result<Self, BridgeError> {
+        Ok(Self {
+            influences: vec![model.bridge.dof_influence_line(dof)?],
+            wheel_influence: vec![0; model.wheel_y.len()],
         })
     }
 
@@ -338,9 +347,30 @@ impl<'m> Recorder<'m> {
                     let x = record.x.unwrap_or(0.0);
                     let y = record.y.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
-                    model.bridge.mode_values(x, y, &mut shape);
+                    // A node's DOF of an imported model (validated when
+                    // resolving), or a point along the track or deck.
+                    let dof = match record.node {
+                        Some(node) => {
+                            let direction = record.direction.unwrap_or_default();
+                            let dof = model
+                                .bridge
+                                .imported_dof(node, direction)
+                                .ok()
+                                .flatten()
+                                .expect("record nodes were validated when resolving");
+                            model.bridge.dof_mode_values(dof, &mut shape);
+                            Some(dof)
+                        }
+                        None => {
+                            model.bridge.mode_values(x, y, &mut shape);
+                            None
+                        }
+                    };
                     if record.quantity == Quantity::BridgeDisplacement {
-                        let statics = StaticProbe::new(model, x, y)?;
+                        let statics = match dof {
+                            Some(dof) => StaticProbe::of_dof(model, dof)?,
+                            None => StaticProbe::new(model, x, y)?,
+                        };
                         let static_shape = static_shape(model, &shape);
                         let probe = Probe::BridgeDisplacement {
                             shape,

@@ -19,7 +19,11 @@ pub const DEFAULT_ORTHOTROPIC_POISSON: f64 = 0.3;
 pub const MAX_RITZ_TERMS: usize = 2_000;
 
 /// Resolves the bridge description; `None` after reporting its problems.
-pub(super) fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Option<Bridge> {
+pub(super) fn resolve_bridge(
+    raw: &raw::BridgeRaw,
+    budget: &super::budget::Budget,
+    ck: &mut Checker<'_>,
+) -> Option<Bridge> {
     let before = ck.diagnostics.len();
     let bridge = match raw {
         raw::BridgeRaw::Beam(b) => {
@@ -45,6 +49,7 @@ pub(super) fn resolve_bridge(raw: &raw::BridgeRaw, ck: &mut Checker<'_>) -> Opti
             })
         }
         raw::BridgeRaw::Plate(p) => Bridge::Plate(resolve_plate(p, ck)),
+        raw::BridgeRaw::FeImport(f) => Bridge::FeImport(super::fe_import::resolve(f, budget, ck)?),
     };
     (ck.diagnostics.len() == before).then_some(bridge)
 }
@@ -314,7 +319,7 @@ fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     elements_per_span
 }
 
-fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
+pub(super) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
     match raw {
         None => Modes {
             count: None,

@@ -217,7 +217,7 @@ pub fn minimum_modes(bridge: &super::resolved::Bridge) -> usize {
 pub fn modes_per_span(bridge: &super::resolved::Bridge) -> usize {
     match bridge {
         super::resolved::Bridge::Plate(_) => MODES_PER_SPAN * PLATE_FAMILIES,
-        super::resolved::Bridge::Beam(_) => MODES_PER_SPAN,
+        super::resolved::Bridge::Beam(_) | super::resolved::Bridge::FeImport(_) => MODES_PER_SPAN,
     }
 }
 

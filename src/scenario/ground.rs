@@ -33,14 +33,15 @@ pub(super) fn resolve(
             Direction::Lateral => {
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",
+                    Some(Bridge::FeImport(_)) => "imported",
                     _ => "beam",
                 };
                 ck.error(
                     &format!("{at}.direction"),
                     format!(
-                        "a lateral ground motion needs a bridge with lateral modes; the {kind} \
-                         bridge is a vertical model (its modes move only up and down), so the \
-                         record would have no effect"
+                        "a lateral ground motion needs lateral bridge modes and vehicles that move \
+                         sideways; the {kind} bridge is used here as a vertical model (its modes \
+                         are followed up and down only), so the record would have no effect"
                     ),
                 );
                 continue;

@@ -16,6 +16,7 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod envelopes;
+mod fe_import;
 mod ground;
 pub mod names;
 mod output;

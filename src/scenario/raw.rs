@@ -12,6 +12,7 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 mod envelopes;
+mod fe_import;
 mod ground;
 mod hslm;
 mod limits;
@@ -23,6 +24,7 @@ mod study;
 mod surface;
 mod truck;
 pub use self::envelopes::*;
+pub use self::fe_import::*;
 pub use self::ground::*;
 pub use self::hslm::*;
 pub use self::limits::*;
@@ -112,6 +114,8 @@ pub enum BridgeRaw {
     /// paper's intermodal coupling). y runs across the deck from the edge
     /// y = 0 (the right-hand edge for traffic in +x) to y = width.
     Plate(PlateRaw),
+    /// A finite-element model imported from files (matrices, DOF map, rails).
+    FeImport(FeImportRaw),
 }
 
 /// Plate deck.
@@ -627,6 +631,13 @@ pub struct RecordRaw {
     /// Position along the bridge, m (bridge quantities).
     #[serde(default)]
     pub x: Option<f64>,
+    /// Node of an imported (`fe_import`) bridge, instead of `x`: the
+    /// quantity at that node's DOF `direction`.
+    #[serde(default)]
+    pub node: Option<u64>,
+    /// Direction of the node's DOF (ux, uy, uz, rx, ry, rz). Default uz.
+    #[serde(default)]
+    pub direction: Option<crate::bridge::fe_import::Direction>,
     /// Position across a plate deck, m (bridge quantities on a plate).
     /// Default: the deck's centre line.
     #[serde(default)]

@@ -5,6 +5,7 @@ use super::raw;
 use super::resolve::Checker;
 use super::resolved::*;
 
+use crate::bridge::fe_import::Direction;
 use crate::vehicle::rail_car;
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
@@ -129,7 +130,40 @@ pub(super) fn resolve_records(
         );
         let quantity_name = quantity_name_of(q);
         let unused = |field: &str| format!("`{field}` is not used by `{quantity_name}`");
-        if is_bridge {
+        let direction = r.node.map(|_| r.direction.unwrap_or(Direction::Uz));
+        if let Some(node) = r.node {
+            let direction = direction.unwrap_or(Direction::Uz);
+            if !is_bridge {
+                ck.error(&format!("{at}.node"), unused("node"));
+            } else if r.x.is_some() {
+                ck.error(&format!("{at}.x"), "give `x` or `node`, not both");
+            } else {
+                match bridge {
+                    Bridge::FeImport(f) => {
+                        if f.model.dof(node, direction).is_none() {
+                            ck.error(
+                                &format!("{at}.node"),
+                                format!(
+                                    "node {node} has no free {} DOF in the imported model",
+                                    direction.name()
+                                ),
+                            );
+                        }
+                    }
+                    _ => ck.error(
+                        &format!("{at}.node"),
+                        "`node` names a node of an imported (`fe_import`) bridge",
+                    ),
+                }
+            }
+        } else if r.direction.is_some() {
+            ck.error(&format!("{at}.direction"), "`direction` goes with `node`");
+        }
+        if is_bridge && r.node.is_some() {
+            if r.vehicle.is_some() {
+                ck.error(&format!("{at}.vehicle"), unused("vehicle"));
+            }
+        } else if is_bridge {
             match r.x {
                 None => ck.error(
                     &at,
@@ -306,7 +340,9 @@ pub(super) fn resolve_records(
             name: r.name.clone(),
             quantity: q,
             x: r.x,
-            y: if is_bridge {
+            node: r.node,
+            direction,
+            y: if is_bridge && r.node.is_none() {
                 r.y.or(bridge.width().map(|w| w / 2.0))
             } else {
                 None
@@ -333,9 +369,11 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
     for (i, span) in bridge.spans().iter().enumerate() {
         let x = Some(start + span / 2.0);
         match bridge {
-            Bridge::Beam(_) => out.push(Record {
+            Bridge::Beam(_) | Bridge::FeImport(_) => out.push(Record {
                 name: format!("span{}_midspan", i + 1),
                 quantity: Quantity::BridgeDisplacement,
+                node: None,
+                direction: None,
                 x,
                 y: None,
                 vehicle: None,
@@ -349,6 +387,8 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     out.push(Record {
                         name: format!("span{}_girder{}", i + 1, g + 1),
                         quantity: Quantity::BridgeDisplacement,
+                        node: None,
+                        direction: None,
                         x,
                         y: Some(y),
                         vehicle: None,
@@ -376,6 +416,8 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
             out.push(Record {
                 name: format!("vehicle{}_{wheel_name}_force", v + 1),
                 quantity: Quantity::ContactForce,
+                node: None,
+                direction: None,
                 x: None,
                 y: None,
                 vehicle: Some(v + 1),
@@ -388,6 +430,8 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 out.push(Record {
                     name: format!("vehicle{}_{wheel_name}_gap", v + 1),
                     quantity: Quantity::ContactGap,
+                    node: None,
+                    direction: None,
                     x: None,
                     y: None,
                     vehicle: Some(v + 1),

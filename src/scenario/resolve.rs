@@ -146,7 +146,7 @@ pub(super) fn resolve(
         "m/s²",
     );
 
-    let bridge = resolve_bridge(&raw.bridge, ck);
+    let bridge = resolve_bridge(&raw.bridge, &budget, ck);
     if let Some(bridge) = &bridge {
         plausible::check_bridge(ck, bridge);
     }

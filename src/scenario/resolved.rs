@@ -6,10 +6,12 @@
 
 use serde::Serialize;
 
+mod fe_import;
 mod ground;
 mod rail;
 mod study;
 mod surface;
+pub use self::fe_import::*;
 pub use self::ground::*;
 pub use self::rail::*;
 pub use self::study::*;
@@ -123,6 +125,8 @@ pub enum Bridge {
     Beam(Beam),
     /// Thin orthotropic plate deck.
     Plate(Plate),
+    /// A finite-element model imported from files.
+    FeImport(FeImport),
 }
 
 impl Bridge {
@@ -136,13 +140,14 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &beam.spans,
             Bridge::Plate(plate) => &plate.spans,
+            Bridge::FeImport(f) => &f.spans,
         }
     }
 
     /// Deck width, m (`None` for a beam, which has no transverse extent).
     pub fn width(&self) -> Option<f64> {
         match self {
-            Bridge::Beam(_) => None,
+            Bridge::Beam(_) | Bridge::FeImport(_) => None,
             Bridge::Plate(plate) => Some(plate.width),
         }
     }
@@ -152,6 +157,7 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &beam.modes,
             Bridge::Plate(plate) => &plate.modes,
+            Bridge::FeImport(f) => &f.modes,
         }
     }
 
@@ -160,6 +166,7 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => &mut beam.modes,
             Bridge::Plate(plate) => &mut plate.modes,
+            Bridge::FeImport(f) => &mut f.modes,
         }
     }
 
@@ -168,13 +175,16 @@ impl Bridge {
         match self {
             Bridge::Beam(beam) => beam.mass_per_length,
             Bridge::Plate(plate) => plate.mass_per_area * plate.width,
+            // The mass a rigid vertical translation moves, per deck length
+            // (piers and all, when the model has them).
+            Bridge::FeImport(f) => f.model.vertical_mass / f.model.length,
         }
     }
 
     /// Transverse lines on which the summary tabulates DAFs, m (a beam: one line at 0).
     pub fn girder_lines(&self) -> Vec<f64> {
         match self {
-            Bridge::Beam(_) => vec![0.0],
+            Bridge::Beam(_) | Bridge::FeImport(_) => vec![0.0],
             Bridge::Plate(plate) => plate.girder_lines.clone(),
         }
     }
@@ -650,6 +660,12 @@ pub struct Record {
     /// Position along the bridge, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub x: Option<f64>,
+    /// Node of an imported bridge (instead of `x`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub node: Option<u64>,
+    /// Direction of the node's DOF.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub direction: Option<crate::bridge::fe_import::Direction>,
     /// Position across a plate deck, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub y: Option<f64>,

@@ -316,13 +316,13 @@ pub(super) fn resolve(
     }
     let girder = raw.girder.unwrap_or(1);
     let lines = match bridge {
-        Bridge::Beam(_) => 1,
+        Bridge::Beam(_) | Bridge::FeImport(_) => 1,
         Bridge::Plate(p) => p.girder_lines.len(),
     };
     if !(1..=lines).contains(&girder) {
         let message = match bridge {
-            Bridge::Beam(_) => {
-                format!("girder line {girder} does not exist; a beam has only line 1")
+            Bridge::Beam(_) | Bridge::FeImport(_) => {
+                format!("girder line {girder} does not exist; a beam or track has only line 1")
             }
             Bridge::Plate(_) => format!(
                 "girder line {girder} does not exist; the deck has {lines} (`bridge.girder_lines`, counted from 1)"

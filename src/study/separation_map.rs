@@ -99,6 +99,8 @@ pub fn point_scenario(
     scenario.record = vec![Record {
         name: "contact_force".into(),
         quantity: Quantity::ContactForce,
+        node: None,
+        direction: None,
         x: None,
         y: None,
         vehicle: Some(1),

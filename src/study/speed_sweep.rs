@@ -257,7 +257,7 @@ fn layout(
         })
         .collect();
     let lines = match &base.bridge {
-        Bridge::Beam(_) => 1,
+        Bridge::Beam(_) | Bridge::FeImport(_) => 1,
         Bridge::Plate(p) => p.girder_lines.len(),
     };
     let mut daf_sources: Vec<DafSource> = (1..=base.bridge.spans().len())

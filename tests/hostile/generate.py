@@ -448,13 +448,66 @@ ground = [
     ("backwards", "{file: @@quake-backwards.csv}", "must increase strictly"),
     ("no-units", "{file: @@quake-no-units.csv}", "does not state the units"),
     ("missing", "{file: @@no-such-record.AT2}", "cannot read the ground-motion record"),
-    ("lateral", "{file: quake-ok.csv, direction: @@lateral}", "lateral modes"),
+    ("lateral", "{file: quake-ok.csv, direction: @@lateral}", "lateral bridge modes"),
     ("scale-nan", "{file: quake-ok.csv, scale: @@.nan}", "finite"),
     ("units-disagree", "{file: quake-ok.csv, units: @@m/s^2}", "disagrees"),
 ]
 for slug, component, message in ground:
     case("ground-" + slug, "rejected", "ground motion: " + slug.replace("-", " "),
          scene(extra="ground_motion:\n  - " + component + "\n"), message)
+
+
+# --- imported FE bridges (issue 12): the matrices and tables live in
+# tests/hostile/fe/ (written below), the scenes refer to them by ../fe/.
+FE = os.path.join(HERE, "fe")
+MM = "%%MatrixMarket matrix coordinate real symmetric\n"
+FE_FILES = {
+    "K.mtx": MM + "2 2 3\n1 1 2.0e6\n2 1 -1.0e6\n2 2 2.0e6\n",
+    "M.mtx": MM + "2 2 2\n1 1 100.0\n2 2 100.0\n",
+    "dofs.csv": "dof,node,direction\n1,1,uz\n2,2,uz\n",
+    "rail.csv": "node,x\n1,0.0\n2,5.0\n",
+    "K-huge-entries.mtx": MM + "2 2 1000000000000\n1 1 2.0e6\n",
+    "K-huge-rows.mtx": MM + "1000000000 1000000000 3\n1 1 2.0e6\n",
+    "K-truncated.mtx": MM + "2 2 3\n1 1 2.0e6\n2 1 -1.0e6\n",
+    "K-range.mtx": MM + "2 2 3\n1 1 2.0e6\n3 1 -1.0e6\n2 2 2.0e6\n",
+    "K-unsymmetric.mtx": "%%MatrixMarket matrix coordinate real general\n2 2 4\n"
+                         "1 1 2.0e6\n2 1 -1.0e6\n1 2 -2.0e6\n2 2 2.0e6\n",
+    "K-pattern.mtx": "%%MatrixMarket matrix coordinate pattern symmetric\n2 2 1\n1 1\n",
+    "M-nan.mtx": MM + "2 2 2\n1 1 NaN\n2 2 100.0\n",
+    "rail-backwards.csv": "node,x\n1,5.0\n2,0.0\n",
+    "rail-unknown.csv": "node,x\n1,0.0\n7,5.0\n",
+}
+
+
+def fe_scene(stiffness="../fe/K.mtx", mass="../fe/M.mtx", rail="../fe/rail.csv"):
+    bridge = ("bridge:\n  type: fe_import\n  stiffness: " + stiffness + "\n  mass: " + mass
+              + "\n  dof_map: ../fe/dofs.csv\n  rails: [{name: rail, file: " + rail + "}]\n")
+    return scene(bridge=bridge, vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n")
+
+
+case("ok-fe-import", "accepted", "a two-DOF imported model with its rail", fe_scene())
+case("fe-huge-entries", "rejected",
+     "a Matrix Market header declaring 10^12 entries is refused before anything is allocated",
+     fe_scene(stiffness="@@../fe/K-huge-entries.mtx"), "K-huge-entries.mtx:2: the size line declares")
+case("fe-huge-rows", "rejected",
+     "a Matrix Market header declaring 10^9 rows is refused before anything is allocated",
+     fe_scene(stiffness="@@../fe/K-huge-rows.mtx"), "declares 1000000000 rows")
+case("fe-truncated", "rejected", "a matrix file that ends before its declared entries",
+     fe_scene(stiffness="@@../fe/K-truncated.mtx"), "K-truncated.mtx:4: the file ends after 2 of the 3")
+case("fe-out-of-range", "rejected", "an entry index beyond the declared order",
+     fe_scene(stiffness="@@../fe/K-range.mtx"), "K-range.mtx:4:1: index 3 is outside 1")
+case("fe-unsymmetric", "rejected", "a general matrix that is not symmetric",
+     fe_scene(stiffness="@@../fe/K-unsymmetric.mtx"), "the matrix is not symmetric")
+case("fe-pattern", "rejected", "a pattern matrix has no values",
+     fe_scene(stiffness="@@../fe/K-pattern.mtx"), "`pattern` entries are not read")
+case("fe-nan", "rejected", "a NaN mass entry",
+     fe_scene(mass="@@../fe/M-nan.mtx"), "M-nan.mtx:3:5: `NaN` is not a finite number")
+case("fe-missing", "rejected", "a matrix file that does not exist",
+     fe_scene(mass="@@../fe/none.mtx"), "cannot read")
+case("fe-rail-backwards", "rejected", "a rail whose x does not increase",
+     fe_scene(rail="@@../fe/rail-backwards.csv"), "rail-backwards.csv:3:2")
+case("fe-rail-unknown-node", "rejected", "a rail node missing from the DOF map",
+     fe_scene(rail="../fe/rail-unknown.csv"), "node 7 is not in the DOF map")
 
 
 def locate(text):
@@ -480,6 +533,10 @@ def main():
     if os.path.isdir(CASES):
         shutil.rmtree(CASES)
     os.makedirs(CASES)
+    os.makedirs(FE, exist_ok=True)
+    for name, text in FE_FILES.items():
+        with open(os.path.join(FE, name), "w", encoding="utf-8") as f:
+            f.write(text)
     names = set()
     rows = ["# file\toutcome\tline:col\tmessage\twhat it tests"]
     for file, outcome, what, text, message in cases:

@@ -55,4 +55,9 @@ pub struct LimitsRaw {
     /// Most bytes of results written (estimated), bytes. Default 2e9.
     #[serde(default)]
     pub output_bytes: Option<f64>,
+    /// Most matrix entries an imported bridge's file may declare or hold
+    /// (checked on the header, and on the file's size at 10 bytes an entry,
+    /// before anything is read into memory). Default 2e7.
+    #[serde(default)]
+    pub import_entries: Option<f64>,
 }

@@ -1,0 +1,513 @@
+//! Bridges imported from a finite-element program: stiffness and mass
+//! matrices, the map from matrix rows to (node, direction), and the rails
+//! the wheels run on.
+//!
+//! Readers, one per format: [`matrix_market`] (coordinate, real, symmetric
+//! or general), [`abaqus`] (`*MATRIX GENERATE` coordinate output, its own
+//! DOF map) and [`tables`] (the DOF map and rail CSVs). [`ImportedModel::assemble`]
+//! checks what they read against each other (sizes, symmetry, masses,
+//! constraints, rail nodes) and keeps the free DOFs; [`track`] interpolates
+//! along the rails. Coordinates: x along the track, y lateral, z up; SI
+//! units (K in N/m and N·m/rad, M in kg and kg·m², C in N·s/m).
+
+pub mod abaqus;
+pub mod harwell_boeing;
+pub mod matrix_market;
+pub mod modal;
+pub mod tables;
+pub mod track;
+
+use std::collections::HashMap;
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use self::track::RailDofs;
+
+/// A displacement or rotation direction of a node.
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    PartialOrd,
+    Ord,
+    Serialize,
+    Deserialize,
+    JsonSchema,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Direction {
+    /// Along the track, m.
+    Ux,
+    /// Lateral, m.
+    Uy,
+    /// Vertical, up, m.
+    #[default]
+    Uz,
+    /// Rotation about x, rad.
+    Rx,
+    /// Rotation about y (lateral axis), rad.
+    Ry,
+    /// Rotation about z, rad.
+    Rz,
+}
+
+impl Direction {
+    /// In Abaqus's order, DOF 1 … 6.
+    pub const ALL: [Direction; 6] = [
+        Direction::Ux,
+        Direction::Uy,
+        Direction::Uz,
+        Direction::Rx,
+        Direction::Ry,
+        Direction::Rz,
+    ];
+
+    /// Its name in files.
+    pub fn name(self) -> &'static str {
+        ["ux", "uy", "uz", "rx", "ry", "rz"][self.abaqus() as usize - 1]
+    }
+
+    /// Abaqus's DOF number, 1 … 6.
+    pub fn abaqus(self) -> u8 {
+        Self::ALL.iter().position(|&d| d == self).unwrap_or(0) as u8 + 1
+    }
+
+    /// Parses a name (case-insensitive).
+    pub fn parse(s: &str) -> Option<Self> {
+        let s = s.trim().to_ascii_lowercase();
+        Self::ALL.into_iter().find(|d| d.name() == s)
+    }
+
+    /// Whether it is a rotation.
+    pub fn is_rotation(self) -> bool {
+        matches!(self, Direction::Rx | Direction::Ry | Direction::Rz)
+    }
+}
+
+/// A problem at a line (and column) of one file.
+#[derive(Debug, Clone, Error, PartialEq)]
+#[error("{}: {message}", match column { Some(c) => format!("line {line}, column {c}"), None => format!("line {line}") })]
+pub struct ReadError {
+    /// Line from 1.
+    pub line: usize,
+    /// Column from 1, where meaningful.
+    pub column: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl ReadError {
+    /// An error at `line` (and `column`).
+    pub fn new(line: usize, column: Option<usize>, message: impl Into<String>) -> Self {
+        Self {
+            line,
+            column,
+            message: message.into(),
+        }
+    }
+}
+
+/// Called with a header's declared (rows, entries) before anything is
+/// allocated for them; an error message refuses them.
+pub type SizeCheck<'a> = &'a mut dyn FnMut(u64, u64) -> Result<(), String>;
+
+/// A matrix as read: order, whether one triangle stands for both, the
+/// entries (row, column, value) from 0, and the DOF map the format implies
+/// (Abaqus), if any.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MatrixFile {
+    /// Rows = columns.
+    pub order: usize,
+    /// One triangle stored, mirrored on assembly.
+    pub symmetric: bool,
+    /// (row, column, value), 0-based.
+    pub entries: Vec<(usize, usize, f64)>,
+    /// (node, direction) of each row, when the format names them.
+    pub dofs: Option<Vec<(u64, Direction)>>,
+}
+
+/// Reads a finite real number of an entry line.
+pub(crate) fn parse_value(field: &str, line: &str, n: usize) -> Result<f64, ReadError> {
+    let column = Some(matrix_market::column_of(line, field));
+    // Fortran writes exponents as D (1.0D+03).
+    let v: f64 = field
+        .replace(['D', 'd'], "e")
+        .parse()
+        .map_err(|_| ReadError::new(n, column, format!("`{field}` is not a number")))?;
+    if !v.is_finite() {
+        return Err(ReadError::new(
+            n,
+            column,
+            format!("`{field}` is not a finite number"),
+        ));
+    }
+    Ok(v)
+}
+
+/// Which input a problem of [`ImportedModel::assemble`] comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    /// The stiffness file.
+    Stiffness,
+    /// The mass file.
+    Mass,
+    /// The damping file.
+    Damping,
+    /// The DOF map.
+    DofMap,
+    /// `constrained[i]`.
+    Constrained(usize),
+    /// Rail i.
+    Rail(usize),
+    /// `track`.
+    Track,
+}
+
+/// A problem found while assembling an imported model.
+#[derive(Debug, Clone, Error, PartialEq)]
+#[error("{message}")]
+pub struct AssemblyError {
+    /// Where it comes from.
+    pub source_input: Source,
+    /// What is wrong.
+    pub message: String,
+}
+
+fn fail<T>(source: Source, message: impl Into<String>) -> Result<T, AssemblyError> {
+    Err(AssemblyError {
+        source_input: source,
+        message: message.into(),
+    })
+}
+
+/// Relative tolerance of the symmetry check of a `general` matrix:
+/// |Aᵢⱼ − Aⱼᵢ| ≤ tol · max|A| (FE programs print 6–16 digits; 1e-6 admits
+/// the 7 significant digits of a single-precision print).
+pub const SYMMETRY_TOLERANCE: f64 = 1e-6;
+
+/// An imported model on its free DOFs, with its rails.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImportedModel {
+    /// (node, direction) of each free DOF.
+    pub dofs: Vec<(u64, Direction)>,
+    /// Stiffness, both triangles, on the free DOFs (N/m, N·m/rad).
+    pub stiffness: Vec<(usize, usize, f64)>,
+    /// Mass, both triangles, on the free DOFs (kg, kg·m²).
+    pub mass: Vec<(usize, usize, f64)>,
+    /// Damping, both triangles, on the free DOFs (N·s/m), if given.
+    pub damping: Option<Vec<(usize, usize, f64)>>,
+    /// The rails, x from the deck entrance.
+    pub rails: Vec<RailDofs>,
+    /// Indices of the rails the vehicles run on (their average).
+    pub track: Vec<usize>,
+    /// Deck length: from the first rail node to the last, m.
+    pub length: f64,
+    /// Mass moving with a rigid vertical translation of every node (all
+    /// uz DOFs, constrained ones included), kg.
+    pub vertical_mass: f64,
+    /// M δ on the free DOFs, δ = 1 on every uz DOF (constrained ones
+    /// included: the supports move with the ground), kg: the inertia load
+    /// of a unit vertical ground acceleration ([`crate::ground`]).
+    pub vertical_inertia: Vec<f64>,
+}
+
+/// A rail as given: name and (node, x) pairs.
+pub type RailNodes = (String, Vec<(u64, f64)>);
+
+impl ImportedModel {
+    /// Checks the read matrices, map, constraints and rails against each
+    /// other and keeps the free DOFs. `map` is required unless the
+    /// stiffness file names its DOFs (Abaqus).
+    pub fn assemble(
+        stiffness: MatrixFile,
+        mass: MatrixFile,
+        damping: Option<MatrixFile>,
+        map: Option<Vec<(u64, Direction)>>,
+        constrained: &[(u64, Direction)],
+        rails: &[RailNodes],
+        track: &[usize],
+    ) -> Result<Self, AssemblyError> {
+        let map = match (map, &stiffness.dofs) {
+            (Some(map), _) => map,
+            (None, Some(dofs)) => dofs.clone(),
+            (None, None) => {
+                return fail(
+                    Source::DofMap,
+                    "a `dof_map` is needed: the stiffness file does not name its DOFs",
+                );
+            }
+        };
+        let n = stiffness.order;
+        if map.len() != n {
+            return fail(
+                Source::DofMap,
+                format!(
+                    "the DOF map has {} rows but the stiffness matrix has {n}",
+                    map.len()
+                ),
+            );
+        }
+        let position: HashMap<(u64, Direction), usize> =
+            map.iter().enumerate().map(|(i, &k)| (k, i)).collect();
+        let k = full(stiffness, &map, &position, Source::Stiffness)?;
+        let m = full(mass, &map, &position, Source::Mass)?;
+        let c = match damping {
+            Some(c) => Some(full(c, &map, &position, Source::Damping)?),
+            None => None,
+        };
+        let mut free = vec![true; n];
+        for (i, &(node, direction)) in constrained.iter().enumerate() {
+            match position.get(&(node, direction)) {
+                Some(&dof) => free[dof] = false,
+                None => {
+                    return fail(
+                        Source::Constrained(i),
+                        format!(
+                            "node {node} {} is not in the DOF map (a DOF removed from the \
+                             matrices already must not be listed)",
+                            direction.name()
+                        ),
+                    );
+                }
+            }
+        }
+        let vertical_mass = m
+            .iter()
+            .filter(|&&(r, c, _)| map[r].1 == Direction::Uz && map[c].1 == Direction::Uz)
+            .map(|e| e.2)
+            .sum();
+        let mut index = vec![None; n];
+        let mut dofs = Vec::new();
+        for dof in 0..n {
+            if free[dof] {
+                index[dof] = Some(dofs.len());
+                dofs.push(map[dof]);
+            }
+        }
+        if dofs.is_empty() {
+            return fail(Source::Constrained(0), "every DOF is constrained");
+        }
+        let restrict = |entries: Vec<(usize, usize, f64)>| -> Vec<(usize, usize, f64)> {
+            entries
+                .into_iter()
+                .filter_map(|(r, c, v)| Some((index[r]?, index[c]?, v)))
+                .collect()
+        };
+        // The supports move with the ground too: M δ over the full matrix,
+        // then kept on the free rows.
+        let mut vertical_inertia = vec![0.0; dofs.len()];
+        for &(r, c, v) in &m {
+            if let (Some(row), Direction::Uz) = (index[r], map[c].1) {
+                vertical_inertia[row] += v;
+            }
+        }
+        let (k, m) = (restrict(k), restrict(m));
+        let c = c.map(restrict);
+        // Diagonals: a free DOF needs stiffness and mass of its own.
+        let diagonal = |entries: &[(usize, usize, f64)]| {
+            let mut d = vec![0.0; dofs.len()];
+            for &(r, c, v) in entries {
+                if r == c {
+                    d[r] += v;
+                }
+            }
+            d
+        };
+        for (i, (kd, md)) in diagonal(&k).into_iter().zip(diagonal(&m)).enumerate() {
+            let (node, direction) = dofs[i];
+            let name = format!("node {node} {}", direction.name());
+            if md < 0.0 {
+                return fail(
+                    Source::Mass,
+                    format!("{name} has a negative diagonal mass {md}"),
+                );
+            }
+            if md == 0.0 {
+                return fail(
+                    Source::Mass,
+                    format!(
+                        "{name} carries no mass (diagonal 0): massless DOFs are refused rather than \
+                         condensed; export a consistent mass matrix (with rotary inertia), or list \
+                         the DOF under `constrained` if it is really fixed"
+                    ),
+                );
+            }
+            if kd <= 0.0 {
+                return fail(
+                    Source::Stiffness,
+                    format!(
+                        "{name} has a diagonal stiffness {kd}, not positive (is it held by anything?)"
+                    ),
+                );
+            }
+        }
+        if let Some(short) = rails.iter().position(|r| r.1.len() < 2) {
+            return fail(Source::Rail(short), "a rail needs at least two nodes");
+        }
+        // Rails: every node in the map with uz; deck coordinates from the
+        // first node of any rail.
+        let origin = rails.iter().map(|r| r.1[0].1).fold(f64::INFINITY, f64::min);
+        let end = rails
+            .iter()
+            .map(|r| r.1[r.1.len() - 1].1)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut rail_dofs = Vec::with_capacity(rails.len());
+        for (ri, (name, nodes)) in rails.iter().enumerate() {
+            let find = |node: u64, d: Direction| position.get(&(node, d)).copied();
+            for &(node, _) in nodes {
+                if !map.iter().any(|&(mn, _)| mn == node) {
+                    return fail(
+                        Source::Rail(ri),
+                        format!("rail `{name}`: node {node} is not in the DOF map"),
+                    );
+                }
+                if find(node, Direction::Uz).is_none() {
+                    return fail(
+                        Source::Rail(ri),
+                        format!("rail `{name}`: node {node} has no uz DOF in the map"),
+                    );
+                }
+            }
+            let column = |d: Direction| -> Vec<Option<usize>> {
+                nodes
+                    .iter()
+                    .map(|&(node, _)| find(node, d).and_then(|g| index[g]))
+                    .collect()
+            };
+            let has_all = |d: Direction| nodes.iter().all(|&(node, _)| find(node, d).is_some());
+            rail_dofs.push(RailDofs {
+                name: name.clone(),
+                nodes: nodes.iter().map(|p| p.0).collect(),
+                x: nodes.iter().map(|p| p.1 - origin).collect(),
+                displacement: [column(Direction::Uz), column(Direction::Uy)],
+                rotation: [column(Direction::Ry), column(Direction::Rz)],
+                hermite: [has_all(Direction::Ry), has_all(Direction::Rz)],
+            });
+        }
+        if track.is_empty() || track.iter().any(|&t| t >= rails.len()) {
+            return fail(Source::Track, "the track names no rail");
+        }
+        Ok(Self {
+            dofs,
+            stiffness: k,
+            mass: m,
+            damping: c,
+            rails: rail_dofs,
+            track: track.to_vec(),
+            length: end - origin,
+            vertical_mass,
+            vertical_inertia,
+        })
+    }
+
+    /// Free DOF of (node, direction), if any.
+    pub fn dof(&self, node: u64, direction: Direction) -> Option<usize> {
+        self.dofs.iter().position(|&d| d == (node, direction))
+    }
+}
+
+/// Both triangles of a read matrix on the map's DOFs: a symmetric file's
+/// triangle mirrored (refused if it holds entries of both triangles), a
+/// general file checked for symmetry within [`SYMMETRY_TOLERANCE`] and
+/// symmetrised, a file naming its own DOFs (Abaqus) renumbered by the map.
+fn full(
+    file: MatrixFile,
+    map: &[(u64, Direction)],
+    position: &HashMap<(u64, Direction), usize>,
+    source: Source,
+) -> Result<Vec<(usize, usize, f64)>, AssemblyError> {
+    let renumber: Option<Vec<usize>> = match &file.dofs {
+        Some(dofs) => {
+            let mut out = Vec::with_capacity(dofs.len());
+            for &(node, d) in dofs {
+                match position.get(&(node, d)) {
+                    Some(&i) => out.push(i),
+                    None => {
+                        return fail(
+                            source,
+                            format!(
+                                "node {node} {} is not among the stiffness matrix's DOFs",
+                                d.name()
+                            ),
+                        );
+                    }
+                }
+            }
+            Some(out)
+        }
+        None => {
+            if file.order != map.len() {
+                return fail(
+                    source,
+                    format!(
+                        "the matrix has order {} but the DOF map and stiffness have {}",
+                        file.order,
+                        map.len()
+                    ),
+                );
+            }
+            None
+        }
+    };
+    let at = |i: usize| renumber.as_ref().map_or(i, |r| r[i]);
+    let mut summed: HashMap<(usize, usize), f64> = HashMap::new();
+    let (mut lower, mut upper) = (false, false);
+    for &(r, c, v) in &file.entries {
+        lower |= r > c;
+        upper |= r < c;
+        *summed.entry((at(r), at(c))).or_insert(0.0) += v;
+    }
+    let mut keys: Vec<(usize, usize)> = summed.keys().copied().collect();
+    keys.sort_unstable();
+    let mut out = Vec::with_capacity(2 * keys.len());
+    if file.symmetric {
+        if lower && upper {
+            return fail(
+                source,
+                "a `symmetric` file must hold one triangle only; this one has entries on both \
+                 sides of the diagonal (write it as `general`)",
+            );
+        }
+        for (r, c) in keys {
+            let v = summed[&(r, c)];
+            out.push((r, c, v));
+            if r != c {
+                out.push((c, r, v));
+            }
+        }
+        return Ok(out);
+    }
+    let largest = summed.values().fold(0.0f64, |a, v| a.max(v.abs()));
+    for (r, c) in keys {
+        let v = summed[&(r, c)];
+        let mirror = summed.get(&(c, r)).copied().unwrap_or(0.0);
+        if (v - mirror).abs() > SYMMETRY_TOLERANCE * largest {
+            let (a, b) = (map[r], map[c]);
+            return fail(
+                source,
+                format!(
+                    "the matrix is not symmetric: entry ({}, {}) = {v} but ({}, {}) = {mirror} \
+                     (rows {} {} and {} {}), beyond {SYMMETRY_TOLERANCE:e} of the largest entry",
+                    r + 1,
+                    c + 1,
+                    c + 1,
+                    r + 1,
+                    a.0,
+                    a.1.name(),
+                    b.0,
+                    b.1.name()
+                ),
+            );
+        }
+        // (A + Aᵀ)/2: each stored entry contributes half to both places.
+        out.push((r, c, 0.5 * v));
+        out.push((c, r, 0.5 * v));
+    }
+    Ok(out)
+}

@@ -1,0 +1,194 @@
+//! The modal model of an imported bridge: its pencil, the kept modes along
+//! the track, at any DOF, and its static flexibility.
+
+use std::sync::Arc;
+
+use faer::Mat;
+
+use super::super::BridgeError;
+use super::super::eigen::Pencil;
+use super::super::eigen::sparse::{multiply, symmetric_from_entries};
+use super::ImportedModel;
+use super::track::{RailDirection, RailDofs, TrackField};
+
+/// The pencil (K, M) of an imported model on its free DOFs.
+pub fn pencil(model: &ImportedModel) -> Result<Pencil, BridgeError> {
+    let n = model.dofs.len();
+    Ok(Pencil::new(
+        symmetric_from_entries(n, model.stiffness.iter().copied(), false)?,
+        symmetric_from_entries(n, model.mass.iter().copied(), false)?,
+    ))
+}
+
+/// Kept modes of an imported bridge.
+#[derive(Debug, Clone)]
+pub struct ImportedShapes {
+    /// The model.
+    pub model: Arc<ImportedModel>,
+    /// Its pencil (K factorised on first static use).
+    pub pencil: Pencil,
+    /// The kept modes on the free DOFs, one per column (1/√kg).
+    pub vectors: Mat<f64>,
+    /// The kept modes along the track (vertical).
+    pub track: TrackField,
+}
+
+impl ImportedShapes {
+    /// The kept `vectors` of `model`.
+    pub fn new(model: Arc<ImportedModel>, pencil: Pencil, vectors: Mat<f64>) -> Self {
+        let count = vectors.ncols();
+        let track = track_field(&model, RailDirection::Vertical, count, |dof, c| {
+            vectors[(dof, c)]
+        });
+        Self {
+            model,
+            pencil,
+            vectors,
+            track,
+        }
+    }
+
+    /// Mode values at free DOF `dof`.
+    pub fn dof_values(&self, dof: usize, values: &mut [f64]) {
+        for (c, v) in values.iter_mut().enumerate() {
+            *v = self.vectors[(dof, c)];
+        }
+    }
+
+    /// Modal damping ratios ζᵢ = φᵢᵀCφᵢ/(2ωᵢ) of a damping matrix C.
+    pub fn projected_damping(
+        &self,
+        damping: &[(usize, usize, f64)],
+        omegas: &[f64],
+    ) -> Result<Vec<f64>, BridgeError> {
+        let n = self.model.dofs.len();
+        let c = symmetric_from_entries(n, damping.iter().copied(), false)?;
+        let mut product = vec![0.0; n];
+        Ok(omegas
+            .iter()
+            .enumerate()
+            .map(|(i, w)| {
+                let phi: Vec<f64> = self.vectors.col(i).iter().copied().collect();
+                multiply(&c, &phi, &mut product);
+                let modal: f64 = phi.iter().zip(&product).map(|(a, b)| a * b).sum();
+                modal / (2.0 * w)
+            })
+            .collect())
+    }
+
+    /// Deflection along the track under the unit load vector `load` (K u =
+    /// load, by reciprocity the influence line of the point the load
+    /// stands for), m/N.
+    fn static_field(&self, mut load: Vec<f64>) -> Result<TrackField, BridgeError> {
+        let factor = self.pencil.stiffness_factor()?;
+        factor.solve_in_place(&mut load, &mut factor.workspace()?);
+        Ok(track_field(
+            &self.model,
+            RailDirection::Vertical,
+            1,
+            |dof, _| load[dof],
+        ))
+    }
+
+    /// K⁻¹ M δ along the track: the static deflection under the inertia
+    /// load of a unit vertical ground acceleration ([`ImportedModel::vertical_inertia`]),
+    /// m/(m/s²), in the sense of the load.
+    pub fn inertia_field(&self) -> Result<TrackField, BridgeError> {
+        self.static_field(self.model.vertical_inertia.clone())
+    }
+
+    /// Influence line G(ξ) of the track point `x` (m): the deflection at x
+    /// under a unit downward load at ξ on the track, m/N, downward positive.
+    pub fn influence_line(&self, x: f64) -> Result<TrackField, BridgeError> {
+        let mut load = vec![0.0; self.model.dofs.len()];
+        for (dof, w) in track_weights(&self.model, x) {
+            load[dof] += w;
+        }
+        self.static_field(load)
+    }
+
+    /// Influence line of free DOF `dof` (its displacement under a unit
+    /// downward load at ξ on the track, m/N, along the DOF's negative
+    /// direction).
+    pub fn dof_influence_line(&self, dof: usize) -> Result<TrackField, BridgeError> {
+        let mut load = vec![0.0; self.model.dofs.len()];
+        load[dof] = 1.0;
+        self.static_field(load)
+    }
+
+    /// K⁻¹ on the free DOFs (n solves; O(n²) memory), `None` above
+    /// `limit` DOFs.
+    pub fn flexibility(&self, limit: usize) -> Result<Option<ImportedFlexibility>, BridgeError> {
+        let n = self.model.dofs.len();
+        if n > limit {
+            return Ok(None);
+        }
+        let factor = self.pencil.stiffness_factor()?;
+        let mut workspace = factor.workspace()?;
+        let mut inverse = vec![0.0; n * n];
+        for (j, column) in inverse.chunks_mut(n).enumerate() {
+            column[j] = 1.0;
+            factor.solve_in_place(column, &mut workspace);
+        }
+        Ok(Some(ImportedFlexibility {
+            model: self.model.clone(),
+            inverse,
+            order: n,
+        }))
+    }
+}
+
+/// Free DOFs and weights of the track point `x` (m): each track rail's
+/// interpolation weights, averaged over the rails.
+pub fn track_weights(model: &ImportedModel, x: f64) -> Vec<(usize, f64)> {
+    let share = 1.0 / model.track.len() as f64;
+    model
+        .track
+        .iter()
+        .flat_map(|&r| model.rails[r].weights(x, RailDirection::Vertical))
+        .map(|(dof, w)| (dof, share * w))
+        .collect()
+}
+
+/// The field of `components` vectors along the track rails.
+pub fn track_field(
+    model: &ImportedModel,
+    direction: RailDirection,
+    components: usize,
+    value: impl Fn(usize, usize) -> f64,
+) -> TrackField {
+    let rails: Vec<&RailDofs> = model.track.iter().map(|&r| &model.rails[r]).collect();
+    TrackField::new(
+        rails
+            .into_iter()
+            .map(|r| r.field(direction, components, &value))
+            .collect(),
+    )
+}
+
+/// Static flexibility between two track points, G(x, ξ) = N(x)ᵀK⁻¹N(ξ), m/N.
+#[derive(Debug, Clone)]
+pub struct ImportedFlexibility {
+    model: Arc<ImportedModel>,
+    /// K⁻¹, column-major n × n.
+    inverse: Vec<f64>,
+    order: usize,
+}
+
+impl ImportedFlexibility {
+    /// G(x, ξ), m/N; 0 off the track. Cost O(weights²).
+    pub fn green(&self, x: f64, xi: f64) -> f64 {
+        let (at, load) = (
+            track_weights(&self.model, x),
+            track_weights(&self.model, xi),
+        );
+        let n = self.order;
+        let mut sum = 0.0;
+        for &(i, wi) in &at {
+            for &(j, wj) in &load {
+                sum += wi * self.inverse[j * n + i] * wj;
+            }
+        }
+        sum
+    }
+}

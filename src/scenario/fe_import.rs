@@ -1,0 +1,363 @@
+//! Resolving an `fe_import` bridge: reads its files (paths relative to the
+//! scenario), budgets their sizes before reading, and checks them against
+//! each other. Every problem is reported at the scenario key that names the
+//! file, with the file's own line and column in the message.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use super::budget::Budget;
+use super::raw;
+use super::resolve::Checker;
+use super::resolved::*;
+use crate::bridge::fe_import::{
+    Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market,
+    tables,
+};
+
+/// Fewest bytes a matrix entry line takes (`1 1 1` and a line break is 6;
+/// Abaqus's `1,1,1,1,1` 10): the size check before reading counts 10.
+const MIN_ENTRY_BYTES: f64 = 10.0;
+
+/// Resolves the `fe_import` bridge; `None` after reporting its problems.
+pub(super) fn resolve(
+    raw: &raw::FeImportRaw,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Option<FeImport> {
+    let base = Path::new(ck.file())
+        .parent()
+        .unwrap_or(Path::new(""))
+        .to_path_buf();
+    let locate = |file: &str| -> PathBuf {
+        let path = base.join(file);
+        std::path::absolute(&path).unwrap_or(path)
+    };
+    let before = ck.diagnostics.len();
+    let stiffness_path = locate(&raw.stiffness);
+    let mass_path = locate(&raw.mass);
+    let stiffness = read_matrix(&stiffness_path, "bridge.stiffness", budget, ck);
+    let mass = read_matrix(&mass_path, "bridge.mass", budget, ck);
+    let (damping, damping_file) = match &raw.damping {
+        None => (ImportDamping::Modal { ratio: 0.0 }, None),
+        Some(raw::ImportDampingRaw::Modal { ratio }) => {
+            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            (ImportDamping::Modal { ratio: *ratio }, None)
+        }
+        Some(raw::ImportDampingRaw::Rayleigh { frequencies, ratio }) => {
+            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            for (i, &f) in frequencies.iter().enumerate() {
+                ck.positive(
+                    &format!("bridge.damping.frequencies[{i}]"),
+                    f,
+                    "a Rayleigh frequency",
+                );
+            }
+            if frequencies[0] == frequencies[1] {
+                ck.error(
+                    "bridge.damping.frequencies",
+                    "the two Rayleigh frequencies must differ",
+                );
+            }
+            (
+                ImportDamping::Rayleigh {
+                    frequencies: *frequencies,
+                    ratio: *ratio,
+                },
+                None,
+            )
+        }
+        Some(raw::ImportDampingRaw::Matrix { file }) => {
+            let path = locate(file);
+            let read = read_matrix(&path, "bridge.damping.file", budget, ck);
+            (
+                ImportDamping::Matrix {
+                    file: path.display().to_string(),
+                },
+                read,
+            )
+        }
+    };
+    let dof_map_path = raw.dof_map.as_deref().map(locate);
+    let mut rails = Vec::with_capacity(raw.rails.len());
+    let mut rail_inputs = Vec::with_capacity(raw.rails.len());
+    if raw.rails.is_empty() {
+        ck.error(
+            "bridge.rails",
+            "give at least one rail (the nodes the wheels run over)",
+        );
+    }
+    for (i, rail) in raw.rails.iter().enumerate() {
+        let at = format!("bridge.rails[{i}]");
+        if raw.rails[..i].iter().any(|r| r.name == rail.name) {
+            ck.error(
+                &format!("{at}.name"),
+                format!("a second rail named `{}`", rail.name),
+            );
+        }
+        match (&rail.file, &rail.nodes) {
+            (Some(file), None) => {
+                let path = locate(file);
+                let shown = path.display().to_string();
+                let at = format!("{at}.file");
+                if let Some(text) = read_text(&path, &at, budget, ck)
+                    && let Some(nodes) = located(tables::rail(&text), &shown, &at, ck)
+                {
+                    rails.push((rail.name.clone(), nodes));
+                }
+                rail_inputs.push(RailInput {
+                    name: rail.name.clone(),
+                    file: Some(shown),
+                    nodes: None,
+                });
+            }
+            (None, Some(nodes)) => {
+                let mut pairs: Vec<(u64, f64)> = Vec::with_capacity(nodes.len());
+                for (k, n) in nodes.iter().enumerate() {
+                    if let Err(m) = tables::check_next(&pairs, n.node, n.x) {
+                        ck.error(&format!("{at}.nodes[{k}].x"), m);
+                        break;
+                    }
+                    pairs.push((n.node, n.x));
+                }
+                if nodes.len() < 2 {
+                    ck.error(&format!("{at}.nodes"), "a rail needs at least two nodes");
+                }
+                rails.push((rail.name.clone(), pairs));
+                rail_inputs.push(RailInput {
+                    name: rail.name.clone(),
+                    file: None,
+                    nodes: Some(nodes.clone()),
+                });
+            }
+            _ => ck.error(
+                &at,
+                "a rail needs `file` (a CSV `node,x`) or `nodes`, one of them",
+            ),
+        }
+    }
+    let track = match &raw.track {
+        Some(names) => names.clone(),
+        None if (1..=2).contains(&raw.rails.len()) => {
+            raw.rails.iter().map(|r| r.name.clone()).collect()
+        }
+        None => {
+            ck.error(
+                "bridge",
+                "with more than two rails, name the one or two the vehicles run on in `track`",
+            );
+            Vec::new()
+        }
+    };
+    if !(1..=2).contains(&track.len()) && raw.track.is_some() {
+        ck.error("bridge.track", "`track` names one rail or two");
+    }
+    let mut track_index = Vec::new();
+    for (i, name) in track.iter().enumerate() {
+        match raw.rails.iter().position(|r| &r.name == name) {
+            Some(t) => track_index.push(t),
+            None => ck.error(
+                &format!("bridge.track[{i}]"),
+                format!("no rail is named `{name}`"),
+            ),
+        }
+    }
+    let constrained: Vec<NodeDof> = raw.constrained.clone().unwrap_or_default();
+    let modes = super::bridges::resolve_modes(ck, raw.modes.as_ref());
+    if ck.diagnostics.len() != before {
+        return None;
+    }
+    let (stiffness, mass) = (stiffness?, mass?);
+    let map = match &dof_map_path {
+        Some(path) => {
+            let shown = path.display().to_string();
+            let text = read_text(path, "bridge.dof_map", budget, ck)?;
+            // A CSV with its header, or ANSYS's `.mapping` file.
+            let csv = text
+                .lines()
+                .map(str::trim)
+                .find(|l| !l.is_empty() && !l.starts_with('#'))
+                .is_some_and(|l| l.to_ascii_lowercase().replace(' ', "").starts_with("dof,"));
+            let read = if csv {
+                tables::dof_map(&text, stiffness.order)
+            } else {
+                harwell_boeing::mapping(&text, stiffness.order)
+            };
+            Some(located(read, &shown, "bridge.dof_map", ck)?)
+        }
+        None => None,
+    };
+    let pairs: Vec<(u64, Direction)> = constrained.iter().map(|c| (c.node, c.direction)).collect();
+    let model = match ImportedModel::assemble(
+        stiffness,
+        mass,
+        damping_file,
+        map,
+        &pairs,
+        &rails,
+        &track_index,
+    ) {
+        Ok(model) => model,
+        Err(e) => {
+            let (path, file) = match e.source_input {
+                Source::Stiffness => ("bridge.stiffness".to_string(), Some(&stiffness_path)),
+                Source::Mass => ("bridge.mass".to_string(), Some(&mass_path)),
+                Source::Damping => ("bridge.damping.file".to_string(), None),
+                Source::DofMap => ("bridge.dof_map".to_string(), dof_map_path.as_ref()),
+                Source::Constrained(i) => (format!("bridge.constrained[{i}]"), None),
+                Source::Rail(i) => (format!("bridge.rails[{i}]"), None),
+                Source::Track => ("bridge.track".to_string(), None),
+            };
+            let message = match file {
+                Some(f) => format!("{}: {}", f.display(), e.message),
+                None => e.message,
+            };
+            ck.error(&path, message);
+            return None;
+        }
+    };
+    Some(FeImport {
+        stiffness: stiffness_path.display().to_string(),
+        mass: mass_path.display().to_string(),
+        dof_map: dof_map_path.map(|p| p.display().to_string()),
+        constrained,
+        damping,
+        rails: rail_inputs,
+        track,
+        modes,
+        spans: vec![model.length],
+        model: Arc::new(model),
+    })
+}
+
+/// A reader's result, its error reported as `file:line:column: message` at `at`.
+fn located<T>(
+    result: Result<T, ReadError>,
+    shown: &str,
+    at: &str,
+    ck: &mut Checker<'_>,
+) -> Option<T> {
+    match result {
+        Ok(v) => Some(v),
+        Err(e) => {
+            let place = match e.column {
+                Some(c) => format!("{shown}:{}:{c}", e.line),
+                None => format!("{shown}:{}", e.line),
+            };
+            ck.error(at, format!("{place}: {}", e.message));
+            None
+        }
+    }
+}
+
+/// The text of `path`, its size budgeted (as matrix entries of
+/// [`MIN_ENTRY_BYTES`]) before it is read.
+fn read_text(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<String> {
+    let shown = path.display().to_string();
+    let size = match std::fs::metadata(path) {
+        Ok(m) if m.is_file() => m.len(),
+        Ok(_) => {
+            ck.error(at, format!("{shown} is not a file"));
+            return None;
+        }
+        Err(e) => {
+            ck.error(at, format!("cannot read {shown}: {e}"));
+            return None;
+        }
+    };
+    if !budget.check(
+        ck,
+        at,
+        "import_entries",
+        &format!(
+            "entries {shown} may hold ({size} bytes, {MIN_ENTRY_BYTES} bytes an entry at least)"
+        ),
+        (size as f64 / MIN_ENTRY_BYTES).ceil(),
+    ) {
+        return None;
+    }
+    let mut text = String::new();
+    let read = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
+    if let Err(e) = read {
+        ck.error(at, format!("cannot read {shown}: {e}"));
+        return None;
+    }
+    Some(text)
+}
+
+/// Reads a matrix file: Matrix Market by its banner, Abaqus by its comma
+/// separated entry lines, Harwell–Boeing otherwise.
+fn read_matrix(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<MatrixFile> {
+    let text = read_text(path, at, budget, ck)?;
+    let shown = path.display().to_string();
+    let bytes = text.len() as f64;
+    let dofs_limit = budget_limit(budget, ck, at);
+    let result = if text
+        .trim_start()
+        .to_ascii_lowercase()
+        .starts_with("%%matrixmarket")
+    {
+        let mut sizes = |rows: u64, entries: u64| -> Result<(), String> {
+            // A row count or entry count the file cannot hold is refused
+            // before anything is allocated for it.
+            if entries as f64 > bytes / 6.0 {
+                return Err(format!(
+                    "the size line declares {entries} entries but the file has only {bytes} bytes \
+                     (6 bytes an entry at least): it is truncated or the count is wrong"
+                ));
+            }
+            if rows as f64 > dofs_limit {
+                return Err(format!(
+                    "the size line declares {rows} rows, more than the {dofs_limit} DOFs `limits.dofs` \
+                     allows an imported model (50 DOFs a unit); raise it or run with `--allow-large`"
+                ));
+            }
+            Ok(())
+        };
+        matrix_market::parse(&text, &mut sizes)
+    } else if looks_like_abaqus(&text) {
+        abaqus::parse(&text)
+    } else {
+        let mut sizes = |rows: u64, entries: u64| -> Result<(), String> {
+            // Harwell–Boeing writes an index and a value per entry, 2 bytes at least.
+            if entries as f64 > bytes / 2.0 || rows as f64 > dofs_limit {
+                return Err(format!(
+                    "the header declares {rows} rows and {entries} entries: more than the file's \
+                     {bytes} bytes can hold, or than the {dofs_limit} DOFs `limits.dofs` allows \
+                     an imported model (50 DOFs a unit)"
+                ));
+            }
+            Ok(())
+        };
+        harwell_boeing::parse(&text, &mut sizes)
+    };
+    let file = located(result, &shown, at, ck)?;
+    if file.order as f64 > dofs_limit {
+        ck.error(
+            at,
+            format!(
+                "{shown}: {} DOFs is more than the {dofs_limit} `limits.dofs` allows an imported \
+                 model (50 DOFs a unit)",
+                file.order
+            ),
+        );
+        return None;
+    }
+    Some(file)
+}
+
+/// Whether `text` is Abaqus coordinate output: its first line that is not
+/// blank or a `*` keyword has 5 comma-separated fields (a Harwell–Boeing
+/// file starts with a free title and a line of 5 fixed-width integers).
+fn looks_like_abaqus(text: &str) -> bool {
+    text.lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('*'))
+        .is_some_and(|l| l.split(',').count() == 5)
+}
+
+/// The most DOFs of an imported model the budget allows.
+fn budget_limit(budget: &Budget, _ck: &Checker<'_>, _at: &str) -> f64 {
+    budget.limit_of("dofs") * 50.0
+}

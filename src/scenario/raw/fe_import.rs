@@ -1,0 +1,109 @@
+//! The `fe_import` bridge: a finite-element model's matrices read from files.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+
+use super::ModesRaw;
+use crate::bridge::fe_import::Direction;
+
+/// A bridge imported from a finite-element program: stiffness and mass
+/// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`
+/// coordinate output, told apart by their content), the DOF map and the
+/// rails the wheels run on. Paths are relative to the scenario file.
+/// Coordinates: x along the track, y lateral, z vertical up; SI units.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FeImportRaw {
+    /// Stiffness matrix K file (N/m, N·m/rad for rotations).
+    #[schemars(transform = crate::schema::non_empty_string)]
+    pub stiffness: String,
+    /// Mass matrix M file (kg, kg·m² for rotations). Every free DOF needs a
+    /// positive diagonal mass (massless DOFs are refused, not condensed).
+    #[schemars(transform = crate::schema::non_empty_string)]
+    pub mass: String,
+    /// CSV `dof,node,direction` naming each matrix row (1-based) by node
+    /// and direction (ux, uy, uz, rx, ry, rz). Not needed by an Abaqus
+    /// file, which names its DOFs.
+    #[serde(default)]
+    pub dof_map: Option<String>,
+    /// DOFs the matrices still hold but the supports fix: removed on import.
+    #[serde(default)]
+    pub constrained: Option<Vec<NodeDofRaw>>,
+    /// Damping: a modal ratio, Rayleigh, or a damping matrix file. Default 0.
+    #[serde(default)]
+    pub damping: Option<ImportDampingRaw>,
+    /// The rails: each a list of nodes with their x along the track.
+    pub rails: Vec<RailNodesRaw>,
+    /// Names of the rails the vehicles run on: one, or two (a single-track
+    /// 2D vehicle sees their average). Default: every rail, if one or two.
+    #[serde(default)]
+    pub track: Option<Vec<String>>,
+    /// Which modes to keep. Default: chosen automatically, as for a beam.
+    #[serde(default)]
+    pub modes: Option<ModesRaw>,
+}
+
+/// A node's DOF.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NodeDofRaw {
+    /// Node id.
+    pub node: u64,
+    /// Direction.
+    pub direction: Direction,
+}
+
+/// One rail: a CSV `node,x` file or the nodes inline.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RailNodesRaw {
+    /// Rail name (for `track`).
+    #[schemars(transform = crate::schema::non_empty_string)]
+    pub name: String,
+    /// CSV file with header `node,x` (x in m, strictly increasing).
+    #[serde(default)]
+    pub file: Option<String>,
+    /// The nodes inline, in order along the rail.
+    #[serde(default)]
+    pub nodes: Option<Vec<RailNodeRaw>>,
+}
+
+/// A rail node inline.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct RailNodeRaw {
+    /// Node id.
+    pub node: u64,
+    /// Position along the track, m.
+    pub x: f64,
+}
+
+/// Damping of an imported bridge.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[schemars(tag = "type")]
+pub enum ImportDampingRaw {
+    /// The same modal damping ratio ζ for every mode.
+    Modal {
+        /// Damping ratio ζ (fraction of critical, dimensionless).
+        #[schemars(transform = crate::schema::ratio)]
+        ratio: f64,
+    },
+    /// Rayleigh damping matched at two frequencies (Hz) with ratio ζ.
+    Rayleigh {
+        /// The two frequencies, Hz.
+        #[schemars(transform = crate::schema::positive_items)]
+        frequencies: [f64; 2],
+        /// Damping ratio ζ at both (dimensionless).
+        #[schemars(transform = crate::schema::ratio)]
+        ratio: f64,
+    },
+    /// A damping matrix C (N·s/m) in the stiffness file's format and DOF
+    /// numbering: mode i gets ζᵢ = φᵢᵀCφᵢ/(2ωᵢ) (its modal projection;
+    /// the coupling terms φᵢᵀCφⱼ of a non-classical C are left out).
+    Matrix {
+        /// The damping matrix file.
+        #[schemars(transform = crate::schema::non_empty_string)]
+        file: String,
+    },
+}
