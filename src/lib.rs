@@ -9,6 +9,7 @@
 #![warn(missing_docs)]
 
 pub mod bridge;
+pub mod generate;
 pub mod model;
 pub mod record;
 pub mod report;
