@@ -3,7 +3,9 @@
 //! phase; the vbi side of benches/viaduct_eigen.sh (scipy's side:
 //! benches/viaduct_eigen.py).
 //!
-//! Usage: mtx_modes DIR [COUNT=100]
+//! Usage: mtx_modes DIR [COUNT=100] [--phases | --cache CACHE_DIR]
+//! With `--cache`, the modes go through the modes cache (a second run reads
+//! them back and re-checks them).
 //! Prints the phases' times, the frequencies (Hz, one per line after a
 //! `frequencies` line) and the checks.
 //!
@@ -51,6 +53,49 @@ fn main() {
     let t = Instant::now();
     pencil.stiffness_factor().expect("factor");
     let factor_time = t.elapsed().as_secs_f64();
+    if args.get(3).is_some_and(|a| a == "--phases") {
+        // The phases of lowest_unverified, timed one by one.
+        let factor = pencil.stiffness_factor().expect("factor");
+        let t = Instant::now();
+        let (_, ritz) =
+            vbi::bridge::eigen::lanczos::lowest(&pencil.mass, factor, 0.0, count + 4, None)
+                .expect("lanczos");
+        let lanczos_time = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let product = |x: &[f64], y: &mut [f64]| {
+            vbi::bridge::eigen::sparse::multiply(&pencil.stiffness, x, y)
+        };
+        let (values, _) =
+            vbi::bridge::eigen::lanczos::polish(&pencil.mass, factor, None, &product, &ritz)
+                .expect("polish");
+        let polish_time = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let counted = pencil.count_below(values[count] * 0.999).expect("inertia");
+        println!(
+            "phases: lanczos {lanczos_time:.2} s, polish {polish_time:.2} s, inertia count {:.2} s ({counted})",
+            t.elapsed().as_secs_f64()
+        );
+    }
+    if args.get(3).is_some_and(|a| a == "--cache") {
+        let cache = vbi::bridge::eigen::cache::ModesCache {
+            folder: args.get(4).expect("--cache DIR").into(),
+            kind: "fe_import".into(),
+        };
+        let t = Instant::now();
+        let (pairs, outcome) = pencil.lowest_cached(count, &cache).expect("modes");
+        println!("order {n}, modes {count}");
+        println!(
+            "read {read_time:.2} s, factor K {factor_time:.2} s, modes through the cache ({outcome:?}, checks included) {:.2} s, total {:.2} s",
+            t.elapsed().as_secs_f64(),
+            start.elapsed().as_secs_f64()
+        );
+        println!("checks {:?}", pairs.check);
+        println!("frequencies");
+        for lambda in &pairs.eigenvalues {
+            println!("{:.12e}", lambda.sqrt() / (2.0 * std::f64::consts::PI));
+        }
+        return;
+    }
     let t = Instant::now();
     let mut pairs = pencil.lowest_unverified(count, None).expect("modes");
     let solve_time = t.elapsed().as_secs_f64();

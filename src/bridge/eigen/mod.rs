@@ -22,6 +22,7 @@
 //!   returned eigenvalue counts exactly the modes returned (Sturm sequence
 //!   property), so no mode in the range is missing.
 
+pub mod cache;
 pub mod dense;
 pub mod lanczos;
 pub mod sparse;
