@@ -1,4 +1,4 @@
-#!/bin/sh
+#!/bin/bash
 # Lowest 100 modes of the generated ~157,000-DOF viaduct: vbi against
 # scipy.sparse.linalg.eigsh(K, 100, M, sigma=0), same files, one after the
 # other, wall time and peak memory from /usr/bin/time -v. See BENCHMARKS.md.
@@ -20,6 +20,22 @@ echo "== vbi"
     > "$work/vbi.txt" 2> "$work/vbi.time"
 head -3 "$work/vbi.txt"
 grep -E "Elapsed|Maximum resident" "$work/vbi.time"
+echo "== vbi through the modes cache: first run (miss, solves and writes), second (hit, reads and re-checks)"
+rm -rf "$work/cache"
+for run in first second; do
+    /usr/bin/time -v ./target/release/examples/mtx_modes "$work/viaduct" 100 --cache "$work/cache" \
+        > "$work/vbi-cache-$run.txt" 2> "$work/vbi-cache-$run.time"
+    sed -n 2p "$work/vbi-cache-$run.txt"
+    grep -E "Elapsed|Maximum resident" "$work/vbi-cache-$run.time"
+done
+if diff <(sed 1,2d "$work/vbi-cache-first.txt") <(sed 1,2d "$work/vbi-cache-second.txt") >/dev/null; then
+    echo "cached run: frequencies and check figures identical to the solving run"
+else
+    echo "cached run DIFFERS from the solving run"
+fi
+echo "== vbi phases (Lanczos, polish, inertia count timed apart; a separate run)"
+./target/release/examples/mtx_modes "$work/viaduct" 100 --phases > "$work/vbi-phases.txt"
+head -1 "$work/vbi-phases.txt"
 echo "== scipy"
 /usr/bin/time -v "$python" benches/viaduct_eigen.py "$work/viaduct" 100 \
     > "$work/scipy.txt" 2> "$work/scipy.time"
