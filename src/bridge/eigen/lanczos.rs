@@ -395,3 +395,107 @@ fn try_zeros(n: usize, m: usize) -> Result<Mat<f64>, BridgeError> {
     drop(probe);
     Ok(Mat::zeros(n, m))
 }
+
+/// Polish by one block step of subspace iteration and a Rayleigh–Ritz
+/// projection (Bathe, Finite Element Procedures, §11.6), all dense work as
+/// matrix–matrix products: W = K⁻¹ M Φ (one solve per vector), then the
+/// projected pencil A = Wᵀ K W = Wᵀ M Φ (K W = M Φ exactly, so no product
+/// with K and none of its round-off ε·λ_max), B = Wᵀ M W; with B = L Lᵀ,
+/// the eigenpairs (λ, z) of L⁻¹ A L⁻ᵀ give Φ' = W L⁻ᵀ Z, M-orthonormal.
+/// Same effect as [`polish`] (inverse iteration divides the error along a
+/// higher mode j by λⱼ/λ) at a cost of O(n·k²) in three matrix products
+/// instead of k Gram–Schmidt sweeps. For a factor of K (shift 0) only.
+pub fn polish_block(
+    mass: &SymmetricSparse,
+    stiffness: &SymmetricSparse,
+    factor: &Factor,
+    vectors: &Mat<f64>,
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    let (n, k) = (vectors.nrows(), vectors.ncols());
+    let mut workspace = factor.workspace()?;
+    let mut m_phi = try_zeros(n, k)?;
+    let mut w = try_zeros(n, k)?;
+    let mut m_w = try_zeros(n, k)?;
+    let mut column = vec![0.0; n];
+    let mut product = vec![0.0; n];
+    for c in 0..k {
+        let phi: Vec<f64> = vectors.col(c).iter().copied().collect();
+        multiply(mass, &phi, &mut product);
+        column.copy_from_slice(&product);
+        factor.solve_in_place(&mut column, &mut workspace);
+        // Scale each column to unit M-norm so B is well conditioned.
+        let mut m_col = vec![0.0; n];
+        let norm = m_norm(mass, &column, &mut m_col);
+        if !(norm > 0.0 && norm.is_finite()) {
+            return Err(BridgeError::EigenFailed);
+        }
+        for v in column.iter_mut() {
+            *v /= norm;
+        }
+        multiply(stiffness, &column, &mut product);
+        for i in 0..n {
+            m_phi[(i, c)] = product[i];
+            w[(i, c)] = column[i];
+            m_w[(i, c)] = m_col[i] / norm;
+        }
+    }
+    let mut a = Mat::<f64>::zeros(k, k);
+    let mut b = Mat::<f64>::zeros(k, k);
+    // Column c of W and of MΦ share the scale 1/norm_c, so Wᵀ(MΦ) stays
+    // the projection of K on the scaled W.
+    matmul(
+        a.as_mut(),
+        Accum::Replace,
+        w.transpose(),
+        m_phi.as_ref(),
+        1.0,
+        Par::Seq,
+    );
+    matmul(
+        b.as_mut(),
+        Accum::Replace,
+        w.transpose(),
+        m_w.as_ref(),
+        1.0,
+        Par::Seq,
+    );
+    let a = Mat::from_fn(k, k, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
+    let b = Mat::from_fn(k, k, |i, j| 0.5 * (b[(i, j)] + b[(j, i)]));
+    let llt = b.llt(Side::Lower).map_err(|_| BridgeError::EigenFailed)?;
+    let l = llt.L().to_owned();
+    // C = L⁻¹ A L⁻ᵀ by two triangular solves.
+    let mut c = a;
+    faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+        l.as_ref(),
+        c.as_mut(),
+        Par::Seq,
+    );
+    let mut ct = c.transpose().to_owned();
+    faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+        l.as_ref(),
+        ct.as_mut(),
+        Par::Seq,
+    );
+    let c = Mat::from_fn(k, k, |i, j| 0.5 * (ct[(i, j)] + ct[(j, i)]));
+    let eig = c
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    // Y = L⁻ᵀ Z.
+    let mut y = eig.U().to_owned();
+    faer::linalg::triangular_solve::solve_upper_triangular_in_place(
+        l.transpose(),
+        y.as_mut(),
+        Par::Seq,
+    );
+    let mut polished = try_zeros(n, k)?;
+    matmul(
+        polished.as_mut(),
+        Accum::Replace,
+        w.as_ref(),
+        y.as_ref(),
+        1.0,
+        Par::Seq,
+    );
+    let eigenvalues = (0..k).map(|i| eig.S()[i]).collect();
+    Ok((eigenvalues, polished))
+}

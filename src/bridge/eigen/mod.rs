@@ -193,7 +193,14 @@ impl Pencil {
                     Some(accurate) => accurate,
                     None => &assembled,
                 };
-                lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?
+                match stiffness {
+                    // An accurate product (a beam): per-vector polish with
+                    // refined solves and Rayleigh quotients through it.
+                    Some(_) => lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?,
+                    // The assembled matrices are all there is: block
+                    // Rayleigh–Ritz, by matrix products.
+                    None => lanczos::polish_block(&self.mass, &self.stiffness, factor, &ritz)?,
+                }
             };
             let Some(gap) = first_gap(&eigenvalues, count, dense || want == n) else {
                 extra *= 2;
