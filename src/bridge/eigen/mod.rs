@@ -187,6 +187,13 @@ impl Pencil {
                 dense::lowest_inverted(&self.stiffness.to_dense(), &self.mass.to_dense())?
             } else {
                 let factor = self.stiffness_factor()?;
+                if stiffness.is_none() {
+                    // The dense k × k work (tridiagonal and Rayleigh–Ritz
+                    // eigen problems, Cholesky) runs sequentially, as the
+                    // dense path's does, so the result does not depend on
+                    // the thread count.
+                    faer::set_global_parallelism(faer::Par::Seq);
+                }
                 let (_, ritz) = lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?;
                 let assembled = |x: &[f64], y: &mut [f64]| multiply(&self.stiffness, x, y);
                 let product: lanczos::Product<'_> = match stiffness {
