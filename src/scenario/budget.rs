@@ -30,7 +30,7 @@ pub struct Limits {
     /// Bridge modes kept.
     pub modes: f64,
     /// DOFs × modes² of a beam's eigen solve (default 2e9: 100 modes of
-    /// the 157,296-DOF generated viaduct, 1.6e9, take 22 s with the checks on
+    /// the 157,296-DOF generated viaduct, 1.6e9, take 12–22 s with the checks on
     /// a shared 2-core machine, BENCHMARKS.md; the fuzz input of 4e9 that
     /// took 18–30 s in `vbi check` stays refused).
     pub eigen_work: f64,
