@@ -11,6 +11,7 @@
 pub mod bridge;
 pub mod export;
 pub mod ground;
+pub mod generate;
 pub mod model;
 pub mod record;
 pub mod report;

@@ -29,7 +29,10 @@ pub struct Limits {
     pub dofs: f64,
     /// Bridge modes kept.
     pub modes: f64,
-    /// DOFs × modes² of a beam's eigen solve.
+    /// DOFs × modes² of a beam's eigen solve (default 2e9: 100 modes of
+    /// the 157,296-DOF generated viaduct, 1.6e9, take 12–22 s with the checks on
+    /// a shared 2-core machine, BENCHMARKS.md; the fuzz input of 4e9 that
+    /// took 18–30 s in `vbi check` stays refused).
     pub eigen_work: f64,
     /// Time steps of one run.
     pub steps: f64,
@@ -65,7 +68,7 @@ impl Default for Limits {
         Limits {
             dofs: 2000.0,
             modes: 500.0,
-            eigen_work: 1e9,
+            eigen_work: 2e9,
             steps: 1e7,
             study_steps: 2e8,
             wheels: 500.0,

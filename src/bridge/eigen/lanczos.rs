@@ -395,3 +395,101 @@ fn try_zeros(n: usize, m: usize) -> Result<Mat<f64>, BridgeError> {
     drop(probe);
     Ok(Mat::zeros(n, m))
 }
+
+/// Polish by one block step of subspace iteration and a Rayleigh–Ritz
+/// projection (Bathe, Finite Element Procedures, §11.6), all dense work as
+/// matrix–matrix products: W = K⁻¹ M Φ (one solve per vector), then the
+/// projected pencil A = Wᵀ (K W) (K by its sparse product: the shortcut
+/// K W = M Φ carries the solve's error into A, and on the 157,296-DOF
+/// viaduct left an energy residual of 8.4e-9 against 2.7e-9 this way),
+/// B = Wᵀ M W, the columns of W scaled to unit M-norm; with B = L Lᵀ,
+/// the eigenpairs (λ, z) of L⁻¹ A L⁻ᵀ give Φ' = W L⁻ᵀ Z, M-orthonormal.
+/// Same effect as [`polish`] (inverse iteration divides the error along a
+/// higher mode j by λⱼ/λ) at a cost of O(n·k²) in three matrix products
+/// instead of k Gram–Schmidt sweeps. For a factor of K (shift 0) only.
+pub fn polish_block(
+    mass: &SymmetricSparse,
+    stiffness: &SymmetricSparse,
+    factor: &Factor,
+    vectors: &Mat<f64>,
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    let (n, k) = (vectors.nrows(), vectors.ncols());
+    let mut workspace = factor.workspace()?;
+    // Two n × k matrices only: W, and P holding K W, then M W, then the
+    // result W Y.
+    let mut w = try_zeros(n, k)?;
+    let mut p = try_zeros(n, k)?;
+    let mut column = vec![0.0; n];
+    let mut product = vec![0.0; n];
+    for c in 0..k {
+        let phi: Vec<f64> = vectors.col(c).iter().copied().collect();
+        multiply(mass, &phi, &mut column);
+        factor.solve_in_place(&mut column, &mut workspace);
+        // Scale each column to unit M-norm so B is well conditioned.
+        let norm = m_norm(mass, &column, &mut product);
+        if !(norm > 0.0 && norm.is_finite()) {
+            return Err(BridgeError::EigenFailed);
+        }
+        for i in 0..n {
+            w[(i, c)] = column[i] / norm;
+        }
+    }
+    let mut a = Mat::<f64>::zeros(k, k);
+    let mut b = Mat::<f64>::zeros(k, k);
+    for (target, matrix) in [(&mut a, stiffness), (&mut b, mass)] {
+        for c in 0..k {
+            let wc: Vec<f64> = w.col(c).iter().copied().collect();
+            multiply(matrix, &wc, &mut product);
+            for (i, &v) in product.iter().enumerate() {
+                p[(i, c)] = v;
+            }
+        }
+        matmul(
+            target.as_mut(),
+            Accum::Replace,
+            w.transpose(),
+            p.as_ref(),
+            1.0,
+            Par::Seq,
+        );
+    }
+    let a = Mat::from_fn(k, k, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
+    let b = Mat::from_fn(k, k, |i, j| 0.5 * (b[(i, j)] + b[(j, i)]));
+    let llt = b.llt(Side::Lower).map_err(|_| BridgeError::EigenFailed)?;
+    let l = llt.L().to_owned();
+    // C = L⁻¹ A L⁻ᵀ by two triangular solves.
+    let mut c = a;
+    faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+        l.as_ref(),
+        c.as_mut(),
+        Par::Seq,
+    );
+    let mut ct = c.transpose().to_owned();
+    faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+        l.as_ref(),
+        ct.as_mut(),
+        Par::Seq,
+    );
+    let c = Mat::from_fn(k, k, |i, j| 0.5 * (ct[(i, j)] + ct[(j, i)]));
+    let eig = c
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    // Y = L⁻ᵀ Z.
+    let mut y = eig.U().to_owned();
+    faer::linalg::triangular_solve::solve_upper_triangular_in_place(
+        l.transpose(),
+        y.as_mut(),
+        Par::Seq,
+    );
+    let mut polished = p;
+    matmul(
+        polished.as_mut(),
+        Accum::Replace,
+        w.as_ref(),
+        y.as_ref(),
+        1.0,
+        Par::Seq,
+    );
+    let eigenvalues = (0..k).map(|i| eig.S()[i]).collect();
+    Ok((eigenvalues, polished))
+}

@@ -22,6 +22,7 @@
 //!   returned eigenvalue counts exactly the modes returned (Sturm sequence
 //!   property), so no mode in the range is missing.
 
+pub mod cache;
 pub mod dense;
 pub mod lanczos;
 pub mod sparse;
@@ -186,13 +187,27 @@ impl Pencil {
                 dense::lowest_inverted(&self.stiffness.to_dense(), &self.mass.to_dense())?
             } else {
                 let factor = self.stiffness_factor()?;
+                if stiffness.is_none() {
+                    // The dense k × k work (tridiagonal and Rayleigh–Ritz
+                    // eigen problems, Cholesky) runs sequentially, as the
+                    // dense path's does, so the result does not depend on
+                    // the thread count.
+                    faer::set_global_parallelism(faer::Par::Seq);
+                }
                 let (_, ritz) = lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?;
                 let assembled = |x: &[f64], y: &mut [f64]| multiply(&self.stiffness, x, y);
                 let product: lanczos::Product<'_> = match stiffness {
                     Some(accurate) => accurate,
                     None => &assembled,
                 };
-                lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?
+                match stiffness {
+                    // An accurate product (a beam): per-vector polish with
+                    // refined solves and Rayleigh quotients through it.
+                    Some(_) => lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?,
+                    // The assembled matrices are all there is: block
+                    // Rayleigh–Ritz, by matrix products.
+                    None => lanczos::polish_block(&self.mass, &self.stiffness, factor, &ritz)?,
+                }
             };
             let Some(gap) = first_gap(&eigenvalues, count, dense || want == n) else {
                 extra *= 2;

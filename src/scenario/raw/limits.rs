@@ -18,8 +18,8 @@ pub struct LimitsRaw {
     #[serde(default)]
     pub modes: Option<f64>,
     /// Most work of a beam's eigen solve, DOFs × modes² (shift-invert
-    /// Lanczos with full re-orthogonalisation: time ∝ n k²). Default 1e9,
-    /// a few seconds.
+    /// Lanczos with full re-orthogonalisation: time ∝ n k²). Default 2e9,
+    /// some seconds (100 modes of 160,000 DOFs).
     #[serde(default)]
     pub eigen_work: Option<f64>,
     /// Most time steps of one run. Default 1e7.
