@@ -10,8 +10,8 @@
 
 pub mod bridge;
 pub mod export;
-pub mod ground;
 pub mod generate;
+pub mod ground;
 pub mod model;
 pub mod record;
 pub mod report;

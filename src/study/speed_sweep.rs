@@ -204,10 +204,11 @@ fn run_point(
         crate::scenario::resolved::Surface::Random { seed, .. } => Some(seed),
         _ => None,
     };
+    // From the running extremes: a sweep's runs keep no samples.
     let max_abs = history
-        .columns
+        .extremes
         .iter()
-        .map(|c| c.values.iter().fold(0.0f64, |m, v| m.max(v.abs())))
+        .map(|e| e.all.max_abs.map_or(0.0, |s| s.value.abs()))
         .collect();
     Ok(SweepPoint {
         roughness,
