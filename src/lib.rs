@@ -21,4 +21,5 @@ pub mod schema;
 pub mod solve;
 pub mod study;
 pub mod surface;
+pub mod text_table;
 pub mod vehicle;

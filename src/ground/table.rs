@@ -42,21 +42,9 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
         acceleration: Vec::new(),
         unit: None,
     };
-    let mut first_row = true;
-    for (i, line) in text.lines().enumerate() {
-        let n = i + 1;
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let fields: Vec<&str> = if line.contains(',') {
-            line.split(',').map(str::trim).collect()
-        } else {
-            line.split_whitespace().collect()
-        };
-        let header = first_row && fields.iter().any(|f| f.parse::<f64>().is_err());
-        first_row = false;
-        if header {
+    for row in crate::text_table::rows(text) {
+        let (n, fields) = (row.line, row.fields);
+        if row.header {
             if let Some(field) = fields.get(1) {
                 table.unit = bracketed_unit(field, n)?;
             }

@@ -324,6 +324,9 @@ pub struct Recorder<'m> {
     on_deck: Vec<usize>,
     /// Whether samples are kept at all (else only the extremes).
     keep: bool,
+    /// Whether a column adds the ground's displacement (then it is
+    /// integrated each step).
+    absolute_displacement: bool,
 }
 
 impl<'m> Recorder<'m> {
@@ -514,6 +517,9 @@ impl<'m> Recorder<'m> {
         } else {
             Vec::new()
         };
+        let absolute_displacement = columns
+            .iter()
+            .any(|c| c.absolute == Some(GroundTerm::Displacement));
         Ok(Self {
             model,
             history: History {
@@ -531,6 +537,7 @@ impl<'m> Recorder<'m> {
             envelope: None,
             on_deck: Vec::with_capacity(model.wheels.len()),
             keep: true,
+            absolute_displacement,
         })
     }
 
@@ -743,6 +750,20 @@ impl Observer for Recorder<'_> {
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
         }
+        // The ground's motion this step (0 without ground motion), once for
+        // every column: acceleration, and displacement only if a record
+        // asks for it.
+        let (ground_acceleration, ground_displacement) = match &model.ground {
+            None => (0.0, 0.0),
+            Some(ground) => (
+                ground.vertical_acceleration(view.time),
+                if self.absolute_displacement {
+                    ground.vertical_motion(view.time).1
+                } else {
+                    0.0
+                },
+            ),
+        };
         for (column, extremes) in self
             .history
             .columns
@@ -798,16 +819,14 @@ impl Observer for Recorder<'_> {
                     view.vehicles[*vehicle].acceleration[*dof]
                 }
             };
-            let value = match &model.ground {
-                None => value,
-                Some(ground) => {
-                    let acceleration = ground.vertical_acceleration(view.time);
-                    let own = match column.absolute {
-                        None => 0.0,
-                        Some(GroundTerm::Acceleration) => acceleration,
-                        Some(GroundTerm::Displacement) => ground.vertical_motion(view.time).1,
-                    };
-                    value + column.ground_static * acceleration + own
+            let value = match column.absolute {
+                _ if model.ground.is_none() => value,
+                None => value + column.ground_static * ground_acceleration,
+                Some(GroundTerm::Acceleration) => {
+                    value + column.ground_static * ground_acceleration + ground_acceleration
+                }
+                Some(GroundTerm::Displacement) => {
+                    value + column.ground_static * ground_acceleration + ground_displacement
                 }
             };
             extremes.all.push(view.step, view.time, value);

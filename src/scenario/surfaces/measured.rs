@@ -60,29 +60,14 @@ pub(super) fn read(path: &Path, budget: &Budget, ck: &mut Checker<'_>) -> Option
 
 /// Parses the CSV text; an error is (1-based line, message).
 pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
-    let rows = text
-        .lines()
-        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-        .count();
+    let rows = crate::text_table::count(text);
     let mut x = Vec::with_capacity(rows);
     let mut left = Vec::with_capacity(rows);
     let mut right: Vec<f64> = Vec::new();
     let mut columns = None;
-    let mut first_row = true;
-    for (i, line) in text.lines().enumerate() {
-        let n = i + 1;
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let fields: Vec<&str> = if line.contains(',') {
-            line.split(',').map(str::trim).collect()
-        } else {
-            line.split_whitespace().collect()
-        };
-        let is_header = first_row && fields.iter().any(|f| f.parse::<f64>().is_err());
-        first_row = false;
-        if is_header {
+    for row in crate::text_table::rows(text) {
+        let (n, fields) = (row.line, row.fields);
+        if row.header {
             continue;
         }
         let count = fields.len();
