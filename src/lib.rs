@@ -9,6 +9,7 @@
 #![warn(missing_docs)]
 
 pub mod bridge;
+pub mod contact;
 pub mod export;
 pub mod generate;
 pub mod ground;

@@ -5,6 +5,7 @@
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
+use crate::contact::ContactDirection;
 use crate::scenario::resolved::{Contact, Iteration, Scenario, SolverMethod};
 use crate::surface::{Profile, Rail};
 use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
@@ -195,6 +196,18 @@ impl Model {
             gravity: scenario.gravity,
             ground: ground_excitation(scenario, &bridge_participation),
         })
+    }
+
+    /// The track irregularity a contact in `direction` follows at `x` (m)
+    /// on `rail`: (value m, slope, curvature 1/m). Vertical: the surface
+    /// profile ([`Profile::elevation_slope_curvature_on`]); lateral: the
+    /// rails' alignment, zero while the surface gives none.
+    #[inline]
+    pub fn irregularity(&self, direction: ContactDirection, rail: Rail, x: f64) -> (f64, f64, f64) {
+        match direction {
+            ContactDirection::Vertical => self.profile.elevation_slope_curvature_on(rail, x),
+            ContactDirection::Lateral => (0.0, 0.0, 0.0),
+        }
     }
 
     /// Vertical ground acceleration at run time `t` (s), m/s² (0 without

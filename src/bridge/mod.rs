@@ -17,6 +17,8 @@ use std::f64::consts::PI;
 
 use thiserror::Error;
 
+use crate::contact::ContactDirection;
+
 use self::beam::BeamModel;
 use self::fe_import::modal::{ImportedFlexibility, ImportedShapes};
 use self::fe_import::track::TrackField;
@@ -520,6 +522,46 @@ impl ModalBridge {
                 Some((_, line)) => line.values_slopes_curvatures_at(x, values, slopes, curvatures),
                 None => modes.values_slopes_curvatures_at(x, y, values, slopes, curvatures),
             },
+        }
+    }
+
+    /// Mode components in `direction` at (x, y) — values (1/√kg), slopes
+    /// ∂/∂x (1/(m√kg)) and curvatures ∂²/∂x² (1/(m²√kg)) of every kept
+    /// mode's displacement in that direction (+z up, +y left of travel)
+    /// at the rail point x along the bridge, y across it; zero off the
+    /// bridge. Vertical: [`ModalBridge::mode_values_slopes_curvatures`].
+    /// Lateral: zero for a bridge modelled in the vertical plane only (a
+    /// plane beam, a plate: it does not move sideways, so a wheelset
+    /// following its rails laterally only follows their alignment).
+    #[inline]
+    pub fn mode_components(
+        &self,
+        direction: ContactDirection,
+        x: f64,
+        y: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        match direction {
+            ContactDirection::Vertical => {
+                self.mode_values_slopes_curvatures(x, y, values, slopes, curvatures)
+            }
+            ContactDirection::Lateral => {
+                values.fill(0.0);
+                slopes.fill(0.0);
+                curvatures.fill(0.0);
+            }
+        }
+    }
+
+    /// Mode values in `direction` at (x, y), 1/√kg
+    /// ([`ModalBridge::mode_components`]).
+    #[inline]
+    pub fn mode_values_in(&self, direction: ContactDirection, x: f64, y: f64, values: &mut [f64]) {
+        match direction {
+            ContactDirection::Vertical => self.mode_values(x, y, values),
+            ContactDirection::Lateral => values.fill(0.0),
         }
     }
 

@@ -22,6 +22,7 @@ use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::partition::Partition;
 use super::{SolveError, VehicleState};
+use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
@@ -36,6 +37,8 @@ pub struct ContactWheel {
     pub dof: usize,
     /// Transverse position on the deck, m.
     pub y: f64,
+    /// The direction in which the wheel follows the bridge and its rail.
+    pub direction: ContactDirection,
 }
 
 /// Mode shape data of one contact point at the current step.
@@ -128,6 +131,7 @@ impl PermanentContacts {
                         vehicle: r.vehicle,
                         dof,
                         y: model.wheel_y[flat],
+                        direction: vehicle.wheels[r.wheel].direction,
                     });
                     wheel_dofs[r.vehicle].push(dof);
                 }
@@ -222,7 +226,8 @@ impl PermanentContacts {
             let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
             self.path[c] = (v, a);
             let s = &mut self.shapes[c];
-            bridge.mode_values_slopes_curvatures(
+            bridge.mode_components(
+                contact.direction,
                 x,
                 contact.y,
                 &mut s.values,
@@ -242,9 +247,8 @@ impl PermanentContacts {
                     *row += a * slope;
                 }
             }
-            let (r, dr, ddr) = model
-                .profile
-                .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
+            let (r, dr, ddr) =
+                model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x);
             self.surface[c] = (r, dr, ddr);
             self.base[c] = [
                 dot(&s.values, q_star) + r,
@@ -269,6 +273,15 @@ impl PermanentContacts {
             let nc = self.contacts.len();
             for c in 0..nc {
                 for d in 0..=c {
+                    // The static correction covers vertical contacts
+                    // (the bridges' flexibility is vertical).
+                    if self.contacts[c].direction != ContactDirection::Vertical
+                        || self.contacts[d].direction != ContactDirection::Vertical
+                    {
+                        self.residual[c * nc + d] = 0.0;
+                        self.residual[d * nc + c] = 0.0;
+                        continue;
+                    }
                     let r = bridge.residual_flexibility(
                         wheel_positions[self.contacts[c].wheel],
                         wheel_positions[self.contacts[d].wheel],

@@ -142,6 +142,7 @@ pub fn build(v: &H20Truck, gravity: f64) -> VehicleModel {
                 },
                 lateral: sign * track / 2.0,
                 kind: WheelKind::Dof(CONTACT + wheel),
+                direction: crate::contact::ContactDirection::Vertical,
             });
         }
     }
@@ -155,6 +156,7 @@ pub fn build(v: &H20Truck, gravity: f64) -> VehicleModel {
         damping,
         stiffness,
         gravity_load,
+        lateral_ground_load: DVector::zeros(0),
         blocks: std::iter::once(0..DOFS).collect(),
         wheels,
         speed: v.speed,

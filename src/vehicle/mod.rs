@@ -15,6 +15,7 @@ pub mod rail_car;
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
 
+use crate::contact::ContactDirection;
 use crate::scenario::resolved::Vehicle;
 
 /// Errors while building a vehicle model.
@@ -48,6 +49,10 @@ pub struct Wheel {
     pub lateral: f64,
     /// Load or degree of freedom.
     pub kind: WheelKind,
+    /// The direction in which the wheel follows the rail (a load acts
+    /// vertically): one vehicle DOF per contact direction, so a 3D wheelset
+    /// has a vertical contact per rail and a lateral one.
+    pub direction: ContactDirection,
 }
 
 /// A vehicle as the solvers see it.
@@ -68,6 +73,13 @@ pub struct VehicleModel {
     pub stiffness: DMatrix<f64>,
     /// Gravity loads on the DOFs, N (negative: downward).
     pub gravity_load: DVector<f64>,
+    /// −M δ_y: the load on each DOF per unit lateral ground acceleration,
+    /// N/(m/s²) (δ_y is 1 on the DOFs that translate with a rigid lateral
+    /// shift of the whole vehicle, 0 elsewhere), so a lateral record üg
+    /// loads the vehicle with üg · this vector in relative coordinates
+    /// (EMBS paper, Eq. 3 and 6). Empty for a vehicle without lateral DOFs
+    /// (every model but `train_3d`): it has nothing to shake sideways.
+    pub lateral_ground_load: DVector<f64>,
     /// Independent diagonal blocks of M, C and K (DOF ranges, in order,
     /// covering every DOF): the matrices are zero outside them. One block
     /// for a single vehicle; one per car for a train, whose cars are not

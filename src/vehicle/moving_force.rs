@@ -21,6 +21,7 @@ pub fn build(v: &MovingForce) -> VehicleModel {
                 offset,
                 lateral: 0.0,
                 kind: WheelKind::Load(load),
+                direction: crate::contact::ContactDirection::Vertical,
             }
         })
         .collect();
@@ -30,6 +31,7 @@ pub fn build(v: &MovingForce) -> VehicleModel {
         damping: DMatrix::zeros(0, 0),
         stiffness: DMatrix::zeros(0, 0),
         gravity_load: DVector::zeros(0),
+        lateral_ground_load: DVector::zeros(0),
         blocks: Vec::new(),
         wheels,
         speed: v.speed,

@@ -27,11 +27,13 @@ pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {
             -v.sprung_mass * gravity,
             -v.unsprung_mass * gravity,
         ]),
+        lateral_ground_load: DVector::zeros(0),
         blocks: std::iter::once(0..2).collect(),
         wheels: vec![Wheel {
             offset: 0.0,
             lateral: 0.0,
             kind: WheelKind::Dof(1),
+            direction: crate::contact::ContactDirection::Vertical,
         }],
         speed: v.speed,
         acceleration: 0.0,

@@ -173,6 +173,7 @@ fn assemble(
                 offset: front + offset,
                 lateral: 0.0,
                 kind: WheelKind::Dof(first + WHEELSET + w),
+                direction: crate::contact::ContactDirection::Vertical,
             });
         }
     }
@@ -182,6 +183,7 @@ fn assemble(
         damping,
         stiffness,
         gravity_load,
+        lateral_ground_load: DVector::zeros(0),
         blocks: (0..cars.len()).map(|k| DOFS * k..DOFS * (k + 1)).collect(),
         wheels,
         speed,
