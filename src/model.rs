@@ -164,6 +164,15 @@ impl Model {
         } else {
             bridge.vertical_participation(&scenario.bridge)
         };
+        let lateral_participation = if scenario
+            .ground_motion
+            .iter()
+            .any(|g| g.direction == crate::ground::Direction::Lateral)
+        {
+            bridge.lateral_participation(&scenario.bridge)
+        } else {
+            (Vec::new(), 0.0)
+        };
         let end_time = end_time(scenario, &vehicles, bridge.length);
         let time_step = scenario.solver.time_step;
         // A step count that reaches the end time; the last step may overshoot
@@ -194,7 +203,7 @@ impl Model {
             iteration: scenario.solver.iteration.unwrap_or_default(),
             girder_lines: scenario.bridge.girder_lines(),
             gravity: scenario.gravity,
-            ground: ground_excitation(scenario, &bridge_participation),
+            ground: ground_excitation(scenario, &bridge_participation, lateral_participation),
         })
     }
 
@@ -217,6 +226,23 @@ impl Model {
         self.ground
             .as_ref()
             .map_or(0.0, |g| g.vertical_acceleration(t))
+    }
+
+    /// Lateral ground acceleration at run time `t` (s), m/s² (0 without a
+    /// lateral record).
+    #[inline]
+    pub fn lateral_ground_acceleration(&self, t: f64) -> f64 {
+        self.ground
+            .as_ref()
+            .map_or(0.0, |g| g.lateral_acceleration(t))
+    }
+
+    /// Participation factors of a lateral support motion (empty without a
+    /// lateral record), √kg.
+    pub fn lateral_ground_participation(&self) -> &[f64] {
+        self.ground
+            .as_ref()
+            .map_or(&[], |g| g.lateral_participation.as_slice())
     }
 
     /// Participation factors of a vertical support motion (empty without
@@ -272,22 +298,29 @@ pub fn end_time(scenario: &Scenario, vehicles: &[VehicleModel], length: f64) -> 
     last_exit + scenario.solver.free_vibration
 }
 
-/// The vertical support excitation of `scenario`, if it has ground motion.
+/// The support excitation of `scenario`, if it has ground motion.
 fn ground_excitation(
     scenario: &Scenario,
     (participation, total_mass): &(Vec<f64>, f64),
+    (lateral_participation, lateral_mass): (Vec<f64>, f64),
 ) -> Option<crate::ground::GroundExcitation> {
     if scenario.ground_motion.is_empty() {
         return None;
     }
-    Some(crate::ground::GroundExcitation {
-        vertical: scenario
+    let records = |direction| {
+        scenario
             .ground_motion
             .iter()
-            .filter(|g| g.direction == crate::ground::Direction::Vertical)
+            .filter(|g| g.direction == direction)
             .map(|g| g.record.clone())
-            .collect(),
+            .collect()
+    };
+    Some(crate::ground::GroundExcitation {
+        vertical: records(crate::ground::Direction::Vertical),
         participation: participation.clone(),
         total_mass: *total_mass,
+        lateral: records(crate::ground::Direction::Lateral),
+        lateral_participation,
+        lateral_mass,
     })
 }

@@ -172,6 +172,48 @@ impl ModalBridge {
     }
 }
 
+impl ModalBridge {
+    /// Participation factors Γᵢ = φᵢᵀ M δ_y of the kept modes for a
+    /// lateral support motion (δ_y = 1 on every lateral translation), √kg,
+    /// with the mass moving with a rigid lateral shift (kg). An imported
+    /// model: δ_y on its uy DOFs. A bridge modelled in the vertical plane
+    /// (plane beam, plate) has no lateral DOFs: it moves rigidly with the
+    /// ground, so in relative coordinates nothing loads it (zeros).
+    /// Cost O(n · modes).
+    pub fn lateral_participation(&self, _bridge: &Bridge) -> (Vec<f64>, f64) {
+        match &self.shapes {
+            Shapes::Imported(imported) => imported_inertia_participation(
+                imported,
+                &imported.model.lateral_inertia,
+                super::fe_import::Direction::Uy,
+            ),
+            _ => (vec![0.0; self.mode_count()], 0.0),
+        }
+    }
+}
+
+/// Γ = Φᵀ (M δ) of an imported model for the inertia vector `inertia`
+/// (M δ on the free DOFs, kg, δ = 1 on every DOF in `direction`), with
+/// the mass δᵀ M δ over the free DOFs in that direction (kg). Cost
+/// O(n · modes).
+fn imported_inertia_participation(
+    imported: &super::fe_import::modal::ImportedShapes,
+    inertia: &[f64],
+    direction: super::fe_import::Direction,
+) -> (Vec<f64>, f64) {
+    let model = &imported.model;
+    let n = model.dofs.len();
+    let total: f64 = (0..n)
+        .filter(|&i| model.dofs[i].1 == direction)
+        .map(|i| inertia[i])
+        .sum();
+    let modes = imported.vectors.ncols();
+    let participation = (0..modes)
+        .map(|c| (0..n).map(|i| imported.vectors[(i, c)] * inertia[i]).sum())
+        .collect();
+    (participation, total)
+}
+
 /// Γ = Φᵀ M δ of an imported model, δ = 1 on every vertical (uz) DOF —
 /// the constrained ones too when the file lists them (their mass coupling
 /// M_fs δ_s is kept: [`super::fe_import::ImportedModel::vertical_inertia`]);

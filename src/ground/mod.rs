@@ -218,16 +218,26 @@ impl GroundRecord {
     }
 }
 
-/// The vertical support excitation of a run: its records and what they do
-/// to the kept modes.
+/// The support excitation of a run: its records and what they do to the
+/// kept modes.
 #[derive(Debug, Clone)]
 pub struct GroundExcitation {
     /// The vertical components (their accelerations add up).
     pub vertical: Vec<std::sync::Arc<GroundRecord>>,
-    /// Participation factors Γᵢ = φᵢᵀ M δ of the kept modes, √kg.
+    /// Participation factors Γᵢ = φᵢᵀ M δ of the kept modes for a vertical
+    /// support motion, √kg.
     pub participation: Vec<f64>,
     /// Total mass of the bridge, kg.
     pub total_mass: f64,
+    /// The lateral components (their accelerations add up).
+    pub lateral: Vec<std::sync::Arc<GroundRecord>>,
+    /// Participation factors Γᵢ = φᵢᵀ M δ_y of the kept modes for a
+    /// lateral support motion (δ_y = 1 on every lateral translation), √kg;
+    /// empty without a lateral record, zero for a bridge modelled in the
+    /// vertical plane (it moves rigidly with the ground sideways).
+    pub lateral_participation: Vec<f64>,
+    /// The bridge mass moving with a rigid lateral shift, kg (Σ Γ² tends to it).
+    pub lateral_mass: f64,
 }
 
 impl GroundExcitation {
@@ -240,6 +250,20 @@ impl GroundExcitation {
     /// Vertical ground velocity (m/s) and displacement (m) at `t` (s).
     pub fn vertical_motion(&self, t: f64) -> (f64, f64) {
         self.vertical
+            .iter()
+            .map(|r| r.velocity_displacement(t))
+            .fold((0.0, 0.0), |(v, u), (dv, du)| (v + dv, u + du))
+    }
+
+    /// Lateral ground acceleration at run time `t` (s), m/s² (+y left of travel).
+    #[inline]
+    pub fn lateral_acceleration(&self, t: f64) -> f64 {
+        self.lateral.iter().map(|r| r.acceleration_at(t)).sum()
+    }
+
+    /// Lateral ground velocity (m/s) and displacement (m) at `t` (s).
+    pub fn lateral_motion(&self, t: f64) -> (f64, f64) {
+        self.lateral
             .iter()
             .map(|r| r.velocity_displacement(t))
             .fold((0.0, 0.0), |(v, u), (dv, du)| (v + dv, u + du))

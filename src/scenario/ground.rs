@@ -30,10 +30,11 @@ pub(super) fn resolve(
         let direction = component.direction.unwrap_or(Direction::Vertical);
         match direction {
             Direction::Vertical => {}
+            Direction::Lateral if moves_sideways(bridge) => {}
             Direction::Lateral => {
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",
-                    Some(Bridge::FeImport(_)) => "imported",
+                    Some(Bridge::FeImport(_)) => "imported model without lateral (uy) DOFs",
                     _ => "beam",
                 };
                 ck.error(
@@ -90,6 +91,19 @@ pub(super) fn resolve(
         });
     }
     out
+}
+
+/// Whether the bridge has lateral degrees of freedom a lateral record can
+/// shake: an imported model with uy DOFs.
+fn moves_sideways(bridge: Option<&Bridge>) -> bool {
+    match bridge {
+        Some(Bridge::FeImport(f)) => f
+            .model
+            .dofs
+            .iter()
+            .any(|(_, d)| *d == crate::bridge::fe_import::Direction::Uy),
+        _ => false,
+    }
 }
 
 /// Reads a record file: (times s, accelerations in `units`, units).

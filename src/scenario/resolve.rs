@@ -423,11 +423,30 @@ pub(super) fn resolve(
         // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
         // vertical record excites the symmetric modes, each less than the
         // last, so a few suffice.
+        // A lateral record asks the same of the lateral modes (a bridge in
+        // the vertical plane has no lateral mass to carry: skipped).
         if !ground_motion.is_empty() {
             let available = ModalBridge::available_of(&bridge);
+            let has = |d| ground_motion.iter().any(|g| g.direction == d);
+            let (vertical, lateral) = (
+                has(crate::ground::Direction::Vertical),
+                has(crate::ground::Direction::Lateral),
+            );
             loop {
-                let (participation, mass) = modal.vertical_participation(&bridge);
-                let ratio = participation.iter().map(|g| g * g).sum::<f64>() / mass;
+                let share = |(participation, mass): (Vec<f64>, f64)| {
+                    if mass > 0.0 {
+                        participation.iter().map(|g| g * g).sum::<f64>() / mass
+                    } else {
+                        1.0
+                    }
+                };
+                let mut ratio = 1.0f64;
+                if vertical {
+                    ratio = ratio.min(share(modal.vertical_participation(&bridge)));
+                }
+                if lateral {
+                    ratio = ratio.min(share(modal.lateral_participation(&bridge)));
+                }
                 let count = modal.mode_count();
                 if ratio >= GROUND_MASS_SHARE || count >= available {
                     if ratio >= GROUND_MASS_SHARE {

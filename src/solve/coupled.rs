@@ -28,7 +28,9 @@ pub fn run(
 ) -> Result<(), SolveError> {
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
+    let mut modal = ModalStep::new(bridge, &nm)
+        .with_ground(model.ground_participation())
+        .with_lateral_ground(model.lateral_ground_participation());
     let mut step_state = PermanentContacts::new(model, &nm)?;
     let nc = step_state.count();
 
@@ -59,6 +61,7 @@ pub fn run(
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
         step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
+        step_state.lateral_ground = ground.lateral_load;
         step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
 
         // Sensitivities of the wheel kinematics to λ.

@@ -49,7 +49,9 @@ pub fn run(
 ) -> Result<SolveStats, SolveError> {
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
+    let mut modal = ModalStep::new(bridge, &nm)
+        .with_ground(model.ground_participation())
+        .with_lateral_ground(model.lateral_ground_participation());
     let mut step_state = PermanentContacts::new(model, &nm)?;
     let nc = step_state.count();
     let (tolerance, max_iterations) = (model.iteration.tolerance, model.iteration.max_iterations);
@@ -88,6 +90,7 @@ pub fn run(
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
         step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
+        step_state.lateral_ground = ground.lateral_load;
         step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
 
         let mut relaxation = 1.0;

@@ -198,18 +198,23 @@ pub(crate) fn describe_positions(model: &Model, t: f64) -> String {
         .join(", ")
 }
 
-/// The ground motion's share of each step: sets the bridge's vertical
-/// ground acceleration at t_{n+1} and returns the vehicles' extra weight
-/// ratio (1+α)üg(t_{n+1}) − α üg(tₙ), over g — HHT weights the external
-/// loads as it weights the contact forces. Without ground motion every
-/// value is exactly 0 and nothing changes.
+/// The ground motion's share of each step: sets the bridge's vertical and
+/// lateral ground accelerations at t_{n+1} and returns the vehicles' extra
+/// weight ratio (1+α)üg(t_{n+1}) − α üg(tₙ), over g — HHT weights the
+/// external loads as it weights the contact forces — and keeps the same
+/// weighting of the lateral acceleration in [`GroundStep::lateral_load`].
+/// Without ground motion every value is exactly 0 and nothing changes.
 #[derive(Debug, Clone, Copy)]
 pub struct GroundStep {
     weight: f64,
     alpha: f64,
     gravity: f64,
     previous: f64,
+    lateral_previous: f64,
     active: bool,
+    /// (1+α)üg,y(t_{n+1}) − α üg,y(tₙ) of the step last advanced to, m/s²:
+    /// the multiplier of each vehicle's [`crate::vehicle::VehicleModel::lateral_ground_load`].
+    pub lateral_load: f64,
 }
 
 impl GroundStep {
@@ -221,7 +226,9 @@ impl GroundStep {
             alpha: nm.alpha,
             gravity: model.gravity,
             previous: model.ground_acceleration(0.0),
+            lateral_previous: model.lateral_ground_acceleration(0.0),
             active: model.ground.is_some(),
+            lateral_load: 0.0,
         }
     }
 
@@ -235,6 +242,10 @@ impl GroundStep {
         modal.ground_acceleration = now;
         let ratio = (self.weight * now - self.alpha * self.previous) / self.gravity;
         self.previous = now;
+        let lateral = model.lateral_ground_acceleration(t);
+        modal.lateral_ground_acceleration = lateral;
+        self.lateral_load = self.weight * lateral - self.alpha * self.lateral_previous;
+        self.lateral_previous = lateral;
         ratio
     }
 }

@@ -45,6 +45,11 @@ pub struct ModalStep {
     /// Vertical ground acceleration at the end of the step being formed,
     /// m/s² (set by the solver before [`Self::predict`]).
     pub ground_acceleration: f64,
+    /// Participation factors of a lateral support motion, √kg (empty
+    /// without a lateral record).
+    lateral_participation: Vec<f64>,
+    /// Lateral ground acceleration at the end of the step being formed, m/s².
+    pub lateral_ground_acceleration: f64,
 }
 
 impl ModalStep {
@@ -80,6 +85,8 @@ impl ModalStep {
             shape_work: vec![0.0; modes],
             ground_participation: Vec::new(),
             ground_acceleration: 0.0,
+            lateral_participation: Vec::new(),
+            lateral_ground_acceleration: 0.0,
         }
     }
 
@@ -87,6 +94,13 @@ impl ModalStep {
     /// motion added to every step's loads (`participation` empty: none).
     pub fn with_ground(mut self, participation: &[f64]) -> Self {
         self.ground_participation = participation.to_vec();
+        self
+    }
+
+    /// The same step with the modal forces −Γᵢ üg,y of a lateral support
+    /// motion added (`participation` empty: none).
+    pub fn with_lateral_ground(mut self, participation: &[f64]) -> Self {
+        self.lateral_participation = participation.to_vec();
         self
     }
 
@@ -115,6 +129,13 @@ impl ModalStep {
             .zip(&self.ground_participation)
         {
             *f -= gamma * self.ground_acceleration;
+        }
+        for (f, gamma) in self
+            .current_force
+            .iter_mut()
+            .zip(&self.lateral_participation)
+        {
+            *f -= gamma * self.lateral_ground_acceleration;
         }
         let (w, alpha) = (nm.weight(), nm.alpha);
         for i in 0..self.predictor.len() {

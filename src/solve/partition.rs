@@ -55,6 +55,14 @@ pub struct Partition {
     pub condensed_stiffness: DMatrix<f64>,
     gravity_f: DVector<f64>,
     gravity_w: DVector<f64>,
+    /// Rows F (resp. W) of the vehicle's lateral ground load −M δ_y,
+    /// N/(m/s²); empty for a vehicle without lateral DOFs.
+    lateral_f: DVector<f64>,
+    lateral_w: DVector<f64>,
+    /// This step's HHT-weighted lateral ground acceleration, m/s²: the
+    /// external load is f_g (1 + gravity ratio) + (−M δ_y) · this. Set by
+    /// the caller before [`Partition::begin_step`].
+    pub lateral_ground: f64,
     /// This step's extra weight as a multiple of the gravity loads (ground
     /// motion), dimensionless.
     gravity_ratio: f64,
@@ -110,6 +118,17 @@ impl Partition {
             stiffness_w_all: select(&vehicle.stiffness, w, &all),
             gravity_f: pick(&vehicle.gravity_load, f),
             gravity_w: pick(&vehicle.gravity_load, w),
+            lateral_f: if vehicle.lateral_ground_load.is_empty() {
+                DVector::zeros(0)
+            } else {
+                pick(&vehicle.lateral_ground_load, f)
+            },
+            lateral_w: if vehicle.lateral_ground_load.is_empty() {
+                DVector::zeros(0)
+            } else {
+                pick(&vehicle.lateral_ground_load, w)
+            },
+            lateral_ground: 0.0,
             gravity_ratio: 0.0,
             weight,
             alpha: nm.alpha,
@@ -130,6 +149,17 @@ impl Partition {
             wheel_dofs,
             free_dofs,
         })
+    }
+
+    /// The lateral ground acceleration that loads this vehicle this step,
+    /// m/s² (0 for a vehicle without lateral DOFs).
+    #[inline]
+    fn lateral_acceleration(&self) -> f64 {
+        if self.lateral_f.is_empty() && self.lateral_w.is_empty() {
+            0.0
+        } else {
+            self.lateral_ground
+        }
     }
 
     /// Starts a step from the state at tₙ and the wheels' contact forces λₙ
@@ -155,6 +185,10 @@ impl Partition {
             self.effective_load
                 .axpy(gravity_ratio, &self.gravity_f, 1.0);
         }
+        let lateral = self.lateral_acceleration();
+        if lateral != 0.0 {
+            self.effective_load.axpy(lateral, &self.lateral_f, 1.0);
+        }
         self.effective_load
             .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
         self.effective_load
@@ -171,6 +205,9 @@ impl Partition {
         self.base_forces.copy_from(&self.gravity_w);
         if gravity_ratio != 0.0 {
             self.base_forces.axpy(gravity_ratio, &self.gravity_w, 1.0);
+        }
+        if lateral != 0.0 {
+            self.base_forces.axpy(lateral, &self.lateral_w, 1.0);
         }
         self.base_forces
             .gemv(1.0, &self.transfer, &self.effective_load, -1.0);
@@ -224,6 +261,10 @@ impl Partition {
         if self.gravity_ratio != 0.0 {
             self.recovery_load
                 .axpy(self.gravity_ratio, &self.gravity_f, 1.0);
+        }
+        let lateral = self.lateral_acceleration();
+        if lateral != 0.0 {
+            self.recovery_load.axpy(lateral, &self.lateral_f, 1.0);
         }
         self.recovery_load += &self.alpha_terms;
         for (k, &d) in self.free_dofs.iter().enumerate() {

@@ -113,6 +113,9 @@ pub struct PermanentContacts {
     /// record acts on a vehicle as gravity g + üg). Set by the solver
     /// before [`Self::begin_step`]; 0 without ground motion.
     pub gravity_ratio: f64,
+    /// This step's HHT-weighted lateral ground acceleration, m/s²
+    /// ([`super::GroundStep::lateral_load`]); set with `gravity_ratio`.
+    pub lateral_ground: f64,
 }
 
 impl PermanentContacts {
@@ -159,6 +162,7 @@ impl PermanentContacts {
         }
         Ok(Self {
             gravity_ratio: 0.0,
+            lateral_ground: 0.0,
             shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
             base: vec![[0.0; 3]; nc],
             surface: vec![(0.0, 0.0, 0.0); nc],
@@ -295,6 +299,7 @@ impl PermanentContacts {
         }
         for (v, partition) in self.partitions.iter_mut().enumerate() {
             let state = &self.states[v];
+            partition.lateral_ground = self.lateral_ground;
             partition.begin_step(
                 nm,
                 self.gravity_ratio,

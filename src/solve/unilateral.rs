@@ -86,7 +86,9 @@ pub fn run(
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
     let bridge = &model.bridge;
     let modes = bridge.mode_count();
-    let mut modal = ModalStep::new(bridge, &nm).with_ground(model.ground_participation());
+    let mut modal = ModalStep::new(bridge, &nm)
+        .with_ground(model.ground_participation())
+        .with_lateral_ground(model.lateral_ground_participation());
 
     let mut contacts: Vec<ContactWheel> = Vec::new();
     let mut load_wheels = Vec::new();
@@ -235,6 +237,10 @@ pub fn run(
             if gravity_ratio != 0.0 {
                 vs.effective_load
                     .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
+            }
+            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
+                vs.effective_load
+                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
             }
             block_gemv(
                 &mut vs.effective_load,
@@ -465,6 +471,10 @@ pub fn run(
             if gravity_ratio != 0.0 {
                 vs.recovery_load
                     .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
+            }
+            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
+                vs.recovery_load
+                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
             }
             block_gemv(
                 &mut vs.recovery_load,

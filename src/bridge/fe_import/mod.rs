@@ -215,6 +215,10 @@ pub struct ImportedModel {
     /// included: the supports move with the ground), kg: the inertia load
     /// of a unit vertical ground acceleration ([`crate::ground`]).
     pub vertical_inertia: Vec<f64>,
+    /// M δ on the free DOFs, δ = 1 on every uy DOF (constrained ones
+    /// included), kg: the inertia load of a unit lateral ground
+    /// acceleration; all zero for a model without lateral DOFs.
+    pub lateral_inertia: Vec<f64>,
 }
 
 /// A rail as given: name and (node, x) pairs.
@@ -302,9 +306,12 @@ impl ImportedModel {
         // The supports move with the ground too: M δ over the full matrix,
         // then kept on the free rows.
         let mut vertical_inertia = vec![0.0; dofs.len()];
+        let mut lateral_inertia = vec![0.0; dofs.len()];
         for &(r, c, v) in &m {
-            if let (Some(row), Direction::Uz) = (index[r], map[c].1) {
-                vertical_inertia[row] += v;
+            match (index[r], map[c].1) {
+                (Some(row), Direction::Uz) => vertical_inertia[row] += v,
+                (Some(row), Direction::Uy) => lateral_inertia[row] += v,
+                _ => {}
             }
         }
         let (k, m) = (restrict(k), restrict(m));
@@ -403,6 +410,7 @@ impl ImportedModel {
             length: end - origin,
             vertical_mass,
             vertical_inertia,
+            lateral_inertia,
         })
     }
 
