@@ -27,6 +27,24 @@ fn run_in(dir: &std::path::Path, yaml: &str) -> Outcome {
     simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// Writes `yaml` as `dir/beam.yaml` and exports its beam with `vbi export
+/// beam` into `dir/exported`.
+fn export_beam(dir: &std::path::Path, yaml: &str) {
+    std::fs::write(dir.join("beam.yaml"), yaml).unwrap();
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(["export", "beam"])
+        .arg(dir.join("beam.yaml"))
+        .arg("--out")
+        .arg(dir.join("exported"))
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+}
+
 fn load_error(dir: &std::path::Path, yaml: &str) -> String {
     let file = dir.join("scene.yaml");
     match load_str(yaml, file.to_str().unwrap()) {
@@ -430,19 +448,7 @@ fn an_imported_beam_feels_the_same_ground_motion() {
          record:\n  - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n",
         csv.display()
     );
-    std::fs::write(dir.join("beam.yaml"), &beam).unwrap();
-    let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(["export", "beam"])
-        .arg(dir.join("beam.yaml"))
-        .arg("--out")
-        .arg(dir.join("exported"))
-        .output()
-        .unwrap();
-    assert!(
-        status.status.success(),
-        "{}",
-        String::from_utf8_lossy(&status.stderr)
-    );
+    export_beam(&dir, &beam);
     let built = run_in(&dir, &beam);
     let exported = dir.join("exported").join("scenario.yaml");
     let text = std::fs::read_to_string(&exported).unwrap();
@@ -573,19 +579,7 @@ fn a_lateral_record_shakes_an_imported_model_sideways() {
         "ground_motion:\n  - {{file: \"{}\", direction: lateral}}\n",
         csv.display()
     );
-    std::fs::write(dir.join("beam.yaml"), beam(EI, "")).unwrap();
-    let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(["export", "beam"])
-        .arg(dir.join("beam.yaml"))
-        .arg("--out")
-        .arg(dir.join("exported"))
-        .output()
-        .unwrap();
-    assert!(
-        status.status.success(),
-        "{}",
-        String::from_utf8_lossy(&status.stderr)
-    );
+    export_beam(&dir, &beam(EI, ""));
     let scene3d = doubled_model(&dir, &dir.join("exported"), &lateral_record);
     let imported = run_in(&dir, &scene3d);
     // The lateral twin: the stiffer beam under the record as a vertical
