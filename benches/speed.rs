@@ -135,7 +135,7 @@ fn monte_carlo(budget: f64) {
                 &loaded,
                 "mc.yaml",
                 &text,
-                Default::default(),
+                &Default::default(),
                 shard,
                 &|_, _| {},
             )

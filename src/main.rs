@@ -30,6 +30,15 @@ struct Cli {
     /// output size) for a scene that really needs more; see `limits` in the format.
     #[arg(long, global = true)]
     allow_large: bool,
+    /// Folder of the modes cache: an imported model's modes are read from it
+    /// when a valid file holds them and written to it when solved. Default
+    /// for `run`: `.vbi-cache` inside the output folder; other commands use a
+    /// cache only when given one.
+    #[arg(long, global = true, value_name = "DIR")]
+    modes_cache: Option<PathBuf>,
+    /// Solve every imported model's modes afresh and write no cache.
+    #[arg(long, global = true, conflicts_with = "modes_cache")]
+    no_modes_cache: bool,
 }
 
 #[derive(Debug, Subcommand)]
@@ -218,10 +227,22 @@ use studies::{merge, run_sample, run_shard, write_study};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // The modes cache: the one given, else `.vbi-cache` in the output
+    // folder of a command that has one (nothing is written outside it).
+    let cache_in = |out: Option<&Path>| -> Option<PathBuf> {
+        if cli.no_modes_cache {
+            None
+        } else {
+            cli.modes_cache
+                .clone()
+                .or_else(|| out.map(vbi::bridge::eigen::cache::default_folder))
+        }
+    };
     let options = scenario::LoadOptions {
         allow_large: cli.allow_large,
+        modes_cache: cache_in(None),
     };
-    let load = |file: &Path| scenario::load_file_with(file, options);
+    let load = |file: &Path| scenario::load_file_with(file, options.clone());
     match cli.command {
         Command::Run {
             file,
@@ -230,11 +251,19 @@ fn main() -> ExitCode {
             svg,
             shard,
             sample,
-        } => match (shard, sample) {
-            (Some(shard), _) => run_shard(load(&file), &file, options, out, quiet, shard),
-            (None, Some(k)) => run_sample(load(&file), &file, out, quiet, svg, k),
-            (None, None) => run(load(&file), &file, out, quiet, svg),
-        },
+        } => {
+            let folder = out.clone().unwrap_or_else(|| default_out(&file, ""));
+            let options = scenario::LoadOptions {
+                modes_cache: cache_in(Some(&folder)),
+                ..options.clone()
+            };
+            let loaded = scenario::load_file_with(&file, options.clone());
+            match (shard, sample) {
+                (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard),
+                (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, k),
+                (None, None) => run(loaded, &file, out, quiet, svg),
+            }
+        }
         Command::Merge { parts, out, quiet } => merge(&parts, &out, quiet),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {

@@ -118,7 +118,7 @@ fn progress_bar(quiet: bool, message: &str) -> ProgressBar {
 pub(super) fn run_shard(
     loaded: Result<scenario::Loaded, LoadError>,
     file: &Path,
-    options: scenario::LoadOptions,
+    options: &scenario::LoadOptions,
     out: Option<PathBuf>,
     quiet: bool,
     shard: vbi::study::shard::Shard,

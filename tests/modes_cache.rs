@@ -133,3 +133,99 @@ fn truncated_or_corrupted_files_are_recomputed() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Copies the shipped imported scene and its matrices into `dir`, so a
+/// test may change a matrix file; returns the scene's path.
+fn imported_scene(dir: &std::path::Path) -> std::path::PathBuf {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let data = dir.join("fe-import-lcp-fig4");
+    std::fs::create_dir_all(&data).unwrap();
+    for name in ["K.mtx", "M.mtx", "dofs.csv", "rail.csv"] {
+        std::fs::copy(root.join("fe-import-lcp-fig4").join(name), data.join(name)).unwrap();
+    }
+    let scene = dir.join("scene.yaml");
+    std::fs::copy(root.join("fe-import-lcp-fig4-rigid.yaml"), &scene).unwrap();
+    scene
+}
+
+/// `vbi run SCENE --out OUT [extra]`: (summary.json's
+/// `run.modes_from_cache`, history.csv's bytes).
+fn run_cli(
+    scene: &std::path::Path,
+    out: &std::path::Path,
+    extra: &[&str],
+) -> (Option<bool>, Vec<u8>) {
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .arg("run")
+        .arg(scene)
+        .arg("--out")
+        .arg(out)
+        .arg("-q")
+        .args(extra)
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    (
+        summary["run"]["modes_from_cache"].as_bool(),
+        std::fs::read(out.join("history.csv")).unwrap(),
+    )
+}
+
+/// `vbi run` of an imported model caches its modes in `<out>/.vbi-cache`
+/// by default: the second run reads them (summary says so) and writes the
+/// same bytes; a truncated cache file is solved again, a changed matrix
+/// misses, `--modes-cache DIR` shares one folder between output folders,
+/// and `--no-modes-cache` writes none.
+#[test]
+fn runs_read_their_modes_from_the_cache() {
+    let dir = folder("cli");
+    let scene = imported_scene(&dir);
+    let out = dir.join("out");
+    let (first, history) = run_cli(&scene, &out, &[]);
+    assert_eq!(first, Some(false), "the first run solves");
+    let (second, again) = run_cli(&scene, &out, &[]);
+    assert_eq!(second, Some(true), "the second run reads the cache");
+    assert!(history == again, "a cached run writes the same bytes");
+    // Truncate every cache file: never trusted, solved again.
+    let cache = out.join(".vbi-cache");
+    let files: Vec<_> = std::fs::read_dir(&cache)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert!(!files.is_empty());
+    for file in &files {
+        let bytes = std::fs::read(file).unwrap();
+        std::fs::write(file, &bytes[..bytes.len() / 2]).unwrap();
+    }
+    let (truncated, after) = run_cli(&scene, &out, &[]);
+    assert_eq!(truncated, Some(false));
+    assert!(history == after);
+    // A changed stiffness entry of a free DOF (row 2 is node 1's ry; the
+    // uz rows of nodes 1 and 21 are constrained away) misses.
+    let k = dir.join("fe-import-lcp-fig4").join("K.mtx");
+    let text = std::fs::read_to_string(&k).unwrap();
+    let changed = text.replacen("\n2 2 12969200000.0\n", "\n2 2 12969200000.5\n", 1);
+    assert_ne!(text, changed);
+    std::fs::write(&k, changed).unwrap();
+    let (changed_run, _) = run_cli(&scene, &out, &[]);
+    assert_eq!(changed_run, Some(false), "a changed matrix misses");
+    std::fs::write(&k, text).unwrap();
+    // One shared folder for two output folders.
+    let shared = dir.join("shared");
+    let shared_arg = shared.to_str().unwrap();
+    let (a, _) = run_cli(&scene, &dir.join("a"), &["--modes-cache", shared_arg]);
+    let (b, _) = run_cli(&scene, &dir.join("b"), &["--modes-cache", shared_arg]);
+    assert_eq!((a, b), (Some(false), Some(true)));
+    assert!(!dir.join("a").join(".vbi-cache").exists());
+    // No cache at all.
+    let (none, plain) = run_cli(&scene, &dir.join("plain"), &["--no-modes-cache"]);
+    assert_eq!(none, None);
+    assert!(plain == history);
+    assert!(!dir.join("plain").join(".vbi-cache").exists());
+}

@@ -84,6 +84,10 @@ pub struct RunInfo {
     pub modes_used: usize,
     /// Modes the bridge discretisation offers.
     pub modes_available: usize,
+    /// Whether an imported model's modes were read from the modes cache
+    /// (true) or solved and written to it (false); absent without a cache.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub modes_from_cache: Option<bool>,
     /// How the modes were chosen and why.
     pub modes_selection: String,
     /// How the time step was chosen.
@@ -287,6 +291,7 @@ impl Summary {
                 time_step: model.time_step,
                 end_time: model.end_time(),
                 modes_used: model.bridge.mode_count(),
+                modes_from_cache: model.bridge.modes_from_cache,
                 modes_available: model.bridge.available_modes,
                 modes_selection: model.bridge.selection.clone(),
                 time_step_selection: model.time_step_selection.clone(),

@@ -70,7 +70,7 @@ pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError>
     let mut ck = Checker::new(file, source, &node);
     let Some(mut bridge) = bridges::resolve_bridge(
         &raw.bridge,
-        &super::budget::Budget::new(super::resolved::Limits::default(), Default::default()),
+        &super::budget::Budget::new(super::resolved::Limits::default(), &Default::default()),
         &mut ck,
     ) else {
         return Err(LoadError::Invalid(ck.diagnostics));

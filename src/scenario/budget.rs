@@ -14,12 +14,18 @@ use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
 use super::resolved::{Bridge, Surface, Vehicle};
 
-/// How a scene is loaded: whether its budgets are enforced.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+/// How a scene is loaded: whether its budgets are enforced, and where
+/// solved modes are cached.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct LoadOptions {
     /// Lift every resource limit (`--allow-large`); sizes are still checked
     /// for overflow.
     pub allow_large: bool,
+    /// The folder of the modes cache ([`crate::bridge::eigen::cache`]):
+    /// an imported model's modes are read from it when a valid file holds
+    /// them, and written to it when solved. `None`: no cache (the library
+    /// default; the command line's default is `<output folder>/.vbi-cache`).
+    pub modes_cache: Option<std::path::PathBuf>,
 }
 
 /// The resolved `limits` section: each bound with its default filled in.
@@ -138,7 +144,7 @@ pub(super) struct Budget {
 }
 
 impl Budget {
-    pub(super) fn new(limits: Limits, options: LoadOptions) -> Self {
+    pub(super) fn new(limits: Limits, options: &LoadOptions) -> Self {
         Budget {
             limits,
             allow_large: options.allow_large,

@@ -129,7 +129,7 @@ pub(super) fn resolve(
 ) -> Option<(Scenario, ModalBridge)> {
     super::names::check_name(ck, &raw.name);
     let limits = Limits::resolve(raw.limits.as_ref(), ck);
-    let budget = Budget::new(limits, options);
+    let budget = Budget::new(limits, &options);
     // Counts read straight from the file come first: a file with 10⁵ axles
     // or records is refused before anything is done per axle or record.
     if !budget.counts(raw, ck) {
@@ -244,8 +244,9 @@ pub(super) fn resolve(
         return None;
     }
 
+    let cache = options.modes_cache.as_deref();
     let build = |request| {
-        ModalBridge::build_with(&bridge, request).map_err(|e| {
+        ModalBridge::build_cached(&bridge, request, cache).map_err(|e| {
             let path = match e {
                 BridgeError::TooManyModes { .. } => "bridge.modes.count",
                 BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",

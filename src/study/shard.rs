@@ -209,7 +209,7 @@ pub fn run_shard(
     loaded: &Loaded,
     file: &str,
     source: &str,
-    options: LoadOptions,
+    options: &LoadOptions,
     shard: Shard,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Part, ShardError> {
@@ -400,6 +400,7 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
     }
     let options = LoadOptions {
         allow_large: any.allow_large,
+        modes_cache: None,
     };
     let loaded = scenario::load_str_with(&any.scenario_source, &any.scenario_file, options)?;
     if scenario_hash(&loaded) != any.scenario_hash {
