@@ -617,6 +617,24 @@ impl ModalBridge {
         }
     }
 
+    /// The probe of a plate deck's moment per unit width `moment` at (x,
+    /// y) (m) for wheels along the lines `line_y` (m)
+    /// ([`plate::moments`]); `None` for any other bridge.
+    pub fn plate_moment_probe(
+        &self,
+        x: f64,
+        y: f64,
+        moment: plate::moments::PlateMoment,
+        line_y: &[f64],
+    ) -> Result<Option<plate::moments::PlateMomentProbe>, BridgeError> {
+        match &self.shapes {
+            Shapes::Plate { modes, .. } => modes
+                .moment_probe(x, y, moment, &self.circular_frequencies, line_y)
+                .map(Some),
+            _ => Ok(None),
+        }
+    }
+
     /// The free DOF of an imported model's (node, direction), if the
     /// bridge is imported and the DOF free; `Err` with the reason otherwise.
     pub fn imported_dof(

@@ -52,6 +52,7 @@ use super::hermite::{HermiteField, shape_curvatures, shape_functions};
 use super::{BridgeError, eigen};
 use crate::scenario::resolved::{Beam, Damping, Modes, Plate, PlateEdges};
 
+pub mod moments;
 mod transverse;
 
 use self::transverse::TransverseBasis;
@@ -146,6 +147,8 @@ pub struct PlateModes {
     ritz_mass: Mat<f64>,
     /// ω² of every Ritz mode, rad²/s², ascending.
     eigenvalues: Vec<f64>,
+    /// (Dx, Dy, D1, Dxy), N·m: the moments per unit width ([`moments`]).
+    rigidities: (f64, f64, f64, f64),
 }
 
 impl PlateModes {
@@ -265,6 +268,7 @@ impl PlateModes {
             ritz_stiffness: stiffness,
             ritz_mass: mass,
             eigenvalues,
+            rigidities: plate.rigidity.rigidities(plate.thickness.unwrap_or(0.0)),
         };
         Ok((modes, omegas))
     }

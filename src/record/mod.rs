@@ -45,6 +45,12 @@ enum Probe {
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
+    /// A plate deck's moment per unit width at a point; `line_of[w]` is
+    /// the probe's influence line of flattened wheel w.
+    PlateMoment {
+        probe: Box<crate::bridge::plate::moments::PlateMomentProbe>,
+        line_of: Vec<usize>,
+    },
     /// Bending moment (or, with `shear`, shear force) of a beam section.
     Section {
         section: Box<SectionProbe>,
@@ -386,6 +392,32 @@ impl<'m> Recorder<'m> {
                         (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
                     }
                 }
+                Quantity::BridgeMoment if record.component.is_some() => {
+                    // A plate deck (moments per unit width).
+                    let (x, y) = (record.x.unwrap_or(0.0), record.y.unwrap_or(0.0));
+                    let mut lines: Vec<f64> = Vec::new();
+                    let line_of = model
+                        .wheel_y
+                        .iter()
+                        .map(|&wy| match lines.iter().position(|&l| l == wy) {
+                            Some(k) => k,
+                            None => {
+                                lines.push(wy);
+                                lines.len() - 1
+                            }
+                        })
+                        .collect();
+                    let component = record.component.expect("checked by the guard");
+                    let probe = model
+                        .bridge
+                        .plate_moment_probe(x, y, component, &lines)?
+                        .expect("a moment component is resolved for plates only");
+                    let probe = Probe::PlateMoment {
+                        probe: Box::new(probe),
+                        line_of,
+                    };
+                    (probe, "N*m/m", lead)
+                }
                 Quantity::BridgeMoment | Quantity::BridgeShear => {
                     let x = record.x.unwrap_or(0.0);
                     let section = model
@@ -509,7 +541,9 @@ impl<'m> Recorder<'m> {
                 || columns.iter().any(|c| {
                     matches!(
                         c.probe,
-                        Probe::BridgeDisplacement { .. } | Probe::Section { .. }
+                        Probe::BridgeDisplacement { .. }
+                            | Probe::Section { .. }
+                            | Probe::PlateMoment { .. }
                     )
                 }));
         let wheel_modes = if corrected {
@@ -650,6 +684,9 @@ fn ground_terms(
             };
             (0.0, (absolute && translation).then_some(term))
         }
+        // A plate's records under ground motion are modal sums (no
+        // full-stiffness share of the inertia load; as its displacements).
+        Probe::PlateMoment { .. } => (0.0, None),
         Probe::Section { ref section, shear } => {
             // Moments and shears are frame-independent (relative motion).
             let share = if model.bridge.static_correction {
@@ -798,6 +835,15 @@ impl Observer for Recorder<'_> {
                     )
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::PlateMoment { probe, line_of } => probe.moment(
+                    view.modal_displacement,
+                    model.bridge.static_correction,
+                    view.wheel_positions,
+                    view.contact_forces,
+                    line_of,
+                    &self.wheel_modes,
+                    on_deck,
+                ),
                 Probe::Section { section, shear } => {
                     let loads = SectionLoads {
                         modal: view.modal_displacement,

@@ -678,6 +678,12 @@ pub struct RecordRaw {
     #[serde(default)]
     #[schemars(extend("default" = "relative"))]
     pub frame: Option<crate::scenario::resolved::Frame>,
+    /// Which moment per unit width a `bridge_moment` on a plate deck
+    /// records (N·m/m, sagging positive): `mx` longitudinal bending (the
+    /// default), `my` transverse bending, `mxy` twisting.
+    #[serde(default)]
+    #[schemars(extend("default" = "mx"))]
+    pub component: Option<crate::bridge::plate::moments::PlateMoment>,
 }
 
 /// Recordable quantities.

@@ -112,18 +112,32 @@ pub(super) fn resolve_records(
                 | Quantity::BridgeMoment
                 | Quantity::BridgeShear
         );
-        if matches!(q, Quantity::BridgeMoment | Quantity::BridgeShear)
-            && matches!(bridge, Bridge::Plate(_))
-        {
+        if q == Quantity::BridgeShear && matches!(bridge, Bridge::Plate(_)) {
             ck.error(
                 &format!("{at}.quantity"),
-                format!(
-                    "`{}` is computed for beam bridges only; on a plate deck record \
-                     `bridge_displacement` or `bridge_acceleration`",
-                    quantity_name_of(q)
-                ),
+                "`bridge_shear` is computed for beam bridges only: a plate's shear per unit \
+                 width needs third derivatives of its Ritz basis, whose longitudinal \
+                 functions are cubic per element (their third derivative jumps at every \
+                 node); record `bridge_moment` (with `component: mx|my|mxy`), \
+                 `bridge_displacement` or `bridge_acceleration` on a plate deck",
             );
         }
+        let on_plate = matches!(bridge, Bridge::Plate(_));
+        let component = match r.component {
+            Some(_) if !(q == Quantity::BridgeMoment && on_plate) => {
+                ck.error(
+                    &format!("{at}.component"),
+                    "`component` chooses a plate deck's moment per unit width: it is used by \
+                     `bridge_moment` on a plate only",
+                );
+                None
+            }
+            Some(c) => Some(c),
+            None if q == Quantity::BridgeMoment && on_plate => {
+                Some(crate::bridge::plate::moments::PlateMoment::Longitudinal)
+            }
+            None => None,
+        };
         let is_vehicle_dof = matches!(
             q,
             Quantity::VehicleDisplacement | Quantity::VehicleAcceleration
@@ -355,6 +369,7 @@ pub(super) fn resolve_records(
             },
             max_frequency,
             frame,
+            component,
         });
     }
     out
@@ -381,6 +396,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 dof: None,
                 max_frequency: None,
                 frame: Frame::Relative,
+                component: None,
             }),
             Bridge::Plate(plate) => {
                 for (g, &y) in plate.girder_lines.iter().enumerate() {
@@ -396,6 +412,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                         dof: None,
                         max_frequency: None,
                         frame: Frame::Relative,
+                        component: None,
                     });
                 }
             }
@@ -425,6 +442,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 dof: None,
                 max_frequency: None,
                 frame: Frame::Relative,
+                component: None,
             });
             if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
                 out.push(Record {
@@ -439,6 +457,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     dof: None,
                     max_frequency: None,
                     frame: Frame::Relative,
+                    component: None,
                 });
             }
         }

@@ -688,4 +688,7 @@ pub struct Record {
     /// displacements and accelerations under ground motion).
     #[serde(skip_serializing_if = "Frame::is_relative")]
     pub frame: Frame,
+    /// A plate's moment per unit width (`bridge_moment` on a plate).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub component: Option<crate::bridge::plate::moments::PlateMoment>,
 }

@@ -108,6 +108,7 @@ pub fn point_scenario(
         dof: None,
         max_frequency: None,
         frame: Default::default(),
+        component: None,
     }];
     scenario
 }
