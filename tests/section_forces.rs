@@ -269,10 +269,10 @@ fn envelopes_csv_is_written() {
     assert_eq!(lines.count(), 21);
 }
 
-/// Moments, shears and envelopes are beam quantities: a plate refuses them
-/// with a located message.
+/// Shears and envelopes are beam quantities: a plate refuses them with a
+/// located message (its moments per unit width are recorded: tests/plate.rs).
 #[test]
-fn a_plate_refuses_moments_and_envelopes() {
+fn a_plate_refuses_shears_and_envelopes() {
     let plate = "name: p
 bridge:
   type: plate
@@ -284,11 +284,11 @@ bridge:
   modes: {count: 10}
 vehicles: [{type: moving_force, loads: [1.0e5], speed: 20.0}]
 record:
-  - {name: m, quantity: bridge_moment, x: 10.0}
+  - {name: v, quantity: bridge_shear, x: 10.0}
 envelopes: {}
 ";
     let error = match vbi::scenario::load_str(plate, "plate.yaml") {
-        Ok(_) => panic!("a plate accepted a moment record"),
+        Ok(_) => panic!("a plate accepted a shear record"),
         Err(e) => e.to_string(),
     };
     eprintln!("{error}");
