@@ -402,7 +402,7 @@ fn run(
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let results = match vbi::run::execute(loaded, &progress) {
+    let results = match vbi::run::execute_into(loaded, &out, &progress) {
         Ok(r) => r,
         Err(e) => {
             bar.abandon();

@@ -217,6 +217,80 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
     })
 }
 
+/// Written samples (rows × columns × 8 bytes) above which a run streams
+/// its rows to disk ([`simulate_into`]): below it the history stays in
+/// memory, which is faster to write and plot; above it memory stays at
+/// this whatever the step count.
+pub const STREAM_ABOVE_BYTES: f64 = 32.0e6;
+
+/// [`simulate`] with the written rows streamed to a file in the output
+/// folder `out` (created if needed) as the run goes, instead of kept in
+/// memory ([`crate::record::spill`]), when they would take more than
+/// [`STREAM_ABOVE_BYTES`]: the history files and the plot are then written
+/// from that file by [`write_results_with`], and the file is removed when
+/// the outcome is dropped (or the run fails).
+pub fn simulate_into(
+    loaded: Loaded,
+    out: &Path,
+    progress: Progress<'_>,
+) -> Result<Outcome, RunError> {
+    simulate_streaming_above(loaded, out, progress, STREAM_ABOVE_BYTES)
+}
+
+/// [`simulate_into`] streaming above `stream_above_bytes` of written
+/// samples (0: always).
+pub fn simulate_streaming_above(
+    loaded: Loaded,
+    out: &Path,
+    progress: Progress<'_>,
+    stream_above_bytes: f64,
+) -> Result<Outcome, RunError> {
+    let start = Instant::now();
+    create_out(out)?;
+    let Loaded { scenario, bridge } = loaded;
+    let model = Model::build(&scenario, bridge)?;
+    let io = |source| ReportError::Io {
+        path: out.to_path_buf(),
+        source,
+    };
+    let recorder = Recorder::new(&model, &scenario.record)
+        .and_then(|r| r.with_envelopes(scenario.envelopes.as_ref()))
+        .map_err(BuildError::from)?
+        .every(scenario.output.every);
+    let rows = (model.steps / scenario.output.every.max(1)) as f64 + 1.0;
+    let mut recorder = if rows * recorder.row_width() as f64 * 8.0 > stream_above_bytes {
+        recorder.spill_into(out).map_err(io)?
+    } else {
+        recorder
+    };
+    let stats = solve::run(&model, &mut recorder, progress)?;
+    let history = recorder.finish_spilled().map_err(io)?;
+    let wall_time = start.elapsed().as_secs_f64();
+    let summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
+    Ok(Outcome {
+        model,
+        history,
+        summary,
+    })
+}
+
+/// [`execute`] with a single scene's rows streamed to the output folder
+/// `out` ([`simulate_into`]); studies run as in [`execute`].
+pub fn execute_into(
+    loaded: Loaded,
+    out: &Path,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Results, RunError> {
+    if loaded.scenario.study.is_some() {
+        return execute(loaded, progress);
+    }
+    Ok(Results::Scene(Box::new(simulate_into(
+        loaded,
+        out,
+        &mut |d, t| progress(d, t),
+    )?)))
+}
+
 /// Writes `summary.json`, the history (`history.csv` and/or `history.npy`
 /// with `history_columns.txt`, as `output.format` asks), `history.png` and
 /// `resolved.yaml` into `out` (created if needed), each atomically.

@@ -8,6 +8,7 @@
 //! history is not wanted (a study's runs).
 
 pub mod extremes;
+pub mod spill;
 
 use self::extremes::ColumnExtremes;
 
@@ -281,6 +282,10 @@ pub struct History {
     pub girder_dafs: Vec<GirderDaf>,
     /// Envelopes along the deck, when the scene asks for them.
     pub envelope: Option<Envelope>,
+    /// The written rows when they were streamed to disk during the run
+    /// ([`Recorder::spill_into`]): then `time` and the columns' values are
+    /// empty and the history files are written from this.
+    pub spilled: Option<std::sync::Arc<spill::SpilledRows>>,
 }
 
 /// Gap above which a wheel with zero contact force counts as separated, m.
@@ -333,6 +338,8 @@ pub struct Recorder<'m> {
     /// Whether a column adds the ground's displacement (then it is
     /// integrated each step).
     absolute_displacement: bool,
+    /// Where written rows go when streamed to disk.
+    spill: Option<spill::SpillWriter>,
 }
 
 impl<'m> Recorder<'m> {
@@ -565,6 +572,7 @@ impl<'m> Recorder<'m> {
                 separation,
                 girder_dafs: Vec::new(),
                 envelope: None,
+                spilled: None,
             },
             daf_probes,
             wheel_modes,
@@ -572,6 +580,7 @@ impl<'m> Recorder<'m> {
             on_deck: Vec::with_capacity(model.wheels.len()),
             keep: true,
             absolute_displacement,
+            spill: None,
         })
     }
 
@@ -608,6 +617,42 @@ impl<'m> Recorder<'m> {
                 .map(|_| Vec::with_capacity(capacity));
         }
         self
+    }
+
+    /// Streams the written rows to a file in `folder` (the output folder)
+    /// instead of keeping them: memory stays flat whatever the step count
+    /// ([`spill`]). Call after [`Recorder::every`].
+    pub fn spill_into(mut self, folder: &std::path::Path) -> std::io::Result<Self> {
+        let width = self.row_width();
+        self.spill = Some(spill::SpillWriter::create(folder, width)?);
+        self.history.time = Vec::with_capacity(1);
+        for c in &mut self.history.columns {
+            c.values = Vec::with_capacity(1);
+            c.static_values = c.static_values.as_ref().map(|_| Vec::with_capacity(1));
+        }
+        Ok(self)
+    }
+
+    /// Values per written row: time, and each column's value and static
+    /// value.
+    pub fn row_width(&self) -> usize {
+        1 + self
+            .history
+            .columns
+            .iter()
+            .map(|c| 1 + usize::from(c.static_values.is_some()))
+            .sum::<usize>()
+    }
+
+    /// [`Recorder::finish`] of a spilling recorder: the history with its
+    /// rows on disk, or the first write error (the file then removed).
+    pub fn finish_spilled(mut self) -> std::io::Result<History> {
+        let writer = self.spill.take();
+        let mut history = self.finish();
+        if let Some(writer) = writer {
+            history.spilled = Some(std::sync::Arc::new(writer.finish()?));
+        }
+        Ok(history)
     }
 
     /// Keeps no samples at all, only the extremes and statistics (a study's
@@ -882,6 +927,22 @@ impl Observer for Recorder<'_> {
             if sampled {
                 column.values.push(value);
             }
+        }
+        // Streaming: the row just sampled goes to the file, the vectors
+        // stay empty.
+        if sampled && let Some(spill) = &mut self.spill {
+            let history = &mut self.history;
+            let time = history.time.pop();
+            let values = history.columns.iter_mut().flat_map(|c| {
+                let value = c.values.pop();
+                let statics = c.static_values.as_mut().map(|s| s.pop());
+                std::iter::once(value).chain(statics)
+            });
+            spill.push(
+                std::iter::once(time)
+                    .chain(values)
+                    .map(|v| v.expect("one sample per column this step")),
+            );
         }
     }
 }

@@ -65,19 +65,34 @@ fn shape(history: &History) -> (usize, usize) {
         .iter()
         .map(|c| 1 + usize::from(c.static_values.is_some()))
         .sum::<usize>();
-    (history.time.len(), columns)
+    let rows = history
+        .spilled
+        .as_ref()
+        .map_or(history.time.len(), |s| s.rows);
+    (rows, columns)
 }
 
-/// Calls `f` with each value of row `i` in column order.
-#[inline]
-fn row(history: &History, i: usize, time: f64, mut f: impl FnMut(f64)) {
-    f(time);
-    for c in &history.columns {
-        f(c.values[i]);
-        if let Some(s) = &c.static_values {
-            f(s[i]);
-        }
+/// Calls `visit` with every row of the table in order (time first, then
+/// each column's value and static value): from memory, or read back from
+/// the file a streamed run wrote ([`crate::record::spill`]).
+pub fn each_row(history: &History, mut visit: impl FnMut(&[f64])) -> io::Result<()> {
+    if let Some(spilled) = &history.spilled {
+        return spilled.for_each_row(visit);
     }
+    let (_, columns) = shape(history);
+    let mut row = Vec::with_capacity(columns);
+    for (i, &t) in history.time.iter().enumerate() {
+        row.clear();
+        row.push(t);
+        for c in &history.columns {
+            row.push(c.values[i]);
+            if let Some(s) = &c.static_values {
+                row.push(s[i]);
+            }
+        }
+        visit(&row);
+    }
+    Ok(())
 }
 
 /// Writes the CSV text of `history` to `out` (Δt `time_step`, s). Values in
@@ -101,10 +116,19 @@ pub fn write_csv(out: &mut dyn Write, history: &History, time_step: f64) -> io::
     let decimals = time_decimals(time_step);
     let mut buffer = ryu::Buffer::new();
     let mut line = Vec::with_capacity(256);
-    for (i, &t) in history.time.iter().enumerate() {
+    let mut written = Ok(());
+    each_row(history, |row| {
+        if written.is_err() {
+            return;
+        }
         line.clear();
-        row(history, i, clean_time(t, decimals), |x| {
-            if !line.is_empty() {
+        for (k, &value) in row.iter().enumerate() {
+            let x = if k == 0 {
+                clean_time(value, decimals)
+            } else {
+                value
+            };
+            if k > 0 {
                 line.push(b',');
             }
             if x == 0.0 {
@@ -112,11 +136,11 @@ pub fn write_csv(out: &mut dyn Write, history: &History, time_step: f64) -> io::
             } else {
                 line.extend_from_slice(buffer.format(x).as_bytes());
             }
-        });
+        }
         line.push(b'\n');
-        out.write_all(&line)?;
-    }
-    Ok(())
+        written = out.write_all(&line);
+    })?;
+    written
 }
 
 /// The NPY 1.0 header of a C-order little-endian float64 array of
@@ -145,14 +169,19 @@ pub fn write_npy(out: &mut dyn Write, history: &History, time_step: f64) -> io::
     out.write_all(&npy_header(rows, columns))?;
     let decimals = time_decimals(time_step);
     let mut line = Vec::with_capacity(8 * columns);
-    for (i, &t) in history.time.iter().enumerate() {
+    let mut written = Ok(());
+    each_row(history, |row| {
+        if written.is_err() {
+            return;
+        }
         line.clear();
-        row(history, i, clean_time(t, decimals), |x| {
+        line.extend_from_slice(&clean_time(row[0], decimals).to_le_bytes());
+        for x in &row[1..] {
             line.extend_from_slice(&x.to_le_bytes());
-        });
-        out.write_all(&line)?;
-    }
-    Ok(())
+        }
+        written = out.write_all(&line);
+    })?;
+    written
 }
 
 /// Writes the history files `format` asks for into the folder `out`:

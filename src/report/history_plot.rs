@@ -75,12 +75,105 @@ pub fn write_history_svg(
     draw_history_plot(path, scenario, history, true)
 }
 
+/// Buckets of a streamed history's plot: each keeps its rows' first and
+/// last time and every column's minimum and maximum, so a chart of 10⁷
+/// rows draws 2 × 4096 points per series with every peak in place.
+const PLOT_BUCKETS: usize = 4096;
+
+/// A streamed history ([`crate::record::spill`]) reduced for drawing:
+/// rows in buckets of ⌈rows / [`PLOT_BUCKETS`]⌉, each bucket two rows at
+/// its first and last time holding every column's minimum and maximum in
+/// the order they came. Memory O(PLOT_BUCKETS · columns).
+fn reduced_for_plot(history: &History) -> Result<History, PlotError> {
+    let Some(spilled) = &history.spilled else {
+        return Ok(history.clone());
+    };
+    // Up to 2 × PLOT_BUCKETS rows: every row, as the history in memory
+    // would draw them.
+    let per_bucket = if spilled.rows <= 2 * PLOT_BUCKETS {
+        1
+    } else {
+        spilled.rows.div_ceil(PLOT_BUCKETS)
+    };
+    let width = spilled.width;
+    let mut reduced = history.clone();
+    reduced.spilled = None;
+    let mut table: Vec<Vec<f64>> = vec![Vec::new(); width];
+    // Per value: (min, index of min, max, index of max) in the bucket.
+    let mut bucket: Vec<(f64, usize, f64, usize)> = Vec::new();
+    let (mut first_time, mut last_time, mut in_bucket) = (0.0, 0.0, 0usize);
+    let mut flush = |bucket: &mut Vec<(f64, usize, f64, usize)>, first: f64, last: f64| {
+        if bucket.is_empty() {
+            return;
+        }
+        if per_bucket == 1 {
+            for (k, &(value, ..)) in bucket.iter().enumerate() {
+                table[k].push(value);
+            }
+            bucket.clear();
+            return;
+        }
+        table[0].push(first);
+        table[0].push(last);
+        for (k, &(low, at_low, high, at_high)) in bucket.iter().enumerate().skip(1) {
+            let (a, b) = if at_low <= at_high {
+                (low, high)
+            } else {
+                (high, low)
+            };
+            table[k].push(a);
+            table[k].push(b);
+        }
+        bucket.clear();
+    };
+    spilled
+        .for_each_row(|row| {
+            if in_bucket == 0 {
+                first_time = row[0];
+                bucket.extend(row.iter().map(|&v| (v, 0, v, 0)));
+            } else {
+                for (slot, &v) in bucket.iter_mut().zip(row) {
+                    if v < slot.0 {
+                        *slot = (v, in_bucket, slot.2, slot.3);
+                    }
+                    if v > slot.2 {
+                        *slot = (slot.0, slot.1, v, in_bucket);
+                    }
+                }
+            }
+            last_time = row[0];
+            in_bucket += 1;
+            if in_bucket == per_bucket {
+                flush(&mut bucket, first_time, last_time);
+                in_bucket = 0;
+            }
+        })
+        .map_err(|e| PlotError::InvalidInput(format!("reading the streamed history: {e}")))?;
+    flush(&mut bucket, first_time, last_time);
+    let mut columns = table.into_iter();
+    reduced.time = columns.next().unwrap_or_default();
+    for c in &mut reduced.columns {
+        c.values = columns.next().unwrap_or_default();
+        if c.static_values.is_some() {
+            c.static_values = Some(columns.next().unwrap_or_default());
+        }
+    }
+    Ok(reduced)
+}
+
 fn draw_history_plot(
     path: &Path,
     scenario: &Scenario,
     history: &History,
     svg: bool,
 ) -> Result<(), PlotError> {
+    let reduced;
+    let history = if history.spilled.is_some() {
+        reduced = reduced_for_plot(history)?;
+        &reduced
+    } else {
+        history
+    };
     // Panels in the order their kind first appears; one per (quantity, unit).
     let mut keys: Vec<(Quantity, &str)> = Vec::new();
     for c in &history.columns {
