@@ -199,6 +199,16 @@ pub struct Outcome {
 
 /// Builds and integrates a loaded scenario.
 pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunError> {
+    run_scene(loaded, progress, None)
+}
+
+/// One scene through build → solve → record, the rows streamed to the
+/// folder of `stream` when they would pass its byte bound.
+fn run_scene(
+    loaded: Loaded,
+    progress: Progress<'_>,
+    stream: Option<(&Path, f64)>,
+) -> Result<Outcome, RunError> {
     let start = Instant::now();
     let Loaded { scenario, bridge } = loaded;
     let model = Model::build(&scenario, bridge)?;
@@ -206,8 +216,21 @@ pub fn simulate(loaded: Loaded, progress: Progress<'_>) -> Result<Outcome, RunEr
         .and_then(|r| r.with_envelopes(scenario.envelopes.as_ref()))
         .map_err(BuildError::from)?
         .every(scenario.output.every);
+    let io = |source| -> RunError {
+        ReportError::Io {
+            path: stream.map_or_else(PathBuf::new, |(out, _)| out.to_path_buf()),
+            source,
+        }
+        .into()
+    };
+    if let Some((out, above_bytes)) = stream {
+        let rows = (model.steps / scenario.output.every.max(1)) as f64 + 1.0;
+        if rows * recorder.row_width() as f64 * 8.0 > above_bytes {
+            recorder = recorder.spill_into(out).map_err(io)?;
+        }
+    }
     let stats = solve::run(&model, &mut recorder, progress)?;
-    let history = recorder.finish();
+    let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
     let summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
     Ok(Outcome {
@@ -245,33 +268,8 @@ pub fn simulate_streaming_above(
     progress: Progress<'_>,
     stream_above_bytes: f64,
 ) -> Result<Outcome, RunError> {
-    let start = Instant::now();
     create_out(out)?;
-    let Loaded { scenario, bridge } = loaded;
-    let model = Model::build(&scenario, bridge)?;
-    let io = |source| ReportError::Io {
-        path: out.to_path_buf(),
-        source,
-    };
-    let recorder = Recorder::new(&model, &scenario.record)
-        .and_then(|r| r.with_envelopes(scenario.envelopes.as_ref()))
-        .map_err(BuildError::from)?
-        .every(scenario.output.every);
-    let rows = (model.steps / scenario.output.every.max(1)) as f64 + 1.0;
-    let mut recorder = if rows * recorder.row_width() as f64 * 8.0 > stream_above_bytes {
-        recorder.spill_into(out).map_err(io)?
-    } else {
-        recorder
-    };
-    let stats = solve::run(&model, &mut recorder, progress)?;
-    let history = recorder.finish_spilled().map_err(io)?;
-    let wall_time = start.elapsed().as_secs_f64();
-    let summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
-    Ok(Outcome {
-        model,
-        history,
-        summary,
-    })
+    run_scene(loaded, progress, Some((out, stream_above_bytes)))
 }
 
 /// [`execute`] with a single scene's rows streamed to the output folder

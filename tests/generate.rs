@@ -31,6 +31,27 @@ fn dense(order: usize, entries: &[(usize, usize, f64)]) -> DMatrix<f64> {
     a
 }
 
+/// Every eigenvalue of the model's pencil, ascending (rad²/s²), by an
+/// independent dense solver (nalgebra, not faer): the inverted reduction
+/// L⁻¹ M L⁻ᵀ with K = L Lᵀ, whose largest eigenvalues 1/λ carry full
+/// relative accuracy for the lowest λ.
+fn dense_eigenvalues(model: &generate::Reduced) -> Vec<f64> {
+    let k = dense(model.order, &model.stiffness);
+    let m = dense(model.order, &model.mass);
+    let l = k.cholesky().expect("K positive definite").l();
+    let l_inv = l.try_inverse().unwrap();
+    let reduced = &l_inv * &m * l_inv.transpose();
+    let reduced = 0.5 * (&reduced + reduced.transpose());
+    let mut lambdas: Vec<f64> = reduced
+        .symmetric_eigen()
+        .eigenvalues
+        .iter()
+        .map(|mu| 1.0 / mu)
+        .collect();
+    lambdas.sort_by(f64::total_cmp);
+    lambdas
+}
+
 /// Frequencies against an independent dense solver (nalgebra, not faer):
 /// the inverted reduction L⁻¹ M L⁻ᵀ with K = L Lᵀ, whose largest
 /// eigenvalues 1/λ carry full relative accuracy for the lowest λ. The
@@ -50,19 +71,7 @@ fn small_viaduct_modes_match_a_dense_solver() {
     assert!(pairs.check.largest_residual < 1e-8);
     assert!(pairs.check.orthonormality_error < 1e-8);
 
-    let k = dense(model.order, &model.stiffness);
-    let m = dense(model.order, &model.mass);
-    let l = k.clone().cholesky().expect("K positive definite").l();
-    let l_inv = l.clone().try_inverse().unwrap();
-    let reduced = &l_inv * &m * l_inv.transpose();
-    let reduced = 0.5 * (&reduced + reduced.transpose());
-    let mut lambdas: Vec<f64> = reduced
-        .symmetric_eigen()
-        .eigenvalues
-        .iter()
-        .map(|mu| 1.0 / mu)
-        .collect();
-    lambdas.sort_by(f64::total_cmp);
+    let lambdas = dense_eigenvalues(&model);
     for (i, (&sparse, &reference)) in pairs.eigenvalues.iter().zip(&lambdas).enumerate() {
         let error = (sparse - reference).abs() / reference;
         assert!(
@@ -93,19 +102,7 @@ fn half_the_modes_of_a_symmetric_viaduct_pass_their_checks() {
     let pairs = pencil.lowest(count).unwrap();
     assert!(pairs.check.largest_residual < 1e-8, "{:?}", pairs.check);
     assert!(pairs.check.orthonormality_error < 1e-8, "{:?}", pairs.check);
-    let k = dense(model.order, &model.stiffness);
-    let m = dense(model.order, &model.mass);
-    let l = k.cholesky().expect("K positive definite").l();
-    let l_inv = l.try_inverse().unwrap();
-    let reduced = &l_inv * &m * l_inv.transpose();
-    let reduced = 0.5 * (&reduced + reduced.transpose());
-    let mut lambdas: Vec<f64> = reduced
-        .symmetric_eigen()
-        .eigenvalues
-        .iter()
-        .map(|mu| 1.0 / mu)
-        .collect();
-    lambdas.sort_by(f64::total_cmp);
+    let lambdas = dense_eigenvalues(&model);
     // The lowest 50 to 1e-9 (the bound); the dense reference's own
     // relative accuracy falls like λ/λ₁ for the higher ones.
     for (i, (&sparse, &reference)) in pairs.eigenvalues.iter().zip(&lambdas).take(50).enumerate() {

@@ -237,7 +237,10 @@ fn streamed_runs_write_what_runs_in_memory_write() {
         vbi::run::simulate_streaming_above(loaded, &streamed, &mut |_, _| {}, 0.0).unwrap();
     assert!(outcome.history.spilled.is_some() && outcome.history.time.is_empty());
     let rows = outcome.history.spilled.as_ref().unwrap().rows;
-    assert!(rows > 8192, "{rows} rows: the plot's bucket path is exercised");
+    assert!(
+        rows > 8192,
+        "{rows} rows: the plot's bucket path is exercised"
+    );
     vbi::run::write_results_with(&streamed, &scenario, &outcome, false).unwrap();
     for file in ["history.csv", "history.npy", "history_columns.txt"] {
         let (a, b) = (

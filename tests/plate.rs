@@ -214,17 +214,14 @@ fn compare_with_bfs(
     worst
 }
 
-/// Isotropic plate simply supported on all four edges, 20 m × 8 m (not
-/// 20 × 10: a = 2b makes (2,2) and (4,1) coincide, so their order is moot),
-/// h = 0.2 m, E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³, against the closed form
-/// ω_mn = π²[(m/a)² + (n/b)²]√(D/ρh) (Leissa, Vibration of Plates, NASA
-/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 5e-4 (measured
-/// 5.6e-5 at most, mode (4,1) with 8 × 6 terms), and each
-/// mode's character is its (m, n).
-#[test]
-fn simply_supported_plate_matches_closed_form() {
-    let (a, b, h, e, nu, rho) = (20.0, 8.0, 0.2, 3.0e10, 0.2, 2400.0);
-    let deck = plate(
+/// The isotropic plate simply supported on all four edges: a = 20 m,
+/// b = 8 m, h = 0.2 m, E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³.
+const SS_PLATE: (f64, f64, f64, f64, f64, f64) = (20.0, 8.0, 0.2, 3.0e10, 0.2, 2400.0);
+
+/// [`SS_PLATE`] with a basis of `terms` (longitudinal, transverse).
+fn ss_plate(terms: (usize, usize)) -> Plate {
+    let (a, b, h, e, nu, rho) = SS_PLATE;
+    plate(
         &[a],
         b,
         Some(h),
@@ -234,8 +231,21 @@ fn simply_supported_plate_matches_closed_form() {
             poisson_ratio: nu,
         },
         PlateEdges::SimplySupported,
-        (8, 6),
-    );
+        terms,
+    )
+}
+
+/// Isotropic plate simply supported on all four edges, 20 m × 8 m (not
+/// 20 × 10: a = 2b makes (2,2) and (4,1) coincide, so their order is moot),
+/// h = 0.2 m, E = 30 GPa, ν = 0.2, ρ = 2400 kg/m³, against the closed form
+/// ω_mn = π²[(m/a)² + (n/b)²]√(D/ρh) (Leissa, Vibration of Plates, NASA
+/// SP-160, 1969, eq. 4.26): the lowest 6 frequencies within 5e-4 (measured
+/// 5.6e-5 at most, mode (4,1) with 8 × 6 terms), and each
+/// mode's character is its (m, n).
+#[test]
+fn simply_supported_plate_matches_closed_form() {
+    let (a, b, h, e, nu, rho) = SS_PLATE;
+    let deck = ss_plate((8, 6));
     let (modes, omegas) = PlateModes::build(&deck).unwrap();
     let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
     let mut exact: Vec<(f64, usize, usize)> = (1..=8)
@@ -591,19 +601,8 @@ fn navier_moments(
 #[test]
 fn plate_moments_match_navier() {
     use vbi::bridge::plate::moments::PlateMoment;
-    let (a, b, h, e, nu, rho) = (20.0, 8.0, 0.2, 3.0e10, 0.2, 2400.0);
-    let deck = plate(
-        &[a],
-        b,
-        Some(h),
-        rho * h,
-        Rigidity::Isotropic {
-            youngs_modulus: e,
-            poisson_ratio: nu,
-        },
-        PlateEdges::SimplySupported,
-        (36, 16),
-    );
+    let (a, b, h, e, nu, _) = SS_PLATE;
+    let deck = ss_plate((36, 16));
     let mut deck = deck;
     deck.elements_per_span = 80;
     let (modes, omegas) = PlateModes::build(&deck).unwrap();
