@@ -455,3 +455,32 @@ RSA                        2             2             3             0
         "{message}"
     );
 }
+
+/// The automatic mode choice on an imported track model carries a known
+/// gap (tests/automatic_shipped.rs): a run that used it says so, and one
+/// with its modes set does not.
+#[test]
+fn automatic_modes_on_an_imported_track_are_flagged() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join("viaduct-2span-axle-loads.yaml");
+    let loaded = vbi::scenario::load_file(&path).unwrap();
+    let scenario = loaded.scenario.clone();
+    let outcome = run(loaded);
+    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    assert!(
+        warnings.iter().any(|w| w.contains("vbi converge")),
+        "{warnings:?}"
+    );
+    let shipped = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join("fe-import-lcp-fig4-rigid.yaml");
+    let loaded = vbi::scenario::load_file(&shipped).unwrap();
+    let scenario = loaded.scenario.clone();
+    let outcome = run(loaded);
+    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    assert!(
+        !warnings.iter().any(|w| w.contains("vbi converge")),
+        "{warnings:?}"
+    );
+}

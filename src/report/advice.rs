@@ -60,7 +60,24 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     let run = &summary.run;
     let last = run.end_time - 0.5 * run.time_step;
     let period = run.frequencies.first().map(|f| 1.0 / f);
-    summary
+    let mut out = Vec::new();
+    // The known gap of the automatic choice on imported tracks (measured
+    // on scenarios/viaduct-2span-axle-loads.yaml; tests/automatic_shipped.rs).
+    if matches!(
+        scenario.bridge,
+        crate::scenario::resolved::Bridge::FeImport(_)
+    ) && run.modes_selection.starts_with("automatic")
+    {
+        out.push(
+            "the automatic mode choice is not verified against its 0.5 % target on an \
+             imported track model: axles stepping onto the free rail ends and over deck joints \
+             ring track modes above the cut (rail displacement 3.7 % off on the shipped \
+             viaduct-2span-axle-loads, deck acceleration 0.01 %); check this run with \
+             `vbi converge` or set `bridge.modes`"
+                .to_string(),
+        );
+    }
+    out.extend(summary
         .quantities
         .iter()
         .filter(|q| {
@@ -87,5 +104,7 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
                 q.name, q.max_abs.time
             )
         })
-        .collect()
+        .collect::<Vec<_>>(),
+    );
+    out
 }
