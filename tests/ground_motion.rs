@@ -642,3 +642,110 @@ fn a_lateral_record_on_a_plane_beam_is_refused() {
         "{message}"
     );
 }
+
+/// An imported model's lateral mode components along its track (issue 13,
+/// point 1): on the doubled beam each lateral mode's component at a rail
+/// node is its uy DOF value, the slope between nodes is the derivative of
+/// the values (Hermite with rz), the vertical modes have none of it (and
+/// the lateral ones no vertical component), and the lateral frequencies are
+/// √1.7 × the vertical ones (the stiffened copy), to 1e-9.
+#[test]
+fn an_imported_model_offers_lateral_mode_components() {
+    use vbi::bridge::fe_import::Direction;
+    use vbi::contact::ContactDirection;
+    let dir = folder("lateral-components");
+    harmonic_csv(&dir);
+    let beam = "name: quake\n\
+         bridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,\n\
+         \x20 elements_per_span: 20, damping: {type: modal, ratio: 0.02}, modes: {count: 40}}\n\
+         vehicles:\n  - {type: moving_force, loads: [1.0e5], speed: 12.5}\n\
+         solver: {time_step: 2.5e-4}\n\
+         record:\n  - {name: midspan, quantity: bridge_displacement, x: 12.5}\n";
+    export_beam(&dir, beam);
+    let scene = doubled_model(&dir, &dir.join("exported"), "");
+    let file = dir.join("scene.yaml");
+    let loaded = load_str(&scene, file.to_str().unwrap()).unwrap_or_else(|e| panic!("{e}"));
+    let bridge = &loaded.bridge;
+    let modes = bridge.mode_count();
+    let (mut values, mut slopes, mut curvatures) =
+        (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
+    let mut at_dof = vec![0.0; modes];
+    let mut vertical = vec![0.0; modes];
+    // Which modes are lateral: a non-zero uy at some rail node.
+    let mut largest_uy = vec![0.0f64; modes];
+    for node in 2..=20u64 {
+        let dof = bridge.imported_dof(node, Direction::Uy).unwrap().unwrap();
+        bridge.dof_mode_values(dof, &mut at_dof);
+        for (l, v) in largest_uy.iter_mut().zip(&at_dof) {
+            *l = l.max(v.abs());
+        }
+    }
+    let lateral_modes: Vec<usize> = (0..modes).filter(|&m| largest_uy[m] > 1e-9).collect();
+    assert!(!lateral_modes.is_empty());
+    for node in 2..=20u64 {
+        let x = 1.25 * (node - 1) as f64;
+        bridge.mode_components(
+            ContactDirection::Lateral,
+            x,
+            0.0,
+            &mut values,
+            &mut slopes,
+            &mut curvatures,
+        );
+        let dof = bridge.imported_dof(node, Direction::Uy).unwrap().unwrap();
+        bridge.dof_mode_values(dof, &mut at_dof);
+        bridge.mode_values_in(ContactDirection::Vertical, x, 0.0, &mut vertical);
+        for m in 0..modes {
+            assert!((values[m] - at_dof[m]).abs() <= 1e-12 * at_dof[m].abs().max(1e-6));
+            let is_lateral = lateral_modes.contains(&m);
+            if is_lateral {
+                assert!(
+                    vertical[m].abs() < 1e-9,
+                    "lateral mode {m} moves vertically"
+                );
+            } else {
+                assert!(values[m].abs() < 1e-9, "vertical mode {m} moves sideways");
+            }
+        }
+    }
+    // Slopes are the values' derivative between nodes.
+    let (x, h) = (7.9, 1e-5);
+    let (mut ahead, mut behind) = (vec![0.0; modes], vec![0.0; modes]);
+    bridge.mode_components(
+        ContactDirection::Lateral,
+        x,
+        0.0,
+        &mut values,
+        &mut slopes,
+        &mut curvatures,
+    );
+    bridge.mode_values_in(ContactDirection::Lateral, x + h, 0.0, &mut ahead);
+    bridge.mode_values_in(ContactDirection::Lateral, x - h, 0.0, &mut behind);
+    for m in &lateral_modes {
+        let difference = (ahead[*m] - behind[*m]) / (2.0 * h);
+        assert!(
+            (difference - slopes[*m]).abs() <= 1e-6 * slopes[*m].abs().max(1e-3),
+            "mode {m}: slope {} vs difference {difference}",
+            slopes[*m]
+        );
+    }
+    // Lateral frequencies: √1.7 × the vertical ones, pairwise in order.
+    let frequencies = bridge.frequencies();
+    let (lat, ver): (Vec<f64>, Vec<f64>) = (0..modes)
+        .map(|m| (lateral_modes.contains(&m), frequencies[m]))
+        .fold((Vec::new(), Vec::new()), |(mut l, mut v), (is, f)| {
+            if is {
+                l.push(f)
+            } else {
+                v.push(f)
+            }
+            (l, v)
+        });
+    for (l, v) in lat.iter().zip(&ver).take(10) {
+        let ratio = l / v;
+        assert!(
+            (ratio - LATERAL_STIFFENING.sqrt()).abs() < 1e-9,
+            "{l} Hz against {v} Hz: ratio {ratio}"
+        );
+    }
+}

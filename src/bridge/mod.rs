@@ -560,9 +560,11 @@ impl ModalBridge {
     /// mode's displacement in that direction (+z up, +y left of travel)
     /// at the rail point x along the bridge, y across it; zero off the
     /// bridge. Vertical: [`ModalBridge::mode_values_slopes_curvatures`].
-    /// Lateral: zero for a bridge modelled in the vertical plane only (a
-    /// plane beam, a plate: it does not move sideways, so a wheelset
-    /// following its rails laterally only follows their alignment).
+    /// Lateral: an imported model's uy components along its track (the mean
+    /// of the track's rails; Hermite with rz where every node has it, as
+    /// the vertical with ry); zero for a bridge modelled in the vertical
+    /// plane (a plane beam, a plate: it does not move sideways, so a
+    /// wheelset following its rails laterally only follows their alignment).
     #[inline]
     pub fn mode_components(
         &self,
@@ -577,11 +579,16 @@ impl ModalBridge {
             ContactDirection::Vertical => {
                 self.mode_values_slopes_curvatures(x, y, values, slopes, curvatures)
             }
-            ContactDirection::Lateral => {
-                values.fill(0.0);
-                slopes.fill(0.0);
-                curvatures.fill(0.0);
-            }
+            ContactDirection::Lateral => match &self.shapes {
+                Shapes::Imported(imported) => imported
+                    .lateral_track
+                    .evaluate(x, values, slopes, curvatures),
+                _ => {
+                    values.fill(0.0);
+                    slopes.fill(0.0);
+                    curvatures.fill(0.0);
+                }
+            },
         }
     }
 
@@ -591,7 +598,12 @@ impl ModalBridge {
     pub fn mode_values_in(&self, direction: ContactDirection, x: f64, y: f64, values: &mut [f64]) {
         match direction {
             ContactDirection::Vertical => self.mode_values(x, y, values),
-            ContactDirection::Lateral => values.fill(0.0),
+            ContactDirection::Lateral => match &self.shapes {
+                Shapes::Imported(imported) => {
+                    imported.lateral_track.evaluate(x, values, &mut [], &mut [])
+                }
+                _ => values.fill(0.0),
+            },
         }
     }
 

@@ -31,6 +31,10 @@ pub struct ImportedShapes {
     pub vectors: Mat<f64>,
     /// The kept modes along the track (vertical).
     pub track: TrackField,
+    /// The kept modes' lateral (uy) components along the track, the mean
+    /// of its rails (zero where a rail node has no free uy): what a
+    /// wheelset following its rails sideways meets (issue 13).
+    pub lateral_track: TrackField,
 }
 
 impl ImportedShapes {
@@ -40,11 +44,15 @@ impl ImportedShapes {
         let track = track_field(&model, RailDirection::Vertical, count, |dof, c| {
             vectors[(dof, c)]
         });
+        let lateral_track = track_field(&model, RailDirection::Lateral, count, |dof, c| {
+            vectors[(dof, c)]
+        });
         Self {
             model,
             pencil,
             vectors,
             track,
+            lateral_track,
         }
     }
 
