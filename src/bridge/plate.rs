@@ -490,26 +490,39 @@ impl PlateModes {
         y_point: f64,
         y_load: f64,
     ) -> Result<HermiteField, BridgeError> {
-        let (nx, ny) = (self.longitudinal_terms, self.transverse_terms);
-        let psi = self.basis_values(x_point, y_point);
-        let mut deflection = Mat::from_fn(psi.len(), 1, |r, _| psi[r]);
+        let deflection = self.solve_stiffness(&self.basis_values(x_point, y_point))?;
+        Ok(self.along_load_line(&deflection, y_load, 1.0))
+    }
+
+    /// K⁻¹ `rhs` with the full Ritz stiffness (factored once in `build`).
+    /// Cost O(N²).
+    fn solve_stiffness(&self, rhs: &[f64]) -> Result<Mat<f64>, BridgeError> {
+        let mut solution = Mat::from_fn(rhs.len(), 1, |r, _| rhs[r]);
         let lower = self.stiffness_factor.as_ref();
-        lower.solve_lower_triangular_in_place(deflection.as_mut());
+        lower.solve_lower_triangular_in_place(solution.as_mut());
         lower
             .transpose()
-            .solve_upper_triangular_in_place(deflection.as_mut());
-        if deflection.col(0).iter().any(|u| !u.is_finite()) {
+            .solve_upper_triangular_in_place(solution.as_mut());
+        if solution.col(0).iter().any(|u| !u.is_finite()) {
             return Err(BridgeError::StiffnessNotPositive);
         }
+        Ok(solution)
+    }
+
+    /// `scale` · Ψ(ξ, y_load)ᵀ u as a one-component Hermite field in ξ, for
+    /// Ritz coefficients u (one column): its nodal (w, θ) are
+    /// Σᵢ (wᵢ, θᵢ) Σⱼ Yⱼ(y_load) uᵢⱼ. Zero off the deck.
+    fn along_load_line(&self, u: &Mat<f64>, y_load: f64, scale: f64) -> HermiteField {
+        let (nx, ny) = (self.longitudinal_terms, self.transverse_terms);
         let mut weights = vec![0.0; nx];
         if (0.0..=self.width).contains(&y_load) {
             self.transverse.for_each(self.width, ny, y_load, |j, yj| {
                 for (i, weight) in weights.iter_mut().enumerate() {
-                    *weight += yj[0] * deflection[(i * ny + j, 0)];
+                    *weight += scale * yj[0] * u[(i * ny + j, 0)];
                 }
             });
         }
-        Ok(self.combine(&weights, 1))
+        self.combine(&weights, 1)
     }
 
     /// Character of kept mode `mode` (from 0): the (longitudinal, transverse)

@@ -67,6 +67,25 @@ enum Probe {
     VehicleAcceleration { vehicle: usize, dof: usize },
 }
 
+/// The distinct transverse positions y of the wheels (m), in order of
+/// first appearance, and the index of each flattened wheel's among them:
+/// one static influence line per such line serves every wheel on it.
+fn wheel_lines(model: &Model) -> (Vec<f64>, Vec<usize>) {
+    let mut lines: Vec<f64> = Vec::new();
+    let line_of = model
+        .wheel_y
+        .iter()
+        .map(|&wheel_y| match lines.iter().position(|&l| l == wheel_y) {
+            Some(index) => index,
+            None => {
+                lines.push(wheel_y);
+                lines.len() - 1
+            }
+        })
+        .collect();
+    (lines, line_of)
+}
+
 /// The static influence lines of one bridge point for the loads of every
 /// wheel: one line per distinct wheel y, and which one each flattened wheel uses.
 #[derive(Debug, Clone)]
@@ -78,18 +97,7 @@ struct StaticProbe {
 impl StaticProbe {
     /// The probe of the point (x, y), m.
     fn new(model: &Model, x: f64, y: f64) -> Result<Self, BridgeError> {
-        let mut lines: Vec<f64> = Vec::new();
-        let mut wheel_influence = Vec::with_capacity(model.wheel_y.len());
-        for &wheel_y in &model.wheel_y {
-            let index = match lines.iter().position(|&l| l == wheel_y) {
-                Some(index) => index,
-                None => {
-                    lines.push(wheel_y);
-                    lines.len() - 1
-                }
-            };
-            wheel_influence.push(index);
-        }
+        let (lines, wheel_influence) = wheel_lines(model);
         let influences = lines
             .iter()
             .map(|&line| model.bridge.influence_line(x, y, line))
@@ -288,6 +296,18 @@ pub struct History {
     pub spilled: Option<std::sync::Arc<spill::SpilledRows>>,
 }
 
+impl History {
+    /// Values per row of the history table: time, and each column's value
+    /// and, for a bridge displacement, its static value.
+    pub fn row_width(&self) -> usize {
+        1 + self
+            .columns
+            .iter()
+            .map(|c| 1 + usize::from(c.static_values.is_some()))
+            .sum::<usize>()
+    }
+}
+
 /// Gap above which a wheel with zero contact force counts as separated, m.
 /// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
 pub const SEPARATION_GAP: f64 = 1e-9;
@@ -402,18 +422,7 @@ impl<'m> Recorder<'m> {
                 Quantity::BridgeMoment if record.component.is_some() => {
                     // A plate deck (moments per unit width).
                     let (x, y) = (record.x.unwrap_or(0.0), record.y.unwrap_or(0.0));
-                    let mut lines: Vec<f64> = Vec::new();
-                    let line_of = model
-                        .wheel_y
-                        .iter()
-                        .map(|&wy| match lines.iter().position(|&l| l == wy) {
-                            Some(k) => k,
-                            None => {
-                                lines.push(wy);
-                                lines.len() - 1
-                            }
-                        })
-                        .collect();
+                    let (lines, line_of) = wheel_lines(model);
                     let component = record.component.expect("checked by the guard");
                     let probe = model
                         .bridge
@@ -633,15 +642,9 @@ impl<'m> Recorder<'m> {
         Ok(self)
     }
 
-    /// Values per written row: time, and each column's value and static
-    /// value.
+    /// Values per written row ([`History::row_width`]).
     pub fn row_width(&self) -> usize {
-        1 + self
-            .history
-            .columns
-            .iter()
-            .map(|c| 1 + usize::from(c.static_values.is_some()))
-            .sum::<usize>()
+        self.history.row_width()
     }
 
     /// [`Recorder::finish`] of a spilling recorder: the history with its

@@ -60,11 +60,7 @@ pub fn clean_time(t: f64, decimals: Option<i32>) -> f64 {
 
 /// Number of rows and of columns of the history table.
 fn shape(history: &History) -> (usize, usize) {
-    let columns = 1 + history
-        .columns
-        .iter()
-        .map(|c| 1 + usize::from(c.static_values.is_some()))
-        .sum::<usize>();
+    let columns = history.row_width();
     let rows = history
         .spilled
         .as_ref()

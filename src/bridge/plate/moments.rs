@@ -114,7 +114,7 @@ impl PlateModes {
         circular_frequencies: &[f64],
         line_y: &[f64],
     ) -> Result<PlateMomentProbe, BridgeError> {
-        let (ny, terms) = (self.transverse_terms, self.available());
+        let terms = self.available();
         let basis = self.moment_basis(x, y, moment);
         let modal: Vec<f64> = (0..self.kept)
             .map(|m| {
@@ -129,28 +129,10 @@ impl PlateModes {
             .map(|(e, w)| e / (w * w))
             .collect();
         // u = K⁻¹ b; M(ξ, η) = −Ψ(ξ, η)ᵀ u.
-        let mut solution = faer::Mat::from_fn(basis.len(), 1, |r, _| basis[r]);
-        let lower = self.stiffness_factor.as_ref();
-        lower.solve_lower_triangular_in_place(solution.as_mut());
-        lower
-            .transpose()
-            .solve_upper_triangular_in_place(solution.as_mut());
-        if solution.col(0).iter().any(|u| !u.is_finite()) {
-            return Err(BridgeError::StiffnessNotPositive);
-        }
+        let solution = self.solve_stiffness(&basis)?;
         let lines = line_y
             .iter()
-            .map(|&line| {
-                let mut weights = vec![0.0; self.longitudinal_terms];
-                if (0.0..=self.width).contains(&line) {
-                    self.transverse.for_each(self.width, ny, line, |j, yj| {
-                        for (i, weight) in weights.iter_mut().enumerate() {
-                            *weight -= yj[0] * solution[(i * ny + j, 0)];
-                        }
-                    });
-                }
-                self.combine(&weights, 1)
-            })
+            .map(|&line| self.along_load_line(&solution, line, -1.0))
             .collect();
         Ok(PlateMomentProbe {
             modal,
