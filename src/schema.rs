@@ -245,6 +245,7 @@ pub fn dof_name(schema: &mut Schema) {
         .iter()
         .chain(crate::vehicle::h20_44::DOF_NAMES.iter())
         .chain(crate::vehicle::rail_car::DOF_NAMES.iter())
+        .chain(crate::vehicle::train_3d::DOF_NAMES.iter())
         .map(|&n| Value::from(n))
         .collect();
     set(schema, "enum", names);

@@ -343,6 +343,10 @@ pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
                 let cars = t.cars.as_ref().map_or(0, Vec::len) as f64;
                 4.0 * (t.count.map_or(0.0, |n| n as f64) + cars).max(1.0)
             }
+            raw::VehicleRaw::Train3d(t) => {
+                let cars = t.cars.as_ref().map_or(0, Vec::len) as f64;
+                12.0 * (t.count.map_or(0.0, |n| n as f64) + cars).max(1.0)
+            }
         })
         .sum()
 }
@@ -404,6 +408,7 @@ pub(super) fn steps_cause(
             Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::RailCar(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::Train(v)) if v.start_position.is_some() => "start_position",
+            Some(raw::VehicleRaw::Train3d(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::Hslm(v)) if v.start_position.is_some() => "start_position",
             _ => "entry_time",
         };

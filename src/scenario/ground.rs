@@ -21,6 +21,7 @@ const MIN_SAMPLE_BYTES: f64 = 2.0;
 pub(super) fn resolve(
     raw: Option<&[GroundMotionRaw]>,
     bridge: Option<&Bridge>,
+    vehicles_move_sideways: bool,
     budget: &Budget,
     ck: &mut Checker<'_>,
 ) -> Vec<GroundMotion> {
@@ -30,7 +31,7 @@ pub(super) fn resolve(
         let direction = component.direction.unwrap_or(Direction::Vertical);
         match direction {
             Direction::Vertical => {}
-            Direction::Lateral if moves_sideways(bridge) => {}
+            Direction::Lateral if moves_sideways(bridge) || vehicles_move_sideways => {}
             Direction::Lateral => {
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",
@@ -40,9 +41,10 @@ pub(super) fn resolve(
                 ck.error(
                     &format!("{at}.direction"),
                     format!(
-                        "a lateral ground motion needs lateral bridge modes and vehicles that move \
-                         sideways; the {kind} bridge is used here as a vertical model (its modes \
-                         are followed up and down only), so the record would have no effect"
+                        "a lateral ground motion needs lateral bridge modes or vehicles that move \
+                         sideways (`train_3d`); the {kind} bridge is used here as a vertical model \
+                         (its modes are followed up and down only) and no vehicle has lateral \
+                         DOFs, so the record would have no effect"
                     ),
                 );
                 continue;

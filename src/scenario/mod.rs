@@ -22,6 +22,7 @@ pub mod names;
 mod output;
 mod plausible;
 pub mod rail;
+pub mod rail_3d;
 pub mod raw;
 mod records;
 pub mod resolve;

@@ -132,6 +132,11 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
                 super::rail::check_plausible(ck, at, Some(k + 1), &car.parameters);
             }
         }
+        Vehicle::Train3d(t) => {
+            for (k, car) in t.cars.iter().enumerate() {
+                super::rail_3d::check_plausible(ck, at, k + 1, &car.parameters);
+            }
+        }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
             for (field, value) in [

@@ -347,6 +347,12 @@ pub enum VehicleRaw {
     /// `car_spacing`, or a `cars` list. Resolved into one vehicle whose
     /// wheels are every car's wheelsets, numbered front to rear.
     Train(TrainRaw),
+    /// A train of 3D high-speed cars, 27 DOFs each (the EMBS paper's
+    /// AVE-S103): body and bogies with lateral, vertical, yaw, roll and
+    /// pitch motion over wheelsets that follow their rails vertically and
+    /// laterally (permanent contact; no creep, no flange contact).
+    #[serde(rename = "train_3d")]
+    Train3d(Train3dRaw),
     /// An HSLM-A train of EN 1991-2 Annex E (`model: A1` … `A10`) as moving
     /// axle forces; resolved into a `moving_force` with its axle positions.
     Hslm(HslmRaw),

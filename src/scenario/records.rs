@@ -6,7 +6,7 @@ use super::resolve::Checker;
 use super::resolved::*;
 
 use crate::bridge::fe_import::Direction;
-use crate::vehicle::rail_car;
+use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
 /// defines them (for a train: one car's names, picked with `car`).
@@ -16,7 +16,43 @@ fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
         Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
         Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
         Vehicle::RailCar(_) | Vehicle::Train(_) => &rail_car::DOF_NAMES,
+        Vehicle::Train3d(_) => &train_3d::DOF_NAMES,
     }
+}
+
+/// Wheels of one car of a train (`None`: not a train).
+fn wheels_per_car(vehicle: &Vehicle) -> Option<usize> {
+    match vehicle {
+        Vehicle::Train(_) => Some(rail_car::WHEELSETS),
+        Vehicle::Train3d(_) => Some(train_3d::WHEELSETS * train_3d::CONTACTS_PER_WHEELSET),
+        _ => None,
+    }
+}
+
+/// Cars of a train (`None`: not a train).
+fn car_count(vehicle: &Vehicle) -> Option<usize> {
+    match vehicle {
+        Vehicle::Train(t) => Some(t.cars.len()),
+        Vehicle::Train3d(t) => Some(t.cars.len()),
+        _ => None,
+    }
+}
+
+/// Name of train wheel `w` (from 0, over the whole train) in the default
+/// records: car and wheelset, and for a 3D car the contact.
+fn train_wheel_name(vehicle: &Vehicle, w: usize) -> Option<String> {
+    let per_car = wheels_per_car(vehicle)?;
+    let (car, within) = (w / per_car + 1, w % per_car);
+    Some(match vehicle {
+        Vehicle::Train3d(_) => {
+            let contact = ["left", "right", "lateral"][within % train_3d::CONTACTS_PER_WHEELSET];
+            format!(
+                "car{car}_wheelset{}_{contact}",
+                within / train_3d::CONTACTS_PER_WHEELSET + 1
+            )
+        }
+        _ => format!("car{car}_wheel{}", within + 1),
+    })
 }
 
 /// Wheels of a resolved vehicle (of a train: over all its cars).
@@ -27,6 +63,9 @@ fn wheel_count(vehicle: &Vehicle) -> usize {
         Vehicle::H20Truck(_) => 4,
         Vehicle::RailCar(_) => rail_car::WHEELSETS,
         Vehicle::Train(t) => rail_car::WHEELSETS * t.cars.len(),
+        Vehicle::Train3d(t) => {
+            train_3d::WHEELSETS * train_3d::CONTACTS_PER_WHEELSET * t.cars.len()
+        }
     }
 }
 
@@ -266,13 +305,13 @@ pub(super) fn resolve_records(
                 _ if !is_wheel && !is_vehicle_dof => {
                     ck.error(&format!("{at}.car"), unused("car"));
                 }
-                Some(Vehicle::Train(t)) if k >= 1 && k <= t.cars.len() => car = Some(k),
-                Some(Vehicle::Train(t)) => ck.error(
+                Some(t) if car_count(t).is_some_and(|n| k >= 1 && k <= n) => car = Some(k),
+                Some(t) if car_count(t).is_some() => ck.error(
                     &format!("{at}.car"),
                     format!(
                         "car {k} does not exist; the train (vehicle {}) has cars 1 to {}",
                         vehicle.unwrap_or(1),
-                        t.cars.len()
+                        car_count(t).unwrap_or(0)
                     ),
                 ),
                 Some(other) => ck.error(
@@ -286,12 +325,20 @@ pub(super) fn resolve_records(
                 None => {}
             }
         }
+        // A 3D train of one car: that car, unless another is named.
+        if car.is_none()
+            && (is_wheel || is_vehicle_dof)
+            && let Some(Vehicle::Train3d(t)) = vehicle.map(|v| &vehicles[v - 1])
+            && t.cars.len() == 1
+        {
+            car = Some(1);
+        }
         let mut wheel = None;
         if is_wheel {
             let w = r.wheel.unwrap_or(1);
             if let Some(v) = vehicle {
                 let n = if car.is_some() {
-                    rail_car::WHEELSETS
+                    wheels_per_car(&vehicles[v - 1]).unwrap_or(1)
                 } else {
                     wheel_count(&vehicles[v - 1])
                 };
@@ -311,7 +358,13 @@ pub(super) fn resolve_records(
                 }
             }
             // Stored counted over the whole train.
-            wheel = Some(car.map_or(w, |k| rail_car::WHEELSETS * (k - 1) + w));
+            wheel = Some(car.map_or(w, |k| {
+                vehicle
+                    .and_then(|v| wheels_per_car(&vehicles[v - 1]))
+                    .unwrap_or(1)
+                    * (k - 1)
+                    + w
+            }));
         }
         if let (true, Some(v)) = (is_vehicle_dof, vehicle) {
             let names = dof_names(&vehicles[v - 1]);
@@ -343,7 +396,7 @@ pub(super) fn resolve_records(
                 ),
                 _ => {}
             }
-            if matches!(vehicles[v - 1], Vehicle::Train(_)) && car.is_none() && r.dof.is_some() {
+            if car_count(&vehicles[v - 1]).is_some() && car.is_none() && r.dof.is_some() {
                 ck.error(
                     &at,
                     format!("vehicle {v} is a train: pick the car with `car:` (from 1)"),
@@ -422,14 +475,8 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
     for (v, vehicle) in vehicles.iter().enumerate() {
         for w in 0..wheel_count(vehicle) {
             // A train's wheels are named by car and wheelset within the car.
-            let wheel_name = match vehicle {
-                Vehicle::Train(_) => format!(
-                    "car{}_wheel{}",
-                    w / rail_car::WHEELSETS + 1,
-                    w % rail_car::WHEELSETS + 1
-                ),
-                _ => format!("wheel{}", w + 1),
-            };
+            let wheel_name =
+                train_wheel_name(vehicle, w).unwrap_or_else(|| format!("wheel{}", w + 1));
             out.push(Record {
                 name: format!("vehicle{}_{wheel_name}_force", v + 1),
                 quantity: Quantity::ContactForce,

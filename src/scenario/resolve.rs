@@ -156,7 +156,15 @@ pub(super) fn resolve(
     let surface =
         super::surfaces::resolve_surface(raw.surface.as_ref(), bridge_length, &budget, ck);
     let ground_motion =
-        super::ground::resolve(raw.ground_motion.as_deref(), bridge.as_ref(), &budget, ck);
+        super::ground::resolve(
+            raw.ground_motion.as_deref(),
+            bridge.as_ref(),
+            raw.vehicles
+                .iter()
+                .any(|v| matches!(v, raw::VehicleRaw::Train3d(_))),
+            &budget,
+            ck,
+        );
     let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,
@@ -267,6 +275,21 @@ pub(super) fn resolve(
     };
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    if contact.is_unilateral()
+        && let Some(i) = vehicles
+            .iter()
+            .position(|v| matches!(v, Vehicle::Train3d(_)))
+    {
+        ck.error(
+            "contact",
+            format!(
+                "vehicle {} is a `train_3d`, whose wheelsets follow their rails vertically and \
+                 laterally at all times (the EMBS paper's wheel–rail coupling: no creep forces, \
+                 no flange contact, no wheel lift); use `contact: {{type: permanent}}`",
+                i + 1
+            ),
+        );
+    }
     // Derived values too: dimensionless oscillators, ratio-given contacts.
     for (i, vehicle) in vehicles.iter().enumerate() {
         let at = format!("vehicles[{i}]");
@@ -938,6 +961,9 @@ fn resolve_vehicles(
             raw::VehicleRaw::Hslm(_) => {}
             raw::VehicleRaw::Train(v) => {
                 out.push(super::rail::resolve_train(v, &at, width, ck));
+            }
+            raw::VehicleRaw::Train3d(v) => {
+                out.push(super::rail_3d::resolve_train_3d(v, &at, width, ck));
             }
         }
     }

@@ -358,6 +358,9 @@ pub enum Vehicle {
     RailCar(RailCar),
     /// A train of rail cars.
     Train(Train),
+    /// A train of 27-DOF 3D cars.
+    #[serde(rename = "train_3d")]
+    Train3d(Train3d),
 }
 
 impl Vehicle {
@@ -369,6 +372,7 @@ impl Vehicle {
             Vehicle::H20Truck(v) => v.lateral_position,
             Vehicle::RailCar(v) => v.lateral_position,
             Vehicle::Train(v) => v.lateral_position,
+            Vehicle::Train3d(v) => v.lateral_position,
         }
     }
 
@@ -380,6 +384,7 @@ impl Vehicle {
             Vehicle::H20Truck(v) => v.acceleration,
             Vehicle::RailCar(v) => v.acceleration,
             Vehicle::Train(v) => v.acceleration,
+            Vehicle::Train3d(v) => v.acceleration,
         }
     }
 
@@ -413,6 +418,7 @@ impl Vehicle {
             Vehicle::H20Truck(v) => v.speed,
             Vehicle::RailCar(v) => v.speed,
             Vehicle::Train(v) => v.speed,
+            Vehicle::Train3d(v) => v.speed,
         }
     }
     /// Time at which the front axle reaches the entrance, s.
@@ -423,6 +429,7 @@ impl Vehicle {
             Vehicle::H20Truck(v) => v.entry_time,
             Vehicle::RailCar(v) => v.entry_time,
             Vehicle::Train(v) => v.entry_time,
+            Vehicle::Train3d(v) => v.entry_time,
         }
     }
     /// Distance from the front axle back to the rear axle, m.
@@ -435,6 +442,7 @@ impl Vehicle {
             }
             Vehicle::RailCar(v) => crate::vehicle::rail_car::wheelset_span(&v.parameters),
             Vehicle::Train(v) => v.length(),
+            Vehicle::Train3d(v) => v.length(),
         }
     }
     /// Type name as written in the format.
@@ -445,6 +453,7 @@ impl Vehicle {
             Vehicle::H20Truck(_) => "h20_44",
             Vehicle::RailCar(_) => "rail_car",
             Vehicle::Train(_) => "train",
+            Vehicle::Train3d(_) => "train_3d",
         }
     }
 }

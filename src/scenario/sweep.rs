@@ -56,6 +56,7 @@ pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
             Vehicle::H20Truck(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
             Vehicle::RailCar(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
             Vehicle::Train(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
+            Vehicle::Train3d(v) => set(&mut v.speed, &mut v.entry_time, v.acceleration, speed),
         }
     }
     out

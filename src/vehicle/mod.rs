@@ -11,6 +11,7 @@ pub mod motion;
 pub mod moving_force;
 pub mod oscillator;
 pub mod rail_car;
+pub mod train_3d;
 
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
@@ -108,6 +109,7 @@ impl VehicleModel {
             Vehicle::H20Truck(v) => h20_44::build(v, gravity),
             Vehicle::RailCar(v) => rail_car::build(v, gravity),
             Vehicle::Train(v) => rail_car::build_train(v, gravity),
+            Vehicle::Train3d(v) => train_3d::build(v, gravity),
         };
         model.acceleration = vehicle.acceleration();
         model
@@ -231,7 +233,9 @@ impl VehicleModel {
                 let force = solution[n + k];
                 change = change.max((force - forces[w]).abs());
                 forces[w] = force;
-                let updated = if force > 0.0 {
+                // A lateral contact is bilateral and carries no weight.
+                let lateral = self.wheels[w].direction == ContactDirection::Lateral;
+                let updated = if force > 0.0 && !lateral {
                     compression(force) / force
                 } else {
                     0.0
@@ -244,8 +248,17 @@ impl VehicleModel {
                 break;
             }
         }
-        if contact_dofs.iter().any(|&(w, _)| forces[w] < 0.0) {
+        let scale = forces.iter().fold(0.0f64, |m, f| m.max(f.abs())).max(1.0);
+        if contact_dofs.iter().any(|&(w, _)| {
+            self.wheels[w].direction == ContactDirection::Vertical && forces[w] < 0.0
+        }) {
             return Err(VehicleError::NoStaticEquilibrium { vehicle: number });
+        }
+        // A lateral contact of a symmetric vehicle carries 0 up to rounding.
+        for &(w, _) in &contact_dofs {
+            if self.wheels[w].direction == ContactDirection::Lateral && forces[w].abs() < 1e-12 * scale {
+                forces[w] = 0.0;
+            }
         }
         Ok((displacement, forces))
     }

@@ -83,3 +83,95 @@ impl Train {
         })
     }
 }
+
+/// A train of 3D cars (`type: train_3d`, 27 DOFs per car) running together.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Train3d {
+    /// Speed at t = 0, m/s.
+    pub speed: f64,
+    /// Constant acceleration along the path, m/s² (negative: braking; a
+    /// vehicle that stops stays stopped); 0 for constant speed.
+    pub acceleration: f64,
+    /// Time the first car's front wheelset reaches x = 0, s.
+    pub entry_time: f64,
+    /// Transverse position of the track's centre line on a plate deck, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_position: Option<f64>,
+    /// The cars, front first. Car k's wheelsets are wheels 12(k−1)+1 …
+    /// 12k of the train (three per wheelset: left rail, right rail,
+    /// lateral); its DOFs are named `car{k}_body_lateral`, ….
+    pub cars: Vec<Train3dCar>,
+}
+
+/// One car of a 3D train.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Train3dCar {
+    /// Distance of the car's front wheelset behind the train's first
+    /// wheelset, m.
+    pub offset: f64,
+    /// The car's parameters.
+    pub parameters: Train3dParameters,
+}
+
+/// Parameters of one 3D car (see the raw format for each meaning); SI
+/// units. Suspension rates are per spring: one primary spring set per axle
+/// box (two per wheelset), one secondary set per side of a bogie.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct Train3dParameters {
+    /// Car body mass, kg.
+    pub body_mass: f64,
+    /// Car body roll moment of inertia (about x), kg·m².
+    pub body_roll_inertia: f64,
+    /// Car body pitch moment of inertia (about y), kg·m².
+    pub body_pitch_inertia: f64,
+    /// Car body yaw moment of inertia (about z), kg·m².
+    pub body_yaw_inertia: f64,
+    /// Mass of one bogie frame, kg.
+    pub bogie_mass: f64,
+    /// Bogie roll moment of inertia, kg·m².
+    pub bogie_roll_inertia: f64,
+    /// Bogie pitch moment of inertia, kg·m².
+    pub bogie_pitch_inertia: f64,
+    /// Bogie yaw moment of inertia, kg·m².
+    pub bogie_yaw_inertia: f64,
+    /// Mass of one wheelset, kg.
+    pub wheelset_mass: f64,
+    /// Wheelset roll moment of inertia, kg·m².
+    pub wheelset_roll_inertia: f64,
+    /// Primary suspension per axle box, longitudinal / lateral / vertical, N/m.
+    pub primary_stiffness: [f64; 3],
+    /// Primary suspension damping per axle box, longitudinal / lateral / vertical, N·s/m.
+    pub primary_damping: [f64; 3],
+    /// Secondary suspension per side of a bogie, longitudinal / lateral / vertical, N/m.
+    pub secondary_stiffness: [f64; 3],
+    /// Secondary suspension damping per side of a bogie, N·s/m.
+    pub secondary_damping: [f64; 3],
+    /// Half the distance between the bogie centres, m.
+    pub half_bogie_spacing: f64,
+    /// Half the distance between a bogie's two wheelsets, m.
+    pub half_wheelbase: f64,
+    /// Half the lateral distance between the two primary suspensions of a wheelset, m.
+    pub primary_half_spacing: f64,
+    /// Half the lateral distance between the two secondary suspensions of a bogie, m.
+    pub secondary_half_spacing: f64,
+    /// Half the lateral distance between a wheelset's two wheel–rail contact points, m.
+    pub contact_half_spacing: f64,
+    /// Height of the car body's centre of gravity above the rail head, m.
+    pub body_height: f64,
+    /// Height of a bogie's centre of gravity above the rail head, m.
+    pub bogie_height: f64,
+    /// Height of the secondary suspension above the rail head, m.
+    pub secondary_height: f64,
+    /// Nominal rolling radius: the height of the axle (and of the primary
+    /// suspension) above the rail head, m.
+    pub wheel_radius: f64,
+}
+
+impl Train3d {
+    /// Distance from the first wheelset back to the last one, m.
+    pub fn length(&self) -> f64 {
+        self.cars.last().map_or(0.0, |c| {
+            c.offset + 2.0 * (c.parameters.half_bogie_spacing + c.parameters.half_wheelbase)
+        })
+    }
+}
