@@ -71,14 +71,49 @@ fn apply(
     // (name, target, given, zero allowed)
     let fields: [(&str, &mut f64, Option<f64>, bool); 31] = [
         ("body_mass", &mut p.body_mass, o.body_mass, false),
-        ("body_roll_inertia", &mut p.body_roll_inertia, o.body_roll_inertia, false),
-        ("body_pitch_inertia", &mut p.body_pitch_inertia, o.body_pitch_inertia, false),
-        ("body_yaw_inertia", &mut p.body_yaw_inertia, o.body_yaw_inertia, false),
+        (
+            "body_roll_inertia",
+            &mut p.body_roll_inertia,
+            o.body_roll_inertia,
+            false,
+        ),
+        (
+            "body_pitch_inertia",
+            &mut p.body_pitch_inertia,
+            o.body_pitch_inertia,
+            false,
+        ),
+        (
+            "body_yaw_inertia",
+            &mut p.body_yaw_inertia,
+            o.body_yaw_inertia,
+            false,
+        ),
         ("bogie_mass", &mut p.bogie_mass, o.bogie_mass, false),
-        ("bogie_roll_inertia", &mut p.bogie_roll_inertia, o.bogie_roll_inertia, false),
-        ("bogie_pitch_inertia", &mut p.bogie_pitch_inertia, o.bogie_pitch_inertia, false),
-        ("bogie_yaw_inertia", &mut p.bogie_yaw_inertia, o.bogie_yaw_inertia, false),
-        ("wheelset_mass", &mut p.wheelset_mass, o.wheelset_mass, false),
+        (
+            "bogie_roll_inertia",
+            &mut p.bogie_roll_inertia,
+            o.bogie_roll_inertia,
+            false,
+        ),
+        (
+            "bogie_pitch_inertia",
+            &mut p.bogie_pitch_inertia,
+            o.bogie_pitch_inertia,
+            false,
+        ),
+        (
+            "bogie_yaw_inertia",
+            &mut p.bogie_yaw_inertia,
+            o.bogie_yaw_inertia,
+            false,
+        ),
+        (
+            "wheelset_mass",
+            &mut p.wheelset_mass,
+            o.wheelset_mass,
+            false,
+        ),
         (
             "wheelset_roll_inertia",
             &mut p.wheelset_roll_inertia,
@@ -157,8 +192,18 @@ fn apply(
             o.secondary_vertical_damping,
             true,
         ),
-        ("half_bogie_spacing", &mut p.half_bogie_spacing, o.half_bogie_spacing, false),
-        ("half_wheelbase", &mut p.half_wheelbase, o.half_wheelbase, true),
+        (
+            "half_bogie_spacing",
+            &mut p.half_bogie_spacing,
+            o.half_bogie_spacing,
+            false,
+        ),
+        (
+            "half_wheelbase",
+            &mut p.half_wheelbase,
+            o.half_wheelbase,
+            true,
+        ),
         (
             "primary_half_spacing",
             &mut p.primary_half_spacing,
@@ -179,7 +224,12 @@ fn apply(
         ),
         ("body_height", &mut p.body_height, o.body_height, false),
         ("bogie_height", &mut p.bogie_height, o.bogie_height, false),
-        ("secondary_height", &mut p.secondary_height, o.secondary_height, false),
+        (
+            "secondary_height",
+            &mut p.secondary_height,
+            o.secondary_height,
+            false,
+        ),
         ("wheel_radius", &mut p.wheel_radius, o.wheel_radius, false),
     ];
     for (name, target, given, allow_zero) in fields {
@@ -336,13 +386,34 @@ pub(super) fn check_plausible(ck: &mut Checker<'_>, at: &str, car: usize, p: &Tr
         p.bogie_yaw_inertia,
         p.wheelset_roll_inertia,
     ] {
-        within(ck, at, &what("a mass or moment of inertia"), value, MASS, "kg or kg·m²");
+        within(
+            ck,
+            at,
+            &what("a mass or moment of inertia"),
+            value,
+            MASS,
+            "kg or kg·m²",
+        );
     }
     for value in p.primary_stiffness.iter().chain(&p.secondary_stiffness) {
-        within(ck, at, &what("a spring stiffness"), *value, STIFFNESS, "N/m");
+        within(
+            ck,
+            at,
+            &what("a spring stiffness"),
+            *value,
+            STIFFNESS,
+            "N/m",
+        );
     }
     for value in p.primary_damping.iter().chain(&p.secondary_damping) {
-        within(ck, at, &what("a suspension damping"), *value, DAMPING, "N·s/m");
+        within(
+            ck,
+            at,
+            &what("a suspension damping"),
+            *value,
+            DAMPING,
+            "N·s/m",
+        );
     }
     for value in [
         p.half_bogie_spacing,

@@ -63,9 +63,7 @@ fn wheel_count(vehicle: &Vehicle) -> usize {
         Vehicle::H20Truck(_) => 4,
         Vehicle::RailCar(_) => rail_car::WHEELSETS,
         Vehicle::Train(t) => rail_car::WHEELSETS * t.cars.len(),
-        Vehicle::Train3d(t) => {
-            train_3d::WHEELSETS * train_3d::CONTACTS_PER_WHEELSET * t.cars.len()
-        }
+        Vehicle::Train3d(t) => train_3d::WHEELSETS * train_3d::CONTACTS_PER_WHEELSET * t.cars.len(),
     }
 }
 

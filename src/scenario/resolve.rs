@@ -155,16 +155,15 @@ pub(super) fn resolve(
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
     let surface =
         super::surfaces::resolve_surface(raw.surface.as_ref(), bridge_length, &budget, ck);
-    let ground_motion =
-        super::ground::resolve(
-            raw.ground_motion.as_deref(),
-            bridge.as_ref(),
-            raw.vehicles
-                .iter()
-                .any(|v| matches!(v, raw::VehicleRaw::Train3d(_))),
-            &budget,
-            ck,
-        );
+    let ground_motion = super::ground::resolve(
+        raw.ground_motion.as_deref(),
+        bridge.as_ref(),
+        raw.vehicles
+            .iter()
+            .any(|v| matches!(v, raw::VehicleRaw::Train3d(_))),
+        &budget,
+        ck,
+    );
     let solver_raw = raw.solver.clone().unwrap_or_default();
     let newmark_raw = solver_raw.newmark.clone().unwrap_or(raw::NewmarkRaw {
         beta: None,

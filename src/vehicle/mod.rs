@@ -256,7 +256,9 @@ impl VehicleModel {
         }
         // A lateral contact of a symmetric vehicle carries 0 up to rounding.
         for &(w, _) in &contact_dofs {
-            if self.wheels[w].direction == ContactDirection::Lateral && forces[w].abs() < 1e-12 * scale {
+            if self.wheels[w].direction == ContactDirection::Lateral
+                && forces[w].abs() < 1e-12 * scale
+            {
                 forces[w] = 0.0;
             }
         }

@@ -137,7 +137,13 @@ fn bogie(bogie: usize) -> usize {
 
 /// Adds, for each direction d, an element of rate `rates[d]` between the
 /// points with rows `p` and `q` to the car block at `first`.
-fn add_elements(matrix: &mut DMatrix<f64>, first: usize, rates: [f64; 3], p: &[Row; 3], q: &[Row; 3]) {
+fn add_elements(
+    matrix: &mut DMatrix<f64>,
+    first: usize,
+    rates: [f64; 3],
+    p: &[Row; 3],
+    q: &[Row; 3],
+) {
     for d in 0..3 {
         if rates[d] == 0.0 {
             continue;
@@ -148,7 +154,8 @@ fn add_elements(matrix: &mut DMatrix<f64>, first: usize, rates: [f64; 3], p: &[R
                 continue;
             }
             for j in 0..DOFS {
-                matrix[(first + i, first + j)] += rates[d] * diff[i] * diff[j];
+                // rate·(dᵢdⱼ): the product commutes, so K is symmetric bit for bit.
+                matrix[(first + i, first + j)] += rates[d] * (diff[i] * diff[j]);
             }
         }
     }
@@ -177,16 +184,32 @@ fn assemble_car(
 ) {
     // Body and bogies: diagonal about their centres of gravity.
     let bodies = [
-        (0, p.body_mass, [p.body_yaw_inertia, p.body_roll_inertia, p.body_pitch_inertia]),
+        (
+            0,
+            p.body_mass,
+            [
+                p.body_yaw_inertia,
+                p.body_roll_inertia,
+                p.body_pitch_inertia,
+            ],
+        ),
         (
             bogie(0),
             p.bogie_mass,
-            [p.bogie_yaw_inertia, p.bogie_roll_inertia, p.bogie_pitch_inertia],
+            [
+                p.bogie_yaw_inertia,
+                p.bogie_roll_inertia,
+                p.bogie_pitch_inertia,
+            ],
         ),
         (
             bogie(1),
             p.bogie_mass,
-            [p.bogie_yaw_inertia, p.bogie_roll_inertia, p.bogie_pitch_inertia],
+            [
+                p.bogie_yaw_inertia,
+                p.bogie_roll_inertia,
+                p.bogie_pitch_inertia,
+            ],
         ),
     ];
     for (start, m, inertia) in bodies {
