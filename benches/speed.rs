@@ -280,6 +280,7 @@ fn eigen(budget: f64) {
                 static_correction: true,
             },
             damping: Damping::Modal { ratio: 0.0 },
+            sway: None,
         });
         let mut last = None;
         let times = sample(budget, || {

@@ -462,6 +462,7 @@ fn narrow_strip_influence_line_matches_beam() {
         elements_per_span: 20,
         modes: no_modes(),
         damping: Damping::Modal { ratio: 0.0 },
+        sway: None,
     })
     .unwrap();
     let beam_line = beam.influence_line(39.0).unwrap();

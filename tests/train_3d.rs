@@ -155,7 +155,7 @@ fn matrices_are_symmetric_and_rigid_motions_cost_nothing() {
         }
         // The wheelset's mass in contact coordinates: a lift carries m_w,
         // a roll φ = 1 carries I_wx.
-        let (_, left, right) = train_3d::wheelset_dofs(2);
+        let (_, left, _) = train_3d::wheelset_dofs(2);
         let m = model.mass.fixed_view::<2, 2>(left, left).into_owned();
         let lift2 = nalgebra::Vector2::new(1.0, 1.0);
         let roll2 = nalgebra::Vector2::new(p.contact_half_spacing, -p.contact_half_spacing);

@@ -23,6 +23,7 @@ fn beam(spans: &[f64], ei: f64, m: f64, elements_per_span: usize) -> Bridge {
             static_correction: true,
         },
         damping: Damping::Modal { ratio: 0.0 },
+        sway: None,
     })
 }
 

@@ -180,8 +180,31 @@ impl ModalBridge {
     /// (plane beam, plate) has no lateral DOFs: it moves rigidly with the
     /// ground, so in relative coordinates nothing loads it (zeros).
     /// Cost O(n · modes).
-    pub fn lateral_participation(&self, _bridge: &Bridge) -> (Vec<f64>, f64) {
+    pub fn lateral_participation(&self, bridge: &Bridge) -> (Vec<f64>, f64) {
         match &self.shapes {
+            Shapes::Beam {
+                sway: Some(sway), ..
+            } => {
+                // Γ = ∫ m v dx over the lateral shapes (a twist about the
+                // centroid carries no lateral inertia); Gauss 2 per element
+                // is exact for the cubic shapes.
+                let Bridge::Beam(beam) = bridge else {
+                    return (vec![0.0; self.mode_count()], 0.0);
+                };
+                let mut participation = vec![0.0; self.mode_count()];
+                let mut values = vec![0.0; self.mode_count()];
+                for pair in self.node_x().windows(2) {
+                    let (x0, h) = (pair[0], pair[1] - pair[0]);
+                    for &(g, w) in &GAUSS_2 {
+                        sway.lateral
+                            .values_at(x0 + 0.5 * h * (g + 1.0), &mut values);
+                        for (p, v) in participation.iter_mut().zip(&values) {
+                            *p += beam.mass_per_length * 0.5 * h * w * v;
+                        }
+                    }
+                }
+                (participation, beam.mass_per_length * self.length)
+            }
             Shapes::Imported(imported) => imported_inertia_participation(
                 imported,
                 &imported.model.lateral_inertia,

@@ -6,6 +6,7 @@
 //! point. Solvers see only this; a bridge never knows which vehicle crosses it.
 
 pub mod beam;
+pub mod beam_3d;
 pub mod eigen;
 pub mod fe_import;
 pub mod ground;
@@ -170,6 +171,10 @@ enum Shapes {
     Beam {
         shapes: HermiteField,
         model: Box<BeamModel>,
+        /// A 3D beam's lateral and twist shapes (`shapes` then holds the
+        /// vertical displacement of every kept mode, zero for the lateral
+        /// and twist ones).
+        sway: Option<Box<beam_3d::SwayShapes>>,
     },
     /// A plate: the Ritz modes, and the kept modes along the lines the
     /// wheels and records use (exact y match), so a point on such a line
@@ -223,7 +228,10 @@ impl ModalBridge {
     /// the beam's free dofs, or the plate's Ritz terms.
     pub fn available_of(bridge: &Bridge) -> usize {
         match bridge {
-            Bridge::Beam(beam) => BeamModel::free_dofs_of(beam),
+            Bridge::Beam(beam) => match beam.sway {
+                None => BeamModel::free_dofs_of(beam),
+                Some(_) => 2 * BeamModel::free_dofs_of(beam) + beam_3d::torsion_count(beam),
+            },
             Bridge::Plate(plate) => plate.terms.longitudinal * plate.terms.transverse,
             Bridge::FeImport(f) => f.model.dofs.len(),
         }
@@ -237,9 +245,8 @@ impl ModalBridge {
         match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam)?;
-                let count = model
-                    .pencil
-                    .count_below(eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
+                let count =
+                    beam_count_below(beam, &model, eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
                 Ok(Some(count))
             }
             Bridge::FeImport(f) => {
@@ -303,24 +310,83 @@ impl ModalBridge {
         let (omegas, shapes, check) = match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam)?;
-                let pencil = &model.pencil;
                 let count = select_count(
                     request,
                     available,
-                    |f| pencil.count_below(eigenvalue_of(f)),
-                    || Ok(model.modes(1)?.eigenvalues[0].sqrt() / (2.0 * PI)),
-                )?;
-                let modes = model.modes(count)?;
-                let shapes = model.shapes(&modes.vectors, count);
-                let omegas = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
-                (
-                    omegas,
-                    Shapes::Beam {
-                        shapes,
-                        model: Box::new(model),
+                    |f| beam_count_below(beam, &model, eigenvalue_of(f)),
+                    || {
+                        let lowest = model.modes(1)?.eigenvalues[0];
+                        let lowest = match &beam.sway {
+                            None => lowest,
+                            Some(sway) => beam_3d::lowest(beam, sway, &[lowest], 1)[0].0,
+                        };
+                        Ok(lowest.sqrt() / (2.0 * PI))
                     },
-                    modes.check,
-                )
+                )?;
+                match &beam.sway {
+                    None => {
+                        let modes = model.modes(count)?;
+                        let shapes = model.shapes(&modes.vectors, count);
+                        let omegas = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
+                        (
+                            omegas,
+                            Shapes::Beam {
+                                shapes,
+                                model: Box::new(model),
+                                sway: None,
+                            },
+                            modes.check,
+                        )
+                    }
+                    Some(sway) => {
+                        let modes = model.modes(count.min(model.free_dofs()))?;
+                        let kept = beam_3d::lowest(beam, sway, &modes.eigenvalues, count);
+                        let kinds: Vec<beam_3d::SwayMode> = kept.iter().map(|k| k.1).collect();
+                        // Column `c` of a field: the vertical shape `i` where
+                        // mode c is of the wanted kind, zero elsewhere.
+                        let field = |pick: fn(beam_3d::SwayMode) -> Option<usize>| {
+                            HermiteField::from_fn(model.node_x.clone(), count, |n, c| {
+                                pick(kinds[c]).map_or((0.0, 0.0), |i| {
+                                    let at = |dof: usize| {
+                                        model.free_index[dof].map_or(0.0, |k| modes.vectors[(k, i)])
+                                    };
+                                    (at(2 * n), at(2 * n + 1))
+                                })
+                            })
+                        };
+                        let shapes = field(|k| match k {
+                            beam_3d::SwayMode::Vertical(i) => Some(i),
+                            _ => None,
+                        });
+                        let lateral = field(|k| match k {
+                            beam_3d::SwayMode::Lateral(i) => Some(i),
+                            _ => None,
+                        });
+                        let torsion = kinds
+                            .iter()
+                            .enumerate()
+                            .filter_map(|(c, k)| match k {
+                                beam_3d::SwayMode::Torsion(t) => Some((c, *t)),
+                                _ => None,
+                            })
+                            .collect();
+                        let omegas = kept.iter().map(|k| k.0.sqrt()).collect();
+                        (
+                            omegas,
+                            Shapes::Beam {
+                                shapes,
+                                model: Box::new(model),
+                                sway: Some(Box::new(beam_3d::SwayShapes {
+                                    kinds,
+                                    lateral,
+                                    torsion,
+                                    rail_height: sway.rail_height,
+                                })),
+                            },
+                            modes.check,
+                        )
+                    }
+                }
             }
             Bridge::Plate(plate) => {
                 let (mut plate_modes, mut omegas) = PlateModes::build(plate)?;
@@ -404,6 +470,11 @@ impl ModalBridge {
             return Ok(());
         }
         match &self.shapes {
+            // A 3D beam keeps the modal contact flexibility: its rails sit
+            // off the axis, where the twist adds a static flexibility the
+            // bending Green's function does not hold (its recorded
+            // displacements on the axis are still corrected).
+            Shapes::Beam { sway: Some(_), .. } => {}
             Shapes::Beam { model, .. } => {
                 self.contact_flexibility = model
                     .flexibility(CONTACT_CORRECTION_DOFS)?
@@ -475,7 +546,16 @@ impl ModalBridge {
     /// number, or a plate mode's dominant (longitudinal, transverse) term.
     pub fn mode_character(&self, mode: usize) -> String {
         match &self.shapes {
-            Shapes::Beam { .. } => format!("bending {}", mode + 1),
+            Shapes::Beam { sway: None, .. } => format!("bending {}", mode + 1),
+            Shapes::Beam {
+                sway: Some(sway), ..
+            } => match sway.kinds[mode] {
+                beam_3d::SwayMode::Vertical(i) => format!("vertical bending {}", i + 1),
+                beam_3d::SwayMode::Lateral(i) => format!("lateral bending {}", i + 1),
+                beam_3d::SwayMode::Torsion(t) => {
+                    format!("torsion {} of span {}", t.order, t.span + 1)
+                }
+            },
             Shapes::Imported(_) => format!("mode {}", mode + 1),
             Shapes::Plate { modes, .. } => {
                 let (m, n) = modes.character(mode);
@@ -521,7 +601,15 @@ impl ModalBridge {
     #[inline]
     pub fn mode_values(&self, x: f64, y: f64, values: &mut [f64]) {
         match &self.shapes {
-            Shapes::Beam { shapes, .. } => shapes.values_at(x, values),
+            Shapes::Beam { shapes, sway, .. } => {
+                shapes.values_at(x, values);
+                // A 3D beam's twist lifts a point at y by y θ.
+                if let Some(sway) = sway.as_deref().filter(|_| y != 0.0) {
+                    for &(c, t) in &sway.torsion {
+                        values[c] = y * t.at(x).0;
+                    }
+                }
+            }
             Shapes::Imported(imported) => imported.track.evaluate(x, values, &mut [], &mut []),
             Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
                 Some((_, line)) => line.values_at(x, values),
@@ -542,8 +630,14 @@ impl ModalBridge {
         curvatures: &mut [f64],
     ) {
         match &self.shapes {
-            Shapes::Beam { shapes, .. } => {
-                shapes.values_slopes_curvatures_at(x, values, slopes, curvatures)
+            Shapes::Beam { shapes, sway, .. } => {
+                shapes.values_slopes_curvatures_at(x, values, slopes, curvatures);
+                if let Some(sway) = sway.as_deref().filter(|_| y != 0.0) {
+                    for &(c, t) in &sway.torsion {
+                        let (v, d, dd) = t.at(x);
+                        (values[c], slopes[c], curvatures[c]) = (y * v, y * d, y * dd);
+                    }
+                }
             }
             // Along the track: Hermite with the ry DOFs, else linear with
             // zero curvature inside each element (fe_import::track).
@@ -583,6 +677,18 @@ impl ModalBridge {
                 Shapes::Imported(imported) => imported
                     .lateral_track
                     .evaluate(x, values, slopes, curvatures),
+                Shapes::Beam {
+                    sway: Some(sway), ..
+                } => {
+                    sway.lateral
+                        .values_slopes_curvatures_at(x, values, slopes, curvatures);
+                    // The rails, h above the shear centre, move by −h θ.
+                    let h = sway.rail_height;
+                    for &(c, t) in &sway.torsion {
+                        let (v, d, dd) = t.at(x);
+                        (values[c], slopes[c], curvatures[c]) = (-h * v, -h * d, -h * dd);
+                    }
+                }
                 _ => {
                     values.fill(0.0);
                     slopes.fill(0.0);
@@ -601,6 +707,14 @@ impl ModalBridge {
             ContactDirection::Lateral => match &self.shapes {
                 Shapes::Imported(imported) => {
                     imported.lateral_track.evaluate(x, values, &mut [], &mut [])
+                }
+                Shapes::Beam {
+                    sway: Some(sway), ..
+                } => {
+                    sway.lateral.values_at(x, values);
+                    for &(c, t) in &sway.torsion {
+                        values[c] = -sway.rail_height * t.at(x).0;
+                    }
                 }
                 _ => values.fill(0.0),
             },
@@ -689,6 +803,28 @@ impl ModalBridge {
             Shapes::Imported(imported) => imported.track.node_x(),
         }
     }
+}
+
+/// Modes of a beam with ω² below `eigenvalue` (rad²/s²): an inertia count
+/// of the vertical pencil, and for a 3D beam the lateral ones (the same
+/// pencil at eigenvalue·EI/EI_z) and the twist ones (closed form). Cost
+/// one or two sparse factorisations.
+fn beam_count_below(
+    beam: &crate::scenario::resolved::Beam,
+    model: &BeamModel,
+    eigenvalue: f64,
+) -> Result<usize, BridgeError> {
+    let vertical = model.pencil.count_below(eigenvalue)?;
+    let Some(sway) = &beam.sway else {
+        return Ok(vertical);
+    };
+    let ratio2 = sway.lateral_bending_stiffness / beam.bending_stiffness;
+    let lateral = model.pencil.count_below(eigenvalue / ratio2)?;
+    let torsion = beam_3d::torsion_modes(beam, sway)
+        .iter()
+        .filter(|t| t.0 < eigenvalue)
+        .count();
+    Ok(vertical + lateral + torsion)
 }
 
 /// Number of modes kept under a request: `count_below(f)` counts the

@@ -179,6 +179,7 @@ impl PlateModes {
                 static_correction: true,
             },
             damping: Damping::Modal { ratio: 0.0 },
+            sway: None,
         };
         let beam = BeamModel::new(&unit_beam)?;
         if nx > beam.free_dofs() {

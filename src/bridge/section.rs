@@ -95,7 +95,7 @@ impl ModalBridge {
     /// The section probe at `x` (m), `None` on a plate deck (moments and
     /// shears are beam quantities here). Two sparse solves.
     pub fn section_probe(&self, x: f64) -> Result<Option<SectionProbe>, BridgeError> {
-        let Shapes::Beam { shapes, model } = &self.shapes else {
+        let Shapes::Beam { shapes, model, .. } = &self.shapes else {
             return Ok(None);
         };
         let nodes = &model.node_x;

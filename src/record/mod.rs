@@ -46,6 +46,10 @@ enum Probe {
     },
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
+    /// The rails' lateral displacement v = Σ φᵢ qᵢ (φ the modes' lateral
+    /// components at the point), or with `acceleration` v̈: a modal sum
+    /// (the static correction and the static crossing are vertical).
+    Lateral { shape: Vec<f64>, acceleration: bool },
     /// A plate deck's moment per unit width at a point; `line_of[w]` is
     /// the probe's influence line of flattened wheel w.
     PlateMoment {
@@ -269,6 +273,8 @@ pub struct Column {
 enum GroundTerm {
     Displacement,
     Acceleration,
+    LateralDisplacement,
+    LateralAcceleration,
 }
 
 /// All recorded columns with their common time axis.
@@ -358,6 +364,8 @@ pub struct Recorder<'m> {
     /// Whether a column adds the ground's displacement (then it is
     /// integrated each step).
     absolute_displacement: bool,
+    /// Whether a record adds the lateral ground motion (absolute frame).
+    absolute_lateral: bool,
     /// Where written rows go when streamed to disk.
     spill: Option<spill::SpillWriter>,
 }
@@ -385,6 +393,39 @@ impl<'m> Recorder<'m> {
                     let mut shape = vec![0.0; modes];
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
+                    if record.node.is_none()
+                        && record.direction == Some(crate::bridge::fe_import::Direction::Uy)
+                    {
+                        model.bridge.mode_values_in(
+                            crate::contact::ContactDirection::Lateral,
+                            x,
+                            y,
+                            &mut shape,
+                        );
+                        let acceleration = record.quantity == Quantity::BridgeAcceleration;
+                        let (shape, unit) = if acceleration {
+                            (filtered_shape(model, &shape, record.max_frequency), "m/s^2")
+                        } else {
+                            (shape, "m")
+                        };
+                        let probe = Probe::Lateral {
+                            shape,
+                            acceleration,
+                        };
+                        let (ground_static, absolute) = ground_terms(model, record, &probe)?;
+                        columns.push(Column {
+                            name: record.name.clone(),
+                            quantity: record.quantity,
+                            unit,
+                            values: Vec::with_capacity(capacity),
+                            static_values: None,
+                            position: lead,
+                            probe,
+                            ground_static,
+                            absolute,
+                        });
+                        continue;
+                    }
                     let dof = match record.node {
                         Some(node) => {
                             let direction = record.direction.unwrap_or_default();
@@ -570,6 +611,12 @@ impl<'m> Recorder<'m> {
         let absolute_displacement = columns
             .iter()
             .any(|c| c.absolute == Some(GroundTerm::Displacement));
+        let absolute_lateral = columns.iter().any(|c| {
+            matches!(
+                c.absolute,
+                Some(GroundTerm::LateralDisplacement | GroundTerm::LateralAcceleration)
+            )
+        });
         Ok(Self {
             model,
             history: History {
@@ -589,6 +636,7 @@ impl<'m> Recorder<'m> {
             on_deck: Vec::with_capacity(model.wheels.len()),
             keep: true,
             absolute_displacement,
+            absolute_lateral,
             spill: None,
         })
     }
@@ -703,7 +751,25 @@ fn ground_terms(
         return Ok((0.0, None));
     };
     let absolute = record.frame == crate::scenario::resolved::Frame::Absolute;
+    let lateral_node =
+        record.node.is_some() && record.direction == Some(crate::bridge::fe_import::Direction::Uy);
     Ok(match *probe {
+        Probe::Lateral { acceleration, .. } => {
+            let term = if acceleration {
+                GroundTerm::LateralAcceleration
+            } else {
+                GroundTerm::LateralDisplacement
+            };
+            (0.0, absolute.then_some(term))
+        }
+        // An imported model's lateral DOF: relative to the lateral ground
+        // motion (the vertical static share is not its).
+        Probe::BridgeDisplacement { .. } if lateral_node => {
+            (0.0, absolute.then_some(GroundTerm::LateralDisplacement))
+        }
+        Probe::BridgeAcceleration { .. } if lateral_node => {
+            (0.0, absolute.then_some(GroundTerm::LateralAcceleration))
+        }
         Probe::BridgeDisplacement { .. } => {
             let share = if model.bridge.static_correction {
                 model
@@ -722,15 +788,21 @@ fn ground_terms(
         Probe::BridgeAcceleration { .. } => (0.0, absolute.then_some(GroundTerm::Acceleration)),
         Probe::VehicleDisplacement { vehicle, dof }
         | Probe::VehicleAcceleration { vehicle, dof } => {
-            // Only translations move with the ground: the DOFs that carry
-            // weight.
-            let translation = model.vehicles[vehicle].gravity_load[dof] != 0.0;
-            let term = if matches!(probe, Probe::VehicleDisplacement { .. }) {
-                GroundTerm::Displacement
-            } else {
-                GroundTerm::Acceleration
+            // Only translations move with the ground: vertically the DOFs
+            // that carry weight, laterally those a rigid lateral shift
+            // moves (a `train_3d`'s lateral DOFs).
+            let v = &model.vehicles[vehicle];
+            let vertical = v.gravity_load[dof] != 0.0;
+            let lateral = v.lateral_ground_load.get(dof).is_some_and(|l| *l != 0.0);
+            let displacement = matches!(probe, Probe::VehicleDisplacement { .. });
+            let term = match (vertical, lateral, displacement) {
+                (true, _, true) => Some(GroundTerm::Displacement),
+                (true, _, false) => Some(GroundTerm::Acceleration),
+                (false, true, true) => Some(GroundTerm::LateralDisplacement),
+                (false, true, false) => Some(GroundTerm::LateralAcceleration),
+                (false, false, _) => None,
             };
-            (0.0, (absolute && translation).then_some(term))
+            (0.0, term.filter(|_| absolute))
         }
         // A plate's records under ground motion are modal sums (no
         // full-stiffness share of the inertia load; as its displacements).
@@ -849,6 +921,13 @@ impl Observer for Recorder<'_> {
                 },
             ),
         };
+        let (lateral_acceleration, lateral_displacement) = match &model.ground {
+            Some(ground) if self.absolute_lateral => (
+                ground.lateral_acceleration(view.time),
+                ground.lateral_motion(view.time).1,
+            ),
+            _ => (0.0, 0.0),
+        };
         for (column, extremes) in self
             .history
             .columns
@@ -883,6 +962,17 @@ impl Observer for Recorder<'_> {
                     )
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::Lateral {
+                    shape,
+                    acceleration,
+                } => dot(
+                    shape,
+                    if *acceleration {
+                        view.modal_acceleration
+                    } else {
+                        view.modal_displacement
+                    },
+                ),
                 Probe::PlateMoment { probe, line_of } => probe.moment(
                     view.modal_displacement,
                     model.bridge.static_correction,
@@ -922,6 +1012,8 @@ impl Observer for Recorder<'_> {
                 Some(GroundTerm::Displacement) => {
                     value + column.ground_static * ground_acceleration + ground_displacement
                 }
+                Some(GroundTerm::LateralAcceleration) => value + lateral_acceleration,
+                Some(GroundTerm::LateralDisplacement) => value + lateral_displacement,
             };
             extremes.all.push(view.step, view.time, value);
             if any_on_deck {

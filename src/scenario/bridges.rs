@@ -46,12 +46,66 @@ pub(super) fn resolve_bridge(
                 elements_per_span,
                 modes: resolve_modes(ck, b.modes.as_ref()),
                 damping: resolve_damping(ck, b.damping.as_ref()),
+                sway: resolve_sway(ck, b),
             })
         }
         raw::BridgeRaw::Plate(p) => Bridge::Plate(resolve_plate(p, ck)),
         raw::BridgeRaw::FeImport(f) => Bridge::FeImport(super::fe_import::resolve(f, budget, ck)?),
     };
     (ck.diagnostics.len() == before).then_some(bridge)
+}
+
+/// A 3D beam's lateral bending and torsion: all three of
+/// `lateral_bending_stiffness`, `torsional_stiffness` and `polar_mass`, or
+/// none (and then no `rail_height`).
+fn resolve_sway(ck: &mut Checker<'_>, b: &raw::BeamRaw) -> Option<BeamSway> {
+    let given = [
+        ("lateral_bending_stiffness", b.lateral_bending_stiffness),
+        ("torsional_stiffness", b.torsional_stiffness),
+        ("polar_mass", b.polar_mass),
+    ];
+    if given.iter().all(|(_, v)| v.is_none()) {
+        if b.rail_height.is_some() {
+            ck.error(
+                "bridge.rail_height",
+                "`rail_height` places the rails over a twisting section: it goes with \
+                 `lateral_bending_stiffness`, `torsional_stiffness` and `polar_mass` (a 3D beam)",
+            );
+        }
+        return None;
+    }
+    let missing: Vec<&str> = given
+        .iter()
+        .filter(|(_, v)| v.is_none())
+        .map(|(n, _)| *n)
+        .collect();
+    if !missing.is_empty() {
+        ck.error(
+            "bridge",
+            format!(
+                "a 3D beam needs `lateral_bending_stiffness` (N·m²), `torsional_stiffness` \
+                 (N·m²/rad) and `polar_mass` (kg·m²/m) together; missing: {}",
+                missing.join(", ")
+            ),
+        );
+        return None;
+    }
+    for (name, value) in given {
+        ck.positive(&format!("bridge.{name}"), value.unwrap_or(0.0), name);
+    }
+    let rail_height = b.rail_height.unwrap_or(0.0);
+    if !rail_height.is_finite() || rail_height.abs() > 100.0 {
+        ck.error(
+            "bridge.rail_height",
+            format!("a rail height is a number within ±100 m, got {rail_height}"),
+        );
+    }
+    Some(BeamSway {
+        lateral_bending_stiffness: b.lateral_bending_stiffness.unwrap_or(0.0),
+        torsional_stiffness: b.torsional_stiffness.unwrap_or(0.0),
+        polar_mass: b.polar_mass.unwrap_or(0.0),
+        rail_height,
+    })
 }
 
 fn resolve_plate(p: &raw::PlateRaw, ck: &mut Checker<'_>) -> Plate {

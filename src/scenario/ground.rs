@@ -36,7 +36,7 @@ pub(super) fn resolve(
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",
                     Some(Bridge::FeImport(_)) => "imported model without lateral (uy) DOFs",
-                    _ => "beam",
+                    _ => "beam (without `lateral_bending_stiffness`)",
                 };
                 ck.error(
                     &format!("{at}.direction"),
@@ -99,6 +99,7 @@ pub(super) fn resolve(
 /// shake: an imported model with uy DOFs.
 fn moves_sideways(bridge: Option<&Bridge>) -> bool {
     match bridge {
+        Some(Bridge::Beam(b)) => b.sway.is_some(),
         Some(Bridge::FeImport(f)) => f
             .model
             .dofs

@@ -269,6 +269,29 @@ pub struct BeamRaw {
     /// Structural damping. Default: 0 (undamped).
     #[serde(default)]
     pub damping: Option<DampingRaw>,
+    /// Lateral bending stiffness EI_z, N·m². With `torsional_stiffness`
+    /// and `polar_mass` it makes the beam 3D: lateral bending and torsion
+    /// modes (doubly symmetric section, fork supports: no lateral
+    /// displacement and no twist at any support) besides the vertical ones,
+    /// so a `train_3d` follows the rails laterally and a lateral ground
+    /// motion shakes the deck.
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub lateral_bending_stiffness: Option<f64>,
+    /// Torsional stiffness GJ, N·m²/rad (3D beam).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub torsional_stiffness: Option<f64>,
+    /// Polar mass moment of inertia per length I_p, kg·m²/m (3D beam).
+    #[serde(default)]
+    #[schemars(transform = crate::schema::positive)]
+    pub polar_mass: Option<f64>,
+    /// Height of the rail heads above the section's shear centre, m (3D
+    /// beam): a twist θ moves the rails sideways by −h θ and a rail at y
+    /// across the centre line up by y θ. Default 0.
+    #[serde(default)]
+    #[schemars(extend("default" = 0.0))]
+    pub rail_height: Option<f64>,
 }
 
 /// Mode selection: by count, by maximum frequency, or both (the stricter wins).

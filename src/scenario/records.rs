@@ -181,7 +181,10 @@ pub(super) fn resolve_records(
         );
         let quantity_name = quantity_name_of(q);
         let unused = |field: &str| format!("`{field}` is not used by `{quantity_name}`");
-        let direction = r.node.map(|_| r.direction.unwrap_or(Direction::Uz));
+        let direction = r
+            .node
+            .map(|_| r.direction.unwrap_or(Direction::Uz))
+            .or(r.direction);
         if let Some(node) = r.node {
             let direction = direction.unwrap_or(Direction::Uz);
             if !is_bridge {
@@ -207,8 +210,26 @@ pub(super) fn resolve_records(
                     ),
                 }
             }
-        } else if r.direction.is_some() {
-            ck.error(&format!("{at}.direction"), "`direction` goes with `node`");
+        } else if let Some(d) = r.direction {
+            // Along the track: `uy` is the rails' lateral displacement, on
+            // a bridge that moves sideways.
+            let sideways = match bridge {
+                Bridge::Beam(b) => b.sway.is_some(),
+                Bridge::FeImport(f) => f.model.dofs.iter().any(|(_, d)| *d == Direction::Uy),
+                Bridge::Plate(_) => false,
+            };
+            let along_track = matches!(
+                q,
+                Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
+            );
+            if !(along_track && sideways && matches!(d, Direction::Uz | Direction::Uy)) {
+                ck.error(
+                    &format!("{at}.direction"),
+                    "`direction` goes with `node`, or, as `uz` or `uy` (the rails' lateral \
+                     displacement), with a bridge displacement or acceleration at `x` on a bridge \
+                     that moves sideways (a 3D beam, or an imported model with uy DOFs)",
+                );
+            }
         }
         if is_bridge && r.node.is_some() {
             if r.vehicle.is_some() {

@@ -289,6 +289,27 @@ pub struct Beam {
     pub modes: Modes,
     /// Structural damping.
     pub damping: Damping,
+    /// Lateral bending and torsion (a 3D beam); `None` for a beam that
+    /// moves in the vertical plane only.
+    #[serde(skip_serializing_if = "Option::is_none", flatten)]
+    pub sway: Option<BeamSway>,
+}
+
+/// What makes a beam 3D: lateral bending and torsion of a doubly symmetric
+/// section (shear centre at the centroid, so the three motions are
+/// uncoupled), with fork supports (no lateral displacement and no twist at
+/// any support).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct BeamSway {
+    /// Lateral bending stiffness EI_z, N·m².
+    pub lateral_bending_stiffness: f64,
+    /// Torsional stiffness GJ, N·m²/rad.
+    pub torsional_stiffness: f64,
+    /// Polar mass moment of inertia per length I_p, kg·m²/m.
+    pub polar_mass: f64,
+    /// Height of the rail heads above the shear centre h, m: a twist θ
+    /// moves the rails sideways by −h θ.
+    pub rail_height: f64,
 }
 
 /// Mode selection; at least one is set.

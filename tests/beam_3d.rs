@@ -1,0 +1,226 @@
+//! The 3D beam: lateral bending and torsion beside the vertical bending
+//! (EMBS paper §1: the simply supported bridge with lateral modes). Each
+//! test states its reference and tolerance.
+
+mod support;
+
+use std::f64::consts::PI;
+
+use support::{column, max_abs, run_yaml};
+use vbi::bridge::ModalBridge;
+use vbi::contact::ContactDirection;
+use vbi::scenario::load_str;
+
+const L: f64 = 30.0;
+const EI: f64 = 2.0e10;
+const EIZ: f64 = 9.0e10;
+const M: f64 = 15_000.0;
+const GJ: f64 = 4.0e9;
+const IP: f64 = 60_000.0;
+const H: f64 = 1.2;
+
+fn bridge_yaml(extra: &str) -> String {
+    format!(
+        "name: beam-3d\n\
+         bridge: {{type: beam, spans: [{L}], bending_stiffness: {EI}, mass_per_length: {M},\n\
+         \x20 lateral_bending_stiffness: {EIZ}, torsional_stiffness: {GJ}, polar_mass: {IP},\n\
+         \x20 rail_height: {H}, elements_per_span: 40, modes: {{count: 12}}{extra}}}\n\
+         vehicles: [{{type: moving_force, loads: [1.0e5], speed: 20.0}}]\n\
+         solver: {{time_step: 5.0e-4}}\n\
+         record: [{{name: mid, quantity: bridge_displacement, x: 15.0}}]\n"
+    )
+}
+
+fn modal(modes: &str) -> ModalBridge {
+    let yaml = bridge_yaml("").replace("modes: {count: 12}", modes);
+    let loaded = load_str(&yaml, "b.yaml").unwrap();
+    ModalBridge::build(&loaded.scenario.bridge).unwrap()
+}
+
+/// Closed forms of the simply supported span with fork supports (Hz):
+/// vertical (nπ/L)²√(EI/m)/2π, lateral the same with EI_z, torsion
+/// (n/2L)√(GJ/I_p); each with its kind, sorted.
+fn closed_forms(count: usize) -> Vec<(f64, &'static str)> {
+    let mut all = Vec::new();
+    for n in 1..=count {
+        let k = n as f64 * PI / L;
+        all.push((k * k * (EI / M).sqrt() / (2.0 * PI), "vertical"));
+        all.push((k * k * (EIZ / M).sqrt() / (2.0 * PI), "lateral"));
+        all.push((n as f64 / (2.0 * L) * (GJ / IP).sqrt(), "torsion"));
+    }
+    all.sort_by(|a, b| a.0.total_cmp(&b.0));
+    all.truncate(count);
+    all
+}
+
+/// The kept modes are the lowest of the three families, each at its
+/// closed-form frequency: twist exactly (1e-12), bending to the 40-element
+/// Hermite mesh's accuracy (1e-5; measured 2.6e-8, 4.2e-7 and 2.1e-6 for
+/// modes 1–3, always above: a conforming mesh), and each mode's character
+/// says which family it is. A twist mode with a wrong GJ/I_p or a lateral mode on EI
+/// breaks this at order 1.
+#[test]
+fn frequencies_are_the_three_families_closed_forms() {
+    let bridge = modal("modes: {count: 12}");
+    let expected = closed_forms(12);
+    let got = bridge.frequencies();
+    assert_eq!(got.len(), 12);
+    for (mode, ((f, kind), g)) in expected.iter().zip(&got).enumerate() {
+        let character = bridge.mode_character(mode);
+        eprintln!(
+            "{mode}: {g:.6} Hz ({character}) against {f:.6} Hz ({kind}), {:.1e}",
+            (g - f).abs() / f
+        );
+        assert!(
+            character.starts_with(kind),
+            "mode {mode}: {character}, expected {kind}"
+        );
+        let tolerance = if *kind == "torsion" { 1e-12 } else { 1e-5 };
+        assert!(
+            (g - f).abs() <= tolerance * f,
+            "mode {mode}: {g} Hz against {f} Hz"
+        );
+    }
+}
+
+/// What a rail sees: a rail at y across the axis, h above the shear
+/// centre, moves up by w + yθ and sideways by v − hθ. So for each kept
+/// mode, at several x: the vertical component at y = 0.75 minus the one
+/// at y = 0 is 0.75 θ; the lateral component of a twist mode is −h θ with
+/// θ = √(2/(I_p L)) sin(nπx/L); a lateral mode's lateral component is the
+/// vertical shape √(2/(mL)) sin(nπx/L) (to 1e-4 of its amplitude: the
+/// Hermite interpolation between nodes, measured 6.5e-6 for mode 3), with
+/// its slope; a vertical mode has no lateral component and a lateral mode no
+/// vertical one (exactly 0).
+#[test]
+fn rails_see_bending_plus_lever_arm_times_twist() {
+    let bridge = modal("modes: {count: 12}");
+    let n = bridge.mode_count();
+    let (mut v0, mut vy, mut lat, mut slope, mut curv) = (
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+    );
+    for x in [3.1, 7.5, 15.0, 22.2, 29.0] {
+        bridge.mode_values(x, 0.0, &mut v0);
+        bridge.mode_values(x, 0.75, &mut vy);
+        bridge.mode_components(
+            ContactDirection::Lateral,
+            x,
+            0.75,
+            &mut lat,
+            &mut slope,
+            &mut curv,
+        );
+        let mut values_in = vec![0.0; n];
+        bridge.mode_values_in(ContactDirection::Lateral, x, 0.75, &mut values_in);
+        assert_eq!(values_in, lat);
+        for mode in 0..n {
+            let character = bridge.mode_character(mode);
+            let order: f64 = character
+                .split_whitespace()
+                .find_map(|w| w.parse().ok())
+                .unwrap();
+            let k = order * PI / L;
+            if character.starts_with("torsion") {
+                let theta = (2.0 / (IP * L)).sqrt() * (k * x).sin();
+                assert!(
+                    (vy[mode] - v0[mode] - 0.75 * theta).abs() <= 1e-12 * theta.abs().max(1e-6)
+                );
+                assert!((lat[mode] + H * theta).abs() <= 1e-12 * theta.abs().max(1e-6));
+                let dtheta = (2.0 / (IP * L)).sqrt() * k * (k * x).cos();
+                assert!((slope[mode] + H * dtheta).abs() <= 1e-12 * (k * theta.abs()).max(1e-6));
+            } else if character.starts_with("lateral") {
+                let phi = (2.0 / (M * L)).sqrt() * (k * x).sin();
+                assert_eq!(v0[mode], 0.0);
+                assert!((lat[mode].abs() - phi.abs()).abs() <= 1e-4 * (2.0 / (M * L)).sqrt());
+                let dphi = (2.0 / (M * L)).sqrt() * k * (k * x).cos();
+                assert!(
+                    (slope[mode].abs() - dphi.abs()).abs() <= 1e-4 * k * (2.0 / (M * L)).sqrt(),
+                    "mode {mode} slope {} against {dphi}",
+                    slope[mode]
+                );
+            } else {
+                assert_eq!(lat[mode], 0.0, "a vertical mode has no lateral component");
+                assert_eq!(vy[mode], v0[mode]);
+                let phi = (2.0 / (M * L)).sqrt() * (k * x).sin();
+                assert!((v0[mode].abs() - phi.abs()).abs() <= 1e-4 * (2.0 / (M * L)).sqrt());
+            }
+        }
+    }
+}
+
+/// A frequency cut-off counts all three families: every closed-form
+/// frequency up to 8 Hz (vertical 1, lateral 1, torsion 1; vertical 2 is
+/// at 8.06 Hz) and no more.
+#[test]
+fn a_frequency_cut_off_counts_every_family() {
+    let bridge = modal("modes: {max_frequency: 8.0}").frequencies();
+    let expected: Vec<f64> = closed_forms(60)
+        .into_iter()
+        .map(|f| f.0)
+        .take_while(|&f| f <= 8.0)
+        .collect();
+    assert_eq!(
+        bridge.len(),
+        expected.len(),
+        "{bridge:?} against {expected:?}"
+    );
+}
+
+/// The beam without the three fields is the plane beam, mode for mode
+/// (bit for bit), and a 3D beam's twist does not show on the axis: a
+/// vertical moving force on the axis gives the same mid-span deflection on
+/// the 3D beam as on the plane beam (to 1e-12 of the peak; its lateral and
+/// twist modes are not excited).
+#[test]
+fn the_plane_beam_is_unchanged_and_the_axis_does_not_twist() {
+    let plane = bridge_yaml("").replace(
+        &format!(
+            "\n  lateral_bending_stiffness: {EIZ}, torsional_stiffness: {GJ}, polar_mass: {IP},\n  rail_height: {H},"
+        ),
+        "",
+    );
+    assert!(!plane.contains("lateral_bending_stiffness"), "{plane}");
+    let three = bridge_yaml("").replace("modes: {count: 12}", "modes: {max_frequency: 60.0}");
+    let plane = plane.replace("modes: {count: 12}", "modes: {max_frequency: 60.0}");
+    let a = run_yaml(&three);
+    let b = run_yaml(&plane);
+    let (x, y) = (column(&a, "mid"), column(&b, "mid"));
+    let peak = max_abs(y);
+    let gap = x
+        .iter()
+        .zip(y)
+        .map(|(p, q)| (p - q).abs())
+        .fold(0.0, f64::max);
+    assert!(peak > 1e-4 && gap <= 1e-12 * peak, "{gap} of {peak}");
+}
+
+/// Located refusals: a partial 3D beam, `rail_height` alone, a lateral
+/// record on a plane beam.
+#[test]
+fn partial_3d_beams_are_refused() {
+    let partial = bridge_yaml("").replace(&format!("torsional_stiffness: {GJ}, "), "");
+    let error = load_str(&partial, "b.yaml").unwrap_err().to_string();
+    assert!(error.contains("missing: torsional_stiffness"), "{error}");
+    let plane_with_height = format!(
+        "name: b\nbridge: {{type: beam, spans: [{L}], bending_stiffness: {EI}, mass_per_length: {M}, rail_height: 1.0}}\n\
+         vehicles: [{{type: moving_force, loads: [1.0e5], speed: 20.0}}]\n"
+    );
+    let error = load_str(&plane_with_height, "b.yaml")
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("rail_height"), "{error}");
+    let lateral_record = format!(
+        "name: b\nbridge: {{type: beam, spans: [{L}], bending_stiffness: {EI}, mass_per_length: {M}}}\n\
+         vehicles: [{{type: moving_force, loads: [1.0e5], speed: 20.0}}]\n\
+         record: [{{name: v, quantity: bridge_displacement, x: 15.0, direction: uy}}]\n"
+    );
+    let error = load_str(&lateral_record, "b.yaml").unwrap_err().to_string();
+    assert!(
+        error.contains("direction") && error.contains("sideways"),
+        "{error}"
+    );
+}
