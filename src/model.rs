@@ -210,12 +210,13 @@ impl Model {
     /// The track irregularity a contact in `direction` follows at `x` (m)
     /// on `rail`: (value m, slope, curvature 1/m). Vertical: the surface
     /// profile ([`Profile::elevation_slope_curvature_on`]); lateral: the
-    /// rails' alignment, zero while the surface gives none.
+    /// track's alignment ([`Profile::alignment_at`]), zero where the
+    /// surface samples none.
     #[inline]
     pub fn irregularity(&self, direction: ContactDirection, rail: Rail, x: f64) -> (f64, f64, f64) {
         match direction {
             ContactDirection::Vertical => self.profile.elevation_slope_curvature_on(rail, x),
-            ContactDirection::Lateral => (0.0, 0.0, 0.0),
+            ContactDirection::Lateral => self.profile.alignment_at(x),
         }
     }
 

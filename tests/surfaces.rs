@@ -111,6 +111,10 @@ fn band_variance_closed_forms_match_quadrature() {
             interference: Interference::Low,
         },
         Spectrum::Iso8608 { class: IsoClass::C },
+        Spectrum::FraAlignment { class: 2 },
+        Spectrum::GermanAlignment {
+            interference: Interference::High,
+        },
     ];
     let (lo, hi) = (2.0 * PI / 80.0, 2.0 * PI);
     for s in spectra {
@@ -136,7 +140,8 @@ fn band_variance_closed_forms_match_quadrature() {
 /// 0.5 m apart: 2 km, so that each sample holds many of the longest waves)
 /// against ∫ G over the band: within 2 % for every kind of
 /// spectrum (400 samples, seeds 1…400, rail band 1–80 m, road 0.5–100 m).
-/// Measured: 0.9993 (FRA 5), 0.9994 (German high), 0.9985 (ISO B). The
+/// Measured: 0.9993 (FRA 5), 0.9994 (German high), 0.9985 (ISO B), the
+/// FRA 5 alignment as its vertical profile (same shape, A_a for A_v). The
 /// mean of each sample's Σaᵢ²/2 is checked within 1 % (measured 1.0000:
 /// with a random frequency per bin it is unbiased).
 #[test]
@@ -151,6 +156,7 @@ fn mean_sample_variance_is_the_band_integral() {
             80.0,
         ),
         (Spectrum::Iso8608 { class: IsoClass::B }, 0.5, 100.0),
+        (Spectrum::FraAlignment { class: 5 }, 1.0, 80.0),
     ];
     for (spectrum, short, long) in cases {
         let terms = vbi::surface::synth::default_terms(short, long);
@@ -241,7 +247,66 @@ fn fra(class: u8, seed: u64, rails: Rails) -> Surface {
             seed,
             rails,
             run_in: 0.0,
+            alignment: false,
         },
+    }
+}
+
+/// The rails' alignment (`alignment: true`) is sampled from the class's
+/// alignment spectrum on random streams 2 (left) and 3 (right) of the
+/// seed, so the vertical profile is bit-identical with or without it; a
+/// wheelset follows the mean of its two rails' alignment (the track's
+/// centre line), which at the grid nodes is exactly the mean of the two
+/// series shifted to start at 0 (identical rails: stream 2 alone); without
+/// `alignment` it is 0.
+#[test]
+fn alignment_is_sampled_on_its_own_streams() {
+    for rails in [Rails::Identical, Rails::Independent] {
+        let plain = fra(5, 9, rails);
+        let Surface::Fra { class, sampling } = plain.clone() else {
+            unreachable!()
+        };
+        let aligned = Surface::Fra {
+            class,
+            sampling: Sampling {
+                alignment: true,
+                ..sampling
+            },
+        };
+        let (a, b) = (
+            Profile::build(&plain, 400.0).unwrap(),
+            Profile::build(&aligned, 400.0).unwrap(),
+        );
+        let stream = |k| {
+            SpectralSeries::new(&Spectrum::FraAlignment { class: 5 }, 1.0, 80.0, 190, 9, k)
+                .sample(0.0, 0.1, 4001)
+                .unwrap()
+        };
+        let left = stream(2);
+        let right = if rails == Rails::Independent {
+            stream(3)
+        } else {
+            left.clone()
+        };
+        let mut rms = 0.0;
+        for j in 0..4001 {
+            let x = j as f64 * 0.1;
+            for rail in [Rail::Left, Rail::Right] {
+                assert_eq!(
+                    a.elevation_slope_curvature_on(rail, x),
+                    b.elevation_slope_curvature_on(rail, x)
+                );
+            }
+            assert_eq!(a.alignment_at(x), (0.0, 0.0, 0.0));
+            let expected = 0.5 * ((left[j].0 - left[0].0) + (right[j].0 - right[0].0));
+            let got = b.alignment_at(x).0;
+            rms += expected * expected;
+            assert!(
+                (got - expected).abs() <= 1e-12,
+                "x = {x}: {got} against {expected}"
+            );
+        }
+        assert!(rms > 0.0);
     }
 }
 

@@ -533,3 +533,38 @@ fn bad_3d_trains_are_refused_with_a_located_message() {
         );
     }
 }
+
+/// The wheelsets follow the track's alignment sideways: on an FRA class 5
+/// track with `alignment: true`, wheelset 2 repeats wheelset 1's lateral
+/// displacement one wheelbase (2.5 m = 50 steps at 50 m/s and 1 ms)
+/// later, to 1e-9 of its swing (the bridge is a plane beam: only the
+/// alignment moves them sideways), and the body sways (> 1e-3 of the
+/// wheelsets' swing), where with straight rails it stays at rest (the
+/// symmetry test).
+#[test]
+fn wheelsets_follow_the_alignment() {
+    let outcome = run_yaml(
+        r#"
+name: alignment
+bridge: {type: beam, spans: [20.0], bending_stiffness: 1.0e11, mass_per_length: 20000.0, modes: {count: 4}}
+vehicles: [{type: train_3d, speed: 50.0, start_position: -30.0}]
+surface: {type: fra, class: 5, alignment: true, rails: independent, seed: 4}
+contact: {type: permanent}
+solver: {time_step: 1.0e-3}
+record:
+  - {name: w1, quantity: vehicle_displacement, dof: wheelset1_lateral}
+  - {name: w2, quantity: vehicle_displacement, dof: wheelset2_lateral}
+  - {name: body, quantity: vehicle_displacement, dof: body_lateral}
+"#,
+    );
+    let (w1, w2) = (column(&outcome, "w1"), column(&outcome, "w2"));
+    let swing = max_abs(w1);
+    assert!(swing > 1e-4, "the alignment moves the wheelsets: {swing}");
+    let gap = (0..w1.len() - 50)
+        .map(|n| (w2[n + 50] - w1[n]).abs())
+        .fold(0.0, f64::max);
+    eprintln!("swing {swing:.3e} m, gap {gap:.3e}");
+    assert!(gap <= 1e-9 * swing, "{gap} of {swing}");
+    let body = max_abs(column(&outcome, "body"));
+    assert!(body > 1e-3 * swing, "the body sways: {body}");
+}

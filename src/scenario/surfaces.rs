@@ -157,6 +157,7 @@ pub(super) fn resolve_surface(
             longest_wavelength,
             terms,
             seed,
+            alignment,
             rails,
             run_in,
         } => {
@@ -166,7 +167,7 @@ pub(super) fn resolve_surface(
                     format!("FRA track classes are 1 (worst) to 6 (best), got {class}"),
                 );
             }
-            let sampling = resolve_sampling(
+            let mut sampling = resolve_sampling(
                 (*shortest_wavelength, *longest_wavelength),
                 RAIL_BAND,
                 *terms,
@@ -175,6 +176,7 @@ pub(super) fn resolve_surface(
                 *run_in,
                 ck,
             );
+            sampling.alignment = alignment.unwrap_or(false);
             Surface::Fra {
                 class: *class,
                 sampling,
@@ -186,19 +188,23 @@ pub(super) fn resolve_surface(
             longest_wavelength,
             terms,
             seed,
+            alignment,
             rails,
             run_in,
         } => Surface::German {
             interference: *interference,
-            sampling: resolve_sampling(
-                (*shortest_wavelength, *longest_wavelength),
-                RAIL_BAND,
-                *terms,
-                *seed,
-                *rails,
-                *run_in,
-                ck,
-            ),
+            sampling: Sampling {
+                alignment: alignment.unwrap_or(false),
+                ..resolve_sampling(
+                    (*shortest_wavelength, *longest_wavelength),
+                    RAIL_BAND,
+                    *terms,
+                    *seed,
+                    *rails,
+                    *run_in,
+                    ck,
+                )
+            },
         },
         R::Iso8608 {
             class,
@@ -372,6 +378,7 @@ fn resolve_sampling(
         seed: seed.unwrap_or(1),
         rails: rails.unwrap_or(RailsRaw::Identical),
         run_in,
+        alignment: false,
     }
 }
 
@@ -451,7 +458,7 @@ pub(super) fn check_reach(
             2.0
         } else {
             1.0
-        };
+        } * if sampling.alignment { 2.0 } else { 1.0 };
         let work = nodes * rails * sampling.terms as f64;
         return budget.check(
             ck,

@@ -142,6 +142,7 @@ pub fn surface(
                 seed: 1,
                 rails: crate::scenario::resolved::Rails::Identical,
                 run_in: 0.0,
+                alignment: false,
             },
             |(_, sampling)| sampling,
         );

@@ -155,6 +155,10 @@ pub enum Profile {
         left: QuinticGrid,
         /// The right rail, if independent.
         right: Option<QuinticGrid>,
+        /// The rails' alignment (left, and right if independent), if
+        /// sampled: random streams 2 and 3 of the seed, so the vertical
+        /// profile is the same with or without it.
+        alignment: Option<(QuinticGrid, Option<QuinticGrid>)>,
     },
     /// A measured profile.
     Measured {
@@ -257,9 +261,9 @@ impl Profile {
         let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
         let run_in = sampling.run_in;
         let count = grid_nodes(reach + run_in, sampling.shortest_wavelength) as usize;
-        let grid = |stream| {
+        let grid = |spectrum: &Spectrum, stream| {
             let series = SpectralSeries::new(
-                &spectrum,
+                spectrum,
                 sampling.shortest_wavelength,
                 sampling.longest_wavelength,
                 sampling.terms,
@@ -280,12 +284,23 @@ impl Profile {
             }
             QuinticGrid::new(-run_in, spacing, &nodes).map_err(oom)
         };
+        let alignment = match spectrum.alignment().filter(|_| sampling.alignment) {
+            Some(lateral) => Some((
+                grid(&lateral, 2)?,
+                match sampling.rails {
+                    Rails::Independent => Some(grid(&lateral, 3)?),
+                    Rails::Identical => None,
+                },
+            )),
+            None => None,
+        };
         Ok(Profile::Sampled {
-            left: grid(0)?,
+            left: grid(&spectrum, 0)?,
             right: match sampling.rails {
-                Rails::Independent => Some(grid(1)?),
+                Rails::Independent => Some(grid(&spectrum, 1)?),
                 Rails::Identical => None,
             },
+            alignment,
         })
     }
 
@@ -375,7 +390,7 @@ impl Profile {
                 .sum::<f64>()
                 / 2.0)
                 .sqrt(),
-            Profile::Sampled { left, right } => left
+            Profile::Sampled { left, right, .. } => left
                 .max_slope()
                 .max(right.as_ref().map_or(0.0, QuinticGrid::max_slope)),
             Profile::Measured { left, right } => left
@@ -447,6 +462,7 @@ impl Profile {
             Profile::Sampled {
                 ref left,
                 ref right,
+                ..
             } => match (rail, right) {
                 (Rail::Right, Some(r)) => r.at(x),
                 _ => left.at(x),
@@ -459,6 +475,28 @@ impl Profile {
                 _ => left.at(x),
             },
             Profile::Shape(ref shape) => shape.at(x),
+        }
+    }
+
+    /// The track's alignment at `x` (m): the lateral irregularity (m, +y
+    /// to the left), its slope and curvature (1/m) that a wheelset
+    /// following both rails sideways takes — the mean of the left and right
+    /// rails' alignment (the track centre line); zero where the surface
+    /// samples none (every profile but a spectrum with `alignment: true`).
+    #[inline]
+    pub fn alignment_at(&self, x: f64) -> Triple {
+        match self {
+            Profile::Sampled {
+                alignment: Some((left, right)),
+                ..
+            } => match right {
+                Some(right) => {
+                    let (a, b) = (left.at(x), right.at(x));
+                    (0.5 * (a.0 + b.0), 0.5 * (a.1 + b.1), 0.5 * (a.2 + b.2))
+                }
+                None => left.at(x),
+            },
+            _ => (0.0, 0.0, 0.0),
         }
     }
 }

@@ -170,6 +170,16 @@ pub enum Spectrum {
         /// Road class A–H.
         class: IsoClass,
     },
+    /// FRA alignment (lateral), class 1–6 ([`fra_alignment`]).
+    FraAlignment {
+        /// Track class 1 (worst) to 6 (best).
+        class: u8,
+    },
+    /// German high-speed alignment ([`german_alignment`]).
+    GermanAlignment {
+        /// Interference level.
+        interference: Interference,
+    },
 }
 
 impl Spectrum {
@@ -179,6 +189,18 @@ impl Spectrum {
             Spectrum::Fra { class } => fra_vertical(class, omega),
             Spectrum::German { interference } => german_vertical(interference, omega),
             Spectrum::Iso8608 { class } => iso8608(class, omega),
+            Spectrum::FraAlignment { class } => fra_alignment(class, omega),
+            Spectrum::GermanAlignment { interference } => german_alignment(interference, omega),
+        }
+    }
+
+    /// The alignment (lateral) spectrum of the same track, if it has one
+    /// (a road's ISO class has none).
+    pub fn alignment(&self) -> Option<Spectrum> {
+        match *self {
+            Spectrum::Fra { class } => Some(Spectrum::FraAlignment { class }),
+            Spectrum::German { interference } => Some(Spectrum::GermanAlignment { interference }),
+            _ => None,
         }
     }
 
@@ -188,13 +210,21 @@ impl Spectrum {
     /// ∫ Ω⁻² dΩ.
     pub fn band_variance(&self, lo: f64, hi: f64) -> f64 {
         match *self {
-            Spectrum::Fra { class } => {
-                let a = FRA_K * FRA_CLASSES[usize::from(class.clamp(1, 6)) - 1].0 * CM2;
+            Spectrum::Fra { class } | Spectrum::FraAlignment { class } => {
+                let row = FRA_CLASSES[usize::from(class.clamp(1, 6)) - 1];
+                let coefficient = match self {
+                    Spectrum::Fra { .. } => row.0,
+                    _ => row.1,
+                };
+                let a = FRA_K * coefficient * CM2;
                 let f = |w: f64| -1.0 / w - (w / FRA_CUTOFF).atan() / FRA_CUTOFF;
                 a * (f(hi) - f(lo))
             }
-            Spectrum::German { interference } => {
-                let a = interference.coefficients().0;
+            Spectrum::German { interference } | Spectrum::GermanAlignment { interference } => {
+                let a = match self {
+                    Spectrum::German { .. } => interference.coefficients().0,
+                    _ => interference.coefficients().1,
+                };
                 let (wc, wr) = (GERMAN_CUTOFF, GERMAN_ROLL_OFF);
                 let scale = a * wc * wc / (wc * wc - wr * wr);
                 let f = |w: f64| (w / wr).atan() / wr - (w / wc).atan() / wc;
@@ -217,6 +247,11 @@ impl Spectrum {
                 Interference::High => "german-high".into(),
             },
             Spectrum::Iso8608 { class } => format!("iso-{class:?}"),
+            Spectrum::FraAlignment { class } => format!("fra-{class}-alignment"),
+            Spectrum::GermanAlignment { interference } => match interference {
+                Interference::Low => "german-low-alignment".into(),
+                Interference::High => "german-high-alignment".into(),
+            },
         }
     }
 }

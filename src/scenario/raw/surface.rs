@@ -79,6 +79,13 @@ pub enum SurfaceRaw {
         #[serde(default)]
         #[schemars(extend("default" = 1))]
         seed: Option<u64>,
+        /// Also sample the rails' alignment (lateral irregularity) from the
+        /// same class's alignment spectrum (A_a in place of A_v), on its own
+        /// random streams: what a `train_3d`'s wheelsets follow sideways (the
+        /// mean of the two rails' alignment). Default false (straight rails).
+        #[serde(default)]
+        #[schemars(extend("default" = false))]
+        alignment: Option<bool>,
         /// `identical`: both rails (wheel tracks) carry the same profile;
         /// `independent`: the left and right ones are independent samples.
         /// Default `identical`.
@@ -118,6 +125,13 @@ pub enum SurfaceRaw {
         #[serde(default)]
         #[schemars(extend("default" = 1))]
         seed: Option<u64>,
+        /// Also sample the rails' alignment (lateral irregularity) from the
+        /// same class's alignment spectrum (A_a in place of A_v), on its own
+        /// random streams: what a `train_3d`'s wheelsets follow sideways (the
+        /// mean of the two rails' alignment). Default false (straight rails).
+        #[serde(default)]
+        #[schemars(extend("default" = false))]
+        alignment: Option<bool>,
         /// `identical`: both rails (wheel tracks) carry the same profile;
         /// `independent`: the left and right ones are independent samples.
         /// Default `identical`.

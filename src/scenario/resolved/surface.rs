@@ -24,6 +24,9 @@ pub struct Sampling {
     /// Fade-in length on the approach, m (0: start at the entrance with
     /// r(0) = 0).
     pub run_in: f64,
+    /// Whether the rails' alignment (lateral irregularity) is sampled too,
+    /// from the spectrum's alignment form.
+    pub alignment: bool,
 }
 
 /// A measured profile as read from its CSV file.
