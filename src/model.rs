@@ -109,6 +109,8 @@ pub struct Model {
     pub method: SolverMethod,
     /// Convergence settings of the `iterative` method.
     pub iteration: Iteration,
+    /// Settings of the `embs` method (`None` for any other).
+    pub embs: Option<crate::scenario::resolved::EmbsOptions>,
     /// Transverse positions y of the girder lines, m (a beam: one line): the
     /// recorder tabulates the DAF at every span's middle on each.
     pub girder_lines: Vec<f64>,
@@ -201,6 +203,7 @@ impl Model {
             alpha: scenario.solver.newmark.alpha,
             method: scenario.solver.method,
             iteration: scenario.solver.iteration.unwrap_or_default(),
+            embs: scenario.solver.embs,
             girder_lines: scenario.bridge.girder_lines(),
             gravity: scenario.gravity,
             ground: ground_excitation(scenario, &bridge_participation, lateral_participation),

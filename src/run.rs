@@ -223,16 +223,41 @@ fn run_scene(
         }
         .into()
     };
-    if let Some((out, above_bytes)) = stream {
+    // A comparison keeps both histories in memory to difference them.
+    let compare = model.embs.is_some_and(|e| e.compare);
+    if let Some((out, above_bytes)) = stream.filter(|_| !compare) {
         let rows = (model.steps / scenario.output.every.max(1)) as f64 + 1.0;
         if rows * recorder.row_width() as f64 * 8.0 > above_bytes {
             recorder = recorder.spill_into(out).map_err(io)?;
         }
     }
+    let solve_start = Instant::now();
     let stats = solve::run(&model, &mut recorder, progress)?;
+    let solve_time = solve_start.elapsed().as_secs_f64();
     let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
-    let summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
+    let mut summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
+    if model.method == crate::scenario::resolved::SolverMethod::Embs {
+        // The same model and records through `coupled`, as the reference.
+        let reference = if compare {
+            let mut coupled = Recorder::new(&model, &scenario.record)
+                .map_err(BuildError::from)?
+                .every(scenario.output.every);
+            let coupled_start = Instant::now();
+            solve::coupled::run(&model, &mut coupled, &mut |_, _| {})?;
+            let coupled_time = coupled_start.elapsed().as_secs_f64();
+            Some((coupled.finish(), coupled_time))
+        } else {
+            None
+        };
+        summary.embs = Some(report::embs::EmbsSummary::new(
+            &model,
+            &history,
+            reference
+                .as_ref()
+                .map(|(h, coupled_time)| (h, *coupled_time, solve_time)),
+        ));
+    }
     Ok(Outcome {
         model,
         history,

@@ -185,7 +185,7 @@ enum Shapes {
     },
     /// An imported finite-element model: the kept modes on its DOFs and
     /// along its track.
-    Imported(Box<ImportedShapes>),
+    Imported(std::sync::Arc<ImportedShapes>),
 }
 
 /// Most free dofs of a beam whose contacts get the static correction (K⁻¹
@@ -428,7 +428,11 @@ impl ModalBridge {
                 };
                 let omegas: Vec<f64> = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
                 let shapes = ImportedShapes::new(f.model.clone(), pencil, modes.vectors);
-                (omegas, Shapes::Imported(Box::new(shapes)), modes.check)
+                (
+                    omegas,
+                    Shapes::Imported(std::sync::Arc::new(shapes)),
+                    modes.check,
+                )
             }
         };
         let damping_ratios = match (bridge, &shapes) {

@@ -61,6 +61,9 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     let last = run.end_time - 0.5 * run.time_step;
     let period = run.frequencies.first().map(|f| 1.0 / f);
     let mut out = Vec::new();
+    if let Some(embs) = &summary.embs {
+        out.extend(embs.warnings());
+    }
     // The known gap of the automatic choice on imported tracks (measured
     // on scenarios/viaduct-2span-axle-loads.yaml; tests/automatic_shipped.rs).
     if matches!(

@@ -3,6 +3,7 @@
 
 pub mod advice;
 pub mod atomic;
+pub mod embs;
 pub mod history_files;
 pub mod history_plot;
 pub mod plot;

@@ -149,6 +149,10 @@ pub struct Summary {
     /// line (`bridge.girder_lines`), span by span.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub girder_dafs: Vec<GirderDaf>,
+    /// With `method: embs`: the small parameter ε and, with
+    /// `solver.compare`, the errors against `coupled` and the speed-up.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub embs: Option<super::embs::EmbsSummary>,
 }
 
 /// Static reference used for DAFs.
@@ -279,6 +283,7 @@ impl Summary {
                     SolverMethod::Coupled => "coupled",
                     SolverMethod::Iterative => "iterative",
                     SolverMethod::Lcp => "lcp",
+                    SolverMethod::Embs => "embs",
                 },
                 contact: match model.contact {
                     crate::model::ContactLaw::Permanent => "permanent",
@@ -319,6 +324,7 @@ impl Summary {
             } else {
                 Vec::new()
             },
+            embs: None,
         }
     }
 }

@@ -261,6 +261,15 @@ pub(super) fn resolve_method(
         None => needed,
         Some(m) if m == needed => m,
         Some(SolverMethod::Iterative) if !contact.is_unilateral() => SolverMethod::Iterative,
+        Some(SolverMethod::Embs) if !contact.is_unilateral() => SolverMethod::Embs,
+        Some(SolverMethod::Embs) => {
+            ck.error(
+                "solver.method",
+                "`method: embs` decouples permanent contact (the wheels follow the rails); \
+                 unilateral contact (rigid, elastic, hertz) needs `method: lcp`",
+            );
+            needed
+        }
         Some(SolverMethod::Coupled | SolverMethod::Iterative) => {
             ck.error(
                 "solver.method",
@@ -276,6 +285,32 @@ pub(super) fn resolve_method(
             needed
         }
     }
+}
+
+/// EMBS settings: only for `method: embs`.
+pub(super) fn resolve_embs(
+    solver: &raw::SolverRaw,
+    method: SolverMethod,
+    ck: &mut Checker<'_>,
+) -> Option<EmbsOptions> {
+    if method != SolverMethod::Embs {
+        for (key, given) in [
+            ("first_order", solver.first_order.is_some()),
+            ("compare", solver.compare.is_some()),
+        ] {
+            if given {
+                ck.error(
+                    &format!("solver.{key}"),
+                    format!("`{key}` applies to `method: embs` only"),
+                );
+            }
+        }
+        return None;
+    }
+    Some(EmbsOptions {
+        first_order: solver.first_order.unwrap_or(true),
+        compare: solver.compare.unwrap_or(false),
+    })
 }
 
 /// Convergence settings: only for `method: iterative`.

@@ -8,7 +8,8 @@ use super::bridges::resolve_bridge;
 use super::budget::{self, Budget, Limits, LoadOptions};
 use super::content;
 use super::derive::{
-    derive_dimensionless, resolve_contact, resolve_iteration, resolve_method, resolve_study,
+    derive_dimensionless, resolve_contact, resolve_embs, resolve_iteration, resolve_method,
+    resolve_study,
 };
 use super::diagnostic::{Diagnostic, Lines};
 use super::plausible;
@@ -616,6 +617,7 @@ pub(super) fn resolve(
 
     let method = resolve_method(solver_raw.method, &contact, ck);
     let iteration = resolve_iteration(&solver_raw, method, ck);
+    let embs = resolve_embs(&solver_raw, method, ck);
     let record = resolve_records(
         raw.record.as_deref(),
         &modal.frequencies(),
@@ -690,6 +692,7 @@ pub(super) fn resolve(
             newmark,
             free_vibration,
             iteration,
+            embs,
             time_step_selection,
         },
         record,

@@ -632,10 +632,22 @@ pub struct Solver {
     /// Convergence settings (`iterative` only).
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
     pub iteration: Option<Iteration>,
+    /// EMBS settings (`embs` only).
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub embs: Option<EmbsOptions>,
     /// How the time step was chosen, in words (the summary states it; not
     /// written to `resolved.yaml`, which gives the step itself).
     #[serde(skip)]
     pub time_step_selection: String,
+}
+
+/// Settings of the `embs` solver.
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct EmbsOptions {
+    /// Whether the first-order bridge response is added.
+    pub first_order: bool,
+    /// Whether the scene is also solved by `coupled` for comparison.
+    pub compare: bool,
 }
 
 /// Convergence settings of the `iterative` solver.

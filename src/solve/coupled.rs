@@ -15,7 +15,7 @@ use super::dense::lu_solve;
 use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
-use super::permanent::{PermanentContacts, dot};
+use super::permanent::PermanentContacts;
 use super::{Observer, Progress, SolveError, StepView};
 use crate::model::Model;
 
@@ -64,39 +64,9 @@ pub fn run(
         step_state.lateral_ground = ground.lateral_load;
         step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
 
-        // Sensitivities of the wheel kinematics to λ.
-        let shapes = &step_state.shapes;
-        for c in 0..nc {
-            for d in 0..nc {
-                let (sc, sd) = (&shapes[c], &shapes[d]);
-                // The residual (static) flexibility of the modes left out,
-                // when the contact correction is on (see `permanent`).
-                let r = step_state.residual.get(c * nc + d).copied().unwrap_or(0.0);
-                sens[c * nc + d] = [
-                    -dot(&sc.values, &sd.scaled) - r,
-                    -dot(&sc.velocity_row, &sd.scaled),
-                    -dot(&sc.acceleration_row, &sd.scaled),
-                ];
-            }
-        }
-
-        // Wheel rows of each vehicle: λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W → (I − A)λ = b.
+        // (I − A)λ = b from the wheels' sensitivities and the vehicles' rows.
+        step_state.contact_system(&mut sens, &mut system);
         step_state.vehicle_forces(&step_state.base, &mut lambda);
-        for (v, partition) in step_state.partitions.iter().enumerate() {
-            let local = &step_state.contact_of[v];
-            for (a, &c) in local.iter().enumerate() {
-                for d in 0..nc {
-                    let mut a_cd = 0.0;
-                    for (b, &cb) in local.iter().enumerate() {
-                        let s = sens[cb * nc + d];
-                        a_cd += partition.condensed_mass[(a, b)] * s[2]
-                            + partition.condensed_damping[(a, b)] * s[1]
-                            + partition.condensed_stiffness[(a, b)] * s[0];
-                    }
-                    system[c * nc + d] = if c == d { 1.0 - a_cd } else { -a_cd };
-                }
-            }
-        }
         if nc > 0 && !lu_solve(&mut system, &mut lambda, nc) {
             return Err(SolveError::SingularContact {
                 time: t,

@@ -10,6 +10,7 @@
 
 pub mod coupled;
 pub mod dense;
+pub mod embs;
 pub mod guard;
 pub mod iterative;
 pub mod lcp;
@@ -175,6 +176,7 @@ pub fn run(
         SolverMethod::Coupled => {
             coupled::run(model, observer, progress).map(|()| SolveStats::default())
         }
+        SolverMethod::Embs => embs::run(model, observer, progress).map(|()| SolveStats::default()),
     }
 }
 

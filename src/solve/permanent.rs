@@ -116,6 +116,10 @@ pub struct PermanentContacts {
     /// This step's HHT-weighted lateral ground acceleration, m/s²
     /// ([`super::GroundStep::lateral_load`]); set with `gravity_ratio`.
     pub lateral_ground: f64,
+    /// Whether the wheels follow the track's irregularities (true), or a
+    /// perfect track (the EMBS first-order bridge, whose wheels carry no
+    /// irregularity: [`super::embs`]).
+    pub follow_irregularity: bool,
 }
 
 impl PermanentContacts {
@@ -163,6 +167,7 @@ impl PermanentContacts {
         Ok(Self {
             gravity_ratio: 0.0,
             lateral_ground: 0.0,
+            follow_irregularity: true,
             shapes: (0..nc).map(|_| ContactShapes::new(modes)).collect(),
             base: vec![[0.0; 3]; nc],
             surface: vec![(0.0, 0.0, 0.0); nc],
@@ -251,8 +256,11 @@ impl PermanentContacts {
                     *row += a * slope;
                 }
             }
-            let (r, dr, ddr) =
-                model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x);
+            let (r, dr, ddr) = if self.follow_irregularity {
+                model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x)
+            } else {
+                (0.0, 0.0, 0.0)
+            };
             self.surface[c] = (r, dr, ddr);
             self.base[c] = [
                 dot(&s.values, q_star) + r,
@@ -310,6 +318,44 @@ impl PermanentContacts {
                     .iter()
                     .map(|&c| contact_forces[self.contacts[c].wheel]),
             );
+        }
+    }
+
+    /// The step's condensed contact system (I − A) λ = b, row-major nc × nc
+    /// into `system` (b is [`Self::vehicle_forces`] of [`Self::base`]):
+    /// each wheel's kinematics is affine in λ with sensitivities
+    /// ∂(u, u̇, ü)_c/∂λ_d = −(φ_c·D φ_d + R_cd, P₁c·Dφ_d, P₂c·Dφ_d) (R the
+    /// residual flexibility when the contact correction is on), written to
+    /// `sens`, and each vehicle's wheel rows λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W
+    /// close it. Cost O(modes·contacts²) + O(contacts²·wheels per vehicle).
+    pub fn contact_system(&self, sens: &mut [[f64; 3]], system: &mut [f64]) {
+        let nc = self.contacts.len();
+        let shapes = &self.shapes;
+        for c in 0..nc {
+            for d in 0..nc {
+                let (sc, sd) = (&shapes[c], &shapes[d]);
+                let r = self.residual.get(c * nc + d).copied().unwrap_or(0.0);
+                sens[c * nc + d] = [
+                    -dot(&sc.values, &sd.scaled) - r,
+                    -dot(&sc.velocity_row, &sd.scaled),
+                    -dot(&sc.acceleration_row, &sd.scaled),
+                ];
+            }
+        }
+        for (v, partition) in self.partitions.iter().enumerate() {
+            let local = &self.contact_of[v];
+            for (a, &c) in local.iter().enumerate() {
+                for d in 0..nc {
+                    let mut a_cd = 0.0;
+                    for (b, &cb) in local.iter().enumerate() {
+                        let s = sens[cb * nc + d];
+                        a_cd += partition.condensed_mass[(a, b)] * s[2]
+                            + partition.condensed_damping[(a, b)] * s[1]
+                            + partition.condensed_stiffness[(a, b)] * s[0];
+                    }
+                    system[c * nc + d] = if c == d { 1.0 - a_cd } else { -a_cd };
+                }
+            }
         }
     }
 

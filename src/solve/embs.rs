@@ -1,0 +1,377 @@
+//! The Extended Modified Bridge System (EMBS) method: the vehicle–bridge
+//! problem with permanent contact decoupled by an asymptotic expansion in
+//! ε = ω_p/ω_B (EMBS paper, Section 2, Eqs. 3–7).
+//!
+//! In the contact coordinates every wheel DOF follows its rail,
+//! u_w = W_Bᵀ u_B + r_c (W_w = I). Eliminating the contact forces from the
+//! wheels' equations M_ww ü_w + S_w = f_w + λ (S_w the suspension forces
+//! on the wheels, about static equilibrium) gives the bridge equation
+//! (Eq. 4); expanding in ε:
+//!
+//! 1. **Zero-order bridge (Eq. 5)**: the *modified bridge system* — the
+//!    bridge carrying the wheel masses rigidly along the rails (with the
+//!    convective terms 2v W_B′ᵀ u̇ and v² W_B″ᵀ u of a moving mass, and the
+//!    wheels' inertia over the irregularity v² r″), loaded by the whole
+//!    vehicle's static weight at the wheels and by the ground motion
+//!    (−M_B δ üg on the bridge, −m_w δ üg on the wheels). No suspension
+//!    force acts. Solved here exactly as a permanent-contact run of
+//!    vehicles reduced to their wheel masses (the Woodbury form of the
+//!    paper's W_B G⁻¹ … terms is the same equation).
+//! 2. **Zero-order upper part (Eq. 6)**: m_u ü + c_u u̇ + k_u u = −m_u δ üg,
+//!    the car body and bogies on wheels held still.
+//! 3. **First-order bridge (Eq. 7)**: the same modified bridge system on a
+//!    perfect track, loaded at the wheels by the zero-order suspension
+//!    forces F₁ = c_w u̇_w⁽⁰⁾ + k_wu u_u⁽⁰⁾ + c_wu u̇_u⁽⁰⁾ (u̇_w⁽⁰⁾ = v r′ +
+//!    W_Bᵀu̇_B⁽⁰⁾ + v W_B′ᵀu_B⁽⁰⁾, the zero-order wheel velocity). The
+//!    primary springs' k_w u_w⁽⁰⁾ is O(ε²) (k_w/m_w = ω_p²) and left out, as
+//!    in Eq. 7. Signs follow Eq. 4, from which Eq. 7 is the first-order
+//!    part: the suspension forces enter as −W_B G⁻¹ m_w⁻¹ F₁ (our copy of
+//!    Eq. 7 prints −k_wu u_u⁽⁰⁾ − c_wu u̇_u⁽⁰⁾ inside the bracket, against
+//!    Eq. 4's +; we follow Eq. 4, and the tests confirm that zero plus
+//!    first order beats zero order alone).
+//! 4. **Vehicle (Eq. 3)**: the whole vehicle with its wheels prescribed to
+//!    follow u_B⁽⁰⁾ + u_B⁽¹⁾ and the irregularities, under −m_u δ üg; its
+//!    wheel rows give the contact forces.
+//!
+//! The three bridge-side passes step together: both bridge orders share
+//! the step's condensed contact matrix (same positions, same wheel
+//! masses), factored once and solved for two right-hand sides. The
+//! recorded bridge response is u_B⁽⁰⁾ + u_B⁽¹⁾, the recorded vehicle the
+//! Eq. 3 vehicle.
+
+use nalgebra::DVector;
+
+use super::dense::{lu_apply, lu_factor};
+use super::guard::Guard;
+use super::modal::ModalStep;
+use super::newmark::Newmark;
+use super::permanent::PermanentContacts;
+use super::{GroundStep, Observer, Progress, SolveError, StepView};
+use crate::contact::ContactDirection;
+use crate::model::Model;
+use crate::vehicle::{VehicleModel, WheelKind};
+
+/// The small parameter of a scene: ε = ω_p/ω_B, ω_p the highest wheel
+/// frequency on the primary suspension √(k_cc/m_cc) over the contact DOFs
+/// in `direction` (the wheel's own rate over its mass, the group
+/// m_w⁻¹k_w of Eq. 4), ω_B the bridge's lowest kept frequency; `None`
+/// where no vehicle has such a contact.
+pub fn small_parameter(model: &Model, direction: ContactDirection) -> Option<f64> {
+    let bridge = *model.bridge.circular_frequencies.first()?;
+    model
+        .vehicles
+        .iter()
+        .flat_map(|v| {
+            v.wheels.iter().filter_map(move |w| match w.kind {
+                WheelKind::Dof(d) if w.direction == direction && v.mass[(d, d)] > 0.0 => {
+                    Some((v.stiffness[(d, d)] / v.mass[(d, d)]).sqrt())
+                }
+                _ => None,
+            })
+        })
+        .fold(None, |m: Option<f64>, w| Some(m.map_or(w, |m| m.max(w))))
+        .map(|primary| primary / bridge)
+}
+
+/// Above this ε the summary warns that the expansion is not accurate.
+pub const SMALL_EPSILON: f64 = 0.3;
+
+/// A vehicle reduced to its wheel masses, with the same DOFs: the wheel
+/// rows of M (the wheels carry no mass coupling to the upper part in any
+/// vehicle here), no damping or stiffness on the wheels, and the upper
+/// DOFs parked on unit springs with unit masses, untouched by any load, so
+/// they stay at 0 and condense to nothing. With `loads`, the wheels keep
+/// their own weight and their share of the lateral ground inertia;
+/// without, nothing loads them (the first-order pass) and moving loads are
+/// zero.
+fn wheel_masses(vehicle: &VehicleModel, loads: bool) -> VehicleModel {
+    let n = vehicle.dofs();
+    let wheel_dofs: Vec<usize> = vehicle
+        .wheels
+        .iter()
+        .filter_map(|w| match w.kind {
+            WheelKind::Dof(d) => Some(d),
+            WheelKind::Load(_) => None,
+        })
+        .collect();
+    let mut reduced = vehicle.clone();
+    reduced.mass.fill(0.0);
+    reduced.damping.fill(0.0);
+    reduced.stiffness.fill(0.0);
+    reduced.gravity_load = DVector::zeros(n);
+    if !reduced.lateral_ground_load.is_empty() {
+        reduced.lateral_ground_load.fill(0.0);
+    }
+    for d in 0..n {
+        if wheel_dofs.contains(&d) {
+            for &e in &wheel_dofs {
+                reduced.mass[(d, e)] = vehicle.mass[(d, e)];
+            }
+            if loads {
+                reduced.gravity_load[d] = vehicle.gravity_load[d];
+                if !vehicle.lateral_ground_load.is_empty() {
+                    reduced.lateral_ground_load[d] = vehicle.lateral_ground_load[d];
+                }
+            }
+        } else {
+            reduced.mass[(d, d)] = 1.0;
+            reduced.stiffness[(d, d)] = 1.0;
+        }
+    }
+    if !loads {
+        for w in &mut reduced.wheels {
+            if let WheelKind::Load(_) = w.kind {
+                w.kind = WheelKind::Load(0.0);
+            }
+        }
+    }
+    reduced
+}
+
+/// Sets every DOF of the reduced vehicles to rest at 0 (their upper DOFs
+/// carry nothing; the wheels of permanent contact sit at 0 on level
+/// ground).
+fn at_zero(contacts: &mut PermanentContacts) {
+    for state in &mut contacts.states {
+        state.displacement.fill(0.0);
+        state.velocity.fill(0.0);
+        state.acceleration.fill(0.0);
+        state.static_displacement.fill(0.0);
+    }
+}
+
+/// An external force on the wheel rows (N, contact order, HHT-weighted
+/// (1+α)F_{n+1} − αF_n): the wheel equation M ü = F + λ gives λ⁰ −= F,
+/// stored divided by the weight w = 1 + α ([`super::partition`]).
+fn load_wheels(contacts: &mut PermanentContacts, weighted: &[f64], weight: f64) {
+    for (v, partition) in contacts.partitions.iter_mut().enumerate() {
+        for (a, &c) in contacts.contact_of[v].iter().enumerate() {
+            partition.base_forces[a] -= weighted[c] / weight;
+        }
+    }
+}
+
+/// Integrates the model by EMBS, calling `observer` at t = 0 and after
+/// every step with the summed bridge response and the Eq. 3 vehicles.
+pub fn run(
+    model: &Model,
+    observer: &mut dyn Observer,
+    progress: Progress<'_>,
+) -> Result<(), SolveError> {
+    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+    let first_order = model.embs.is_none_or(|e| e.first_order);
+    let bridge = &model.bridge;
+    let modes = bridge.mode_count();
+    let mut modal0 = ModalStep::new(bridge, &nm)
+        .with_ground(model.ground_participation())
+        .with_lateral_ground(model.lateral_ground_participation());
+    let mut modal1 = ModalStep::new(bridge, &nm);
+    let zero_order = Model {
+        vehicles: model
+            .vehicles
+            .iter()
+            .map(|v| wheel_masses(v, true))
+            .collect(),
+        ..model.clone()
+    };
+    let first = Model {
+        vehicles: model
+            .vehicles
+            .iter()
+            .map(|v| wheel_masses(v, false))
+            .collect(),
+        ground: None,
+        ..model.clone()
+    };
+    let mut bridge0 = PermanentContacts::new(&zero_order, &nm)?;
+    let mut bridge1 = PermanentContacts::new(&first, &nm)?;
+    bridge1.follow_irregularity = false;
+    at_zero(&mut bridge0);
+    at_zero(&mut bridge1);
+    // The Eq. 6 upper part on held wheels, and the Eq. 3 vehicle.
+    let mut upper = PermanentContacts::new(model, &nm)?;
+    let mut vehicle = PermanentContacts::new(model, &nm)?;
+    let nc = bridge0.count();
+
+    // The static suspension force on each wheel, −(λ_static + f_g,w): the
+    // vehicle's weight the modified bridge system carries (f_B,gravity).
+    let statics: Vec<f64> = bridge0
+        .contacts
+        .iter()
+        .map(|c| {
+            -(model.static_wheel_loads[c.wheel] + model.vehicles[c.vehicle].gravity_load[c.dof])
+        })
+        .collect();
+    let weight = nm.weight();
+
+    let mut sens = vec![[0.0f64; 3]; nc * nc];
+    let mut system = vec![0.0; nc * nc];
+    let mut pivots = vec![0; nc];
+    let (mut lambda0, mut lambda1, mut lambda) = (vec![0.0; nc], vec![0.0; nc], vec![0.0; nc]);
+    let (mut suspension, mut suspension_previous, mut weighted) =
+        (vec![0.0; nc], vec![0.0; nc], vec![0.0; nc]);
+    let mut kinematics = vec![[0.0f64; 3]; nc];
+    let nw = model.wheels.len();
+    let mut forces0 = model.static_wheel_loads.clone();
+    let mut forces1 = vec![0.0; nw];
+    let mut contact_forces = model.static_wheel_loads.clone();
+    let contact_gaps = vec![0.0; nw];
+    let mut wheel_positions = vec![0.0; nw];
+    let (mut displacement, mut acceleration) = (vec![0.0; modes], vec![0.0; modes]);
+    model.wheel_positions(0.0, &mut wheel_positions);
+
+    observer.observe(&StepView::of(
+        0,
+        0.0,
+        &modal0,
+        &vehicle.states,
+        &contact_forces,
+        &contact_gaps,
+        &wheel_positions,
+    ));
+
+    let guard = Guard::new(model);
+    let mut ground = GroundStep::new(model, &nm);
+    let report_every = (model.steps / 200).max(1);
+    for step in 1..=model.steps {
+        let t = step as f64 * model.time_step;
+        model.wheel_positions(t, &mut wheel_positions);
+        let ratio = ground.step_of(model, &mut modal0, t);
+        let lateral = ground.lateral_load;
+
+        // Eq. 6: the upper part on wheels held at rest, under the ground.
+        for (v, partition) in upper.partitions.iter_mut().enumerate() {
+            let state = &mut upper.states[v];
+            partition.lateral_ground = lateral;
+            partition.begin_step(
+                &nm,
+                ratio,
+                &state.displacement,
+                &state.velocity,
+                &state.acceleration,
+                std::iter::empty(),
+            );
+            partition.finish_step(
+                &nm,
+                &mut state.displacement,
+                &mut state.velocity,
+                &mut state.acceleration,
+            );
+        }
+
+        // Eq. 5: the zero-order modified bridge system.
+        bridge0.gravity_ratio = ratio;
+        bridge0.lateral_ground = lateral;
+        bridge0.begin_step(&zero_order, &nm, &mut modal0, t, &wheel_positions, &forces0);
+        load_wheels(&mut bridge0, &statics, weight);
+        bridge0.contact_system(&mut sens, &mut system);
+        if nc > 0 && !lu_factor(&mut system, &mut pivots, nc) {
+            return Err(SolveError::SingularContact {
+                time: t,
+                reason: "the modified bridge system's contact matrix is singular".into(),
+            });
+        }
+        bridge0.vehicle_forces(&bridge0.base, &mut lambda0);
+        lu_apply(&system, &pivots, &mut lambda0, nc);
+        bridge0.finish_step(&nm, &mut modal0, &lambda0, &mut forces0);
+
+        // Eq. 7: the first-order bridge under the zero-order suspension
+        // forces F₁ = C_ww u̇_w⁽⁰⁾ + K_wu u_u⁽⁰⁾ + C_wu u̇_u⁽⁰⁾.
+        if first_order {
+            for (c, contact) in bridge0.contacts.iter().enumerate() {
+                let full = &model.vehicles[contact.vehicle];
+                let (zero, held) = (
+                    &bridge0.states[contact.vehicle],
+                    &upper.states[contact.vehicle],
+                );
+                let wheel_dofs = &upper.partitions[contact.vehicle].wheel_dofs;
+                let mut force = 0.0;
+                for j in 0..full.dofs() {
+                    if wheel_dofs.contains(&j) {
+                        force += full.damping[(contact.dof, j)] * zero.velocity[j];
+                    } else {
+                        let moved = held.displacement[j] - held.static_displacement[j];
+                        force += full.stiffness[(contact.dof, j)] * moved
+                            + full.damping[(contact.dof, j)] * held.velocity[j];
+                    }
+                }
+                suspension[c] = force;
+                // M ü = −F₁ + λ: the load is −F₁, HHT-weighted.
+                weighted[c] = -(weight * force - nm.alpha * suspension_previous[c]);
+            }
+            suspension_previous.copy_from_slice(&suspension);
+            bridge1.begin_step(&first, &nm, &mut modal1, t, &wheel_positions, &forces1);
+            load_wheels(&mut bridge1, &weighted, weight);
+            bridge1.vehicle_forces(&bridge1.base, &mut lambda1);
+            lu_apply(&system, &pivots, &mut lambda1, nc);
+            bridge1.finish_step(&nm, &mut modal1, &lambda1, &mut forces1);
+        }
+
+        // Eq. 3: the vehicle with its wheels on u_B⁽⁰⁾ + u_B⁽¹⁾ + r.
+        for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
+            let state = &vehicle.states[v];
+            partition.lateral_ground = lateral;
+            partition.begin_step(
+                &nm,
+                ratio,
+                &state.displacement,
+                &state.velocity,
+                &state.acceleration,
+                vehicle.contact_of[v]
+                    .iter()
+                    .map(|&c| contact_forces[vehicle.contacts[c].wheel]),
+            );
+        }
+        for (c, contact) in vehicle.contacts.iter().enumerate() {
+            let (v, d) = (contact.vehicle, contact.dof);
+            let (zero, one) = (&bridge0.states[v], &bridge1.states[v]);
+            let wheel = [
+                vehicle.states[v].static_displacement[d]
+                    + zero.displacement[d]
+                    + one.displacement[d],
+                zero.velocity[d] + one.velocity[d],
+                zero.acceleration[d] + one.acceleration[d],
+            ];
+            let state = &mut vehicle.states[v];
+            (
+                state.displacement[d],
+                state.velocity[d],
+                state.acceleration[d],
+            ) = (wheel[0], wheel[1], wheel[2]);
+            kinematics[c] = wheel;
+        }
+        for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
+            let state = &mut vehicle.states[v];
+            partition.finish_step(
+                &nm,
+                &mut state.displacement,
+                &mut state.velocity,
+                &mut state.acceleration,
+            );
+        }
+        vehicle.vehicle_forces(&kinematics, &mut lambda);
+        for (c, contact) in vehicle.contacts.iter().enumerate() {
+            contact_forces[contact.wheel] = lambda[c];
+        }
+
+        guard.check(model, &modal0, &vehicle.states, &lambda, t, step)?;
+        for i in 0..modes {
+            displacement[i] = modal0.displacement[i] + modal1.displacement[i];
+            acceleration[i] = modal0.acceleration[i] + modal1.acceleration[i];
+        }
+        observer.observe(&StepView {
+            step,
+            time: t,
+            modal_displacement: &displacement,
+            modal_acceleration: &acceleration,
+            vehicles: &vehicle.states,
+            contact_forces: &contact_forces,
+            contact_gaps: &contact_gaps,
+            wheel_positions: &wheel_positions,
+        });
+        if step % report_every == 0 || step == model.steps {
+            progress(step, model.steps);
+        }
+    }
+    Ok(())
+}
