@@ -484,3 +484,78 @@ fn automatic_modes_on_an_imported_track_are_flagged() {
         "{warnings:?}"
     );
 }
+
+/// Per-rail vertical components on an imported track of two rails (the
+/// generated viaduct, rails at y = ±0.88 m): a point left of the centre
+/// line (y > 0) follows the first track rail, right of it the second, and
+/// the centre line their average. At a rail node the mode values equal the
+/// node's uz DOF values exactly (the Hermite rail field interpolates the
+/// nodes); the two rails differ (the deck twists), so picking the wrong
+/// rail or averaging shows at order 1.
+#[test]
+fn each_rail_has_its_own_vertical_components() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let loaded = load_file(&dir.join("viaduct-2span-axle-loads.yaml")).unwrap();
+    let bridge = vbi::bridge::ModalBridge::build_with(
+        &loaded.scenario.bridge,
+        vbi::bridge::ModeRequest::Lowest(30),
+    )
+    .unwrap();
+    let rail = |file: &str| -> Vec<(u64, f64)> {
+        std::fs::read_to_string(dir.join("viaduct-2span").join(file))
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| {
+                let (node, x) = l.split_once(',').unwrap();
+                (node.parse().unwrap(), x.parse().unwrap())
+            })
+            .collect()
+    };
+    let (left, right) = (rail("rail_left.csv"), rail("rail_right.csv"));
+    let start = left[0].1;
+    let n = bridge.mode_count();
+    let mut differ = 0.0f64;
+    for k in [10, 25, 40] {
+        let ((left_node, x), (right_node, x_right)) = (left[k], right[k]);
+        assert_eq!(x, x_right);
+        let at = |node: u64| {
+            let dof = bridge.imported_dof(node, Direction::Uz).unwrap().unwrap();
+            let mut values = vec![0.0; n];
+            bridge.dof_mode_values(dof, &mut values);
+            values
+        };
+        let (on_left, on_right) = (at(left_node), at(right_node));
+        let mut values = vec![0.0; n];
+        for (y, expected) in [
+            (0.88, on_left.clone()),
+            (-0.88, on_right.clone()),
+            (
+                0.0,
+                on_left
+                    .iter()
+                    .zip(&on_right)
+                    .map(|(a, b)| 0.5 * (a + b))
+                    .collect(),
+            ),
+        ] {
+            bridge.mode_values(x - start, y, &mut values);
+            let scale = max_abs(&expected);
+            for (v, e) in values.iter().zip(&expected) {
+                assert!((v - e).abs() <= 1e-12 * scale, "y = {y}: {v} against {e}");
+            }
+        }
+        differ = differ.max(
+            on_left
+                .iter()
+                .zip(&on_right)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max)
+                / max_abs(&on_left),
+        );
+    }
+    assert!(
+        differ > 0.1,
+        "the rails must differ for the test to mean anything: {differ}"
+    );
+}

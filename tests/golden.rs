@@ -11,7 +11,8 @@
 //!   crossing response) is rounded to a quantum of 6 significant digits of
 //!   that column's largest |value|: `10^(floor(log10(max|col|)) - 5)`. A value
 //!   at round-off level (1e-19 in a column that peaks at 1e-3) prints as 0.
-//! - summary: `run.wall_time` is removed. Each extreme's `value` is rounded
+//! - summary: `run.wall_time` is removed (and an EMBS comparison's solve
+//!   times and speed-up). Each extreme's `value` is rounded
 //!   with the same quantum as its column (the dynamic or the static column),
 //!   its `time` to 6 significant digits of the run's end time and its
 //!   `position` to 6 significant digits of the bridge length (so 1e-15 m at
@@ -169,6 +170,18 @@ fn summary_snapshot(outcome: &Outcome) -> String {
         run.remove("wall_time").is_some(),
         "summary.run.wall_time is gone: update the golden harness"
     );
+    // An EMBS comparison's solve times and their ratio are wall times too.
+    if let Some(comparison) = summary
+        .pointer_mut("/embs/comparison")
+        .and_then(Value::as_object_mut)
+    {
+        for key in ["embs_solve_time", "coupled_solve_time", "speed_up"] {
+            assert!(
+                comparison.remove(key).is_some(),
+                "summary.embs.comparison.{key} is gone: update the golden harness"
+            );
+        }
+    }
     round_all(&mut summary);
     // Extremes: value, time and position against their scales, from the
     // unrounded numbers (no double rounding).

@@ -499,6 +499,18 @@ impl ModalBridge {
         self.contact_flexibility.is_some()
     }
 
+    /// Whether the contact correction's flexibility (along the track's
+    /// centre line) is that of a contact at `y` (m) across it: everywhere on
+    /// a beam (a plane beam ignores y; a 3D beam has no correction), only
+    /// on the centre line of an imported track of two rails, whose wheels
+    /// off it follow their own rail.
+    pub fn corrects_contact_at(&self, y: f64) -> bool {
+        match &self.shapes {
+            Shapes::Imported(imported) => y == 0.0 || !imported.track.has_two_rails(),
+            _ => true,
+        }
+    }
+
     /// Residual (static) flexibility between two contact points, m/N: the
     /// full static Green's function minus its modal part,
     /// R = G(x_c, x_d) − Σᵢ φᵢ(x_c)φᵢ(x_d)/ωᵢ², from the mode values at the
@@ -614,7 +626,9 @@ impl ModalBridge {
                     }
                 }
             }
-            Shapes::Imported(imported) => imported.track.evaluate(x, values, &mut [], &mut []),
+            Shapes::Imported(imported) => {
+                imported.track.evaluate_at(x, y, values, &mut [], &mut [])
+            }
             Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
                 Some((_, line)) => line.values_at(x, values),
                 None => modes.values_at(x, y, values),
@@ -645,7 +659,9 @@ impl ModalBridge {
             }
             // Along the track: Hermite with the ry DOFs, else linear with
             // zero curvature inside each element (fe_import::track).
-            Shapes::Imported(imported) => imported.track.evaluate(x, values, slopes, curvatures),
+            Shapes::Imported(imported) => {
+                imported.track.evaluate_at(x, y, values, slopes, curvatures)
+            }
             Shapes::Plate { modes, lines } => match lines.iter().find(|(ly, _)| *ly == y) {
                 Some((_, line)) => line.values_slopes_curvatures_at(x, values, slopes, curvatures),
                 None => modes.values_slopes_curvatures_at(x, y, values, slopes, curvatures),

@@ -173,7 +173,11 @@ impl PermanentContacts {
             surface: vec![(0.0, 0.0, 0.0); nc],
             path: vec![(0.0, 0.0); nc],
             correction: vec![0.0; modes],
-            residual: if model.bridge.corrects_contacts() {
+            residual: if model.bridge.corrects_contacts()
+                && contacts
+                    .iter()
+                    .all(|c| model.bridge.corrects_contact_at(c.y))
+            {
                 vec![0.0; nc * nc]
             } else {
                 Vec::new()

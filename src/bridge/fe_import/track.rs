@@ -237,6 +237,37 @@ impl TrackField {
         }
     }
 
+    /// [`Self::evaluate`] for a point `y` (m) across the track: on a track
+    /// of two rails, the first (`track[0]`) is the left one (+y), the second
+    /// the right one, so a wheel off the centre line (a `train_3d`'s
+    /// vertical contact, a truck's wheel) follows its own rail; a point on
+    /// the centre line (y = 0: a single-track vehicle, a record) sees the
+    /// average, as does every point of a one-rail track.
+    #[inline]
+    pub fn evaluate_at(
+        &self,
+        x: f64,
+        y: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        if self.rails.len() != 2 || y == 0.0 {
+            return self.evaluate(x, values, slopes, curvatures);
+        }
+        values.fill(0.0);
+        slopes.fill(0.0);
+        curvatures.fill(0.0);
+        let rail = if y > 0.0 { 0 } else { 1 };
+        self.rails[rail].accumulate(x, 1.0, values, slopes, curvatures);
+    }
+
+    /// Whether points off the centre line see other values than the
+    /// centre line's (two rails).
+    pub fn has_two_rails(&self) -> bool {
+        self.rails.len() == 2
+    }
+
     /// Value of component 0 at `x` (m).
     pub fn value_at(&self, x: f64) -> f64 {
         let mut v = [0.0];
