@@ -115,10 +115,14 @@ pub fn lu_factor(a: &mut [f64], pivots: &mut [usize], n: usize) -> bool {
 /// overwritten by x. Cost n² multiply–adds; the same arithmetic as
 /// [`lu_solve`], so the answers agree bit for bit.
 pub fn lu_apply(a: &[f64], pivots: &[usize], b: &mut [f64], n: usize) {
+    // P b first: every later swap also moved the multipliers stored below
+    // the diagonal, so L is that of P A = L U.
     for k in 0..n {
         if pivots[k] != k {
             b.swap(k, pivots[k]);
         }
+    }
+    for k in 0..n {
         for i in k + 1..n {
             b[i] -= a[i * n + k] * b[k];
         }
