@@ -513,6 +513,22 @@ fn bad_trains_are_refused_with_a_located_message() {
         ),
         (
             scene(
+                "{type: train, speed: 50.0, count: 2, car_spacing: 25.0}",
+                "{name: f, quantity: vehicle_displacement, dof: car3_body_bounce}",
+            ),
+            "test.yaml:6:",
+            "car 3 does not exist",
+        ),
+        (
+            scene(
+                "{type: train, speed: 50.0, count: 2, car_spacing: 25.0}",
+                "{name: f, quantity: vehicle_displacement, car: 1, dof: car2_body_bounce}",
+            ),
+            "test.yaml:6:",
+            "unknown DOF `car2_body_bounce`",
+        ),
+        (
+            scene(
                 "{type: rail_car, speed: 50.0}",
                 "{name: f, quantity: contact_force, car: 1}",
             ),
@@ -543,6 +559,38 @@ fn bad_trains_are_refused_with_a_located_message() {
         assert!(
             error.contains(place) && error.contains(message),
             "expected {place} … {message}, got: {error}"
+        );
+    }
+}
+
+/// The resolved form of a train (written by `run` as `resolved.yaml`)
+/// loads back to the same scene, bit for bit: the cars as a `cars` list of
+/// spacings summed in the same order (spacings 0.1 apart whose products
+/// and sums differ in the last bit: 3 × 27.1 ≠ 27.1 + 27.1 + 27.1), the
+/// records' DOFs named with their car (`car2_body_bounce`).
+#[test]
+fn a_resolved_train_loads_back_to_itself() {
+    for vehicle in [
+        "{type: train, speed: 50.0, count: 4, car_spacing: 27.1}",
+        "{type: train, speed: 50.0, cars: [{}, {spacing: 27.1, parameters: {body_mass: 4.0e4}}, {spacing: 30.3}]}",
+        "{type: train_3d, speed: 50.0, count: 3, car_spacing: 27.1}",
+    ] {
+        let yaml = format!(
+            "name: t\nbridge: {{type: beam, spans: [32.0], bending_stiffness: 1.0e10, mass_per_length: 1.0e4}}\nvehicles:\n  - {vehicle}\ncontact: {{type: permanent}}\nrecord:\n  - {{name: b, quantity: vehicle_displacement, car: 2, dof: body_bounce}}\n  - {{name: f, quantity: contact_force, car: 3, wheel: 2}}\n"
+        );
+        let first = load_str(&yaml, "test.yaml").unwrap();
+        let resolved = vbi::run::resolved_yaml(&first.scenario);
+        let again = load_str(&resolved, "resolved.yaml")
+            .unwrap_or_else(|e| panic!("{vehicle}: resolved form does not load: {e}\n{resolved}"));
+        assert_eq!(
+            again.scenario.vehicles, first.scenario.vehicles,
+            "{vehicle}"
+        );
+        assert_eq!(again.scenario.record, first.scenario.record, "{vehicle}");
+        assert_eq!(
+            vbi::run::resolved_yaml(&again.scenario),
+            resolved,
+            "{vehicle}"
         );
     }
 }

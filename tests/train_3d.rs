@@ -22,6 +22,7 @@ fn car(p: Train3dParameters) -> VehicleModel {
             entry_time: 0.0,
             lateral_position: None,
             cars: vec![Train3dCar {
+                spacing: None,
                 offset: 0.0,
                 parameters: p,
             }],

@@ -133,11 +133,12 @@ enum Flexibility {
 }
 
 impl Flexibility {
+    /// G between (x, y) and (ξ, η), m/N; a plane beam has no y.
     #[inline]
-    fn green(&self, x: f64, xi: f64) -> f64 {
+    fn green(&self, x: f64, y: f64, xi: f64, eta: f64) -> f64 {
         match self {
             Flexibility::Beam(f) => f.green(x, xi),
-            Flexibility::Imported(f) => f.green(x, xi),
+            Flexibility::Imported(f) => f.green(x, y, xi, eta),
         }
     }
 }
@@ -499,30 +500,20 @@ impl ModalBridge {
         self.contact_flexibility.is_some()
     }
 
-    /// Whether the contact correction's flexibility (along the track's
-    /// centre line) is that of a contact at `y` (m) across it: everywhere on
-    /// a beam (a plane beam ignores y; a 3D beam has no correction), only
-    /// on the centre line of an imported track of two rails, whose wheels
-    /// off it follow their own rail.
-    pub fn corrects_contact_at(&self, y: f64) -> bool {
-        match &self.shapes {
-            Shapes::Imported(imported) => y == 0.0 || !imported.track.has_two_rails(),
-            _ => true,
-        }
-    }
-
-    /// Residual (static) flexibility between two contact points, m/N: the
-    /// full static Green's function minus its modal part,
-    /// R = G(x_c, x_d) − Σᵢ φᵢ(x_c)φᵢ(x_d)/ωᵢ², from the mode values at the
-    /// two points (`values_c`, `values_d`, kept modes). The quasi-static
+    /// Residual (static) flexibility between two vertical contact points at
+    /// (x_c, y_c) and (x_d, y_d), m: the full static Green's function minus
+    /// its modal part, R = G(c, d) − Σᵢ φᵢ(c)φᵢ(d)/ωᵢ², from the mode values
+    /// at the two points (`values_c`, `values_d`, kept modes, taken by the
+    /// same rule: on an imported track of two rails a wheel off the centre
+    /// line is on its own rail, [`fe_import::modal::track_weights_at`]). The quasi-static
     /// deflection of the modes left out at c under downward forces F_d is
     /// −Σ_d R_cd F_d (the mode-acceleration method applied to the contact
     /// flexibility). 0 when the contact correction is off. Cost O(modes).
     #[inline]
     pub fn residual_flexibility(
         &self,
-        x_c: f64,
-        x_d: f64,
+        (x_c, y_c): (f64, f64),
+        (x_d, y_d): (f64, f64),
         values_c: &[f64],
         values_d: &[f64],
     ) -> f64 {
@@ -535,7 +526,7 @@ impl ModalBridge {
             .zip(&self.circular_frequencies)
             .map(|((a, b), w)| a * b / (w * w))
             .sum();
-        flexibility.green(x_c, x_d) - modal
+        flexibility.green(x_c, y_c, x_d, y_d) - modal
     }
 
     /// Makes evaluation along the deck lines `ys` (m) as cheap as on a beam

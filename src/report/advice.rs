@@ -75,8 +75,9 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
             "the automatic mode choice is not verified against its 0.5 % target on an \
              imported track model: axles stepping onto the free rail ends and over deck joints \
              ring track modes above the cut (rail displacement 3.7 % off on the shipped \
-             viaduct-2span-axle-loads, deck acceleration 0.01 %); check this run with \
-             `vbi converge` or set `bridge.modes`"
+             viaduct-2span-axle-loads, deck acceleration 0.01 %; a 3D car's wheelsets held on \
+             the rails, embs-viaduct-ave-s103-quake: up to 22 % off, accelerations included); \
+             check this run with `vbi converge` or set `bridge.modes`"
                 .to_string(),
         );
     }

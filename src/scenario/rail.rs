@@ -173,10 +173,19 @@ pub(super) fn resolve_train(
                 if n > 1 {
                     check_spacing(ck, &format!("{at}.car_spacing"), spacing, &shared);
                 }
-                cars.extend((0..n).map(|k| TrainCar {
-                    offset: k as f64 * spacing,
-                    parameters: shared,
-                }));
+                // Offsets summed car by car, as a `cars` list sums its
+                // spacings: the resolved file (written as such a list)
+                // then resolves to the same offsets bit for bit.
+                let mut offset = 0.0;
+                for k in 0..n {
+                    let spacing = (k > 0).then_some(spacing);
+                    offset += spacing.unwrap_or(0.0);
+                    cars.push(TrainCar {
+                        spacing,
+                        offset,
+                        parameters: shared,
+                    });
+                }
             }
         }
         (None, None, Some(list)) => {
@@ -211,6 +220,7 @@ pub(super) fn resolve_train(
                     (None, None) => {}
                 }
                 cars.push(TrainCar {
+                    spacing: car.spacing.filter(|_| k > 0),
                     offset,
                     parameters: p,
                 });

@@ -288,10 +288,19 @@ pub(super) fn resolve_train_3d(
                 if n > 1 {
                     check_spacing(ck, &format!("{at}.car_spacing"), spacing, &shared);
                 }
-                cars.extend((0..n).map(|k| Train3dCar {
-                    offset: k as f64 * spacing,
-                    parameters: shared,
-                }));
+                // Offsets summed car by car, as a `cars` list sums its
+                // spacings: the resolved file (written as such a list)
+                // then resolves to the same offsets bit for bit.
+                let mut offset = 0.0;
+                for k in 0..n {
+                    let spacing = (k > 0).then_some(spacing);
+                    offset += spacing.unwrap_or(0.0);
+                    cars.push(Train3dCar {
+                        spacing,
+                        offset,
+                        parameters: shared,
+                    });
+                }
             }
         }
         (Some(_), _, Some(_)) => ck.error(
@@ -331,6 +340,7 @@ pub(super) fn resolve_train_3d(
                     (None, None) => {}
                 }
                 cars.push(Train3dCar {
+                    spacing: car.spacing.filter(|_| k > 0),
                     offset,
                     parameters: p,
                 });

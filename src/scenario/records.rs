@@ -20,6 +20,14 @@ fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     }
 }
 
+/// `car{k}_{rest}` split into k and rest (`None`: no such prefix).
+fn split_car_prefix(name: &str) -> Option<(usize, &str)> {
+    let tail = name.strip_prefix("car")?;
+    let digits = tail.find(|c: char| !c.is_ascii_digit())?;
+    let rest = tail[digits..].strip_prefix('_')?;
+    Some((tail[..digits].parse().ok()?, rest))
+}
+
 /// Wheels of one car of a train (`None`: not a train).
 fn wheels_per_car(vehicle: &Vehicle) -> Option<usize> {
     match vehicle {
@@ -344,6 +352,33 @@ pub(super) fn resolve_records(
                 None => {}
             }
         }
+        // A train's DOF named whole, `car{k}_{dof}` (the form `run` writes
+        // in the resolved scene): the car from the name.
+        let mut dof = r.dof.clone();
+        if let (None, Some(name), Some(t)) = (car, &r.dof, vehicle.map(|v| &vehicles[v - 1]))
+            && let Some(n) = car_count(t)
+            && let Some((k, plain)) = split_car_prefix(name)
+            && dof_names(t).contains(&plain)
+        {
+            if r.car.is_some() {
+                ck.error(
+                    &format!("{at}.dof"),
+                    format!("`{name}` names its car already: leave out `car`, or write `{plain}`"),
+                );
+            } else if k >= 1 && k <= n {
+                car = Some(k);
+                dof = Some(plain.to_owned());
+            } else {
+                ck.error(
+                    &format!("{at}.dof"),
+                    format!(
+                        "car {k} does not exist; the train (vehicle {}) has cars 1 to {n}",
+                        vehicle.unwrap_or(1)
+                    ),
+                );
+                dof = Some(plain.to_owned());
+            }
+        }
         // A 3D train of one car: that car, unless another is named.
         if car.is_none()
             && (is_wheel || is_vehicle_dof)
@@ -387,7 +422,7 @@ pub(super) fn resolve_records(
         }
         if let (true, Some(v)) = (is_vehicle_dof, vehicle) {
             let names = dof_names(&vehicles[v - 1]);
-            match &r.dof {
+            match &dof {
                 None if names.is_empty() => ck.error(
                     &at,
                     format!(
@@ -415,7 +450,7 @@ pub(super) fn resolve_records(
                 ),
                 _ => {}
             }
-            if car_count(&vehicles[v - 1]).is_some() && car.is_none() && r.dof.is_some() {
+            if car_count(&vehicles[v - 1]).is_some() && car.is_none() && dof.is_some() {
                 ck.error(
                     &at,
                     format!("vehicle {v} is a train: pick the car with `car:` (from 1)"),
@@ -436,8 +471,8 @@ pub(super) fn resolve_records(
             vehicle,
             wheel,
             dof: match car {
-                Some(k) => r.dof.as_deref().map(|d| rail_car::train_dof_name(k, d)),
-                None => r.dof.clone(),
+                Some(k) => dof.as_deref().map(|d| rail_car::train_dof_name(k, d)),
+                None => dof,
             },
             max_frequency,
             frame,

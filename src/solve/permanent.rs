@@ -173,11 +173,7 @@ impl PermanentContacts {
             surface: vec![(0.0, 0.0, 0.0); nc],
             path: vec![(0.0, 0.0); nc],
             correction: vec![0.0; modes],
-            residual: if model.bridge.corrects_contacts()
-                && contacts
-                    .iter()
-                    .all(|c| model.bridge.corrects_contact_at(c.y))
-            {
+            residual: if model.bridge.corrects_contacts() {
                 vec![0.0; nc * nc]
             } else {
                 Vec::new()
@@ -299,8 +295,8 @@ impl PermanentContacts {
                         continue;
                     }
                     let r = bridge.residual_flexibility(
-                        wheel_positions[self.contacts[c].wheel],
-                        wheel_positions[self.contacts[d].wheel],
+                        (wheel_positions[self.contacts[c].wheel], self.contacts[c].y),
+                        (wheel_positions[self.contacts[d].wheel], self.contacts[d].y),
                         &self.shapes[c].values,
                         &self.shapes[d].values,
                     );

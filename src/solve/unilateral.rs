@@ -327,8 +327,8 @@ pub fn run(
                     // The modes left out add their static flexibility between the
                     // two contacts (contact static correction; 0 when off).
                     w += bridge.residual_flexibility(
-                        wheel_positions[ca.wheel],
-                        wheel_positions[cb.wheel],
+                        (wheel_positions[ca.wheel], model.wheel_y[ca.wheel]),
+                        (wheel_positions[cb.wheel], model.wheel_y[cb.wheel]),
                         pa,
                         &shapes[b * modes..(b + 1) * modes],
                     );

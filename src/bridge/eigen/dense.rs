@@ -77,6 +77,36 @@ pub fn lowest_inverted(
     Ok((eigenvalues, sorted))
 }
 
+/// Every eigenpair of a small projected pencil A y = λ B y (B positive
+/// definite, A symmetric, both k × k with k a handful): B = L Lᵀ,
+/// C = L⁻¹ A L⁻ᵀ, y = L⁻ᵀ z (so yᵀBy = 1), λ ascending. Forward: the
+/// projected spectrum of one cluster spans no decades. Cost O(k³).
+pub fn lowest_forward_small(
+    stiffness: &Mat<f64>,
+    mass: &Mat<f64>,
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    let k = stiffness.nrows();
+    let mass = Mat::from_fn(k, k, |i, j| 0.5 * (mass[(i, j)] + mass[(j, i)]));
+    let llt = mass
+        .llt(Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    let lower = llt.L();
+    let mut x = Mat::from_fn(k, k, |i, j| 0.5 * (stiffness[(i, j)] + stiffness[(j, i)]));
+    lower.solve_lower_triangular_in_place(x.as_mut());
+    let mut c = x.transpose().to_owned();
+    lower.solve_lower_triangular_in_place(c.as_mut());
+    let c = Mat::from_fn(k, k, |i, j| 0.5 * (c[(i, j)] + c[(j, i)]));
+    let eig = c
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    let values: Vec<f64> = eig.S().column_vector().iter().copied().collect();
+    let mut y = eig.U().to_owned();
+    lower
+        .transpose()
+        .solve_upper_triangular_in_place(y.as_mut());
+    Ok((values, y))
+}
+
 /// Checks that `copies` matrices of `rows × cols` f64 can be allocated,
 /// before a dense kernel that would abort on failure allocates them.
 pub fn ensure_memory(rows: usize, cols: usize, copies: usize) -> Result<(), BridgeError> {

@@ -174,7 +174,21 @@ pub fn track_field(
     )
 }
 
-/// Static flexibility between two track points, G(x, ξ) = N(x)ᵀK⁻¹N(ξ), m/N.
+/// Free DOFs and weights of the point `x` (m) along the track at `y` (m)
+/// across it: the rule of [`TrackField::evaluate_at`] — on a track of two
+/// rails a point left of the centre line (y > 0) is on the first rail, one
+/// right of it on the second, a point on it (and every point of a one-rail
+/// track) sees their average.
+pub fn track_weights_at(model: &ImportedModel, x: f64, y: f64) -> Vec<(usize, f64)> {
+    if model.track.len() != 2 || y == 0.0 {
+        return track_weights(model, x);
+    }
+    let rail = model.track[if y > 0.0 { 0 } else { 1 }];
+    model.rails[rail].weights(x, RailDirection::Vertical)
+}
+
+/// Static flexibility between two track points, G(x, y; ξ, η) =
+/// N(x, y)ᵀK⁻¹N(ξ, η), m/N.
 #[derive(Debug, Clone)]
 pub struct ImportedFlexibility {
     model: Arc<ImportedModel>,
@@ -184,11 +198,13 @@ pub struct ImportedFlexibility {
 }
 
 impl ImportedFlexibility {
-    /// G(x, ξ), m/N; 0 off the track. Cost O(weights²).
-    pub fn green(&self, x: f64, xi: f64) -> f64 {
+    /// G(x, y; ξ, η), m/N, between the point x along the track at y
+    /// across it and the point ξ at η ([`track_weights_at`]); 0 off the
+    /// track. Cost O(weights²).
+    pub fn green(&self, x: f64, y: f64, xi: f64, eta: f64) -> f64 {
         let (at, load) = (
-            track_weights(&self.model, x),
-            track_weights(&self.model, xi),
+            track_weights_at(&self.model, x, y),
+            track_weights_at(&self.model, xi, eta),
         );
         let n = self.order;
         let mut sum = 0.0;

@@ -68,8 +68,15 @@ pub struct Train {
 /// One car of a train.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct TrainCar {
+    /// Distance from the front wheelset of the car ahead to this car's
+    /// front wheelset, m; none for the first car. Written in place of
+    /// `offset` so that the resolved file reads back as a `cars` list.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spacing: Option<f64>,
     /// Distance of the car's front wheelset behind the train's first
-    /// wheelset, m.
+    /// wheelset, m: the running sum of `spacing` (summed in the same order
+    /// on every load, so a resolved file resolves to itself bit for bit).
+    #[serde(skip)]
     pub offset: f64,
     /// The car's parameters.
     pub parameters: RailCarParameters,
@@ -106,8 +113,15 @@ pub struct Train3d {
 /// One car of a 3D train.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Train3dCar {
+    /// Distance from the front wheelset of the car ahead to this car's
+    /// front wheelset, m; none for the first car. Written in place of
+    /// `offset` so that the resolved file reads back as a `cars` list.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spacing: Option<f64>,
     /// Distance of the car's front wheelset behind the train's first
-    /// wheelset, m.
+    /// wheelset, m: the running sum of `spacing` (summed in the same order
+    /// on every load, so a resolved file resolves to itself bit for bit).
+    #[serde(skip)]
     pub offset: f64,
     /// The car's parameters.
     pub parameters: Train3dParameters,
@@ -116,7 +130,7 @@ pub struct Train3dCar {
 /// Parameters of one 3D car (see the raw format for each meaning); SI
 /// units. Suspension rates are per spring: one primary spring set per axle
 /// box (two per wheelset), one secondary set per side of a bogie.
-#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Train3dParameters {
     /// Car body mass, kg.
     pub body_mass: f64,
@@ -173,5 +187,50 @@ impl Train3d {
         self.cars.last().map_or(0.0, |c| {
             c.offset + 2.0 * (c.parameters.half_bogie_spacing + c.parameters.half_wheelbase)
         })
+    }
+}
+
+/// Written with the raw format's flat names (`primary_lateral_stiffness`,
+/// …) so that the resolved file loads back unchanged.
+impl Serialize for Train3dParameters {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut out = serializer.serialize_struct("Train3dParameters", 31)?;
+        out.serialize_field("body_mass", &self.body_mass)?;
+        out.serialize_field("body_roll_inertia", &self.body_roll_inertia)?;
+        out.serialize_field("body_pitch_inertia", &self.body_pitch_inertia)?;
+        out.serialize_field("body_yaw_inertia", &self.body_yaw_inertia)?;
+        out.serialize_field("bogie_mass", &self.bogie_mass)?;
+        out.serialize_field("bogie_roll_inertia", &self.bogie_roll_inertia)?;
+        out.serialize_field("bogie_pitch_inertia", &self.bogie_pitch_inertia)?;
+        out.serialize_field("bogie_yaw_inertia", &self.bogie_yaw_inertia)?;
+        out.serialize_field("wheelset_mass", &self.wheelset_mass)?;
+        out.serialize_field("wheelset_roll_inertia", &self.wheelset_roll_inertia)?;
+        let [kx, ky, kz] = self.primary_stiffness;
+        out.serialize_field("primary_longitudinal_stiffness", &kx)?;
+        out.serialize_field("primary_lateral_stiffness", &ky)?;
+        out.serialize_field("primary_vertical_stiffness", &kz)?;
+        let [cx, cy, cz] = self.primary_damping;
+        out.serialize_field("primary_longitudinal_damping", &cx)?;
+        out.serialize_field("primary_lateral_damping", &cy)?;
+        out.serialize_field("primary_vertical_damping", &cz)?;
+        let [kx, ky, kz] = self.secondary_stiffness;
+        out.serialize_field("secondary_longitudinal_stiffness", &kx)?;
+        out.serialize_field("secondary_lateral_stiffness", &ky)?;
+        out.serialize_field("secondary_vertical_stiffness", &kz)?;
+        let [cx, cy, cz] = self.secondary_damping;
+        out.serialize_field("secondary_longitudinal_damping", &cx)?;
+        out.serialize_field("secondary_lateral_damping", &cy)?;
+        out.serialize_field("secondary_vertical_damping", &cz)?;
+        out.serialize_field("half_bogie_spacing", &self.half_bogie_spacing)?;
+        out.serialize_field("half_wheelbase", &self.half_wheelbase)?;
+        out.serialize_field("primary_half_spacing", &self.primary_half_spacing)?;
+        out.serialize_field("secondary_half_spacing", &self.secondary_half_spacing)?;
+        out.serialize_field("contact_half_spacing", &self.contact_half_spacing)?;
+        out.serialize_field("body_height", &self.body_height)?;
+        out.serialize_field("bogie_height", &self.bogie_height)?;
+        out.serialize_field("secondary_height", &self.secondary_height)?;
+        out.serialize_field("wheel_radius", &self.wheel_radius)?;
+        out.end()
     }
 }
