@@ -146,7 +146,11 @@ fn most_of_the_spectrum_of_a_viaduct_passes_its_checks() {
     let lambdas = dense_eigenvalues(&model);
     for (i, (&solved, &reference)) in pairs.eigenvalues.iter().zip(&lambdas).take(50).enumerate() {
         let error = (solved - reference).abs() / reference;
-        assert!(error < 1e-9, "mode {}: {solved} vs {reference} ({error:e})", i + 1);
+        assert!(
+            error < 1e-9,
+            "mode {}: {solved} vs {reference} ({error:e})",
+            i + 1
+        );
     }
 }
 
