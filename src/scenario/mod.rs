@@ -9,6 +9,7 @@
 pub mod bridge_only;
 pub mod bridges;
 pub mod budget;
+mod cars;
 pub mod content;
 #[allow(missing_docs)]
 pub mod de;

@@ -1,6 +1,7 @@
 //! Resolving rail vehicles: the rail car's preset and overrides, and a
 //! train's expansion into cars.
 
+use super::cars::{CarRules, resolve_cars};
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
 use super::raw;
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
@@ -158,88 +159,34 @@ pub(super) fn resolve_train(
         &format!("{at}.parameters"),
         ck,
     );
-    let mut cars = Vec::new();
-    match (v.count, v.car_spacing, &v.cars) {
-        (Some(n), spacing, None) => {
-            if n == 0 || n > MAX_CARS {
-                ck.error(
-                    &format!("{at}.count"),
-                    format!("a train has 1 to {MAX_CARS} cars, got {n}"),
-                );
-            } else if n > 1 && spacing.is_none() {
-                ck.error(at, "`count` cars need `car_spacing`, m");
-            } else {
-                let spacing = spacing.unwrap_or(0.0);
-                if n > 1 {
-                    check_spacing(ck, &format!("{at}.car_spacing"), spacing, &shared);
-                }
-                // Offsets summed car by car, as a `cars` list sums its
-                // spacings: the resolved file (written as such a list)
-                // then resolves to the same offsets bit for bit.
-                let mut offset = 0.0;
-                for k in 0..n {
-                    let spacing = (k > 0).then_some(spacing);
-                    offset += spacing.unwrap_or(0.0);
-                    cars.push(TrainCar {
-                        spacing,
-                        offset,
-                        parameters: shared,
-                    });
-                }
-            }
-        }
-        (None, None, Some(list)) => {
-            if list.is_empty() {
-                ck.error(&format!("{at}.cars"), "`cars` needs at least one car");
-            }
-            let mut offset = 0.0;
-            let mut previous: Option<RailCarParameters> = None;
-            for (k, car) in list.iter().enumerate() {
-                let path = format!("{at}.cars[{k}]");
-                let mut p = shared;
-                apply(
-                    &mut p,
-                    car.parameters.as_ref(),
-                    &format!("{path}.parameters"),
-                    ck,
-                );
-                match (previous, car.spacing) {
-                    (None, Some(_)) => ck.error(
-                        &format!("{path}.spacing"),
-                        "the first car has no car ahead: leave out its `spacing`",
-                    ),
-                    (Some(_), None) => ck.error(
-                        &path,
-                        "every car but the first needs `spacing`, m from the front wheelset \
-                         of the car ahead",
-                    ),
-                    (Some(ahead), Some(s)) => {
-                        check_spacing(ck, &format!("{path}.spacing"), s, &ahead);
-                        offset += s;
-                    }
-                    (None, None) => {}
-                }
-                cars.push(TrainCar {
-                    spacing: car.spacing.filter(|_| k > 0),
-                    offset,
-                    parameters: p,
-                });
-                previous = Some(p);
-            }
-        }
-        (Some(_), _, Some(_)) => ck.error(
-            &format!("{at}.cars"),
-            "give `count` (with `car_spacing`) or `cars`, not both",
-        ),
-        (None, Some(_), Some(_)) => ck.error(
-            &format!("{at}.car_spacing"),
-            "`car_spacing` goes with `count`; in a `cars` list each car gives its `spacing`",
-        ),
-        (None, _, None) => ck.error(
-            at,
-            "a train needs `count` (with `car_spacing`) or a `cars` list",
-        ),
-    }
+    let rules = CarRules {
+        apply,
+        check: |_, _, _| {},
+        span: wheelset_span,
+    };
+    let list = v.cars.as_ref().map(|list| {
+        list.iter()
+            .map(|c| (c.spacing, c.parameters.as_ref()))
+            .collect()
+    });
+    let cars = resolve_cars(
+        ck,
+        at,
+        &rules,
+        shared,
+        &format!("{at}.parameters"),
+        v.count,
+        v.car_spacing,
+        list,
+        false,
+    )
+    .into_iter()
+    .map(|c| TrainCar {
+        spacing: c.spacing,
+        offset: c.offset,
+        parameters: c.parameters,
+    })
+    .collect();
     Vehicle::Train(Train {
         speed: v.speed.0,
         acceleration: check_acceleration(ck, at, v.acceleration),
@@ -254,23 +201,6 @@ pub(super) fn resolve_train(
         lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
         cars,
     })
-}
-
-/// A car spacing must leave the car ahead's wheelsets in front of this
-/// car's: spacing > 2(a + b) of the car ahead.
-fn check_spacing(ck: &mut Checker<'_>, path: &str, spacing: f64, ahead: &RailCarParameters) {
-    ck.positive(path, spacing, "car spacing");
-    let span = wheelset_span(ahead);
-    if spacing > 0.0 && spacing <= span {
-        ck.error(
-            path,
-            format!(
-                "a car spacing of {spacing} m overlaps the car ahead, whose wheelsets span \
-                 {span} m (2 × (half_bogie_spacing + half_wheelbase)); cars are spaced front \
-                 wheelset to front wheelset"
-            ),
-        );
-    }
 }
 
 /// Plausible masses, springs and dampers of one car's parameters; `at` is

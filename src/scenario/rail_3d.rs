@@ -1,8 +1,8 @@
 //! Resolving 3D trains (`type: train_3d`): the AVE-S103 preset, overrides,
 //! and the expansion into cars.
 
+use super::cars::{CarRules, resolve_cars};
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
-use super::rail::MAX_CARS;
 use super::raw::{Train3dParametersRaw, Train3dRaw};
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
 use super::resolved::{Train3d, Train3dCar, Train3dParameters, Vehicle};
@@ -271,83 +271,34 @@ pub(super) fn resolve_train_3d(
     let mut shared = AVE_S103_PRESET;
     let shared_at = format!("{at}.parameters");
     apply(&mut shared, v.parameters.as_ref(), &shared_at, ck);
-    let mut cars = Vec::new();
-    match (v.count, v.car_spacing, &v.cars) {
-        (count, spacing, None) => {
-            let n = count.unwrap_or(1);
-            if n == 0 || n > MAX_CARS {
-                ck.error(
-                    &format!("{at}.count"),
-                    format!("a train has 1 to {MAX_CARS} cars, got {n}"),
-                );
-            } else if n > 1 && spacing.is_none() {
-                ck.error(at, "`count` cars need `car_spacing`, m");
-            } else {
-                check_geometry(ck, &shared_at, &shared);
-                let spacing = spacing.unwrap_or(0.0);
-                if n > 1 {
-                    check_spacing(ck, &format!("{at}.car_spacing"), spacing, &shared);
-                }
-                // Offsets summed car by car, as a `cars` list sums its
-                // spacings: the resolved file (written as such a list)
-                // then resolves to the same offsets bit for bit.
-                let mut offset = 0.0;
-                for k in 0..n {
-                    let spacing = (k > 0).then_some(spacing);
-                    offset += spacing.unwrap_or(0.0);
-                    cars.push(Train3dCar {
-                        spacing,
-                        offset,
-                        parameters: shared,
-                    });
-                }
-            }
-        }
-        (Some(_), _, Some(_)) => ck.error(
-            &format!("{at}.cars"),
-            "give `count` (with `car_spacing`) or `cars`, not both",
-        ),
-        (None, Some(_), Some(_)) => ck.error(
-            &format!("{at}.car_spacing"),
-            "`car_spacing` goes with `count`; in a `cars` list each car gives its `spacing`",
-        ),
-        (None, None, Some(list)) => {
-            if list.is_empty() {
-                ck.error(&format!("{at}.cars"), "`cars` needs at least one car");
-            }
-            let mut offset = 0.0;
-            let mut previous: Option<Train3dParameters> = None;
-            for (k, car) in list.iter().enumerate() {
-                let path = format!("{at}.cars[{k}]");
-                let mut p = shared;
-                let car_at = format!("{path}.parameters");
-                apply(&mut p, car.parameters.as_ref(), &car_at, ck);
-                check_geometry(ck, &car_at, &p);
-                match (previous, car.spacing) {
-                    (None, Some(_)) => ck.error(
-                        &format!("{path}.spacing"),
-                        "the first car has no car ahead: leave out its `spacing`",
-                    ),
-                    (Some(_), None) => ck.error(
-                        &path,
-                        "every car but the first needs `spacing`, m from the front wheelset \
-                         of the car ahead",
-                    ),
-                    (Some(ahead), Some(s)) => {
-                        check_spacing(ck, &format!("{path}.spacing"), s, &ahead);
-                        offset += s;
-                    }
-                    (None, None) => {}
-                }
-                cars.push(Train3dCar {
-                    spacing: car.spacing.filter(|_| k > 0),
-                    offset,
-                    parameters: p,
-                });
-                previous = Some(p);
-            }
-        }
-    }
+    let rules = CarRules {
+        apply,
+        check: check_geometry,
+        span,
+    };
+    let list = v.cars.as_ref().map(|list| {
+        list.iter()
+            .map(|c| (c.spacing, c.parameters.as_ref()))
+            .collect()
+    });
+    let cars = resolve_cars(
+        ck,
+        at,
+        &rules,
+        shared,
+        &shared_at,
+        v.count,
+        v.car_spacing,
+        list,
+        true,
+    )
+    .into_iter()
+    .map(|c| Train3dCar {
+        spacing: c.spacing,
+        offset: c.offset,
+        parameters: c.parameters,
+    })
+    .collect();
     Vehicle::Train3d(Train3d {
         speed: v.speed.0,
         acceleration: check_acceleration(ck, at, v.acceleration),
@@ -362,23 +313,6 @@ pub(super) fn resolve_train_3d(
         lateral_position: lateral(ck, at, v.lateral_position, width, 0.0),
         cars,
     })
-}
-
-/// A car spacing must leave the car ahead's wheelsets in front of this
-/// car's: spacing > 2(a + b) of the car ahead.
-fn check_spacing(ck: &mut Checker<'_>, path: &str, spacing: f64, ahead: &Train3dParameters) {
-    ck.positive(path, spacing, "car spacing");
-    let span = span(ahead);
-    if spacing > 0.0 && spacing <= span {
-        ck.error(
-            path,
-            format!(
-                "a car spacing of {spacing} m overlaps the car ahead, whose wheelsets span \
-                 {span} m (2 × (half_bogie_spacing + half_wheelbase)); cars are spaced front \
-                 wheelset to front wheelset"
-            ),
-        );
-    }
 }
 
 /// Plausible masses, inertias, springs and dampers of car `car` (from 1).
