@@ -559,3 +559,67 @@ fn each_rail_has_its_own_vertical_components() {
         "the rails must differ for the test to mean anything: {differ}"
     );
 }
+
+/// The static contact correction's invariant: with every mode kept, the
+/// residual flexibility R(c, d) = G(c, d) − Σᵢ φᵢ(c)φᵢ(d)/ωᵢ² vanishes, for
+/// every pair of contact points — vertical on the left rail, on the right
+/// rail and on the centre line, and lateral — since Σ over all modes of
+/// φφᵀ/ω² is K⁻¹. It holds only if G takes each point's DOFs and weights
+/// by the same rule as its mode values (a vertical wheel off the centre
+/// line on its own rail, a lateral one on the rails' average); with 30
+/// modes the same R are of the order of G itself (the test can fail).
+#[test]
+fn with_every_mode_the_residual_flexibility_vanishes() {
+    use vbi::contact::ContactDirection::{Lateral, Vertical};
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let loaded = load_file(&dir.join("viaduct-2span-axle-loads.yaml")).unwrap();
+    let points = [
+        (Vertical, 10.3, 0.88),
+        (Vertical, 21.7, -0.88),
+        (Vertical, 10.3, 0.0),
+        (Lateral, 10.3, 0.0),
+        (Lateral, 24.1, 0.0),
+    ];
+    let mut worst = [0.0f64; 2];
+    for (k, count) in [1584, 30].into_iter().enumerate() {
+        let mut bridge = vbi::bridge::ModalBridge::build_with(
+            &loaded.scenario.bridge,
+            vbi::bridge::ModeRequest::Lowest(count),
+        )
+        .unwrap();
+        bridge.prepare_contact_correction().unwrap();
+        assert!(bridge.corrects_contacts());
+        let n = bridge.mode_count();
+        let frequencies = bridge.circular_frequencies.clone();
+        let values: Vec<Vec<f64>> = points
+            .iter()
+            .map(|&(direction, x, y)| {
+                let mut v = vec![0.0; n];
+                bridge.mode_values_in(direction, x, y, &mut v);
+                v
+            })
+            .collect();
+        // The modal flexibility of a point with itself (all modes: G).
+        let own = |c: usize| -> f64 {
+            values[c]
+                .iter()
+                .zip(&frequencies)
+                .map(|(p, w)| p * p / (w * w))
+                .sum()
+        };
+        for c in 0..points.len() {
+            for d in 0..points.len() {
+                let r = bridge.residual_flexibility(points[c], points[d], &values[c], &values[d]);
+                let scale = (own(c) * own(d)).sqrt();
+                assert!(scale > 0.0);
+                worst[k] = worst[k].max(r.abs() / scale);
+            }
+        }
+    }
+    eprintln!(
+        "largest |R| / G: every mode {:.2e}, 30 modes {:.2e}",
+        worst[0], worst[1]
+    );
+    assert!(worst[0] < 1e-8, "every mode: {:e}", worst[0]);
+    assert!(worst[1] > 1e-2, "30 modes: {:e}", worst[1]);
+}

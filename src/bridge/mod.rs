@@ -132,13 +132,24 @@ enum Flexibility {
     Imported(ImportedFlexibility),
 }
 
+/// A contact point for the static correction: its direction, x along the
+/// track and y across it, m.
+pub type ContactPoint = (ContactDirection, f64, f64);
+
 impl Flexibility {
-    /// G between (x, y) and (ξ, η), m/N; a plane beam has no y.
+    /// G between the points c and d, m/N; a plane beam has no y and is
+    /// rigid sideways (0 for a lateral point).
     #[inline]
-    fn green(&self, x: f64, y: f64, xi: f64, eta: f64) -> f64 {
+    fn green(&self, c: ContactPoint, d: ContactPoint) -> f64 {
         match self {
-            Flexibility::Beam(f) => f.green(x, xi),
-            Flexibility::Imported(f) => f.green(x, y, xi, eta),
+            Flexibility::Beam(f) => {
+                if c.0 == ContactDirection::Vertical && d.0 == ContactDirection::Vertical {
+                    f.green(c.1, d.1)
+                } else {
+                    0.0
+                }
+            }
+            Flexibility::Imported(f) => f.green(c, d),
         }
     }
 }
@@ -500,20 +511,22 @@ impl ModalBridge {
         self.contact_flexibility.is_some()
     }
 
-    /// Residual (static) flexibility between two vertical contact points at
-    /// (x_c, y_c) and (x_d, y_d), m: the full static Green's function minus
-    /// its modal part, R = G(c, d) − Σᵢ φᵢ(c)φᵢ(d)/ωᵢ², from the mode values
-    /// at the two points (`values_c`, `values_d`, kept modes, taken by the
-    /// same rule: on an imported track of two rails a wheel off the centre
-    /// line is on its own rail, [`fe_import::modal::track_weights_at`]). The quasi-static
+    /// Residual (static) flexibility between two contact points c and d
+    /// (direction, x along and y across the track, m), m/N: the full static
+    /// Green's function minus its modal part, R = G(c, d) −
+    /// Σᵢ φᵢ(c)φᵢ(d)/ωᵢ², from the mode values at the two points in their
+    /// directions (`values_c`, `values_d`, kept modes, taken by the same
+    /// rule: on an imported track of two rails a vertical contact off the
+    /// centre line is on its own rail, a lateral one sees the rails'
+    /// average, [`fe_import::modal::track_weights_at`]). The quasi-static
     /// deflection of the modes left out at c under downward forces F_d is
     /// −Σ_d R_cd F_d (the mode-acceleration method applied to the contact
     /// flexibility). 0 when the contact correction is off. Cost O(modes).
     #[inline]
     pub fn residual_flexibility(
         &self,
-        (x_c, y_c): (f64, f64),
-        (x_d, y_d): (f64, f64),
+        c: ContactPoint,
+        d: ContactPoint,
         values_c: &[f64],
         values_d: &[f64],
     ) -> f64 {
@@ -526,7 +539,7 @@ impl ModalBridge {
             .zip(&self.circular_frequencies)
             .map(|((a, b), w)| a * b / (w * w))
             .sum();
-        flexibility.green(x_c, y_c, x_d, y_d) - modal
+        flexibility.green(c, d) - modal
     }
 
     /// Makes evaluation along the deck lines `ys` (m) as cheap as on a beam

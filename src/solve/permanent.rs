@@ -285,18 +285,13 @@ impl PermanentContacts {
             let nc = self.contacts.len();
             for c in 0..nc {
                 for d in 0..=c {
-                    // The static correction covers vertical contacts
-                    // (the bridges' flexibility is vertical).
-                    if self.contacts[c].direction != ContactDirection::Vertical
-                        || self.contacts[d].direction != ContactDirection::Vertical
-                    {
-                        self.residual[c * nc + d] = 0.0;
-                        self.residual[d * nc + c] = 0.0;
-                        continue;
-                    }
+                    let point = |k: usize| {
+                        let contact = &self.contacts[k];
+                        (contact.direction, wheel_positions[contact.wheel], contact.y)
+                    };
                     let r = bridge.residual_flexibility(
-                        (wheel_positions[self.contacts[c].wheel], self.contacts[c].y),
-                        (wheel_positions[self.contacts[d].wheel], self.contacts[d].y),
+                        point(c),
+                        point(d),
                         &self.shapes[c].values,
                         &self.shapes[d].values,
                     );

@@ -33,6 +33,7 @@ use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
+use crate::contact::ContactDirection;
 use crate::model::{ContactLaw, Model};
 use crate::record::SEPARATION_GAP;
 use crate::vehicle::WheelKind;
@@ -326,9 +327,18 @@ pub fn run(
                     w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
                     // The modes left out add their static flexibility between the
                     // two contacts (contact static correction; 0 when off).
+                    // Unilateral contacts are vertical.
                     w += bridge.residual_flexibility(
-                        (wheel_positions[ca.wheel], model.wheel_y[ca.wheel]),
-                        (wheel_positions[cb.wheel], model.wheel_y[cb.wheel]),
+                        (
+                            ContactDirection::Vertical,
+                            wheel_positions[ca.wheel],
+                            model.wheel_y[ca.wheel],
+                        ),
+                        (
+                            ContactDirection::Vertical,
+                            wheel_positions[cb.wheel],
+                            model.wheel_y[cb.wheel],
+                        ),
                         pa,
                         &shapes[b * modes..(b + 1) * modes],
                     );

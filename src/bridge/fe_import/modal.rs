@@ -6,10 +6,12 @@ use std::sync::Arc;
 use faer::Mat;
 
 use super::super::BridgeError;
+use super::super::ContactPoint;
 use super::super::eigen::Pencil;
 use super::super::eigen::sparse::{multiply, symmetric_from_entries};
 use super::ImportedModel;
 use super::track::{RailDirection, RailDofs, TrackField};
+use crate::contact::ContactDirection;
 
 /// The pencil (K, M) of an imported model on its free DOFs.
 pub fn pencil(model: &ImportedModel) -> Result<Pencil, BridgeError> {
@@ -175,20 +177,39 @@ pub fn track_field(
 }
 
 /// Free DOFs and weights of the point `x` (m) along the track at `y` (m)
-/// across it: the rule of [`TrackField::evaluate_at`] — on a track of two
-/// rails a point left of the centre line (y > 0) is on the first rail, one
-/// right of it on the second, a point on it (and every point of a one-rail
-/// track) sees their average.
-pub fn track_weights_at(model: &ImportedModel, x: f64, y: f64) -> Vec<(usize, f64)> {
-    if model.track.len() != 2 || y == 0.0 {
-        return track_weights(model, x);
+/// across it, in `direction`: the rule of the kept modes' values there
+/// ([`TrackField::evaluate_at`] vertically — on a track of two rails a
+/// point left of the centre line (y > 0) is on the first rail, one right of
+/// it on the second, a point on it and every point of a one-rail track sees
+/// their average; laterally the average of the rails' uy, as
+/// `lateral_track`), so that Σᵢ φᵢ(c)φᵢ(d)/ωᵢ² over every mode is
+/// N(c)ᵀK⁻¹N(d) exactly.
+pub fn track_weights_at(
+    model: &ImportedModel,
+    direction: ContactDirection,
+    x: f64,
+    y: f64,
+) -> Vec<(usize, f64)> {
+    let rail_direction = match direction {
+        ContactDirection::Vertical => RailDirection::Vertical,
+        ContactDirection::Lateral => RailDirection::Lateral,
+    };
+    if direction == ContactDirection::Vertical && model.track.len() == 2 && y != 0.0 {
+        let rail = model.track[if y > 0.0 { 0 } else { 1 }];
+        return model.rails[rail].weights(x, rail_direction);
     }
-    let rail = model.track[if y > 0.0 { 0 } else { 1 }];
-    model.rails[rail].weights(x, RailDirection::Vertical)
+    let share = 1.0 / model.track.len() as f64;
+    model
+        .track
+        .iter()
+        .flat_map(|&r| model.rails[r].weights(x, rail_direction))
+        .map(|(dof, w)| (dof, share * w))
+        .collect()
 }
 
-/// Static flexibility between two track points, G(x, y; ξ, η) =
-/// N(x, y)ᵀK⁻¹N(ξ, η), m/N.
+/// Static flexibility between two track points, G(c, d) = N(c)ᵀK⁻¹N(d),
+/// m/N, each point a direction, x along and y across the track
+/// ([`track_weights_at`]).
 #[derive(Debug, Clone)]
 pub struct ImportedFlexibility {
     model: Arc<ImportedModel>,
@@ -198,13 +219,12 @@ pub struct ImportedFlexibility {
 }
 
 impl ImportedFlexibility {
-    /// G(x, y; ξ, η), m/N, between the point x along the track at y
-    /// across it and the point ξ at η ([`track_weights_at`]); 0 off the
-    /// track. Cost O(weights²).
-    pub fn green(&self, x: f64, y: f64, xi: f64, eta: f64) -> f64 {
+    /// G(c, d), m/N, between the points c = (direction, x, y) and d;
+    /// 0 off the track. Cost O(weights²).
+    pub fn green(&self, c: ContactPoint, d: ContactPoint) -> f64 {
         let (at, load) = (
-            track_weights_at(&self.model, x, y),
-            track_weights_at(&self.model, xi, eta),
+            track_weights_at(&self.model, c.0, c.1, c.2),
+            track_weights_at(&self.model, d.0, d.1, d.2),
         );
         let n = self.order;
         let mut sum = 0.0;
