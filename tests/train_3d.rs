@@ -533,6 +533,33 @@ fn bad_3d_trains_are_refused_with_a_located_message() {
             "{field}: {error}"
         );
     }
+    // An implausible value is named and blamed where the file gives it.
+    // (Before, the message said only "a length" and pointed at the vehicle.)
+    for field in [
+        "secondary_vertical_stiffness",
+        "wheelset_roll_inertia",
+        "body_height",
+    ] {
+        let edit = base.replace(
+            "{type: train_3d, speed: 200 km/h}",
+            &format!("{{type: train_3d, speed: 200 km/h, parameters: {{{field}: 1.0e30}}}}"),
+        );
+        let (line, text) = edit
+            .lines()
+            .enumerate()
+            .find(|(_, l)| l.contains(field))
+            .unwrap();
+        // At the value.
+        let column = text.find("1.0e30").unwrap() + 1;
+        let error = vbi::scenario::load_str(&edit, "t.yaml")
+            .unwrap_err()
+            .to_string();
+        let place = format!("t.yaml:{}:{column}: car 1: {field}, ", line + 1);
+        assert!(
+            error.contains(&place) && error.contains("physically plausible"),
+            "expected {place}…, got: {error}"
+        );
+    }
 }
 
 /// The wheelsets follow the track's alignment sideways: on an FRA class 5

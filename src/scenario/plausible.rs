@@ -129,12 +129,12 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
         }
         Vehicle::Train(t) => {
             for (k, car) in t.cars.iter().enumerate() {
-                super::rail::check_plausible(ck, at, Some(k + 1), &car.parameters);
+                super::rail::check_plausible(ck, &p("parameters"), Some(k + 1), &car.parameters);
             }
         }
         Vehicle::Train3d(t) => {
             for (k, car) in t.cars.iter().enumerate() {
-                super::rail_3d::check_plausible(ck, at, k + 1, &car.parameters);
+                super::rail_3d::check_plausible(ck, &p("parameters"), k + 1, &car.parameters);
             }
         }
         Vehicle::H20Truck(t) => {

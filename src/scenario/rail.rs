@@ -211,20 +211,20 @@ pub(super) fn check_plausible(
     car: Option<usize>,
     p: &RailCarParameters,
 ) {
-    let what = |s: &str| match car {
-        Some(k) => format!("car {k}: {s}"),
-        None => s.to_owned(),
+    // The field named in the message, and blamed where the file gives it
+    // (the train's `parameters`; a car's own override, or a preset value,
+    // falls back to the nearest node the file has).
+    let what = |field: &str, s: &str| match car {
+        Some(k) => format!("car {k}: {field}, {s}"),
+        None => format!("{field}, {s}"),
     };
-    let path = |field: &str| match car {
-        Some(_) => at.to_owned(),
-        None => format!("{at}.{field}"),
-    };
+    let path = |field: &str| format!("{at}.{field}");
     for (field, value) in [
         ("body_mass", p.body_mass),
         ("bogie_mass", p.bogie_mass),
         ("wheelset_mass", p.wheelset_mass),
     ] {
-        within(ck, &path(field), &what("a mass"), value, MASS, "kg");
+        within(ck, &path(field), &what(field, "a mass"), value, MASS, "kg");
     }
     for (field, value) in [
         ("primary_stiffness", p.primary_stiffness),
@@ -233,7 +233,7 @@ pub(super) fn check_plausible(
         within(
             ck,
             &path(field),
-            &what("a spring stiffness"),
+            &what(field, "a spring stiffness"),
             value,
             STIFFNESS,
             "N/m",
@@ -246,7 +246,7 @@ pub(super) fn check_plausible(
         within(
             ck,
             &path(field),
-            &what("a suspension damping"),
+            &what(field, "a suspension damping"),
             value,
             DAMPING,
             "N·s/m",

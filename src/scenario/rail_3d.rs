@@ -317,59 +317,83 @@ pub(super) fn resolve_train_3d(
 
 /// Plausible masses, inertias, springs and dampers of car `car` (from 1).
 pub(super) fn check_plausible(ck: &mut Checker<'_>, at: &str, car: usize, p: &Train3dParameters) {
-    let what = |s: &str| format!("car {car}: {s}");
-    for value in [
-        p.body_mass,
-        p.bogie_mass,
-        p.wheelset_mass,
-        p.body_roll_inertia,
-        p.body_pitch_inertia,
-        p.body_yaw_inertia,
-        p.bogie_roll_inertia,
-        p.bogie_pitch_inertia,
-        p.bogie_yaw_inertia,
-        p.wheelset_roll_inertia,
+    // The field named in the message, and blamed where the file gives it
+    // (the train's `parameters`; a car's own override, or a preset value,
+    // falls back to the nearest node the file has).
+    let what = |field: &str, s: &str| format!("car {car}: {field}, {s}");
+    let path = |field: &str| format!("{at}.{field}");
+    for (field, value) in [
+        ("body_mass", p.body_mass),
+        ("bogie_mass", p.bogie_mass),
+        ("wheelset_mass", p.wheelset_mass),
+        ("body_roll_inertia", p.body_roll_inertia),
+        ("body_pitch_inertia", p.body_pitch_inertia),
+        ("body_yaw_inertia", p.body_yaw_inertia),
+        ("bogie_roll_inertia", p.bogie_roll_inertia),
+        ("bogie_pitch_inertia", p.bogie_pitch_inertia),
+        ("bogie_yaw_inertia", p.bogie_yaw_inertia),
+        ("wheelset_roll_inertia", p.wheelset_roll_inertia),
     ] {
         within(
             ck,
-            at,
-            &what("a mass or moment of inertia"),
+            &path(field),
+            &what(field, "a mass or moment of inertia"),
             value,
             MASS,
             "kg or kg·m²",
         );
     }
-    for value in p.primary_stiffness.iter().chain(&p.secondary_stiffness) {
-        within(
-            ck,
-            at,
-            &what("a spring stiffness"),
-            *value,
-            STIFFNESS,
-            "N/m",
-        );
-    }
-    for value in p.primary_damping.iter().chain(&p.secondary_damping) {
-        within(
-            ck,
-            at,
-            &what("a suspension damping"),
-            *value,
-            DAMPING,
-            "N·s/m",
-        );
-    }
-    for value in [
-        p.half_bogie_spacing,
-        p.half_wheelbase,
-        p.primary_half_spacing,
-        p.secondary_half_spacing,
-        p.contact_half_spacing,
-        p.body_height,
-        p.bogie_height,
-        p.secondary_height,
-        p.wheel_radius,
+    let directions = ["longitudinal", "lateral", "vertical"];
+    for (group, values) in [
+        ("primary", &p.primary_stiffness),
+        ("secondary", &p.secondary_stiffness),
     ] {
-        within(ck, at, &what("a length"), value, (1e-3, 1e3), "m");
+        for (direction, &value) in directions.iter().zip(values) {
+            let field = format!("{group}_{direction}_stiffness");
+            within(
+                ck,
+                &path(&field),
+                &what(&field, "a spring stiffness"),
+                value,
+                STIFFNESS,
+                "N/m",
+            );
+        }
+    }
+    for (group, values) in [
+        ("primary", &p.primary_damping),
+        ("secondary", &p.secondary_damping),
+    ] {
+        for (direction, &value) in directions.iter().zip(values) {
+            let field = format!("{group}_{direction}_damping");
+            within(
+                ck,
+                &path(&field),
+                &what(&field, "a suspension damping"),
+                value,
+                DAMPING,
+                "N·s/m",
+            );
+        }
+    }
+    for (field, value) in [
+        ("half_bogie_spacing", p.half_bogie_spacing),
+        ("half_wheelbase", p.half_wheelbase),
+        ("primary_half_spacing", p.primary_half_spacing),
+        ("secondary_half_spacing", p.secondary_half_spacing),
+        ("contact_half_spacing", p.contact_half_spacing),
+        ("body_height", p.body_height),
+        ("bogie_height", p.bogie_height),
+        ("secondary_height", p.secondary_height),
+        ("wheel_radius", p.wheel_radius),
+    ] {
+        within(
+            ck,
+            &path(field),
+            &what(field, "a length"),
+            value,
+            (1e-3, 1e3),
+            "m",
+        );
     }
 }
