@@ -148,16 +148,13 @@ impl ImportedShapes {
     }
 }
 
-/// Free DOFs and weights of the track point `x` (m): each track rail's
-/// interpolation weights, averaged over the rails.
+/// Free DOFs and weights of the track point `x` (m) on the centre line:
+/// each track rail's vertical interpolation weights, averaged over the
+/// rails.
 pub fn track_weights(model: &ImportedModel, x: f64) -> Vec<(usize, f64)> {
-    let share = 1.0 / model.track.len() as f64;
-    model
-        .track
-        .iter()
-        .flat_map(|&r| model.rails[r].weights(x, RailDirection::Vertical))
-        .map(|(dof, w)| (dof, share * w))
-        .collect()
+    track_weights_at(model, ContactDirection::Vertical, x, 0.0)
+        .as_slice()
+        .to_vec()
 }
 
 /// The field of `components` vectors along the track rails.
@@ -176,6 +173,21 @@ pub fn track_field(
     )
 }
 
+/// Free DOFs and weights of a point on the track (at most two rails of
+/// four weights each), held on the stack: what [`ImportedFlexibility::green`]
+/// evaluates for every pair of contacts every step.
+pub struct TrackWeights {
+    entries: [(usize, f64); 8],
+    len: usize,
+}
+
+impl TrackWeights {
+    /// The (free DOF, weight) pairs.
+    pub fn as_slice(&self) -> &[(usize, f64)] {
+        &self.entries[..self.len]
+    }
+}
+
 /// Free DOFs and weights of the point `x` (m) along the track at `y` (m)
 /// across it, in `direction`: the rule of the kept modes' values there
 /// ([`TrackField::evaluate_at`] vertically — on a track of two rails a
@@ -183,28 +195,38 @@ pub fn track_field(
 /// it on the second, a point on it and every point of a one-rail track sees
 /// their average; laterally the average of the rails' uy, as
 /// `lateral_track`), so that Σᵢ φᵢ(c)φᵢ(d)/ωᵢ² over every mode is
-/// N(c)ᵀK⁻¹N(d) exactly.
+/// N(c)ᵀK⁻¹N(d) exactly. No allocation.
 pub fn track_weights_at(
     model: &ImportedModel,
     direction: ContactDirection,
     x: f64,
     y: f64,
-) -> Vec<(usize, f64)> {
+) -> TrackWeights {
     let rail_direction = match direction {
         ContactDirection::Vertical => RailDirection::Vertical,
         ContactDirection::Lateral => RailDirection::Lateral,
     };
-    if direction == ContactDirection::Vertical && model.track.len() == 2 && y != 0.0 {
-        let rail = model.track[if y > 0.0 { 0 } else { 1 }];
-        return model.rails[rail].weights(x, rail_direction);
+    let own_rail = direction == ContactDirection::Vertical && model.track.len() == 2 && y != 0.0;
+    let (rails, share): (&[usize], f64) = if own_rail {
+        let k = if y > 0.0 { 0 } else { 1 };
+        (&model.track[k..=k], 1.0)
+    } else {
+        (&model.track, 1.0 / model.track.len() as f64)
+    };
+    let mut out = TrackWeights {
+        entries: [(0, 0.0); 8],
+        len: 0,
+    };
+    // A track has one or two rails (checked when the scene is loaded).
+    for &r in rails.iter().take(2) {
+        let mut rail = [(0, 0.0); 4];
+        let len = model.rails[r].weights_into(x, rail_direction, &mut rail);
+        for &(dof, w) in &rail[..len] {
+            out.entries[out.len] = (dof, share * w);
+            out.len += 1;
+        }
     }
-    let share = 1.0 / model.track.len() as f64;
-    model
-        .track
-        .iter()
-        .flat_map(|&r| model.rails[r].weights(x, rail_direction))
-        .map(|(dof, w)| (dof, share * w))
-        .collect()
+    out
 }
 
 /// Static flexibility between two track points, G(c, d) = N(c)ᵀK⁻¹N(d),
@@ -220,7 +242,7 @@ pub struct ImportedFlexibility {
 
 impl ImportedFlexibility {
     /// G(c, d), m/N, between the points c = (direction, x, y) and d;
-    /// 0 off the track. Cost O(weights²).
+    /// 0 off the track. Cost O(weights²), no allocation.
     pub fn green(&self, c: ContactPoint, d: ContactPoint) -> f64 {
         let (at, load) = (
             track_weights_at(&self.model, c.0, c.1, c.2),
@@ -228,8 +250,8 @@ impl ImportedFlexibility {
         );
         let n = self.order;
         let mut sum = 0.0;
-        for &(i, wi) in &at {
-            for &(j, wj) in &load {
+        for &(i, wi) in at.as_slice() {
+            for &(j, wj) in load.as_slice() {
                 sum += wi * self.inverse[j * n + i] * wj;
             }
         }

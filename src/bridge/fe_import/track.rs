@@ -83,29 +83,49 @@ impl RailDofs {
     /// Σ weight · q[dof] (also the consistent load vector of a unit point
     /// load there, by virtual work). Empty off the rail.
     pub fn weights(&self, x: f64, direction: RailDirection) -> Vec<(usize, f64)> {
+        let mut out = [(0, 0.0); 4];
+        let len = self.weights_into(x, direction, &mut out);
+        out[..len].to_vec()
+    }
+
+    /// [`Self::weights`] into `out` without allocating (for per-step use);
+    /// returns how many it wrote (0 off the rail, at most 4).
+    #[inline]
+    pub fn weights_into(
+        &self,
+        x: f64,
+        direction: RailDirection,
+        out: &mut [(usize, f64); 4],
+    ) -> usize {
         let Some((e, xi, h)) = self.locate(x) else {
-            return Vec::new();
+            return 0;
         };
         let d = Self::index(direction);
-        let sign = Self::slope_sign(direction);
-        let mut out = Vec::with_capacity(4);
-        if self.hermite[d] {
+        let dofs = if self.hermite[d] {
+            let sign = Self::slope_sign(direction);
             let (n, _) = shape_functions(xi, h);
-            let dofs = [
+            [
                 (self.displacement[d][e], n[0]),
                 (self.rotation[d][e], sign * n[1]),
                 (self.displacement[d][e + 1], n[2]),
                 (self.rotation[d][e + 1], sign * n[3]),
-            ];
-            out.extend(dofs.into_iter().filter_map(|(i, w)| i.map(|i| (i, w))));
+            ]
         } else {
-            let dofs = [
+            [
                 (self.displacement[d][e], 1.0 - xi),
                 (self.displacement[d][e + 1], xi),
-            ];
-            out.extend(dofs.into_iter().filter_map(|(i, w)| i.map(|i| (i, w))));
+                (None, 0.0),
+                (None, 0.0),
+            ]
+        };
+        let mut len = 0;
+        for (dof, w) in dofs {
+            if let Some(dof) = dof {
+                out[len] = (dof, w);
+                len += 1;
+            }
         }
-        out
+        len
     }
 
     /// The field of `components` vectors along this rail: `value(dof, c)`
