@@ -131,6 +131,27 @@ impl StaticProbe {
             .map(|&w| -loads[w] * self.influences[self.wheel_influence[w]].value_at(positions[w]))
             .sum()
     }
+
+    /// The influence line's value at each wheel `on_deck` (in that order),
+    /// m/N, into `values`: [`Self::deflection`]'s factors, for several
+    /// load sets at one step.
+    fn values_at_wheels(&self, positions: &[f64], on_deck: &[usize], values: &mut Vec<f64>) {
+        values.clear();
+        values.extend(
+            on_deck
+                .iter()
+                .map(|&w| self.influences[self.wheel_influence[w]].value_at(positions[w])),
+        );
+    }
+
+    /// [`Self::deflection`] from the values of [`Self::values_at_wheels`].
+    fn deflection_from(values: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
+        on_deck
+            .iter()
+            .zip(values)
+            .map(|(&w, value)| -loads[w] * value)
+            .sum()
+    }
 }
 
 /// The DAF at the middle of one span on one girder line.
@@ -182,8 +203,20 @@ fn truncated_static_share(
     view: &StepView<'_>,
     on_deck: &[usize],
 ) -> f64 {
-    let modes = static_shape.len();
     let full = statics.deflection(view.wheel_positions, view.contact_forces, on_deck);
+    static_share_beyond(full, static_shape, wheel_modes, view, on_deck)
+}
+
+/// [`truncated_static_share`] with the full static deflection under the
+/// current wheel forces, `full` (m), given.
+fn static_share_beyond(
+    full: f64,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+    on_deck: &[usize],
+) -> f64 {
+    let modes = static_shape.len();
     let modal: f64 = on_deck
         .iter()
         .map(|&w| {
@@ -359,6 +392,8 @@ pub struct Recorder<'m> {
     /// The wheels on the deck this step (indices): only they load it, so
     /// the static parts sum over them alone.
     on_deck: Vec<usize>,
+    /// Scratch: one probe's influence values at the wheels on the deck, m/N.
+    influence: Vec<f64>,
     /// Whether samples are kept at all (else only the extremes).
     keep: bool,
     /// Whether a column adds the ground's displacement (then it is
@@ -634,6 +669,7 @@ impl<'m> Recorder<'m> {
             wheel_modes,
             envelope: None,
             on_deck: Vec::with_capacity(model.wheels.len()),
+            influence: Vec::with_capacity(model.wheels.len()),
             keep: true,
             absolute_displacement,
             absolute_lateral,
@@ -878,11 +914,15 @@ impl Observer for Recorder<'_> {
         let on_deck = &self.on_deck;
         if !self.wheel_modes.is_empty() {
             for &w in on_deck {
-                model.bridge.mode_values(
-                    view.wheel_positions[w],
-                    model.wheel_y[w],
-                    &mut self.wheel_modes[w * modes..(w + 1) * modes],
-                );
+                let values = &mut self.wheel_modes[w * modes..(w + 1) * modes];
+                match view.wheel_modes {
+                    Some(given) => values.copy_from_slice(&given[w * modes..(w + 1) * modes]),
+                    None => {
+                        model
+                            .bridge
+                            .mode_values(view.wheel_positions[w], model.wheel_y[w], values)
+                    }
+                }
             }
         }
         if let Some(envelope) = &mut self.envelope {
@@ -943,23 +983,31 @@ impl Observer for Recorder<'_> {
                     // Static crossing: each wheel's static load at its
                     // current position through the influence line of its
                     // lane (full stiffness, no modal truncation).
-                    let static_w = statics.deflection(
-                        view.wheel_positions,
-                        &model.static_wheel_loads,
-                        on_deck,
-                    );
+                    // The influence values at the wheels serve both the
+                    // static crossing and the correction's full deflection.
+                    let influence = &mut self.influence;
+                    statics.values_at_wheels(view.wheel_positions, on_deck, influence);
+                    let static_w =
+                        StaticProbe::deflection_from(influence, &model.static_wheel_loads, on_deck);
                     extremes.statics.push(view.step, view.time, static_w);
                     if sampled && let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
                     }
-                    corrected_displacement(
-                        shape,
-                        statics,
-                        static_shape,
-                        &self.wheel_modes,
-                        view,
-                        on_deck,
-                    )
+                    let modal = dot(shape, view.modal_displacement);
+                    if self.wheel_modes.is_empty() {
+                        modal
+                    } else {
+                        let full =
+                            StaticProbe::deflection_from(influence, view.contact_forces, on_deck);
+                        modal
+                            + static_share_beyond(
+                                full,
+                                static_shape,
+                                &self.wheel_modes,
+                                view,
+                                on_deck,
+                            )
+                    }
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
                 Probe::Lateral {

@@ -368,6 +368,7 @@ pub fn run(
             contact_forces: &contact_forces,
             contact_gaps: &contact_gaps,
             wheel_positions: &wheel_positions,
+            wheel_modes: None,
         });
         if step % report_every == 0 || step == model.steps {
             progress(step, model.steps);

@@ -86,7 +86,13 @@ impl Guard {
 
     /// Mechanical energy of the current state, J.
     pub fn energy(model: &Model, modal: &ModalStep, states: &[VehicleState]) -> f64 {
-        let mut energy = modal.energy();
+        Self::vehicle_energy(model, modal.energy(), states)
+    }
+
+    /// `bridge_energy` (J) plus the vehicles' energy about their static
+    /// equilibrium, J.
+    pub fn vehicle_energy(model: &Model, bridge_energy: f64, states: &[VehicleState]) -> f64 {
+        let mut energy = bridge_energy;
         for (vehicle, state) in model.vehicles.iter().zip(states) {
             // Over the diagonal blocks only (a train's cars), column by
             // column on the column-major storage.
@@ -128,7 +134,18 @@ impl Guard {
         t: f64,
         step: usize,
     ) -> Result<(), SolveError> {
-        let energy = Self::energy(model, modal, states);
+        self.check_energy(model, Self::energy(model, modal, states), forces, t, step)
+    }
+
+    /// [`Self::check`] with the state's mechanical `energy` (J) given.
+    pub fn check_energy(
+        &self,
+        model: &Model,
+        energy: f64,
+        forces: &[f64],
+        t: f64,
+        step: usize,
+    ) -> Result<(), SolveError> {
         let finite = energy.is_finite() && forces.iter().all(|f| f.is_finite());
         if finite && energy <= ENERGY_LIMIT * self.energy_scale {
             return Ok(());

@@ -14,6 +14,7 @@ pub mod embs;
 pub mod guard;
 pub mod iterative;
 pub mod lcp;
+pub mod lockstep;
 pub mod modal;
 pub mod newmark;
 pub mod partition;
@@ -123,6 +124,10 @@ pub struct StepView<'a> {
     pub contact_gaps: &'a [f64],
     /// Position of each flattened wheel, m.
     pub wheel_positions: &'a [f64],
+    /// Mode values at every flattened wheel on the deck (wheel-major,
+    /// `modes` per wheel), when the solver already has them this step; the
+    /// recorder works them out itself otherwise.
+    pub wheel_modes: Option<&'a [f64]>,
 }
 
 impl<'a> StepView<'a> {
@@ -145,6 +150,7 @@ impl<'a> StepView<'a> {
             contact_forces,
             contact_gaps,
             wheel_positions,
+            wheel_modes: None,
         }
     }
 }

@@ -15,13 +15,13 @@ use crate::bridge::ModalBridge;
 #[derive(Debug, Clone)]
 pub struct ModalStep {
     /// 2ζᵢωᵢ, 1/s.
-    modal_damping: Vec<f64>,
+    pub(crate) modal_damping: Vec<f64>,
     /// ωᵢ², 1/s².
-    stiffness: Vec<f64>,
+    pub(crate) stiffness: Vec<f64>,
     /// (1+α)/k̂ᵢ: modal displacement per unit modal contact force.
     pub contact_flexibility: Vec<f64>,
     /// 1/k̂ᵢ.
-    flexibility: Vec<f64>,
+    pub(crate) flexibility: Vec<f64>,
     /// Modal force of the previous step (loads and contacts), Fₙ.
     previous_force: Vec<f64>,
     /// Modal force being assembled for this step, F_{n+1}.
@@ -201,11 +201,17 @@ impl ModalStep {
 
     /// Modal energy ½Σ(q̇² + ω²q²), J (unit modal masses).
     pub fn energy(&self) -> f64 {
-        0.5 * self
-            .velocity
+        Self::energy_of(&self.velocity, &self.displacement, &self.stiffness)
+    }
+
+    /// Modal energy ½Σ(q̇ᵢ² + ωᵢ²qᵢ²), J, of velocities `velocity`,
+    /// displacements `displacement` and squared circular frequencies
+    /// `stiffness` (unit modal masses).
+    pub fn energy_of(velocity: &[f64], displacement: &[f64], stiffness: &[f64]) -> f64 {
+        0.5 * velocity
             .iter()
-            .zip(&self.displacement)
-            .zip(&self.stiffness)
+            .zip(displacement)
+            .zip(stiffness)
             .map(|((v, q), k)| v * v + k * q * q)
             .sum::<f64>()
     }

@@ -43,15 +43,160 @@ pub const HERTZ_MAX_ITERATIONS: usize = 50;
 /// Relative change of the contact forces that ends the Hertz iterations.
 pub const HERTZ_TOLERANCE: f64 = 1e-10;
 
+/// A wheel whose vertical DOF meets the surface through the contact law.
 #[derive(Debug, Clone, Copy)]
-struct ContactWheel {
-    wheel: usize,
-    vehicle: usize,
-    dof: usize,
+pub(super) struct ContactWheel {
+    /// Flattened wheel index.
+    pub wheel: usize,
+    /// Its vehicle.
+    pub vehicle: usize,
+    /// Its DOF in the vehicle.
+    pub dof: usize,
     /// Column of this wheel in its vehicle's H.
-    column: usize,
+    pub column: usize,
     /// The vehicle's diagonal block that holds `dof`: first DOF and size.
-    block: (usize, usize),
+    pub block: (usize, usize),
+}
+
+/// The contact wheels of `model` in flattened order, the moving loads
+/// (flattened index, N), and each vehicle's count of contact wheels (the
+/// columns of its H).
+pub(super) fn contact_wheels(model: &Model) -> (Vec<ContactWheel>, Vec<(usize, f64)>, Vec<usize>) {
+    let mut contacts: Vec<ContactWheel> = Vec::new();
+    let mut load_wheels = Vec::new();
+    let mut columns = vec![0usize; model.vehicles.len()];
+    for (flat, r) in model.wheels.iter().enumerate() {
+        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
+            WheelKind::Dof(dof) => {
+                let vehicle = &model.vehicles[r.vehicle];
+                let block = vehicle
+                    .blocks
+                    .iter()
+                    .find(|b| b.contains(&dof))
+                    .map_or((0, vehicle.dofs()), |b| (b.start, b.len()));
+                contacts.push(ContactWheel {
+                    wheel: flat,
+                    vehicle: r.vehicle,
+                    dof,
+                    column: columns[r.vehicle],
+                    block,
+                });
+                columns[r.vehicle] += 1;
+            }
+            WheelKind::Load(load) => load_wheels.push((flat, load)),
+        }
+    }
+    (contacts, load_wheels, columns)
+}
+
+/// What the contact problem of a step owes to where the wheels are, not to
+/// the state: the same for every sample of a scene at a given step.
+#[derive(Debug, Clone)]
+pub(super) struct ContactGeometry {
+    /// Whether each contact wheel is on the deck.
+    pub on_deck: Vec<bool>,
+    /// Mode values φ_c at each contact (0 off the deck), contact-major.
+    pub shapes: Vec<f64>,
+    /// φ_c scaled by the modal contact flexibility, (1+α)φ_c/k̂.
+    pub scaled: Vec<f64>,
+    /// The contact compliance W = EᵀH + ΦDΦᵀ + residual flexibility, m/N,
+    /// row-major nc × nc.
+    pub compliance: Vec<f64>,
+}
+
+impl ContactGeometry {
+    /// Storage for `contacts` wheels and `modes` modes.
+    pub fn new(contacts: usize, modes: usize) -> Self {
+        Self {
+            on_deck: vec![false; contacts],
+            shapes: vec![0.0; contacts * modes],
+            scaled: vec![0.0; contacts * modes],
+            compliance: vec![0.0; contacts * contacts],
+        }
+    }
+
+    /// Mode values of every contact at `wheel_positions` (m).
+    pub fn locate(
+        &mut self,
+        model: &Model,
+        contact_flexibility: &[f64],
+        contacts: &[ContactWheel],
+        wheel_positions: &[f64],
+    ) {
+        let bridge = &model.bridge;
+        let modes = bridge.mode_count();
+        for (c, contact) in contacts.iter().enumerate() {
+            let x = wheel_positions[contact.wheel];
+            self.on_deck[c] = bridge.is_on(x);
+            let phi = &mut self.shapes[c * modes..(c + 1) * modes];
+            let scaled_c = &mut self.scaled[c * modes..(c + 1) * modes];
+            // Off the deck every mode value is 0: no lookup needed.
+            if self.on_deck[c] {
+                bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
+                for i in 0..modes {
+                    scaled_c[i] = phi[i] * contact_flexibility[i];
+                }
+            } else {
+                phi.fill(0.0);
+                scaled_c.fill(0.0);
+            }
+        }
+    }
+
+    /// The contact compliance W after [`Self::locate`]; `contact_response`
+    /// gives each vehicle's H.
+    pub fn assemble<'a>(
+        &mut self,
+        model: &Model,
+        contacts: &[ContactWheel],
+        wheel_positions: &[f64],
+        contact_response: impl Fn(usize) -> &'a DMatrix<f64>,
+    ) {
+        let (bridge, nc) = (&model.bridge, contacts.len());
+        let modes = bridge.mode_count();
+        let (on_deck, shapes, scaled) = (&self.on_deck, &self.shapes, &self.scaled);
+        let compliance = &mut self.compliance;
+        for a in 0..nc {
+            for b in 0..=a {
+                let (ca, cb) = (contacts[a], contacts[b]);
+                // A wheel off the deck has no mode values and no residual
+                // flexibility (both exactly 0): skip the O(modes) work, which
+                // dominates long trains with most wheels off the bridge.
+                let mut w = 0.0;
+                if on_deck[a] && on_deck[b] {
+                    let pa = &shapes[a * modes..(a + 1) * modes];
+                    let sb = &scaled[b * modes..(b + 1) * modes];
+                    w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
+                    // The modes left out add their static flexibility between the
+                    // two contacts (contact static correction; 0 when off).
+                    // Unilateral contacts are vertical.
+                    w += bridge.residual_flexibility(
+                        (
+                            ContactDirection::Vertical,
+                            wheel_positions[ca.wheel],
+                            model.wheel_y[ca.wheel],
+                        ),
+                        (
+                            ContactDirection::Vertical,
+                            wheel_positions[cb.wheel],
+                            model.wheel_y[cb.wheel],
+                        ),
+                        pa,
+                        &shapes[b * modes..(b + 1) * modes],
+                    );
+                } else if ca.vehicle != cb.vehicle {
+                    compliance[a * nc + b] = 0.0;
+                    compliance[b * nc + a] = 0.0;
+                    continue;
+                }
+                if ca.vehicle == cb.vehicle {
+                    w += contact_response(ca.vehicle)[(ca.dof, cb.column)];
+                }
+                compliance[a * nc + b] = w;
+                compliance[b * nc + a] = w;
+            }
+        }
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -91,30 +236,7 @@ pub fn run(
         .with_ground(model.ground_participation())
         .with_lateral_ground(model.lateral_ground_participation());
 
-    let mut contacts: Vec<ContactWheel> = Vec::new();
-    let mut load_wheels = Vec::new();
-    let mut columns = vec![0usize; model.vehicles.len()];
-    for (flat, r) in model.wheels.iter().enumerate() {
-        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
-            WheelKind::Dof(dof) => {
-                let vehicle = &model.vehicles[r.vehicle];
-                let block = vehicle
-                    .blocks
-                    .iter()
-                    .find(|b| b.contains(&dof))
-                    .map_or((0, vehicle.dofs()), |b| (b.start, b.len()));
-                contacts.push(ContactWheel {
-                    wheel: flat,
-                    vehicle: r.vehicle,
-                    dof,
-                    column: columns[r.vehicle],
-                    block,
-                });
-                columns[r.vehicle] += 1;
-            }
-            WheelKind::Load(load) => load_wheels.push((flat, load)),
-        }
-    }
+    let (contacts, load_wheels, columns) = contact_wheels(model);
     let nc = contacts.len();
 
     let mut states = Vec::with_capacity(model.vehicles.len());
@@ -159,7 +281,7 @@ pub fn run(
     }
 
     // Work arrays.
-    let mut shapes = vec![0.0; nc * modes];
+    let mut geometry = ContactGeometry::new(nc, modes);
     let (mut landing_values, mut landing_slopes, mut landing_curvatures) =
         (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
     // Contact forces carried into the next step's HHT term −αλₙ (a landing
@@ -173,11 +295,7 @@ pub fn run(
         .collect();
     // Whether each contact wheel was off the surface after the previous step.
     let mut was_apart = vec![false; nc];
-    let mut scaled = vec![0.0; nc * modes];
     let mut free_gap = vec![0.0; nc];
-    // Whether each contact wheel is on the deck this step.
-    let mut on_deck = vec![false; nc];
-    let mut compliance = vec![0.0; nc * nc];
     let mut lcp_matrix = vec![0.0; nc * nc];
     let mut lcp_vector = vec![0.0; nc];
     let mut lambda = vec![0.0; nc];
@@ -291,22 +409,18 @@ pub fn run(
         }
 
         // Free gaps g* and the contact compliance W.
+        geometry.locate(
+            model,
+            &modal.contact_flexibility,
+            &contacts,
+            &wheel_positions,
+        );
         for (c, contact) in contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
-            on_deck[c] = bridge.is_on(x);
-            let phi = &mut shapes[c * modes..(c + 1) * modes];
-            let scaled_c = &mut scaled[c * modes..(c + 1) * modes];
-            // Off the deck every mode value is 0: no lookup needed.
             let mut deck = 0.0;
-            if on_deck[c] {
-                bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
-                for i in 0..modes {
-                    scaled_c[i] = phi[i] * modal.contact_flexibility[i];
-                }
+            if geometry.on_deck[c] {
+                let phi = &geometry.shapes[c * modes..(c + 1) * modes];
                 deck = phi.iter().zip(&modal.predictor).map(|(p, q)| p * q).sum();
-            } else {
-                phi.fill(0.0);
-                scaled_c.fill(0.0);
             }
             free_gap[c] = steps[contact.vehicle].predictor[contact.dof]
                 - deck
@@ -314,46 +428,11 @@ pub fn run(
                     .profile
                     .elevation_on(model.wheel_rail[contact.wheel], x);
         }
-        for a in 0..nc {
-            for b in 0..=a {
-                let (ca, cb) = (contacts[a], contacts[b]);
-                // A wheel off the deck has no mode values and no residual
-                // flexibility (both exactly 0): skip the O(modes) work, which
-                // dominates long trains with most wheels off the bridge.
-                let mut w = 0.0;
-                if on_deck[a] && on_deck[b] {
-                    let pa = &shapes[a * modes..(a + 1) * modes];
-                    let sb = &scaled[b * modes..(b + 1) * modes];
-                    w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
-                    // The modes left out add their static flexibility between the
-                    // two contacts (contact static correction; 0 when off).
-                    // Unilateral contacts are vertical.
-                    w += bridge.residual_flexibility(
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[ca.wheel],
-                            model.wheel_y[ca.wheel],
-                        ),
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[cb.wheel],
-                            model.wheel_y[cb.wheel],
-                        ),
-                        pa,
-                        &shapes[b * modes..(b + 1) * modes],
-                    );
-                } else if ca.vehicle != cb.vehicle {
-                    compliance[a * nc + b] = 0.0;
-                    compliance[b * nc + a] = 0.0;
-                    continue;
-                }
-                if ca.vehicle == cb.vehicle {
-                    w += steps[ca.vehicle].contact_response[(ca.dof, cb.column)];
-                }
-                compliance[a * nc + b] = w;
-                compliance[b * nc + a] = w;
-            }
-        }
+        geometry.assemble(model, &contacts, &wheel_positions, |v| {
+            &steps[v].contact_response
+        });
+        let (shapes, on_deck, compliance) =
+            (&geometry.shapes, &geometry.on_deck, &geometry.compliance);
 
         // The contact law.
         if nc > 0 {
@@ -364,7 +443,7 @@ pub fn run(
             };
             match model.contact {
                 ContactLaw::Rigid | ContactLaw::Elastic { .. } => {
-                    lcp_matrix.copy_from_slice(&compliance);
+                    lcp_matrix.copy_from_slice(compliance);
                     if let ContactLaw::Elastic { stiffness } = model.contact {
                         for c in 0..nc {
                             lcp_matrix[c * nc + c] += 1.0 / stiffness;
@@ -385,7 +464,7 @@ pub fn run(
                     previous.copy_from_slice(&lambda);
                     let mut converged = false;
                     for _ in 0..HERTZ_MAX_ITERATIONS {
-                        lcp_matrix.copy_from_slice(&compliance);
+                        lcp_matrix.copy_from_slice(compliance);
                         for c in 0..nc {
                             // Linearise at the compression of the current iterate,
                             // δ = (λ/C)^(2/3), floored at a small fraction of the
@@ -612,7 +691,7 @@ pub fn run(
 /// of one N²-times larger dense one: column by column on the column-major
 /// storage, y += (a xⱼ) A[:, j]. One block covering every DOF (every
 /// vehicle but a train) keeps nalgebra's dense product.
-fn block_gemv(
+pub(super) fn block_gemv(
     y: &mut DVector<f64>,
     a: f64,
     matrix: &DMatrix<f64>,
@@ -643,7 +722,10 @@ fn block_gemv(
 /// block by block (so the inverse is exactly zero outside them too); the
 /// plain inverse for one block covering every DOF. `None` if a block is
 /// singular.
-fn block_inverse(matrix: &DMatrix<f64>, blocks: &[std::ops::Range<usize>]) -> Option<DMatrix<f64>> {
+pub(super) fn block_inverse(
+    matrix: &DMatrix<f64>,
+    blocks: &[std::ops::Range<usize>],
+) -> Option<DMatrix<f64>> {
     let n = matrix.nrows();
     if blocks.len() == 1 && blocks[0] == (0..n) {
         return matrix.clone().try_inverse();

@@ -256,19 +256,65 @@ pub enum AssembleError {
     },
 }
 
-fn run_sample(
+/// Runs `flats` (consecutive runs of one case, at most
+/// [`solve::lockstep::LANES`]) stepped together when the scene allows it
+/// ([`solve::lockstep::eligible`]), else one by one; bit-identical either
+/// way (see [`solve::lockstep`]). The results come back in order.
+fn run_batch(
     base: &Scenario,
     bridge: &ModalBridge,
     mc: &MonteCarlo,
     cases: &[Case],
-    flat: usize,
-) -> Result<(Moments, SampleResult), RunError> {
-    let (case, index) = (flat / mc.samples, flat % mc.samples);
-    let scenario = sample_scenario(base, bridge, mc, cases[case], index);
-    let model = Model::build(&scenario, bridge.clone())?;
-    let mut recorder =
-        Recorder::new(&model, &scenario.record).map_err(crate::model::BuildError::from)?;
-    solve::run(&model, &mut recorder, &mut |_, _| {})?;
+    flats: Range<usize>,
+) -> Result<Vec<(Moments, SampleResult)>, RunError> {
+    let mut scenarios = Vec::with_capacity(flats.len());
+    let mut models = Vec::with_capacity(flats.len());
+    for flat in flats.clone() {
+        let (case, index) = (flat / mc.samples, flat % mc.samples);
+        let scenario = sample_scenario(base, bridge, mc, cases[case], index);
+        models.push(Model::build(&scenario, bridge.clone())?);
+        scenarios.push(scenario);
+    }
+    let first = &models[0];
+    let together = models.len() > 1
+        && solve::lockstep::eligible(first)
+        && models.iter().all(|m| {
+            m.steps == first.steps
+                && m.time_step == first.time_step
+                && m.wheels.len() == first.wheels.len()
+                && m.vehicles.len() == first.vehicles.len()
+        });
+    let mut recorders = Vec::with_capacity(models.len());
+    for (model, scenario) in models.iter().zip(&scenarios) {
+        recorders
+            .push(Recorder::new(model, &scenario.record).map_err(crate::model::BuildError::from)?);
+    }
+    if together {
+        let refs: Vec<&Model> = models.iter().collect();
+        let mut observers: Vec<&mut dyn solve::Observer> = recorders
+            .iter_mut()
+            .map(|r| r as &mut dyn solve::Observer)
+            .collect();
+        solve::lockstep::run(&refs, &mut observers).map_err(|(_, e)| e)?;
+    } else {
+        for (model, recorder) in models.iter().zip(recorders.iter_mut()) {
+            solve::run(model, recorder, &mut |_, _| {})?;
+        }
+    }
+    Ok(recorders
+        .into_iter()
+        .zip(flats)
+        .map(|(recorder, flat)| outcome(recorder, mc, flat / mc.samples, flat % mc.samples))
+        .collect())
+}
+
+/// One finished sample's moments (count 1) and scalar results.
+fn outcome(
+    recorder: Recorder<'_>,
+    mc: &MonteCarlo,
+    case: usize,
+    index: usize,
+) -> (Moments, SampleResult) {
     let history = recorder.finish();
     let wheels = history
         .separation
@@ -292,7 +338,7 @@ fn run_sample(
     // Only the first case is plotted: other cases keep no histories.
     let histories = (case == 0 && index < mc.show).then_some(values);
     let seed = sample_seed(mc.seed, index);
-    Ok((
+    (
         moments,
         SampleResult {
             case,
@@ -301,27 +347,46 @@ fn run_sample(
             wheels,
             histories,
         },
-    ))
+    )
 }
 
 type Reduced = (Moments, Vec<SampleResult>);
 
 /// Reduces samples [lo, hi) of `case` over the fixed tree, halves in
-/// parallel; the samples come back in index order.
+/// parallel; a node of at most [`solve::lockstep::LANES`] samples runs as
+/// one batch and is reduced over the same tree. The samples come back in
+/// index order.
 fn reduce(
     lo: usize,
     hi: usize,
-    leaf: &(dyn Fn(usize) -> Result<(Moments, SampleResult), RunError> + Sync),
+    batch: &(dyn Fn(Range<usize>) -> Result<Vec<(Moments, SampleResult)>, RunError> + Sync),
 ) -> Result<Reduced, RunError> {
-    if hi - lo == 1 {
-        let (m, s) = leaf(lo)?;
-        return Ok((m, vec![s]));
+    if hi - lo <= solve::lockstep::LANES {
+        let mut leaves = batch(lo..hi)?.into_iter();
+        return Ok(reduce_leaves(lo, hi, &mut leaves));
     }
     let mid = lo + (hi - lo) / 2;
-    let (a, b) = rayon::join(|| reduce(lo, mid, leaf), || reduce(mid, hi, leaf));
+    let (a, b) = rayon::join(|| reduce(lo, mid, batch), || reduce(mid, hi, batch));
     let ((ma, mut sa), (mb, sb)) = (a?, b?);
     sa.extend(sb);
     Ok((Moments::combine(ma, &mb), sa))
+}
+
+/// The tree of [lo, hi) over its leaves, given in index order.
+fn reduce_leaves(
+    lo: usize,
+    hi: usize,
+    leaves: &mut impl Iterator<Item = (Moments, SampleResult)>,
+) -> Reduced {
+    if hi - lo == 1 {
+        let (m, s) = leaves.next().expect("one leaf per sample of the batch");
+        return (m, vec![s]);
+    }
+    let mid = lo + (hi - lo) / 2;
+    let (ma, mut sa) = reduce_leaves(lo, mid, leaves);
+    let (mb, sb) = reduce_leaves(mid, hi, leaves);
+    sa.extend(sb);
+    (Moments::combine(ma, &mb), sa)
 }
 
 /// The largest whole tree nodes of [lo, hi) inside [a, b), in order.
@@ -372,12 +437,19 @@ pub fn run_slice(
         use rayon::prelude::*;
         jobs.par_iter()
             .map(|&(case, lo, hi)| {
-                let leaf = |k: usize| {
-                    let r = run_sample(base, bridge, mc, &cases, case * s + k);
-                    progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                let batch = |ks: Range<usize>| {
+                    let count = ks.len();
+                    let r = run_batch(
+                        base,
+                        bridge,
+                        mc,
+                        &cases,
+                        case * s + ks.start..case * s + ks.end,
+                    );
+                    progress(done.fetch_add(count, Ordering::Relaxed) + count, total);
                     r
                 };
-                reduce(lo, hi, &leaf).map(|r| (case, lo, hi, r))
+                reduce(lo, hi, &batch).map(|r| (case, lo, hi, r))
             })
             .collect::<Result<_, _>>()?
     };

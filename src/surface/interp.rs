@@ -86,6 +86,22 @@ impl QuinticGrid {
         (value, slope, curvature)
     }
 
+    /// r at `x` alone: [`Self::at`]'s elevation, by the same operations.
+    #[inline]
+    pub fn value_at(&self, x: f64) -> f64 {
+        let s = (x - self.start) / self.spacing;
+        if s.is_nan() || s < 0.0 {
+            return self.coefficients.first().map_or(self.last.0, |c| c[0]);
+        }
+        let j = s.floor() as usize;
+        if j >= self.coefficients.len() {
+            return self.last.0;
+        }
+        let t = s - j as f64;
+        let c = &self.coefficients[j];
+        c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))))
+    }
+
     /// Largest |r′| at the nodes.
     pub fn max_slope(&self) -> f64 {
         let h = self.spacing;

@@ -429,6 +429,14 @@ impl Profile {
                 ref period_grid,
                 ..
             } => Self::random_from_grid(fundamental, period_grid, x).0,
+            Profile::Sampled {
+                ref left,
+                ref right,
+                ..
+            } => match (rail, right) {
+                (Rail::Right, Some(r)) => r.value_at(x),
+                _ => left.value_at(x),
+            },
             _ => self.elevation_slope_curvature_on(rail, x).0,
         }
     }

@@ -209,6 +209,62 @@ fn warm_start_agrees_with_lemke() {
     }
 }
 
+/// The shared warm start is `solve_warm`, bit for bit: 300 matrices
+/// (SPD, nonsymmetric diagonally dominant — which makes the elimination
+/// exchange rows — and a singular one), each solved for 12 right-hand
+/// sides whose guesses cycle through more contact sets than the shared
+/// start keeps (so sets are evicted and eliminated again), against
+/// `solve_warm` on each alone: the same forces to the last bit and the
+/// same pivot counts, errors alike.
+#[test]
+fn shared_warm_start_is_solve_warm_bit_for_bit() {
+    let mut rng = Rng(0x5151_2026_1126_0001);
+    let mut alone = LcpWorkspace::new(2);
+    let mut shared_work = LcpWorkspace::new(2);
+    let mut shared = SharedWarmStart::new(1);
+    let mut exchanges = 0;
+    for case in 0..300 {
+        let n = 1 + case % 9;
+        let mut m = match case % 3 {
+            0 => random_spd(&mut rng, n),
+            _ => random_diag_dominant(&mut rng, n),
+        };
+        if case % 3 == 1 {
+            // Small diagonal, large off-diagonal first column: partial
+            // pivoting must exchange rows.
+            for i in 0..n {
+                m[i * n] *= 10.0 * (i + 1) as f64;
+            }
+            exchanges += 1;
+        }
+        if case % 50 == 7 && n > 1 {
+            // A singular matrix: two equal rows and columns.
+            for j in 0..n {
+                m[n + j] = m[j];
+            }
+            for i in 0..n {
+                m[i * n + 1] = m[i * n];
+            }
+        }
+        shared.reset();
+        for rhs in 0..12 {
+            let q = rng.vec(n, -1.0, 0.5);
+            let guess: Vec<f64> = (0..n)
+                .map(|i| if (rhs * 7 + i * 3) % 5 < 3 { 1.0 } else { 0.0 })
+                .collect();
+            let (mut z_alone, mut z_shared) = (vec![f64::NAN; n], vec![f64::NAN; n]);
+            let a = solve_warm(&m, &q, &mut z_alone, &mut alone, &guess);
+            let b = shared.solve(&m, &q, &mut z_shared, &mut shared_work, &guess);
+            assert_eq!(a, b, "case {case}, right-hand side {rhs}");
+            if a.is_ok() {
+                let bits = |z: &[f64]| z.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&z_alone), bits(&z_shared), "case {case}, rhs {rhs}");
+            }
+        }
+    }
+    assert!(exchanges > 0);
+}
+
 /// Test 1: 3 840 random P-matrix LCPs (SPD AᵀA + εI, diagonally dominant nonsymmetric, SPD
 /// with condition number 1e8), n = 1..10, M and q scaled by random factors 1e±6, against
 /// brute-force enumeration (unique solution). Tolerance ‖z − z_ref‖∞ ≤ tol·‖z_ref‖∞ with
