@@ -754,6 +754,14 @@ impl<'m> Recorder<'m> {
         self
     }
 
+    /// The same recorder without the girder DAF tracking (the summary's
+    /// `girder_dafs`, empty then), for runs whose summary is not written:
+    /// a study's samples. The recorded columns are unchanged.
+    pub fn without_girder_dafs(mut self) -> Self {
+        self.daf_probes.clear();
+        self
+    }
+
     /// The recorded history.
     pub fn finish(mut self) -> History {
         self.history.envelope = self.envelope.take().map(EnvelopeTracker::finish);

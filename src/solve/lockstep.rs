@@ -307,10 +307,23 @@ pub fn run(
         });
     }
 
+    let mut bridge_moving = false;
     for step in 1..=model.steps {
         let t = step as f64 * model.time_step;
         model.wheel_positions(t, &mut wheel_positions);
-        predict_bridge(&mut bridge_lanes, &modal, &nm);
+        // The shared geometry first: until a wheel reaches the deck the
+        // bridge is exactly at rest (no load, no ground motion), and its
+        // Newmark step would return exact zeros, so it is skipped.
+        geometry.locate(
+            model,
+            &modal.contact_flexibility,
+            &contacts,
+            &wheel_positions,
+        );
+        bridge_moving = bridge_moving || geometry.on_deck.iter().any(|&on| on);
+        if bridge_moving {
+            predict_bridge(&mut bridge_lanes, &modal, &nm);
+        }
         for vehicle in vehicles.iter_mut() {
             predict_vehicle(vehicle, &nm);
         }
@@ -331,13 +344,7 @@ pub fn run(
             );
         }
 
-        // The shared geometry, then each lane's free gaps g*.
-        geometry.locate(
-            model,
-            &modal.contact_flexibility,
-            &contacts,
-            &wheel_positions,
-        );
+        // Each lane's free gaps g*.
         for (c, contact) in contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
             let mut deck = [-0.0; LANES];
@@ -431,7 +438,9 @@ pub fn run(
                 }
             }
         }
-        finish_bridge(&mut bridge_lanes, &modal, &nm);
+        if bridge_moving {
+            finish_bridge(&mut bridge_lanes, &modal, &nm);
+        }
         for vehicle in vehicles.iter_mut() {
             vehicle.recovery_load.fill([0.0; LANES]);
         }

@@ -286,8 +286,12 @@ fn run_batch(
         });
     let mut recorders = Vec::with_capacity(models.len());
     for (model, scenario) in models.iter().zip(&scenarios) {
-        recorders
-            .push(Recorder::new(model, &scenario.record).map_err(crate::model::BuildError::from)?);
+        // A sample's summary is not written: no girder DAFs to track.
+        recorders.push(
+            Recorder::new(model, &scenario.record)
+                .map_err(crate::model::BuildError::from)?
+                .without_girder_dafs(),
+        );
     }
     if together {
         let refs: Vec<&Model> = models.iter().collect();
