@@ -11,6 +11,8 @@ pub mod extremes;
 pub mod spill;
 
 use self::extremes::ColumnExtremes;
+use std::cell::RefCell;
+use std::rc::Rc;
 
 pub mod envelope;
 
@@ -152,6 +154,45 @@ impl StaticProbe {
             .map(|(&w, value)| -loads[w] * value)
             .sum()
     }
+}
+
+/// One column's per-step values that do not depend on the run's state
+/// (bridge displacements; empty for other columns).
+#[derive(Debug, Default)]
+struct ColumnStatics {
+    /// The influence line at each wheel on the deck, m/N.
+    influence: Vec<f64>,
+    /// The static crossing's deflection, m.
+    static_w: f64,
+    /// φ_s·φ_w (the column's static shape, each wheel's mode values) per
+    /// wheel on the deck, m/N.
+    wheel_dots: Vec<f64>,
+}
+
+impl Clone for ColumnStatics {
+    fn clone(&self) -> Self {
+        Self {
+            influence: self.influence.clone(),
+            static_w: self.static_w,
+            wheel_dots: self.wheel_dots.clone(),
+        }
+    }
+
+    /// In place, keeping the buffers: copied every step of every sample.
+    fn clone_from(&mut self, source: &Self) {
+        self.influence.clone_from(&source.influence);
+        self.static_w = source.static_w;
+        self.wheel_dots.clone_from(&source.wheel_dots);
+    }
+}
+
+/// The per-step values the recorders of one lockstep batch share
+/// ([`Recorder::sharing_statics`]).
+#[derive(Debug, Default)]
+pub struct SharedStatics {
+    /// The step they belong to.
+    step: Option<usize>,
+    columns: Vec<ColumnStatics>,
 }
 
 /// The DAF at the middle of one span on one girder line.
@@ -392,8 +433,10 @@ pub struct Recorder<'m> {
     /// The wheels on the deck this step (indices): only they load it, so
     /// the static parts sum over them alone.
     on_deck: Vec<usize>,
-    /// Scratch: one probe's influence values at the wheels on the deck, m/N.
-    influence: Vec<f64>,
+    /// Per column, this step's values that do not depend on the state.
+    statics: Vec<ColumnStatics>,
+    /// The copy shared by the recorders of a lockstep batch, if any.
+    shared: Option<Rc<RefCell<SharedStatics>>>,
     /// Whether samples are kept at all (else only the extremes).
     keep: bool,
     /// Whether a column adds the ground's displacement (then it is
@@ -669,7 +712,8 @@ impl<'m> Recorder<'m> {
             wheel_modes,
             envelope: None,
             on_deck: Vec::with_capacity(model.wheels.len()),
-            influence: Vec::with_capacity(model.wheels.len()),
+            statics: vec![ColumnStatics::default(); records.len()],
+            shared: None,
             keep: true,
             absolute_displacement,
             absolute_lateral,
@@ -751,6 +795,19 @@ impl<'m> Recorder<'m> {
             c.values = Vec::new();
             c.static_values = c.static_values.as_ref().map(|_| Vec::new());
         }
+        self
+    }
+
+    /// The same recorder reading and writing the per-step values that do
+    /// not depend on the run's state (influence values at the wheels, the
+    /// static crossing, the modal shares of the static correction) in
+    /// `shared`, with the other recorders of a lockstep batch: the first to
+    /// observe a step makes them, the others copy them. Every recorder that
+    /// shares must have the same records on the same bridge, wheels and
+    /// time steps (the samples of one Monte Carlo case); the values are then
+    /// the ones each would make, bit for bit.
+    pub fn sharing_statics(mut self, shared: Rc<RefCell<SharedStatics>>) -> Self {
+        self.shared = Some(shared);
         self
     }
 
@@ -976,11 +1033,19 @@ impl Observer for Recorder<'_> {
             ),
             _ => (0.0, 0.0),
         };
-        for (column, extremes) in self
+        let reuse = self
+            .shared
+            .as_ref()
+            .is_some_and(|shared| shared.borrow().step == Some(view.step));
+        if reuse && let Some(shared) = &self.shared {
+            self.statics.clone_from(&shared.borrow().columns);
+        }
+        for (index, (column, extremes)) in self
             .history
             .columns
             .iter_mut()
             .zip(&mut self.history.extremes)
+            .enumerate()
         {
             let value = match &column.probe {
                 Probe::BridgeDisplacement {
@@ -988,15 +1053,34 @@ impl Observer for Recorder<'_> {
                     statics,
                     static_shape,
                 } => {
-                    // Static crossing: each wheel's static load at its
-                    // current position through the influence line of its
-                    // lane (full stiffness, no modal truncation).
-                    // The influence values at the wheels serve both the
-                    // static crossing and the correction's full deflection.
-                    let influence = &mut self.influence;
-                    statics.values_at_wheels(view.wheel_positions, on_deck, influence);
-                    let static_w =
-                        StaticProbe::deflection_from(influence, &model.static_wheel_loads, on_deck);
+                    // What does not depend on the run's state: the influence
+                    // values at the wheels (for the static crossing — each
+                    // wheel's static load at its current position through
+                    // the influence line of its lane, full stiffness, no
+                    // modal truncation — and for the correction's full
+                    // deflection) and the modal shares φ_s·φ_w of the
+                    // correction; from the batch's shared copy when another
+                    // recorder of a lockstep batch already made them.
+                    let part = &mut self.statics[index];
+                    if !reuse {
+                        statics.values_at_wheels(
+                            view.wheel_positions,
+                            on_deck,
+                            &mut part.influence,
+                        );
+                        part.static_w = StaticProbe::deflection_from(
+                            &part.influence,
+                            &model.static_wheel_loads,
+                            on_deck,
+                        );
+                        part.wheel_dots.clear();
+                        if !self.wheel_modes.is_empty() {
+                            part.wheel_dots.extend(on_deck.iter().map(|&w| {
+                                dot(static_shape, &self.wheel_modes[w * modes..(w + 1) * modes])
+                            }));
+                        }
+                    }
+                    let static_w = part.static_w;
                     extremes.statics.push(view.step, view.time, static_w);
                     if sampled && let Some(s) = column.static_values.as_mut() {
                         s.push(static_w);
@@ -1005,16 +1089,19 @@ impl Observer for Recorder<'_> {
                     if self.wheel_modes.is_empty() {
                         modal
                     } else {
-                        let full =
-                            StaticProbe::deflection_from(influence, view.contact_forces, on_deck);
-                        modal
-                            + static_share_beyond(
-                                full,
-                                static_shape,
-                                &self.wheel_modes,
-                                view,
-                                on_deck,
-                            )
+                        // Σ_w F_w [G(x, x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²], as
+                        // `truncated_static_share`, term by term.
+                        let full = StaticProbe::deflection_from(
+                            &part.influence,
+                            view.contact_forces,
+                            on_deck,
+                        );
+                        let modal_share: f64 = on_deck
+                            .iter()
+                            .zip(&part.wheel_dots)
+                            .map(|(&w, d)| -view.contact_forces[w] * d)
+                            .sum();
+                        modal + (full - modal_share)
                     }
                 }
                 Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
@@ -1078,6 +1165,11 @@ impl Observer for Recorder<'_> {
             if sampled {
                 column.values.push(value);
             }
+        }
+        if !reuse && let Some(shared) = &self.shared {
+            let mut shared = shared.borrow_mut();
+            shared.step = Some(view.step);
+            shared.columns.clone_from(&self.statics);
         }
         // Streaming: the row just sampled goes to the file, the vectors
         // stay empty.

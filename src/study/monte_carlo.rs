@@ -29,7 +29,7 @@ use serde::{Deserialize, Serialize};
 use super::speed_sweep;
 use crate::bridge::ModalBridge;
 use crate::model::Model;
-use crate::record::Recorder;
+use crate::record::{Recorder, SharedStatics};
 use crate::run::RunError;
 use crate::scenario::resolved::{MonteCarlo, Scenario, SweepRoughness};
 use crate::scenario::sweep;
@@ -285,13 +285,18 @@ fn run_batch(
                 && m.vehicles.len() == first.vehicles.len()
         });
     let mut recorders = Vec::with_capacity(models.len());
+    // The batch's recorders share what does not depend on a sample's state.
+    let shared = std::rc::Rc::new(std::cell::RefCell::new(SharedStatics::default()));
     for (model, scenario) in models.iter().zip(&scenarios) {
         // A sample's summary is not written: no girder DAFs to track.
-        recorders.push(
-            Recorder::new(model, &scenario.record)
-                .map_err(crate::model::BuildError::from)?
-                .without_girder_dafs(),
-        );
+        let recorder = Recorder::new(model, &scenario.record)
+            .map_err(crate::model::BuildError::from)?
+            .without_girder_dafs();
+        recorders.push(if together {
+            recorder.sharing_statics(shared.clone())
+        } else {
+            recorder
+        });
     }
     if together {
         let refs: Vec<&Model> = models.iter().collect();
