@@ -307,7 +307,11 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
         Some(v) => format!("{}, {:.1} km/h", results.labels[0], v * KM_H),
         None => results.labels[0].clone(),
     };
-    for (r, (record, unit)) in m.names.iter().zip(&m.units).enumerate() {
+    // One chart per record, drawn and compressed in parallel (each file is
+    // the same whatever the thread count).
+    use rayon::prelude::*;
+    (0..m.names.len()).into_par_iter().try_for_each(|r| {
+        let (record, unit) = (&m.names[r], &m.units[r]);
         let lower: Vec<f64> = m.mean[r]
             .iter()
             .zip(&std[r])
@@ -353,9 +357,9 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
             &format!("{record} ({unit})"),
             &series,
             grey,
-        )?;
-    }
-    Ok(())
+        )
+        .map_err(RunError::from)
+    })
 }
 
 /// separation_probability.png and expected_gap.png against speed, one line
@@ -437,11 +441,21 @@ fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Re
 /// Writes every output of the study into `out`, summary.json last.
 pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Result<(), RunError> {
     crate::run::create_out(out)?;
-    write_atomic(&out.join("study.csv"), &results.samples_csv())?;
-    write_atomic(&out.join("separation.csv"), &results.separation_csv())?;
-    write_atomic(&out.join("envelopes.csv"), &results.envelopes_csv())?;
-    plot_envelopes(out, &scenario.name, results)?;
-    plot_against_speed(out, &scenario.name, results)?;
+    // The tables and the charts are independent files: written side by side.
+    let (tables, charts) = rayon::join(
+        || -> Result<(), RunError> {
+            write_atomic(&out.join("study.csv"), &results.samples_csv())?;
+            write_atomic(&out.join("separation.csv"), &results.separation_csv())?;
+            write_atomic(&out.join("envelopes.csv"), &results.envelopes_csv())?;
+            Ok(())
+        },
+        || -> Result<(), RunError> {
+            plot_envelopes(out, &scenario.name, results)?;
+            plot_against_speed(out, &scenario.name, results)
+        },
+    );
+    tables?;
+    charts?;
     write_atomic(
         &out.join("resolved.yaml"),
         crate::run::resolved_yaml(scenario).as_bytes(),
