@@ -49,6 +49,25 @@ fn study(loaded: Loaded, threads: Option<usize>) -> MonteCarloResults {
     })
 }
 
+/// Sample `k` (from 0) of the study's first case, run alone through
+/// `simulate`.
+fn run_alone(
+    loaded: &Loaded,
+    mc: &vbi::scenario::resolved::MonteCarlo,
+    k: usize,
+) -> vbi::run::Outcome {
+    let case = monte_carlo::cases(mc)[0];
+    let scenario = monte_carlo::sample_scenario(&loaded.scenario, &loaded.bridge, mc, case, k);
+    simulate(
+        Loaded {
+            scenario,
+            bridge: loaded.bridge.clone(),
+        },
+        &mut |_, _| {},
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+}
+
 const STUDY: &str = "{type: monte_carlo, samples: 9, seed: 11, show: 9}";
 
 #[test]
@@ -80,14 +99,7 @@ fn a_sample_run_alone_is_that_sample_of_the_study() {
             _ => panic!("a random surface"),
         };
         assert_eq!(seed, monte_carlo::sample_seed(11, k));
-        let alone = simulate(
-            Loaded {
-                scenario,
-                bridge: loaded.bridge.clone(),
-            },
-            &mut |_, _| {},
-        )
-        .unwrap_or_else(|e| panic!("{e}"));
+        let alone = run_alone(&loaded, &mc, k);
         let in_study = &results.sample_results[k];
         assert_eq!(in_study.sample, k + 1);
         assert_eq!(in_study.seed, seed);
@@ -355,19 +367,9 @@ study: {type: monte_carlo, samples: 11, seed: 9, show: 11}
             panic!("a Monte Carlo study")
         };
         let results = study(loaded.clone(), None);
-        let case = monte_carlo::cases(&mc)[0];
         let mut separated = 0;
         for k in 0..11 {
-            let scenario =
-                monte_carlo::sample_scenario(&loaded.scenario, &loaded.bridge, &mc, case, k);
-            let alone = simulate(
-                Loaded {
-                    scenario,
-                    bridge: loaded.bridge.clone(),
-                },
-                &mut |_, _| {},
-            )
-            .unwrap_or_else(|e| panic!("{e}"));
+            let alone = run_alone(&loaded, &mc, k);
             let in_study = &results.sample_results[k];
             let histories = in_study.histories.as_ref().expect("every sample shown");
             assert_eq!(alone.history.columns.len(), histories.len());

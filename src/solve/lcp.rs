@@ -80,6 +80,7 @@ pub struct LcpWorkspace {
     active: Vec<usize>,      // indices j with z_j basic at the end
     mat: Vec<f64>,           // |A| × |A| cleanup matrix
     rhs: Vec<f64>,           // cleanup right-hand side / solution
+    pivots: Vec<usize>,      // cleanup row exchanges
     z_lemke: Vec<f64>,       // z read from the final tableau
 }
 
@@ -96,6 +97,7 @@ impl LcpWorkspace {
             active: vec![0; n],
             mat: vec![0.0; n * n],
             rhs: vec![0.0; n],
+            pivots: vec![0; n],
             z_lemke: vec![0.0; n],
         }
     }
@@ -219,7 +221,7 @@ pub fn solve_warm(
             }
             b[r] = -q[i];
         }
-        if gauss_solve(a, b, k) {
+        if gauss_solve(a, b, k, &mut work.pivots) {
             z.fill(0.0);
             for (r, &i) in act.iter().enumerate() {
                 z[i] = b[r].max(0.0);
@@ -391,64 +393,14 @@ impl SetFactor {
                 a[r * k + c] = m[i * n + j];
             }
         }
-        let tiny = 1e-14 * max_abs(a);
-        self.regular = false;
-        for c in 0..k {
-            let mut p = c;
-            for i in c + 1..k {
-                if a[i * k + c].abs() > a[p * k + c].abs() {
-                    p = i;
-                }
-            }
-            if a[p * k + c].abs() <= tiny {
-                return;
-            }
-            self.pivots[c] = p;
-            if p != c {
-                // Columns c.. only, as `gauss_solve`: the multipliers of
-                // earlier columns stay with the rows they were made for,
-                // which is where the replay meets them.
-                for j in c..k {
-                    a.swap(c * k + j, p * k + j);
-                }
-            }
-            for i in c + 1..k {
-                let f = a[i * k + c] / a[c * k + c];
-                a[i * k + c] = f;
-                if f != 0.0 {
-                    for j in c + 1..k {
-                        a[i * k + j] -= f * a[c * k + j];
-                    }
-                }
-            }
-        }
-        self.regular = true;
+        self.regular = eliminate(a, k, &mut self.pivots);
     }
 
     /// `gauss_solve`'s operations on the right-hand side `b` (length |A|),
     /// which becomes the solution.
     fn replay(&self, b: &mut [f64]) {
         let k = b.len();
-        let a = &self.factors[..k * k];
-        for c in 0..k {
-            let p = self.pivots[c];
-            if p != c {
-                b.swap(c, p);
-            }
-            for i in c + 1..k {
-                let f = a[i * k + c];
-                if f != 0.0 {
-                    b[i] -= f * b[c];
-                }
-            }
-        }
-        for c in (0..k).rev() {
-            let mut s = b[c];
-            for j in c + 1..k {
-                s -= a[c * k + j] * b[j];
-            }
-            b[c] = s / a[c * k + c];
-        }
+        substitute(&self.factors[..k * k], k, &self.pivots, b);
     }
 }
 
@@ -621,7 +573,7 @@ fn finish(
             }
             b[r] = -q[i];
         }
-        if gauss_solve(a, b, k) {
+        if gauss_solve(a, b, k, &mut work.pivots) {
             for (r, &i) in act.iter().enumerate() {
                 z[i] = b[r].max(0.0);
             }
@@ -664,9 +616,24 @@ fn violation(m: &[f64], q: &[f64], z: &[f64], mu: f64) -> f64 {
 }
 
 /// Solves `a x = b` in place (`a` row-major k×k, solution in `b`) by Gaussian elimination with
-/// partial pivoting. Returns `false` if a pivot is below `1e-14 · max|a|` (numerically singular).
-fn gauss_solve(a: &mut [f64], b: &mut [f64], k: usize) -> bool {
-    let tiny = 1e-14 * max_abs(a);
+/// partial pivoting ([`eliminate`], then [`substitute`]; `pivots` holds k row exchanges).
+/// Returns `false` if a pivot is below `1e-14 · max|a|` (numerically singular).
+fn gauss_solve(a: &mut [f64], b: &mut [f64], k: usize, pivots: &mut [usize]) -> bool {
+    if !eliminate(a, k, pivots) {
+        return false;
+    }
+    substitute(a, k, pivots, b);
+    true
+}
+
+/// Gaussian elimination with partial pivoting of `a` (row-major k×k) in place: U on and
+/// above the diagonal, each column's multipliers below it, and in `pivots[c]` the row
+/// exchanged with row c at column c. A row exchange moves columns c.. only, so the
+/// multipliers of earlier columns stay with the rows they were made for, which is where
+/// [`substitute`] meets them. Returns `false` if a pivot is below `1e-14 · max|a|`
+/// (numerically singular). Cost k³/3 multiply-adds.
+fn eliminate(a: &mut [f64], k: usize, pivots: &mut [usize]) -> bool {
+    let tiny = 1e-14 * max_abs(&a[..k * k]);
     for c in 0..k {
         let mut p = c;
         for i in c + 1..k {
@@ -677,18 +644,37 @@ fn gauss_solve(a: &mut [f64], b: &mut [f64], k: usize) -> bool {
         if a[p * k + c].abs() <= tiny {
             return false;
         }
+        pivots[c] = p;
         if p != c {
             for j in c..k {
                 a.swap(c * k + j, p * k + j);
             }
-            b.swap(c, p);
         }
         for i in c + 1..k {
             let f = a[i * k + c] / a[c * k + c];
+            a[i * k + c] = f;
             if f != 0.0 {
                 for j in c + 1..k {
                     a[i * k + j] -= f * a[c * k + j];
                 }
+            }
+        }
+    }
+    true
+}
+
+/// Solves with an [`eliminate`]d `a`: the row exchanges and multipliers applied to `b` in
+/// the order of the elimination, then back substitution; the solution replaces `b`. The
+/// same operations on `b`, in the same order, as eliminating with `b` alongside. Cost k².
+fn substitute(a: &[f64], k: usize, pivots: &[usize], b: &mut [f64]) {
+    for c in 0..k {
+        let p = pivots[c];
+        if p != c {
+            b.swap(c, p);
+        }
+        for i in c + 1..k {
+            let f = a[i * k + c];
+            if f != 0.0 {
                 b[i] -= f * b[c];
             }
         }
@@ -700,7 +686,6 @@ fn gauss_solve(a: &mut [f64], b: &mut [f64], k: usize) -> bool {
         }
         b[c] = s / a[c * k + c];
     }
-    true
 }
 
 #[cfg(test)]

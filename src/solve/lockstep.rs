@@ -41,7 +41,7 @@ use super::guard::Guard;
 use super::lcp::{LcpWorkspace, SharedWarmStart};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
-use super::unilateral::{ContactGeometry, block_inverse, contact_wheels};
+use super::unilateral::{ContactGeometry, block_inverse, contact_wheels, vehicle_step_matrices};
 use super::{Observer, SolveError, StepView, VehicleState, describe_positions};
 use crate::model::{ContactLaw, Model};
 use crate::scenario::resolved::SolverMethod;
@@ -244,30 +244,13 @@ fn run_lanes(
     let mut vehicles = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
         let n = vehicle.dofs();
-        let effective =
-            &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
-        let effective_flexibility =
-            block_inverse(&effective, &vehicle.blocks).ok_or_else(|| {
-                (
-                    0,
-                    SolveError::SingularContact {
-                        time: 0.0,
-                        reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-                    },
-                )
-            })?;
+        let (effective_flexibility, contact_response) =
+            vehicle_step_matrices(model, &nm, v, &contacts, &columns).map_err(|e| (0, e))?;
         let recovery = block_inverse(
             &(&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)),
             &vehicle.blocks,
         )
         .expect("eligible: M + (1+α)γΔt C is invertible");
-        let mut contact_response = DMatrix::zeros(n, columns[v]);
-        for c in contacts.iter().filter(|c| c.vehicle == v) {
-            contact_response.set_column(
-                c.column,
-                &(effective_flexibility.column(c.dof) * nm.weight()),
-            );
-        }
         let at_rest = VehicleState::at_rest(model, v);
         let spread = |x: &DVector<f64>| x.iter().map(|&u| [u; LANES]).collect::<Vec<Lanes>>();
         let zeros = vec![[0.0; LANES]; n];

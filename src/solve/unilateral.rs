@@ -89,6 +89,34 @@ pub(super) fn contact_wheels(model: &Model) -> (Vec<ContactWheel>, Vec<(usize, f
     (contacts, load_wheels, columns)
 }
 
+/// Vehicle `v`'s effective flexibility K̂⁻¹, K̂ = a₀M + (1+α)(a₁C + K)
+/// (inverted block by block: a train's cars), and its contact response
+/// H = (1+α)K̂⁻¹E, one column per contact wheel of the vehicle (m/N).
+pub(super) fn vehicle_step_matrices(
+    model: &Model,
+    nm: &Newmark,
+    v: usize,
+    contacts: &[ContactWheel],
+    columns: &[usize],
+) -> Result<(DMatrix<f64>, DMatrix<f64>), SolveError> {
+    let vehicle = &model.vehicles[v];
+    let effective =
+        &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
+    let effective_flexibility =
+        block_inverse(&effective, &vehicle.blocks).ok_or_else(|| SolveError::SingularContact {
+            time: 0.0,
+            reason: format!("vehicle {} has a singular effective stiffness", v + 1),
+        })?;
+    let mut contact_response = DMatrix::zeros(vehicle.dofs(), columns[v]);
+    for c in contacts.iter().filter(|c| c.vehicle == v) {
+        contact_response.set_column(
+            c.column,
+            &(effective_flexibility.column(c.dof) * nm.weight()),
+        );
+    }
+    Ok((effective_flexibility, contact_response))
+}
+
 /// What the contact problem of a step owes to where the wheels are, not to
 /// the state: the same for every sample of a scene at a given step.
 #[derive(Debug, Clone)]
@@ -243,22 +271,8 @@ pub fn run(
     let mut steps = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
         let n = vehicle.dofs();
-        let effective =
-            &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
-        let effective_flexibility =
-            block_inverse(&effective, &vehicle.blocks).ok_or_else(|| {
-                SolveError::SingularContact {
-                    time: 0.0,
-                    reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-                }
-            })?;
-        let mut contact_response = DMatrix::zeros(n, columns[v]);
-        for c in contacts.iter().filter(|c| c.vehicle == v) {
-            contact_response.set_column(
-                c.column,
-                &(effective_flexibility.column(c.dof) * nm.weight()),
-            );
-        }
+        let (effective_flexibility, contact_response) =
+            vehicle_step_matrices(model, &nm, v, &contacts, &columns)?;
         states.push(VehicleState::at_rest(model, v));
         steps.push(VehicleStep {
             effective_flexibility,
