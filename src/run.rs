@@ -31,6 +31,18 @@ pub enum RunError {
     /// A plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] crate::report::plot::PlotError),
+    /// One sample of a Monte Carlo study failed (the study stops).
+    #[error("sample {sample} of case {case} failed{rerun}: {source}")]
+    Sample {
+        /// Sample number from 1.
+        sample: usize,
+        /// The case: surface, and speed when swept.
+        case: String,
+        /// How to run that sample alone, when `--sample` can (first case).
+        rerun: String,
+        /// Why it failed.
+        source: Box<RunError>,
+    },
 }
 
 /// What a scenario file produces: one scene, or a study.

@@ -390,3 +390,59 @@ study: {type: monte_carlo, samples: 11, seed: 9, show: 11}
         }
     }
 }
+
+/// A sample that fails stops the study with its number, its case and how
+/// to run it alone: here every sample diverges (Fox–Goodwin β = 1/12
+/// beyond its stability limit, ωΔt = 4.4 > √6 for the 34th mode), and the
+/// study reports the first to do so, in a lockstep batch, as the run of
+/// that sample alone reports it.
+#[test]
+fn a_failing_sample_is_named_with_its_case_and_rerun() {
+    let text = "name: diverging
+bridge: {type: beam, spans: [32.0], bending_stiffness: 1.3448174e10, mass_per_length: 12000.0, elements_per_span: 20, damping: {type: modal, ratio: 0.02}, modes: {count: 34}}
+vehicles: [{type: rail_car, speed: 300 km/h, start_position: -10.0}]
+surface: {type: fra, class: 5, run_in: 10.0}
+contact: {type: elastic, stiffness: 1.0e9}
+solver: {free_vibration: 0.05, time_step: 2.763e-4, newmark: {beta: 0.08333333333333333}}
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 16.0}
+study: {type: monte_carlo, samples: 3, seed: 5}
+";
+    let loaded = load(text);
+    let Some(Study::MonteCarlo(mc)) = loaded.scenario.study.clone() else {
+        panic!("a Monte Carlo study")
+    };
+    let error = match execute(loaded.clone(), &|_, _| {}) {
+        Err(e) => e,
+        Ok(_) => panic!("the study should fail"),
+    };
+    let message = error.to_string();
+    let vbi::run::RunError::Sample { sample, source, .. } = error else {
+        panic!("expected a failed sample, got {message}")
+    };
+    assert!((1..=3).contains(&sample), "{message}");
+    assert!(
+        message.contains(&format!("sample {sample} of case fra-5"))
+            && message.contains(&format!("--sample {sample}"))
+            && message.contains("diverged"),
+        "{message}"
+    );
+    // The sample run alone fails the same way.
+    let alone = simulate(
+        Loaded {
+            scenario: monte_carlo::sample_scenario(
+                &loaded.scenario,
+                &loaded.bridge,
+                &mc,
+                monte_carlo::cases(&mc)[0],
+                sample - 1,
+            ),
+            bridge: loaded.bridge.clone(),
+        },
+        &mut |_, _| {},
+    );
+    match alone {
+        Err(e) => assert_eq!(e.to_string(), source.to_string()),
+        Ok(_) => panic!("sample {sample} alone should diverge"),
+    }
+}

@@ -304,10 +304,13 @@ fn run_batch(
             .iter_mut()
             .map(|r| r as &mut dyn solve::Observer)
             .collect();
-        solve::lockstep::run(&refs, &mut observers).map_err(|(_, e)| e)?;
+        solve::lockstep::run(&refs, &mut observers)
+            .map_err(|(lane, e)| failed_sample(base, mc, cases, flats.start + lane, e.into()))?;
     } else {
-        for (model, recorder) in models.iter().zip(recorders.iter_mut()) {
-            solve::run(model, recorder, &mut |_, _| {})?;
+        for ((model, recorder), flat) in models.iter().zip(recorders.iter_mut()).zip(flats.clone())
+        {
+            solve::run(model, recorder, &mut |_, _| {})
+                .map_err(|e| failed_sample(base, mc, cases, flat, e.into()))?;
         }
     }
     Ok(recorders
@@ -315,6 +318,32 @@ fn run_batch(
         .zip(flats)
         .map(|(recorder, flat)| outcome(recorder, mc, flat / mc.samples, flat % mc.samples))
         .collect())
+}
+
+/// Run `flat`'s failure `error`, said with its sample, its case and, for
+/// the first case, how to run it alone (`--sample`).
+fn failed_sample(
+    base: &Scenario,
+    mc: &MonteCarlo,
+    cases: &[Case],
+    flat: usize,
+    error: RunError,
+) -> RunError {
+    let (case, index) = (flat / mc.samples, flat % mc.samples);
+    let mut label = sweep::label(&base.surface, cases[case].entry);
+    if let Some(speed) = cases[case].speed {
+        label += &format!(", {:.1} km/h", speed * speed_sweep::KM_H);
+    }
+    RunError::Sample {
+        sample: index + 1,
+        case: label,
+        rerun: if case == 0 {
+            format!(" (run it alone with `vbi run FILE --sample {}`)", index + 1)
+        } else {
+            String::new()
+        },
+        source: Box::new(error),
+    }
 }
 
 /// One finished sample's moments (count 1) and scalar results.
