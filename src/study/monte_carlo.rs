@@ -391,20 +391,23 @@ fn outcome(
 type Reduced = (Moments, Vec<SampleResult>);
 
 /// Reduces samples [lo, hi) of `case` over the fixed tree, halves in
-/// parallel; a node of at most [`solve::lockstep::LANES`] samples runs as
-/// one batch and is reduced over the same tree. The samples come back in
-/// index order.
+/// parallel; a node of at most `width` samples runs as one batch and is
+/// reduced over the same tree. The samples come back in index order.
 fn reduce(
     lo: usize,
     hi: usize,
+    width: usize,
     batch: &(dyn Fn(Range<usize>) -> Result<Vec<(Moments, SampleResult)>, RunError> + Sync),
 ) -> Result<Reduced, RunError> {
-    if hi - lo <= solve::lockstep::LANES {
+    if hi - lo <= width {
         let mut leaves = batch(lo..hi)?.into_iter();
         return Ok(reduce_leaves(lo, hi, &mut leaves));
     }
     let mid = lo + (hi - lo) / 2;
-    let (a, b) = rayon::join(|| reduce(lo, mid, batch), || reduce(mid, hi, batch));
+    let (a, b) = rayon::join(
+        || reduce(lo, mid, width, batch),
+        || reduce(mid, hi, width, batch),
+    );
     let ((ma, mut sa), (mb, sb)) = (a?, b?);
     sa.extend(sb);
     Ok((Moments::combine(ma, &mb), sa))
@@ -487,7 +490,17 @@ pub fn run_slice(
                     progress(done.fetch_add(count, Ordering::Relaxed) + count, total);
                     r
                 };
-                reduce(lo, hi, &batch).map(|r| (case, lo, hi, r))
+                // Batches only where the samples step in lockstep: a scene
+                // run sample by sample keeps one sample per task, so every
+                // thread has work even in a small study.
+                let width = match Model::build(
+                    &sample_scenario(base, bridge, mc, cases[case], lo),
+                    bridge.clone(),
+                ) {
+                    Ok(model) if solve::lockstep::eligible(&model) => solve::lockstep::LANES,
+                    _ => 1,
+                };
+                reduce(lo, hi, width, &batch).map(|r| (case, lo, hi, r))
             })
             .collect::<Result<_, _>>()?
     };
