@@ -229,3 +229,77 @@ fn runs_read_their_modes_from_the_cache() {
     assert!(plain == history);
     assert!(!dir.join("plain").join(".vbi-cache").exists());
 }
+
+/// A forged cache file (issue 23): modes 1 and 3–11 of an 11-mode solve
+/// stored under the key of a 10-mode request, with that solve's Sturm
+/// shift and count (the gap above mode 11, 11 below it), the check figures
+/// a forger computes for the set (so a re-check that compares figures
+/// passes) and the public FNV-1a checksum recomputed. Every stored pair is
+/// a true eigenpair and the set is M-orthonormal, so only a Sturm count
+/// made afresh against the stored eigenvalues can see that the 2nd mode is
+/// missing: the file must not be used, and the modes must equal a fresh
+/// solve bit for bit.
+#[test]
+fn a_forged_file_missing_a_mode_is_not_used() {
+    let dir = folder("forged");
+    let cache = ModesCache {
+        folder: dir.clone(),
+        kind: "fe_import".into(),
+    };
+    let p = pencil(6.0);
+    let (eleven, _) = p.lowest_cached(11, &cache).unwrap();
+    let (shift, counted) = eleven.check.inertia.expect("a cut above mode 11");
+    assert_eq!(counted, 11);
+    let kept: Vec<usize> = std::iter::once(0).chain(2..11).collect();
+    let mut forged = vbi::bridge::eigen::Eigenpairs {
+        eigenvalues: kept.iter().map(|&m| eleven.eigenvalues[m]).collect(),
+        vectors: faer::Mat::from_fn(eleven.vectors.nrows(), 10, |i, j| {
+            eleven.vectors[(i, kept[j])]
+        }),
+        check: eleven.check,
+    };
+    // The residual and orthonormality checks pass on the forged set: it is
+    // made of true modes.
+    p.verify(&mut forged, |x, y| {
+        vbi::bridge::eigen::sparse::multiply(&p.stiffness, x, y)
+    })
+    .unwrap();
+    let key = cache.key(&p, 10);
+    let (order, count) = (forged.vectors.nrows(), 10usize);
+    let mut bytes = b"VBIMODE1".to_vec();
+    bytes.extend_from_slice(&key.to_le_bytes());
+    let c = &forged.check;
+    for word in [
+        order as u64,
+        count as u64,
+        c.largest_residual.to_bits(),
+        c.largest_plain_residual.to_bits(),
+        c.orthonormality_error.to_bits(),
+        shift.to_bits(),
+        1,
+        counted as u64,
+        u64::from(c.dense),
+        0,
+    ] {
+        bytes.extend_from_slice(&word.to_le_bytes());
+    }
+    for &lambda in &forged.eigenvalues {
+        bytes.extend_from_slice(&lambda.to_bits().to_le_bytes());
+    }
+    for j in 0..count {
+        for &v in forged.vectors.col(j).iter() {
+            bytes.extend_from_slice(&v.to_bits().to_le_bytes());
+        }
+    }
+    let mut h = vbi::bridge::eigen::cache::Hasher::default();
+    h.bytes(&bytes);
+    bytes.extend_from_slice(&h.finish().to_le_bytes());
+    std::fs::write(cache.path(key), &bytes).unwrap();
+    let (pairs, outcome) = p.lowest_cached(10, &cache).unwrap();
+    assert_eq!(outcome, CacheOutcome::Miss, "the forged file was used");
+    let fresh = p.lowest(10).unwrap();
+    assert_eq!(bits(&pairs), bits(&fresh));
+    // The fresh 2nd mode is there (the forged file skipped it).
+    assert_eq!(pairs.eigenvalues[1].to_bits(), eleven.eigenvalues[1].to_bits());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
