@@ -123,7 +123,10 @@ fn truncated_or_corrupted_files_are_recomputed() {
     for (i, bytes) in damaged.into_iter().enumerate() {
         std::fs::write(&path, &bytes).unwrap();
         let (pairs, outcome) = p.lowest_cached(12, &cache).unwrap();
-        assert_eq!(outcome, CacheOutcome::Miss, "case {i}");
+        assert!(
+            matches!(outcome, CacheOutcome::Rejected(_)),
+            "case {i}: {outcome:?}"
+        );
         assert_eq!(bits(&pairs), bits(&fresh), "case {i}");
         assert_eq!(
             std::fs::read(&path).unwrap(),
@@ -155,6 +158,16 @@ fn run_cli(
     out: &std::path::Path,
     extra: &[&str],
 ) -> (Option<bool>, Vec<u8>) {
+    let (from_cache, history, _) = run_cli_noting(scene, out, extra);
+    (from_cache, history)
+}
+
+/// [`run_cli`] and the run's standard error.
+fn run_cli_noting(
+    scene: &std::path::Path,
+    out: &std::path::Path,
+    extra: &[&str],
+) -> (Option<bool>, Vec<u8>, String) {
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
         .arg("run")
         .arg(scene)
@@ -174,6 +187,7 @@ fn run_cli(
     (
         summary["run"]["modes_from_cache"].as_bool(),
         std::fs::read(out.join("history.csv")).unwrap(),
+        String::from_utf8_lossy(&status.stderr).into_owned(),
     )
 }
 
@@ -203,9 +217,13 @@ fn runs_read_their_modes_from_the_cache() {
         let bytes = std::fs::read(file).unwrap();
         std::fs::write(file, &bytes[..bytes.len() / 2]).unwrap();
     }
-    let (truncated, after) = run_cli(&scene, &out, &[]);
+    let (truncated, after, stderr) = run_cli_noting(&scene, &out, &[]);
     assert_eq!(truncated, Some(false));
     assert!(history == after);
+    assert!(
+        stderr.contains("modes cache file of this model was not used (its length"),
+        "{stderr}"
+    );
     // A changed stiffness entry of a free DOF (row 2 is node 1's ry; the
     // uz rows of nodes 1 and 21 are constrained away) misses.
     let k = dir.join("fe-import-lcp-fig4").join("K.mtx");
@@ -296,7 +314,11 @@ fn a_forged_file_missing_a_mode_is_not_used() {
     bytes.extend_from_slice(&h.finish().to_le_bytes());
     std::fs::write(cache.path(key), &bytes).unwrap();
     let (pairs, outcome) = p.lowest_cached(10, &cache).unwrap();
-    assert_eq!(outcome, CacheOutcome::Miss, "the forged file was used");
+    assert_eq!(
+        outcome,
+        CacheOutcome::Rejected("a Sturm count of the model disagrees (a mode is missing)"),
+        "the forged file was used"
+    );
     let fresh = p.lowest(10).unwrap();
     assert_eq!(bits(&pairs), bits(&fresh));
     // The fresh 2nd mode is there (the forged file skipped it).

@@ -118,6 +118,10 @@ pub struct ModalBridge {
     /// cache (`None`: no cache folder, or a bridge the cache does not
     /// serve — beams and plates solve in milliseconds).
     pub modes_from_cache: Option<bool>,
+    /// Why a modes cache file that was there was not used (it failed a
+    /// check: [`eigen::cache::Pencil::recheck`]); the modes were solved
+    /// afresh and the file rewritten.
+    pub modes_cache_rejected: Option<&'static str>,
     /// The static flexibility between contact points, for the contact
     /// static correction ([`ModalBridge::prepare_contact_correction`]).
     contact_flexibility: Option<std::sync::Arc<Flexibility>>,
@@ -319,6 +323,7 @@ impl ModalBridge {
         }
         let available = Self::available_of(bridge);
         let mut from_cache = None;
+        let mut cache_rejected = None;
         let (omegas, shapes, check) = match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam)?;
@@ -434,6 +439,9 @@ impl ModalBridge {
                         };
                         let (modes, outcome) = pencil.lowest_cached(count, &cache)?;
                         from_cache = Some(outcome == eigen::cache::CacheOutcome::Hit);
+                        if let eigen::cache::CacheOutcome::Rejected(why) = outcome {
+                            cache_rejected = Some(why);
+                        }
                         modes
                     }
                     None => pencil.lowest(count)?,
@@ -471,6 +479,7 @@ impl ModalBridge {
             check,
             static_correction: bridge.modes().static_correction,
             modes_from_cache: from_cache,
+            modes_cache_rejected: cache_rejected,
             contact_flexibility: None,
             shapes,
         })

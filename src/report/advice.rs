@@ -61,6 +61,12 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     let last = run.end_time - 0.5 * run.time_step;
     let period = run.frequencies.first().map(|f| 1.0 / f);
     let mut out = Vec::new();
+    if let Some(why) = &run.modes_cache_rejected {
+        out.push(format!(
+            "the modes cache file of this model was not used ({why}): the modes were solved \
+             afresh and the file rewritten"
+        ));
+    }
     if let Some(embs) = &summary.embs {
         out.extend(embs.warnings());
     }

@@ -88,6 +88,10 @@ pub struct RunInfo {
     /// (true) or solved and written to it (false); absent without a cache.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub modes_from_cache: Option<bool>,
+    /// Why a modes cache file that was there was not used (it failed a
+    /// re-check; the modes were solved afresh); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub modes_cache_rejected: Option<String>,
     /// How the modes were chosen and why.
     pub modes_selection: String,
     /// How the time step was chosen.
@@ -297,6 +301,7 @@ impl Summary {
                 end_time: model.end_time(),
                 modes_used: model.bridge.mode_count(),
                 modes_from_cache: model.bridge.modes_from_cache,
+                modes_cache_rejected: model.bridge.modes_cache_rejected.map(String::from),
                 modes_available: model.bridge.available_modes,
                 modes_selection: model.bridge.selection.clone(),
                 time_step_selection: model.time_step_selection.clone(),

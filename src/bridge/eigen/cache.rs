@@ -11,13 +11,17 @@
 //! run equals an uncached one bit for bit), then the 128-bit hash of all
 //! that as a checksum.
 //!
-//! Trust: a file is used only if its length is exactly the one the request
-//! implies (checked before anything is read or allocated), its magic, key,
-//! order and count match, and its checksum is right; then the modes are
-//! checked again like fresh ones (residual, M-orthonormality, Sturm count:
-//! [`super::Pencil::verify`] and the inertia at the stored shift), which
-//! costs about a tenth of the solve. Anything else (truncated, corrupt,
-//! foreign) is ignored and the modes are recomputed and written anew.
+//! Trust: the checksum is public (anyone can recompute it), so it only
+//! catches accidents. A file is used only if its length is exactly the one
+//! the request implies (checked before anything is read or allocated), its
+//! magic, key, order and count match, and its checksum is right; then the
+//! modes are checked again from the model like fresh ones: residuals and
+//! M-orthonormality recomputed, and a Sturm count made afresh (one LDLᵀ of
+//! K − σM) that must find exactly the stored modes below the cut
+//! ([`Pencil::recheck`]), which costs about a tenth of the solve. Anything
+//! else (truncated, corrupt, foreign, forged) is not used: the modes are
+//! recomputed and written anew, and the outcome says why
+//! ([`CacheOutcome::Rejected`]).
 //! Writes go through [`crate::report::atomic::write_atomic`] (a temporary
 //! file renamed onto the target), so concurrent runs each write a whole
 //! file and a reader never sees a partial one.
@@ -31,7 +35,7 @@ use super::{Eigenpairs, ModeCheck, Pencil};
 use crate::bridge::BridgeError;
 
 /// Changes whenever the solver's results could change (part of the key).
-pub const SOLVER_VERSION: &str = "vbi-eigen-lanczos-1";
+pub const SOLVER_VERSION: &str = "vbi-eigen-lanczos-2";
 
 const MAGIC: &[u8; 8] = b"VBIMODE1";
 
@@ -99,8 +103,22 @@ pub struct ModesCache {
 pub enum CacheOutcome {
     /// Read from a valid cache file (and re-checked).
     Hit,
-    /// Solved (no file, or a file that failed a check), then written.
+    /// Solved (no file), then written.
     Miss,
+    /// A file was there but failed a check (the reason): solved afresh and
+    /// written anew.
+    Rejected(&'static str),
+}
+
+/// What [`ModesCache::read`] found.
+#[derive(Debug)]
+pub enum Read {
+    /// No file for the key.
+    Absent,
+    /// A file that is not a cache file of this request (the reason).
+    Invalid(&'static str),
+    /// A well-formed file, not yet re-checked.
+    Valid(Eigenpairs),
 }
 
 impl ModesCache {
@@ -122,15 +140,27 @@ impl ModesCache {
     }
 
     /// Reads the modes of `key` if a valid file holds them (module doc).
-    pub fn read(&self, key: u128, order: usize, count: usize) -> Option<Eigenpairs> {
+    /// Sizes come from the request (`order`, `count`), never from the file:
+    /// its length must equal the one they imply before anything is read or
+    /// allocated, so a file claiming 10¹² modes costs nothing.
+    pub fn read(&self, key: u128, order: usize, count: usize) -> Read {
         let path = self.path(key);
-        let expected = file_len(order, count)?;
-        let len = std::fs::metadata(&path).ok()?.len();
-        if len != expected as u64 {
-            return None;
+        let Ok(metadata) = std::fs::metadata(&path) else {
+            return Read::Absent;
+        };
+        let Some(expected) = file_len(order, count) else {
+            return Read::Invalid("the request's size overflows");
+        };
+        if metadata.len() != expected as u64 {
+            return Read::Invalid("its length is not that of the request");
         }
-        let bytes = std::fs::read(&path).ok()?;
-        decode(&bytes, key, order, count)
+        let Ok(bytes) = std::fs::read(&path) else {
+            return Read::Invalid("it cannot be read");
+        };
+        match decode(&bytes, key, order, count) {
+            Some(pairs) => Read::Valid(pairs),
+            None => Read::Invalid("its header or checksum is wrong"),
+        }
     }
 
     /// Writes `pairs` under `key` (atomically). Errors are the caller's to
@@ -227,44 +257,101 @@ fn decode(bytes: &[u8], key: u128, order: usize, count: usize) -> Option<Eigenpa
 
 impl Pencil {
     /// [`Pencil::lowest`] through `cache`: a valid cached file is read and
-    /// its modes checked again (residual, M-orthonormality, the Sturm count
-    /// at the stored shift); otherwise the modes are solved and written
-    /// (a write failure is returned as `Err` only for the solve's errors:
-    /// the cache is an optimisation, its I/O errors are ignored).
+    /// its modes checked again from the model ([`Pencil::recheck`]);
+    /// otherwise the modes are solved and written (a write failure is
+    /// returned as `Err` only for the solve's errors: the cache is an
+    /// optimisation, its I/O errors are ignored). A file that was there but
+    /// failed a check is reported in the outcome ([`CacheOutcome::Rejected`]).
     pub fn lowest_cached(
         &self,
         count: usize,
         cache: &ModesCache,
     ) -> Result<(Eigenpairs, CacheOutcome), BridgeError> {
         let key = cache.key(self, count);
-        if let Some(mut pairs) = cache.read(key, self.order(), count)
-            && self.recheck(&mut pairs).is_ok()
-        {
-            return Ok((pairs, CacheOutcome::Hit));
-        }
+        let rejected = match cache.read(key, self.order(), count) {
+            Read::Absent => None,
+            Read::Invalid(why) => Some(why),
+            Read::Valid(mut pairs) => match self.recheck(&mut pairs) {
+                Ok(()) => return Ok((pairs, CacheOutcome::Hit)),
+                Err(why) => Some(why),
+            },
+        };
         let pairs = self.lowest(count)?;
-        let _ = cache.write(key, &pairs);
-        Ok((pairs, CacheOutcome::Miss))
+        // A cut that needed more modes than the file holds (a cluster
+        // straddling the request) could not be re-counted: not written.
+        if pairs.check.inertia.is_none_or(|(_, counted)| counted == count) {
+            let _ = cache.write(key, &pairs);
+        }
+        let outcome = match rejected {
+            Some(why) => CacheOutcome::Rejected(why),
+            None => CacheOutcome::Miss,
+        };
+        Ok((pairs, outcome))
     }
 
-    /// The checks of fresh modes on cached ones; the stored figures must
-    /// be reproduced exactly (they were computed the same way).
-    fn recheck(&self, pairs: &mut Eigenpairs) -> Result<(), BridgeError> {
+    /// The checks of fresh modes, made again from the model on cached ones;
+    /// nothing the file says about completeness is believed:
+    /// - the eigenvalues are finite, positive and ascending;
+    /// - residuals and M-orthonormality recomputed ([`Pencil::verify`]);
+    /// - completeness by a Sturm count made here (one LDLᵀ of K − σM): at
+    ///   the file's shift σ, above every stored eigenvalue by a margin
+    ///   checked below, exactly `count` eigenvalues of the model may lie
+    ///   (fewer modes than the order; `count` = order needs no count).
+    ///
+    /// Why the count proves that none is missing: for a vector φ with
+    /// energy residual η (module doc of [`super`]), expanding φ = Σ aⱼφⱼ in
+    /// the true modes gives η² = Σ aⱼ²λⱼ((λⱼ − λ̃)/λⱼ)² / Σ aⱼ²λⱼ, so the
+    /// part of φ on modes at or above σ has M-norm at most η/g with
+    /// g = 1 − λ̃/σ. With g ≥ [`CUT_MARGIN`]·η every stored vector lies
+    /// within 1 % of the span of the modes below σ; `count` M-orthonormal
+    /// such vectors span all of it when exactly `count` modes lie below σ.
+    /// A file that drops a mode and adds the next one above (the forgery
+    /// of issue 23) has one more eigenvalue below σ than vectors.
+    /// The figures must also equal the stored ones (they are computed the
+    /// same way), so a cached run reports what a fresh one does.
+    fn recheck(&self, pairs: &mut Eigenpairs) -> Result<(), &'static str> {
         let stored = pairs.check;
-        self.verify(pairs, |x, y| super::sparse::multiply(&self.stiffness, x, y))?;
-        if let Some((shift, counted)) = stored.inertia {
-            let below = pairs.eigenvalues.iter().filter(|&&l| l < shift).count();
-            if self.count_below(shift)? != counted || below != counted.min(pairs.eigenvalues.len())
-            {
-                return Err(BridgeError::EigenFailed);
-            }
+        let values = &pairs.eigenvalues;
+        if values.iter().any(|&l| !(l > 0.0 && l.is_finite()))
+            || values.windows(2).any(|w| w[1] < w[0])
+        {
+            return Err("its eigenvalues are not positive and ascending");
         }
+        self.verify(pairs, |x, y| super::sparse::multiply(&self.stiffness, x, y))
+            .map_err(|_| "its modes fail the residual or orthonormality check")?;
+        let count = pairs.eigenvalues.len();
+        let inertia = if count == self.order() {
+            None
+        } else {
+            let Some((shift, _)) = stored.inertia else {
+                return Err("it has no Sturm cut below the model's order");
+            };
+            let last = pairs.eigenvalues[count - 1];
+            let margin = CUT_MARGIN * pairs.check.largest_residual;
+            if !(shift.is_finite() && 1.0 - last / shift >= margin && shift > last) {
+                return Err("its Sturm cut is not clear of its last mode");
+            }
+            let below = self
+                .count_below(shift)
+                .map_err(|_| "its Sturm cut cannot be factorised")?;
+            if below != count {
+                return Err("a Sturm count of the model disagrees (a mode is missing)");
+            }
+            Some((shift, below))
+        };
+        pairs.check.inertia = inertia;
         if pairs.check != stored {
-            return Err(BridgeError::EigenFailed);
+            return Err("its check figures differ from the recomputed ones");
         }
         Ok(())
     }
 }
+
+/// How far (relative to the largest energy residual η) the Sturm cut of a
+/// cached file must lie above its last mode, 1 − λ̃/σ ≥ 100 η, so that each
+/// stored vector is within 1 % of the modes below the cut
+/// ([`Pencil::recheck`]).
+const CUT_MARGIN: f64 = 100.0;
 
 /// The default cache folder inside an output root: `<root>/.vbi-cache`.
 pub fn default_folder(output_root: &Path) -> PathBuf {
