@@ -123,7 +123,10 @@ fn textbook_scene(export: &Path, extra: &str) -> String {
     let scene = scene
         .replace("\"K.mtx\"", "\"K-slope.mtx\"")
         .replace("\"M.mtx\"", "\"M-slope.mtx\"")
-        .replace("  type: \"fe_import\"\n", &format!("  type: \"fe_import\"\n{extra}"));
+        .replace(
+            "  type: \"fe_import\"\n",
+            &format!("  type: \"fe_import\"\n{extra}"),
+        );
     assert!(scene.contains("K-slope.mtx"), "{scene}");
     std::fs::write(export.join("slope.yaml"), &scene).unwrap();
     scene
