@@ -75,8 +75,8 @@ pub(super) fn both_triangles(
             let (line, _) = place(earlier);
             let (er, ec, _) = file.entries[earlier];
             let how = if file.symmetric && (er, ec) != (r, c) {
-                "a `symmetric` file lists each off-diagonal entry once, in one triangle; this \
-                 one is in both"
+                "the file holds one triangle (`symmetric`), each off-diagonal entry once; this \
+                 one is given in both"
             } else {
                 "an assembled matrix lists each entry once"
             };
