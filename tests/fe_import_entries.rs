@@ -8,12 +8,36 @@
 //! (j, i) in it are the same entry given twice. A `general` file lists both,
 //! and (i, j) twice is a duplicate.
 
-mod support;
-
 use std::path::Path;
 use std::process::{Command, Output};
 
-use support::Scratch;
+/// A scratch folder under the system temp dir, unique per process and
+/// test, removed on drop (tests/support's, without the reference models
+/// that module compiles and tests).
+struct Scratch(std::path::PathBuf);
+
+impl Scratch {
+    fn new(binary: &str, test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    fn dir(&self) -> &Path {
+        &self.0
+    }
+
+    fn path(&self, name: &str) -> std::path::PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
 
 fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
     Command::new(env!("CARGO_BIN_EXE_vbi"))

@@ -10,13 +10,38 @@
 //! entry with exactly one ry index, which is exactly the change of variable
 //! θ = −ry: its runs must equal the export's bit for bit once declared.
 
-mod support;
-
 use std::path::Path;
 use std::process::{Command, Output};
 
-use support::Scratch;
 use vbi::bridge::fe_import::{Direction, abaqus, harwell_boeing};
+
+/// A scratch folder under the system temp dir, unique per process and
+/// test, removed on drop (tests/support's, without the reference models
+/// that module compiles and tests).
+struct Scratch(std::path::PathBuf);
+
+impl Scratch {
+    fn new(binary: &str, test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    fn dir(&self) -> &Path {
+        &self.0
+    }
+
+    fn path(&self, name: &str) -> std::path::PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
 
 fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
     Command::new(env!("CARGO_BIN_EXE_vbi"))
@@ -308,9 +333,10 @@ fn declared_textbook_rotations_run_as_the_export_bit_for_bit() {
     );
     // And the beam scene itself: the export reads the beam's element
     // matrices from shortest round-trip decimals and solves another
-    // eigenproblem path, so the histories agree to round-off, measured
-    // 2e-12 of each column's peak on this crossing (contact force 8e-11
-    // with rigid contact on the 20-element Fig. 4 beam); bound 1e-10.
+    // eigenproblem path, so the histories agree to round-off: measured
+    // 5e-13 (midspan displacement), 3e-11 (contact force) and 5e-11
+    // (midspan acceleration) of each column's peak on this crossing; bound
+    // 3e-10.
     run("beam.yaml", "beam", scratch.dir());
     let (names, beam) = history(&scratch.path("beam/history.csv"));
     let (names_imported, imported) = history(&export.join("declared/history.csv"));
@@ -323,7 +349,7 @@ fn declared_textbook_rotations_run_as_the_export_bit_for_bit() {
             .zip(&imported)
             .fold(0.0f64, |a, (x, y)| a.max((x[j] - y[j]).abs()));
         assert!(
-            worst <= 1e-10 * peak,
+            worst <= 3e-10 * peak,
             "{}: {worst} against peak {peak}",
             names[j]
         );
