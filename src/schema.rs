@@ -251,6 +251,11 @@ pub fn dof_name(schema: &mut Schema) {
     set(schema, "enum", names);
 }
 
+/// A sign: −1 or +1 (`rotation_sign`).
+pub fn sign(schema: &mut Schema) {
+    set(schema, "enum", vec![Value::from(-1), Value::from(1)]);
+}
+
 /// Elements per span: 1 to 10 000 (`bridges::elements`).
 pub fn elements_per_span(schema: &mut Schema) {
     at_least_one(schema);

@@ -39,6 +39,7 @@ pub(super) fn resolve(
     let mass_path = locate(&raw.mass);
     let stiffness = read_matrix(&stiffness_path, "bridge.stiffness", budget, ck);
     let mass = read_matrix(&mass_path, "bridge.mass", budget, ck);
+    let mut damping_path = None;
     let (damping, damping_file) = match &raw.damping {
         None => (ImportDamping::Modal { ratio: 0.0 }, None),
         Some(raw::ImportDampingRaw::Modal { ratio }) => {
@@ -71,6 +72,7 @@ pub(super) fn resolve(
         Some(raw::ImportDampingRaw::Matrix { file }) => {
             let path = locate(file);
             let read = read_matrix(&path, "bridge.damping.file", budget, ck);
+            damping_path = Some(path.clone());
             (
                 ImportDamping::Matrix {
                     file: path.display().to_string(),
@@ -164,6 +166,15 @@ pub(super) fn resolve(
         }
     }
     let constrained: Vec<NodeDof> = raw.constrained.clone().unwrap_or_default();
+    let rotation_sign = raw.rotation_sign.unwrap_or_default();
+    for (name, sign) in [("ry", rotation_sign.ry), ("rz", rotation_sign.rz)] {
+        if sign != 1 && sign != -1 {
+            ck.error(
+                &format!("bridge.rotation_sign.{name}"),
+                format!("a rotation's sign is -1 or 1, got {sign}"),
+            );
+        }
+    }
     let modes = super::bridges::resolve_modes(ck, raw.modes.as_ref());
     if ck.diagnostics.len() != before {
         return None;
@@ -197,21 +208,35 @@ pub(super) fn resolve(
         &pairs,
         &rails,
         &track_index,
+        rotation_sign,
     ) {
         Ok(model) => model,
         Err(e) => {
             let (path, file) = match e.source_input {
                 Source::Stiffness => ("bridge.stiffness".to_string(), Some(&stiffness_path)),
                 Source::Mass => ("bridge.mass".to_string(), Some(&mass_path)),
-                Source::Damping => ("bridge.damping.file".to_string(), None),
+                Source::Damping => ("bridge.damping.file".to_string(), damping_path.as_ref()),
                 Source::DofMap => ("bridge.dof_map".to_string(), dof_map_path.as_ref()),
                 Source::Constrained(i) => (format!("bridge.constrained[{i}]"), None),
                 Source::Rail(i) => (format!("bridge.rails[{i}]"), None),
                 Source::Track => ("bridge.track".to_string(), None),
+                Source::RotationSign(r) => {
+                    // At the option if written, else where it belongs.
+                    let at = format!("bridge.rotation_sign.{}", r.name());
+                    let at = if ck.has(&at) {
+                        at
+                    } else {
+                        "bridge".to_string()
+                    };
+                    (at, Some(&stiffness_path))
+                }
             };
-            let message = match file {
-                Some(f) => format!("{}: {}", f.display(), e.message),
-                None => e.message,
+            let message = match (file, e.place) {
+                (Some(f), Some((line, column))) => {
+                    format!("{}:{line}:{column}: {}", f.display(), e.message)
+                }
+                (Some(f), None) => format!("{}: {}", f.display(), e.message),
+                (None, _) => e.message,
             };
             ck.error(&path, message);
             return None;
@@ -226,6 +251,7 @@ pub(super) fn resolve(
         rails: rail_inputs,
         track,
         modes,
+        rotation_sign,
         spans: vec![model.length],
         model: Arc::new(model),
     })

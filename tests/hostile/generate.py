@@ -476,7 +476,52 @@ FE_FILES = {
     "M-nan.mtx": MM + "2 2 2\n1 1 NaN\n2 2 100.0\n",
     "rail-backwards.csv": "node,x\n1,5.0\n2,0.0\n",
     "rail-unknown.csv": "node,x\n1,0.0\n7,5.0\n",
+    # Issue 23: repeated entries, in each format where they can occur.
+    "K-repeated.mtx": "%%MatrixMarket matrix coordinate real general\n2 2 5\n"
+                      "1 1 2.0e6\n2 1 -1.0e6\n1 2 -1.0e6\n2 2 2.0e6\n1 1 2.0e6\n",
+    "K-both-triangles.mtx": MM + "2 2 4\n1 1 2.0e6\n2 1 -1.0e6\n1 2 -1.0e6\n2 2 2.0e6\n",
+    "K-repeated.abq": "** K\n1,3, 1,3, 2.0e6\n2,3, 1,3, -1.0e6\n2,3, 2,3, 2.0e6\n2,3, 1,3, -1.0e6\n",
+    "M.abq": "1,3, 1,3, 100.0\n2,3, 2,3, 100.0\n",
+    "K-repeated.hb": "two DOFs" + " " * 64 + "KEY     \n"
+                     + "".join(f"{v:>14}" for v in (3, 1, 1, 1, 0)) + "\n"
+                     + "RSA" + "".join(f"{v:>14}" for v in ("", 2, 2, 3, 0))[3:] + "\n"
+                     + "(4I8)           (4I8)           (4E10.3)            \n"
+                     + "       1       3       4\n       1       1       2\n"
+                     + " 2.000E+06-1.000E+06 2.000E+06\n",
+    "C-unsymmetric.mtx": "%%MatrixMarket matrix coordinate real general\n2 2 4\n"
+                         "1 1 2.0e3\n2 1 -1.0e3\n1 2 -2.0e3\n2 2 2.0e3\n",
 }
+
+
+def textbook_beam(elements=4, length=10.0, ei=1.0e9, m=1000.0):
+    """A simply supported beam's K and M (uz, θ per node, θ = +dw/dx: the
+    textbook Hermite element), lower triangles in Matrix Market form."""
+    h = length / elements
+    ke = [[12, 6 * h, -12, 6 * h], [6 * h, 4 * h * h, -6 * h, 2 * h * h],
+          [-12, -6 * h, 12, -6 * h], [6 * h, 2 * h * h, -6 * h, 4 * h * h]]
+    me = [[156, 22 * h, 54, -13 * h], [22 * h, 4 * h * h, 13 * h, -3 * h * h],
+          [54, 13 * h, 156, -22 * h], [-13 * h, -3 * h * h, -22 * h, 4 * h * h]]
+    n = 2 * (elements + 1)
+    k, mass = {}, {}
+    for e in range(elements):
+        for a in range(4):
+            for b in range(4):
+                r, c = 2 * e + a, 2 * e + b
+                if r >= c:
+                    k[(r, c)] = k.get((r, c), 0.0) + ei / h ** 3 * ke[a][b]
+                    mass[(r, c)] = mass.get((r, c), 0.0) + m * h / 420 * me[a][b]
+
+    def mtx(entries):
+        lines = [f"{r + 1} {c + 1} {v!r}" for (r, c), v in sorted(entries.items()) if v != 0.0]
+        return MM + f"{n} {n} {len(lines)}\n" + "\n".join(lines) + "\n"
+    dofs = "dof,node,direction\n" + "".join(
+        f"{2 * i + 1},{i + 1},uz\n{2 * i + 2},{i + 1},ry\n" for i in range(elements + 1))
+    rail = "node,x\n" + "".join(f"{i + 1},{i * h!r}\n" for i in range(elements + 1))
+    return mtx(k), mtx(mass), dofs, rail
+
+
+(FE_FILES["K-textbook.mtx"], FE_FILES["M-textbook.mtx"],
+ FE_FILES["dofs-beam.csv"], FE_FILES["rail-beam.csv"]) = textbook_beam()
 
 
 def fe_scene(stiffness="../fe/K.mtx", mass="../fe/M.mtx", rail="../fe/rail.csv"):
@@ -497,7 +542,8 @@ case("fe-truncated", "rejected", "a matrix file that ends before its declared en
 case("fe-out-of-range", "rejected", "an entry index beyond the declared order",
      fe_scene(stiffness="@@../fe/K-range.mtx"), "K-range.mtx:4:1: index 3 is outside 1")
 case("fe-unsymmetric", "rejected", "a general matrix that is not symmetric",
-     fe_scene(stiffness="@@../fe/K-unsymmetric.mtx"), "the matrix is not symmetric")
+     fe_scene(stiffness="@@../fe/K-unsymmetric.mtx"),
+     "K-unsymmetric.mtx:5:1: the matrix is not symmetric: entry (1, 2) = -2000000 but (2, 1) = -1000000 at line 4")
 case("fe-pattern", "rejected", "a pattern matrix has no values",
      fe_scene(stiffness="@@../fe/K-pattern.mtx"), "`pattern` entries are not read")
 case("fe-nan", "rejected", "a NaN mass entry",
@@ -508,6 +554,47 @@ case("fe-rail-backwards", "rejected", "a rail whose x does not increase",
      fe_scene(rail="@@../fe/rail-backwards.csv"), "rail-backwards.csv:3:2")
 case("fe-rail-unknown-node", "rejected", "a rail node missing from the DOF map",
      fe_scene(rail="../fe/rail-unknown.csv"), "node 7 is not in the DOF map")
+case("fe-repeated-general", "rejected",
+     "an entry given twice in a general Matrix Market file is refused, not summed (issue 23)",
+     fe_scene(stiffness="@@../fe/K-repeated.mtx"),
+     "K-repeated.mtx:7:1: entry (1, 1) (node 1 uz, node 1 uz) repeats entry (1, 1) of line 3")
+case("fe-repeated-both-triangles", "rejected",
+     "a symmetric Matrix Market file giving an entry in both triangles (issue 23)",
+     fe_scene(stiffness="@@../fe/K-both-triangles.mtx"),
+     "K-both-triangles.mtx:5:1: entry (1, 2) (node 1 uz, node 2 uz) repeats entry (2, 1) of line 4")
+case("fe-repeated-harwell-boeing", "rejected",
+     "a Harwell-Boeing column listing a row twice (issue 23)",
+     fe_scene(stiffness="@@../fe/K-repeated.hb"),
+     "K-repeated.hb:7:11: entry (1, 1) (node 1 uz, node 1 uz) repeats entry (1, 1) of line 7")
+case("fe-repeated-abaqus", "rejected", "an Abaqus entry line given twice (issue 23)",
+     scene(bridge="bridge:\n  type: fe_import\n  stiffness: @@../fe/K-repeated.abq\n"
+           "  mass: ../fe/M.abq\n  rails: [{name: rail, file: ../fe/rail.csv}]\n",
+           vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n"),
+     "K-repeated.abq:5:1: entry (2, 1) (node 2 uz, node 1 uz) repeats entry (2, 1) of line 3")
+case("fe-damping-unsymmetric", "rejected",
+     "an unsymmetric damping matrix is located in its own file (issue 23)",
+     fe_scene().replace("  rails:", "  damping: {type: matrix, file: @@../fe/C-unsymmetric.mtx}\n  rails:"),
+     "C-unsymmetric.mtx:5:1: the matrix is not symmetric: entry (1, 2) = -2000 but (2, 1) = -1000 at line 4")
+
+
+def beam_scene(extra="", at=""):
+    bridge = ("bridge:\n  " + at + "type: fe_import\n" + extra
+              + "  stiffness: ../fe/K-textbook.mtx\n  mass: ../fe/M-textbook.mtx\n"
+              "  dof_map: ../fe/dofs-beam.csv\n"
+              "  constrained: [{node: 1, direction: uz}, {node: 5, direction: uz}]\n"
+              "  rails: [{name: rail, file: ../fe/rail-beam.csv}]\n")
+    return scene(bridge=bridge, vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n")
+
+
+case("fe-rotation-textbook", "rejected",
+     "a textbook beam (theta = +dw/dx written as ry) is refused where rotation_sign belongs (issue 22)",
+     beam_scene(at="@@"),
+     "rail `rail`: the stiffness says ∂w/∂x = +ry (a textbook beam's θ) on 2 of its 4 segments")
+case("ok-fe-rotation-declared", "accepted",
+     "the textbook beam with `rotation_sign: {ry: -1}` (issue 22)",
+     beam_scene(extra="  rotation_sign: {ry: -1}\n"))
+case("fe-rotation-sign-value", "rejected", "a rotation sign other than -1 or 1",
+     beam_scene(extra="  rotation_sign: {ry: @@2}\n"), "a rotation's sign is -1 or 1, got 2")
 
 
 def locate(text):

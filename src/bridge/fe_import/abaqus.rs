@@ -17,6 +17,7 @@ type Key = (u64, u8);
 /// Parses an Abaqus coordinate matrix.
 pub fn parse(text: &str) -> Result<MatrixFile, ReadError> {
     let mut raw: Vec<(Key, Key, f64)> = Vec::new();
+    let mut places = Vec::new();
     let mut keys: BTreeMap<Key, usize> = BTreeMap::new();
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
@@ -62,6 +63,7 @@ pub fn parse(text: &str) -> Result<MatrixFile, ReadError> {
         keys.insert(a, 0);
         keys.insert(b, 0);
         raw.push((a, b, value));
+        places.push((n, super::matrix_market::column_of(line, fields[0])));
     }
     if raw.is_empty() {
         return Err(ReadError::new(
@@ -83,6 +85,7 @@ pub fn parse(text: &str) -> Result<MatrixFile, ReadError> {
         order: dofs.len(),
         symmetric: true,
         entries,
+        places,
         dofs: Some(dofs),
     })
 }

@@ -178,10 +178,11 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
     )?;
     let values = fields(&lines, &mut next, nnz, value_format, "values", |f, l, c| {
         let line = lines[l - 1];
-        super::parse_value(f, line, l).map_err(|e| ReadError {
+        let value = super::parse_value(f, line, l).map_err(|e| ReadError {
             column: Some(c),
             ..e
-        })
+        })?;
+        Ok((value, (l, c)))
     })?;
     if pointers[0] != 1 || pointers[n] != entries + 1 || pointers.windows(2).any(|w| w[1] < w[0]) {
         return Err(ReadError::new(
@@ -196,15 +197,18 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
         ));
     }
     let mut triplets = Vec::with_capacity(nnz);
+    let mut places = Vec::with_capacity(nnz);
     for col in 0..n {
         for p in pointers[col] as usize - 1..pointers[col + 1] as usize - 1 {
-            triplets.push((indices[p], col, values[p]));
+            triplets.push((indices[p], col, values[p].0));
+            places.push(values[p].1);
         }
     }
     Ok(MatrixFile {
         order: n,
         symmetric: kind == "RSA",
         entries: triplets,
+        places,
         dofs: None,
     })
 }

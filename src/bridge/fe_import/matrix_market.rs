@@ -119,6 +119,10 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
     triplets.try_reserve_exact(entries as usize).map_err(|_| {
         ReadError::new(size_line, None, "the declared entries do not fit in memory")
     })?;
+    let mut places = Vec::new();
+    places.try_reserve_exact(entries as usize).map_err(|_| {
+        ReadError::new(size_line, None, "the declared entries do not fit in memory")
+    })?;
     let mut last_line = size_line;
     for (n, line) in lines {
         last_line = n;
@@ -162,6 +166,7 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
         let (row, col) = (index(0)?, index(1)?);
         let value = super::parse_value(fields[2], line, n)?;
         triplets.push((row, col, value));
+        places.push((n, column_of(line, fields[0])));
     }
     if (triplets.len() as u64) < entries {
         return Err(ReadError::new(
@@ -177,6 +182,7 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
         order,
         symmetric,
         entries: triplets,
+        places,
         dofs: None,
     })
 }

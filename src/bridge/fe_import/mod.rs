@@ -11,9 +11,11 @@
 //! units (K in N/m and N·m/rad, M in kg and kg·m², C in N·s/m).
 
 pub mod abaqus;
+mod entries;
 pub mod harwell_boeing;
 pub mod matrix_market;
 pub mod modal;
+pub mod rotation;
 pub mod tables;
 pub mod track;
 
@@ -90,6 +92,54 @@ impl Direction {
     }
 }
 
+/// How the file's slope rotations turn into this program's right-handed
+/// ones (∂w/∂x = −ry, ∂v/∂x = +rz): ry here = `ry` × ry in the file, and the
+/// same for rz. A 2D textbook beam's θ = +∂w/∂x written as ry needs
+/// `ry: -1`. The files' K, M and C are read with the sign of every entry
+/// with exactly one such rotation index flipped (θ = −ry is a change of
+/// variable: frequencies unchanged, mode shapes' rotations negated), and a
+/// record of the rotation reports the right-handed value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RotationSign {
+    /// Sign of the file's ry (−1 or +1; default +1): −1 when the file's ry
+    /// is the slope +∂w/∂x.
+    #[serde(default = "plus_one")]
+    #[schemars(transform = crate::schema::sign)]
+    pub ry: i64,
+    /// Sign of the file's rz (−1 or +1; default +1): −1 when the file's rz
+    /// is −∂v/∂x.
+    #[serde(default = "plus_one")]
+    #[schemars(transform = crate::schema::sign)]
+    pub rz: i64,
+}
+
+fn plus_one() -> i64 {
+    1
+}
+
+impl Default for RotationSign {
+    fn default() -> Self {
+        Self { ry: 1, rz: 1 }
+    }
+}
+
+impl RotationSign {
+    /// The sign of `direction` (1 for a translation or rx).
+    pub fn of(&self, direction: Direction) -> i64 {
+        match direction {
+            Direction::Ry => self.ry,
+            Direction::Rz => self.rz,
+            _ => 1,
+        }
+    }
+
+    /// Whether it is the default (nothing flipped).
+    pub fn is_default(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
 /// A problem at a line (and column) of one file.
 #[derive(Debug, Clone, Error, PartialEq)]
 #[error("{}: {message}", match column { Some(c) => format!("line {line}, column {c}"), None => format!("line {line}") })]
@@ -128,6 +178,9 @@ pub struct MatrixFile {
     pub symmetric: bool,
     /// (row, column, value), 0-based.
     pub entries: Vec<(usize, usize, f64)>,
+    /// (line, column) of each entry in its file, from 1: where a duplicate
+    /// or an asymmetric entry is reported.
+    pub places: Vec<(usize, usize)>,
     /// (node, direction) of each row, when the format names them.
     pub dofs: Option<Vec<(u64, Direction)>>,
 }
@@ -167,6 +220,8 @@ pub enum Source {
     Rail(usize),
     /// `track`.
     Track,
+    /// `rotation_sign` of this rotation (or where it belongs).
+    RotationSign(Direction),
 }
 
 /// A problem found while assembling an imported model.
@@ -175,6 +230,8 @@ pub enum Source {
 pub struct AssemblyError {
     /// Where it comes from.
     pub source_input: Source,
+    /// (line, column) in that input's file, from 1, when one entry is to blame.
+    pub place: Option<(usize, usize)>,
     /// What is wrong.
     pub message: String,
 }
@@ -182,6 +239,20 @@ pub struct AssemblyError {
 fn fail<T>(source: Source, message: impl Into<String>) -> Result<T, AssemblyError> {
     Err(AssemblyError {
         source_input: source,
+        place: None,
+        message: message.into(),
+    })
+}
+
+/// [`fail`] at an entry's (line, column) of the source's file.
+fn fail_at<T>(
+    source: Source,
+    place: (usize, usize),
+    message: impl Into<String>,
+) -> Result<T, AssemblyError> {
+    Err(AssemblyError {
+        source_input: source,
+        place: Some(place),
         message: message.into(),
     })
 }
@@ -236,6 +307,7 @@ impl ImportedModel {
         constrained: &[(u64, Direction)],
         rails: &[RailNodes],
         track: &[usize],
+        rotation_sign: RotationSign,
     ) -> Result<Self, AssemblyError> {
         let map = match (map, &stiffness.dofs) {
             (Some(map), _) => map,
@@ -259,11 +331,29 @@ impl ImportedModel {
         }
         let position: HashMap<(u64, Direction), usize> =
             map.iter().enumerate().map(|(i, &k)| (k, i)).collect();
-        let k = full(stiffness, &map, &position, Source::Stiffness)?;
-        let m = full(mass, &map, &position, Source::Mass)?;
+        let k = entries::both_triangles(stiffness, &map, &position, Source::Stiffness)?;
+        let m = entries::both_triangles(mass, &map, &position, Source::Mass)?;
         let c = match damping {
-            Some(c) => Some(full(c, &map, &position, Source::Damping)?),
+            Some(c) => Some(entries::both_triangles(
+                c,
+                &map,
+                &position,
+                Source::Damping,
+            )?),
             None => None,
+        };
+        // θ_here = sign · θ_file: D K D with D = diag(sign), exact.
+        let (k, m, c) = if rotation_sign.is_default() {
+            (k, m, c)
+        } else {
+            let sign = |i: usize| rotation_sign.of(map[i].1) as f64;
+            let flip = |entries: Vec<(usize, usize, f64)>| -> Vec<(usize, usize, f64)> {
+                entries
+                    .into_iter()
+                    .map(|(r, c, v)| (r, c, sign(r) * sign(c) * v))
+                    .collect()
+            };
+            (flip(k), flip(m), c.map(flip))
         };
         let mut free = vec![true; n];
         for (i, &(node, direction)) in constrained.iter().enumerate() {
@@ -400,6 +490,13 @@ impl ImportedModel {
         if track.is_empty() || track.iter().any(|&t| t >= rails.len()) {
             return fail(Source::Track, "the track names no rail");
         }
+        for rail in &rail_dofs {
+            for plane in 0..2 {
+                if rail.hermite[plane] {
+                    rotation::check(&k, rail, plane, rotation_sign)?;
+                }
+            }
+        }
         Ok(Self {
             dofs,
             stiffness: k,
@@ -418,104 +515,4 @@ impl ImportedModel {
     pub fn dof(&self, node: u64, direction: Direction) -> Option<usize> {
         self.dofs.iter().position(|&d| d == (node, direction))
     }
-}
-
-/// Both triangles of a read matrix on the map's DOFs: a symmetric file's
-/// triangle mirrored (refused if it holds entries of both triangles), a
-/// general file checked for symmetry within [`SYMMETRY_TOLERANCE`] and
-/// symmetrised, a file naming its own DOFs (Abaqus) renumbered by the map.
-fn full(
-    file: MatrixFile,
-    map: &[(u64, Direction)],
-    position: &HashMap<(u64, Direction), usize>,
-    source: Source,
-) -> Result<Vec<(usize, usize, f64)>, AssemblyError> {
-    let renumber: Option<Vec<usize>> = match &file.dofs {
-        Some(dofs) => {
-            let mut out = Vec::with_capacity(dofs.len());
-            for &(node, d) in dofs {
-                match position.get(&(node, d)) {
-                    Some(&i) => out.push(i),
-                    None => {
-                        return fail(
-                            source,
-                            format!(
-                                "node {node} {} is not among the stiffness matrix's DOFs",
-                                d.name()
-                            ),
-                        );
-                    }
-                }
-            }
-            Some(out)
-        }
-        None => {
-            if file.order != map.len() {
-                return fail(
-                    source,
-                    format!(
-                        "the matrix has order {} but the DOF map and stiffness have {}",
-                        file.order,
-                        map.len()
-                    ),
-                );
-            }
-            None
-        }
-    };
-    let at = |i: usize| renumber.as_ref().map_or(i, |r| r[i]);
-    let mut summed: HashMap<(usize, usize), f64> = HashMap::new();
-    let (mut lower, mut upper) = (false, false);
-    for &(r, c, v) in &file.entries {
-        lower |= r > c;
-        upper |= r < c;
-        *summed.entry((at(r), at(c))).or_insert(0.0) += v;
-    }
-    let mut keys: Vec<(usize, usize)> = summed.keys().copied().collect();
-    keys.sort_unstable();
-    let mut out = Vec::with_capacity(2 * keys.len());
-    if file.symmetric {
-        if lower && upper {
-            return fail(
-                source,
-                "a `symmetric` file must hold one triangle only; this one has entries on both \
-                 sides of the diagonal (write it as `general`)",
-            );
-        }
-        for (r, c) in keys {
-            let v = summed[&(r, c)];
-            out.push((r, c, v));
-            if r != c {
-                out.push((c, r, v));
-            }
-        }
-        return Ok(out);
-    }
-    let largest = summed.values().fold(0.0f64, |a, v| a.max(v.abs()));
-    for (r, c) in keys {
-        let v = summed[&(r, c)];
-        let mirror = summed.get(&(c, r)).copied().unwrap_or(0.0);
-        if (v - mirror).abs() > SYMMETRY_TOLERANCE * largest {
-            let (a, b) = (map[r], map[c]);
-            return fail(
-                source,
-                format!(
-                    "the matrix is not symmetric: entry ({}, {}) = {v} but ({}, {}) = {mirror} \
-                     (rows {} {} and {} {}), beyond {SYMMETRY_TOLERANCE:e} of the largest entry",
-                    r + 1,
-                    c + 1,
-                    c + 1,
-                    r + 1,
-                    a.0,
-                    a.1.name(),
-                    b.0,
-                    b.1.name()
-                ),
-            );
-        }
-        // (A + Aᵀ)/2: each stored entry contributes half to both places.
-        out.push((r, c, 0.5 * v));
-        out.push((c, r, 0.5 * v));
-    }
-    Ok(out)
 }

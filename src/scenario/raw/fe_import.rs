@@ -4,7 +4,7 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::ModesRaw;
-use crate::bridge::fe_import::Direction;
+use crate::bridge::fe_import::{Direction, RotationSign};
 
 /// A bridge imported from a finite-element program: stiffness and mass
 /// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`
@@ -41,6 +41,12 @@ pub struct FeImportRaw {
     /// Which modes to keep. Default: chosen automatically, as for a beam.
     #[serde(default)]
     pub modes: Option<ModesRaw>,
+    /// Signs of the files' slope rotations against this program's
+    /// right-handed ones (∂w/∂x = −ry, ∂v/∂x = +rz): `{ry: -1}` reads a
+    /// textbook beam's θ = +∂w/∂x written as ry. Default `{ry: 1, rz: 1}`;
+    /// a sign the stiffness contradicts along a rail is refused.
+    #[serde(default)]
+    pub rotation_sign: Option<RotationSign>,
 }
 
 /// A node's DOF.

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use super::{Damping, Modes};
-use crate::bridge::fe_import::ImportedModel;
+use crate::bridge::fe_import::{ImportedModel, RotationSign};
 pub use crate::scenario::raw::{NodeDofRaw as NodeDof, RailNodeRaw as RailNode};
 
 /// An imported finite-element bridge.
@@ -30,6 +30,9 @@ pub struct FeImport {
     pub track: Vec<String>,
     /// Mode selection.
     pub modes: Modes,
+    /// Signs of the files' slope rotations (ry here = sign × ry in the files).
+    #[serde(skip_serializing_if = "RotationSign::is_default")]
+    pub rotation_sign: RotationSign,
     /// One span: the deck length from the first rail node to the last, m
     /// (the supports of an imported model are not known by position).
     #[serde(skip)]
