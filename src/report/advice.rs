@@ -21,8 +21,16 @@ pub const IMPLAUSIBLE_ACCELERATION: f64 = 10.0;
 pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
     let mut out = Vec::new();
     for (i, vehicle) in scenario.vehicles.iter().enumerate() {
-        if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed()) {
-            out.push(w);
+        // A speed written with its unit (`238.9 m/s`) is meant: a moving
+        // force at a beam's critical speed 2 f₁ L is often far faster
+        // than any train. Only a bare number can be a km/h value typed as
+        // m/s.
+        let stated = scenario.speeds_stated.get(i).copied().unwrap_or(false);
+        if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed())
+            && !stated
+        {
+            let v = vehicle.speed();
+            out.push(format!("{w}; if {v} m/s is meant, write `speed: {v} m/s`"));
         }
         let a = vehicle.acceleration();
         if a.abs() > IMPLAUSIBLE_ACCELERATION {
