@@ -166,7 +166,11 @@ study:
             .any(|p| (p.speed * 3.6 - v).abs() <= 0.005 + 1e-9)
     };
     for i in 0..13 {
-        assert!(run_at(from + 5.0 * i as f64), "{} km/h", from + 5.0 * i as f64);
+        assert!(
+            run_at(from + 5.0 * i as f64),
+            "{} km/h",
+            from + 5.0 * i as f64
+        );
     }
     assert!(run_at(resonance) && run_at(360.0));
     let peak = check

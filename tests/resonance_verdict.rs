@@ -5,12 +5,35 @@
 //! and the additional damping Δζ of EN 1991-2 6.4.6.3.1(3) is the code's
 //! formula and acts as that much more modal damping.
 
-mod support;
-
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use support::Scratch;
+// (Not `mod support`: its own tests would run again in this binary.)
+/// A scratch folder unique per process and test, removed on drop.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(binary: &str, test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    fn dir(&self) -> &Path {
+        &self.0
+    }
+
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
 
 /// The check's exit status when it fails (README, "Exit codes").
 const EXIT_CHECK_FAILED: i32 = 3;
@@ -95,18 +118,26 @@ study:
 "
     );
     std::fs::write(scratch.path("top.yaml"), scene).unwrap();
-    let out = vbi(&["run", "top.yaml", "--out", "out", "--quiet"], scratch.dir());
+    let out = vbi(
+        &["run", "top.yaml", "--out", "out", "--quiet"],
+        scratch.dir(),
+    );
     let csv = std::fs::read_to_string(scratch.path("out/resonance.csv"))
         .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
     let speeds = km_h_column(&csv, "HSLM-A3");
-    assert_eq!(speeds.first().map(String::as_str), Some("144"), "{speeds:?}");
+    assert_eq!(
+        speeds.first().map(String::as_str),
+        Some("144"),
+        "{speeds:?}"
+    );
     assert_eq!(speeds.last().map(String::as_str), Some("360"), "{speeds:?}");
 }
 
 /// HSLM-A3 (D = 20 m) on the 20 m span resonates at f₀·D = 359.87 km/h and
 /// f₀·D/2 = 179.93 km/h (f₀ from the closed form); both are in the grid
 /// (rounded to 0.01 km/h), with quarter steps (±5, ±10 km/h for a 20 km/h
-/// step) around them inside the range, and 1.2 × 300 = 360 km/h too. The
+/// step) around them inside the range unless a regular speed is within
+/// 2 km/h, and 1.2 × 300 = 360 km/h too. The
 /// km/h column prints short decimals only (no float noise such as
 /// 359.00000000000006): at most two decimals.
 #[test]
@@ -134,11 +165,17 @@ study: {{type: resonance_check, trains: [A3], line_speed: 300 km/h, speeds: {{st
     let has = |v: f64| values.iter().any(|s| (s - v).abs() <= 0.005 + 1e-9);
     for k in [1.0, 2.0] {
         let resonance = first_frequency() * 20.0 * 3.6 / k;
-        assert!(has(resonance), "f0 D/{k} = {resonance} km/h not in {values:?}");
+        assert!(
+            has(resonance),
+            "f0 D/{k} = {resonance} km/h not in {values:?}"
+        );
+        // A quarter step is left out only where a regular speed lies
+        // within a tenth of a step (2 km/h) of it.
         for q in [-10.0, -5.0, 5.0, 10.0] {
             let v = resonance + q;
+            let near = values.iter().any(|s| (s - v).abs() < 2.0);
             if v <= 360.0 {
-                assert!(has(v), "{v} km/h not in {values:?}");
+                assert!(has(v) || near, "{v} km/h not in {values:?}");
             }
         }
     }
@@ -195,7 +232,10 @@ study: {{type: resonance_check, trains: [{trains}], line_speed: 200 km/h, speeds
     };
     assert!(row("HSLM-A1 ").ends_with("pass"), "{stderr}");
     assert!(row("HSLM-A5 ").ends_with("FAIL"), "{stderr}");
-    assert!(stderr.contains("FAILS (HSLM-A5 above 3.5 m/s^2)"), "{stderr}");
+    assert!(
+        stderr.contains("FAILS (HSLM-A5 above 3.5 m/s^2)"),
+        "{stderr}"
+    );
     let (code, _, _, _) = run_check(&scratch, "quiet", &scene("A1, A5"), true);
     assert_eq!(code, EXIT_CHECK_FAILED);
     let (code, stderr, _, summary) = run_check(&scratch, "a1", &scene("A1"), false);
@@ -229,7 +269,10 @@ fn the_additional_damping_is_en_1991_2_eq_6_13() {
         let taken = &summary["additional_damping"];
         assert_eq!(taken["span_m"], span, "{stderr}");
         let got = taken["additional_percent"].as_f64().unwrap();
-        assert!((got - percent).abs() < 1e-12, "L = {span}: {got} % vs {percent} %");
+        assert!(
+            (got - percent).abs() < 1e-12,
+            "L = {span}: {got} % vs {percent} %"
+        );
     }
     // L = 20 m: with Δζ against ζ + Δζ given directly.
     let (_, _, with, _) = run_check(&scratch, "with", &scene(20.0, "0.01", true), true);
@@ -248,7 +291,10 @@ fn the_additional_damping_is_en_1991_2_eq_6_13() {
         assert!((a - b).abs() <= 1e-9 * b, "{with:?} vs {direct:?}");
     }
     // More damping, lower peaks (A1 resonates at f₀·18/2 = 179.9 km/h).
-    assert!(with.iter().zip(&without).all(|(a, b)| a < b), "{with:?} vs {without:?}");
+    assert!(
+        with.iter().zip(&without).all(|(a, b)| a < b),
+        "{with:?} vs {without:?}"
+    );
 }
 
 /// `additional_damping` on a two-span bridge is refused, located, exit 2.

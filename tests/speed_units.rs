@@ -124,7 +124,10 @@ fn implausible_speeds_are_warned_about() {
     // Written with its unit, 300 m/s is meant (a moving force at a stiff
     // beam's critical speed 2 f₁ L, scenarios/moving-force-critical.yaml):
     // no warning. The bare number's warning says how to state it.
-    assert!(warnings[0].contains("write `speed: 300 m/s`"), "{warnings:?}");
+    assert!(
+        warnings[0].contains("write `speed: 300 m/s`"),
+        "{warnings:?}"
+    );
     let meant = load_str(&scene("300 m/s", 0.1), "units.yaml").unwrap_or_else(|e| panic!("{e}"));
     assert!(scene_warnings(&meant.scenario).is_empty());
 }

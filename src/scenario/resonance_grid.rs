@@ -53,8 +53,8 @@ pub fn additional_damping_percent(span: f64) -> f64 {
         return 0.0;
     }
     let l = span;
-    let value = (0.0187 * l - 0.00064 * l * l)
-        / (1.0 - 0.0441 * l - 0.0044 * l * l + 0.000255 * l * l * l);
+    let value =
+        (0.0187 * l - 0.00064 * l * l) / (1.0 - 0.0441 * l - 0.0044 * l * l + 0.000255 * l * l * l);
     value.max(0.0)
 }
 
@@ -92,7 +92,10 @@ impl ResonanceCheck {
     /// one off [`Self::resonance_speeds_km_h`] at its ends, from rounding).
     pub fn resonance_count(&self, train: usize) -> usize {
         let (_, orders) = self.resonance_orders(train);
-        orders.end().saturating_add(1).saturating_sub(*orders.start())
+        orders
+            .end()
+            .saturating_add(1)
+            .saturating_sub(*orders.start())
     }
 
     /// The resonance speeds f₀·D/k of `train` (k = 1, 2, …) within the
@@ -139,9 +142,7 @@ impl ResonanceCheck {
         for r in resonances {
             for q in REFINEMENT {
                 let v = clean(r + q * step);
-                let free = speeds
-                    .iter()
-                    .all(|s| (s - v).abs() >= MIN_SPACING * step);
+                let free = speeds.iter().all(|s| (s - v).abs() >= MIN_SPACING * step);
                 if v >= from && v <= top && free {
                     let at = speeds.partition_point(|s| *s < v);
                     speeds.insert(at, v);

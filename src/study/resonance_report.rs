@@ -79,13 +79,7 @@ impl ResonanceResults {
         for v in self.verdicts() {
             let (a, speed, x) = v.max_acceleration.as_ref().map_or_else(
                 || ("-".into(), "-".into(), "-".into()),
-                |g| {
-                    (
-                        format!("{:.3}", g.value),
-                        number(g.speed_km_h),
-                        number(g.x),
-                    )
-                },
+                |g| (format!("{:.3}", g.value), number(g.speed_km_h), number(g.x)),
             );
             let _ = writeln!(
                 out,
@@ -108,7 +102,10 @@ impl ResonanceResults {
             .map(|v| v.train)
             .collect();
         if failing.is_empty() {
-            format!("EN 1991-2 resonance check PASSES (every train within {} m/s^2)", self.limit)
+            format!(
+                "EN 1991-2 resonance check PASSES (every train within {} m/s^2)",
+                self.limit
+            )
         } else {
             format!(
                 "EN 1991-2 resonance check FAILS ({} above {} m/s^2)",

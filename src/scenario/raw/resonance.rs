@@ -82,5 +82,6 @@ pub struct ResonanceCheckRaw {
     /// (1 − 0.0441 L − 0.0044 L² + 0.000255 L³), L the span in m, to every
     /// mode's damping ratio. A single span only. Default `false`.
     #[serde(default)]
+    #[schemars(extend("default" = false))]
     pub additional_damping: Option<bool>,
 }

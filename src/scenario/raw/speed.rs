@@ -71,9 +71,7 @@ impl<'de> Deserialize<'de> for SpeedRaw {
                 Ok(SpeedRaw(v as f64, false))
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<SpeedRaw, E> {
-                parse_speed(v)
-                    .map(|v| SpeedRaw(v, true))
-                    .map_err(E::custom)
+                parse_speed(v).map(|v| SpeedRaw(v, true)).map_err(E::custom)
             }
         }
         deserializer.deserialize_any(SpeedVisitor)
