@@ -1,7 +1,8 @@
 //! The files of a resonance check: resonance.csv (every run),
 //! resonance_trains.csv (the verdict per train), resonance.png (deck
 //! acceleration against speed per train, with the limit as a black dashed
-//! line and the verdict in the title), resonance_displacement.png,
+//! line, each train's verdict in its legend entry and the overall one in
+//! the title), resonance_displacement.png,
 //! resolved.yaml and, last, summary.json; and the verdict table the
 //! command line prints.
 
@@ -136,8 +137,13 @@ pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Res
     write_atomic(&out.join("resonance_trains.csv"), &results.trains_csv())?;
     let speed_label = "speed (km/h)";
     let accelerations = results.curves(|p| p.max_acceleration);
-    let series: Vec<Series> = results
-        .trains
+    // Each train's verdict in its legend entry.
+    let labels: Vec<String> = results
+        .verdicts()
+        .iter()
+        .map(|v| format!("{} {}", v.train, if v.passes { "pass" } else { "FAIL" }))
+        .collect();
+    let series: Vec<Series> = labels
         .iter()
         .zip(&accelerations)
         .map(|(label, (x, y))| Series { label, x, y })
@@ -166,7 +172,12 @@ pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Res
             "{}: peak deck acceleration (modes up to {:.1} Hz): {}",
             scenario.name,
             results.max_frequency,
-            if results.passes() { "PASSES" } else { "FAILS" }
+            if results.passes() {
+                "PASSES".to_string()
+            } else {
+                let failing = results.verdicts().iter().filter(|v| !v.passes).count();
+                format!("FAILS ({failing} of {} trains)", results.trains.len())
+            }
         ),
         speed_label,
         "max |deck acceleration| (m/s^2)",
