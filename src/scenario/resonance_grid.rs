@@ -71,40 +71,39 @@ impl ResonanceCheck {
         m_s(km_h(self.speeds.to).max(self.max_speed_km_h()))
     }
 
-    /// f₀·D of `train` in km/h and the orders k of its resonance speeds
-    /// f₀·D/k within the checked range, from `speeds.from` to the top
-    /// speed.
-    fn resonance_orders(&self, train: usize) -> (f64, std::ops::RangeInclusive<usize>) {
+    /// f₀·D of `train` in km/h and the lowest and highest orders k of its
+    /// resonance speeds f₀·D/k within the checked range, from
+    /// `speeds.from` to the top speed (`None`: no resonance there).
+    fn resonance_orders(&self, train: usize) -> Option<(f64, usize, usize)> {
         let coach = self.trains[train].train().coach_length;
         let first = self.first_frequency * coach * KM_H_PER_M_S;
         let (lo, hi) = (km_h(self.speeds.from), km_h(self.top_speed()));
         if !(first.is_finite() && first > 0.0 && lo > 0.0 && hi >= lo) {
-            return (first, 1..=0);
+            return None;
         }
-        let k_lo = (first / hi).ceil().max(1.0);
-        let k_hi = (first / lo).floor();
         // Saturating casts: an absurd f₀ gives a huge count, refused by the
         // caller before any list is built.
-        (first, k_lo as usize..=k_hi as usize)
+        let k_lo = (first / hi).ceil().max(1.0) as usize;
+        let k_hi = (first / lo).floor() as usize;
+        (k_lo <= k_hi).then_some((first, k_lo, k_hi))
     }
 
     /// Number of resonance speeds of `train` in the checked range (at most
     /// one off [`Self::resonance_speeds_km_h`] at its ends, from rounding).
     pub fn resonance_count(&self, train: usize) -> usize {
-        let (_, orders) = self.resonance_orders(train);
-        orders
-            .end()
-            .saturating_add(1)
-            .saturating_sub(*orders.start())
+        self.resonance_orders(train)
+            .map_or(0, |(_, k_lo, k_hi)| (k_hi - k_lo).saturating_add(1))
     }
 
     /// The resonance speeds f₀·D/k of `train` (k = 1, 2, …) within the
     /// checked range, from `speeds.from` to the top speed, km/h, fastest
     /// first, each rounded to 0.01 km/h.
     pub fn resonance_speeds_km_h(&self, train: usize) -> Vec<f64> {
-        let (first, orders) = self.resonance_orders(train);
+        let Some((first, k_lo, k_hi)) = self.resonance_orders(train) else {
+            return Vec::new();
+        };
         let (lo, hi) = (km_h(self.speeds.from), km_h(self.top_speed()));
-        orders
+        (k_lo..=k_hi)
             .map(|k| clean((first / k as f64 / RESONANCE_ROUNDING).round() * RESONANCE_ROUNDING))
             .filter(|&v| v >= lo && v <= hi)
             .collect()
@@ -180,6 +179,52 @@ impl ResonanceCheck {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scenario::raw::{DeckRaw, HslmModel};
+    use crate::scenario::resolved::ResonanceSpeeds;
+
+    /// HSLM-A1 (D = 18 m) at speeds in km/h over a bridge of f₀ Hz.
+    fn check(from: f64, to: f64, step: f64, line: f64, f0: f64) -> ResonanceCheck {
+        ResonanceCheck {
+            trains: vec![HslmModel::A1],
+            line_speed: m_s(line),
+            speeds: ResonanceSpeeds {
+                from: m_s(from),
+                to: m_s(to),
+                step: m_s(step),
+            },
+            deck: DeckRaw::Ballasted,
+            max_frequency: 30.0,
+            first_frequency: f0,
+            additional_damping: None,
+        }
+    }
+
+    /// 200 to 250 km/h in 20 km/h steps misses 250 and stops below the
+    /// maximum 1.2 × 300 = 360 km/h: both are added; f₀·D = 5 × 18 × 3.6
+    /// = 324 km/h is added with ±5 and ±10 km/h around it; f₀·D/2 = 162
+    /// km/h is below the range.
+    #[test]
+    fn the_grid_keeps_the_top_the_maximum_and_each_resonance() {
+        let c = check(200.0, 250.0, 20.0, 300.0, 5.0);
+        assert_eq!(c.resonance_speeds_km_h(0), [324.0]);
+        assert_eq!(
+            c.speeds_km_h(0),
+            [
+                200.0, 220.0, 240.0, 250.0, 314.0, 319.0, 324.0, 329.0, 334.0, 360.0
+            ]
+        );
+        assert_eq!(c.run_count(), 10);
+        assert!(c.run_bound() >= 10.0);
+        assert_eq!(c.top_speed(), m_s(360.0));
+    }
+
+    /// Eq. (6.13) by hand at 10 m (0.123 / 0.374 %), none from 30 m on.
+    #[test]
+    fn the_additional_damping_follows_eq_6_13() {
+        assert!((additional_damping_percent(10.0) - 0.123 / 0.374).abs() < 1e-12);
+        assert_eq!(additional_damping_percent(30.0), 0.0);
+        assert_eq!(additional_damping_percent(45.0), 0.0);
+    }
 
     #[test]
     fn cleaning_removes_conversion_noise() {

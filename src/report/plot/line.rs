@@ -5,6 +5,7 @@ use super::*;
 /// Series with at most this many points get a dot at each.
 const MAX_MARKED_POINTS: usize = 60;
 
+#[allow(clippy::too_many_arguments)]
 pub(super) fn render_line_chart(
     title: &str,
     x_label: &str,
