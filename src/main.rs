@@ -220,6 +220,9 @@ macro_rules! errln {
 
 const EXIT_FAILED: u8 = 1;
 const EXIT_INVALID: u8 = 2;
+/// A check ran and its verdict is "fails" (an HSLM resonance check above
+/// the deck-acceleration limit): distinct from a failed run and bad input.
+const EXIT_CHECK_FAILED: u8 = 3;
 
 // After the macros, which it uses.
 mod studies;

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use super::{EXIT_FAILED, EXIT_INVALID, default_out, emit, load_error, run};
+use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, default_out, emit, load_error, run};
 use vbi::scenario::{self, LoadError};
 
 /// Writes a study's results into `out` and says what it found.
@@ -28,8 +28,14 @@ pub(super) fn write_study(
         errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }
+    // A failed resonance check is a verdict, not an error: the files are
+    // written, the exit status tells CI.
+    let verdict = match results {
+        Results::ResonanceCheck(check) if !check.passes() => ExitCode::from(EXIT_CHECK_FAILED),
+        _ => ExitCode::SUCCESS,
+    };
     if quiet {
-        return ExitCode::SUCCESS;
+        return verdict;
     }
     match results {
         Results::Scene(_) => {}
@@ -39,7 +45,7 @@ pub(super) fn write_study(
                 .governing_acceleration
                 .map(|g| {
                     format!(
-                        ", largest deck acceleration {:.3} m/s^2 ({}, {:.1} km/h, x = {} m): {} the {} m/s^2 limit",
+                        ", largest deck acceleration {:.3} m/s^2 ({}, {} km/h, x = {} m): {} the {} m/s^2 limit",
                         g.value,
                         g.train,
                         g.speed_km_h,
@@ -55,6 +61,7 @@ pub(super) fn write_study(
                 check.points.len(),
                 check.wall_time
             );
+            errln!("{}", check.verdict_table().trim_end());
         }
         Results::SeparationMap(map) => errln!(
             "{}: separation map of {} points, {} separated, {:.2} s",
@@ -96,7 +103,7 @@ pub(super) fn write_study(
         }
     }
     errln!("results in {}", out.display());
-    ExitCode::SUCCESS
+    verdict
 }
 
 fn progress_bar(quiet: bool, message: &str) -> ProgressBar {

@@ -344,6 +344,19 @@ fn resonance_snapshots(check: &vbi::study::resonance::ResonanceResults) -> (Stri
         governing(&summary.governing_displacement),
         summary.passes
     );
+    // The verdict per train (EN 1991-2 6.4.6), with its resonance speeds.
+    let mut text = text;
+    for v in &summary.trains {
+        let resonances: Vec<String> = v.resonance_speeds_km_h.iter().map(|&r| number(r)).collect();
+        text.push_str(&format!(
+            "{}: {} (resonances [{}] km/h; {} runs; largest acceleration {})\n",
+            v.train,
+            if v.passes { "pass" } else { "FAIL" },
+            resonances.join(", "),
+            v.runs,
+            governing(&v.max_acceleration)
+        ));
+    }
     let mut table = String::from(
         "train speed_km_h max_displacement_m at_m max_acceleration_m/s^2 at_m time_step_s\n",
     );

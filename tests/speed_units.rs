@@ -121,6 +121,15 @@ fn implausible_speeds_are_warned_about() {
     assert!(warnings[0].contains("1080 km/h") && warnings[0].contains("`speed: 300 km/h`"));
     let train = load_str(&scene("300 km/h", 0.1), "units.yaml").unwrap_or_else(|e| panic!("{e}"));
     assert!(scene_warnings(&train.scenario).is_empty());
+    // Written with its unit, 300 m/s is meant (a moving force at a stiff
+    // beam's critical speed 2 f₁ L, scenarios/moving-force-critical.yaml):
+    // no warning. The bare number's warning says how to state it.
+    assert!(
+        warnings[0].contains("write `speed: 300 m/s`"),
+        "{warnings:?}"
+    );
+    let meant = load_str(&scene("300 m/s", 0.1), "units.yaml").unwrap_or_else(|e| panic!("{e}"));
+    assert!(scene_warnings(&meant.scenario).is_empty());
 }
 
 /// Above the critical speed v_cr = 2 f₁ L = 238.9 m/s the largest deflection

@@ -9,7 +9,9 @@ use crate::scenario::resolved::{Quantity, Scenario, Study};
 /// Speeds above this, m/s (468 km/h), are faster than any wheeled vehicle in
 /// service: the fastest trains run at 350 km/h and an EN 1991-2 resonance
 /// check goes to 1.2 × the line speed (420 km/h for 350 km/h). Such a speed
-/// is most often a km/h value typed where m/s is meant.
+/// written as a bare number is most often a km/h value typed where m/s is
+/// meant; written with its unit it is meant (a moving force at a stiff
+/// beam's critical speed 2 f₁ L can be far faster than any train).
 pub const IMPLAUSIBLE_SPEED: f64 = 130.0;
 
 /// Largest plausible |acceleration| along the path, m/s²: a road vehicle's
@@ -21,8 +23,16 @@ pub const IMPLAUSIBLE_ACCELERATION: f64 = 10.0;
 pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
     let mut out = Vec::new();
     for (i, vehicle) in scenario.vehicles.iter().enumerate() {
-        if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed()) {
-            out.push(w);
+        // A speed written with its unit (`238.9 m/s`) is meant: a moving
+        // force at a beam's critical speed 2 f₁ L is often far faster
+        // than any train. Only a bare number can be a km/h value typed as
+        // m/s.
+        let stated = scenario.speeds_stated.get(i).copied().unwrap_or(false);
+        if let Some(w) = implausible(&format!("vehicle {}", i + 1), vehicle.speed())
+            && !stated
+        {
+            let v = vehicle.speed();
+            out.push(format!("{w}; if {v} m/s is meant, write `speed: {v} m/s`"));
         }
         let a = vehicle.acceleration();
         if a.abs() > IMPLAUSIBLE_ACCELERATION {

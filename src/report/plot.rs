@@ -166,7 +166,24 @@ pub fn line_chart(
     log_x: bool,
     log_y: bool,
 ) -> Result<(), PlotError> {
-    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y, 0)?;
+    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y, 0, 0)?;
+    write_png(path, &rendered.rgb)
+}
+
+/// [`line_chart`] on linear axes with a reference line (a limit) drawn
+/// black and dashed over the series, its own legend entry, not in the
+/// palette's colours.
+pub fn line_chart_with_reference(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    reference: &Series,
+) -> Result<(), PlotError> {
+    let mut all = series.to_vec();
+    all.push(*reference);
+    let rendered = render_line_chart(title, x_label, y_label, &all, false, false, 0, 1)?;
     write_png(path, &rendered.rgb)
 }
 
@@ -181,7 +198,7 @@ pub fn line_chart_over_samples(
     series: &[Series],
     grey: usize,
 ) -> Result<(), PlotError> {
-    let rendered = render_line_chart(title, x_label, y_label, series, false, false, grey)?;
+    let rendered = render_line_chart(title, x_label, y_label, series, false, false, grey, 0)?;
     write_png(path, &rendered.rgb)
 }
 

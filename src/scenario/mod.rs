@@ -29,6 +29,7 @@ mod records;
 pub mod resolve;
 pub mod resolved;
 pub mod resonance;
+pub mod resonance_grid;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;

@@ -381,6 +381,22 @@ pub enum VehicleRaw {
     Hslm(HslmRaw),
 }
 
+impl VehicleRaw {
+    /// The speed as written (`None`: an oscillator given by its
+    /// dimensionless groups, its speed derived from the velocity ratio).
+    pub fn speed(&self) -> Option<SpeedRaw> {
+        match self {
+            VehicleRaw::MovingForce(v) => Some(v.speed),
+            VehicleRaw::Oscillator(v) => v.speed,
+            VehicleRaw::H20Truck(v) => Some(v.speed),
+            VehicleRaw::RailCar(v) => Some(v.speed),
+            VehicleRaw::Train(v) => Some(v.speed),
+            VehicleRaw::Train3d(v) => Some(v.speed),
+            VehicleRaw::Hslm(v) => Some(v.speed),
+        }
+    }
+}
+
 /// Where and how fast a vehicle travels.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]

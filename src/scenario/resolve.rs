@@ -355,7 +355,7 @@ pub(super) fn resolve(
             let trains: Vec<Vehicle> = check
                 .trains
                 .iter()
-                .map(|&t| super::resonance::train_vehicle(t, check.speeds.to))
+                .map(|&t| super::resonance::train_vehicle(t, check.top_speed()))
                 .collect();
             content::excitations(&trains, &contact, &surface, bridge.spans(), gravity)
         }
@@ -701,6 +701,11 @@ pub(super) fn resolve(
         output,
         study,
         limits,
+        speeds_stated: raw
+            .vehicles
+            .iter()
+            .map(|v| v.speed().is_none_or(|s| s.unit_written()))
+            .collect(),
     };
     Some((scenario, modal))
 }

@@ -58,6 +58,12 @@ pub struct Scenario {
     /// Resource budgets; written only when the file raised one.
     #[serde(skip_serializing_if = "Limits::is_default")]
     pub limits: Limits,
+    /// Per vehicle, whether the input wrote its speed with the unit (or
+    /// derived it, as from an oscillator's velocity ratio): such a speed is
+    /// meant as given and draws no "km/h typed as m/s" warning. Not part of
+    /// the resolved scene.
+    #[serde(skip)]
+    pub speeds_stated: Vec<bool>,
 }
 
 /// How the history is written (see the raw format's `output`).

@@ -4,7 +4,8 @@
 use super::raw::{self, DeckRaw, HslmModel, km_h_to_m_s};
 use super::records::acceleration_cutoff;
 use super::resolve::{Checker, MAX_SPEED};
-use super::resolved::{Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
+use super::resolved::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
+use super::resonance_grid::additional_damping_percent;
 
 /// Most speeds per train (a count from the input, checked before the grid
 /// is built).
@@ -56,7 +57,7 @@ pub(super) fn resolve_resonance(
         }
         fine
     };
-    speed_ok(ck, "study.line_speed", line_speed);
+    let line_fine = speed_ok(ck, "study.line_speed", line_speed);
     let given = raw.speeds.as_ref();
     let from = given
         .and_then(|s| s.from)
@@ -98,13 +99,54 @@ pub(super) fn resolve_resonance(
         Some(f) => f,
         None => acceleration_cutoff(frequencies),
     };
-    ResonanceCheck {
+    let additional_damping = if raw.additional_damping == Some(true) {
+        match bridge.spans() {
+            [span] => Some(AdditionalDamping {
+                span: *span,
+                ratio: additional_damping_percent(*span) / 100.0,
+            }),
+            spans => {
+                ck.error(
+                    "study.additional_damping",
+                    format!(
+                        "the additional damping of EN 1991-2 6.4.6.3.1(3) is given for a \
+                         single span (Figure 6.15, L the span length); this bridge has {} spans",
+                        spans.len()
+                    ),
+                );
+                None
+            }
+        }
+    } else {
+        None
+    };
+    let check = ResonanceCheck {
         trains,
         line_speed,
         speeds,
         deck: raw.deck.unwrap_or(DeckRaw::Ballasted),
         max_frequency,
+        first_frequency: frequencies.first().copied().unwrap_or(f64::NAN),
+        additional_damping,
+    };
+    if line_fine && fine && to >= from && (to - from) / step < MAX_RESONANCE_SPEEDS as f64 {
+        // Resonance speeds f₀·D/k crowd at low speeds on a stiff deck:
+        // count them before any grid is built.
+        let resonances: usize = (0..check.trains.len())
+            .map(|t| check.resonance_count(t))
+            .sum();
+        if resonances >= MAX_RESONANCE_SPEEDS {
+            ck.error(
+                "study.speeds.from",
+                format!(
+                    "the trains have {resonances} resonance speeds f₀·D/k between {from} m/s \
+                     and the top speed (f₀ = {} Hz), more than {MAX_RESONANCE_SPEEDS}; start higher",
+                    check.first_frequency
+                ),
+            );
+        }
     }
+    check
 }
 
 /// The vehicle of one run: `train` alone at `speed` (m/s), its front axle

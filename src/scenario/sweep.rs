@@ -429,10 +429,7 @@ pub fn study_points(study: &Study, base: &Surface) -> f64 {
             velocity_ratio,
             mass_ratio,
         } => velocity_ratio.count as f64 * mass_ratio.count as f64,
-        Study::ResonanceCheck(check) => {
-            check.trains.len() as f64
-                * ((check.speeds.to - check.speeds.from) / check.speeds.step + 1.0).max(1.0)
-        }
+        Study::ResonanceCheck(check) => check.run_bound(),
         Study::MonteCarlo(mc) => {
             mc.roughness.as_ref().map_or(1.0, |l| l.len() as f64)
                 * mc.speeds.as_ref().map_or(1.0, |g| g.count as f64)

@@ -6,6 +6,7 @@
 pub mod converge;
 pub mod monte_carlo;
 pub mod resonance;
+mod resonance_report;
 pub mod separation_map;
 pub mod shard;
 pub mod speed_sweep;

@@ -7,12 +7,16 @@
 //! of EN 1990 A2.4.4.2.1(1): 3.5 m/s² on ballasted track, 5 m/s² with direct
 //! fastening.
 //!
+//! The verdict is per train and overall (EN 1991-2 6.4.6.5(3) with EN 1990
+//! A2.4.4.2.1): a train passes when no run of it exceeds the limit. The
+//! speeds of each train are its own ([`ResonanceCheck::speeds_km_h`]): the
+//! regular grid, 1.2 × line speed and its resonance speeds f₀·D/k refined.
+//!
 //! Runs are independent and deterministic; they run in parallel and are
 //! collected in study order (train by train, speed by speed), so the results
 //! do not depend on the thread count. No history is kept: a run costs
 //! O(steps × nodes × (modes + axles)).
 
-use std::path::Path;
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -21,15 +25,13 @@ use serde::{Deserialize, Serialize};
 use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::Recorder;
-use crate::report::plot::{Series, line_chart};
-use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::{Envelopes, Quantity, ResonanceCheck, Scenario};
+use crate::scenario::resolved::{AdditionalDamping, Envelopes, Quantity, ResonanceCheck, Scenario};
 use crate::scenario::resonance::train_vehicle;
+use crate::scenario::resonance_grid::km_h;
 use crate::solve;
 
-/// km/h per m/s.
-const KM_H: f64 = 3.6;
+pub use super::resonance_report::write;
 
 /// One run: a train at a speed.
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
@@ -55,8 +57,16 @@ pub struct ResonancePoint {
 pub struct ResonanceResults {
     /// Train labels (`HSLM-A1` …), in study order.
     pub trains: Vec<String>,
-    /// Speeds, m/s.
-    pub speeds: Vec<f64>,
+    /// Coach length D of each train, m.
+    pub coach_lengths: Vec<f64>,
+    /// Resonance speeds f₀·D/k of each train in the checked range, km/h.
+    pub resonance_speeds_km_h: Vec<Vec<f64>>,
+    /// The bridge's first natural frequency f₀, Hz.
+    pub first_frequency: f64,
+    /// The maximum speed of the check, 1.2 × line speed, km/h.
+    pub max_speed_km_h: f64,
+    /// EN 1991-2 6.4.6.3.1(3) additional damping, when taken.
+    pub additional_damping: Option<AdditionalDamping>,
     /// Deck-acceleration limit, m/s².
     pub limit: f64,
     /// The track, in words.
@@ -73,7 +83,7 @@ pub struct ResonanceResults {
 
 /// Number of runs.
 pub fn size(check: &ResonanceCheck) -> usize {
-    check.trains.len() * check.speeds.count()
+    check.run_count()
 }
 
 /// The scene of one run: `train` alone at `speed`, enveloped along the
@@ -131,12 +141,24 @@ fn run_point(
     })
 }
 
-/// The jobs (train index, speed) in study order.
+/// The jobs (train index, speed in m/s) in study order.
 fn jobs(check: &ResonanceCheck) -> Vec<(usize, f64)> {
-    let speeds = check.speeds.values();
     (0..check.trains.len())
-        .flat_map(|t| speeds.iter().map(move |&v| (t, v)))
+        .flat_map(|t| check.speeds_m_s(t).into_iter().map(move |v| (t, v)))
         .collect()
+}
+
+/// The bridge of the runs: with the additional damping Δζ of EN 1991-2
+/// 6.4.6.3.1(3) added to every mode's ratio when asked for (ζ_total = ζ +
+/// Δζ, eq. 6.14).
+fn damped(bridge: &ModalBridge, check: &ResonanceCheck) -> ModalBridge {
+    let mut bridge = bridge.clone();
+    if let Some(extra) = check.additional_damping {
+        for ratio in &mut bridge.damping_ratios {
+            *ratio += extra.ratio;
+        }
+    }
+    bridge
 }
 
 /// Runs the runs `range` (in parallel), collected in study order;
@@ -149,6 +171,7 @@ pub fn run_slice(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<ResonancePoint>, RunError> {
     let jobs = jobs(check);
+    let bridge = &damped(bridge, check);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
     jobs[range]
@@ -170,7 +193,17 @@ pub fn assemble(
 ) -> ResonanceResults {
     ResonanceResults {
         trains: check.trains.iter().map(|t| t.label()).collect(),
-        speeds: check.speeds.values(),
+        coach_lengths: check
+            .trains
+            .iter()
+            .map(|t| t.train().coach_length)
+            .collect(),
+        resonance_speeds_km_h: (0..check.trains.len())
+            .map(|t| check.resonance_speeds_km_h(t))
+            .collect(),
+        first_frequency: check.first_frequency,
+        max_speed_km_h: check.max_speed_km_h(),
+        additional_damping: check.additional_damping,
         limit: check.deck.acceleration_limit(),
         deck: match check.deck {
             crate::scenario::raw::DeckRaw::Ballasted => "ballasted".into(),
@@ -210,6 +243,32 @@ pub struct Governing {
     pub x: f64,
 }
 
+/// The verdict on one train.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct TrainVerdict {
+    /// Train label.
+    pub train: String,
+    /// Coach length D, m.
+    pub coach_length_m: f64,
+    /// Its resonance speeds f₀·D/k in the checked range, km/h.
+    pub resonance_speeds_km_h: Vec<f64>,
+    /// Runs of this train.
+    pub runs: usize,
+    /// Its run with the largest deck acceleration (m/s²).
+    pub max_acceleration: Option<Governing>,
+    /// Whether every run of it keeps the deck acceleration within the limit.
+    pub passes: bool,
+}
+
+/// The additional damping taken, in summary.json.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct DampingTaken {
+    /// Span length L, m.
+    pub span_m: f64,
+    /// Δζ, % (EN 1991-2 6.4.6.3.1(3), eq. 6.13).
+    pub additional_percent: f64,
+}
+
 /// summary.json of a resonance check.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct ResonanceSummary {
@@ -229,38 +288,76 @@ pub struct ResonanceSummary {
     pub acceleration_limit: f64,
     /// Cut-off frequency of the deck acceleration, Hz.
     pub max_frequency: f64,
-    /// Maximum line speed, m/s; the check runs to 1.2 × it by default.
+    /// Maximum line speed, m/s.
     pub line_speed_m_s: f64,
+    /// The maximum speed checked, 1.2 × line speed (EN 1991-2 6.4.6.2(1)),
+    /// km/h; always in the grid.
+    pub max_speed_km_h: f64,
+    /// The bridge's first natural frequency f₀, Hz (resonance at f₀·D/k).
+    pub first_frequency_hz: f64,
+    /// The additional damping Δζ of spans below 30 m, when taken.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub additional_damping: Option<DampingTaken>,
     /// The run with the largest deck acceleration.
     pub governing_acceleration: Option<Governing>,
     /// The run with the largest deck displacement.
     pub governing_displacement: Option<Governing>,
-    /// Whether every run keeps the deck acceleration within the limit.
+    /// The verdict per train, in study order.
+    pub trains: Vec<TrainVerdict>,
+    /// Trains that fail, in study order.
+    pub failing_trains: Vec<String>,
+    /// Whether every run keeps the deck acceleration within the limit: the
+    /// overall verdict (`vbi run` exits 3 when false).
     pub passes: bool,
 }
 
 impl ResonanceResults {
-    fn governing(&self, value: impl Fn(&ResonancePoint) -> (f64, f64)) -> Option<Governing> {
-        let best = self
-            .points
-            .iter()
-            .fold(None::<&ResonancePoint>, |best, p| match best {
-                Some(b) if value(b).0 >= value(p).0 => Some(b),
-                _ => Some(p),
-            })?;
+    fn governing<'a>(
+        &self,
+        points: impl Iterator<Item = &'a ResonancePoint>,
+        value: impl Fn(&ResonancePoint) -> (f64, f64),
+    ) -> Option<Governing> {
+        let best = points.fold(None::<&ResonancePoint>, |best, p| match best {
+            Some(b) if value(b).0 >= value(p).0 => Some(b),
+            _ => Some(p),
+        })?;
         let (v, x) = value(best);
         Some(Governing {
             train: self.trains[best.train].clone(),
             speed_m_s: best.speed,
-            speed_km_h: best.speed * KM_H,
+            speed_km_h: km_h(best.speed),
             value: v,
             x,
         })
     }
 
+    /// The verdict on each train, in study order.
+    pub fn verdicts(&self) -> Vec<TrainVerdict> {
+        (0..self.trains.len())
+            .map(|t| {
+                let runs = || self.points.iter().filter(move |p| p.train == t);
+                let max_acceleration =
+                    self.governing(runs(), |p| (p.max_acceleration, p.acceleration_at));
+                TrainVerdict {
+                    train: self.trains[t].clone(),
+                    coach_length_m: self.coach_lengths[t],
+                    resonance_speeds_km_h: self.resonance_speeds_km_h[t].clone(),
+                    runs: runs().count(),
+                    passes: runs().all(|p| p.max_acceleration <= self.limit),
+                    max_acceleration,
+                }
+            })
+            .collect()
+    }
+
+    /// Whether every run keeps the deck acceleration within the limit.
+    pub fn passes(&self) -> bool {
+        self.points.iter().all(|p| p.max_acceleration <= self.limit)
+    }
+
     /// The summary.
     pub fn summary(&self, name: &str) -> ResonanceSummary {
-        let acceleration = self.governing(|p| (p.max_acceleration, p.acceleration_at));
+        let trains = self.verdicts();
         ResonanceSummary {
             study: "resonance_check",
             scenario: name.to_owned(),
@@ -271,115 +368,25 @@ impl ResonanceResults {
             acceleration_limit: self.limit,
             max_frequency: self.max_frequency,
             line_speed_m_s: self.line_speed,
-            passes: acceleration.as_ref().is_none_or(|g| g.value <= self.limit),
-            governing_acceleration: acceleration,
-            governing_displacement: self.governing(|p| (p.max_displacement, p.displacement_at)),
+            max_speed_km_h: self.max_speed_km_h,
+            first_frequency_hz: self.first_frequency,
+            additional_damping: self.additional_damping.map(|d| DampingTaken {
+                span_m: d.span,
+                additional_percent: d.ratio * 100.0,
+            }),
+            governing_acceleration: self.governing(self.points.iter(), |p| {
+                (p.max_acceleration, p.acceleration_at)
+            }),
+            governing_displacement: self.governing(self.points.iter(), |p| {
+                (p.max_displacement, p.displacement_at)
+            }),
+            failing_trains: trains
+                .iter()
+                .filter(|t| !t.passes)
+                .map(|t| t.train.clone())
+                .collect(),
+            trains,
+            passes: self.passes(),
         }
     }
-
-    /// resonance.csv: one row per run.
-    pub fn to_csv(&self) -> Vec<u8> {
-        let mut out = String::from(
-            "train,speed_m_s,speed_km_h,max_displacement_m,displacement_at_m,\
-             max_acceleration_m/s^2,acceleration_at_m,time_step_s\n",
-        );
-        for p in &self.points {
-            let row = [
-                self.trains[p.train].clone(),
-                number(p.speed),
-                number(p.speed * KM_H),
-                number(p.max_displacement),
-                number(p.displacement_at),
-                number(p.max_acceleration),
-                number(p.acceleration_at),
-                number(p.time_step),
-            ];
-            out.push_str(&row.join(","));
-            out.push('\n');
-        }
-        out.into_bytes()
-    }
-
-    /// Per train, its runs' (km/h, value) in speed order.
-    fn curves(&self, value: impl Fn(&ResonancePoint) -> f64) -> Vec<(Vec<f64>, Vec<f64>)> {
-        (0..self.trains.len())
-            .map(|t| {
-                self.points
-                    .iter()
-                    .filter(|p| p.train == t)
-                    .map(|p| (p.speed * KM_H, value(p)))
-                    .unzip()
-            })
-            .collect()
-    }
-}
-
-/// Writes resonance.csv, resonance.png (deck acceleration against speed
-/// per train, with the limit line), resonance_displacement.png,
-/// resolved.yaml and, last, summary.json into `out`.
-pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Result<(), RunError> {
-    crate::run::create_out(out)?;
-    write_atomic(&out.join("resonance.csv"), &results.to_csv())?;
-    let speed_label = "speed (km/h)";
-    let accelerations = results.curves(|p| p.max_acceleration);
-    let mut series: Vec<Series> = results
-        .trains
-        .iter()
-        .zip(&accelerations)
-        .map(|(label, (x, y))| Series { label, x, y })
-        .collect();
-    let (lo, hi) = results
-        .speeds
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v * KM_H), b.max(v * KM_H))
-        });
-    let limit_x = [lo, hi];
-    let limit_y = [results.limit; 2];
-    let limit_label = format!(
-        "limit {} m/s^2 ({}, EN 1990 A2.4.4.2.1)",
-        results.limit,
-        results.deck.replace('_', " ")
-    );
-    series.push(Series {
-        label: &limit_label,
-        x: &limit_x,
-        y: &limit_y,
-    });
-    line_chart(
-        &out.join("resonance.png"),
-        &format!(
-            "{}: peak deck acceleration (modes up to {:.1} Hz)",
-            scenario.name, results.max_frequency
-        ),
-        speed_label,
-        "max |deck acceleration| (m/s^2)",
-        &series,
-        false,
-        false,
-    )?;
-    let displacements = results.curves(|p| p.max_displacement * 1e3);
-    let series: Vec<Series> = results
-        .trains
-        .iter()
-        .zip(&displacements)
-        .map(|(label, (x, y))| Series { label, x, y })
-        .collect();
-    line_chart(
-        &out.join("resonance_displacement.png"),
-        &format!("{}: peak deck displacement", scenario.name),
-        speed_label,
-        "max |deck displacement| (mm)",
-        &series,
-        false,
-        false,
-    )?;
-    write_atomic(
-        &out.join("resolved.yaml"),
-        crate::run::resolved_yaml(scenario).as_bytes(),
-    )?;
-    let summary = results.summary(&scenario.name);
-    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
-    write_atomic(&out.join("summary.json"), text.as_bytes())?;
-    Ok(())
 }

@@ -5,6 +5,7 @@ use super::*;
 /// Series with at most this many points get a dot at each.
 const MAX_MARKED_POINTS: usize = 60;
 
+#[allow(clippy::too_many_arguments)]
 pub(super) fn render_line_chart(
     title: &str,
     x_label: &str,
@@ -13,6 +14,7 @@ pub(super) fn render_line_chart(
     log_x: bool,
     log_y: bool,
     grey: usize,
+    reference: usize,
 ) -> Result<Rendered, PlotError> {
     for s in series {
         if s.x.len() != s.y.len() {
@@ -65,6 +67,7 @@ pub(super) fn render_line_chart(
         y_label,
         log_x,
         log_y,
+        reference,
     };
     render(|root| match (log_x, log_y) {
         (false, false) => draw_line_chart(
@@ -112,6 +115,9 @@ pub(super) struct LineChartText<'a> {
     y_label: &'a str,
     log_x: bool,
     log_y: bool,
+    /// The last `reference` series are reference lines (a limit): black,
+    /// dashed, no markers.
+    reference: usize,
 }
 
 pub(super) fn draw_line_chart<X, Y>(
@@ -157,8 +163,11 @@ where
         // The first `grey` series are background samples (thin, grey, no
         // markers); the others take the palette from its start.
         let background = k < grey;
+        let is_reference = k + text.reference >= series.len();
         let colour = if background {
             GREY_LINE
+        } else if is_reference {
+            BLACK
         } else {
             PALETTE[(k - grey) % PALETTE.len()]
         };
@@ -167,11 +176,28 @@ where
             any_label = true;
             // An empty series carries the legend entry, so that series without any
             // valid point still appear in the legend.
-            chart
+            let entry = chart
                 .draw_series(LineSeries::new(std::iter::empty(), style))
                 .map_err(draw_err)?
-                .label(s.label)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+                .label(s.label);
+            if is_reference {
+                // Two dashes, as the line is drawn.
+                entry.legend(move |(x, y)| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new(vec![(0, 0), (10, 0)], style)
+                        + PathElement::new(vec![(14, 0), (24, 0)], style)
+                });
+            } else {
+                entry.legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+            }
+        }
+        if is_reference {
+            for run in runs {
+                chart
+                    .draw_series(DashedLineSeries::new(run.iter().copied(), 10, 6, style))
+                    .map_err(draw_err)?;
+            }
+            continue;
         }
         // Few points are computed points (a sweep's speeds, a ladder's
         // runs): mark each, so that the line is not read as a continuum.

@@ -62,7 +62,10 @@ pub struct ResonanceCheckRaw {
     pub trains: Option<Vec<HslmModel>>,
     /// The maximum line speed, m/s or with its unit (`300 km/h`).
     pub line_speed: SpeedRaw,
-    /// Speeds to run. Defaults: 40 m/s to 1.2 × `line_speed` in 5 km/h steps.
+    /// Speeds to run. Defaults: 40 m/s to 1.2 × `line_speed` in 5 km/h
+    /// steps. The grid always holds 1.2 × `line_speed` (EN 1991-2
+    /// 6.4.6.2(1)) and, per train, each resonance speed f₀·D/k with quarter
+    /// steps around it.
     #[serde(default)]
     pub speeds: Option<ResonanceSpeedsRaw>,
     /// The track: `ballasted` (limit 3.5 m/s²) or `direct_fastening`
@@ -74,4 +77,11 @@ pub struct ResonanceCheckRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::positive)]
     pub max_frequency: Option<f64>,
+    /// Add the damping Δζ of EN 1991-2 6.4.6.3.1(3) for spans below 30 m
+    /// (vehicle–bridge interaction): Δζ [%] = (0.0187 L − 0.00064 L²) /
+    /// (1 − 0.0441 L − 0.0044 L² + 0.000255 L³), L the span in m, to every
+    /// mode's damping ratio. A single span only. Default `false`.
+    #[serde(default)]
+    #[schemars(extend("default" = false))]
+    pub additional_damping: Option<bool>,
 }

@@ -16,14 +16,21 @@ pub fn km_h_to_m_s(v: f64) -> f64 {
     v * 1000.0 / 3600.0
 }
 
-/// A speed in m/s, read from a number (m/s) or a string with a unit.
+/// A speed in m/s, read from a number (m/s) or a string with a unit; the
+/// flag says whether the unit was written (`"83.3 m/s"`, `"300 km/h"`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpeedRaw(pub f64);
+pub struct SpeedRaw(pub f64, pub bool);
 
 impl SpeedRaw {
     /// The speed, m/s.
     pub fn meters_per_second(self) -> f64 {
         self.0
+    }
+
+    /// Whether the input wrote the unit: such a speed states its intent
+    /// and is never taken for a km/h value typed as m/s.
+    pub fn unit_written(self) -> bool {
+        self.1
     }
 }
 
@@ -55,16 +62,16 @@ impl<'de> Deserialize<'de> for SpeedRaw {
                 f.write_str("a speed in m/s, or a string such as `100 km/h`")
             }
             fn visit_f64<E: de::Error>(self, v: f64) -> Result<SpeedRaw, E> {
-                Ok(SpeedRaw(v))
+                Ok(SpeedRaw(v, false))
             }
             fn visit_i64<E: de::Error>(self, v: i64) -> Result<SpeedRaw, E> {
-                Ok(SpeedRaw(v as f64))
+                Ok(SpeedRaw(v as f64, false))
             }
             fn visit_u64<E: de::Error>(self, v: u64) -> Result<SpeedRaw, E> {
-                Ok(SpeedRaw(v as f64))
+                Ok(SpeedRaw(v as f64, false))
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<SpeedRaw, E> {
-                parse_speed(v).map(SpeedRaw).map_err(E::custom)
+                parse_speed(v).map(|v| SpeedRaw(v, true)).map_err(E::custom)
             }
         }
         deserializer.deserialize_any(SpeedVisitor)

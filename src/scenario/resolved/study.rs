@@ -37,6 +37,22 @@ pub struct ResonanceCheck {
     pub deck: crate::scenario::raw::DeckRaw,
     /// Highest mode frequency of the deck acceleration, Hz.
     pub max_frequency: f64,
+    /// The bridge's first natural frequency f₀, Hz: the trains resonate at
+    /// f₀·D/k (D the coach length, k = 1, 2, …).
+    pub first_frequency: f64,
+    /// The additional damping of EN 1991-2 6.4.6.3.1(3), when asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub additional_damping: Option<AdditionalDamping>,
+}
+
+/// EN 1991-2 6.4.6.3.1(3): the damping added to every mode for spans
+/// below 30 m (vehicle–bridge interaction lowers the peak at resonance).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct AdditionalDamping {
+    /// Span length L, m.
+    pub span: f64,
+    /// Δζ, a damping ratio (dimensionless; 0.003 is 0.3 %).
+    pub ratio: f64,
 }
 
 /// Speeds of a resonance check, m/s.
@@ -48,21 +64,6 @@ pub struct ResonanceSpeeds {
     pub to: f64,
     /// Step, m/s.
     pub step: f64,
-}
-
-impl ResonanceSpeeds {
-    /// Number of speeds: from, from + step, … up to `to` (within 1e-9 of a
-    /// step, so that 5 km/h steps land on a round top speed).
-    pub fn count(&self) -> usize {
-        ((self.to - self.from) / self.step + 1e-9).floor() as usize + 1
-    }
-
-    /// The speeds, m/s.
-    pub fn values(&self) -> Vec<f64> {
-        (0..self.count())
-            .map(|i| self.from + i as f64 * self.step)
-            .collect()
-    }
 }
 
 /// A Monte Carlo study. See [`crate::scenario::raw::MonteCarloRaw`].
