@@ -93,3 +93,116 @@ fn default_profile_has_no_entrance_artefact() {
          entrance (long fade: {f}) — the profile's start kicks the wheels"
     );
 }
+
+/// An oscillator at 25 m/s over a 20 m beam on FRA class 5 (`surface`),
+/// placed by `placement`.
+fn small_scene(surface: &str, placement: &str) -> String {
+    format!(
+        "name: fade
+bridge: {{type: beam, spans: [20.0], bending_stiffness: 3.2423e9, mass_per_length: 2000.0, elements_per_span: 10, modes: {{count: 4}}}}
+vehicles: [{{type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: 25.0{placement}}}]
+surface: {surface}
+contact: {{type: elastic, stiffness: 4.0e8}}
+solver: {{time_step: 1.0e-3, free_vibration: 0.05}}
+"
+    )
+}
+
+/// The defaults: the run-in is the band's longest wavelength (80 m for the
+/// rail band, 100 m for the road band), a vehicle the file does not place
+/// starts with its front axle at −run-in, and the profile it meets there is
+/// level (r = r′ = r″ = 0 at and before its start) and equal to the
+/// unfaded series from the entrance on (same seed, same profile).
+#[test]
+fn default_run_in_places_the_vehicle_before_the_fade() {
+    use vbi::surface::spectrum::Spectrum;
+    use vbi::surface::synth::SpectralSeries;
+    for (surface, run_in) in [
+        ("{type: fra, class: 5, seed: 4}", 80.0),
+        ("{type: iso8608, class: A, seed: 4}", 100.0),
+    ] {
+        let loaded = load_str(&small_scene(surface, ""), "fade.yaml").unwrap();
+        let (spectrum, sampling) = loaded.scenario.surface.spectrum().unwrap();
+        assert_eq!(sampling.run_in, run_in, "{surface}");
+        let start = loaded.scenario.vehicles[0].motion().position(0.0);
+        assert!((start + run_in).abs() < 1e-9 * run_in, "{surface}: {start}");
+        let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone()).unwrap();
+        for x in [start - 5.0, start, start + 1e-9] {
+            let (r, s, c) = model.profile.elevation_slope_curvature(x);
+            assert!(r.abs() < 1e-20 && s.abs() < 1e-15 && c.abs() < 1e-9, "{x}: {r} {s} {c}");
+        }
+        let series = SpectralSeries::new(
+            &spectrum,
+            sampling.shortest_wavelength,
+            sampling.longest_wavelength,
+            sampling.terms,
+            sampling.seed,
+            0,
+        );
+        let rms = series.variance().sqrt();
+        for x in [0.0, 3.3, 17.7] {
+            let error = (model.profile.elevation(x) - series.at(x).0).abs();
+            assert!(error < 1e-6 * rms, "{surface} at {x}: {error:e} of {rms:e}");
+        }
+        // resolved.yaml holds the placement and the run-in: it loads to the
+        // same vehicle start.
+        let again = load_str(&vbi::run::resolved_yaml(&loaded.scenario), "resolved.yaml")
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            again.scenario.vehicles[0].motion().position(0.0).to_bits(),
+            start.to_bits()
+        );
+    }
+}
+
+/// A vehicle the file places after the run-in's start (`start_position:
+/// -10` with the default 80 m run-in): the fade starts under its front axle
+/// instead, so it still starts on level track, and reaches 70 m onto the
+/// bridge, which a warning says.
+#[test]
+fn a_vehicle_placed_inside_the_run_in_moves_the_fade() {
+    let loaded = load_str(
+        &small_scene("{type: fra, class: 5, seed: 4}", ", start_position: -10.0"),
+        "fade.yaml",
+    )
+    .unwrap();
+    let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone()).unwrap();
+    for x in [-12.0, -10.0] {
+        assert_eq!(model.profile.elevation_slope_curvature(x), (0.0, 0.0, 0.0));
+    }
+    assert_ne!(model.profile.elevation(-5.0), 0.0);
+    let warnings = vbi::report::advice::scene_warnings(&loaded.scenario);
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains("fades in from under its front axle to x = 70.0000 m")),
+        "{warnings:?}"
+    );
+    // Placed at the run-in's start: no such warning.
+    let placed = load_str(&small_scene("{type: fra, class: 5}", ""), "fade.yaml").unwrap();
+    let warnings = vbi::report::advice::scene_warnings(&placed.scenario);
+    assert!(!warnings.iter().any(|w| w.contains("fades in")), "{warnings:?}");
+}
+
+/// FRA track classes are maintained for at most 15, 30, 60, 80, 90 and
+/// 110 mph (49 CFR 213.9(a), 213.307(a)): 25 m/s (90 km/h, 56 mph) is too
+/// fast for classes 1–2 and not for 3–6; 250 km/h is too fast for all.
+#[test]
+fn a_speed_above_the_track_class_warns() {
+    let warned = |class: u8, speed: &str| {
+        let text = small_scene(&format!("{{type: fra, class: {class}}}"), "")
+            .replace("speed: 25.0", &format!("speed: {speed}"));
+        let loaded = load_str(&text, "fra.yaml").unwrap_or_else(|e| panic!("{e}"));
+        vbi::report::advice::scene_warnings(&loaded.scenario)
+            .iter()
+            .any(|w| w.contains(&format!("FRA track class {class} is maintained for at most")))
+    };
+    for class in 1..=6 {
+        assert_eq!(warned(class, "25.0"), class <= 2, "class {class} at 25 m/s");
+        assert!(warned(class, "250 km/h"), "class {class} at 250 km/h");
+    }
+    // Class 6 allows 110 mph = 49.1744 m/s (177.03 km/h): 49.17 m/s is
+    // within it, 178 km/h is not.
+    assert!(!warned(6, "49.17"));
+    assert!(warned(6, "178 km/h"));
+}
