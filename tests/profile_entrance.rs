@@ -63,12 +63,20 @@ fn first_losses(text: &str) -> (Vec<f64>, usize) {
     (per_sample.into_iter().flatten().flatten().collect(), wheel_samples)
 }
 
-/// First losses within [−0.05, 0.10] m of the entrance: the issue's artefact
-/// put every wheel's first loss 13–17 mm past it.
+/// First losses within [−0.05, 1.0] m of the entrance: the issue's artefact
+/// put nearly every wheel's first loss there (0.03–0.7 m past it at this
+/// step, two to fifty steps after the kick).
 fn at_entrance(losses: &[f64]) -> usize {
-    losses.iter().filter(|&&x| (-0.05..=0.10).contains(&x)).count()
+    losses.iter().filter(|&&x| (-0.05..=1.0).contains(&x)).count()
 }
 
+/// 24 samples × 4 wheelsets. The deck's end rotation is a real kink at the
+/// entrance (the approach is rigid and level, the loaded deck is not), so
+/// some first losses fall there under any fade: the default must not have
+/// more than the long fade beyond sampling noise, 3σ of the difference of
+/// two proportions (pooled p). Measured 2026-11-27: default 10 of 96
+/// wheel-samples, long fade 6, bound 6 + 11.5; before the fix (run_in 0,
+/// the profile starting at the entrance with a slope jump) 78 of 96.
 #[test]
 fn default_profile_has_no_entrance_artefact() {
     const SAMPLES: usize = 24;
@@ -80,17 +88,18 @@ fn default_profile_has_no_entrance_artefact() {
     ));
     assert_eq!(n, m);
     let (d, f) = (at_entrance(&default), at_entrance(&faded));
+    let pooled = (d + f) as f64 / (2 * n) as f64;
+    let three_sigma = 3.0 * (2.0 * pooled * (1.0 - pooled) * n as f64).sqrt();
     eprintln!(
-        "first losses at the entrance: default {d} of {} losses, long fade {f} of {} ({n} wheel-samples)",
+        "first losses within 1 m of the entrance: default {d}, long fade {f} of {n} \
+         wheel-samples (separated: {} and {}); bound {f} + {three_sigma:.1}",
         default.len(),
         faded.len()
     );
-    // A 15 cm window of a ≈ 90 m ride: under the long fade a first loss
-    // falls in it with probability ≈ 0.15/90 per separating wheel.
     assert!(
-        d <= f + 1,
-        "default profile: {d} of {n} wheel-samples first lose contact within 10 cm of the \
-         entrance (long fade: {f}) — the profile's start kicks the wheels"
+        d as f64 <= f as f64 + three_sigma,
+        "default profile: {d} of {n} wheel-samples first lose contact within 1 m of the \
+         entrance (long fade: {f}, bound +{three_sigma:.1}): the profile's start kicks the wheels"
     );
 }
 
@@ -115,7 +124,6 @@ solver: {{time_step: 1.0e-3, free_vibration: 0.05}}
 /// unfaded series from the entrance on (same seed, same profile).
 #[test]
 fn default_run_in_places_the_vehicle_before_the_fade() {
-    use vbi::surface::spectrum::Spectrum;
     use vbi::surface::synth::SpectralSeries;
     for (surface, run_in) in [
         ("{type: fra, class: 5, seed: 4}", 80.0),
@@ -205,4 +213,33 @@ fn a_speed_above_the_track_class_warns() {
     // within it, 178 km/h is not.
     assert!(!warned(6, "49.17"));
     assert!(warned(6, "178 km/h"));
+}
+
+/// A measured profile with points closer than a wheel's travel in one step
+/// (1 mm against 25 m/s × 1 ms = 25 mm) is run but warned about, naming
+/// the two points; at 1 m spacing it is not.
+#[test]
+fn a_measured_profile_finer_than_a_step_warns() {
+    let dir = std::env::temp_dir().join(format!("vbi-measured-step-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let warnings = |rows: &str| {
+        std::fs::write(dir.join("p.csv"), rows).unwrap();
+        let path = dir.join("scene.yaml");
+        std::fs::write(
+            &path,
+            small_scene("{type: measured, file: p.csv}", ", start_position: -2.0"),
+        )
+        .unwrap();
+        let loaded = vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+        vbi::report::advice::scene_warnings(&loaded.scenario)
+    };
+    let fine = warnings("-5,0\n10,0\n10.001,0.001\n40,0.001\n");
+    assert!(
+        fine.iter()
+            .any(|w| w.contains("x = 10 m and 10.001 m are") && w.contains("2.5000e-2 m")),
+        "{fine:?}"
+    );
+    let coarse = warnings("-5,0\n10,0\n11,0.001\n40,0.001\n");
+    assert!(!coarse.iter().any(|w| w.contains("apart")), "{coarse:?}");
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -42,7 +42,42 @@ pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
     }
     out.extend(track_class_too_slow(scenario));
     out.extend(fade_on_the_bridge(scenario));
+    out.extend(measured_finer_than_a_step(scenario));
     out
+}
+
+/// A measured profile whose points are closer than a wheel's travel in one
+/// time step: the wheels see the spline only at the steps, so its features
+/// between them are missed (aliased). Not refused: dense profilometer data
+/// are common and the spline between the points stays right.
+fn measured_finer_than_a_step(scenario: &Scenario) -> Option<String> {
+    let Surface::Measured { file, profile } = &scenario.surface else {
+        return None;
+    };
+    let speed = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.speed())
+        .fold(0.0, f64::max);
+    let travel = speed * scenario.solver.time_step;
+    let (i, spacing) = profile
+        .x
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(&b.1))?;
+    (spacing < travel).then(|| {
+        format!(
+            "{file}: the points at x = {} m and {} m are {spacing:e} m apart, less than the \
+             {travel:.4e} m a wheel travels in one time step ({speed:.4} m/s × {:e} s): the \
+             wheels see the profile only at the steps and miss its features between them; \
+             set `solver.time_step` to at most {:.4e} s to follow every point",
+            profile.x[i],
+            profile.x[i + 1],
+            scenario.solver.time_step,
+            spacing / speed
+        )
+    })
 }
 
 /// FRA track classes run faster than the speed they are maintained for
