@@ -60,14 +60,20 @@ fn first_losses(text: &str) -> (Vec<f64>, usize) {
         })
         .collect();
     let wheel_samples = per_sample.iter().map(Vec::len).sum();
-    (per_sample.into_iter().flatten().flatten().collect(), wheel_samples)
+    (
+        per_sample.into_iter().flatten().flatten().collect(),
+        wheel_samples,
+    )
 }
 
 /// First losses within [−0.05, 1.0] m of the entrance: the artefact
 /// put nearly every wheel's first loss there (0.03–0.7 m past it at this
 /// step, two to fifty steps after the kick).
 fn at_entrance(losses: &[f64]) -> usize {
-    losses.iter().filter(|&&x| (-0.05..=1.0).contains(&x)).count()
+    losses
+        .iter()
+        .filter(|&&x| (-0.05..=1.0).contains(&x))
+        .count()
 }
 
 /// 24 samples × 4 wheelsets. The deck's end rotation is a real kink at the
@@ -137,7 +143,10 @@ fn default_run_in_places_the_vehicle_before_the_fade() {
         let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone()).unwrap();
         for x in [start - 5.0, start, start + 1e-9] {
             let (r, s, c) = model.profile.elevation_slope_curvature(x);
-            assert!(r.abs() < 1e-20 && s.abs() < 1e-15 && c.abs() < 1e-9, "{x}: {r} {s} {c}");
+            assert!(
+                r.abs() < 1e-20 && s.abs() < 1e-15 && c.abs() < 1e-9,
+                "{x}: {r} {s} {c}"
+            );
         }
         let series = SpectralSeries::new(
             &spectrum,
@@ -189,7 +198,10 @@ fn a_vehicle_placed_inside_the_run_in_moves_the_fade() {
     // Placed at the run-in's start: no such warning.
     let placed = load_str(&small_scene("{type: fra, class: 5}", ""), "fade.yaml").unwrap();
     let warnings = vbi::report::advice::scene_warnings(&placed.scenario);
-    assert!(!warnings.iter().any(|w| w.contains("fades in")), "{warnings:?}");
+    assert!(
+        !warnings.iter().any(|w| w.contains("fades in")),
+        "{warnings:?}"
+    );
 }
 
 /// FRA track classes are maintained for at most 15, 30, 60, 80, 90 and
@@ -203,7 +215,11 @@ fn a_speed_above_the_track_class_warns() {
         let loaded = load_str(&text, "fra.yaml").unwrap_or_else(|e| panic!("{e}"));
         vbi::report::advice::scene_warnings(&loaded.scenario)
             .iter()
-            .any(|w| w.contains(&format!("FRA track class {class} is maintained for at most")))
+            .any(|w| {
+                w.contains(&format!(
+                    "FRA track class {class} is maintained for at most"
+                ))
+            })
     };
     for class in 1..=6 {
         assert_eq!(warned(class, "25.0"), class <= 2, "class {class} at 25 m/s");

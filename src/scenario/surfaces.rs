@@ -424,11 +424,9 @@ pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Ch
         if ck.has(&format!("{at}.entry_time")) || ck.has(&format!("{at}.start_position")) {
             continue;
         }
-        if let Some(t) = crate::vehicle::motion::time_to_cover(
-            vehicle.speed(),
-            vehicle.acceleration(),
-            run_in,
-        ) {
+        if let Some(t) =
+            crate::vehicle::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
+        {
             vehicle.set_entry_time(t);
         }
     }
@@ -441,12 +439,7 @@ pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Ch
 /// a step with a slope of up to height/length at a step inside it, and a
 /// harmonic wave shorter than two steps' travel is seen as a longer alias
 /// (Nyquist). Each is refused at its own key.
-pub(super) fn check_features(
-    surface: &Surface,
-    speed: f64,
-    time_step: f64,
-    ck: &mut Checker<'_>,
-) {
+pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: &mut Checker<'_>) {
     let step_travel = speed * time_step;
     if !(step_travel > 0.0 && step_travel.is_finite()) {
         return;
