@@ -562,13 +562,26 @@ pub(super) fn check_reach(
             1.0
         } * if sampling.alignment { 2.0 } else { 1.0 };
         let work = nodes * rails * sampling.terms as f64;
+        // A run-in longer than the ride is the cause of a large grid (its
+        // default is the longest wavelength).
+        let grid_path = if sampling.run_in <= end.max(0.0) {
+            "surface.shortest_wavelength"
+        } else if ck.has("surface.run_in") {
+            "surface.run_in"
+        } else if ck.has("surface.longest_wavelength") {
+            "surface.longest_wavelength"
+        } else {
+            "surface"
+        };
         return budget.check(
             ck,
-            "surface.shortest_wavelength",
+            grid_path,
             "profile_points",
             &format!(
-                "grid nodes of the sampled profile ({} per shortest wavelength over the {end:.1} m the wheels reach, per rail)",
-                crate::surface::NODES_PER_WAVELENGTH
+                "grid nodes of the sampled profile ({} per shortest wavelength over the {:.1} m \
+                 from the run-in's start to where the wheels reach, per rail)",
+                crate::surface::NODES_PER_WAVELENGTH,
+                end + sampling.run_in
             ),
             nodes * rails,
         ) && budget.check(

@@ -424,6 +424,8 @@ structural = [
     ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a file"),
     ("dip-depth-zero", scene(extra="surface: {type: dip, start: 2, length: 1, depth: @@0}\n"), "must be positive"),
     ("piecewise-one-point", scene(extra="surface: {type: piecewise_linear, points: @@[[0, 0]]}\n"), "at least two"),
+    # Issue 22: a run-in far longer than any approach (vehicles are placed before it).
+    ("run-in-huge", scene(extra="surface: {type: fra, class: 5, run_in: @@1.0e12}\n"), "limits.profile_points"),
     # Issue 23: features shorter than a step's travel are missed between steps.
     ("bump-shorter-than-step", scene(extra="surface: {type: bump, start: 2, length: @@1e-300, height: 0.01}\nsolver: {time_step: 1.0e-4}\n"), "shorter than the"),
     ("ramp-shorter-than-step", scene(extra="surface: {type: ramp, start: 2, length: @@1e-6, height: 0.01}\n"), "would miss it"),
