@@ -79,7 +79,8 @@ pub struct Model {
     pub profile: Profile,
     /// How far from the entrance [`Model::profile`] was sampled, m: the
     /// farthest front axle at the last step. A Monte Carlo sample swaps
-    /// the profile with `Profile::build(&surface.reseeded(seed), reach)`.
+    /// the profile with `Profile::build_from(&surface.reseeded(seed), reach,
+    /// front_start(&vehicles))`.
     pub profile_reach: f64,
     /// The contact law.
     pub contact: ContactLaw,
@@ -185,10 +186,11 @@ impl Model {
             .iter()
             .map(|v| v.front_position(steps as f64 * time_step))
             .fold(0.0, f64::max);
+        let profile = Profile::build_from(&scenario.surface, reach, front_start(&vehicles))?;
         Ok(Self {
             bridge,
             vehicles,
-            profile: Profile::build(&scenario.surface, reach)?,
+            profile,
             profile_reach: reach,
             contact,
             wheels,
@@ -290,6 +292,16 @@ impl Model {
     pub fn end_time(&self) -> f64 {
         self.steps as f64 * self.time_step
     }
+}
+
+/// The front-most front axle at t = 0, m from the entrance (≤ 0; −∞
+/// without vehicles): a track spectrum's fade-in starts there at the
+/// latest ([`crate::surface::fade_start`]).
+pub fn front_start(vehicles: &[VehicleModel]) -> f64 {
+    vehicles
+        .iter()
+        .map(|v| v.front_position(0.0))
+        .fold(f64::NEG_INFINITY, f64::max)
 }
 
 /// Time when the last axle of the last vehicle leaves the bridge, plus the

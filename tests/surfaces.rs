@@ -648,12 +648,28 @@ fn bad_surfaces_are_located() {
             "p.csv",
             "p.csv:3: column 1: x = 4 does not exceed the previous row's 5",
         ),
+        // Issue 23: features shorter than a step's travel (25 m/s × 1e-3 s
+        // = 0.025 m) are missed between steps.
         (
-            "run-in-too-long",
-            "{type: fra, class: 5, run_in: 10.0}",
+            "bump-shorter-than-step",
+            "{type: bump, start: 1.0, length: 1.0e-300, height: 0.01}",
             &[],
-            "10.0}",
-            "the run-in starts at x = -10 m but a vehicle's front axle starts at x = -2.0000 m",
+            "1.0e-300,",
+            "a bump 1e-300 m long is shorter than the 2.5000e-2 m a wheel travels in one time step",
+        ),
+        (
+            "harmonic-aliased",
+            "{type: harmonic, amplitude: 0.001, wavelength: 0.04}",
+            &[],
+            "0.04}",
+            "a wavelength of 4e-2 m is shorter than twice the 2.5000e-2 m",
+        ),
+        (
+            "piecewise-segment-shorter-than-step",
+            "{type: piecewise_linear, points: [[0, 0], [5, 0], [5.01, 0.01], [30, 0.01]]}",
+            &[],
+            "[5.01,",
+            "use `type: step`",
         ),
         (
             "bump-length",

@@ -86,6 +86,27 @@ fn npts_dt(line: &str) -> Result<(usize, f64), At2Error> {
             format!("DT = {dt}: the sampling interval must be a positive number of seconds"),
         ));
     }
+    let (lo, hi) = super::SAMPLING_INTERVAL;
+    if !(lo..=hi).contains(&dt) {
+        return Err((
+            4,
+            format!(
+                "DT = {dt:e} s is outside the plausible sampling interval of a ground-motion \
+                 record, {lo:e} to {hi} s (accelerographs sample at 50–1000 Hz)"
+            ),
+        ));
+    }
+    let duration = (npts - 1) as f64 * dt;
+    if duration > super::RECORD_DURATION {
+        return Err((
+            4,
+            format!(
+                "NPTS = {npts} samples at DT = {dt} s last {duration:e} s, more than the \
+                 plausible {} s (one day) of a ground-motion record",
+                super::RECORD_DURATION
+            ),
+        ));
+    }
     Ok((npts, dt))
 }
 

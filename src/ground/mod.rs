@@ -22,6 +22,16 @@ pub mod table;
 
 use serde::Serialize;
 
+/// Plausible sampling interval of a ground-motion record, s: strong-motion
+/// accelerographs sample at 50–1000 Hz (PEER NGA records: 0.005–0.02 s),
+/// synthetic records a little finer; 1 µs to 1 s brackets them with room to
+/// spare. A record sampled more coarsely than 1 s does not describe an
+/// earthquake's 0.1–25 Hz shaking, and a 1e300 s interval is a typing slip.
+pub const SAMPLING_INTERVAL: (f64, f64) = (1e-6, 1.0);
+
+/// Longest plausible record, s (one day, as a vehicle's entry time).
+pub const RECORD_DURATION: f64 = 86_400.0;
+
 /// Direction of a ground-motion component.
 #[derive(
     Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,

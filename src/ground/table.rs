@@ -93,6 +93,33 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
                 ),
             ));
         }
+        if let Some(&previous) = table.time.last() {
+            let interval = values[0] - previous;
+            let (lo, hi) = super::SAMPLING_INTERVAL;
+            if !(lo..=hi).contains(&interval) {
+                return Err((
+                    n,
+                    format!(
+                        "column 1: time {} s is {interval:e} s after the previous row's \
+                         {previous} s, outside the plausible sampling interval of a \
+                         ground-motion record, {lo:e} to {hi} s (accelerographs sample at \
+                         50–1000 Hz)",
+                        values[0]
+                    ),
+                ));
+            }
+        }
+        if values[0].abs() > super::RECORD_DURATION {
+            return Err((
+                n,
+                format!(
+                    "column 1: time {} s is beyond the plausible ±{} s (one day) of a \
+                     ground-motion record",
+                    values[0],
+                    super::RECORD_DURATION
+                ),
+            ));
+        }
         table.time.push(values[0]);
         table.acceleration.push(values[1]);
     }

@@ -4,7 +4,9 @@
 
 use crate::report::summary::Summary;
 use crate::scenario::raw::{KM_H, km_h_to_m_s};
-use crate::scenario::resolved::{Quantity, Scenario, Study};
+use crate::scenario::resolved::{Quantity, Scenario, Study, Surface};
+use crate::surface::fade_start;
+use crate::surface::spectrum::{FRA_MAX_SPEED_MPH, fra_max_speed};
 
 /// Speeds above this, m/s (468 km/h), are faster than any wheeled vehicle in
 /// service: the fastest trains run at 350 km/h and an EN 1991-2 resonance
@@ -48,7 +50,109 @@ pub fn scene_warnings(scenario: &Scenario) -> Vec<String> {
     {
         out.push(w);
     }
+    out.extend(track_class_too_slow(scenario));
+    out.extend(fade_on_the_bridge(scenario));
+    out.extend(measured_finer_than_a_step(scenario));
     out
+}
+
+/// A measured profile whose points are closer than a wheel's travel in one
+/// time step: the wheels see the spline only at the steps, so its features
+/// between them are missed (aliased). Not refused: dense profilometer data
+/// are common and the spline between the points stays right.
+fn measured_finer_than_a_step(scenario: &Scenario) -> Option<String> {
+    let Surface::Measured { file, profile } = &scenario.surface else {
+        return None;
+    };
+    let speed = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.speed())
+        .fold(0.0, f64::max);
+    let travel = speed * scenario.solver.time_step;
+    let (i, spacing) = profile
+        .x
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(&b.1))?;
+    (spacing < travel).then(|| {
+        format!(
+            "{file}: the points at x = {} m and {} m are {spacing:e} m apart, less than the \
+             {travel:.4e} m a wheel travels in one time step ({speed:.4} m/s × {:e} s): the \
+             wheels see the profile only at the steps and miss its features between them; \
+             set `solver.time_step` to at most {:.4e} s to follow every point",
+            profile.x[i],
+            profile.x[i + 1],
+            scenario.solver.time_step,
+            spacing / speed
+        )
+    })
+}
+
+/// FRA track classes run faster than the speed they are maintained for
+/// (49 CFR 213.9(a), 213.307(a)): the spectrum is that of a slower,
+/// rougher line than such a train would run on.
+fn track_class_too_slow(scenario: &Scenario) -> Vec<String> {
+    let (entries, study_top) = match &scenario.study {
+        Some(Study::MonteCarlo(mc)) => (
+            mc.roughness.as_deref(),
+            mc.speed_range().map_or(0.0, |r| r.1),
+        ),
+        Some(Study::SpeedSweep(sweep)) => (sweep.roughness.as_deref(), sweep.speed_range().1),
+        _ => (None, 0.0),
+    };
+    let top = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.speed())
+        .fold(study_top, f64::max);
+    let mut classes: Vec<u8> = match &scenario.surface {
+        Surface::Fra { class, .. } => vec![*class],
+        _ => Vec::new(),
+    };
+    classes.extend(entries.into_iter().flatten().filter_map(|e| e.fra_class()));
+    classes.sort_unstable();
+    classes.dedup();
+    classes
+        .into_iter()
+        .filter(|&class| top > fra_max_speed(class))
+        .map(|class| {
+            let (freight, passenger) = FRA_MAX_SPEED_MPH[usize::from(class.clamp(1, 6)) - 1];
+            let rule = if class >= 6 { "213.307(a)" } else { "213.9(a)" };
+            format!(
+                "FRA track class {class} is maintained for at most {freight} mph freight and \
+                 {passenger} mph passenger trains ({:.0} km/h; 49 CFR {rule}), but a vehicle runs at \
+                 {:.0} km/h: its irregularities are those of a line kept for far lower speeds \
+                 (FRA class 6 allows 110 mph; the German low- and high-interference spectra, \
+                 `type: german`, are for high-speed lines)",
+                fra_max_speed(class) / KM_H,
+                top / KM_H
+            )
+        })
+        .collect()
+}
+
+/// A vehicle placed after the start of a spectrum's run-in: the fade then
+/// starts under its front axle and reaches onto the bridge.
+fn fade_on_the_bridge(scenario: &Scenario) -> Option<String> {
+    let (_, sampling) = scenario.surface.spectrum()?;
+    let front = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.motion().position(0.0))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let start = fade_start(sampling.run_in, front);
+    let end = start + sampling.run_in;
+    (sampling.run_in > 0.0 && end > 0.0).then(|| {
+        format!(
+            "a vehicle starts at x = {front:.4} m, inside the surface's {} m run-in: the profile \
+             fades in from under its front axle to x = {end:.4} m, so the bridge's first {end:.4} m \
+             are below full roughness; start every vehicle at or before x = {} m (leave \
+             `start_position` and `entry_time` out to have it placed there)",
+            sampling.run_in, -sampling.run_in
+        )
+    })
 }
 
 fn implausible(what: &str, speed: f64) -> Option<String> {

@@ -402,6 +402,21 @@ pub(super) fn steps_cause(
         .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
     if latest.1 > 0.5 * duration {
         let i = latest.0;
+        // A vehicle the file does not place starts behind the surface's
+        // run-in (placed there while resolving): that is the cause.
+        let placed = match raw.vehicles.get(i) {
+            Some(raw::VehicleRaw::MovingForce(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::Oscillator(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::H20Truck(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::RailCar(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::Train(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::Train3d(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(raw::VehicleRaw::Hslm(v)) => v.entry_time.or(v.start_position).is_some(),
+            None => true,
+        };
+        if !placed && raw.surface.is_some() {
+            return "surface".into();
+        }
         let field = match raw.vehicles.get(i) {
             Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
             Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",

@@ -304,6 +304,12 @@ pub(super) fn resolve(
     if !ck.diagnostics.is_empty() {
         return None;
     }
+    // Vehicles the file does not place start behind a spectrum's run-in.
+    super::surfaces::place_before_run_in(
+        &mut vehicles,
+        super::surfaces::placement_run_in(&surface, raw.study.as_ref()),
+        ck,
+    );
     let travel = super::surfaces::travel(&vehicles, gravity, bridge.length(), free_vibration);
     if !super::surfaces::check_reach(&surface, travel, &budget, ck) {
         return None;
@@ -600,6 +606,14 @@ pub(super) fn resolve(
             ),
         );
     }
+    // The fastest any wheel goes over the study (an accelerating vehicle at
+    // its exit): surface features shorter than its travel per step are
+    // refused.
+    let top_speed = fast
+        .iter()
+        .map(|v| v.speed().max(v.motion().speed_at(v.exit_time(length))))
+        .fold(0.0, f64::max);
+    super::surfaces::check_features(&surface, top_speed, time_step, ck);
     let steps = longest_run / time_step;
     let steps_path = budget::steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
     let what = format!(

@@ -459,6 +459,17 @@ impl Vehicle {
             Vehicle::Train3d(v) => v.entry_time,
         }
     }
+    /// Sets the time at which the front axle reaches the entrance, s.
+    pub fn set_entry_time(&mut self, t: f64) {
+        match self {
+            Vehicle::MovingForce(v) => v.entry_time = t,
+            Vehicle::Oscillator(v) => v.entry_time = t,
+            Vehicle::H20Truck(v) => v.entry_time = t,
+            Vehicle::RailCar(v) => v.entry_time = t,
+            Vehicle::Train(v) => v.entry_time = t,
+            Vehicle::Train3d(v) => v.entry_time = t,
+        }
+    }
     /// Distance from the front axle back to the rear axle, m.
     pub fn length(&self) -> f64 {
         match self {

@@ -333,10 +333,18 @@ fn resolve_sampling(
     run_in: Option<f64>,
     ck: &mut Checker<'_>,
 ) -> Sampling {
-    let run_in = run_in.unwrap_or(0.0);
-    ck.non_negative("surface.run_in", run_in, "run-in length");
     let shortest = shortest.unwrap_or(default_short);
     let longest = longest.unwrap_or(default_long);
+    // The default run-in is the band's longest wavelength: the fade's own
+    // slope, at most 1.875 r/L for the quintic smoothstep, then stays below
+    // 0.3 × the slope 2π r/λ_max of the longest wave it fades in, so the
+    // fade adds no excitation the track does not already carry.
+    let run_in = run_in.unwrap_or(if longest.is_finite() && longest > 0.0 {
+        longest
+    } else {
+        0.0
+    });
+    ck.non_negative("surface.run_in", run_in, "run-in length");
     ck.positive(
         "surface.shortest_wavelength",
         shortest,
@@ -382,14 +390,128 @@ fn resolve_sampling(
     }
 }
 
+/// The run-in (m) the vehicles must start behind: that of the scene's track
+/// or road spectrum, and, when `study` sweeps FRA classes over a scene
+/// without one, the run-in those take (the rail band's default,
+/// [`RAIL_BAND`]'s longest wavelength); 0 if there is none.
+pub(super) fn placement_run_in(surface: &Surface, study: Option<&raw::StudyRaw>) -> f64 {
+    let own = surface.spectrum().map_or(0.0, |(_, s)| s.run_in);
+    let entries = match study {
+        Some(raw::StudyRaw::MonteCarlo(m)) => m.roughness.as_deref(),
+        Some(raw::StudyRaw::SpeedSweep(s)) => s.roughness.as_deref(),
+        _ => None,
+    };
+    let sweeps_fra = entries.is_some_and(|e| e.iter().any(|r| r.fra_class().is_some()));
+    if sweeps_fra && surface.spectrum().is_none() {
+        own.max(RAIL_BAND.1)
+    } else {
+        own
+    }
+}
+
+/// Places every vehicle the file does not place (neither `entry_time` nor
+/// `start_position`) with its front axle at x = −`run_in` (m), as
+/// `start_position: −run_in` would: every wheel starts on level track behind
+/// the fade-in of a track or road spectrum and meets it smoothly. A braking
+/// vehicle that would stop before covering the run-in keeps its place (the
+/// fade then starts under its front axle, [`crate::surface::fade_start`]).
+pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Checker<'_>) {
+    if !(run_in > 0.0 && run_in.is_finite()) {
+        return;
+    }
+    for (i, vehicle) in vehicles.iter_mut().enumerate() {
+        let at = format!("vehicles[{i}]");
+        if ck.has(&format!("{at}.entry_time")) || ck.has(&format!("{at}.start_position")) {
+            continue;
+        }
+        if let Some(t) =
+            crate::vehicle::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
+        {
+            vehicle.set_entry_time(t);
+        }
+    }
+}
+
+/// Refuses surface features shorter than the distance `step_travel` (m) the
+/// fastest wheel covers in one time step `time_step` (s) at `speed` (m/s):
+/// the wheels see the surface only at the steps, so a bump or dip that
+/// short is stepped over (the run equals a smooth surface), a ramp acts as
+/// a step with a slope of up to height/length at a step inside it, and a
+/// harmonic wave shorter than two steps' travel is seen as a longer alias
+/// (Nyquist). Each is refused at its own key.
+pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: &mut Checker<'_>) {
+    let step_travel = speed * time_step;
+    if !(step_travel > 0.0 && step_travel.is_finite()) {
+        return;
+    }
+    let advice = |needed: f64, length: f64| {
+        format!(
+            "the {step_travel:.4e} m a wheel travels in one time step ({speed:.4} m/s × \
+             {time_step:e} s): the wheels, which see the surface only at the steps, would miss \
+             it; lengthen it or set `solver.time_step` to at most {:.4e} s",
+            length / (needed * speed)
+        )
+    };
+    let mut short = |path: &str, what: String, length: f64, needed: f64| {
+        if length > 0.0 && length < needed * step_travel {
+            let times = if needed == 1.0 { "" } else { "twice " };
+            ck.error(
+                path,
+                format!("{what} is shorter than {times}{}", advice(needed, length)),
+            );
+        }
+    };
+    match *surface {
+        Surface::Bump { length, height, .. } => {
+            let what = if height < 0.0 { "a dip" } else { "a bump" };
+            short(
+                "surface.length",
+                format!("{what} {length:e} m long"),
+                length,
+                1.0,
+            );
+        }
+        Surface::Ramp { length, .. } => short(
+            "surface.length",
+            format!("a ramp {length:e} m long"),
+            length,
+            1.0,
+        ),
+        Surface::Harmonic { wavelength, .. } => short(
+            "surface.wavelength",
+            format!("a wavelength of {wavelength:e} m"),
+            wavelength,
+            2.0,
+        ),
+        Surface::PiecewiseLinear { ref points } => {
+            if let Some(i) = (1..points.len()).find(|&i| {
+                let d = points[i][0] - points[i - 1][0];
+                d > 0.0 && d < step_travel
+            }) {
+                short(
+                    &format!("surface.points[{i}]"),
+                    format!(
+                        "the segment from x = {} m to {} m ({:e} m; for a sudden change of level \
+                         use `type: step`)",
+                        points[i - 1][0],
+                        points[i][0],
+                        points[i][0] - points[i - 1][0]
+                    ),
+                    points[i][0] - points[i - 1][0],
+                    1.0,
+                );
+            }
+        }
+        _ => {}
+    }
+}
+
 /// Where the wheels travel, m from the entrance, as
 /// [`crate::model::Model`] will run it.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Travel {
     /// The rearmost wheel at the start.
     pub start: f64,
-    /// The front axle that starts nearest the entrance.
-    pub front_start: f64,
     /// The farthest front axle at the end of the run (the last exit plus
     /// the free vibration).
     pub end: f64,
@@ -419,15 +541,7 @@ pub(super) fn travel(
         .iter()
         .map(|m| m.front_position(end_time))
         .fold(0.0, f64::max);
-    let front_start = models
-        .iter()
-        .map(|m| m.front_position(0.0))
-        .fold(f64::NEG_INFINITY, f64::max);
-    Travel {
-        start,
-        front_start,
-        end,
-    }
+    Travel { start, end }
 }
 
 /// Checks that the profile serves the wheels' travel `(start, end)` (m):
@@ -440,19 +554,7 @@ pub(super) fn check_reach(
 ) -> bool {
     let Travel { start, end, .. } = travel;
     if let Some((_, sampling)) = surface.spectrum() {
-        if sampling.run_in > 0.0 && travel.front_start > -sampling.run_in {
-            ck.error(
-                "surface.run_in",
-                format!(
-                    "the run-in starts at x = {} m but a vehicle's front axle starts at x = {:.4} m: \
-                     start every vehicle at or before the run-in (`start_position`, or a later \
-                     `entry_time`)",
-                    -sampling.run_in,
-                    travel.front_start
-                ),
-            );
-            return false;
-        }
+        // The grid runs from the fade's start (at −run_in at the earliest).
         let nodes = grid_nodes(end + sampling.run_in, sampling.shortest_wavelength);
         let rails = if sampling.rails == RailsRaw::Independent {
             2.0
@@ -460,13 +562,26 @@ pub(super) fn check_reach(
             1.0
         } * if sampling.alignment { 2.0 } else { 1.0 };
         let work = nodes * rails * sampling.terms as f64;
+        // A run-in longer than the ride is the cause of a large grid (its
+        // default is the longest wavelength).
+        let grid_path = if sampling.run_in <= end.max(0.0) {
+            "surface.shortest_wavelength"
+        } else if ck.has("surface.run_in") {
+            "surface.run_in"
+        } else if ck.has("surface.longest_wavelength") {
+            "surface.longest_wavelength"
+        } else {
+            "surface"
+        };
         return budget.check(
             ck,
-            "surface.shortest_wavelength",
+            grid_path,
             "profile_points",
             &format!(
-                "grid nodes of the sampled profile ({} per shortest wavelength over the {end:.1} m the wheels reach, per rail)",
-                crate::surface::NODES_PER_WAVELENGTH
+                "grid nodes of the sampled profile ({} per shortest wavelength over the {:.1} m \
+                 from the run-in's start to where the wheels reach, per rail)",
+                crate::surface::NODES_PER_WAVELENGTH,
+                end + sampling.run_in
             ),
             nodes * rails,
         ) && budget.check(

@@ -141,7 +141,8 @@ pub fn surface(
                 terms: default_terms(RAIL_BAND.0, RAIL_BAND.1).min(MAX_TERMS),
                 seed: 1,
                 rails: crate::scenario::resolved::Rails::Identical,
-                run_in: 0.0,
+                // The default run-in: the band's longest wavelength.
+                run_in: RAIL_BAND.1,
                 alignment: false,
             },
             |(_, sampling)| sampling,

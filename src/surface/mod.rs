@@ -4,7 +4,9 @@
 //! line, m, positive upward, as a function of the position x along the bridge
 //! (m). It starts at the entrance (x = 0) and continues past the exit; the
 //! approach (x < 0) is smooth, except for measured and piecewise-linear
-//! profiles and shapes, which are defined wherever their data say.
+//! profiles and shapes, which are defined wherever their data say, and the
+//! track and road spectra, which fade in over a run-in on the approach
+//! ([`fade_start`]).
 //!
 //! Two rails: a wheel with lateral offset > 0 (to the left of travel) runs
 //! on the [`Rail::Left`], < 0 on the [`Rail::Right`], and a wheel on the
@@ -101,6 +103,25 @@ fn fade_in((r, dr, ddr): Triple, xi: f64, run_in: f64) -> Triple {
     (s * r, ds * r + s * dr, dds * r + 2.0 * ds * dr + s * ddr)
 }
 
+/// Where the fade-in of a run-in of `run_in` m starts (m from the
+/// entrance) when the front-most wheel starts at `front_start` (m, ≤ 0): at
+/// x = −run_in if every wheel starts there or behind it, else under that
+/// front axle, so that every wheel starts on level track (r = r′ = r″ = 0)
+/// and meets the profile through the fade, never through a jump. 0 without
+/// a run-in.
+pub fn fade_start(run_in: f64, front_start: f64) -> f64 {
+    if run_in > 0.0 {
+        // A vehicle placed at −L through its entry time (t = L/v) starts
+        // within rounding of −L: that is −L.
+        if front_start <= -run_in * (1.0 - 1e-12) {
+            return -run_in;
+        }
+        front_start.min(0.0)
+    } else {
+        0.0
+    }
+}
+
 /// Nodes of the grid a sampled profile needs to reach `reach` (m from the
 /// entrance) with the given shortest wavelength (m); f64 so a hostile size
 /// cannot wrap (budgeted while resolving).
@@ -146,10 +167,10 @@ pub enum Profile {
         /// nodes per shortest wavelength L_c/N), m.
         period_grid: QuinticGrid,
     },
-    /// A random sample on a grid from the entrance on, shifted so r(0) = 0
-    /// (as the other random profiles: the approach is smooth), 0 for x < 0;
-    /// or with a run-in of L m, unshifted from the entrance on and faded in
-    /// over [−L, 0], 0 before.
+    /// A random sample on a grid, with a run-in of L m unshifted and faded
+    /// in over [x_f, x_f + L] ([`fade_start`]: x_f = −L unless a wheel
+    /// starts after it), 0 before; without a run-in (L = 0) from the
+    /// entrance on, shifted so r(0) = 0, 0 for x < 0.
     Sampled {
         /// The left rail (and every wheel if `right` is `None`).
         left: QuinticGrid,
@@ -172,10 +193,23 @@ pub enum Profile {
 }
 
 impl Profile {
-    /// Builds the profile of a resolved surface; a random spectrum is
-    /// sampled from the entrance to `reach` (m), the farthest any wheel
-    /// goes during the run (past it r is held).
+    /// Builds the profile of a resolved surface for wheels that all start
+    /// at or behind a spectrum's run-in: [`Profile::build_from`] with the
+    /// fade over [−L, 0].
     pub fn build(surface: &Surface, reach: f64) -> Result<Self, SurfaceError> {
+        Self::build_from(surface, reach, f64::NEG_INFINITY)
+    }
+
+    /// Builds the profile of a resolved surface; a random spectrum is
+    /// sampled from its fade's start ([`fade_start`] of the run-in and
+    /// `front_start`, the front-most wheel's position at t = 0, m) to
+    /// `reach` (m), the farthest any wheel goes during the run (past it r is
+    /// held).
+    pub fn build_from(
+        surface: &Surface,
+        reach: f64,
+        front_start: f64,
+    ) -> Result<Self, SurfaceError> {
         Ok(match *surface {
             Surface::Smooth => Profile::Smooth,
             Surface::Harmonic {
@@ -244,23 +278,36 @@ impl Profile {
                 points: points.iter().map(|p| (p[0], p[1])).collect(),
             }),
             Surface::Fra { class, sampling } => {
-                Self::sampled(Spectrum::Fra { class }, sampling, reach)?
+                Self::sampled(Spectrum::Fra { class }, sampling, reach, front_start)?
             }
             Surface::German {
                 interference,
                 sampling,
-            } => Self::sampled(Spectrum::German { interference }, sampling, reach)?,
+            } => Self::sampled(
+                Spectrum::German { interference },
+                sampling,
+                reach,
+                front_start,
+            )?,
             Surface::Iso8608 { class, sampling } => {
-                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach)?
+                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach, front_start)?
             }
         })
     }
 
-    /// A random sample of `spectrum` on a grid from 0 to `reach` (m).
-    fn sampled(spectrum: Spectrum, sampling: Sampling, reach: f64) -> Result<Self, SurfaceError> {
+    /// A random sample of `spectrum` on a grid from its fade's start
+    /// ([`fade_start`]) to `reach` (m). The series is the same function of
+    /// x whatever the fade (same seed, same profile past the fade).
+    fn sampled(
+        spectrum: Spectrum,
+        sampling: Sampling,
+        reach: f64,
+        front_start: f64,
+    ) -> Result<Self, SurfaceError> {
         let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
         let run_in = sampling.run_in;
-        let count = grid_nodes(reach + run_in, sampling.shortest_wavelength) as usize;
+        let start = fade_start(run_in, front_start);
+        let count = grid_nodes(reach - start, sampling.shortest_wavelength) as usize;
         let grid = |spectrum: &Spectrum, stream| {
             let series = SpectralSeries::new(
                 spectrum,
@@ -271,7 +318,7 @@ impl Profile {
                 stream,
             );
             let oom = |_| SurfaceError::OutOfMemory { nodes: count };
-            let mut nodes = series.sample(-run_in, spacing, count).map_err(oom)?;
+            let mut nodes = series.sample(start, spacing, count).map_err(oom)?;
             if run_in > 0.0 {
                 for (j, n) in nodes.iter_mut().enumerate() {
                     *n = fade_in(*n, (j as f64 * spacing) / run_in, run_in);
@@ -282,7 +329,7 @@ impl Profile {
                     n.0 -= r0;
                 }
             }
-            QuinticGrid::new(-run_in, spacing, &nodes).map_err(oom)
+            QuinticGrid::new(start, spacing, &nodes).map_err(oom)
         };
         let alignment = match spectrum.alignment().filter(|_| sampling.alignment) {
             Some(lateral) => Some((

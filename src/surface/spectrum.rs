@@ -36,6 +36,29 @@ pub const FRA_CLASSES: [(f64, f64, f64); 6] = [
     (0.0339, 0.0339, 0.4380),
 ];
 
+/// One mile per hour in m/s (exact: 1609.344 m / 3600 s).
+pub const MPH: f64 = 0.44704;
+
+/// The maximum operating speeds the FRA track classes 1–6 are maintained
+/// for, (freight, passenger) in mph: 49 CFR 213.9(a) for classes 1–5 (10/15,
+/// 25/30, 40/60, 60/80, 80/90) and 49 CFR 213.307(a) for class 6 (110 mph,
+/// every train). A track class's geometry limits, hence its spectrum, are
+/// those of a line kept for these speeds; faster trains run on better track.
+pub const FRA_MAX_SPEED_MPH: [(f64, f64); 6] = [
+    (10.0, 15.0),
+    (25.0, 30.0),
+    (40.0, 60.0),
+    (60.0, 80.0),
+    (80.0, 90.0),
+    (110.0, 110.0),
+];
+
+/// The highest speed any train may run on FRA track class `class` (1–6),
+/// m/s: the passenger limit of [`FRA_MAX_SPEED_MPH`].
+pub fn fra_max_speed(class: u8) -> f64 {
+    FRA_MAX_SPEED_MPH[usize::from(class.clamp(1, 6)) - 1].1 * MPH
+}
+
 /// Vertical profile PSD of FRA track class `class` (1–6), m²/(rad/m),
 /// one-sided, at wavenumber `omega` (rad/m):
 /// G_v(Ω) = k A_v Ω_c² / (Ω² (Ω² + Ω_c²)), A_v from [`FRA_CLASSES`]

@@ -424,6 +424,13 @@ structural = [
     ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a file"),
     ("dip-depth-zero", scene(extra="surface: {type: dip, start: 2, length: 1, depth: @@0}\n"), "must be positive"),
     ("piecewise-one-point", scene(extra="surface: {type: piecewise_linear, points: @@[[0, 0]]}\n"), "at least two"),
+    # Issue 22: a run-in far longer than any approach (vehicles are placed before it).
+    ("run-in-huge", scene(extra="surface: {type: fra, class: 5, run_in: @@1.0e12}\n"), "limits.profile_points"),
+    # Issue 23: features shorter than a step's travel are missed between steps.
+    ("bump-shorter-than-step", scene(extra="surface: {type: bump, start: 2, length: @@1e-300, height: 0.01}\nsolver: {time_step: 1.0e-4}\n"), "shorter than the"),
+    ("ramp-shorter-than-step", scene(extra="surface: {type: ramp, start: 2, length: @@1e-6, height: 0.01}\n"), "would miss it"),
+    ("harmonic-aliased", scene(extra="surface: {type: harmonic, amplitude: 0.001, wavelength: @@1e-3}\nsolver: {time_step: 1.0e-4}\n"), "shorter than twice"),
+    ("piecewise-segment-shorter-than-step", scene(extra="surface: {type: piecewise_linear, points: [[0, 0], [5, 0], @@[5.000001, 0.01], [30, 0.01]]}\nsolver: {time_step: 1.0e-4}\n"), "type: step"),
     ("dimensionless-velocity-huge", "name: d\n" + BEAM + "vehicles:\n  - type: oscillator\n    dimensionless: {velocity_ratio: 1e9, mass_ratio: 1.0, frequency_ratio: 0.5}\n".replace("velocity_ratio: 1e9", "velocity_ratio: @@1e9"), "above 1000"),
 ]
 for slug, text, message in structural:
@@ -440,6 +447,9 @@ side_files = {
     "quake-backwards.csv": "time [s], acceleration [g]\n0, 0\n0.02, 0.1\n0.01, 0.1\n",
     "quake-no-units.csv": "0, 0\n0.01, 0.1\n",
     "quake-ok.csv": "time [s], acceleration [g]\n0, 0\n0.01, 0.1\n0.02, 0\n",
+    # Issue 23: record intervals outside any accelerograph's.
+    "quake-interval-huge.AT2": AT2_HEAD + "NPTS=    3, DT= 1e300 SEC\n0.1 0.2 0.3\n",
+    "quake-interval-huge.csv": "time [s], acceleration [g]\n0, 0\n1e300, 0.1\n",
 }
 ground = [
     ("huge-npts", "{file: @@quake-huge-npts.AT2}", "NPTS = 1000000000000"),
@@ -448,6 +458,8 @@ ground = [
     ("backwards", "{file: @@quake-backwards.csv}", "must increase strictly"),
     ("no-units", "{file: @@quake-no-units.csv}", "does not state the units"),
     ("missing", "{file: @@no-such-record.AT2}", "cannot read the ground-motion record"),
+    ("interval-huge-at2", "{file: @@quake-interval-huge.AT2}", "quake-interval-huge.AT2:4: DT = 1e300 s is outside the plausible sampling interval"),
+    ("interval-huge-csv", "{file: @@quake-interval-huge.csv}", "quake-interval-huge.csv:3: column 1"),
     ("lateral", "{file: quake-ok.csv, direction: @@lateral}", "lateral bridge modes"),
     ("scale-nan", "{file: quake-ok.csv, scale: @@.nan}", "finite"),
     ("units-disagree", "{file: quake-ok.csv, units: @@m/s^2}", "disagrees"),

@@ -91,12 +91,17 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
-        /// Length of the run-in on the approach, m. 0 (default): the profile
-        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
-        /// there, a kick the wheels feel). L > 0: the full profile lies on
-        /// the bridge and is faded in over the last L m of the approach by
-        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
-        /// every vehicle must start at or before x = −L.
+        /// Length L of the run-in, m; default the band's longest wavelength
+        /// (80 m for the rail band, 100 m for the road band). The full
+        /// profile lies on the bridge and is faded in over the last L m of
+        /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
+        /// start and continuous, 0 before it), so no wheel meets a jump in
+        /// elevation or slope. A vehicle without `entry_time` or
+        /// `start_position` starts with its front axle at x = −L; if one is
+        /// placed after x = −L, the fade starts under its front axle instead
+        /// and reaches onto the bridge (a warning says how far). 0: the
+        /// profile starts at the entrance, shifted so r(0) = 0, and its
+        /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::schema::non_negative)]
         run_in: Option<f64>,
@@ -137,12 +142,17 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
-        /// Length of the run-in on the approach, m. 0 (default): the profile
-        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
-        /// there, a kick the wheels feel). L > 0: the full profile lies on
-        /// the bridge and is faded in over the last L m of the approach by
-        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
-        /// every vehicle must start at or before x = −L.
+        /// Length L of the run-in, m; default the band's longest wavelength
+        /// (80 m for the rail band, 100 m for the road band). The full
+        /// profile lies on the bridge and is faded in over the last L m of
+        /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
+        /// start and continuous, 0 before it), so no wheel meets a jump in
+        /// elevation or slope. A vehicle without `entry_time` or
+        /// `start_position` starts with its front axle at x = −L; if one is
+        /// placed after x = −L, the fade starts under its front axle instead
+        /// and reaches onto the bridge (a warning says how far). 0: the
+        /// profile starts at the entrance, shifted so r(0) = 0, and its
+        /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::schema::non_negative)]
         run_in: Option<f64>,
@@ -175,12 +185,17 @@ pub enum SurfaceRaw {
         /// Default `identical`.
         #[serde(default)]
         rails: Option<RailsRaw>,
-        /// Length of the run-in on the approach, m. 0 (default): the profile
-        /// starts at the entrance, shifted so r(0) = 0 (its slope jumps
-        /// there, a kick the wheels feel). L > 0: the full profile lies on
-        /// the bridge and is faded in over the last L m of the approach by
-        /// a quintic smoothstep (r, r′, r″ continuous, 0 before x = −L);
-        /// every vehicle must start at or before x = −L.
+        /// Length L of the run-in, m; default the band's longest wavelength
+        /// (80 m for the rail band, 100 m for the road band). The full
+        /// profile lies on the bridge and is faded in over the last L m of
+        /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
+        /// start and continuous, 0 before it), so no wheel meets a jump in
+        /// elevation or slope. A vehicle without `entry_time` or
+        /// `start_position` starts with its front axle at x = −L; if one is
+        /// placed after x = −L, the fade starts under its front axle instead
+        /// and reaches onto the bridge (a warning says how far). 0: the
+        /// profile starts at the entrance, shifted so r(0) = 0, and its
+        /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::schema::non_negative)]
         run_in: Option<f64>,

@@ -25,8 +25,14 @@ pub struct Sampling {
     /// r(0) = 0).
     pub run_in: f64,
     /// Whether the rails' alignment (lateral irregularity) is sampled too,
-    /// from the spectrum's alignment form.
+    /// from the spectrum's alignment form. Written only when true: ISO 8608
+    /// roads have no alignment key, and resolved.yaml must load again.
+    #[serde(skip_serializing_if = "is_false")]
     pub alignment: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 /// A measured profile as read from its CSV file.
