@@ -275,8 +275,13 @@ fn the_lateral_static_correction_converges_with_few_modes() {
             / peak
     };
     let (with, without) = (error(&corrected), error(&plain));
-    eprintln!("lateral rail displacement, 6 modes: corrected {with:.2e}, plain {without:.2e} of the peak {peak:.3e} m");
+    eprintln!(
+        "lateral rail displacement, 6 modes: corrected {with:.2e}, plain {without:.2e} of the peak {peak:.3e} m"
+    );
     assert!(peak > 1e-5, "the record moves the deck sideways: {peak}");
     assert!(with < 3e-3, "corrected: {with:e}");
-    assert!(without > 10.0 * with, "the correction should help: {without:e} vs {with:e}");
+    assert!(
+        without > 10.0 * with,
+        "the correction should help: {without:e} vs {with:e}"
+    );
 }

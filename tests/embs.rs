@@ -223,8 +223,19 @@ fn train_3d_secondary_coupling_and_ground_load_by_hand() {
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone())
         .unwrap_or_else(|e| panic!("{e}"));
     let car = &model.vehicles[0];
-    let dof = |name: &str| car.dof_names.iter().position(|n| n == name).unwrap();
-    let (y_c, roll_c, roll_b) = (dof("body_lateral"), dof("body_roll"), dof("front_bogie_roll"));
+    // A train's DOFs are named per car: `car1_body_lateral`, ….
+    let dof = |name: &str| {
+        let name = format!("car1_{name}");
+        car.dof_names
+            .iter()
+            .position(|n| *n == name)
+            .unwrap_or_else(|| panic!("no DOF {name} in {:?}", car.dof_names))
+    };
+    let (y_c, roll_c, roll_b) = (
+        dof("body_lateral"),
+        dof("body_roll"),
+        dof("front_bogie_roll"),
+    );
     let (k_y, k_z, d2) = (
         p.secondary_stiffness[1],
         p.secondary_stiffness[2],
@@ -237,7 +248,10 @@ fn train_3d_secondary_coupling_and_ground_load_by_hand() {
     assert!(rz_c.abs() > 0.1 && rz_b.abs() > 0.1, "heights that couple");
     let k = &car.stiffness;
     let close = |a: f64, b: f64, what: &str| {
-        assert!((a - b).abs() <= 1e-12 * b.abs(), "{what}: {a:e} vs hand {b:e}");
+        assert!(
+            (a - b).abs() <= 1e-12 * b.abs(),
+            "{what}: {a:e} vs hand {b:e}"
+        );
     };
     close(k[(y_c, roll_c)], -4.0 * k_y * rz_c, "K[body y, body roll]");
     close(k[(roll_c, y_c)], -4.0 * k_y * rz_c, "K[body roll, body y]");
@@ -368,7 +382,10 @@ fn the_lateral_ground_load_reaches_the_deck_as_computed_by_hand() {
         worst = worst.max((value - reference).abs());
         peak = peak.max(reference.abs());
     }
-    eprintln!("lateral ground load through EMBS: {:.2e} of the peak {peak:.3e} m", worst / peak);
+    eprintln!(
+        "lateral ground load through EMBS: {:.2e} of the peak {peak:.3e} m",
+        worst / peak
+    );
     assert!(peak > 1e-5, "the record shakes the deck: {peak:e} m");
     assert!(worst < 2e-5 * peak, "{:e} of the peak", worst / peak);
 }

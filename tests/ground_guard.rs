@@ -78,7 +78,10 @@ fn a_light_force_under_a_constant_record_runs_to_the_end() {
     let sag = 5.0 * 18000.0 * 25f64.powi(4) / (384.0 * 8.0e10);
     let w = peak(&outcome, "midspan");
     eprintln!("peak mid-span {w:.4e} m, static sag under 1 m/s² {sag:.4e} m");
-    assert!(w > sag && w < 2.1 * sag, "peak {w} m against static {sag} m");
+    assert!(
+        w > sag && w < 2.1 * sag,
+        "peak {w} m against static {sag} m"
+    );
 }
 
 /// Issue 22 reproducer: the shipped 0.1 g synthetic record with a 100 N
@@ -87,14 +90,14 @@ fn a_light_force_under_a_constant_record_runs_to_the_end() {
 #[test]
 fn a_light_force_under_the_shipped_record_runs_to_the_end() {
     let dir = folder("shipped");
-    let record = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios/records/synthetic-vertical.AT2");
+    let record =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/records/synthetic-vertical.AT2");
     let ground = format!(
         "ground_motion:\n  - {{file: \"{}\", direction: vertical}}\n",
         record.display()
     );
-    let outcome = try_run(&dir, &light_force_scene(&ground, 2.5, ""))
-        .unwrap_or_else(|e| panic!("{e}"));
+    let outcome =
+        try_run(&dir, &light_force_scene(&ground, 2.5, "")).unwrap_or_else(|e| panic!("{e}"));
     let w = peak(&outcome, "midspan");
     eprintln!("peak mid-span {w:.4e} m");
     assert!(w.is_finite() && w > 0.0);
@@ -110,8 +113,12 @@ fn an_unstable_newmark_step_under_ground_motion_still_stops() {
     let dir = folder("unstable");
     let ground = constant_record(&dir);
     let scene = |beta: f64, dt: f64| {
-        light_force_scene(&ground, 12.5, &format!(", time_step: {dt}, newmark: {{beta: {beta}, gamma: 0.5}}"))
-            .replace("damping:", "modes: {count: 10}, damping:")
+        light_force_scene(
+            &ground,
+            12.5,
+            &format!(", time_step: {dt}, newmark: {{beta: {beta}, gamma: 0.5}}"),
+        )
+        .replace("damping:", "modes: {count: 10}, damping:")
     };
     let reference = try_run(&dir, &scene(0.25, 1.0e-4)).unwrap_or_else(|e| panic!("{e}"));
     let omega_max = 2.0 * PI * reference.summary.run.frequencies.last().expect("modes");

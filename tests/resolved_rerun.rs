@@ -33,14 +33,17 @@ pub fn assert_resolved_reproduces(yaml: &str, name: &str) {
 /// The two runs' time step, output interval, sample times and every
 /// column are the same, bit for bit.
 fn assert_same_history(a: &Outcome, b: &Outcome, name: &str) {
-    assert_eq!(a.model.time_step.to_bits(), b.model.time_step.to_bits(), "{name}: time step");
+    assert_eq!(
+        a.model.time_step.to_bits(),
+        b.model.time_step.to_bits(),
+        "{name}: time step"
+    );
     assert_eq!(a.history.every, b.history.every, "{name}: output interval");
     assert_eq!(a.history.time, b.history.time, "{name}: sample times");
     assert_eq!(a.history.columns.len(), b.history.columns.len());
     for (x, y) in a.history.columns.iter().zip(&b.history.columns) {
         let same = x.values.len() == y.values.len()
-            && x
-                .values
+            && x.values
                 .iter()
                 .zip(&y.values)
                 .all(|(p, q)| p.to_bits() == q.to_bits());
@@ -50,7 +53,8 @@ fn assert_same_history(a: &Outcome, b: &Outcome, name: &str) {
 
 /// The plane beam of the README's 3D example: 25 m, EI = 8e10 N·m², m =
 /// 18 000 kg/m (f₁ = 5.299 Hz, f₃ = 9 f₁ = 47.688 Hz).
-const PLANE_BEAM: &str = "{type: beam, spans: [25.0], bending_stiffness: 8.0e10, mass_per_length: 18000.0";
+const PLANE_BEAM: &str =
+    "{type: beam, spans: [25.0], bending_stiffness: 8.0e10, mass_per_length: 18000.0";
 
 /// Issue 22 reproducer: `{max_frequency: 47.6876464074312}` (mode 3 as
 /// printed) kept 2 modes. A cut-off at any kept mode's own frequency, exact
@@ -64,20 +68,35 @@ fn a_cut_off_at_a_modes_printed_frequency_keeps_it() {
         )
     };
     let issue = load(&yaml("{max_frequency: 47.6876464074312}"), "issue");
-    assert_eq!(issue.bridge.mode_count(), 3, "{:?}", issue.bridge.frequencies());
+    assert_eq!(
+        issue.bridge.mode_count(),
+        3,
+        "{:?}",
+        issue.bridge.frequencies()
+    );
     let all = load(&yaml("{count: 12}"), "all");
     for (k, f) in all.bridge.frequencies().iter().enumerate() {
         for cut in [*f, format!("{f:.14e}").parse().unwrap()] {
             let kept = load(&yaml(&format!("{{max_frequency: {cut:?}}}")), "cut");
-            assert_eq!(kept.bridge.mode_count(), k + 1, "cut-off {cut:?} Hz at mode {}", k + 1);
+            assert_eq!(
+                kept.bridge.mode_count(),
+                k + 1,
+                "cut-off {cut:?} Hz at mode {}",
+                k + 1
+            );
         }
     }
 }
 
-/// Shipped scenes left out of the bit-for-bit re-run for their cost (run
-/// time measured on the 2-core test machine, release build); each bridge
-/// type and automatic choice they exercise is covered by another scene.
-const TOO_SLOW: &[&str] = &[];
+/// Shipped scenes left out of the bit-for-bit re-run for their cost (both
+/// runs, measured 2026-11-27 on the shared 2-core machine, release build):
+/// the EMBS viaduct (3D beam, 18 s) and the generated two-span viaduct
+/// (imported model, 16 s). Their bridge types are covered by
+/// `automatic_choices_rerun_bit_for_bit_on_every_bridge_type` (3D beam,
+/// imported model, both with automatic modes) and by
+/// `fe-import-lcp-fig4-rigid` here. Every other single run takes under
+/// 1.6 s; all of them 6 s.
+const TOO_SLOW: &[&str] = &["embs-viaduct-ave-s103-quake", "viaduct-2span-axle-loads"];
 
 /// Every shipped single-run scene (`scenarios/*.yaml` without a study)
 /// re-run from its `resolved.yaml` gives the same history bit for bit:
@@ -95,8 +114,11 @@ fn every_shipped_scene_reruns_bit_for_bit_from_its_resolved_form() {
     let mut checked = Vec::new();
     for file in &files {
         let name = file.file_stem().unwrap().to_string_lossy().into_owned();
+        if TOO_SLOW.contains(&name.as_str()) {
+            continue;
+        }
         let loaded = vbi::scenario::load_file(file).unwrap_or_else(|e| panic!("{name}: {e}"));
-        if loaded.scenario.study.is_some() || TOO_SLOW.contains(&name.as_str()) {
+        if loaded.scenario.study.is_some() {
             continue;
         }
         let started = std::time::Instant::now();
@@ -114,6 +136,12 @@ fn every_shipped_scene_reruns_bit_for_bit_from_its_resolved_form() {
         checked.push(name);
     }
     assert!(checked.len() >= 20, "only {} scenes re-run", checked.len());
+    for kind in ["plate-", "fe-import-", "quake-", "moving-force-"] {
+        assert!(
+            checked.iter().any(|n| n.starts_with(kind)),
+            "no {kind} scene re-run"
+        );
+    }
 }
 
 fn shipped(path: &str) -> String {
