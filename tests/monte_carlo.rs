@@ -391,6 +391,92 @@ study: {type: monte_carlo, samples: 11, seed: 9, show: 11}
     }
 }
 
+/// Full and partly filled lockstep batches ([`vbi::solve::lockstep::LANES`]
+/// = 16 lanes) equal each sample run alone, bit for bit: 16 samples fill
+/// one batch (every lane busy; every history compared), 31 split 15 + 16
+/// (the histories of the first 20, which a study shows at most, and every
+/// sample's per-wheel separation and largest gap, the full batch's last
+/// lane, sample 31, included).
+/// (An off-by-one planted in the lanes, lane 15 reading lane 14's surface,
+/// passed the 11-sample test above, whose batches never reach lane 15.)
+#[test]
+fn full_and_partly_filled_lockstep_batches_equal_samples_run_alone() {
+    assert_eq!(
+        vbi::solve::lockstep::LANES,
+        16,
+        "the sample counts below fill 16 lanes"
+    );
+    let scene = |samples: usize| {
+        format!(
+            "name: lockstep-full
+bridge: {{type: beam, spans: [32.0], bending_stiffness: 1.3448174e10, mass_per_length: 12000.0, elements_per_span: 20, damping: {{type: modal, ratio: 0.02}}, modes: {{count: 8}}}}
+vehicles: [{{type: rail_car, speed: 300 km/h, start_position: -10.0}}]
+surface: {{type: fra, class: 5, run_in: 10.0}}
+contact: {{type: elastic, stiffness: 1.0e9}}
+solver: {{free_vibration: 0.02, time_step: 4.0e-4}}
+record:
+  - {{name: midspan, quantity: bridge_displacement, x: 16.0}}
+  - {{name: force8, quantity: contact_force, wheel: 4}}
+study: {{type: monte_carlo, samples: {samples}, seed: 3, show: {}}}
+",
+            samples.min(20)
+        )
+    };
+    for samples in [16, 31] {
+        let loaded = load(&scene(samples));
+        let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone())
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert!(vbi::solve::lockstep::eligible(&model), "steps in lockstep");
+        let Some(Study::MonteCarlo(mc)) = loaded.scenario.study.clone() else {
+            panic!("a Monte Carlo study")
+        };
+        let results = study(loaded.clone(), None);
+        let mut separated = 0;
+        for k in 0..samples {
+            let alone = run_alone(&loaded, &mc, k);
+            let in_study = &results.sample_results[k];
+            // Histories of the first 20 (at most `show`), every sample's
+            // per-wheel separation (the last lane of the 31's full batch
+            // is sample 31).
+            if let Some(histories) = &in_study.histories {
+                for (column, values) in alone.history.columns.iter().zip(histories) {
+                    let a: Vec<u64> = column.values.iter().map(|v| v.to_bits()).collect();
+                    let b: Vec<u64> = values.iter().map(|v| v.to_bits()).collect();
+                    assert_eq!(
+                        a,
+                        b,
+                        "{samples} samples: sample {} column {}",
+                        k + 1,
+                        column.name
+                    );
+                }
+            } else {
+                assert!(k >= 20, "sample {} shown", k + 1);
+            }
+            assert_eq!(in_study.wheels.len(), alone.history.separation.len());
+            for (w, sep) in in_study.wheels.iter().zip(&alone.history.separation) {
+                assert_eq!(
+                    w.separated,
+                    sep.separated,
+                    "{samples} samples: sample {}",
+                    k + 1
+                );
+                assert_eq!(
+                    w.max_gap.to_bits(),
+                    sep.max_gap.to_bits(),
+                    "{samples} samples: sample {} max gap",
+                    k + 1
+                );
+                separated += usize::from(sep.separated && k + 1 == samples);
+            }
+        }
+        assert!(
+            separated > 0,
+            "the last sample's wheels separate (its gaps are compared)"
+        );
+    }
+}
+
 /// A sample that fails stops the study with its number, its case and how
 /// to run it alone: here every sample diverges (Fox–Goodwin β = 1/12
 /// beyond its stability limit, ωΔt = 4.4 > √6 for the 34th mode), and the

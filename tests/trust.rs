@@ -254,9 +254,12 @@ fn extremes_on_the_bridge_and_over_the_whole_record() {
 
 /// The static (mode-acceleration) correction: a 100 kN force at 30 m/s over
 /// 24–30–24 m. The peak deflection at each span's middle with 10 modes and
-/// the correction is within 0.05 % of a 150-mode run without it (the
-/// converged modal sum; the bound), while 10 modes without the
-/// correction are measurably further off (the truncated quasi-static share).
+/// the correction against a 150-mode run without it (the converged modal
+/// sum), while 10 modes without the correction are measurably further off
+/// (the truncated quasi-static share). Measured 2026-11-27: corrected
+/// 2.87e-6, 3.50e-5, 4.77e-5 (spans 1–3), uncorrected 2.6e-3, 1.9e-3,
+/// 1.3e-3; bounds 1.5e-5, 1.5e-4, 2e-4 (4–5× measured: a 2 % slip in the
+/// correction's recorded path, which raised span 1 to 5.0e-5, fails).
 #[test]
 fn static_correction_converges_span_deflections_with_ten_modes() {
     let scene = |modes: usize, correction: bool| {
@@ -274,7 +277,7 @@ fn static_correction_converges_span_deflections_with_ten_modes() {
     let reference = run_yaml(&scene(150, false));
     let corrected = run_yaml(&scene(10, true));
     let plain = run_yaml(&scene(10, false));
-    for name in ["span1", "span2", "span3"] {
+    for (name, bound) in [("span1", 1.5e-5), ("span2", 1.5e-4), ("span3", 2e-4)] {
         let exact = max_abs(column(&reference, name));
         let with = max_abs(column(&corrected, name));
         let without = max_abs(column(&plain, name));
@@ -283,7 +286,7 @@ fn static_correction_converges_span_deflections_with_ten_modes() {
             (without - exact).abs() / exact,
         );
         eprintln!("{name}: corrected {e_with:e}, uncorrected {e_without:e}");
-        assert!(e_with < 5e-4, "{name}: {with} vs {exact}");
+        assert!(e_with < bound, "{name}: {with} vs {exact}: {e_with:e}");
         assert!(e_with < e_without, "{name}: the correction should help");
     }
 }
@@ -293,10 +296,11 @@ fn static_correction_converges_span_deflections_with_ten_modes() {
 /// modes give converged contact forces and vehicle responses. Yang & Yau's
 /// sprung mass (1 s of free vibration after the exit, where the body
 /// acceleration peaks), with a 100 kg wheel: with 5 modes the body
-/// acceleration's peak is within 0.1 % of a 40-mode run (the bound;
-/// measured 6.4e-7) and the contact force's within 1e-4 (measured 1e-8);
+/// acceleration's peak against a 40-mode run (measured 2026-11-27 6.44e-7,
+/// bound 3e-6) and the contact force's (measured 1.00e-8, bound 5e-8);
 /// without the correction 5 modes are 0.72 % off. The elastic LCP contact
-/// sees the same flexibility (within 1e-3 of 40 modes at 5, measured 4.3e-6).
+/// sees the same flexibility (measured 4.28e-6 at 5 modes, bound 2e-5).
+/// Bounds 5× measured, so a slip in the correction shows.
 #[test]
 fn contact_static_correction_converges_vehicle_responses_with_five_modes() {
     let scene = |modes: usize, correction: bool, contact: &str| {
@@ -325,8 +329,8 @@ fn contact_static_correction_converges_vehicle_responses_with_five_modes() {
         error(&corrected, "force"),
         error(&plain, "force")
     );
-    assert!(error(&corrected, "body") < 1e-3);
-    assert!(error(&corrected, "force") < 1e-4);
+    assert!(error(&corrected, "body") < 3e-6);
+    assert!(error(&corrected, "force") < 5e-8);
     assert!(error(&plain, "body") > 10.0 * error(&corrected, "body"));
     let elastic = "{type: elastic, stiffness: 2.0e9}";
     let elastic_reference = run_yaml(&scene(40, false, elastic));
@@ -334,7 +338,7 @@ fn contact_static_correction_converges_vehicle_responses_with_five_modes() {
     let e = (peak(&elastic_corrected, "body") - peak(&elastic_reference, "body")).abs()
         / peak(&elastic_reference, "body");
     eprintln!("elastic body: corrected {e:e}");
-    assert!(e < 1e-3, "elastic: {e:e}");
+    assert!(e < 2e-5, "elastic: {e:e}");
 }
 
 /// `vbi modes --json` prints every frequency at full precision (they parse

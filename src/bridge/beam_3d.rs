@@ -85,6 +85,10 @@ pub struct SwayShapes {
     pub torsion: Vec<(usize, TorsionMode)>,
     /// Height of the rails above the shear centre, m.
     pub rail_height: f64,
+    /// EI/EI_z: the lateral static deflection under a load along the
+    /// axis over the vertical one under the same load (same mesh and
+    /// supports), dimensionless.
+    pub flexibility_ratio: f64,
 }
 
 /// √(EI_z/EI): lateral over vertical frequency of the same shape.

@@ -100,21 +100,64 @@ impl ModalBridge {
         let Shapes::Beam { .. } = &self.shapes else {
             return Ok(None);
         };
-        let line = self.influence_line(x, 0.0, 0.0)?;
-        let nodes = self.node_x().to_vec();
-        let mut g = [0.0];
-        let mut full = 0.0;
-        for pair in nodes.windows(2) {
-            let (x0, h) = (pair[0], pair[1] - pair[0]);
-            for &(p, w) in &GAUSS_2 {
-                g[0] = line.value_at(x0 + 0.5 * h * (p + 1.0));
-                full += mass_per_length * 0.5 * h * w * g[0];
-            }
-        }
+        let full = self.inertia_deflection(mass_per_length, x)?;
         let modal = self.modal_static_at(x, participation);
         // G is the downward deflection per downward load; the load per unit
         // upward üg is m downward, so the upward deflection is −(full), and
         // the modal part q = −Γ/ω² gives −Σφ Γ/ω².
+        Ok(Some(-(full - modal)))
+    }
+
+    /// ∫ G(x, ξ) m dξ: a beam's static deflection at `x` (m, in the sense
+    /// of the load) under its own distributed mass `mass_per_length` (kg/m)
+    /// as a unit-acceleration load, m/(m/s²); 2-point Gauss per element
+    /// on the FE influence line (exact for its cubic pieces).
+    fn inertia_deflection(&self, mass_per_length: f64, x: f64) -> Result<f64, BridgeError> {
+        let line = self.influence_line(x, 0.0, 0.0)?;
+        let nodes = self.node_x().to_vec();
+        let mut full = 0.0;
+        for pair in nodes.windows(2) {
+            let (x0, h) = (pair[0], pair[1] - pair[0]);
+            for &(p, w) in &GAUSS_2 {
+                full += mass_per_length * 0.5 * h * w * line.value_at(x0 + 0.5 * h * (p + 1.0));
+            }
+        }
+        Ok(full)
+    }
+
+    /// The lateral static deflection of the rails at (`x`, `y`) (m, +y)
+    /// per unit lateral ground acceleration (+y) that the kept modes leave
+    /// out, m/(m/s²), for a 3D beam: the lateral analogue of
+    /// [`ModalBridge::ground_static_share`]. The inertia load −m üg acts
+    /// along the shear centre (it twists nothing: the section is doubly
+    /// symmetric), so the full deflection is the vertical one scaled by
+    /// EI/EI_z (same mesh and supports); the kept modes' share is
+    /// Σᵢ φᵢ(x, y) Γᵢ/ωᵢ² with φᵢ the modes' lateral components at the rails
+    /// (v − hθ) and Γᵢ the lateral participation factors. `None` for a
+    /// bridge without such a closed static answer (imported models, whose
+    /// lateral records stay modal sums).
+    pub fn lateral_ground_static_share(
+        &self,
+        mass_per_length: f64,
+        x: f64,
+        y: f64,
+        participation: &[f64],
+    ) -> Result<Option<f64>, BridgeError> {
+        let Shapes::Beam {
+            sway: Some(sway), ..
+        } = &self.shapes
+        else {
+            return Ok(None);
+        };
+        let full = sway.flexibility_ratio * self.inertia_deflection(mass_per_length, x)?;
+        let mut values = vec![0.0; self.mode_count()];
+        self.mode_values_in(crate::contact::ContactDirection::Lateral, x, y, &mut values);
+        let modal: f64 = values
+            .iter()
+            .zip(participation)
+            .zip(&self.circular_frequencies)
+            .map(|((phi, gamma), w)| phi * gamma / (w * w))
+            .sum();
         Ok(Some(-(full - modal)))
     }
 

@@ -208,6 +208,15 @@ enum Shapes {
 /// is kept densely: 2,500² × 8 B = 50 MB).
 pub const CONTACT_CORRECTION_DOFS: usize = 2_500;
 
+/// Relative tolerance of a frequency cut-off: a mode at most
+/// f·(1 + 1e-8) counts as at most f. It covers a cut-off copied from a
+/// mode's printed frequency (15 significant digits) and the disagreement
+/// between an inertia (Sturm) count at the cut-off and the eigensolver's
+/// frequency, whose residuals are held to [`eigen::RESIDUAL_BOUND`] = 1e-8
+/// (a 25 m beam's third mode given as printed, 47.6876464074312 Hz, was
+/// counted out at the former 1e-12).
+pub const CUT_OFF_TOLERANCE: f64 = 1e-8;
+
 /// Which modes a bridge keeps.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ModeRequest {
@@ -261,13 +270,17 @@ impl ModalBridge {
         match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam)?;
-                let count =
-                    beam_count_below(beam, &model, eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
+                let count = beam_count_below(
+                    beam,
+                    &model,
+                    eigenvalue_of(max_frequency * (1.0 + CUT_OFF_TOLERANCE)),
+                )?;
                 Ok(Some(count))
             }
             Bridge::FeImport(f) => {
                 let pencil = fe_import::modal::pencil(&f.model)?;
-                let count = pencil.count_below(eigenvalue_of(max_frequency) * (1.0 + 1e-12))?;
+                let count =
+                    pencil.count_below(eigenvalue_of(max_frequency * (1.0 + CUT_OFF_TOLERANCE)))?;
                 Ok(Some(count))
             }
             Bridge::Plate(_) => Ok(None),
@@ -300,7 +313,54 @@ impl ModalBridge {
     /// from, or written to, the modes cache in `cache` (a folder;
     /// [`eigen::cache`]): a valid cached file gives bit-identical modes,
     /// re-checked, at about a tenth of the solve's cost.
+    ///
+    /// A count with a cut-off ([`ModeRequest::LowestUpTo`]) is capped by the
+    /// solved frequencies, not by an inertia count at the cut-off: the count
+    /// and cut-off an automatic choice writes back (the cut-off at least the
+    /// last kept mode's own frequency) solve for the same modes again, bit
+    /// for bit, whatever the rounding of a count near a mode.
     pub fn build_cached(
+        bridge: &Bridge,
+        request: ModeRequest,
+        cache: Option<&std::path::Path>,
+    ) -> Result<Self, BridgeError> {
+        let ModeRequest::LowestUpTo(count, max_frequency) = request else {
+            return Self::build_counted(bridge, request, cache);
+        };
+        let available = Self::available_of(bridge);
+        if count > available {
+            return Err(BridgeError::TooManyModes {
+                requested: count,
+                available,
+            });
+        }
+        let limit = max_frequency * (1.0 + CUT_OFF_TOLERANCE);
+        // Solve for no more than the cut-off can keep (the inertia count,
+        // plus one in case it rounds a mode at the cut-off away).
+        let counted = Self::count_up_to(bridge, max_frequency)?.map_or(count, |c| c + 1);
+        let solved = count.min(counted).max(1);
+        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache)?;
+        let within = modal
+            .frequencies()
+            .iter()
+            .take_while(|&&f| f <= limit)
+            .count();
+        if within == 0 {
+            return Err(BridgeError::NoModeBelow {
+                max_frequency,
+                first: modal.frequencies()[0],
+            });
+        }
+        if within < solved {
+            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache)?;
+        }
+        modal.selection = format!("requested: the lowest {count} modes, up to {max_frequency} Hz");
+        Ok(modal)
+    }
+
+    /// [`ModalBridge::build_cached`] with the count of modes taken from
+    /// the request as it stands ([`select_count`]).
+    fn build_counted(
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
@@ -398,6 +458,8 @@ impl ModalBridge {
                                     lateral,
                                     torsion,
                                     rail_height: sway.rail_height,
+                                    flexibility_ratio: beam.bending_stiffness
+                                        / sway.lateral_bending_stiffness,
                                 })),
                             },
                             modes.check,
@@ -879,11 +941,11 @@ fn select_count(
             Ok(requested)
         }
     };
-    // Modes at most f: count below f nudged up by a relative 1e-12 (a mode
-    // exactly at the cut-off is kept, as the cut-off written back to
-    // resolved.yaml must reproduce the same set).
+    // Modes at most f: count below f nudged up by CUT_OFF_TOLERANCE (a
+    // mode at the cut-off, as printed or as the eigensolver found it, is
+    // kept).
     let up_to = |f: f64| -> Result<usize, BridgeError> {
-        let below = count_below(f * (1.0 + 1e-12))?;
+        let below = count_below(f * (1.0 + CUT_OFF_TOLERANCE))?;
         if below == 0 {
             return Err(BridgeError::NoModeBelow {
                 max_frequency: f,
@@ -897,7 +959,7 @@ fn select_count(
         ModeRequest::UpTo(f) => up_to(f),
         ModeRequest::LowestUpTo(n, f) => Ok(lowest(n)?.min(up_to(f)?)),
         ModeRequest::AtLeastUpTo(n, f) => {
-            let below = count_below(f * (1.0 + 1e-12))?;
+            let below = count_below(f * (1.0 + CUT_OFF_TOLERANCE))?;
             Ok(below.max(n.min(available)).max(1))
         }
     }

@@ -337,6 +337,12 @@ pub struct Column {
     /// a beam with the static correction; [`crate::bridge::ModalBridge::ground_static_share`]),
     /// m/(m/s²); 0 otherwise.
     ground_static: f64,
+    /// Under a lateral record, the lateral rail deflection per unit lateral
+    /// ground acceleration that the kept modes leave out (lateral bridge
+    /// displacements on a 3D beam with the static correction;
+    /// [`crate::bridge::ModalBridge::lateral_ground_static_share`]),
+    /// m/(m/s²); 0 otherwise.
+    lateral_static: f64,
     /// Under ground motion, an absolute record adds the ground's own
     /// displacement or acceleration.
     absolute: Option<GroundTerm>,
@@ -490,7 +496,8 @@ impl<'m> Recorder<'m> {
                             shape,
                             acceleration,
                         };
-                        let (ground_static, absolute) = ground_terms(model, record, &probe)?;
+                        let (ground_static, lateral_static, absolute) =
+                            ground_terms(model, record, &probe)?;
                         columns.push(Column {
                             name: record.name.clone(),
                             quantity: record.quantity,
@@ -500,6 +507,7 @@ impl<'m> Recorder<'m> {
                             position: lead,
                             probe,
                             ground_static,
+                            lateral_static,
                             absolute,
                         });
                         continue;
@@ -608,7 +616,7 @@ impl<'m> Recorder<'m> {
             };
             let static_values = matches!(probe, Probe::BridgeDisplacement { .. })
                 .then(|| Vec::with_capacity(capacity));
-            let (ground_static, absolute) = ground_terms(model, record, &probe)?;
+            let (ground_static, lateral_static, absolute) = ground_terms(model, record, &probe)?;
             columns.push(Column {
                 name: record.name.clone(),
                 quantity: record.quantity,
@@ -618,6 +626,7 @@ impl<'m> Recorder<'m> {
                 position,
                 probe,
                 ground_static,
+                lateral_static,
                 absolute,
             });
         }
@@ -840,17 +849,46 @@ impl<'m> Recorder<'m> {
 }
 
 /// The ground-motion terms of a record's column: the static share of the
-/// modes left out per unit ground acceleration, and what an absolute record
-/// adds. Both vanish without ground motion; rotations and contact
-/// quantities are the same in both frames.
+/// modes left out per unit vertical and per unit lateral ground
+/// acceleration, and what an absolute record adds. All vanish without
+/// ground motion; rotations and contact quantities are the same in both
+/// frames.
 fn ground_terms(
     model: &Model,
     record: &Record,
     probe: &Probe,
-) -> Result<(f64, Option<GroundTerm>), BridgeError> {
+) -> Result<(f64, f64, Option<GroundTerm>), BridgeError> {
     let Some(ground) = &model.ground else {
-        return Ok((0.0, None));
+        return Ok((0.0, 0.0, None));
     };
+    let (vertical, absolute) = vertical_ground_terms(model, ground, record, probe)?;
+    // Lateral rail displacements on a 3D beam: the lateral static share
+    // (mode-acceleration method, as for vertical displacements).
+    let lateral = match probe {
+        Probe::Lateral {
+            acceleration: false,
+            ..
+        } if model.bridge.static_correction && !ground.lateral.is_empty() => model
+            .bridge
+            .lateral_ground_static_share(
+                ground.lateral_mass / model.bridge.length,
+                record.x.unwrap_or(0.0),
+                record.y.unwrap_or(0.0),
+                &ground.lateral_participation,
+            )?
+            .unwrap_or(0.0),
+        _ => 0.0,
+    };
+    Ok((vertical, lateral, absolute))
+}
+
+/// [`ground_terms`]' vertical static share and absolute term.
+fn vertical_ground_terms(
+    model: &Model,
+    ground: &crate::ground::GroundExcitation,
+    record: &Record,
+    probe: &Probe,
+) -> Result<(f64, Option<GroundTerm>), BridgeError> {
     let absolute = record.frame == crate::scenario::resolved::Frame::Absolute;
     let lateral_node =
         record.node.is_some() && record.direction == Some(crate::bridge::fe_import::Direction::Uy);
@@ -1026,10 +1064,16 @@ impl Observer for Recorder<'_> {
                 },
             ),
         };
+        // Laterally: the acceleration for the lateral static share and
+        // absolute records, the displacement only for absolute ones.
         let (lateral_acceleration, lateral_displacement) = match &model.ground {
-            Some(ground) if self.absolute_lateral => (
+            Some(ground) if !ground.lateral.is_empty() => (
                 ground.lateral_acceleration(view.time),
-                ground.lateral_motion(view.time).1,
+                if self.absolute_lateral {
+                    ground.lateral_motion(view.time).1
+                } else {
+                    0.0
+                },
             ),
             _ => (0.0, 0.0),
         };
@@ -1148,6 +1192,9 @@ impl Observer for Recorder<'_> {
             };
             let value = match column.absolute {
                 _ if model.ground.is_none() => value,
+                None if column.lateral_static != 0.0 => {
+                    value + column.lateral_static * lateral_acceleration
+                }
                 None => value + column.ground_static * ground_acceleration,
                 Some(GroundTerm::Acceleration) => {
                     value + column.ground_static * ground_acceleration + ground_acceleration
@@ -1156,7 +1203,9 @@ impl Observer for Recorder<'_> {
                     value + column.ground_static * ground_acceleration + ground_displacement
                 }
                 Some(GroundTerm::LateralAcceleration) => value + lateral_acceleration,
-                Some(GroundTerm::LateralDisplacement) => value + lateral_displacement,
+                Some(GroundTerm::LateralDisplacement) => {
+                    value + column.lateral_static * lateral_acceleration + lateral_displacement
+                }
             };
             extremes.all.push(view.step, view.time, value);
             if any_on_deck {

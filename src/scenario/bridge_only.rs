@@ -92,6 +92,7 @@ pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError>
         modal.selection = format!(
             "automatic without vehicles: {count} modes, the minimum kept for the quasi-static shape"
         );
+        bridge.modes_mut().count = Some(count);
         bridge.modes_mut().max_frequency = modal.frequencies().last().copied();
     }
     Ok(ModesScene {

@@ -262,8 +262,8 @@ pub struct BeamRaw {
     /// mode up to 4 × the highest frequency the scene excites (vehicle natural
     /// frequencies incl. wheel hop on an elastic contact, axle passing v/d,
     /// span crossing v/2L, roughness v/λ), and at least 5 per span; the
-    /// resolved scenario gives the cut-off as `max_frequency` and the summary
-    /// says why.
+    /// resolved scenario gives the modes kept as `count` with the cut-off as
+    /// `max_frequency` and the summary says why.
     #[serde(default)]
     pub modes: Option<ModesRaw>,
     /// Structural damping. Default: 0 (undamped).
@@ -302,7 +302,9 @@ pub struct ModesRaw {
     #[serde(default)]
     #[schemars(transform = crate::schema::at_least_one)]
     pub count: Option<usize>,
-    /// Keep every mode whose natural frequency is at most this, Hz.
+    /// Keep every mode whose natural frequency is at most this, Hz (within
+    /// a relative 1e-8: a frequency copied as printed keeps its mode). With
+    /// `count`: the lowest `count`, none of them above this.
     #[serde(default)]
     #[schemars(transform = crate::schema::positive)]
     pub max_frequency: Option<f64>,

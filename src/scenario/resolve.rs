@@ -510,6 +510,10 @@ pub(super) fn resolve(
             let top = modal.frequencies().last().copied().unwrap_or(0.0);
             cutoff = cutoff.max(top);
         }
+        // Written back as the count kept and the cut-off (at least the
+        // last kept mode's own frequency): the count cannot round a mode
+        // away, the cut-off says why ([`ModalBridge::build_cached`]).
+        bridge.modes_mut().count = Some(modal.mode_count());
         bridge.modes_mut().max_frequency = Some(cutoff);
     }
     // The modes kept, however chosen (a high `max_frequency` keeps many).

@@ -7,9 +7,12 @@
 //! equilibrium), J. Its scale, E_ref = ½(ΣP)²·Σᵢ max|φᵢ|²/ωᵢ² (the largest
 //! static modal strain energy the wheel loads P could store) + Σᵥ ½mᵥ(1 m/s)²
 //! (a vehicle bouncing at 1 m/s) + ½Σ m_w (v a k)² (wheels following the
-//! roughness), bounds any physical response by a small factor; a run is
-//! stopped when E exceeds [`ENERGY_LIMIT`] × E_ref. Cost O(modes + Σ dofᵥ²)
-//! per step.
+//! roughness and the alignment) + the ground motion's share ([`ground_energy`]: the modal
+//! masses Γᵢ² moving at the peak ground velocity and strained statically
+//! by the peak ground acceleration as a body force, the vehicles' masses
+//! moving at the peak ground velocity), bounds any physical response by a
+//! small factor; a run is stopped when E exceeds [`ENERGY_LIMIT`] × E_ref.
+//! Cost O(modes + Σ dofᵥ²) per step.
 
 use super::modal::ModalStep;
 use super::{SolveError, VehicleState, describe_positions};
@@ -17,6 +20,50 @@ use crate::model::Model;
 
 /// Multiple of the energy scale at which a run counts as diverged.
 pub const ENERGY_LIMIT: f64 = 1e6;
+
+/// The energy a prescribed support motion can put into the run, J (0
+/// without ground motion). In relative coordinates (u = u_abs − δ u_g) a
+/// record loads mode i with −Γᵢ üg (Chopra, Dynamics of Structures, §13.1),
+/// so per direction with peak acceleration âg (m/s²) and peak velocity v̂g
+/// (m/s):
+/// - ½ Σᵢ Γᵢ² v̂g²: the modal masses moving at the ground's velocity (a
+///   flexible mode stays put while the supports move: its relative velocity
+///   is the ground's);
+/// - ½ Σᵢ Γᵢ² âg²/ωᵢ²: the static strain energy of the body force −M δ âg
+///   (a stiff mode follows the acceleration quasi-statically);
+/// - ½ Σᵥ mᵥ v̂g²: every vehicle's mass moving at the ground's velocity
+///   relative to its supports.
+///
+/// Resonance with the record multiplies these by at most (1/2ζ)², well
+/// inside [`ENERGY_LIMIT`] for any damping ratio above 0.05 %.
+pub fn ground_energy(model: &Model) -> f64 {
+    let Some(ground) = &model.ground else {
+        return 0.0;
+    };
+    let omegas = &model.bridge.circular_frequencies;
+    let vehicle_mass: f64 = model
+        .vehicles
+        .iter()
+        .map(|v| v.mass.diagonal().iter().sum::<f64>())
+        .sum();
+    let direction = |records: &[std::sync::Arc<crate::ground::GroundRecord>],
+                     participation: &[f64]| {
+        if records.is_empty() {
+            return 0.0;
+        }
+        // Components in one direction add: their peaks bound the sum's.
+        let acceleration: f64 = records.iter().map(|r| r.peak_acceleration()).sum();
+        let velocity: f64 = records.iter().map(|r| r.peak_velocity()).sum();
+        let modal: f64 = participation
+            .iter()
+            .zip(omegas)
+            .map(|(g, w)| g * g * (velocity * velocity + (acceleration / w.max(1e-6)).powi(2)))
+            .sum();
+        0.5 * (modal + vehicle_mass * velocity * velocity)
+    };
+    direction(&ground.vertical, &ground.participation)
+        + direction(&ground.lateral, &ground.lateral_participation)
+}
 
 /// Precomputed scale and stability facts of one model.
 #[derive(Debug, Clone)]
@@ -49,7 +96,12 @@ impl Guard {
             * 0.5
             * total_load
             * total_load;
-        let slope = model.profile.slope_scale();
+        // Prescribed motion of the wheels: the vertical profile and the
+        // track's alignment (a `train_3d` follows it sideways).
+        let slope = model
+            .profile
+            .slope_scale()
+            .hypot(model.profile.alignment_slope_scale());
         let vehicle_energy: f64 = model
             .vehicles
             .iter()
@@ -79,9 +131,16 @@ impl Guard {
             )
         };
         Self {
-            energy_scale: (static_energy + vehicle_energy).max(f64::MIN_POSITIVE),
+            energy_scale: (static_energy + vehicle_energy + ground_energy(model))
+                .max(f64::MIN_POSITIVE),
             cause,
         }
+    }
+
+    /// The energy scale E_ref, J: a physical response stays within a
+    /// small multiple of it.
+    pub fn energy_scale(&self) -> f64 {
+        self.energy_scale
     }
 
     /// Mechanical energy of the current state, J.

@@ -447,6 +447,21 @@ impl Profile {
         }
     }
 
+    /// The largest slope of the track's alignment (dimensionless; 0 where
+    /// the surface samples none): the lateral counterpart of
+    /// [`Profile::slope_scale`].
+    pub fn alignment_slope_scale(&self) -> f64 {
+        match self {
+            Profile::Sampled {
+                alignment: Some((left, right)),
+                ..
+            } => left
+                .max_slope()
+                .max(right.as_ref().map_or(0.0, QuinticGrid::max_slope)),
+            _ => 0.0,
+        }
+    }
+
     /// Elevation at `x` (m) under the left rail (or the one profile), m.
     #[inline]
     pub fn elevation(&self, x: f64) -> f64 {
