@@ -231,10 +231,11 @@ fn partial_3d_beams_are_refused() {
 /// displacements do under a vertical record. The harmonic record 1.5 m/s²
 /// at 3 Hz for 2 s: the mid-span rail displacement with 6 modes (2 lateral)
 /// against every mode the 40-element mesh offers (200) without the
-/// correction, the full-mode answer, over the whole run. Measured
-/// 2026-11-27: with the correction 6.2e-4 of the peak, without it 1.1e-2
-/// (the lateral modes left out carry 1.2 % of the static deflection); bound
-/// 3e-3 with, and without it at least 10× worse.
+/// correction, the full-mode answer, over the whole run (6 modes keep one
+/// lateral one, 4.27 Hz; the rest respond quasi-statically to 3 Hz).
+/// Measured 2026-11-27: largest difference with the correction 1.07e-4 of
+/// the peak, without it 1.26e-3 (the lateral modes left out); bound 5e-4
+/// with (4.7× measured), and without it at least 5× worse.
 #[test]
 fn the_lateral_static_correction_converges_with_few_modes() {
     let dir = std::env::temp_dir().join(format!("vbi-beam3d-lateral-{}", std::process::id()));
@@ -279,9 +280,9 @@ fn the_lateral_static_correction_converges_with_few_modes() {
         "lateral rail displacement, 6 modes: corrected {with:.2e}, plain {without:.2e} of the peak {peak:.3e} m"
     );
     assert!(peak > 1e-5, "the record moves the deck sideways: {peak}");
-    assert!(with < 3e-3, "corrected: {with:e}");
+    assert!(with < 5e-4, "corrected: {with:e}");
     assert!(
-        without > 10.0 * with,
+        without > 5.0 * with,
         "the correction should help: {without:e} vs {with:e}"
     );
 }

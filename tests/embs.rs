@@ -308,8 +308,8 @@ fn forced_sdof(omega: f64, zeta: f64, force: f64, big_omega: f64, t: f64) -> f64
 /// the mode computed here by Simpson's rule over 2000 intervals of the
 /// modes' own lateral shapes, so the mid-span lateral displacement is
 /// Σ φ(12.5) q(t) with q the closed form above. Measured 2026-11-27:
-/// largest difference 5.0e-6 of the peak at Δt = 1e-4 s (Newmark's period
-/// error); bound 2e-5, a 1 % ground load misses it by 500×.
+/// largest difference 8.75e-6 of the peak at Δt = 1e-4 s (Newmark's period
+/// error); bound 4e-5 (4.6× measured), which a 1 % ground load exceeds.
 #[test]
 fn the_lateral_ground_load_reaches_the_deck_as_computed_by_hand() {
     use std::f64::consts::PI;
@@ -387,5 +387,5 @@ fn the_lateral_ground_load_reaches_the_deck_as_computed_by_hand() {
         worst / peak
     );
     assert!(peak > 1e-5, "the record shakes the deck: {peak:e} m");
-    assert!(worst < 2e-5 * peak, "{:e} of the peak", worst / peak);
+    assert!(worst < 4e-5 * peak, "{:e} of the peak", worst / peak);
 }
