@@ -39,6 +39,11 @@ struct Cli {
     /// Solve every imported model's modes afresh and write no cache.
     #[arg(long, global = true, conflicts_with = "modes_cache")]
     no_modes_cache: bool,
+    /// Let scenes read files in DIR and below (repeatable): without it a
+    /// scene reads only files inside its own folder tree (symlinks resolved)
+    /// and no absolute path.
+    #[arg(long, global = true, value_name = "DIR")]
+    data_dir: Vec<PathBuf>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -238,9 +243,14 @@ fn main() -> ExitCode {
                 .or_else(|| out.map(vbi::bridge::eigen::cache::default_folder))
         }
     };
+    let data = scenario::DataAccess {
+        data_dirs: cli.data_dir.clone(),
+        confine_to: None,
+    };
     let options = scenario::LoadOptions {
         allow_large: cli.allow_large,
         modes_cache: cache_in(None),
+        data: data.clone(),
     };
     let load = |file: &Path| scenario::load_file_with(file, options.clone());
     match cli.command {
@@ -264,7 +274,7 @@ fn main() -> ExitCode {
                 (None, None) => run(loaded, &file, out, quiet, svg),
             }
         }
-        Command::Merge { parts, out, quiet } => merge(&parts, &out, quiet),
+        Command::Merge { parts, out, quiet } => merge(&parts, &out, &options, quiet),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -287,7 +297,7 @@ fn main() -> ExitCode {
             },
             Err(e) => load_error(&e),
         },
-        Command::Modes { file, shapes, json } => modes(&file, shapes.as_deref(), json),
+        Command::Modes { file, shapes, json } => modes(&file, &data, shapes.as_deref(), json),
         Command::Generate { what } => generate(what),
         Command::Converge {
             file,
@@ -473,12 +483,17 @@ fn check(
     }
 }
 
-fn modes(file: &Path, shapes: Option<&Path>, json: bool) -> ExitCode {
+fn modes(
+    file: &Path,
+    data: &scenario::DataAccess,
+    shapes: Option<&Path>,
+    json: bool,
+) -> ExitCode {
     let vbi::scenario::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
-    } = match scenario::load_file_for_modes(file) {
+    } = match scenario::load_file_for_modes(file, data) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };

@@ -234,9 +234,14 @@ pub(super) fn run_sample(
 }
 
 /// `vbi merge`: the parts' study written as an unsharded run writes it.
-pub(super) fn merge(parts: &[PathBuf], out: &Path, quiet: bool) -> ExitCode {
+pub(super) fn merge(
+    parts: &[PathBuf],
+    out: &Path,
+    options: &scenario::LoadOptions,
+    quiet: bool,
+) -> ExitCode {
     use vbi::study::shard::{self, ShardError};
-    let merged = match shard::merge(parts) {
+    let merged = match shard::merge(parts, options) {
         Ok(m) => m,
         Err(e) => {
             errln!("error: {e}");

@@ -1,0 +1,205 @@
+//! Confined reads of the data files a scene names (FE matrices, rail and
+//! DOF-map CSVs, ground-motion records, measured profiles).
+//!
+//! A scene comes from someone else (issue 23): a path in it must not read
+//! the user's other files and print them in a diagnostic. A relative path
+//! is resolved against the scene file's folder, its symlinks are resolved
+//! (`canonicalize`), and the real file must lie inside that folder's tree
+//! or inside a folder the user named on the command line (`--data-dir`,
+//! repeatable). An absolute path is read only inside a `--data-dir`. Only
+//! regular files are read: a device (`/dev/zero`), a FIFO or a folder is
+//! refused before it is opened, and the file is opened non-blocking and
+//! checked again on the open handle (a file swapped for a FIFO in between
+//! cannot hang the read). A refusal names the path and the option, never a
+//! byte of the file.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use super::resolve::Checker;
+
+/// Where the files a scene names may be read from.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct DataAccess {
+    /// Folders outside the scene's own folder tree whose files (and whose
+    /// subfolders' files) a scene may read: `--data-dir`, as given.
+    pub data_dirs: Vec<PathBuf>,
+    /// The folder tree a scene's relative paths must stay inside, in place
+    /// of the scene file's own folder. `vbi merge` sets the current folder:
+    /// a part file names its scene's file, and that name is not trusted to
+    /// say which folder may be read.
+    pub confine_to: Option<PathBuf>,
+}
+
+/// A data file allowed to be read: the path shown in messages and written
+/// in the resolved scene, and its size, bytes.
+#[derive(Debug, Clone)]
+pub(super) struct DataFile {
+    /// The absolute path (the scene's folder joined with the name as
+    /// written, symlinks not resolved), as diagnostics show it.
+    pub shown: String,
+    /// The real file (symlinks resolved): what is opened.
+    pub real: PathBuf,
+    /// Size from the file's metadata, bytes.
+    pub size: u64,
+}
+
+impl DataFile {
+    /// The absolute path as shown.
+    pub fn path(&self) -> &Path {
+        Path::new(&self.shown)
+    }
+}
+
+/// The scene file's folder: the parent of the name as given, `.` for a bare
+/// file name.
+fn scene_folder(file: &str) -> PathBuf {
+    match Path::new(file).parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+/// Resolves `named` (a path as written in the scene) and checks it may be
+/// read; the error is the whole message, reported by the caller at its key.
+pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> {
+    let access = ck.data_access();
+    let base = scene_folder(ck.file());
+    let written = Path::new(named);
+    let joined = base.join(written);
+    let shown = std::path::absolute(&joined)
+        .unwrap_or_else(|_| joined.clone())
+        .display()
+        .to_string();
+    let option = "run with `--data-dir DIR` naming a folder that holds it";
+    if written.is_absolute() && access.data_dirs.is_empty() {
+        return Err(format!(
+            "`{named}` is an absolute path; a scene reads files only inside its own folder \
+             tree — give a path relative to the scene, or {option}"
+        ));
+    }
+    let real = std::fs::canonicalize(&joined)
+        .map_err(|e| format!("cannot read {shown}: {}", io_reason(&e)))?;
+    let own = access.confine_to.clone().unwrap_or(base);
+    let mut roots: Vec<PathBuf> = Vec::new();
+    if !written.is_absolute() {
+        roots.extend(std::fs::canonicalize(&own).ok());
+    }
+    roots.extend(
+        access
+            .data_dirs
+            .iter()
+            .filter_map(|d| std::fs::canonicalize(d).ok()),
+    );
+    if !roots.iter().any(|root| real.starts_with(root)) {
+        let through = if Path::new(&shown) == real {
+            String::new()
+        } else {
+            format!(" (through a symlink, to {})", real.display())
+        };
+        let folder = std::path::absolute(&own).unwrap_or(own);
+        return Err(format!(
+            "{shown} is outside {}{through}; a scene reads files only inside its own folder \
+             tree — to allow it, {option}",
+            if written.is_absolute() {
+                "every `--data-dir`".to_string()
+            } else {
+                format!("the scene's folder {}", folder.display())
+            }
+        ));
+    }
+    let meta = std::fs::metadata(&real)
+        .map_err(|e| format!("cannot read {shown}: {}", io_reason(&e)))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "{shown} is not a regular file (a folder, a device or a pipe); name a file"
+        ));
+    }
+    Ok(DataFile {
+        shown,
+        real,
+        size: meta.len(),
+    })
+}
+
+/// Reads `file` whole as UTF-8 text: opened non-blocking, checked again to
+/// be a regular file on the open handle, at most its size plus one byte
+/// read. The error is the whole message.
+pub(super) fn read_text(file: &DataFile) -> Result<String, String> {
+    let shown = &file.shown;
+    let mut bytes = Vec::new();
+    let read = open_regular(&file.real).and_then(|f| {
+        f.take(file.size.saturating_add(1))
+            .read_to_end(&mut bytes)
+            .map(|_| ())
+    });
+    if let Err(e) = read {
+        return Err(format!("cannot read {shown}: {}", io_reason(&e)));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "{shown} is not UTF-8 text (byte {} is not); is it the right file?",
+            e.utf8_error().valid_up_to() + 1
+        )
+    })
+}
+
+/// Opens `path` for reading without blocking (a FIFO put in a regular
+/// file's place would otherwise wait for a writer) and refuses anything
+/// but a regular file by the open handle's own metadata.
+pub fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    let file = options.open(path)?;
+    if !file.metadata()?.is_file() {
+        return Err(std::io::Error::other(
+            "not a regular file (a folder, a device or a pipe)",
+        ));
+    }
+    Ok(file)
+}
+
+/// An I/O error's reason without the OS error number.
+fn io_reason(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.find(" (os error") {
+        Some(i) => text[..i].to_string(),
+        None => text,
+    }
+}
+
+/// At most this many characters of a data file's field are quoted in a
+/// message: enough to see a typo (`1.0e4x`), too few to print a file.
+pub const MAX_QUOTED: usize = 16;
+
+/// A field of a data file as a message may quote it: control characters
+/// dropped, cut to [`MAX_QUOTED`] characters with `…`.
+pub fn quoted(field: &str) -> String {
+    let clean: String = field.chars().filter(|c| !c.is_control()).collect();
+    if clean.chars().count() <= MAX_QUOTED {
+        clean
+    } else {
+        let cut: String = clean.chars().take(MAX_QUOTED).collect();
+        format!("{cut}…")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quoting_is_short() {
+        assert_eq!(quoted("1.0e4x"), "1.0e4x");
+        assert_eq!(
+            quoted("root:x:0:0:root:/root:/bin/bash"),
+            "root:x:0:0:root:…"
+        );
+        assert_eq!(quoted("a\u{1b}[31mb"), "a[31mb");
+    }
+}
