@@ -71,6 +71,10 @@ enum Command {
         /// single-run outputs.
         #[arg(long, value_name = "K", value_parser = clap::value_parser!(u64).range(1..))]
         sample: Option<u64>,
+        /// Write into the output folder even if it holds another scene
+        /// file's results (its `resolved.yaml` names that file).
+        #[arg(long)]
+        force: bool,
     },
     /// Combine the part files of a sharded study into exactly the files an
     /// unsharded run writes (summary.json's wall_time: the parts' sum).
@@ -84,6 +88,10 @@ enum Command {
         /// No closing message.
         #[arg(long, short)]
         quiet: bool,
+        /// Write into the output folder even if it holds another scene
+        /// file's results.
+        #[arg(long)]
+        force: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -261,6 +269,7 @@ fn main() -> ExitCode {
             svg,
             shard,
             sample,
+            force,
         } => {
             let folder = out.clone().unwrap_or_else(|| default_out(&file, ""));
             let options = scenario::LoadOptions {
@@ -270,11 +279,16 @@ fn main() -> ExitCode {
             let loaded = scenario::load_file_with(&file, options.clone());
             match (shard, sample) {
                 (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard),
-                (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, k),
-                (None, None) => run(loaded, &file, out, quiet, svg),
+                (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, force, k),
+                (None, None) => run(loaded, &file, out, quiet, svg, force),
             }
         }
-        Command::Merge { parts, out, quiet } => merge(&parts, &out, &options, quiet),
+        Command::Merge {
+            parts,
+            out,
+            quiet,
+            force,
+        } => merge(&parts, &out, &options, quiet, force),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -386,16 +400,25 @@ fn run(
     out: Option<PathBuf>,
     quiet: bool,
     svg: bool,
+    force: bool,
 ) -> ExitCode {
-    let loaded = match loaded {
+    let mut loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
+    let out = out.unwrap_or_else(|| default_out(file, ""));
+    // The folder is claimed before the work: another scene's results in it
+    // are not mixed with these.
+    let source = vbi::run::source_name(file);
+    if let Err(message) = vbi::run::claim_folder(&out, &source, force) {
+        errln!("error: {message}");
+        return ExitCode::from(EXIT_INVALID);
+    }
+    loaded.scenario.source_file = Some(source);
     let scenario = loaded.scenario.clone();
     for warning in vbi::report::advice::scene_warnings(&scenario) {
         errln!("warning: {}: {warning}", file.display());
     }
-    let out = out.unwrap_or_else(|| default_out(file, ""));
     let bar = if quiet {
         ProgressBar::hidden()
     } else {

@@ -693,6 +693,7 @@ pub(super) fn resolve(
         }
     }
     let scenario = Scenario {
+        source_file: None,
         name: raw.name.clone(),
         description: raw.description.clone(),
         gravity,

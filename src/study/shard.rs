@@ -303,6 +303,8 @@ pub fn read_part(path: &Path) -> Result<Part, ShardError> {
 /// The merged study and the scene it belongs to.
 #[derive(Debug)]
 pub struct Merged {
+    /// The scenario file as the parts name it (as given to `vbi run`).
+    pub scenario_file: String,
     /// The scene, loaded again from the parts' scenario text.
     pub loaded: Loaded,
     /// The study's results, as an unsharded run gives them.
@@ -374,6 +376,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
         ..options.clone()
     };
     let allow_large = options.allow_large;
+    let first_file = first.scenario_file.clone();
     let loaded = scenario::load_str_with(&first.scenario_source, &first.scenario_file, options)?;
     let hash = scenario_hash(&loaded);
     if hash != first.scenario_hash {
@@ -541,7 +544,11 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
             )
         }
     };
-    Ok(Merged { loaded, results })
+    Ok(Merged {
+        scenario_file: first_file,
+        loaded,
+        results,
+    })
 }
 
 fn short(shard: usize, got: usize, want: usize) -> ShardError {

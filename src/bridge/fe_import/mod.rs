@@ -139,12 +139,12 @@ pub(crate) fn parse_value(field: &str, line: &str, n: usize) -> Result<f64, Read
     let v: f64 = field
         .replace(['D', 'd'], "e")
         .parse()
-        .map_err(|_| ReadError::new(n, column, format!("`{field}` is not a number")))?;
+        .map_err(|_| ReadError::new(n, column, format!("`{}` is not a number", crate::text_table::quoted(field))))?;
     if !v.is_finite() {
         return Err(ReadError::new(
             n,
             column,
-            format!("`{field}` is not a finite number"),
+            format!("`{}` is not a finite number", crate::text_table::quoted(field)),
         ));
     }
     Ok(v)

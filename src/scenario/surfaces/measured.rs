@@ -6,6 +6,7 @@
 //! row.
 
 use super::super::budget::Budget;
+use crate::ground::table::not_a_number;
 use super::super::data_files::{self, DataFile};
 use super::super::resolve::Checker;
 use super::super::resolved::MeasuredProfile;
@@ -90,12 +91,9 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
         for (k, field) in fields.iter().enumerate() {
             let v: f64 = field
                 .parse()
-                .map_err(|_| (n, format!("column {}: `{field}` is not a number", k + 1)))?;
+                .map_err(|_| (n, not_a_number(k, field, !x.is_empty(), "")))?;
             if !v.is_finite() {
-                return Err((
-                    n,
-                    format!("column {}: `{field}` is not a finite number", k + 1),
-                ));
+                return Err((n, not_a_number(k, field, true, "finite ")));
             }
             values[k] = v;
         }
