@@ -78,9 +78,28 @@ pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> 
              tree — give a path relative to the scene, or {option}"
         ));
     }
-    let real = std::fs::canonicalize(&joined)
-        .map_err(|e| format!("cannot read {shown}: {}", io_reason(&e)))?;
     let own = access.confine_to.clone().unwrap_or(base);
+    let real = match std::fs::canonicalize(&joined) {
+        Ok(real) => real,
+        // A missing file is reported as missing only inside the allowed
+        // folders: outside them, whether a file exists is not told either.
+        Err(e) => {
+            let within = |root: &Path| {
+                let root = std::path::absolute(root).unwrap_or_else(|_| root.to_path_buf());
+                lexical(Path::new(&shown)).starts_with(lexical(&root))
+            };
+            let allowed = (!written.is_absolute() && within(&own))
+                || access.data_dirs.iter().any(|d| within(d));
+            return Err(if allowed {
+                format!("cannot read {shown}: {}", io_reason(&e))
+            } else {
+                format!(
+                    "{shown} is outside the scene's folder; a scene reads files only inside its \
+                     own folder tree — to allow it, {option}"
+                )
+            });
+        }
+    };
     let mut roots: Vec<PathBuf> = Vec::new();
     if !written.is_absolute() {
         roots.extend(std::fs::canonicalize(&own).ok());
@@ -92,7 +111,7 @@ pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> 
             .filter_map(|d| std::fs::canonicalize(d).ok()),
     );
     if !roots.iter().any(|root| real.starts_with(root)) {
-        let through = if Path::new(&shown) == real {
+        let through = if lexical(Path::new(&shown)) == real {
             String::new()
         } else {
             format!(" (through a symlink, to {})", real.display())
@@ -164,42 +183,28 @@ pub fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
     Ok(file)
 }
 
+/// `path` with `.` and `..` removed by their names alone (no symlink is
+/// followed: used only for a path that does not exist).
+fn lexical(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut out = PathBuf::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
 /// An I/O error's reason without the OS error number.
 fn io_reason(e: &std::io::Error) -> String {
     let text = e.to_string();
     match text.find(" (os error") {
         Some(i) => text[..i].to_string(),
         None => text,
-    }
-}
-
-/// At most this many characters of a data file's field are quoted in a
-/// message: enough to see a typo (`1.0e4x`), too few to print a file.
-pub const MAX_QUOTED: usize = 16;
-
-/// A field of a data file as a message may quote it: control characters
-/// dropped, cut to [`MAX_QUOTED`] characters with `…`.
-pub fn quoted(field: &str) -> String {
-    let clean: String = field.chars().filter(|c| !c.is_control()).collect();
-    if clean.chars().count() <= MAX_QUOTED {
-        clean
-    } else {
-        let cut: String = clean.chars().take(MAX_QUOTED).collect();
-        format!("{cut}…")
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn quoting_is_short() {
-        assert_eq!(quoted("1.0e4x"), "1.0e4x");
-        assert_eq!(
-            quoted("root:x:0:0:root:/root:/bin/bash"),
-            "root:x:0:0:root:…"
-        );
-        assert_eq!(quoted("a\u{1b}[31mb"), "a[31mb");
     }
 }

@@ -556,7 +556,7 @@ case("confine-absolute-rail", "rejected", "confined reads: a rail CSV by an abso
      fe_scene(rail="@@/etc/passwd"), ABSOLUTE)
 # Inside the folder but not the format: refused without quoting the content.
 side_files["not-a-rail.csv"] = "root:x:0:0:root:/root:/bin/bash\n1,2\n"
-side_files["not-a-record.csv"] = "root:x:0:0:root:/root:/bin/bash\nroot:x:0:0:root:/root:/bin/bash\n"
+side_files["not-a-record.csv"] = "root:x:0:0,root:/root:/bin/bash\nroot:x:0:0,root:/root:/bin/bash\n"
 case("content-not-a-rail", "rejected", "a rail CSV that is not one is not quoted",
      fe_scene(rail="@@not-a-rail.csv"), "the header must be `node,x`")
 case("content-not-a-record", "rejected", "a record CSV that is not one is not quoted",
