@@ -506,12 +506,7 @@ fn check(
     }
 }
 
-fn modes(
-    file: &Path,
-    data: &scenario::DataAccess,
-    shapes: Option<&Path>,
-    json: bool,
-) -> ExitCode {
+fn modes(file: &Path, data: &scenario::DataAccess, shapes: Option<&Path>, json: bool) -> ExitCode {
     let vbi::scenario::bridge_only::ModesScene {
         name,
         bridge,

@@ -82,11 +82,7 @@ fn data_dir_lets_a_scene_read_outside_its_folder() {
     let shared = scratch.path("shared");
     fs::create_dir_all(&shared).unwrap();
     let record = shared.join("vertical.AT2");
-    fs::copy(
-        scenarios().join("records/synthetic-vertical.AT2"),
-        &record,
-    )
-    .unwrap();
+    fs::copy(scenarios().join("records/synthetic-vertical.AT2"), &record).unwrap();
     std::os::unix::fs::symlink(&record, scene.join("records/synthetic-vertical.AT2")).unwrap();
     let file = "quake-vertical-rail-car.yaml";
     let (code, _, stderr) = vbi(&["check", file], &scene);
@@ -95,14 +91,14 @@ fn data_dir_lets_a_scene_read_outside_its_folder() {
     assert_eq!(code, Some(0), "{stderr}");
     // An absolute path: only with --data-dir.
     let text = fs::read_to_string(scene.join(file)).unwrap();
-    let absolute = text.replace(
-        "records/synthetic-vertical.AT2",
-        record.to_str().unwrap(),
-    );
+    let absolute = text.replace("records/synthetic-vertical.AT2", record.to_str().unwrap());
     fs::write(scene.join("absolute.yaml"), absolute).unwrap();
     let (code, _, stderr) = vbi(&["check", "absolute.yaml"], &scene);
     assert_eq!(code, Some(2), "{stderr}");
-    assert!(stderr.contains("is an absolute path") && stderr.contains("--data-dir"), "{stderr}");
+    assert!(
+        stderr.contains("is an absolute path") && stderr.contains("--data-dir"),
+        "{stderr}"
+    );
     let dir = shared.to_str().unwrap();
     let (code, _, stderr) = vbi(&["check", "--data-dir", dir, "absolute.yaml"], &scene);
     assert_eq!(code, Some(0), "{stderr}");
@@ -164,16 +160,26 @@ fn forged_shard_counts_and_allow_large_are_refused() {
     let dir = scratch.dir();
     fs::write(dir.join("map.yaml"), MAP).unwrap();
     let (code, _, stderr) = vbi(
-        &["run", "-q", "map.yaml", "--shard", "1/99999999999", "--out", "p"],
+        &[
+            "run",
+            "-q",
+            "map.yaml",
+            "--shard",
+            "1/99999999999",
+            "--out",
+            "p",
+        ],
         dir,
     );
     assert_eq!(code, Some(2), "{stderr}");
     assert!(stderr.contains("at most one shard a run"), "{stderr}");
-    let (code, _, stderr) = vbi(&["run", "-q", "map.yaml", "--shard", "1/1", "--out", "p"], dir);
+    let (code, _, stderr) = vbi(
+        &["run", "-q", "map.yaml", "--shard", "1/1", "--out", "p"],
+        dir,
+    );
     assert_eq!(code, Some(0), "{stderr}");
     let real: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(dir.join("p/part-1-of-1.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&fs::read_to_string(dir.join("p/part-1-of-1.json")).unwrap()).unwrap();
     let forge = |name: &str, edit: &dyn Fn(&mut serde_json::Value)| -> PathBuf {
         let mut part = real.clone();
         edit(&mut part);
@@ -205,7 +211,9 @@ fn forged_shard_counts_and_allow_large_are_refused() {
             "claims a 99999999999-run study",
         ),
         (
-            forge("hash.json", &|p| p["scenario_hash"] = "0123456789abcdef".into()),
+            forge("hash.json", &|p| {
+                p["scenario_hash"] = "0123456789abcdef".into()
+            }),
             "their hash",
         ),
     ];
@@ -213,7 +221,11 @@ fn forged_shard_counts_and_allow_large_are_refused() {
         let start = std::time::Instant::now();
         let (code, _, stderr) = vbi(&["merge", "--out", "m", part.to_str().unwrap()], dir);
         assert_eq!(code, Some(2), "{}: {stderr}", part.display());
-        assert!(stderr.contains(expect), "{}: expected `{expect}`: {stderr}", part.display());
+        assert!(
+            stderr.contains(expect),
+            "{}: expected `{expect}`: {stderr}",
+            part.display()
+        );
         assert!(start.elapsed().as_secs() < 5, "took {:?}", start.elapsed());
         assert!(!dir.join("m").exists());
     }
@@ -236,9 +248,7 @@ fn a_forged_part_reads_nothing_outside() {
         })
         .to_string()
     };
-    let quake = |path: &str| {
-        format!("{MAP}ground_motion:\n  - {{file: {path}, units: g}}\n")
-    };
+    let quake = |path: &str| format!("{MAP}ground_motion:\n  - {{file: {path}, units: g}}\n");
     let secret_dir = secret.parent().unwrap();
     let cases = [
         part("/etc/x.yaml", quake("passwd")),
@@ -282,7 +292,9 @@ fn two_scene_files_never_share_a_results_folder() {
     let (code, _, stderr) = vbi(&["run", "-q", "flip/fe.yaml"], dir);
     assert_eq!(code, Some(2), "{stderr}");
     assert!(
-        stderr.contains("another scene file") && stderr.contains("--out") && stderr.contains("--force"),
+        stderr.contains("another scene file")
+            && stderr.contains("--out")
+            && stderr.contains("--force"),
         "{stderr}"
     );
     assert_eq!(

@@ -369,7 +369,11 @@ fn data_seeds() -> Vec<(Role, &'static str, String)> {
     add(Role::Mass, "mtx", fig4.join("M.mtx"));
     add(Role::DofMap, "csv", fig4.join("dofs.csv"));
     add(Role::Rail, "csv", fig4.join("rail.csv"));
-    for dir in ["tests/hostile/cases/fe", "tests/hostile/cases", "scenarios/records"] {
+    for dir in [
+        "tests/hostile/cases/fe",
+        "tests/hostile/cases",
+        "scenarios/records",
+    ] {
         let Ok(entries) = fs::read_dir(root.join(dir)) else {
             continue;
         };
@@ -411,7 +415,11 @@ fn host_scene(role: Role, ext: &str, rng: &mut Rng) -> String {
             Role::Rail => r == "R",
             _ => false,
         };
-        if matches { fuzz.clone() } else { original.to_string() }
+        if matches {
+            fuzz.clone()
+        } else {
+            original.to_string()
+        }
     };
     let beam = "name: data-fuzz\nbridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, \
                 mass_per_length: 2303.0}\nvehicles:\n  - {type: oscillator, sprung_mass: 5750.0, \

@@ -146,11 +146,20 @@ pub fn parse(text: &str, max_points: usize) -> Result<At2, At2Error> {
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|t| !t.is_empty())
         {
-            let value: f64 = token
-                .parse()
-                .map_err(|_| (n, format!("`{}` is not a number", crate::text_table::quoted(token))))?;
+            let value: f64 = token.parse().map_err(|_| {
+                (
+                    n,
+                    format!("`{}` is not a number", crate::text_table::quoted(token)),
+                )
+            })?;
             if !value.is_finite() {
-                return Err((n, format!("`{}` is not a finite number", crate::text_table::quoted(token))));
+                return Err((
+                    n,
+                    format!(
+                        "`{}` is not a finite number",
+                        crate::text_table::quoted(token)
+                    ),
+                ));
             }
             if acceleration.len() == npts {
                 return Err((

@@ -61,8 +61,17 @@ fn scene_folder(file: &str) -> PathBuf {
 }
 
 /// Resolves `named` (a path as written in the scene) and checks it may be
-/// read; the error is the whole message, reported by the caller at its key.
-pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> {
+/// read; `what` names the file in messages (`the measured profile`, or
+/// empty). The error is the whole message, reported by the caller at its key.
+pub(super) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFile, String> {
+    let cannot = |shown: &str, e: &std::io::Error| {
+        let what = if what.is_empty() {
+            String::new()
+        } else {
+            format!("{what} ")
+        };
+        format!("cannot read {what}{shown}: {}", io_reason(e))
+    };
     let access = ck.data_access();
     let base = scene_folder(ck.file());
     let written = Path::new(named);
@@ -91,7 +100,7 @@ pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> 
             let allowed = (!written.is_absolute() && within(&own))
                 || access.data_dirs.iter().any(|d| within(d));
             return Err(if allowed {
-                format!("cannot read {shown}: {}", io_reason(&e))
+                cannot(&shown, &e)
             } else {
                 format!(
                     "{shown} is outside the scene's folder; a scene reads files only inside its \
@@ -127,8 +136,7 @@ pub(super) fn locate(named: &str, ck: &Checker<'_>) -> Result<DataFile, String> 
             }
         ));
     }
-    let meta = std::fs::metadata(&real)
-        .map_err(|e| format!("cannot read {shown}: {}", io_reason(&e)))?;
+    let meta = std::fs::metadata(&real).map_err(|e| cannot(&shown, &e))?;
     if !meta.is_file() {
         return Err(format!(
             "{shown} is not a regular file (a folder, a device or a pipe); name a file"

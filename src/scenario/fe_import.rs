@@ -259,7 +259,7 @@ fn located<T>(
 /// Resolves a path the scene names at `at` ([`data_files::locate`]);
 /// `None` after reporting why it may not be read.
 fn locate(named: &str, at: &str, ck: &mut Checker<'_>) -> Option<DataFile> {
-    match data_files::locate(named, ck) {
+    match data_files::locate(named, "", ck) {
         Ok(file) => Some(file),
         Err(message) => {
             ck.error(at, message);

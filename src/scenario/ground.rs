@@ -74,7 +74,8 @@ pub(super) fn resolve(
             );
             continue;
         }
-        let data = match super::data_files::locate(&component.file, ck) {
+        let data = match super::data_files::locate(&component.file, "the ground-motion record", ck)
+        {
             Ok(data) => data,
             Err(message) => {
                 ck.error(&format!("{at}.file"), message);

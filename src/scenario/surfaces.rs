@@ -226,7 +226,7 @@ pub(super) fn resolve_surface(
             ),
         },
         R::Measured { file } => {
-            let data = match super::data_files::locate(file, ck) {
+            let data = match super::data_files::locate(file, "the measured profile", ck) {
                 Ok(data) => data,
                 Err(message) => {
                     ck.error("surface.file", message);

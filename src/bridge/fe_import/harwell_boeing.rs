@@ -151,14 +151,13 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
     let n = rows as usize;
     let nnz = entries as usize;
     let whole = |f: &str, line: usize, col: usize| -> Result<u64, ReadError> {
-        f.parse()
-            .map_err(|_| {
-                ReadError::new(
-                    line,
-                    Some(col),
-                    format!("`{}` is not a whole number", crate::text_table::quoted(f)),
-                )
-            })
+        f.parse().map_err(|_| {
+            ReadError::new(
+                line,
+                Some(col),
+                format!("`{}` is not a whole number", crate::text_table::quoted(f)),
+            )
+        })
     };
     let pointers = fields(
         &lines,

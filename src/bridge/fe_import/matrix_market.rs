@@ -66,7 +66,10 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
             return Err(ReadError::new(
                 1,
                 None,
-                format!("`{}` symmetry is not read; use `symmetric` or `general`", crate::text_table::quoted(other)),
+                format!(
+                    "`{}` symmetry is not read; use `symmetric` or `general`",
+                    crate::text_table::quoted(other)
+                ),
             ));
         }
     };
@@ -148,9 +151,13 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
         let index = |k: usize| -> Result<usize, ReadError> {
             let f = fields[k];
             let col = Some(column_of(line, f));
-            let i: u64 = f
-                .parse()
-                .map_err(|_| ReadError::new(n, col, format!("`{}` is not a whole number", crate::text_table::quoted(f))))?;
+            let i: u64 = f.parse().map_err(|_| {
+                ReadError::new(
+                    n,
+                    col,
+                    format!("`{}` is not a whole number", crate::text_table::quoted(f)),
+                )
+            })?;
             if i == 0 || i > rows {
                 return Err(ReadError::new(
                     n,

@@ -4,8 +4,8 @@
 //! increasing). A header row is required (it names the columns); blank lines
 //! and `#` comments are skipped.
 
-use crate::text_table::quoted;
 use super::{Direction, ReadError};
+use crate::text_table::quoted;
 
 /// Data rows of a CSV table after its header `expected`: (line, fields).
 fn rows<'t>(text: &'t str, expected: &[&str]) -> Result<Vec<(usize, Vec<&'t str>)>, ReadError> {
@@ -137,11 +137,9 @@ pub fn rail(text: &str) -> Result<Vec<(u64, f64)>, ReadError> {
     let mut out: Vec<(u64, f64)> = Vec::with_capacity(rows.len());
     for (n, f) in &rows {
         let node = whole(*n, f[0], 1)?;
-        let x: f64 = f[1]
-            .parse()
-            .map_err(|_| {
-                ReadError::new(*n, Some(2), format!("`{}` is not a number", quoted(f[1])))
-            })?;
+        let x: f64 = f[1].parse().map_err(|_| {
+            ReadError::new(*n, Some(2), format!("`{}` is not a number", quoted(f[1])))
+        })?;
         check_next(&out, node, x).map_err(|m| ReadError::new(*n, Some(2), m))?;
         out.push((node, x));
     }
