@@ -237,7 +237,6 @@ fn forged_shard_counts_and_allow_large_are_refused() {
 #[test]
 fn a_forged_part_reads_nothing_outside() {
     let scratch = Scratch::new("confined", "forged-scene");
-    let dir = scratch.dir();
     let (_, secret) = quake_copy(&scratch);
     let part = |file: &str, source: String| {
         serde_json::json!({

@@ -381,7 +381,7 @@ fn data_seeds() -> Vec<(Role, &'static str, String)> {
         paths.sort();
         for path in paths {
             // Regular files only (the corpus's symlinks lead outside).
-            if fs::symlink_metadata(&path).map_or(true, |m| !m.is_file()) {
+            if !fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
                 continue;
             }
             let name = path.file_name().unwrap().to_string_lossy().into_owned();
