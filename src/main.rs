@@ -39,6 +39,11 @@ struct Cli {
     /// Solve every imported model's modes afresh and write no cache.
     #[arg(long, global = true, conflicts_with = "modes_cache")]
     no_modes_cache: bool,
+    /// Let scenes read files in DIR and below (repeatable): without it a
+    /// scene reads only files inside its own folder tree (symlinks resolved)
+    /// and no absolute path.
+    #[arg(long, global = true, value_name = "DIR")]
+    data_dir: Vec<PathBuf>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -66,6 +71,10 @@ enum Command {
         /// single-run outputs.
         #[arg(long, value_name = "K", value_parser = clap::value_parser!(u64).range(1..))]
         sample: Option<u64>,
+        /// Write into the output folder even if it holds another scene
+        /// file's results (its `resolved.yaml` names that file).
+        #[arg(long)]
+        force: bool,
     },
     /// Combine the part files of a sharded study into exactly the files an
     /// unsharded run writes (summary.json's wall_time: the parts' sum).
@@ -79,6 +88,10 @@ enum Command {
         /// No closing message.
         #[arg(long, short)]
         quiet: bool,
+        /// Write into the output folder even if it holds another scene
+        /// file's results.
+        #[arg(long)]
+        force: bool,
     },
     /// Parse and validate scenario files; exit 2 if any is invalid.
     Check {
@@ -241,9 +254,14 @@ fn main() -> ExitCode {
                 .or_else(|| out.map(vbi::bridge::eigen::cache::default_folder))
         }
     };
+    let data = scenario::DataAccess {
+        data_dirs: cli.data_dir.clone(),
+        confine_to: None,
+    };
     let options = scenario::LoadOptions {
         allow_large: cli.allow_large,
         modes_cache: cache_in(None),
+        data: data.clone(),
     };
     let load = |file: &Path| scenario::load_file_with(file, options.clone());
     match cli.command {
@@ -254,6 +272,7 @@ fn main() -> ExitCode {
             svg,
             shard,
             sample,
+            force,
         } => {
             let folder = out.clone().unwrap_or_else(|| default_out(&file, ""));
             let options = scenario::LoadOptions {
@@ -263,11 +282,16 @@ fn main() -> ExitCode {
             let loaded = scenario::load_file_with(&file, options.clone());
             match (shard, sample) {
                 (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard),
-                (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, k),
-                (None, None) => run(loaded, &file, out, quiet, svg),
+                (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, force, k),
+                (None, None) => run(loaded, &file, out, quiet, svg, force),
             }
         }
-        Command::Merge { parts, out, quiet } => merge(&parts, &out, quiet),
+        Command::Merge {
+            parts,
+            out,
+            quiet,
+            force,
+        } => merge(&parts, &out, &options, quiet, force),
         Command::Check { files } => check(&files, &load),
         Command::Schema => {
             out!("{}", vbi::schema::schema_json());
@@ -290,7 +314,7 @@ fn main() -> ExitCode {
             },
             Err(e) => load_error(&e),
         },
-        Command::Modes { file, shapes, json } => modes(&file, shapes.as_deref(), json),
+        Command::Modes { file, shapes, json } => modes(&file, &data, shapes.as_deref(), json),
         Command::Generate { what } => generate(what),
         Command::Converge {
             file,
@@ -379,16 +403,25 @@ fn run(
     out: Option<PathBuf>,
     quiet: bool,
     svg: bool,
+    force: bool,
 ) -> ExitCode {
-    let loaded = match loaded {
+    let mut loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
+    let out = out.unwrap_or_else(|| default_out(file, ""));
+    // The folder is claimed before the work: another scene's results in it
+    // are not mixed with these.
+    let source = vbi::run::source_name(file);
+    if let Err(message) = vbi::run::claim_folder(&out, &source, force) {
+        errln!("error: {message}");
+        return ExitCode::from(EXIT_INVALID);
+    }
+    loaded.scenario.source_file = Some(source);
     let scenario = loaded.scenario.clone();
     for warning in vbi::report::advice::scene_warnings(&scenario) {
         errln!("warning: {}: {warning}", file.display());
     }
-    let out = out.unwrap_or_else(|| default_out(file, ""));
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
@@ -476,12 +509,12 @@ fn check(
     }
 }
 
-fn modes(file: &Path, shapes: Option<&Path>, json: bool) -> ExitCode {
+fn modes(file: &Path, data: &scenario::DataAccess, shapes: Option<&Path>, json: bool) -> ExitCode {
     let vbi::scenario::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
-    } = match scenario::load_file_for_modes(file) {
+    } = match scenario::load_file_for_modes(file, data) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };

@@ -202,6 +202,7 @@ pub(super) fn run_sample(
     out: Option<PathBuf>,
     quiet: bool,
     svg: bool,
+    force: bool,
     k: u64,
 ) -> ExitCode {
     use vbi::scenario::resolved::Study;
@@ -237,13 +238,19 @@ pub(super) fn run_sample(
         bridge: loaded.bridge,
     };
     let out = out.unwrap_or_else(|| default_out(file, &format!("-sample{k}")));
-    run(Ok(loaded), file, Some(out), quiet, svg)
+    run(Ok(loaded), file, Some(out), quiet, svg, force)
 }
 
 /// `vbi merge`: the parts' study written as an unsharded run writes it.
-pub(super) fn merge(parts: &[PathBuf], out: &Path, quiet: bool) -> ExitCode {
+pub(super) fn merge(
+    parts: &[PathBuf],
+    out: &Path,
+    options: &scenario::LoadOptions,
+    quiet: bool,
+    force: bool,
+) -> ExitCode {
     use vbi::study::shard::{self, ShardError};
-    let merged = match shard::merge(parts) {
+    let mut merged = match shard::merge(parts, options) {
         Ok(m) => m,
         Err(e) => {
             errln!("error: {e}");
@@ -254,5 +261,13 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path, quiet: bool) -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    // The parts name their scene's file as `vbi run` was given it, relative
+    // to where it ran.
+    let source = vbi::run::source_name(Path::new(&merged.scenario_file));
+    if let Err(message) = vbi::run::claim_folder(out, &source, force) {
+        errln!("error: {message}");
+        return ExitCode::from(EXIT_INVALID);
+    }
+    merged.loaded.scenario.source_file = Some(source);
     write_study(out, &merged.loaded.scenario, &merged.results, quiet)
 }

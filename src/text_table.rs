@@ -3,6 +3,24 @@
 //! split on commas (or on whitespace when a line has none), and a first
 //! row with a non-numeric field taken as the header.
 
+/// At most this many characters of a data file's field are quoted in a
+/// message: enough to see a typo (`1.0e4x`), too few to print a file.
+pub const MAX_QUOTED: usize = 16;
+
+/// A field of a data file as a message may quote it (issue 23): control
+/// characters dropped, cut to [`MAX_QUOTED`] characters with `…`. Only a
+/// file that has identified as its format (its header or banner matched, or
+/// a row before parsed) is quoted at all.
+pub fn quoted(field: &str) -> String {
+    let clean: String = field.chars().filter(|c| !c.is_control()).collect();
+    if clean.chars().count() <= MAX_QUOTED {
+        clean
+    } else {
+        let cut: String = clean.chars().take(MAX_QUOTED).collect();
+        format!("{cut}…")
+    }
+}
+
 /// One non-blank, non-comment line of a table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row<'a> {

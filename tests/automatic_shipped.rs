@@ -207,9 +207,16 @@ fn every_shipped_resolved_scene_loads_and_resolves_to_itself() {
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
         let loaded = scenario::load_file(file).unwrap_or_else(|e| panic!("{name}: {e}"));
         let resolved = vbi::run::resolved_yaml(&loaded.scenario);
-        // A measured profile's path is absolute in the resolved form, so the
-        // text loads from anywhere.
-        let again = scenario::load_str(&resolved, &format!("{name} resolved"))
+        // A data file's path is absolute in the resolved form, so the text
+        // loads from anywhere the scenes' folder is allowed (`--data-dir`).
+        let options = scenario::LoadOptions {
+            data: scenario::DataAccess {
+                data_dirs: vec![dir.clone()],
+                confine_to: None,
+            },
+            ..Default::default()
+        };
+        let again = scenario::load_str_with(&resolved, &format!("{name} resolved"), options)
             .unwrap_or_else(|e| panic!("{name}: its resolved form does not load: {e}"));
         assert_eq!(
             resolved,

@@ -25,8 +25,11 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-/// Inputs tried by default inside the test suite.
-const DEFAULT_INPUTS: u64 = 30_000;
+/// Inputs tried by default inside the test suite (the data-file fuzzer
+/// below takes the rest of the 30 s budget).
+const DEFAULT_INPUTS: u64 = 26_000;
+/// Data files tried by default by the data-file fuzzer.
+const DEFAULT_DATA_INPUTS: u64 = 2_000;
 /// Time cap of the default run, s (a guard, not the bound that applies).
 const DEFAULT_CAP_SECONDS: u64 = 120;
 /// Inputs slower than this to check are reported (a check must not do work
@@ -325,6 +328,207 @@ fn mutated_scenes_never_panic_in_the_loader() {
     eprintln!(
         "fuzz: {runs} inputs in {:.1} s (seed {seed}), {accepted} accepted, {} failures",
         began.elapsed().as_secs_f64(),
+        failures.len()
+    );
+    assert!(runs > 100, "only {runs} inputs were tried");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A secret the data fuzzer splices into data files in place of numbers: a
+/// message may quote at most [`vbi::text_table::MAX_QUOTED`] characters of a
+/// field, so the whole of it must never come back (issue 23).
+const CANARY: &str = "CANARY-SECRET-8a41f2";
+
+/// What a fuzzed data file is to its scene.
+#[derive(Clone, Copy, Debug)]
+enum Role {
+    Stiffness,
+    Mass,
+    DofMap,
+    Rail,
+    Record,
+    Profile,
+}
+
+/// Data files the scenes name, each with its role and file extension:
+/// the imported model of `scenarios/fe-import-lcp-fig4`, the corpus's FE
+/// files, the shipped and corpus ground-motion records (also used as
+/// measured profiles, two numeric columns each).
+fn data_seeds() -> Vec<(Role, &'static str, String)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut out = Vec::new();
+    let mut add = |role: Role, ext: &'static str, path: PathBuf| {
+        if fs::metadata(&path).map(|m| m.len()).unwrap_or(u64::MAX) <= MAX_SEED_BYTES
+            && let Ok(text) = fs::read_to_string(&path)
+        {
+            out.push((role, ext, text));
+        }
+    };
+    let fig4 = root.join("scenarios/fe-import-lcp-fig4");
+    add(Role::Stiffness, "mtx", fig4.join("K.mtx"));
+    add(Role::Mass, "mtx", fig4.join("M.mtx"));
+    add(Role::DofMap, "csv", fig4.join("dofs.csv"));
+    add(Role::Rail, "csv", fig4.join("rail.csv"));
+    for dir in [
+        "tests/hostile/cases/fe",
+        "tests/hostile/cases",
+        "scenarios/records",
+    ] {
+        let Ok(entries) = fs::read_dir(root.join(dir)) else {
+            continue;
+        };
+        let mut paths: Vec<PathBuf> = entries.map(|e| e.unwrap().path()).collect();
+        paths.sort();
+        for path in paths {
+            // Regular files only (the corpus's symlinks lead outside).
+            if !fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                continue;
+            }
+            let name = path.file_name().unwrap().to_string_lossy().into_owned();
+            let ext = path.extension().map(|e| e.to_string_lossy().to_lowercase());
+            match ext.as_deref() {
+                Some("mtx") if name.starts_with('M') => add(Role::Mass, "mtx", path),
+                Some("mtx") => add(Role::Stiffness, "mtx", path),
+                Some("csv") if name.starts_with("rail") => add(Role::Rail, "csv", path),
+                Some("csv") if name.starts_with("dofs") => add(Role::DofMap, "csv", path),
+                Some("csv") => {
+                    add(Role::Record, "csv", path.clone());
+                    add(Role::Profile, "csv", path);
+                }
+                Some("at2") => add(Role::Record, "AT2", path),
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// The scene that names the fuzzed file `fuzz.EXT` in its role; the other
+/// files of the imported model are the fig4 originals beside it.
+fn host_scene(role: Role, ext: &str, rng: &mut Rng) -> String {
+    let fuzz = format!("fuzz.{ext}");
+    let pick = |r: &str, original: &str| -> String {
+        let matches = match role {
+            Role::Stiffness => r == "K",
+            Role::Mass => r == "M",
+            Role::DofMap => r == "D",
+            Role::Rail => r == "R",
+            _ => false,
+        };
+        if matches {
+            fuzz.clone()
+        } else {
+            original.to_string()
+        }
+    };
+    let beam = "name: data-fuzz\nbridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, \
+                mass_per_length: 2303.0}\nvehicles:\n  - {type: oscillator, sprung_mass: 5750.0, \
+                stiffness: 1.595e6, speed: 27.7}\n";
+    match role {
+        Role::Record => {
+            let units = if rng.below(2) == 0 { ", units: g" } else { "" };
+            format!("{beam}ground_motion:\n  - {{file: {fuzz}{units}}}\n")
+        }
+        Role::Profile => format!("{beam}surface: {{type: measured, file: {fuzz}}}\n"),
+        _ => format!(
+            "name: data-fuzz\nbridge:\n  type: fe_import\n  stiffness: {}\n  mass: {}\n  \
+             dof_map: {}\n  constrained: [{{node: 1, direction: uz}}, {{node: 21, direction: uz}}]\n  \
+             rails: [{{name: rail, file: {}}}]\n  modes: {{count: 10}}\nvehicles:\n  - \
+             {{type: moving_force, speed: 20.0, loads: [1.0e5]}}\n",
+            pick("K", "K.mtx"),
+            pick("M", "M.mtx"),
+            pick("D", "dofs.csv"),
+            pick("R", "rail.csv"),
+        ),
+    }
+}
+
+/// Issue 23 point 6: the data files scenes name (matrices, DOF maps,
+/// rails, records, profiles) mutated like the scenes above and loaded
+/// through a scene that names them: no panic, no hang, every refusal
+/// located at the scene's key, and a canary spliced into a file never
+/// comes back whole in a message.
+#[test]
+fn mutated_data_files_never_panic_or_leak_in_the_loader() {
+    let timed: Option<u64> = std::env::var("VBI_FUZZ_SECONDS")
+        .ok()
+        .and_then(|v| v.parse().ok());
+    let (seconds, inputs) = match timed {
+        Some(seconds) => (seconds, u64::MAX),
+        None => (DEFAULT_CAP_SECONDS, DEFAULT_DATA_INPUTS),
+    };
+    let seed = std::env::var("VBI_FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x0D47_A5EE_D001_u64);
+    let seeds = data_seeds();
+    assert!(seeds.len() >= 20, "only {} data seeds", seeds.len());
+    let texts: Vec<String> = seeds.iter().map(|s| s.2.clone()).collect();
+    let dir = std::env::temp_dir().join(format!("vbi-fuzz-data-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    let fig4 = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/fe-import-lcp-fig4");
+    for name in ["K.mtx", "M.mtx", "dofs.csv", "rail.csv"] {
+        fs::copy(fig4.join(name), dir.join(name)).unwrap();
+    }
+    let label = dir.join("fuzz.yaml").display().to_string();
+    let mut rng = Rng(seed | 1);
+    let deadline = Instant::now() + Duration::from_secs(seconds);
+    let crashes = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fuzz-crashes");
+    let (mut runs, mut accepted) = (0u64, 0u64);
+    let mut failures = Vec::new();
+    while runs < inputs && Instant::now() < deadline {
+        let (role, ext, base) = rng.pick(&seeds).clone();
+        let mut data = mutate(&base, &texts, &mut rng);
+        if rng.below(4) == 0 {
+            let spans = numbers(&data);
+            if !spans.is_empty() {
+                let (a, b) = *rng.pick(&spans);
+                data.replace_range(a..b, CANARY);
+            }
+        }
+        let scene = host_scene(role, ext, &mut rng);
+        fs::write(dir.join(format!("fuzz.{ext}")), &data).unwrap();
+        let start = Instant::now();
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            vbi::scenario::load_str(&scene, &label).map(|_| ())
+        }));
+        let took = start.elapsed();
+        runs += 1;
+        let problem = match &result {
+            Err(_) => Some("panicked".to_string()),
+            Ok(_) if took > SLOW => Some(format!("took {took:?}")),
+            Ok(Ok(())) => {
+                accepted += 1;
+                None
+            }
+            Ok(Err(e)) => {
+                let text = e.to_string();
+                if text.contains(CANARY) {
+                    Some(format!("quoted the whole canary: {text}"))
+                } else {
+                    (!text.starts_with(&format!("{label}:")))
+                        .then(|| format!("unlocated error: {text}"))
+                }
+            }
+        };
+        if let Some(problem) = problem {
+            fs::create_dir_all(&crashes).unwrap();
+            let file = crashes.join(format!("data-crash-{seed}-{runs}.{ext}"));
+            fs::write(&file, &data).unwrap();
+            fs::write(file.with_extension("yaml"), &scene).unwrap();
+            failures.push(format!(
+                "{problem} ({role:?}): input saved as {}",
+                file.display()
+            ));
+            if failures.len() >= 10 {
+                break;
+            }
+        }
+    }
+    let _ = fs::remove_dir_all(&dir);
+    eprintln!(
+        "data fuzz: {runs} inputs (seed {seed}), {accepted} accepted, {} failures",
         failures.len()
     );
     assert!(runs > 100, "only {runs} inputs were tried");

@@ -108,6 +108,56 @@ fn capped(args: &[&str], cwd: &Path, scratch: &Scratch, tag: &str) -> Run {
     }
 }
 
+/// The secret in `tests/hostile/canary.txt`, beside the cases' folder: a
+/// scene may name it (by `../`, a symlink), but no output may ever hold it
+/// (issue 23).
+const CANARY: &str = "CANARY-SECRET-8a41f2";
+
+/// Whether a run's output holds the canary or the passwd-like line the
+/// canary file and /etc/passwd start with.
+fn leaks(run: &Run) -> bool {
+    [&run.stdout, &run.stderr]
+        .iter()
+        .any(|s| s.contains(CANARY) || s.contains("root:x:0"))
+}
+
+/// Issue 23: forged part files (`tests/hostile/parts`: shard counts of
+/// 10^11 and 2^64 − 1, `allow_large`, a wrong hash, a scene naming
+/// /etc/passwd, not JSON, the canary in its fields) are refused by `vbi
+/// merge` with exit 2, within the caps, without a byte of the canary.
+#[test]
+fn forged_part_files_are_refused_within_caps() {
+    let scratch = Scratch::new("hostile", "parts");
+    let parts = corpus().join("parts");
+    let mut names: Vec<PathBuf> = fs::read_dir(&parts)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    names.sort();
+    assert!(names.len() >= 8, "{names:?}");
+    // Devices and a folder as part files too.
+    names.push("/dev/zero".into());
+    names.push(parts.clone());
+    let out = scratch.path("merged");
+    for (i, part) in names.iter().enumerate() {
+        let run = capped(
+            &[
+                "merge",
+                "--out",
+                out.to_str().unwrap(),
+                part.to_str().unwrap(),
+            ],
+            scratch.dir(),
+            &scratch,
+            &format!("part{i}"),
+        );
+        assert!(!leaks(&run), "{}: leaked:\n{}", part.display(), run.stderr);
+        assert_eq!(run.code, Some(2), "{}: {}", part.display(), run.stderr);
+        assert!(run.wall < SLOW, "{}: took {:?}", part.display(), run.wall);
+        assert!(!out.exists(), "{}: wrote results", part.display());
+    }
+}
+
 #[test]
 fn corpus_is_large_and_classified() {
     let cases = expected();
@@ -147,6 +197,10 @@ fn every_hostile_file_gets_its_classified_answer_within_caps() {
         };
         if run.stderr.contains("panicked") || run.code.is_none() {
             fail(format!("crashed (exit {:?})", run.code));
+            continue;
+        }
+        if leaks(&run) {
+            fail("the canary file's content appears in the output".into());
             continue;
         }
         if run.wall > SLOW {

@@ -67,8 +67,7 @@ fn npts_dt(line: &str) -> Result<(usize, f64), At2Error> {
             4,
             format!(
                 "header line 4 must give the sample count and interval, `NPTS= 4000, DT= .0100 SEC` \
-                 (or `4000  .0100  NPTS, DT`); found `{}`",
-                line.trim()
+                 (or `4000  .0100  NPTS, DT`); is it a PEER AT2 file?"
             ),
         )
     };
@@ -116,12 +115,10 @@ fn unit_of(line: &str) -> Result<AccelerationUnit, At2Error> {
     if !upper.contains("ACCEL") {
         return Err((
             3,
-            format!(
-                "header line 3 must say the file holds accelerations (`ACCELERATION TIME SERIES IN \
-                 UNITS OF G`); found `{}` (velocity and displacement files, .VT2 and .DT2, are not \
-                 ground accelerations)",
-                line.trim()
-            ),
+            "header line 3 must say the file holds accelerations (`ACCELERATION TIME SERIES IN \
+             UNITS OF G`); it does not (velocity and displacement files, .VT2 and .DT2, are not \
+             ground accelerations)"
+                .to_string(),
         ));
     }
     let candidate = if let Some(at) = upper.find("UNITS OF") {
@@ -137,10 +134,8 @@ fn unit_of(line: &str) -> Result<AccelerationUnit, At2Error> {
     let word = candidate.split([' ', ',', ':']).next().unwrap_or("");
     AccelerationUnit::parse(word).ok_or((
         3,
-        format!(
-            "header line 3 does not state the units of the accelerations as g, cm/s^2 or m/s^2: `{}`",
-            line.trim()
-        ),
+        "header line 3 does not state the units of the accelerations as g, cm/s^2 or m/s^2"
+            .to_string(),
     ))
 }
 
@@ -172,11 +167,20 @@ pub fn parse(text: &str, max_points: usize) -> Result<At2, At2Error> {
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|t| !t.is_empty())
         {
-            let value: f64 = token
-                .parse()
-                .map_err(|_| (n, format!("`{token}` is not a number")))?;
+            let value: f64 = token.parse().map_err(|_| {
+                (
+                    n,
+                    format!("`{}` is not a number", crate::text_table::quoted(token)),
+                )
+            })?;
             if !value.is_finite() {
-                return Err((n, format!("`{token}` is not a finite number")));
+                return Err((
+                    n,
+                    format!(
+                        "`{}` is not a finite number",
+                        crate::text_table::quoted(token)
+                    ),
+                ));
             }
             if acceleration.len() == npts {
                 return Err((

@@ -31,7 +31,7 @@ fn bracketed_unit(field: &str, line: usize) -> Result<Option<AccelerationUnit>, 
     let inner = &field[open + 1..close];
     AccelerationUnit::parse(inner).map(Some).ok_or((
         line,
-        format!("the header's acceleration unit `[{inner}]` is not g, m/s^2 or cm/s^2"),
+        "the header's acceleration unit in `[…]` is not g, m/s^2 or cm/s^2".to_string(),
     ))
 }
 
@@ -55,7 +55,7 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
             {
                 return Err((
                     n,
-                    format!("the time column must be in seconds, `[s]`; found `{time}`"),
+                    "the time column's header must say seconds, `[s]`".to_string(),
                 ));
             }
             continue;
@@ -73,12 +73,9 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
         for (k, field) in fields.iter().enumerate() {
             let v: f64 = field
                 .parse()
-                .map_err(|_| (n, format!("column {}: `{field}` is not a number", k + 1)))?;
+                .map_err(|_| (n, not_a_number(k, field, !table.time.is_empty(), "")))?;
             if !v.is_finite() {
-                return Err((
-                    n,
-                    format!("column {}: `{field}` is not a finite number", k + 1),
-                ));
+                return Err((n, not_a_number(k, field, true, "finite ")));
             }
             values[k] = v;
         }
@@ -164,5 +161,22 @@ mod tests {
             1
         );
         assert!(parse("0,0\n").is_err());
+    }
+}
+
+/// "column K: `field` is not a number", quoting the field only once a row
+/// has parsed (the file identified as a table, issue 23).
+pub(crate) fn not_a_number(k: usize, field: &str, identified: bool, kind: &str) -> String {
+    if identified {
+        format!(
+            "column {}: `{}` is not a {kind}number",
+            k + 1,
+            crate::text_table::quoted(field)
+        )
+    } else {
+        format!(
+            "column {}: the first row is not a {kind}number (is it the right file?)",
+            k + 1
+        )
     }
 }

@@ -32,14 +32,22 @@ struct BridgeSceneRaw {
 }
 
 /// Loads `source` for `vbi modes`: the whole scene when it has `vehicles`,
-/// else its name and bridge.
-pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError> {
+/// else its name and bridge; the files it names are read as `data` allows.
+pub fn load_for_modes(
+    source: &str,
+    file: &str,
+    data: &super::DataAccess,
+) -> Result<ModesScene, LoadError> {
     let has_vehicles = super::yaml::parse(source)
         .ok()
         .flatten()
         .is_none_or(|node| node.get("vehicles").is_some());
     if has_vehicles {
-        return super::load_str(source, file).map(|loaded| ModesScene {
+        let options = super::LoadOptions {
+            data: data.clone(),
+            ..Default::default()
+        };
+        return super::load_str_with(source, file, options).map(|loaded| ModesScene {
             name: loaded.scenario.name.clone(),
             bridge: loaded.bridge,
             scenario: Some(loaded.scenario),
@@ -68,6 +76,7 @@ pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError>
         )])
     })?;
     let mut ck = Checker::new(file, source, &node);
+    ck.set_data_access(data.clone());
     let Some(mut bridge) = bridges::resolve_bridge(
         &raw.bridge,
         &super::budget::Budget::new(super::resolved::Limits::default(), &Default::default()),

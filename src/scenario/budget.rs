@@ -26,6 +26,9 @@ pub struct LoadOptions {
     /// them, and written to it when solved. `None`: no cache (the library
     /// default; the command line's default is `<output folder>/.vbi-cache`).
     pub modes_cache: Option<std::path::PathBuf>,
+    /// Where the files a scene names may be read from: its own folder tree
+    /// and the `--data-dir` folders ([`super::data_files`]).
+    pub data: super::data_files::DataAccess,
 }
 
 /// The resolved `limits` section: each bound with its default filled in.

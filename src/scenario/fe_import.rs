@@ -3,11 +3,10 @@
 //! each other. Every problem is reported at the scenario key that names the
 //! file, with the file's own line and column in the message.
 
-use std::io::Read;
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::data_files::{self, DataFile};
 use super::raw;
 use super::resolve::Checker;
 use super::resolved::*;
@@ -26,20 +25,16 @@ pub(super) fn resolve(
     budget: &Budget,
     ck: &mut Checker<'_>,
 ) -> Option<FeImport> {
-    let base = Path::new(ck.file())
-        .parent()
-        .unwrap_or(Path::new(""))
-        .to_path_buf();
-    let locate = |file: &str| -> PathBuf {
-        let path = base.join(file);
-        std::path::absolute(&path).unwrap_or(path)
-    };
     let before = ck.diagnostics.len();
-    let stiffness_path = locate(&raw.stiffness);
-    let mass_path = locate(&raw.mass);
-    let stiffness = read_matrix(&stiffness_path, "bridge.stiffness", budget, ck);
-    let mass = read_matrix(&mass_path, "bridge.mass", budget, ck);
-    let mut damping_path = None;
+    let stiffness_file = locate(&raw.stiffness, "bridge.stiffness", ck);
+    let mass_file = locate(&raw.mass, "bridge.mass", ck);
+    let stiffness = stiffness_file
+        .as_ref()
+        .and_then(|f| read_matrix(f, "bridge.stiffness", budget, ck));
+    let mass = mass_file
+        .as_ref()
+        .and_then(|f| read_matrix(f, "bridge.mass", budget, ck));
+    let mut damping_shown: Option<String> = None;
     let (damping, damping_file) = match &raw.damping {
         None => (ImportDamping::Modal { ratio: 0.0 }, None),
         Some(raw::ImportDampingRaw::Modal { ratio }) => {
@@ -70,18 +65,23 @@ pub(super) fn resolve(
             )
         }
         Some(raw::ImportDampingRaw::Matrix { file }) => {
-            let path = locate(file);
-            let read = read_matrix(&path, "bridge.damping.file", budget, ck);
-            damping_path = Some(path.clone());
+            let located = locate(file, "bridge.damping.file", ck);
+            let read = located
+                .as_ref()
+                .and_then(|f| read_matrix(f, "bridge.damping.file", budget, ck));
+            damping_shown = located.as_ref().map(|f| f.shown.clone());
             (
                 ImportDamping::Matrix {
-                    file: path.display().to_string(),
+                    file: located.map_or_else(|| file.clone(), |f| f.shown),
                 },
                 read,
             )
         }
     };
-    let dof_map_path = raw.dof_map.as_deref().map(locate);
+    let dof_map_file = raw
+        .dof_map
+        .as_deref()
+        .map(|f| locate(f, "bridge.dof_map", ck));
     let mut rails = Vec::with_capacity(raw.rails.len());
     let mut rail_inputs = Vec::with_capacity(raw.rails.len());
     if raw.rails.is_empty() {
@@ -100,17 +100,17 @@ pub(super) fn resolve(
         }
         match (&rail.file, &rail.nodes) {
             (Some(file), None) => {
-                let path = locate(file);
-                let shown = path.display().to_string();
                 let at = format!("{at}.file");
-                if let Some(text) = read_text(&path, &at, budget, ck)
-                    && let Some(nodes) = located(tables::rail(&text), &shown, &at, ck)
+                let data = locate(file, &at, ck);
+                if let Some(data) = &data
+                    && let Some(text) = read_text(data, &at, budget, ck)
+                    && let Some(nodes) = located(tables::rail(&text), &data.shown, &at, ck)
                 {
                     rails.push((rail.name.clone(), nodes));
                 }
                 rail_inputs.push(RailInput {
                     name: rail.name.clone(),
-                    file: Some(shown),
+                    file: Some(data.map_or_else(|| file.clone(), |d| d.shown)),
                     nodes: None,
                 });
             }
@@ -180,10 +180,15 @@ pub(super) fn resolve(
         return None;
     }
     let (stiffness, mass) = (stiffness?, mass?);
-    let map = match &dof_map_path {
-        Some(path) => {
-            let shown = path.display().to_string();
-            let text = read_text(path, "bridge.dof_map", budget, ck)?;
+    let (stiffness_file, mass_file) = (stiffness_file?, mass_file?);
+    let dof_map_file = match dof_map_file {
+        Some(f) => Some(f?),
+        None => None,
+    };
+    let map = match &dof_map_file {
+        Some(data) => {
+            let shown = data.shown.clone();
+            let text = read_text(data, "bridge.dof_map", budget, ck)?;
             // A CSV with its header, or ANSYS's `.mapping` file.
             let csv = text
                 .lines()
@@ -213,10 +218,10 @@ pub(super) fn resolve(
         Ok(model) => model,
         Err(e) => {
             let (path, file) = match e.source_input {
-                Source::Stiffness => ("bridge.stiffness".to_string(), Some(&stiffness_path)),
-                Source::Mass => ("bridge.mass".to_string(), Some(&mass_path)),
-                Source::Damping => ("bridge.damping.file".to_string(), damping_path.as_ref()),
-                Source::DofMap => ("bridge.dof_map".to_string(), dof_map_path.as_ref()),
+                Source::Stiffness => ("bridge.stiffness".to_string(), Some(&stiffness_file.shown)),
+                Source::Mass => ("bridge.mass".to_string(), Some(&mass_file.shown)),
+                Source::Damping => ("bridge.damping.file".to_string(), damping_shown.as_ref()),
+                Source::DofMap => ("bridge.dof_map".to_string(), dof_map_file.as_ref().map(|f| &f.shown)),
                 Source::Constrained(i) => (format!("bridge.constrained[{i}]"), None),
                 Source::Rail(i) => (format!("bridge.rails[{i}]"), None),
                 Source::Track => ("bridge.track".to_string(), None),
@@ -228,14 +233,12 @@ pub(super) fn resolve(
                     } else {
                         "bridge".to_string()
                     };
-                    (at, Some(&stiffness_path))
+                    (at, Some(&stiffness_file.shown))
                 }
             };
             let message = match (file, e.place) {
-                (Some(f), Some((line, column))) => {
-                    format!("{}:{line}:{column}: {}", f.display(), e.message)
-                }
-                (Some(f), None) => format!("{}: {}", f.display(), e.message),
+                (Some(f), Some((line, column))) => format!("{f}:{line}:{column}: {}", e.message),
+                (Some(f), None) => format!("{f}: {}", e.message),
                 (None, _) => e.message,
             };
             ck.error(&path, message);
@@ -243,9 +246,9 @@ pub(super) fn resolve(
         }
     };
     Some(FeImport {
-        stiffness: stiffness_path.display().to_string(),
-        mass: mass_path.display().to_string(),
-        dof_map: dof_map_path.map(|p| p.display().to_string()),
+        stiffness: stiffness_file.shown,
+        mass: mass_file.shown,
+        dof_map: dof_map_file.map(|f| f.shown),
         constrained,
         damping,
         rails: rail_inputs,
@@ -277,21 +280,22 @@ fn located<T>(
     }
 }
 
-/// The text of `path`, its size budgeted (as matrix entries of
+/// Resolves a path the scene names at `at` ([`data_files::locate`]);
+/// `None` after reporting why it may not be read.
+fn locate(named: &str, at: &str, ck: &mut Checker<'_>) -> Option<DataFile> {
+    match data_files::locate(named, "", ck) {
+        Ok(file) => Some(file),
+        Err(message) => {
+            ck.error(at, message);
+            None
+        }
+    }
+}
+
+/// The text of `file`, its size budgeted (as matrix entries of
 /// [`MIN_ENTRY_BYTES`]) before it is read.
-fn read_text(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<String> {
-    let shown = path.display().to_string();
-    let size = match std::fs::metadata(path) {
-        Ok(m) if m.is_file() => m.len(),
-        Ok(_) => {
-            ck.error(at, format!("{shown} is not a file"));
-            return None;
-        }
-        Err(e) => {
-            ck.error(at, format!("cannot read {shown}: {e}"));
-            return None;
-        }
-    };
+fn read_text(file: &DataFile, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<String> {
+    let (shown, size) = (&file.shown, file.size);
     if !budget.check(
         ck,
         at,
@@ -303,20 +307,25 @@ fn read_text(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Op
     ) {
         return None;
     }
-    let mut text = String::new();
-    let read = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
-    if let Err(e) = read {
-        ck.error(at, format!("cannot read {shown}: {e}"));
-        return None;
+    match data_files::read_text(file) {
+        Ok(text) => Some(text),
+        Err(message) => {
+            ck.error(at, message);
+            None
+        }
     }
-    Some(text)
 }
 
 /// Reads a matrix file: Matrix Market by its banner, Abaqus by its comma
 /// separated entry lines, Harwell–Boeing otherwise.
-fn read_matrix(path: &Path, at: &str, budget: &Budget, ck: &mut Checker<'_>) -> Option<MatrixFile> {
-    let text = read_text(path, at, budget, ck)?;
-    let shown = path.display().to_string();
+fn read_matrix(
+    file: &DataFile,
+    at: &str,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Option<MatrixFile> {
+    let text = read_text(file, at, budget, ck)?;
+    let shown = file.shown.clone();
     let bytes = text.len() as f64;
     let dofs_limit = budget_limit(budget, ck, at);
     let result = if text

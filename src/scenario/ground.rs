@@ -4,11 +4,10 @@
 //! the message); the file's size and its declared sample count are budgeted
 //! (`limits.ground_points`) before anything is allocated per sample.
 
-use std::io::Read;
-use std::path::Path;
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
 use super::resolve::Checker;
 use super::resolved::{Bridge, GroundMotion};
@@ -75,16 +74,21 @@ pub(super) fn resolve(
             );
             continue;
         }
-        let base = Path::new(ck.file()).parent().unwrap_or(Path::new(""));
-        let path = base.join(&component.file);
-        let path = std::path::absolute(&path).unwrap_or(path);
-        let Some((time, acceleration, units)) = read(&path, component.units, &at, budget, ck)
+        let data = match super::data_files::locate(&component.file, "the ground-motion record", ck)
+        {
+            Ok(data) => data,
+            Err(message) => {
+                ck.error(&format!("{at}.file"), message);
+                continue;
+            }
+        };
+        let Some((time, acceleration, units)) = read(&data, component.units, &at, budget, ck)
         else {
             continue;
         };
         let si: Vec<f64> = acceleration.iter().map(|a| a * units.in_si()).collect();
         out.push(GroundMotion {
-            file: path.display().to_string(),
+            file: data.shown,
             direction,
             scale,
             start_time,
@@ -111,28 +115,14 @@ fn moves_sideways(bridge: Option<&Bridge>) -> bool {
 
 /// Reads a record file: (times s, accelerations in `units`, units).
 fn read(
-    path: &Path,
+    data: &DataFile,
     given: Option<AccelerationUnit>,
     at: &str,
     budget: &Budget,
     ck: &mut Checker<'_>,
 ) -> Option<(Vec<f64>, Vec<f64>, AccelerationUnit)> {
     let field = format!("{at}.file");
-    let shown = path.display().to_string();
-    let size = match std::fs::metadata(path) {
-        Ok(m) if m.is_file() => m.len(),
-        Ok(_) => {
-            ck.error(&field, format!("{shown} is not a file"));
-            return None;
-        }
-        Err(e) => {
-            ck.error(
-                &field,
-                format!("cannot read the ground-motion record {shown}: {e}"),
-            );
-            return None;
-        }
-    };
+    let (shown, size, path) = (&data.shown, data.size, data.path());
     let most = (size as f64 / MIN_SAMPLE_BYTES).ceil();
     if !budget.check(
         ck,
@@ -143,15 +133,13 @@ fn read(
     ) {
         return None;
     }
-    let mut text = String::new();
-    let result = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
-    if let Err(e) = result {
-        ck.error(
-            &field,
-            format!("cannot read the ground-motion record {shown}: {e}"),
-        );
-        return None;
-    }
+    let text = match super::data_files::read_text(data) {
+        Ok(text) => text,
+        Err(message) => {
+            ck.error(&field, message);
+            return None;
+        }
+    };
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let is_at2 = path
         .extension()

@@ -11,6 +11,7 @@ pub mod bridges;
 pub mod budget;
 mod cars;
 pub mod content;
+pub mod data_files;
 #[allow(missing_docs)]
 pub mod de;
 pub mod derive;
@@ -42,6 +43,7 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub use self::budget::LoadOptions;
+pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
@@ -125,9 +127,12 @@ pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadE
 
 /// Reads a scenario file for `vbi modes`, which needs no vehicles
 /// ([`bridge_only::load_for_modes`]).
-pub fn load_file_for_modes(path: &Path) -> Result<bridge_only::ModesScene, LoadError> {
+pub fn load_file_for_modes(
+    path: &Path,
+    data: &DataAccess,
+) -> Result<bridge_only::ModesScene, LoadError> {
     let (source, file) = read_source(path)?;
-    bridge_only::load_for_modes(&source, &file)
+    bridge_only::load_for_modes(&source, &file, data)
 }
 
 /// The text of a scenario file and its name for diagnostics; the size is

@@ -31,6 +31,8 @@ pub(super) struct Checker<'a> {
     file: &'a str,
     lines: Lines<'a>,
     root: &'a Node,
+    /// Where the files the scene names may be read from.
+    data: super::data_files::DataAccess,
     pub diagnostics: Vec<Diagnostic>,
 }
 
@@ -57,8 +59,19 @@ impl<'a> Checker<'a> {
             file,
             lines: Lines::new(source),
             root,
+            data: Default::default(),
             diagnostics: Vec::new(),
         }
+    }
+
+    /// Sets where the files the scene names may be read from.
+    pub(super) fn set_data_access(&mut self, data: super::data_files::DataAccess) {
+        self.data = data;
+    }
+
+    /// Where the files the scene names may be read from.
+    pub(super) fn data_access(&self) -> &super::data_files::DataAccess {
+        &self.data
     }
 
     fn location(&self, path: &str) -> Location {
@@ -128,6 +141,7 @@ pub(super) fn resolve(
     ck: &mut Checker<'_>,
     options: LoadOptions,
 ) -> Option<(Scenario, ModalBridge)> {
+    ck.set_data_access(options.data.clone());
     super::names::check_name(ck, &raw.name);
     let limits = Limits::resolve(raw.limits.as_ref(), ck);
     let budget = Budget::new(limits, &options);
@@ -697,6 +711,7 @@ pub(super) fn resolve(
         }
     }
     let scenario = Scenario {
+        source_file: None,
         name: raw.name.clone(),
         description: raw.description.clone(),
         gravity,

@@ -25,6 +25,12 @@ pub use super::raw::{
 /// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Scenario {
+    /// The scene file it was loaded from (its canonical path), when the
+    /// command line says: not part of the resolved form, but written in
+    /// `resolved.yaml`'s header to say whose results an output folder holds
+    /// ([`crate::run::folder_owner`]).
+    #[serde(skip)]
+    pub source_file: Option<String>,
     /// Short name of the scene.
     pub name: String,
     /// Free text describing the scene.

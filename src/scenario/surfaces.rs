@@ -3,7 +3,6 @@
 //! profile's file and the shapes' parameters; then, once the vehicles are
 //! known, whether the profile reaches every position the wheels travel.
 
-use std::path::Path;
 use std::sync::Arc;
 
 use super::budget::Budget;
@@ -227,12 +226,16 @@ pub(super) fn resolve_surface(
             ),
         },
         R::Measured { file } => {
-            let base = Path::new(ck.file()).parent().unwrap_or(Path::new(""));
-            let path = base.join(file);
-            let path = std::path::absolute(&path).unwrap_or(path);
-            match measured::read(&path, budget, ck) {
+            let data = match super::data_files::locate(file, "the measured profile", ck) {
+                Ok(data) => data,
+                Err(message) => {
+                    ck.error("surface.file", message);
+                    return Surface::Smooth;
+                }
+            };
+            match measured::read(&data, budget, ck) {
                 Some(profile) => Surface::Measured {
-                    file: path.display().to_string(),
+                    file: data.shown,
                     profile: Arc::new(profile),
                 },
                 None => Surface::Smooth,

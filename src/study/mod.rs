@@ -5,6 +5,7 @@
 
 pub mod converge;
 pub mod monte_carlo;
+pub mod part_file;
 pub mod resonance;
 mod resonance_report;
 pub mod separation_map;

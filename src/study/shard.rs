@@ -159,6 +159,14 @@ pub enum ShardError {
         /// What failed.
         message: String,
     },
+    /// A shard count the study cannot take.
+    #[error("{file}: --shard: {message}")]
+    Shards {
+        /// The scenario file.
+        file: String,
+        /// What is wrong.
+        message: String,
+    },
     /// Parts disagree or do not tile the study.
     #[error("{0}")]
     Mismatch(String),
@@ -221,6 +229,12 @@ pub fn run_shard(
             file: file.to_string(),
         })?;
     let (name, size) = study_size(loaded, study);
+    check_count(shard.count, size, loaded, options.allow_large).map_err(|message| {
+        ShardError::Shards {
+            file: file.to_string(),
+            message,
+        }
+    })?;
     let range = shard.range(size);
     let start = Instant::now();
     let (base, bridge) = (&loaded.scenario, &loaded.bridge);
@@ -281,28 +295,16 @@ pub fn part_json(part: &Part) -> String {
     serde_json::to_string(part).expect("a part serialises") + "\n"
 }
 
-/// Reads a part file.
+/// Reads a part file ([`super::part_file::read_part`], default caps).
 pub fn read_part(path: &Path) -> Result<Part, ShardError> {
-    let text = std::fs::read_to_string(path).map_err(|source| ShardError::Read {
-        path: path.to_path_buf(),
-        source,
-    })?;
-    let part: Part = serde_json::from_str(&text).map_err(|e| ShardError::NotAPart {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })?;
-    if part.format != PART_FORMAT {
-        return Err(ShardError::NotAPart {
-            path: path.to_path_buf(),
-            message: format!("format `{}`, this vbi reads `{PART_FORMAT}`", part.format),
-        });
-    }
-    Ok(part)
+    super::part_file::read_part(path, false)
 }
 
 /// The merged study and the scene it belongs to.
 #[derive(Debug)]
 pub struct Merged {
+    /// The scenario file as the parts name it (as given to `vbi run`).
+    pub scenario_file: String,
     /// The scene, loaded again from the parts' scenario text.
     pub loaded: Loaded,
     /// The study's results, as an unsharded run gives them.
@@ -310,11 +312,20 @@ pub struct Merged {
 }
 
 /// Checks that `parts` (read from `paths`) are the N distinct shards of one
-/// study and assembles them.
-pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
+/// study and assembles them. Nothing in a part is trusted beyond what is
+/// derived again: the scene is loaded from the parts' text under the
+/// caller's `options` (its budgets, its `--allow-large`, its data folders;
+/// the scene's own files are confined to the current folder's tree, since
+/// the part's file name is not trusted to say which folder may be read),
+/// its hash is compared first, then the shard count is budgeted against the
+/// study's run count, and only then are the results assembled.
+pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardError> {
     let mut parts = Vec::with_capacity(paths.len());
     for path in paths {
-        parts.push((path.clone(), read_part(path)?));
+        parts.push((
+            path.clone(),
+            super::part_file::read_part(path, options.allow_large)?,
+        ));
     }
     let Some((first_path, first)) = parts.first() else {
         return Err(ShardError::Mismatch("no part files given".into()));
@@ -323,104 +334,131 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
     for (path, part) in &parts[1..] {
         if part.scenario_hash != first.scenario_hash
             || part.scenario_source != first.scenario_source
+            || part.scenario_file != first.scenario_file
         {
             return Err(ShardError::Mismatch(format!(
-                "{} is from another scenario than {} (scenario hash {} against {})",
+                "{} is from another scenario than {}",
                 shown(path),
                 shown(first_path),
-                part.scenario_hash,
-                first.scenario_hash
             )));
         }
-        if part.shards != first.shards || part.size != first.size || part.study != first.study {
+        if part.shards != first.shards
+            || part.size != first.size
+            || part.study != first.study
+            || part.allow_large != first.allow_large
+        {
             return Err(ShardError::Mismatch(format!(
-                "{} is shard {} of {} of a {}-run {} study, but {} is of {} shards of a {}-run {} study",
+                "{} and {} are parts of different splits of the study (shard counts, run counts, \
+                 study types or `--allow-large` differ)",
                 shown(path),
-                part.shard,
-                part.shards,
-                part.size,
-                part.study,
                 shown(first_path),
-                first.shards,
-                first.size,
-                first.study
             )));
         }
     }
+    // A part run with `--allow-large` needs the user's own to merge: the
+    // flag in the file is not trusted to lift the budgets.
+    if first.allow_large && !options.allow_large {
+        return Err(ShardError::Mismatch(format!(
+            "{} was run with `--allow-large`; merge with `--allow-large` too",
+            shown(first_path)
+        )));
+    }
+    // The scene hash first: the scene is loaded again under the caller's
+    // budgets, and its hash must be the parts' before any count in them is
+    // believed.
+    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
+    let options = LoadOptions {
+        modes_cache: None,
+        data: scenario::DataAccess {
+            data_dirs: options.data.data_dirs.clone(),
+            confine_to: Some(cwd),
+        },
+        ..options.clone()
+    };
+    let allow_large = options.allow_large;
+    let first_file = first.scenario_file.clone();
+    let loaded = scenario::load_str_with(&first.scenario_source, &first.scenario_file, options)?;
+    let hash = scenario_hash(&loaded);
+    if hash != first.scenario_hash {
+        return Err(ShardError::Mismatch(format!(
+            "the parts' scenario resolves differently with this vbi {} (hash {hash}); their hash \
+             does not match: merge with the vbi that ran them, or the parts were altered",
+            env!("CARGO_PKG_VERSION"),
+        )));
+    }
+    let study = loaded
+        .scenario
+        .study
+        .clone()
+        .ok_or_else(|| ShardError::NoStudy {
+            file: first.scenario_file.clone(),
+        })?;
+    // Then the counts, against the study as derived again.
+    let (name, size) = study_size(&loaded, &study);
+    let count = first.shards;
+    if first.study != name || first.size != size {
+        return Err(ShardError::Mismatch(format!(
+            "{} claims a {}-run study, the scene's study has {size} runs",
+            shown(first_path),
+            first.size
+        )));
+    }
+    check_count(count, size, &loaded, allow_large)
+        .map_err(|e| ShardError::Mismatch(format!("{}: {e}", shown(first_path))))?;
     let mut by_index: BTreeMap<usize, (PathBuf, Part)> = BTreeMap::new();
     for (path, part) in parts {
         let shard = Shard {
             index: part.shard,
-            count: part.shards,
+            count,
         };
-        if part.shard == 0
-            || part.shard > part.shards
-            || shard.range(part.size) != (part.first..part.end)
-        {
+        if part.shard == 0 || part.shard > count || shard.range(size) != (part.first..part.end) {
             return Err(ShardError::Mismatch(format!(
-                "{}: shard {} of {} should hold runs {:?}, it says {}..{}",
+                "{}: not a shard of {count} of this study (shard {}, runs {}..{})",
                 shown(&path),
                 part.shard,
-                part.shards,
-                if part.shard >= 1 && part.shard <= part.shards {
-                    Some(shard.range(part.size))
-                } else {
-                    None
-                },
                 part.first,
                 part.end
             )));
         }
         if let Some((other, _)) = by_index.get(&part.shard) {
             return Err(ShardError::Mismatch(format!(
-                "shard {} of {} is given twice: {} and {}",
+                "shard {} of {count} is given twice: {} and {}",
                 part.shard,
-                part.shards,
                 shown(other),
                 shown(&path)
             )));
         }
         by_index.insert(part.shard, (path, part));
     }
-    let (_, any) = by_index.values().next().expect("at least one part");
-    let (count, size) = (any.shards, any.size);
-    let missing: Vec<String> = (1..=count)
-        .filter(|k| !by_index.contains_key(k))
-        .map(|k| {
-            let r = Shard { index: k, count }.range(size);
-            format!("{k} (runs {}..{})", r.start, r.end)
-        })
-        .collect();
-    if !missing.is_empty() {
+    let missing = count - by_index.len();
+    if missing > 0 {
+        // At most a few named; the count is budgeted above, so the scan is
+        // bounded by the study's run count.
+        const NAMED: usize = 8;
+        let named: Vec<String> = (1..=count)
+            .filter(|k| !by_index.contains_key(k))
+            .take(NAMED)
+            .map(|k| {
+                let r = Shard { index: k, count }.range(size);
+                format!("{k} (runs {}..{})", r.start, r.end)
+            })
+            .collect();
+        let more = if missing > NAMED {
+            format!(" and {} more", missing - NAMED)
+        } else {
+            String::new()
+        };
         return Err(ShardError::Mismatch(format!(
-            "{} of {count} shards missing: {}",
-            missing.len(),
-            missing.join(", ")
-        )));
-    }
-    let options = LoadOptions {
-        allow_large: any.allow_large,
-        modes_cache: None,
-    };
-    let loaded = scenario::load_str_with(&any.scenario_source, &any.scenario_file, options)?;
-    if scenario_hash(&loaded) != any.scenario_hash {
-        return Err(ShardError::Mismatch(format!(
-            "the parts' scenario resolves differently with this vbi {} (hash {} against {}); merge with the vbi that ran them ({})",
-            env!("CARGO_PKG_VERSION"),
-            scenario_hash(&loaded),
-            any.scenario_hash,
-            any.vbi_version
+            "{missing} of {count} shards missing: {}{more}",
+            named.join(", ")
         )));
     }
     let parts: Vec<Part> = by_index.into_values().map(|(_, p)| p).collect();
-    let wall_time: f64 = parts.iter().map(|p| p.wall_time).sum();
-    let study = loaded
-        .scenario
-        .study
-        .clone()
-        .ok_or_else(|| ShardError::NoStudy {
-            file: any_file(&parts),
-        })?;
+    let wall_time: f64 = parts
+        .iter()
+        .map(|p| p.wall_time)
+        .filter(|t| t.is_finite() && *t >= 0.0)
+        .sum();
     let wrong = || ShardError::Mismatch("a part's results do not match its study type".into());
     let results = match &study {
         Study::SeparationMap {
@@ -506,7 +544,11 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
             )
         }
     };
-    Ok(Merged { loaded, results })
+    Ok(Merged {
+        scenario_file: first_file,
+        loaded,
+        results,
+    })
 }
 
 fn short(shard: usize, got: usize, want: usize) -> ShardError {
@@ -515,10 +557,28 @@ fn short(shard: usize, got: usize, want: usize) -> ShardError {
     ))
 }
 
-fn any_file(parts: &[Part]) -> String {
-    parts
-        .first()
-        .map_or_else(String::new, |p| p.scenario_file.clone())
+/// Whether `count` shards suit a study of `size` runs: at most one shard a
+/// run, and at most `limits.study_points` (lifted by `--allow-large`, which
+/// the scene's budget knows).
+pub fn check_count(
+    count: usize,
+    size: usize,
+    loaded: &Loaded,
+    allow_large: bool,
+) -> Result<(), String> {
+    if count > size {
+        return Err(format!(
+            "{count} shards of a study of {size} runs: give at most one shard a run (N ≤ {size})"
+        ));
+    }
+    let limit = loaded.scenario.limits.study_points;
+    if count as f64 > limit && !allow_large {
+        return Err(format!(
+            "{count} shards is more than the {limit} `limits.study_points` allows; raise it in \
+             the scene or run with `--allow-large`"
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

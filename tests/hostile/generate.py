@@ -420,7 +420,7 @@ structural = [
     ("fra-band-negative", scene(extra="surface: {type: fra, class: 5, longest_wavelength: @@-80}\n"), "must be positive"),
     ("german-band-empty", scene(extra="surface: {type: german, interference: high, shortest_wavelength: 50, longest_wavelength: @@5}\n"), "band is empty"),
     ("iso-class-unknown", scene(extra="surface: {type: iso8608, class: @@Z}\n"), "unknown variant"),
-    ("measured-missing", scene(extra="surface: {type: measured, file: @@no-such-profile.csv}\n"), "cannot read the measured profile"),
+    ("measured-missing", scene(extra="surface: {type: measured, file: @@no-such-profile.csv}\n"), "cannot read"),
     ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a file"),
     ("dip-depth-zero", scene(extra="surface: {type: dip, start: 2, length: 1, depth: @@0}\n"), "must be positive"),
     ("piecewise-one-point", scene(extra="surface: {type: piecewise_linear, points: @@[[0, 0]]}\n"), "at least two"),
@@ -457,7 +457,7 @@ ground = [
     ("nan", "{file: @@quake-nan.csv}", "quake-nan.csv:3: column 2"),
     ("backwards", "{file: @@quake-backwards.csv}", "must increase strictly"),
     ("no-units", "{file: @@quake-no-units.csv}", "does not state the units"),
-    ("missing", "{file: @@no-such-record.AT2}", "cannot read the ground-motion record"),
+    ("missing", "{file: @@no-such-record.AT2}", "cannot read"),
     ("interval-huge-at2", "{file: @@quake-interval-huge.AT2}", "quake-interval-huge.AT2:4: DT = 1e300 s is outside the plausible sampling interval"),
     ("interval-huge-csv", "{file: @@quake-interval-huge.csv}", "quake-interval-huge.csv:3: column 1"),
     ("lateral", "{file: quake-ok.csv, direction: @@lateral}", "lateral bridge modes"),
@@ -470,8 +470,9 @@ for slug, component, message in ground:
 
 
 # --- imported FE bridges (issue 12): the matrices and tables live in
-# tests/hostile/fe/ (written below), the scenes refer to them by ../fe/.
-FE = os.path.join(HERE, "fe")
+# tests/hostile/cases/fe/ (written below), inside the scenes' folder tree
+# (issue 23: a scene reads nothing outside it), the scenes refer to them by fe/.
+FE = os.path.join(CASES, "fe")
 MM = "%%MatrixMarket matrix coordinate real symmetric\n"
 FE_FILES = {
     "K.mtx": MM + "2 2 3\n1 1 2.0e6\n2 1 -1.0e6\n2 2 2.0e6\n",
@@ -536,65 +537,65 @@ def textbook_beam(elements=4, length=10.0, ei=1.0e9, m=1000.0):
  FE_FILES["dofs-beam.csv"], FE_FILES["rail-beam.csv"]) = textbook_beam()
 
 
-def fe_scene(stiffness="../fe/K.mtx", mass="../fe/M.mtx", rail="../fe/rail.csv"):
+def fe_scene(stiffness="fe/K.mtx", mass="fe/M.mtx", rail="fe/rail.csv"):
     bridge = ("bridge:\n  type: fe_import\n  stiffness: " + stiffness + "\n  mass: " + mass
-              + "\n  dof_map: ../fe/dofs.csv\n  rails: [{name: rail, file: " + rail + "}]\n")
+              + "\n  dof_map: fe/dofs.csv\n  rails: [{name: rail, file: " + rail + "}]\n")
     return scene(bridge=bridge, vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n")
 
 
 case("ok-fe-import", "accepted", "a two-DOF imported model with its rail", fe_scene())
 case("fe-huge-entries", "rejected",
      "a Matrix Market header declaring 10^12 entries is refused before anything is allocated",
-     fe_scene(stiffness="@@../fe/K-huge-entries.mtx"), "K-huge-entries.mtx:2: the size line declares")
+     fe_scene(stiffness="@@fe/K-huge-entries.mtx"), "K-huge-entries.mtx:2: the size line declares")
 case("fe-huge-rows", "rejected",
      "a Matrix Market header declaring 10^9 rows is refused before anything is allocated",
-     fe_scene(stiffness="@@../fe/K-huge-rows.mtx"), "declares 1000000000 rows")
+     fe_scene(stiffness="@@fe/K-huge-rows.mtx"), "declares 1000000000 rows")
 case("fe-truncated", "rejected", "a matrix file that ends before its declared entries",
-     fe_scene(stiffness="@@../fe/K-truncated.mtx"), "K-truncated.mtx:4: the file ends after 2 of the 3")
+     fe_scene(stiffness="@@fe/K-truncated.mtx"), "K-truncated.mtx:4: the file ends after 2 of the 3")
 case("fe-out-of-range", "rejected", "an entry index beyond the declared order",
-     fe_scene(stiffness="@@../fe/K-range.mtx"), "K-range.mtx:4:1: index 3 is outside 1")
+     fe_scene(stiffness="@@fe/K-range.mtx"), "K-range.mtx:4:1: index 3 is outside 1")
 case("fe-unsymmetric", "rejected", "a general matrix that is not symmetric",
-     fe_scene(stiffness="@@../fe/K-unsymmetric.mtx"),
+     fe_scene(stiffness="@@fe/K-unsymmetric.mtx"),
      "K-unsymmetric.mtx:5:1: the matrix is not symmetric: entry (1, 2) = -2000000 but (2, 1) = -1000000 at line 4")
 case("fe-pattern", "rejected", "a pattern matrix has no values",
-     fe_scene(stiffness="@@../fe/K-pattern.mtx"), "`pattern` entries are not read")
+     fe_scene(stiffness="@@fe/K-pattern.mtx"), "`pattern` entries are not read")
 case("fe-nan", "rejected", "a NaN mass entry",
-     fe_scene(mass="@@../fe/M-nan.mtx"), "M-nan.mtx:3:5: `NaN` is not a finite number")
+     fe_scene(mass="@@fe/M-nan.mtx"), "M-nan.mtx:3:5: `NaN` is not a finite number")
 case("fe-missing", "rejected", "a matrix file that does not exist",
-     fe_scene(mass="@@../fe/none.mtx"), "cannot read")
+     fe_scene(mass="@@fe/none.mtx"), "cannot read")
 case("fe-rail-backwards", "rejected", "a rail whose x does not increase",
-     fe_scene(rail="@@../fe/rail-backwards.csv"), "rail-backwards.csv:3:2")
+     fe_scene(rail="@@fe/rail-backwards.csv"), "rail-backwards.csv:3:2")
 case("fe-rail-unknown-node", "rejected", "a rail node missing from the DOF map",
-     fe_scene(rail="../fe/rail-unknown.csv"), "node 7 is not in the DOF map")
+     fe_scene(rail="fe/rail-unknown.csv"), "node 7 is not in the DOF map")
 case("fe-repeated-general", "rejected",
      "an entry given twice in a general Matrix Market file is refused, not summed (issue 23)",
-     fe_scene(stiffness="@@../fe/K-repeated.mtx"),
+     fe_scene(stiffness="@@fe/K-repeated.mtx"),
      "K-repeated.mtx:7:1: entry (1, 1) (node 1 uz, node 1 uz) repeats entry (1, 1) of line 3")
 case("fe-repeated-both-triangles", "rejected",
      "a symmetric Matrix Market file giving an entry in both triangles (issue 23)",
-     fe_scene(stiffness="@@../fe/K-both-triangles.mtx"),
+     fe_scene(stiffness="@@fe/K-both-triangles.mtx"),
      "K-both-triangles.mtx:5:1: entry (1, 2) (node 1 uz, node 2 uz) repeats entry (2, 1) of line 4")
 case("fe-repeated-harwell-boeing", "rejected",
      "a Harwell-Boeing column listing a row twice (issue 23)",
-     fe_scene(stiffness="@@../fe/K-repeated.hb"),
+     fe_scene(stiffness="@@fe/K-repeated.hb"),
      "K-repeated.hb:7:11: entry (1, 1) (node 1 uz, node 1 uz) repeats entry (1, 1) of line 7")
 case("fe-repeated-abaqus", "rejected", "an Abaqus entry line given twice (issue 23)",
-     scene(bridge="bridge:\n  type: fe_import\n  stiffness: @@../fe/K-repeated.abq\n"
-           "  mass: ../fe/M.abq\n  rails: [{name: rail, file: ../fe/rail.csv}]\n",
+     scene(bridge="bridge:\n  type: fe_import\n  stiffness: @@fe/K-repeated.abq\n"
+           "  mass: fe/M.abq\n  rails: [{name: rail, file: fe/rail.csv}]\n",
            vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n"),
      "K-repeated.abq:5:1: entry (2, 1) (node 2 uz, node 1 uz) repeats entry (2, 1) of line 3")
 case("fe-damping-unsymmetric", "rejected",
      "an unsymmetric damping matrix is located in its own file (issue 23)",
-     fe_scene().replace("  rails:", "  damping: {type: matrix, file: @@../fe/C-unsymmetric.mtx}\n  rails:"),
+     fe_scene().replace("  rails:", "  damping: {type: matrix, file: @@fe/C-unsymmetric.mtx}\n  rails:"),
      "C-unsymmetric.mtx:5:1: the matrix is not symmetric: entry (1, 2) = -2000 but (2, 1) = -1000 at line 4")
 
 
 def beam_scene(extra="", at=""):
     bridge = ("bridge:\n  " + at + "type: fe_import\n" + extra
-              + "  stiffness: ../fe/K-textbook.mtx\n  mass: ../fe/M-textbook.mtx\n"
-              "  dof_map: ../fe/dofs-beam.csv\n"
+              + "  stiffness: fe/K-textbook.mtx\n  mass: fe/M-textbook.mtx\n"
+              "  dof_map: fe/dofs-beam.csv\n"
               "  constrained: [{node: 1, direction: uz}, {node: 5, direction: uz}]\n"
-              "  rails: [{name: rail, file: ../fe/rail-beam.csv}]\n")
+              "  rails: [{name: rail, file: fe/rail-beam.csv}]\n")
     return scene(bridge=bridge, vehicles="  - {type: moving_force, speed: 10.0, loads: [1.0e4]}\n")
 
 
@@ -607,6 +608,91 @@ case("ok-fe-rotation-declared", "accepted",
      beam_scene(extra="  rotation_sign: {ry: -1}\n"))
 case("fe-rotation-sign-value", "rejected", "a rotation sign other than -1 or 1",
      beam_scene(extra="  rotation_sign: {ry: @@2}\n"), "a rotation's sign is -1 or 1, got 2")
+
+
+# --- confined reads (issue 23): paths out of the scene's folder by `../`, by
+# a symlink or absolute, to a device, and a canary file beside the cases'
+# folder (tests/hostile/canary.txt) whose content must never appear in any
+# output (tests/hostile.rs checks every case for it). Each is refused at the
+# key that names the file, with the path and `--data-dir`, before it is read.
+CANARY = "CANARY-SECRET-8a41f2"
+CANARY_TEXT = ("root:x:0:0:root:/root:/bin/bash " + CANARY + "\n"
+               + CANARY + "," + CANARY + "\n1," + CANARY + "\n")
+# Symlinks in the cases' folder (made by main()): name -> target.
+SYMLINKS = {
+    "link-canary.csv": "../canary.txt",
+    "link-canary.AT2": "../canary.txt",
+    "link-zero.AT2": "/dev/zero",
+    "link-passwd.mtx": "/etc/passwd",
+}
+OUTSIDE = "outside the scene's folder"
+ABSOLUTE = "is an absolute path"
+for slug, component, message in [
+    ("traversal-record", "{file: @@../canary.txt}", OUTSIDE),
+    ("traversal-deep", "{file: @@fe/../../canary.txt}", OUTSIDE),
+    ("symlink-record", "{file: @@link-canary.AT2}", "through a symlink"),
+    ("symlink-device", "{file: @@link-zero.AT2}", OUTSIDE),
+    ("absolute-record", "{file: @@/etc/passwd}", ABSOLUTE),
+    ("absolute-device", "{file: @@/dev/zero}", ABSOLUTE),
+]:
+    case("confine-" + slug, "rejected", "confined reads: a ground-motion record, " + slug,
+         scene(extra="ground_motion:\n  - " + component + "\n"), message)
+for slug, surface, message in [
+    ("traversal-profile", "{type: measured, file: @@../canary.txt}", OUTSIDE),
+    ("symlink-profile", "{type: measured, file: @@link-canary.csv}", "through a symlink"),
+    ("absolute-profile", "{type: measured, file: @@/proc/self/environ}", ABSOLUTE),
+    ("folder-profile", "{type: measured, file: @@fe}", "not a regular file"),
+]:
+    case("confine-" + slug, "rejected", "confined reads: a measured profile, " + slug,
+         scene(extra="surface: " + surface + "\n"), message)
+case("confine-traversal-matrix", "rejected", "confined reads: a stiffness matrix by `../`",
+     fe_scene(stiffness="@@../canary.txt"), OUTSIDE)
+case("confine-symlink-matrix", "rejected", "confined reads: a mass matrix symlinked to /etc/passwd",
+     fe_scene(mass="@@link-passwd.mtx"), "through a symlink")
+case("confine-traversal-rail", "rejected", "confined reads: a rail CSV by `../`",
+     fe_scene(rail="@@../canary.txt"), OUTSIDE)
+case("confine-absolute-rail", "rejected", "confined reads: a rail CSV by an absolute path",
+     fe_scene(rail="@@/etc/passwd"), ABSOLUTE)
+# Inside the folder but not the format: refused without quoting the content.
+side_files["not-a-rail.csv"] = "root:x:0:0:root:/root:/bin/bash\n1,2\n"
+side_files["not-a-record.csv"] = "root:x:0:0,root:/root:/bin/bash\nroot:x:0:0,root:/root:/bin/bash\n"
+case("content-not-a-rail", "rejected", "a rail CSV that is not one is not quoted",
+     fe_scene(rail="@@not-a-rail.csv"), "the header must be `node,x`")
+case("content-not-a-record", "rejected", "a record CSV that is not one is not quoted",
+     scene(extra="ground_motion:\n  - {file: @@not-a-record.csv, units: g}\n"),
+     "the first row is not a number")
+
+# --- forged part files for `vbi merge` (issue 23), written to
+# tests/hostile/parts/: tests/hostile.rs merges each alone and expects exit
+# 2 within the caps and no canary. (Forgeries that carry the right scene
+# hash are made from a real part at test time, in tests/confined.rs.)
+PART_SCENE = scene(extra="study:\n  type: separation_map\n  velocity_ratio: {from: 0.1, to: 0.3, count: 3}\n"
+                   "  mass_ratio: {from: 0.1, to: 0.2, count: 2}\n")
+
+
+def part(**fields):
+    import json
+    base = {"format": "vbi-part-1", "vbi_version": "0", "scenario_hash": "0000000000000000",
+            "scenario_file": "scene.yaml", "scenario_source": PART_SCENE, "allow_large": False,
+            "study": "separation_map", "size": 6, "shard": 1, "shards": 1, "first": 0, "end": 6,
+            "wall_time": 0.0, "data": {"study": "separation_map", "points": []}}
+    base.update(fields)
+    return json.dumps(base)
+
+
+PARTS = {
+    "huge-shards.json": part(shards=99999999999, end=0),
+    "max-shards.json": part(shards=2**64 - 1, end=0),
+    "allow-large.json": part(allow_large=True),
+    "wrong-hash.json": part(),
+    "canary-source.json": part(scenario_file="/etc/x.yaml",
+                               scenario_source=scene(extra="ground_motion:\n  - {file: passwd}\n")),
+    "canary-traversal.json": part(scenario_source=scene(
+        extra="ground_motion:\n  - {file: ../../../../../../../../etc/passwd}\n")),
+    "not-json.json": "root:x:0:0:root:/root:/bin/bash " + CANARY + "\n",
+    "wrong-type.json": part(study=CANARY, shard=CANARY),
+    "format-canary.json": '{"format": "' + CANARY + '"}',
+}
 
 
 def locate(text):
@@ -633,6 +719,17 @@ def main():
         shutil.rmtree(CASES)
     os.makedirs(CASES)
     os.makedirs(FE, exist_ok=True)
+    with open(os.path.join(HERE, "canary.txt"), "w", encoding="utf-8") as f:
+        f.write(CANARY_TEXT)
+    for name, target in SYMLINKS.items():
+        os.symlink(target, os.path.join(CASES, name))
+    parts = os.path.join(HERE, "parts")
+    if os.path.isdir(parts):
+        shutil.rmtree(parts)
+    os.makedirs(parts)
+    for name, text in PARTS.items():
+        with open(os.path.join(parts, name), "w", encoding="utf-8") as f:
+            f.write(text)
     for name, text in FE_FILES.items():
         with open(os.path.join(FE, name), "w", encoding="utf-8") as f:
             f.write(text)

@@ -42,7 +42,7 @@ pub fn parse(text: &str) -> Result<MatrixFile, ReadError> {
                 ReadError::new(
                     n,
                     Some(super::matrix_market::column_of(line, f)),
-                    format!("`{f}` is not a whole number"),
+                    format!("`{}` is not a whole number", crate::text_table::quoted(f)),
                 )
             })
         };

@@ -89,7 +89,7 @@ fn header_int(line: &str, n: usize, from: usize, to: usize, what: &str) -> Resul
         ReadError::new(
             n,
             Some(from + 1),
-            format!("{what}: `{field}` is not a whole number"),
+            format!("{what} (columns {}–{to}) is not a whole number", from + 1),
         )
     })
 }
@@ -113,8 +113,9 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
                 3,
                 Some(1),
                 format!(
-                    "matrix type `{other}` is not read: a stiffness or mass matrix is real and \
-                     assembled (RSA or RUA)"
+                    "matrix type `{}` is not read: a stiffness or mass matrix is real and \
+                     assembled (RSA or RUA)",
+                    crate::text_table::quoted(other)
                 ),
             ));
         }
@@ -136,7 +137,10 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
             ReadError::new(
                 4,
                 Some(from + 1),
-                format!("{what} format `{}` is not read", f.trim()),
+                format!(
+                    "{what} format `{}` is not read",
+                    crate::text_table::quoted(f.trim())
+                ),
             )
         })
     };
@@ -147,8 +151,13 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
     let n = rows as usize;
     let nnz = entries as usize;
     let whole = |f: &str, line: usize, col: usize| -> Result<u64, ReadError> {
-        f.parse()
-            .map_err(|_| ReadError::new(line, Some(col), format!("`{f}` is not a whole number")))
+        f.parse().map_err(|_| {
+            ReadError::new(
+                line,
+                Some(col),
+                format!("`{}` is not a whole number", crate::text_table::quoted(f)),
+            )
+        })
     };
     let pointers = fields(
         &lines,
@@ -240,7 +249,7 @@ pub fn mapping(text: &str, order: usize) -> Result<Vec<(u64, Direction)>, ReadEr
         }
         let node: u64 = words[1]
             .parse()
-            .map_err(|_| ReadError::new(n, None, format!("`{}` is not a node number", words[1])))?;
+            .map_err(|_| ReadError::new(n, None, "the second word is not a node number"))?;
         let direction = match words[2].to_ascii_uppercase().as_str() {
             "UX" => Direction::Ux,
             "UY" => Direction::Uy,
@@ -252,7 +261,10 @@ pub fn mapping(text: &str, order: usize) -> Result<Vec<(u64, Direction)>, ReadEr
                 return Err(ReadError::new(
                     n,
                     None,
-                    format!("DOF `{other}` is not one of UX, UY, UZ, ROTX, ROTY, ROTZ"),
+                    format!(
+                        "DOF `{}` is not one of UX, UY, UZ, ROTX, ROTY, ROTZ",
+                        crate::text_table::quoted(other)
+                    ),
                 ));
             }
         };

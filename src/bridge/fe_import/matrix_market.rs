@@ -41,7 +41,7 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
             None,
             format!(
                 "`{}` storage is not read; write the matrix in `coordinate` form",
-                words[2]
+                crate::text_table::quoted(&words[2])
             ),
         ));
     }
@@ -52,8 +52,9 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
                 1,
                 None,
                 format!(
-                    "`{other}` entries are not read: a stiffness or mass matrix has real values \
-                     (`pattern` has none, `complex` is not a structural matrix)"
+                    "`{}` entries are not read: a stiffness or mass matrix has real values \
+                     (`pattern` has none, `complex` is not a structural matrix)",
+                    crate::text_table::quoted(other)
                 ),
             ));
         }
@@ -65,7 +66,10 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
             return Err(ReadError::new(
                 1,
                 None,
-                format!("`{other}` symmetry is not read; use `symmetric` or `general`"),
+                format!(
+                    "`{}` symmetry is not read; use `symmetric` or `general`",
+                    crate::text_table::quoted(other)
+                ),
             ));
         }
     };
@@ -100,7 +104,7 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
             ReadError::new(
                 size_line,
                 Some(column_of(size, f)),
-                format!("`{f}` is not a whole number"),
+                format!("`{}` is not a whole number", crate::text_table::quoted(f)),
             )
         })?;
     }
@@ -151,9 +155,13 @@ pub fn parse(text: &str, sizes: SizeCheck<'_>) -> Result<MatrixFile, ReadError> 
         let index = |k: usize| -> Result<usize, ReadError> {
             let f = fields[k];
             let col = Some(column_of(line, f));
-            let i: u64 = f
-                .parse()
-                .map_err(|_| ReadError::new(n, col, format!("`{f}` is not a whole number")))?;
+            let i: u64 = f.parse().map_err(|_| {
+                ReadError::new(
+                    n,
+                    col,
+                    format!("`{}` is not a whole number", crate::text_table::quoted(f)),
+                )
+            })?;
             if i == 0 || i > rows {
                 return Err(ReadError::new(
                     n,

@@ -189,15 +189,21 @@ pub struct MatrixFile {
 pub(crate) fn parse_value(field: &str, line: &str, n: usize) -> Result<f64, ReadError> {
     let column = Some(matrix_market::column_of(line, field));
     // Fortran writes exponents as D (1.0D+03).
-    let v: f64 = field
-        .replace(['D', 'd'], "e")
-        .parse()
-        .map_err(|_| ReadError::new(n, column, format!("`{field}` is not a number")))?;
+    let v: f64 = field.replace(['D', 'd'], "e").parse().map_err(|_| {
+        ReadError::new(
+            n,
+            column,
+            format!("`{}` is not a number", crate::text_table::quoted(field)),
+        )
+    })?;
     if !v.is_finite() {
         return Err(ReadError::new(
             n,
             column,
-            format!("`{field}` is not a finite number"),
+            format!(
+                "`{}` is not a finite number",
+                crate::text_table::quoted(field)
+            ),
         ));
     }
     Ok(v)

@@ -5,6 +5,7 @@
 //! and `#` comments are skipped.
 
 use super::{Direction, ReadError};
+use crate::text_table::quoted;
 
 /// Data rows of a CSV table after its header `expected`: (line, fields).
 fn rows<'t>(text: &'t str, expected: &[&str]) -> Result<Vec<(usize, Vec<&'t str>)>, ReadError> {
@@ -24,7 +25,8 @@ fn rows<'t>(text: &'t str, expected: &[&str]) -> Result<Vec<(usize, Vec<&'t str>
                     n,
                     Some(1),
                     format!(
-                        "the header must be `{}`, found `{trimmed}`",
+                        "the header must be `{}` (the first line that is not blank or a `#` \
+                         comment); this line is not: is it the right file?",
                         expected.join(",")
                     ),
                 ));
@@ -64,7 +66,7 @@ fn whole(line: usize, field: &str, column: usize) -> Result<u64, ReadError> {
         ReadError::new(
             line,
             Some(column),
-            format!("`{field}` is not a whole number"),
+            format!("`{}` is not a whole number", quoted(field)),
         )
     })
 }
@@ -89,7 +91,10 @@ pub fn dof_map(text: &str, order: usize) -> Result<Vec<(u64, Direction)>, ReadEr
             ReadError::new(
                 *n,
                 Some(3),
-                format!("`{}` is not a direction (ux, uy, uz, rx, ry, rz)", f[2]),
+                format!(
+                    "`{}` is not a direction (ux, uy, uz, rx, ry, rz)",
+                    quoted(f[2])
+                ),
             )
         })?;
         let slot = &mut map[dof as usize - 1];
@@ -132,9 +137,9 @@ pub fn rail(text: &str) -> Result<Vec<(u64, f64)>, ReadError> {
     let mut out: Vec<(u64, f64)> = Vec::with_capacity(rows.len());
     for (n, f) in &rows {
         let node = whole(*n, f[0], 1)?;
-        let x: f64 = f[1]
-            .parse()
-            .map_err(|_| ReadError::new(*n, Some(2), format!("`{}` is not a number", f[1])))?;
+        let x: f64 = f[1].parse().map_err(|_| {
+            ReadError::new(*n, Some(2), format!("`{}` is not a number", quoted(f[1])))
+        })?;
         check_next(&out, node, x).map_err(|m| ReadError::new(*n, Some(2), m))?;
         out.push((node, x));
     }

@@ -5,31 +5,23 @@
 //! file's size and row count are budgeted before anything is allocated per
 //! row.
 
-use std::io::Read;
-use std::path::Path;
-
 use super::super::budget::Budget;
+use super::super::data_files::{self, DataFile};
 use super::super::resolve::Checker;
 use super::super::resolved::MeasuredProfile;
+use crate::ground::table::not_a_number;
 
 /// Fewest bytes a data row takes (`0,0` and a line break).
 const MIN_ROW_BYTES: f64 = 4.0;
 
 /// Reads the profile at `path`; `None` after reporting why not.
-pub(super) fn read(path: &Path, budget: &Budget, ck: &mut Checker<'_>) -> Option<MeasuredProfile> {
+pub(super) fn read(
+    data: &DataFile,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Option<MeasuredProfile> {
     const AT: &str = "surface.file";
-    let shown = path.display().to_string();
-    let size = match std::fs::metadata(path) {
-        Ok(m) if m.is_file() => m.len(),
-        Ok(_) => {
-            ck.error(AT, format!("{shown} is not a file"));
-            return None;
-        }
-        Err(e) => {
-            ck.error(AT, format!("cannot read the measured profile {shown}: {e}"));
-            return None;
-        }
-    };
+    let (shown, size) = (&data.shown, data.size);
     // At most size/4 rows: budget them before reading the file whole.
     let most_rows = (size as f64 / MIN_ROW_BYTES).ceil();
     if !budget.check(
@@ -43,12 +35,13 @@ pub(super) fn read(path: &Path, budget: &Budget, ck: &mut Checker<'_>) -> Option
     ) {
         return None;
     }
-    let mut text = String::new();
-    let read = std::fs::File::open(path).and_then(|f| f.take(size + 1).read_to_string(&mut text));
-    if let Err(e) = read {
-        ck.error(AT, format!("cannot read the measured profile {shown}: {e}"));
-        return None;
-    }
+    let text = match data_files::read_text(data) {
+        Ok(text) => text,
+        Err(message) => {
+            ck.error(AT, message);
+            return None;
+        }
+    };
     match parse(&text) {
         Ok(p) => Some(p),
         Err((line, message)) => {
@@ -98,12 +91,9 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
         for (k, field) in fields.iter().enumerate() {
             let v: f64 = field
                 .parse()
-                .map_err(|_| (n, format!("column {}: `{field}` is not a number", k + 1)))?;
+                .map_err(|_| (n, not_a_number(k, field, !x.is_empty(), "")))?;
             if !v.is_finite() {
-                return Err((
-                    n,
-                    format!("column {}: `{field}` is not a finite number", k + 1),
-                ));
+                return Err((n, not_a_number(k, field, true, "finite ")));
             }
             values[k] = v;
         }
