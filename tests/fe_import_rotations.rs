@@ -531,9 +531,9 @@ fn the_criterion_holds_for_unequal_timoshenko_elements_on_springs() {
             ];
             // DOFs uz, θ per node; θ = sign · (file's rotation).
             let flip = |a: usize| if a % 2 == 1 { sign } else { 1.0 };
-            for a in 0..4 {
-                for b in 0..4 {
-                    k.push((2 * e + a, 2 * e + b, flip(a) * flip(b) * c * local[a][b]));
+            for (a, row) in local.iter().enumerate() {
+                for (b, value) in row.iter().enumerate() {
+                    k.push((2 * e + a, 2 * e + b, flip(a) * flip(b) * c * value));
                 }
             }
         }
