@@ -94,6 +94,10 @@ fn refused(test: &str, files: &[(&str, &str)], bridge: &str) -> String {
     message
 }
 
+/// A refused case: name, files replaced, the scene's bridge keys, and what
+/// the message must say.
+type Case<'a> = (&'a str, Vec<(&'a str, String)>, String, &'a str);
+
 const FILES: &str = "  stiffness: K.mtx\n  mass: M.mtx\n  dof_map: dofs.csv\n";
 
 #[test]
@@ -149,7 +153,7 @@ fn the_two_dof_model_itself_is_accepted() {
 #[test]
 fn repeated_entries_are_refused_with_both_lines() {
     let abaqus_m = "1,3, 1,3, 100.0\n2,3, 2,3, 100.0\n";
-    let cases: Vec<(&str, Vec<(&str, String)>, String, &str)> = vec![
+    let cases: Vec<Case<'_>> = vec![
         (
             "general_twice",
             vec![(
@@ -233,7 +237,7 @@ fn repeated_entries_are_refused_with_both_lines() {
 
 #[test]
 fn symmetry_errors_name_their_file_line_and_column() {
-    let cases: Vec<(&str, Vec<(&str, String)>, String, &str)> = vec![
+    let cases: Vec<Case<'_>> = vec![
         (
             "general",
             vec![(

@@ -501,3 +501,83 @@ fn a_generated_viaduct_passes_and_its_flipped_rotations_are_refused() {
         );
     }
 }
+
+/// The criterion's claim (src/bridge/fe_import/rotation.rs): for a
+/// mirror-symmetric element free of strain under rigid motions,
+/// K[uⱼ,rᵢ] − K[uᵢ,rⱼ] = σ·h·K[uᵢ,uⱼ] exactly, and only the elements
+/// joining i and j enter it. Checked on Timoshenko elements (shear
+/// parameter Φ = 12EI/(κGAh²) from 0 to 3; Przemieniecki, Theory of Matrix
+/// Structural Analysis, 1968, §5.6, θ = +∂w/∂x) of unequal lengths with
+/// vertical and rotational springs at every node: every segment votes +1
+/// (σ̂ of the first = 1 to 1e-12); flipped (θ = −ry), −1; and a segment
+/// whose node is fixed does not vote.
+#[test]
+fn the_criterion_holds_for_unequal_timoshenko_elements_on_springs() {
+    use vbi::bridge::fe_import::rotation::rail_evidence;
+    use vbi::bridge::fe_import::track::RailDofs;
+    let lengths = [1.0, 0.3, 2.0, 0.7];
+    let shear = [0.0, 0.5, 3.0, 1.2];
+    let ei = 6.4e6;
+    let nodes = lengths.len() + 1;
+    for sign in [1.0, -1.0] {
+        let mut k = Vec::new();
+        for (e, (&h, &phi)) in lengths.iter().zip(&shear).enumerate() {
+            let c = ei / ((1.0 + phi) * h * h * h);
+            let local = [
+                [12.0, 6.0 * h, -12.0, 6.0 * h],
+                [6.0 * h, (4.0 + phi) * h * h, -6.0 * h, (2.0 - phi) * h * h],
+                [-12.0, -6.0 * h, 12.0, -6.0 * h],
+                [6.0 * h, (2.0 - phi) * h * h, -6.0 * h, (4.0 + phi) * h * h],
+            ];
+            // DOFs uz, θ per node; θ = sign · (file's rotation).
+            let flip = |a: usize| if a % 2 == 1 { sign } else { 1.0 };
+            for (a, row) in local.iter().enumerate() {
+                for (b, value) in row.iter().enumerate() {
+                    k.push((2 * e + a, 2 * e + b, flip(a) * flip(b) * c * value));
+                }
+            }
+        }
+        for n in 0..nodes {
+            k.push((2 * n, 2 * n, 5.0e8)); // pad
+            k.push((2 * n + 1, 2 * n + 1, 4.5e4)); // pad rotation
+        }
+        let mut x = vec![0.0];
+        for h in lengths {
+            x.push(x.last().unwrap() + h);
+        }
+        let rail = |fixed: Option<usize>| RailDofs {
+            name: "rail".into(),
+            nodes: (1..=nodes as u64).collect(),
+            x: x.clone(),
+            displacement: [
+                (0..nodes)
+                    .map(|n| (Some(n) != fixed).then_some(2 * n))
+                    .collect(),
+                vec![None; nodes],
+            ],
+            rotation: [
+                (0..nodes).map(|n| Some(2 * n + 1)).collect(),
+                vec![None; nodes],
+            ],
+            hermite: [true, false],
+        };
+        let k_free = |fixed: Option<usize>| -> Vec<(usize, usize, f64)> {
+            k.iter()
+                .copied()
+                .filter(|&(a, b, _)| fixed.is_none_or(|f| a != 2 * f && b != 2 * f))
+                .collect()
+        };
+        let evidence = rail_evidence(&k_free(None), &rail(None), 0);
+        let (votes, first) = evidence.votes(sign);
+        assert_eq!(votes, lengths.len(), "{evidence:?}");
+        assert_eq!(evidence.votes(-sign).0, 0);
+        assert!((first.unwrap().2 - sign).abs() <= 1e-12, "{evidence:?}");
+        // The third node fixed: the two segments touching it are silent.
+        let evidence = rail_evidence(&k_free(Some(2)), &rail(Some(2)), 0);
+        assert_eq!(
+            (evidence.votes(sign).0, evidence.silent),
+            (2, 2),
+            "{evidence:?}"
+        );
+    }
+}

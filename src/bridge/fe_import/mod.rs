@@ -304,7 +304,10 @@ pub type RailNodes = (String, Vec<(u64, f64)>);
 impl ImportedModel {
     /// Checks the read matrices, map, constraints and rails against each
     /// other and keeps the free DOFs. `map` is required unless the
-    /// stiffness file names its DOFs (Abaqus).
+    /// stiffness file names its DOFs (Abaqus). `rotation_sign` flips the files'
+    /// slope rotations into this program's convention, which each rail's
+    /// stiffness must then confirm ([`rotation`]).
+    #[allow(clippy::too_many_arguments)]
     pub fn assemble(
         stiffness: MatrixFile,
         mass: MatrixFile,
