@@ -565,16 +565,12 @@ pub(super) fn check_reach(
             1.0
         } * if sampling.alignment { 2.0 } else { 1.0 };
         let work = nodes * rails * sampling.terms as f64;
-        // A run-in longer than the ride is the cause of a large grid (its
-        // default is the longest wavelength).
-        let grid_path = if sampling.run_in <= end.max(0.0) {
-            "surface.shortest_wavelength"
-        } else if ck.has("surface.run_in") {
+        // A run-in written longer than the ride is the cause of a large
+        // grid; otherwise the grid's spacing is.
+        let grid_path = if ck.has("surface.run_in") && sampling.run_in > end.max(0.0) {
             "surface.run_in"
-        } else if ck.has("surface.longest_wavelength") {
-            "surface.longest_wavelength"
         } else {
-            "surface"
+            "surface.shortest_wavelength"
         };
         return budget.check(
             ck,
