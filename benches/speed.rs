@@ -174,7 +174,7 @@ fn monte_carlo_of(budget: f64, label: &str, text: &str) {
             std::fs::write(&path, shard::part_json(&part)).expect("part written");
             parts.push(path);
         }
-        shard::merge(&parts).expect("merge");
+        shard::merge(&parts, &Default::default()).expect("merge");
         start.elapsed().as_secs_f64()
     }));
     let _ = std::fs::remove_dir_all(&dir);

@@ -65,10 +65,9 @@ fn npts_dt(line: &str) -> Result<(usize, f64), At2Error> {
     let bad = || {
         (
             4,
-            format!(
-                "header line 4 must give the sample count and interval, `NPTS= 4000, DT= .0100 SEC` \
-                 (or `4000  .0100  NPTS, DT`); is it a PEER AT2 file?"
-            ),
+            "header line 4 must give the sample count and interval, `NPTS= 4000, DT= .0100 SEC` \
+             (or `4000  .0100  NPTS, DT`); is it a PEER AT2 file?"
+                .to_string(),
         )
     };
     let npts: usize = npts.and_then(|s| s.parse().ok()).ok_or_else(bad)?;

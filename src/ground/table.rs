@@ -132,6 +132,23 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
     Ok(table)
 }
 
+/// "column K: `field` is not a number", quoting the field only once a row
+/// has parsed (the file identified as a table, issue 23).
+pub(crate) fn not_a_number(k: usize, field: &str, identified: bool, kind: &str) -> String {
+    if identified {
+        format!(
+            "column {}: `{}` is not a {kind}number",
+            k + 1,
+            crate::text_table::quoted(field)
+        )
+    } else {
+        format!(
+            "column {}: the first row is not a {kind}number (is it the right file?)",
+            k + 1
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -164,19 +181,3 @@ mod tests {
     }
 }
 
-/// "column K: `field` is not a number", quoting the field only once a row
-/// has parsed (the file identified as a table, issue 23).
-pub(crate) fn not_a_number(k: usize, field: &str, identified: bool, kind: &str) -> String {
-    if identified {
-        format!(
-            "column {}: `{}` is not a {kind}number",
-            k + 1,
-            crate::text_table::quoted(field)
-        )
-    } else {
-        format!(
-            "column {}: the first row is not a {kind}number (is it the right file?)",
-            k + 1
-        )
-    }
-}

@@ -421,7 +421,7 @@ structural = [
     ("german-band-empty", scene(extra="surface: {type: german, interference: high, shortest_wavelength: 50, longest_wavelength: @@5}\n"), "band is empty"),
     ("iso-class-unknown", scene(extra="surface: {type: iso8608, class: @@Z}\n"), "unknown variant"),
     ("measured-missing", scene(extra="surface: {type: measured, file: @@no-such-profile.csv}\n"), "cannot read"),
-    ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a file"),
+    ("measured-directory", scene(extra="surface: {type: measured, file: @@.}\n"), "is not a regular file"),
     ("dip-depth-zero", scene(extra="surface: {type: dip, start: 2, length: 1, depth: @@0}\n"), "must be positive"),
     ("piecewise-one-point", scene(extra="surface: {type: piecewise_linear, points: @@[[0, 0]]}\n"), "at least two"),
     # Issue 22: a run-in far longer than any approach (vehicles are placed before it).
