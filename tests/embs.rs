@@ -220,7 +220,7 @@ fn train_3d_secondary_coupling_and_ground_load_by_hand() {
     let vbi::scenario::resolved::Vehicle::Train3d(train) = &loaded.scenario.vehicles[0] else {
         panic!("a train_3d")
     };
-    let p = train.cars[0].parameters.clone();
+    let p = train.cars[0].parameters;
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone())
         .unwrap_or_else(|e| panic!("{e}"));
     let car = &model.vehicles[0];
