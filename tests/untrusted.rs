@@ -43,23 +43,37 @@ fn assert_refused_at(text: &str, at: &str, words: &[&str]) {
 /// allow it.
 #[test]
 fn limits_raised_inside_a_file_need_the_command_line() {
-    let text = scene(
-        "  - {type: oscillator, sprung_mass: 5750.0, stiffness: 1.595e6, speed: 27.7}\n\
-         limits: {modes: 1.0e15, eigen_work: 1.0e15}\n",
-    );
-    assert_refused_at(&text, "9:10", &["limits.modes", "--trust-limits"]);
+    // 600 axles: more than the default 500 wheels (line 8 is the vehicle).
+    let loads = vec!["1e4"; 600].join(", ");
+    let spacings = vec!["0.1"; 599].join(", ");
+    let text = |limits: &str| {
+        scene(&format!(
+            "  - {{type: moving_force, loads: [{loads}], axle_spacings: [{spacings}], speed: 20.0}}\n\
+             record: [{{name: midspan, quantity: bridge_displacement, x: 12.5}}]\n{limits}"
+        ))
+    };
+    let raised = text("limits: {wheels: 1000, modes: 1.0e15, eigen_work: 1.0e15}\n");
+    let untrusted = LoadOptions::default();
+    let all = refused(&raised, untrusted.clone());
+    assert!(all.starts_with("8:3:"), "{all}");
+    for words in ["limits.wheels", "raises the limit to 1000", "--trust-limits", "--allow-large"] {
+        assert!(all.contains(words), "`{words}` missing from:\n{all}");
+    }
     // Allowed on the command line, the file's limits apply.
     let trusted = LoadOptions {
         trust_limits: true,
         ..LoadOptions::default()
     };
-    load_str_with(&text, "t.yaml", trusted).unwrap_or_else(|e| panic!("{e}"));
-    // Lowering a limit in the file always works.
-    let lower = scene(
-        "  - {type: oscillator, sprung_mass: 5750.0, stiffness: 1.595e6, speed: 27.7}\n\
-         limits: {modes: 100, steps: 1.0e6}\n",
-    );
-    load_str(&lower, "t.yaml").unwrap_or_else(|e| panic!("{e}"));
+    load_str_with(&raised, "t.yaml", trusted).unwrap_or_else(|e| panic!("{e}"));
+    // The library's `load_str` is called by a program that chose the file.
+    load_str(&raised, "t.yaml").unwrap_or_else(|e| panic!("{e}"));
+    // Lowering a limit in the file always works, trusted or not.
+    let lowered = text("limits: {wheels: 100}\n");
+    let all = refused(&lowered, untrusted.clone());
+    assert!(all.starts_with("8:3:") && all.contains("limit of 100"), "{all}");
+    // Without a `limits` section the default refuses, and says how to raise it.
+    let all = refused(&text(""), untrusted);
+    assert!(all.contains("limit of 500") && all.contains("--trust-limits"), "{all}");
 }
 
 /// Moments of inertia had no range: 1e308 kg·m² passed.
@@ -76,4 +90,35 @@ fn inertias_of_1e308_are_refused() {
 fn a_tab_after_a_colon_is_accepted() {
     let text = scene("  - type: oscillator\n    sprung_mass:\t5750.0\n    stiffness: 1.595e6\n    speed:\t27.7\n");
     load_str(&text, "t.yaml").unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The YAML layer: a tab after a value's `:` is separation white space
+/// (YAML 1.2, production s-separate-in-line), parsed like a space; quoted
+/// tabs and every location are those of the text as written.
+#[test]
+fn yaml_tab_after_colon_separates_like_a_space() {
+    use vbi::scenario::yaml::{Location, parse};
+    let src = "a:\t25\nb:\t\t-1.5\nc: 'x:\ty'\nd:\tword # é\ne:\n  - f:\tg\n";
+    let node = parse(src).unwrap().unwrap();
+    assert_eq!(
+        node.to_json(),
+        serde_json::json!({"a": 25, "b": -1.5, "c": "x:\ty", "d": "word", "e": [{"f": "g"}]})
+    );
+    let at = |line, col| Location { line, col };
+    assert_eq!(node.get("a").unwrap().loc, at(1, 4));
+    assert_eq!(node.get("b").unwrap().loc, at(2, 5));
+    assert_eq!(node.get("d").unwrap().loc, at(4, 4));
+    // A tab in indentation is still refused, at the tab.
+    let e = parse("a:\t1\nb:\n\tc: 2\n").unwrap_err();
+    assert_eq!(e.loc, at(3, 1), "{}", e.message);
+    // A scenario-sized file written with tabs throughout (2,000 lines) is
+    // repaired quickly; a huge one stays bounded in time.
+    let src: String = (0..2_000).map(|i| format!("k{i}:\tv\n")).collect();
+    let start = std::time::Instant::now();
+    assert!(parse(&src).is_ok());
+    let src: String = (0..100_000).map(|i| format!("k{i}:\tv\n")).collect();
+    if let Err(e) = parse(&src) {
+        assert!(e.message.contains("tab"), "{}", e.message);
+    }
+    assert!(start.elapsed().as_secs_f64() < 10.0, "{:?}", start.elapsed());
 }

@@ -6,7 +6,8 @@
 
 use serde::Deserialize;
 
-use super::raw::BridgeRaw;
+use super::budget::{Budget, LoadOptions};
+use super::raw::{BridgeRaw, LimitsRaw};
 use super::resolve::Checker;
 use super::resolved::Scenario;
 use super::{LoadError, bridges, content, de, parse_raw};
@@ -29,17 +30,25 @@ pub struct ModesScene {
 struct BridgeSceneRaw {
     name: String,
     bridge: BridgeRaw,
+    #[serde(default)]
+    limits: Option<LimitsRaw>,
 }
 
 /// Loads `source` for `vbi modes`: the whole scene when it has `vehicles`,
 /// else its name and bridge.
-pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError> {
+/// `options` are the command line's, as for any command (`--allow-large`,
+/// `--trust-limits`).
+pub fn load_for_modes(
+    source: &str,
+    file: &str,
+    options: LoadOptions,
+) -> Result<ModesScene, LoadError> {
     let has_vehicles = super::yaml::parse(source)
         .ok()
         .flatten()
         .is_none_or(|node| node.get("vehicles").is_some());
     if has_vehicles {
-        return super::load_str(source, file).map(|loaded| ModesScene {
+        return super::load_str_with(source, file, options).map(|loaded| ModesScene {
             name: loaded.scenario.name.clone(),
             bridge: loaded.bridge,
             scenario: Some(loaded.scenario),
@@ -68,11 +77,9 @@ pub fn load_for_modes(source: &str, file: &str) -> Result<ModesScene, LoadError>
         )])
     })?;
     let mut ck = Checker::new(file, source, &node);
-    let Some(mut bridge) = bridges::resolve_bridge(
-        &raw.bridge,
-        &super::budget::Budget::new(super::resolved::Limits::default(), &Default::default()),
-        &mut ck,
-    ) else {
+    let limits = super::resolved::Limits::resolve(raw.limits.as_ref(), &mut ck);
+    let budget = Budget::new(limits, &options);
+    let Some(mut bridge) = bridges::resolve_bridge(&raw.bridge, &budget, &mut ck) else {
         return Err(LoadError::Invalid(ck.diagnostics));
     };
     if !ck.diagnostics.is_empty() {

@@ -516,6 +516,77 @@ impl Builder<'_> {
 
 /// Parse one YAML document. `Ok(None)` for an empty/whitespace/comment-only document.
 pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
+    // saphyr refuses a tab between a value's `:` and a value that starts
+    // with a letter, digit or `-` (`speed:\t25`), which YAML 1.2 allows (a
+    // tab is separation white space there, production s-separate-in-line).
+    // The scanner names the exact place, so each such tab is replaced by a
+    // space (one byte for one, so every location stays where it was) and the
+    // text parsed again; the characters scanned over all passes are bounded
+    // so that a file of thousands of them stays fast.
+    const SCAN_BUDGET: usize = 64 << 20;
+    let mut patched: Option<String> = None;
+    let mut scanned = 0;
+    loop {
+        let text = patched.as_deref().unwrap_or(source);
+        match parse_once(text) {
+            Err(Failure::TabAfterColon(at)) if scanned + at <= SCAN_BUDGET => {
+                scanned += at.max(1);
+                let owned = patched.get_or_insert_with(|| source.to_owned());
+                if !untab_after_colon(owned, at) {
+                    return Err(err(
+                        byte_location(source, at),
+                        "YAML syntax error: ':' must be followed by a space",
+                    ));
+                }
+            }
+            Err(Failure::TabAfterColon(at)) => {
+                return Err(err(
+                    byte_location(source, at),
+                    "YAML syntax error: too many tabs after `:` to repair; use spaces",
+                ));
+            }
+            Err(Failure::Syntax(e)) => return Err(e),
+            Ok(tree) => return Ok(tree),
+        }
+    }
+}
+
+/// Why one parse stopped.
+enum Failure {
+    /// A tab after a value's `:`, the scanner stopped at byte `.0` (after it).
+    TabAfterColon(usize),
+    Syntax(SyntaxError),
+}
+
+/// Replaces by spaces the tabs between the `:` and byte `at` of `text`, where
+/// saphyr stopped after them. `false` if there are none (nothing to repair).
+fn untab_after_colon(text: &mut String, at: usize) -> bool {
+    let Some(head) = text.get(..at) else {
+        return false;
+    };
+    let run = head.len() - head.trim_end_matches([' ', '\t']).len();
+    let start = at - run;
+    if run == 0 || !text[..start].ends_with(':') || !text[start..at].contains('\t') {
+        return false;
+    }
+    let spaces = " ".repeat(run);
+    text.replace_range(start..at, &spaces);
+    true
+}
+
+/// The line and column of byte `at` of `text` (lines broken like the scanner).
+fn byte_location(text: &str, at: usize) -> Location {
+    let before = text.get(..at).unwrap_or(text);
+    let line = 1 + before.matches('\n').count() + before.matches('\r').count()
+        - before.matches("\r\n").count();
+    let start = before.rfind(['\n', '\r']).map_or(0, |i| i + 1);
+    Location {
+        line,
+        col: before[start..].chars().count() + 1,
+    }
+}
+
+fn parse_once(source: &str) -> Result<Option<Node>, Failure> {
     let mut parser = Parser::new_from_str(source);
     let mut builder = Builder {
         source,
@@ -527,17 +598,26 @@ pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
     };
     while let Some(next) = parser.next_event() {
         match next {
-            Ok((ev, span)) => builder.event(ev, &span)?,
+            Ok((ev, span)) => builder.event(ev, &span).map_err(Failure::Syntax)?,
+            Err(e) if e.info() == "':' must be followed by a valid YAML whitespace" => {
+                return Err(Failure::TabAfterColon(char_to_byte(source, e.marker().index())));
+            }
             Err(e) => {
                 let loc = Location::from_marker(e.marker());
                 let (loc, hint) = relocate(source, loc, e.info());
                 let mut message = builder.scan_error_message(e.info());
                 message.push_str(hint);
-                return Err(err(loc, message));
+                return Err(Failure::Syntax(err(loc, message)));
             }
         }
     }
     Ok(builder.root.map(|b| b.node))
+}
+
+/// The byte offset of the `chars`-th character of `text` (saphyr's marker
+/// index counts characters).
+fn char_to_byte(text: &str, chars: usize) -> usize {
+    text.char_indices().nth(chars).map_or(text.len(), |(i, _)| i)
 }
 
 mod relocate;

@@ -116,6 +116,9 @@ pub struct Part {
     pub scenario_source: String,
     /// Whether the run lifted the resource limits (`--allow-large`).
     pub allow_large: bool,
+    /// Whether the run let the file raise its own limits (`--trust-limits`).
+    #[serde(default)]
+    pub trust_limits: bool,
     /// Study type.
     pub study: String,
     /// Runs in the whole study.
@@ -265,6 +268,7 @@ pub fn run_shard(
         scenario_file: file.to_string(),
         scenario_source: source.to_string(),
         allow_large: options.allow_large,
+        trust_limits: options.trust_limits,
         study: name.into(),
         size,
         shard: shard.index,
@@ -400,6 +404,7 @@ pub fn merge(paths: &[PathBuf]) -> Result<Merged, ShardError> {
     }
     let options = LoadOptions {
         allow_large: any.allow_large,
+        trust_limits: any.trust_limits,
         modes_cache: None,
     };
     let loaded = scenario::load_str_with(&any.scenario_source, &any.scenario_file, options)?;
