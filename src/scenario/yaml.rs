@@ -516,39 +516,87 @@ impl Builder<'_> {
 
 /// Parse one YAML document. `Ok(None)` for an empty/whitespace/comment-only document.
 pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
-    // saphyr refuses a tab between a value's `:` and a value that starts
-    // with a letter, digit or `-` (`speed:\t25`), which YAML 1.2 allows (a
-    // tab is separation white space there, production s-separate-in-line).
-    // The scanner names the exact place, so each such tab is replaced by a
-    // space (one byte for one, so every location stays where it was) and the
-    // text parsed again; the characters scanned over all passes are bounded
-    // so that a file of thousands of them stays fast.
-    const SCAN_BUDGET: usize = 64 << 20;
-    let mut patched: Option<String> = None;
+    match parse_once(source, None) {
+        Err(Failure::TabAfterColon(_)) => parse_untabbed(source),
+        Err(Failure::Syntax(e)) => Err(e),
+        Ok(tree) => Ok(tree),
+    }
+}
+
+/// saphyr refuses a tab between a value's `:` and a value that starts with
+/// a letter, digit or `-` (`speed:\t25`), which YAML 1.2 allows (a tab is
+/// separation white space there, production s-separate-in-line). Every tab
+/// in the white space after a `:` that content follows is replaced by a
+/// space (one byte for one, so every location stays where it was) and the
+/// text parsed again. A `:` inside a quoted or block scalar is content, not
+/// an indicator: if a replaced tab falls inside one, the text is instead
+/// repaired one scanner error at a time, each reparse bounded.
+fn parse_untabbed(source: &str) -> Result<Option<Node>, SyntaxError> {
+    let (patched, replaced) = untab_all(source);
+    let mut quoted = Vec::new();
+    match parse_once(&patched, Some(&mut quoted)) {
+        Ok(tree) => {
+            let inside = |&i: &usize| quoted.iter().any(|&(a, b)| a <= i && i < b);
+            if !replaced.iter().any(inside) {
+                return Ok(tree);
+            }
+        }
+        Err(Failure::Syntax(e)) => return Err(e),
+        Err(Failure::TabAfterColon(_)) => {}
+    }
+    // One repair per scanner error; the characters scanned over all passes
+    // are bounded so that a hostile file stays fast.
+    const SCAN_BUDGET: usize = 4 << 20;
+    let mut text = source.to_owned();
     let mut scanned = 0;
     loop {
-        let text = patched.as_deref().unwrap_or(source);
-        match parse_once(text) {
-            Err(Failure::TabAfterColon(at)) if scanned + at <= SCAN_BUDGET => {
+        match parse_once(&text, None) {
+            Err(Failure::TabAfterColon(at)) => {
                 scanned += at.max(1);
-                let owned = patched.get_or_insert_with(|| source.to_owned());
-                if !untab_after_colon(owned, at) {
+                if scanned > SCAN_BUDGET || !untab_after_colon(&mut text, at) {
                     return Err(err(
                         byte_location(source, at),
-                        "YAML syntax error: ':' must be followed by a space",
+                        "YAML syntax error: ':' must be followed by a space here (too many tabs \
+                         after `:` to repair)",
                     ));
                 }
-            }
-            Err(Failure::TabAfterColon(at)) => {
-                return Err(err(
-                    byte_location(source, at),
-                    "YAML syntax error: too many tabs after `:` to repair; use spaces",
-                ));
             }
             Err(Failure::Syntax(e)) => return Err(e),
             Ok(tree) => return Ok(tree),
         }
     }
+}
+
+/// `text` with every tab replaced by a space in the white space that
+/// follows a `:` and precedes content on the same line; and the character
+/// indices replaced.
+fn untab_all(text: &str) -> (String, Vec<usize>) {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut replaced = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        out.push(chars[i]);
+        if chars[i] == ':' {
+            let run = chars[i + 1..]
+                .iter()
+                .take_while(|&&c| c == ' ' || c == '\t')
+                .count();
+            let next = chars.get(i + 1 + run).copied();
+            let content = next.is_some_and(|c| !matches!(c, '\n' | '\r' | '#'));
+            for k in i + 1..i + 1 + run {
+                if content && chars[k] == '\t' {
+                    out.push(' ');
+                    replaced.push(k);
+                } else {
+                    out.push(chars[k]);
+                }
+            }
+            i += run;
+        }
+        i += 1;
+    }
+    (out, replaced)
 }
 
 /// Why one parse stopped.
@@ -586,7 +634,12 @@ fn byte_location(text: &str, at: usize) -> Location {
     }
 }
 
-fn parse_once(source: &str) -> Result<Option<Node>, Failure> {
+/// One parse of `source`; `quoted` collects the character spans of its
+/// quoted and block scalars.
+fn parse_once(
+    source: &str,
+    mut quoted: Option<&mut Vec<(usize, usize)>>,
+) -> Result<Option<Node>, Failure> {
     let mut parser = Parser::new_from_str(source);
     let mut builder = Builder {
         source,
@@ -598,9 +651,19 @@ fn parse_once(source: &str) -> Result<Option<Node>, Failure> {
     };
     while let Some(next) = parser.next_event() {
         match next {
-            Ok((ev, span)) => builder.event(ev, &span).map_err(Failure::Syntax)?,
+            Ok((ev, span)) => {
+                if let (Some(q), Event::Scalar(_, style, _, _)) = (quoted.as_deref_mut(), &ev)
+                    && *style != ScalarStyle::Plain
+                {
+                    q.push((span.start.index(), span.end.index().max(span.start.index() + 1)));
+                }
+                builder.event(ev, &span).map_err(Failure::Syntax)?
+            }
             Err(e) if e.info() == "':' must be followed by a valid YAML whitespace" => {
-                return Err(Failure::TabAfterColon(char_to_byte(source, e.marker().index())));
+                return Err(Failure::TabAfterColon(char_to_byte(
+                    source,
+                    e.marker().index(),
+                )));
             }
             Err(e) => {
                 let loc = Location::from_marker(e.marker());
