@@ -15,7 +15,7 @@ use serde::Serialize;
 
 use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
-use super::resolved::{Bridge, Surface, Vehicle};
+use super::resolved::{Bridge, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where
 /// solved modes are cached.
@@ -183,10 +183,28 @@ impl Budget {
         what: &str,
         asked: f64,
     ) -> bool {
+        self.check_because(ck, path, key, what, asked, "")
+    }
+
+    /// [`Budget::check`] with `because` (why the input at `path` asks for
+    /// so much, and what would fit) added to a refusal.
+    pub(super) fn check_because(
+        &self,
+        ck: &mut Checker<'_>,
+        path: &str,
+        key: &str,
+        what: &str,
+        asked: f64,
+        because: &str,
+    ) -> bool {
         match self.refusal(key, what, asked) {
             None => true,
-            Some(message) => {
+            Some(message) if because.is_empty() => {
                 ck.error(path, message);
+                false
+            }
+            Some(message) => {
+                ck.error(path, format!("{message}; {because}"));
                 false
             }
         }
@@ -208,6 +226,13 @@ impl Budget {
         }
         if fits(limit) {
             return None;
+        }
+        if !asked.is_finite() {
+            return Some(format!(
+                "{what}: {} is more than any limit (`limits.{key}`) allows, even \
+                 `--allow-large`",
+                count(asked)
+            ));
         }
         let raised = self.asked.get(key);
         if raised > limit && fits(raised) {
@@ -451,51 +476,6 @@ pub fn bridge_dofs(bridge: &Bridge) -> f64 {
                 .max(beam(p.spans.len(), p.elements_per_span))
         }
     }
-}
-
-/// Where to blame a run with too many steps: the entry time (or start
-/// position) of a vehicle that waits most of the run, a free vibration that
-/// is most of it, else the time step if the file gives one, else the
-/// vehicle whose crossing is longest (its slow speed makes the run long).
-pub(super) fn steps_cause(
-    raw: &raw::ScenarioRaw,
-    slow: &[Vehicle],
-    solver: &raw::SolverRaw,
-    duration: f64,
-    free_vibration: f64,
-) -> String {
-    let latest = slow
-        .iter()
-        .enumerate()
-        .map(|(i, v)| (i, v.entry_time()))
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    if latest.1 > 0.5 * duration {
-        let i = latest.0;
-        let field = match raw.vehicles.get(i) {
-            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::RailCar(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Train(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Train3d(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Hslm(v)) if v.start_position.is_some() => "start_position",
-            _ => "entry_time",
-        };
-        return format!("vehicles[{i}].{field}");
-    }
-    if free_vibration > 0.5 * duration {
-        return "solver.free_vibration".into();
-    }
-    if solver.time_step.is_some() {
-        return "solver.time_step".into();
-    }
-    let slowest = slow
-        .iter()
-        .enumerate()
-        .fold((0, f64::INFINITY), |a, (i, v)| {
-            if v.speed() < a.1 { (i, v.speed()) } else { a }
-        });
-    format!("vehicles[{}].speed", slowest.0)
 }
 
 /// Bytes of the history files for `rows` written rows: a time column and

@@ -17,6 +17,7 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod envelopes;
+mod long_run;
 mod fe_import;
 mod ground;
 pub mod names;
