@@ -56,7 +56,12 @@ fn limits_raised_inside_a_file_need_the_command_line() {
     let untrusted = LoadOptions::default();
     let all = refused(&raised, untrusted.clone());
     assert!(all.starts_with("8:3:"), "{all}");
-    for words in ["limits.wheels", "raises the limit to 1000", "--trust-limits", "--allow-large"] {
+    for words in [
+        "limits.wheels",
+        "raises the limit to 1000",
+        "--trust-limits",
+        "--allow-large",
+    ] {
         assert!(all.contains(words), "`{words}` missing from:\n{all}");
     }
     // Allowed on the command line, the file's limits apply.
@@ -70,10 +75,16 @@ fn limits_raised_inside_a_file_need_the_command_line() {
     // Lowering a limit in the file always works, trusted or not.
     let lowered = text("limits: {wheels: 100}\n");
     let all = refused(&lowered, untrusted.clone());
-    assert!(all.starts_with("8:3:") && all.contains("limit of 100"), "{all}");
+    assert!(
+        all.starts_with("8:3:") && all.contains("limit of 100"),
+        "{all}"
+    );
     // Without a `limits` section the default refuses, and says how to raise it.
     let all = refused(&text(""), untrusted);
-    assert!(all.contains("limit of 500") && all.contains("--trust-limits"), "{all}");
+    assert!(
+        all.contains("limit of 500") && all.contains("--trust-limits"),
+        "{all}"
+    );
 }
 
 /// Moments of inertia had no range: 1e308 kg·m² passed.
@@ -88,7 +99,9 @@ fn inertias_of_1e308_are_refused() {
 /// A tab after `:` is valid YAML (a separator, not indentation).
 #[test]
 fn a_tab_after_a_colon_is_accepted() {
-    let text = scene("  - type: oscillator\n    sprung_mass:\t5750.0\n    stiffness: 1.595e6\n    speed:\t27.7\n");
+    let text = scene(
+        "  - type: oscillator\n    sprung_mass:\t5750.0\n    stiffness: 1.595e6\n    speed:\t27.7\n",
+    );
     load_str(&text, "t.yaml").unwrap_or_else(|e| panic!("{e}"));
 }
 
@@ -113,7 +126,8 @@ fn yaml_tab_after_colon_separates_like_a_space() {
     assert_eq!(e.loc, at(3, 1), "{}", e.message);
     // A scenario-sized file written with tabs throughout (2,000 lines) is
     // repaired quickly; a huge one stays bounded in time.
-    let lines = |n: usize, sep: &str| -> String { (0..n).map(|i| format!("k{i}:{sep}v\n")).collect() };
+    let lines =
+        |n: usize, sep: &str| -> String { (0..n).map(|i| format!("k{i}:{sep}v\n")).collect() };
     let start = std::time::Instant::now();
     assert!(parse(&lines(2_000, " ")).is_ok());
     eprintln!("2,000 lines with spaces: {:?}", start.elapsed());
@@ -125,5 +139,9 @@ fn yaml_tab_after_colon_separates_like_a_space() {
         assert!(e.message.contains("tab"), "{}", e.message);
     }
     eprintln!("100,000 lines with tabs: {:?}", start.elapsed());
-    assert!(start.elapsed().as_secs_f64() < 10.0, "{:?}", start.elapsed());
+    assert!(
+        start.elapsed().as_secs_f64() < 10.0,
+        "{:?}",
+        start.elapsed()
+    );
 }

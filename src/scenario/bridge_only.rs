@@ -86,8 +86,25 @@ pub fn load_for_modes(
         return Err(LoadError::Invalid(ck.diagnostics));
     }
     // No vehicle excites anything: the automatic choice is its minimum for
-    // the quasi-static deflection shape.
+    // the quasi-static deflection shape. The eigenproblem and the modes
+    // asked are budgeted before the solve, as for a whole scene.
     let minimum = content::minimum_modes(&bridge);
+    let (asked, asked_path) = match bridge.modes().count {
+        Some(count) => (count, "bridge.modes.count"),
+        None => (minimum, "bridge.spans"),
+    };
+    let fits = budget.model(&bridge, &super::resolved::Surface::Smooth, &mut ck)
+        && budget.check(
+            &mut ck,
+            asked_path,
+            "modes",
+            "bridge modes kept",
+            asked as f64,
+        )
+        && budget.eigen(&mut ck, asked_path, &bridge, asked);
+    if !fits {
+        return Err(LoadError::Invalid(ck.diagnostics));
+    }
     let request = ModeRequest::of(bridge.modes(), ModeRequest::Lowest(minimum));
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let mut modal = ModalBridge::build_with(&bridge, request).map_err(|e| {

@@ -69,7 +69,7 @@ impl LongRun<'_> {
                     i + 1,
                     short(latest.1),
                     short(duration),
-                    short((latest.1 - excess).max(0.0))
+                    down((latest.1 - excess).max(0.0))
                 )
             } else {
                 format!(
@@ -77,7 +77,7 @@ impl LongRun<'_> {
                     i + 1,
                     short(latest.1),
                     short(duration),
-                    short((latest.1 - excess).max(0.0))
+                    down((latest.1 - excess).max(0.0))
                 )
             };
             return Cause {
@@ -92,7 +92,7 @@ impl LongRun<'_> {
                     "a free vibration of {} s is most of the {} s run; up to {} s fits",
                     short(self.free_vibration),
                     short(duration),
-                    short((self.free_vibration - excess).max(0.0))
+                    down((self.free_vibration - excess).max(0.0))
                 ),
             };
         }
@@ -121,7 +121,7 @@ impl LongRun<'_> {
                     short(time),
                     short(duration),
                     short(vehicle.speed()),
-                    short((length - excess * vehicle.speed()).max(0.0))
+                    down((length - excess * vehicle.speed()).max(0.0))
                 ),
             };
         }
@@ -129,9 +129,9 @@ impl LongRun<'_> {
             return Cause {
                 path: "solver.time_step".into(),
                 hint: format!(
-                    "a time step of {dt:e} s over the {} s run; a step of at least {:e} s fits",
+                    "a time step of {dt:.3e} s over the {} s run; a step of at least {} s fits",
                     short(duration),
-                    duration / limit
+                    up(duration / limit)
                 ),
             };
         }
@@ -152,7 +152,7 @@ impl LongRun<'_> {
                 i + 1,
                 short(travel),
                 short(travel / speed),
-                short(travel / room)
+                up(travel / room)
             )
         } else {
             format!(
@@ -194,7 +194,7 @@ impl LongRun<'_> {
             return Some(Cause {
                 path: format!("ground_motion[{i}].start_time"),
                 hint: format!(
-                    "a start time of {:e} s leaves the record's samples only {interval:e} s apart \
+                    "a start time of {:e} s leaves the record's samples only {interval:.3e} s apart \
                      in floating point, which sets the automatic time step; start the record \
                      within the run (0 to {} s)",
                     g.start_time,
@@ -205,9 +205,10 @@ impl LongRun<'_> {
         Some(Cause {
             path: format!("ground_motion[{i}].file"),
             hint: format!(
-                "the record's shortest interval between two samples, {interval:e} s, sets the \
+                "the record's shortest interval between two samples, {interval:.3e} s, sets the \
                  automatic time step (a step no longer than it sees every peak); resample the \
-                 record to intervals of at least {needed:e} s, or give `solver.time_step`"
+                 record to intervals of at least {} s, or give `solver.time_step`",
+                up(needed)
             ),
         })
     }
@@ -274,5 +275,28 @@ fn short(x: f64) -> String {
         let s = format!("{x:.4}");
         let s = s.trim_end_matches('0').trim_end_matches('.');
         s.to_owned()
+    }
+}
+
+/// `x` rounded up to three significant digits (a value that fits).
+fn up(x: f64) -> String {
+    round(x, f64::ceil)
+}
+
+/// `x` rounded down to three significant digits (a value that fits).
+fn down(x: f64) -> String {
+    round(x, f64::floor)
+}
+
+fn round(x: f64, to: fn(f64) -> f64) -> String {
+    if !x.is_finite() || x <= 0.0 {
+        return short(x.max(0.0));
+    }
+    let exponent = x.log10().floor() as i32 - 2;
+    let rounded = to(x / 10f64.powi(exponent)) * 10f64.powi(exponent);
+    if !(-3..6).contains(&(exponent + 2)) {
+        format!("{rounded:.2e}")
+    } else {
+        format!("{rounded:.*}", (-exponent).max(0) as usize)
     }
 }

@@ -17,9 +17,9 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod envelopes;
-mod long_run;
 mod fe_import;
 mod ground;
+mod long_run;
 pub mod names;
 mod output;
 mod plausible;

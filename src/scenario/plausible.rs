@@ -177,6 +177,8 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
         }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
+            // Blamed at the override when the file gives one.
+            let p = |field: &str| format!("{at}.parameters.{field}");
             for (field, value) in [
                 ("body_mass", q.body_mass),
                 ("front_axle_mass", q.front_axle_mass),
@@ -327,14 +329,7 @@ pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
 /// Each span within [`SPAN`] (zero and negative ones are the sign checks').
 fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
     for (k, &span) in spans.iter().enumerate() {
-        within(
-            ck,
-            &format!("bridge.spans[{k}]"),
-            "a span",
-            span,
-            SPAN,
-            "m",
-        );
+        within(ck, &format!("bridge.spans[{k}]"), "a span", span, SPAN, "m");
     }
 }
 

@@ -286,7 +286,11 @@ pub(super) fn check_plausible(
 pub(super) fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &RailCarParameters) {
     let at = |field: &str| {
         let given = format!("{path}.{field}");
-        if ck.has(&given) { given } else { path.to_owned() }
+        if ck.has(&given) {
+            given
+        } else {
+            path.to_owned()
+        }
     };
     if p.half_wheelbase <= 0.0 {
         let at = at("half_wheelbase");

@@ -655,7 +655,10 @@ fn parse_once(
                 if let (Some(q), Event::Scalar(_, style, _, _)) = (quoted.as_deref_mut(), &ev)
                     && *style != ScalarStyle::Plain
                 {
-                    q.push((span.start.index(), span.end.index().max(span.start.index() + 1)));
+                    q.push((
+                        span.start.index(),
+                        span.end.index().max(span.start.index() + 1),
+                    ));
                 }
                 builder.event(ev, &span).map_err(Failure::Syntax)?
             }
@@ -680,7 +683,9 @@ fn parse_once(
 /// The byte offset of the `chars`-th character of `text` (saphyr's marker
 /// index counts characters).
 fn char_to_byte(text: &str, chars: usize) -> usize {
-    text.char_indices().nth(chars).map_or(text.len(), |(i, _)| i)
+    text.char_indices()
+        .nth(chars)
+        .map_or(text.len(), |(i, _)| i)
 }
 
 mod relocate;
