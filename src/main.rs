@@ -30,6 +30,11 @@ struct Cli {
     /// output size) for a scene that really needs more; see `limits` in the format.
     #[arg(long, global = true)]
     allow_large: bool,
+    /// Let the file's own `limits` section raise limits above the defaults
+    /// (without it a file can only lower them, so a stranger's file cannot
+    /// lift them for you).
+    #[arg(long, global = true)]
+    trust_limits: bool,
     /// Folder of the modes cache: an imported model's modes are read from it
     /// when a valid file holds them and written to it when solved. Default
     /// for `run`: `.vbi-cache` inside the output folder; other commands use a
@@ -260,6 +265,7 @@ fn main() -> ExitCode {
     };
     let options = scenario::LoadOptions {
         allow_large: cli.allow_large,
+        trust_limits: cli.trust_limits,
         modes_cache: cache_in(None),
         data: data.clone(),
     };
@@ -314,7 +320,7 @@ fn main() -> ExitCode {
             },
             Err(e) => load_error(&e),
         },
-        Command::Modes { file, shapes, json } => modes(&file, &data, shapes.as_deref(), json),
+        Command::Modes { file, shapes, json } => modes(&file, options, shapes.as_deref(), json),
         Command::Generate { what } => generate(what),
         Command::Converge {
             file,
@@ -509,12 +515,17 @@ fn check(
     }
 }
 
-fn modes(file: &Path, data: &scenario::DataAccess, shapes: Option<&Path>, json: bool) -> ExitCode {
+fn modes(
+    file: &Path,
+    options: scenario::LoadOptions,
+    shapes: Option<&Path>,
+    json: bool,
+) -> ExitCode {
     let vbi::scenario::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
-    } = match scenario::load_file_for_modes(file, data) {
+    } = match scenario::load_file_for_modes(file, options) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };

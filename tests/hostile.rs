@@ -427,7 +427,7 @@ fn many_errors_are_fast_capped_and_counted() {
     let scratch = Scratch::new("hostile", "many-errors");
     let path = corpus().join("cases/many-errors-20000.yaml");
     let run = capped(
-        &["check", path.to_str().unwrap()],
+        &["check", "--trust-limits", path.to_str().unwrap()],
         scratch.dir(),
         &scratch,
         "many",
@@ -479,18 +479,35 @@ fn an_endless_input_is_refused() {
     assert!(run.stderr.contains("/dev/zero:1:1:"), "{}", run.stderr);
 }
 
-/// A scene that raised its limits writes them into `resolved.yaml`, which
-/// then passes the same budgets (it "runs as is").
+/// Issue 23: a file's own raised limits apply only when the command line
+/// allows it; then the scene writes them into `resolved.yaml`, which passes
+/// the same budgets with the same flag (it "runs as is").
 #[test]
-fn raised_limits_survive_in_the_resolved_scene() {
+fn raised_limits_need_trust_and_survive_in_the_resolved_scene() {
     let scratch = Scratch::new("hostile", "resolved-limits");
-    let path = corpus().join("cases/ok-limits-raised.yaml");
+    let path = corpus().join("cases/size-limits-self-raised.yaml");
+    let path = path.to_str().unwrap();
+    let refused = capped(&["check", path], scratch.dir(), &scratch, "refused");
+    assert_eq!(refused.code, Some(2), "{}", refused.stderr);
+    assert!(
+        refused.stderr.contains("the file raises the limit to 1000"),
+        "{}",
+        refused.stderr
+    );
+    let trusted = capped(
+        &["check", "--trust-limits", path],
+        scratch.dir(),
+        &scratch,
+        "trusted",
+    );
+    assert_eq!(trusted.code, Some(0), "{}", trusted.stderr);
     let out = scratch.path("out");
     let run = capped(
         &[
             "run",
             "--quiet",
-            path.to_str().unwrap(),
+            "--trust-limits",
+            path,
             "--out",
             out.to_str().unwrap(),
         ],
@@ -503,10 +520,36 @@ fn raised_limits_survive_in_the_resolved_scene() {
     let text = fs::read_to_string(&resolved).unwrap();
     assert!(text.contains("wheels: 1000"), "{text}");
     let again = capped(
-        &["check", resolved.to_str().unwrap()],
+        &["check", "--trust-limits", resolved.to_str().unwrap()],
         scratch.dir(),
         &scratch,
         "again",
     );
     assert_eq!(again.code, Some(0), "{}", again.stderr);
+}
+
+/// Issue 23: `vbi modes` on a file with only a bridge honours the file's
+/// limits (lowered here, so the default-sized beam is refused) and
+/// `--allow-large` like every other command.
+#[test]
+fn modes_on_a_bridge_only_file_honours_limits_and_allow_large() {
+    let scratch = Scratch::new("hostile", "modes-limits");
+    let path = scratch.path("bridge.yaml");
+    fs::write(
+        &path,
+        "name: b\nbridge: {type: beam, spans: [25.0], bending_stiffness: 8.3e9, \
+         mass_per_length: 2303.0, elements_per_span: 200}\nlimits: {dofs: 2}\n",
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let refused = capped(&["modes", path], scratch.dir(), &scratch, "refused");
+    assert_eq!(refused.code, Some(2), "{}", refused.stderr);
+    assert!(refused.stderr.contains("limits.dofs"), "{}", refused.stderr);
+    let allowed = capped(
+        &["modes", "--allow-large", path],
+        scratch.dir(),
+        &scratch,
+        "allowed",
+    );
+    assert_eq!(allowed.code, Some(0), "{}", allowed.stderr);
 }

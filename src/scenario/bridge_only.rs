@@ -6,7 +6,8 @@
 
 use serde::Deserialize;
 
-use super::raw::BridgeRaw;
+use super::budget::{Budget, LoadOptions};
+use super::raw::{BridgeRaw, LimitsRaw};
 use super::resolve::Checker;
 use super::resolved::Scenario;
 use super::{LoadError, bridges, content, de, parse_raw};
@@ -29,24 +30,25 @@ pub struct ModesScene {
 struct BridgeSceneRaw {
     name: String,
     bridge: BridgeRaw,
+    #[serde(default)]
+    limits: Option<LimitsRaw>,
 }
 
 /// Loads `source` for `vbi modes`: the whole scene when it has `vehicles`,
-/// else its name and bridge; the files it names are read as `data` allows.
+/// else its name and bridge; the files it names are read as
+/// `options.data` allows.
+/// `options` are the command line's, as for any command (`--allow-large`,
+/// `--trust-limits`).
 pub fn load_for_modes(
     source: &str,
     file: &str,
-    data: &super::DataAccess,
+    options: LoadOptions,
 ) -> Result<ModesScene, LoadError> {
     let has_vehicles = super::yaml::parse(source)
         .ok()
         .flatten()
         .is_none_or(|node| node.get("vehicles").is_some());
     if has_vehicles {
-        let options = super::LoadOptions {
-            data: data.clone(),
-            ..Default::default()
-        };
         return super::load_str_with(source, file, options).map(|loaded| ModesScene {
             name: loaded.scenario.name.clone(),
             bridge: loaded.bridge,
@@ -76,20 +78,35 @@ pub fn load_for_modes(
         )])
     })?;
     let mut ck = Checker::new(file, source, &node);
-    ck.set_data_access(data.clone());
-    let Some(mut bridge) = bridges::resolve_bridge(
-        &raw.bridge,
-        &super::budget::Budget::new(super::resolved::Limits::default(), &Default::default()),
-        &mut ck,
-    ) else {
+    ck.set_data_access(options.data.clone());
+    let limits = super::resolved::Limits::resolve(raw.limits.as_ref(), &mut ck);
+    let budget = Budget::new(limits, &options);
+    let Some(mut bridge) = bridges::resolve_bridge(&raw.bridge, &budget, &mut ck) else {
         return Err(LoadError::Invalid(ck.diagnostics));
     };
     if !ck.diagnostics.is_empty() {
         return Err(LoadError::Invalid(ck.diagnostics));
     }
     // No vehicle excites anything: the automatic choice is its minimum for
-    // the quasi-static deflection shape.
+    // the quasi-static deflection shape. The eigenproblem and the modes
+    // asked are budgeted before the solve, as for a whole scene.
     let minimum = content::minimum_modes(&bridge);
+    let (asked, asked_path) = match bridge.modes().count {
+        Some(count) => (count, "bridge.modes.count"),
+        None => (minimum, "bridge.spans"),
+    };
+    let fits = budget.model(&bridge, &super::resolved::Surface::Smooth, &mut ck)
+        && budget.check(
+            &mut ck,
+            asked_path,
+            "modes",
+            "bridge modes kept",
+            asked as f64,
+        )
+        && budget.eigen(&mut ck, asked_path, &bridge, asked);
+    if !fits {
+        return Err(LoadError::Invalid(ck.diagnostics));
+    }
     let request = ModeRequest::of(bridge.modes(), ModeRequest::Lowest(minimum));
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let mut modal = ModalBridge::build_with(&bridge, request).map_err(|e| {

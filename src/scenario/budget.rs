@@ -3,8 +3,11 @@
 //! starts, so that a hostile or mistyped file is refused in milliseconds
 //! instead of exhausting the machine.
 //!
-//! The limits default to what a workstation does in minutes; a scene raises
-//! one in its `limits` section, and `--allow-large` lifts them all. Every
+//! The limits default to what a workstation does in minutes. A scene may
+//! lower one in its `limits` section; it may raise one only for a user who
+//! allows it on the command line (`--trust-limits`), so that a stranger's
+//! file cannot lift the limits for whoever checks it. `--allow-large` lifts
+//! them all. Every
 //! estimate is computed in `f64` or with checked integer arithmetic, so no
 //! user-given size can wrap around.
 
@@ -12,7 +15,7 @@ use serde::Serialize;
 
 use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
-use super::resolved::{Bridge, Surface, Vehicle};
+use super::resolved::{Bridge, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where
 /// solved modes are cached.
@@ -21,6 +24,12 @@ pub struct LoadOptions {
     /// Lift every resource limit (`--allow-large`); sizes are still checked
     /// for overflow.
     pub allow_large: bool,
+    /// Let the file's own `limits` section raise limits above the defaults
+    /// (`--trust-limits`). Without it a raised limit stays at its default
+    /// (a lowered one always applies), and a refusal says the file asks for
+    /// more. [`super::load_file`] and [`super::load_str`] trust the file: a
+    /// program that loads a file chose it.
+    pub trust_limits: bool,
     /// The folder of the modes cache ([`crate::bridge::eigen::cache`]):
     /// an imported model's modes are read from it when a valid file holds
     /// them, and written to it when solved. `None`: no cache (the library
@@ -142,14 +151,26 @@ impl Limits {
 /// Compares estimates with the limits and reports at the input that drives
 /// each one.
 pub(super) struct Budget {
+    /// The limits that apply: the file's where it lowers them (or where the
+    /// command line trusts it), else the defaults.
     limits: Limits,
+    /// The file's own limits, defaults filled in.
+    asked: Limits,
     allow_large: bool,
 }
 
 impl Budget {
-    pub(super) fn new(limits: Limits, options: &LoadOptions) -> Self {
+    pub(super) fn new(asked: Limits, options: &LoadOptions) -> Self {
+        let mut limits = asked;
+        if !options.trust_limits {
+            let d = Limits::default();
+            for key in Limits::KEYS {
+                limits.set(key, asked.get(key).min(d.get(key)));
+            }
+        }
         Budget {
             limits,
+            asked,
             allow_large: options.allow_large,
         }
     }
@@ -165,35 +186,75 @@ impl Budget {
         what: &str,
         asked: f64,
     ) -> bool {
+        self.check_because(ck, path, key, what, asked, "")
+    }
+
+    /// [`Budget::check`] with `because` (why the input at `path` asks for
+    /// so much, and what would fit) added to a refusal.
+    pub(super) fn check_because(
+        &self,
+        ck: &mut Checker<'_>,
+        path: &str,
+        key: &str,
+        what: &str,
+        asked: f64,
+        because: &str,
+    ) -> bool {
+        match self.refusal(key, what, asked) {
+            None => true,
+            Some(message) if because.is_empty() => {
+                ck.error(path, message);
+                false
+            }
+            Some(message) => {
+                ck.error(path, format!("{message}; {because}"));
+                false
+            }
+        }
+    }
+
+    /// Why `asked` of the quantity `what` does not fit the limit `key`, or
+    /// `None` if it does.
+    pub(super) fn refusal(&self, key: &str, what: &str, asked: f64) -> Option<String> {
         let limit = self.limit(key);
         let fits = |bound: f64| asked.is_finite() && asked <= bound;
         if self.allow_large {
             if fits(ABSOLUTE) {
-                return true;
+                return None;
             }
-            ck.error(
-                path,
-                format!(
-                    "{what}: {} is more than any machine can hold ({ABSOLUTE:e}), even with `--allow-large`",
-                    count(asked)
-                ),
-            );
-            return false;
+            return Some(format!(
+                "{what}: {} is more than any machine can hold ({ABSOLUTE:e}), even with `--allow-large`",
+                count(asked)
+            ));
         }
         if fits(limit) {
-            return true;
+            return None;
         }
-        ck.error(
-            path,
-            format!(
-                "{what}: {} is more than the limit of {} (`limits.{key}`); raise it in the file \
-                 (`limits: {{{key}: {}}}`) or run with `--allow-large`",
+        if !asked.is_finite() {
+            return Some(format!(
+                "{what}: {} is more than any limit (`limits.{key}`) allows, even \
+                 `--allow-large`",
+                count(asked)
+            ));
+        }
+        let raised = self.asked.get(key);
+        if raised > limit && fits(raised) {
+            return Some(format!(
+                "{what}: {} is more than the limit of {} (`limits.{key}`); the file raises the \
+                 limit to {}, which applies only if you allow it: run with `--trust-limits` (the \
+                 file's own limits) or `--allow-large` (no limits)",
                 count(asked),
                 count(limit),
-                count(suggest(asked))
-            ),
-        );
-        false
+                count(raised)
+            ));
+        }
+        Some(format!(
+            "{what}: {} is more than the limit of {} (`limits.{key}`); raise it in the file \
+             (`limits: {{{key}: {}}}`, applied with `--trust-limits`) or run with `--allow-large`",
+            count(asked),
+            count(limit),
+            count(suggest(asked))
+        ))
     }
 
     /// The counts read straight from the file: wheels and records. Returns
@@ -293,22 +354,55 @@ impl Budget {
     }
 
     fn limit(&self, key: &str) -> f64 {
-        let l = &self.limits;
+        self.limits.get(key)
+    }
+}
+
+impl Limits {
+    /// Every key of the `limits` section.
+    const KEYS: [&'static str; 14] = [
+        "dofs",
+        "modes",
+        "eigen_work",
+        "steps",
+        "study_steps",
+        "wheels",
+        "records",
+        "study_points",
+        "road_terms",
+        "profile_points",
+        "profile_work",
+        "ground_points",
+        "output_bytes",
+        "import_entries",
+    ];
+
+    /// The bound of `key` (one of [`Limits::KEYS`]).
+    fn get(&self, key: &str) -> f64 {
+        let mut copy = *self;
+        *copy.field_mut(key)
+    }
+
+    fn set(&mut self, key: &str, value: f64) {
+        *self.field_mut(key) = value;
+    }
+
+    fn field_mut(&mut self, key: &str) -> &mut f64 {
         match key {
-            "dofs" => l.dofs,
-            "modes" => l.modes,
-            "eigen_work" => l.eigen_work,
-            "steps" => l.steps,
-            "study_steps" => l.study_steps,
-            "wheels" => l.wheels,
-            "records" => l.records,
-            "study_points" => l.study_points,
-            "road_terms" => l.road_terms,
-            "profile_points" => l.profile_points,
-            "profile_work" => l.profile_work,
-            "ground_points" => l.ground_points,
-            "import_entries" => l.import_entries,
-            _ => l.output_bytes,
+            "dofs" => &mut self.dofs,
+            "modes" => &mut self.modes,
+            "eigen_work" => &mut self.eigen_work,
+            "steps" => &mut self.steps,
+            "study_steps" => &mut self.study_steps,
+            "wheels" => &mut self.wheels,
+            "records" => &mut self.records,
+            "study_points" => &mut self.study_points,
+            "road_terms" => &mut self.road_terms,
+            "profile_points" => &mut self.profile_points,
+            "profile_work" => &mut self.profile_work,
+            "ground_points" => &mut self.ground_points,
+            "import_entries" => &mut self.import_entries,
+            _ => &mut self.output_bytes,
         }
     }
 }
@@ -385,66 +479,6 @@ pub fn bridge_dofs(bridge: &Bridge) -> f64 {
                 .max(beam(p.spans.len(), p.elements_per_span))
         }
     }
-}
-
-/// Where to blame a run with too many steps: the entry time (or start
-/// position) of a vehicle that waits most of the run, a free vibration that
-/// is most of it, else the time step if the file gives one, else the
-/// vehicle whose crossing is longest (its slow speed makes the run long).
-pub(super) fn steps_cause(
-    raw: &raw::ScenarioRaw,
-    slow: &[Vehicle],
-    solver: &raw::SolverRaw,
-    duration: f64,
-    free_vibration: f64,
-) -> String {
-    let latest = slow
-        .iter()
-        .enumerate()
-        .map(|(i, v)| (i, v.entry_time()))
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    if latest.1 > 0.5 * duration {
-        let i = latest.0;
-        // A vehicle the file does not place starts behind the surface's
-        // run-in (placed there while resolving): that is the cause.
-        let placed = match raw.vehicles.get(i) {
-            Some(raw::VehicleRaw::MovingForce(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::Oscillator(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::H20Truck(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::RailCar(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::Train(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::Train3d(v)) => v.entry_time.or(v.start_position).is_some(),
-            Some(raw::VehicleRaw::Hslm(v)) => v.entry_time.or(v.start_position).is_some(),
-            None => true,
-        };
-        if !placed && raw.surface.is_some() {
-            return "surface".into();
-        }
-        let field = match raw.vehicles.get(i) {
-            Some(raw::VehicleRaw::MovingForce(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Oscillator(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::H20Truck(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::RailCar(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Train(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Train3d(v)) if v.start_position.is_some() => "start_position",
-            Some(raw::VehicleRaw::Hslm(v)) if v.start_position.is_some() => "start_position",
-            _ => "entry_time",
-        };
-        return format!("vehicles[{i}].{field}");
-    }
-    if free_vibration > 0.5 * duration {
-        return "solver.free_vibration".into();
-    }
-    if solver.time_step.is_some() {
-        return "solver.time_step".into();
-    }
-    let slowest = slow
-        .iter()
-        .enumerate()
-        .fold((0, f64::INFINITY), |a, (i, v)| {
-            if v.speed() < a.1 { (i, v.speed()) } else { a }
-        });
-    format!("vehicles[{}].speed", slowest.0)
 }
 
 /// Bytes of the history files for `rows` written rows: a time column and

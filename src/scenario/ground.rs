@@ -4,6 +4,7 @@
 //! the message); the file's size and its declared sample count are budgeted
 //! (`limits.ground_points`) before anything is allocated per sample.
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::budget::Budget;
@@ -12,6 +13,10 @@ use super::raw::GroundMotionRaw;
 use super::resolve::Checker;
 use super::resolved::{Bridge, GroundMotion};
 use crate::ground::{AccelerationUnit, Direction, GroundRecord, at2, table};
+
+/// A record's samples as read: times (s), accelerations (in the units),
+/// the units.
+type Samples = Arc<(Vec<f64>, Vec<f64>, AccelerationUnit)>;
 
 /// Fewest bytes a sample takes in a file (`0 ` or `0,0` and a break).
 const MIN_SAMPLE_BYTES: f64 = 2.0;
@@ -25,6 +30,12 @@ pub(super) fn resolve(
     ck: &mut Checker<'_>,
 ) -> Vec<GroundMotion> {
     let mut out = Vec::new();
+    // Each distinct file is read once; every component counts its samples
+    // against `limits.ground_points`, a repeated record as often as it is
+    // listed (each gets its own integrated copy).
+    let mut read_once: HashMap<(std::path::PathBuf, Option<&'static str>), Samples> =
+        HashMap::new();
+    let mut total = 0.0;
     for (i, component) in raw.unwrap_or_default().iter().enumerate() {
         let at = format!("ground_motion[{i}]");
         let direction = component.direction.unwrap_or(Direction::Vertical);
@@ -82,10 +93,34 @@ pub(super) fn resolve(
                 continue;
             }
         };
-        let Some((time, acceleration, units)) = read(&data, component.units, &at, budget, ck)
-        else {
-            continue;
+        // A file listed twice is read once (its samples still count twice
+        // in the budget below).
+        let key = (data.real.clone(), component.units.map(AccelerationUnit::name));
+        let samples = match read_once.get(&key) {
+            Some(samples) => samples.clone(),
+            None => {
+                let Some(samples) = read(&data, component.units, &at, budget, ck) else {
+                    continue;
+                };
+                let samples = Arc::new(samples);
+                read_once.insert(key, samples.clone());
+                samples
+            }
         };
+        total += samples.0.len() as f64;
+        if !budget.check(
+            ck,
+            &format!("{at}.file"),
+            "ground_points",
+            &format!(
+                "samples over the ground-motion records up to ground_motion[{i}] (a record \
+                 listed twice counts twice)"
+            ),
+            total,
+        ) {
+            break;
+        }
+        let (time, acceleration, units) = (&samples.0, &samples.1, samples.2);
         let si: Vec<f64> = acceleration.iter().map(|a| a * units.in_si()).collect();
         out.push(GroundMotion {
             file: data.shown,
@@ -93,7 +128,7 @@ pub(super) fn resolve(
             scale,
             start_time,
             units,
-            record: Arc::new(GroundRecord::new(&time, &si, scale, start_time)),
+            record: Arc::new(GroundRecord::new(time, &si, scale, start_time)),
         });
     }
     out

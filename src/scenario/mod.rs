@@ -20,6 +20,7 @@ pub mod diagnostic;
 pub mod envelopes;
 mod fe_import;
 mod ground;
+mod long_run;
 pub mod names;
 mod output;
 mod plausible;
@@ -114,9 +115,18 @@ impl fmt::Display for Diagnostics<'_> {
     }
 }
 
-/// Reads and resolves a scenario file with the default budgets.
+/// Reads and resolves a scenario file with the default budgets, as raised
+/// or lowered by the file's own `limits` (the caller chose the file).
 pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
-    load_file_with(path, LoadOptions::default())
+    load_file_with(path, trusted())
+}
+
+/// The options of [`load_file`] and [`load_str`]: the file's `limits` apply.
+fn trusted() -> LoadOptions {
+    LoadOptions {
+        trust_limits: true,
+        ..LoadOptions::default()
+    }
 }
 
 /// Reads and resolves a scenario file.
@@ -129,10 +139,10 @@ pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadE
 /// ([`bridge_only::load_for_modes`]).
 pub fn load_file_for_modes(
     path: &Path,
-    data: &DataAccess,
+    options: LoadOptions,
 ) -> Result<bridge_only::ModesScene, LoadError> {
     let (source, file) = read_source(path)?;
-    bridge_only::load_for_modes(&source, &file, data)
+    bridge_only::load_for_modes(&source, &file, options)
 }
 
 /// The text of a scenario file and its name for diagnostics; the size is
@@ -368,10 +378,10 @@ fn plain_words(message: &str) -> String {
     out
 }
 
-/// Parses and resolves a scenario from text with the default budgets;
-/// `file` labels diagnostics.
+/// Parses and resolves a scenario from text with the default budgets, as
+/// raised or lowered by its own `limits`; `file` labels diagnostics.
 pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
-    load_str_with(source, file, LoadOptions::default())
+    load_str_with(source, file, trusted())
 }
 
 /// Parses and resolves a scenario from text; `file` labels diagnostics.

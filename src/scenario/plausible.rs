@@ -10,6 +10,28 @@
 //! inputs are caught. They apply to every derived value as well: oscillators
 //! given by dimensionless groups, stiffnesses given as ratios, and every
 //! point of a study.
+//!
+//! The table of ranges (the constants below; SI units):
+//!
+//! | quantity | range | unit |
+//! |---|---|---|
+//! | mass | 1e-3 to 1e10 | kg |
+//! | moment of inertia (pitch, roll, yaw) | 1e-6 to 1e13 | kg·m² |
+//! | suspension, tyre or contact spring | 1e-3 to 1e13 | N/m |
+//! | suspension or tyre damper | 0 to 1e12 | N·s/m |
+//! | axle load | 1e-3 to 1e9 | N |
+//! | Hertz coefficient | 1e-3 to 1e15 | N/m^1.5 |
+//! | bending stiffness EI (vertical, lateral) | 1e-3 to 1e16 | N·m² |
+//! | torsional stiffness GJ | 1e-3 to 1e16 | N·m²/rad |
+//! | mass per length | 1e-3 to 1e7 | kg/m |
+//! | polar mass per length | 1e-6 to 1e10 | kg·m²/m |
+//! | plate rigidity | 1e-3 to 1e15 | N·m |
+//! | mass per area | 1e-3 to 1e6 | kg/m² |
+//! | span | 1e-2 to 1e4 | m |
+//! | rail height above the shear centre | −100 to 100 | m |
+//! | a length within a vehicle (spacing, height, track, radius) | 1e-3 to 1e3 | m |
+//! | gravity | 1e-3 to 300 | m/s² |
+//! | time before a vehicle reaches the bridge | 0 to 86 400 | s |
 
 use super::resolve::Checker;
 use super::resolved::{Bridge, Contact, Rigidity, Study, Vehicle};
@@ -33,6 +55,22 @@ pub const MASS_PER_LENGTH: (f64, f64) = (1e-3, 1e7);
 pub const PLATE_RIGIDITY: (f64, f64) = (1e-3, 1e15);
 /// A plate's mass per area, kg/m².
 pub const MASS_PER_AREA: (f64, f64) = (1e-3, 1e6);
+/// A moment of inertia of a body, bogie, axle or wheelset, kg·m²: a gram
+/// at 3 cm is 1e-6; a hundred heavy trains' mass at 30 m, 1e13.
+pub const MOMENT_OF_INERTIA: (f64, f64) = (1e-6, 1e13);
+/// A beam's torsional stiffness GJ, N·m²/rad (as EI).
+pub const TORSIONAL_STIFFNESS: (f64, f64) = (1e-3, 1e16);
+/// A beam's polar mass moment of inertia per length, kg·m²/m (the largest
+/// mass per length at a 30 m radius of gyration is ~1e10).
+pub const POLAR_MASS_PER_LENGTH: (f64, f64) = (1e-6, 1e10);
+/// A span, m (the longest built is about 2 km).
+pub const SPAN: (f64, f64) = (1e-2, 1e4);
+/// The height of the rail heads above a 3D beam's shear centre, m (either
+/// sign).
+pub const RAIL_HEIGHT: (f64, f64) = (-100.0, 100.0);
+/// A length within a vehicle: spacings of axles, bogies, springs and
+/// cars, heights, tracks, a wheel's radius, m.
+pub const VEHICLE_LENGTH: (f64, f64) = (1e-3, 1e3);
 /// Gravitational acceleration, m/s² (the Sun's surface is 274).
 pub const GRAVITY: (f64, f64) = (1e-3, 300.0);
 /// Time before a vehicle reaches the bridge, s (one day).
@@ -139,6 +177,8 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
         }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
+            // Blamed at the override when the file gives one.
+            let p = |field: &str| format!("{at}.parameters.{field}");
             for (field, value) in [
                 ("body_mass", q.body_mass),
                 ("front_axle_mass", q.front_axle_mass),
@@ -153,6 +193,39 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
                 ("rear_tyre_stiffness", q.rear_tyre_stiffness),
             ] {
                 within(ck, &p(field), "a spring stiffness", value, STIFFNESS, "N/m");
+            }
+            for (field, value) in [
+                ("body_pitch_inertia", q.body_pitch_inertia),
+                ("body_roll_inertia", q.body_roll_inertia),
+                ("front_axle_roll_inertia", q.front_axle_roll_inertia),
+                ("rear_axle_roll_inertia", q.rear_axle_roll_inertia),
+            ] {
+                within(
+                    ck,
+                    &p(field),
+                    "a moment of inertia",
+                    value,
+                    MOMENT_OF_INERTIA,
+                    "kg·m²",
+                );
+            }
+            for (field, value) in [
+                ("front_suspension_damping", q.front_suspension_damping),
+                ("rear_suspension_damping", q.rear_suspension_damping),
+                ("front_tyre_damping", q.front_tyre_damping),
+                ("rear_tyre_damping", q.rear_tyre_damping),
+            ] {
+                within(ck, &p(field), "a damping", value, DAMPING, "N·s/m");
+            }
+            for (field, value) in [
+                ("front_axle_to_centre", q.front_axle_to_centre),
+                ("centre_to_rear_axle", q.centre_to_rear_axle),
+                ("front_track", q.front_track),
+                ("rear_track", q.rear_track),
+                ("front_suspension_spacing", q.front_suspension_spacing),
+                ("rear_suspension_spacing", q.rear_suspension_spacing),
+            ] {
+                within(ck, &p(field), "a length", value, VEHICLE_LENGTH, "m");
             }
         }
     }
@@ -173,6 +246,45 @@ pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
         // checks (symmetry, masses, stiffness) are made on import.
         Bridge::FeImport(_) => {}
         Bridge::Beam(b) => {
+            check_spans(ck, &b.spans);
+            if let Some(sway) = &b.sway {
+                within(
+                    ck,
+                    "bridge.lateral_bending_stiffness",
+                    "a lateral bending stiffness",
+                    sway.lateral_bending_stiffness,
+                    BENDING_STIFFNESS,
+                    "N·m²",
+                );
+                within(
+                    ck,
+                    "bridge.torsional_stiffness",
+                    "a torsional stiffness",
+                    sway.torsional_stiffness,
+                    TORSIONAL_STIFFNESS,
+                    "N·m²/rad",
+                );
+                within(
+                    ck,
+                    "bridge.polar_mass",
+                    "a polar mass moment of inertia per length",
+                    sway.polar_mass,
+                    POLAR_MASS_PER_LENGTH,
+                    "kg·m²/m",
+                );
+                let h = sway.rail_height;
+                if !(RAIL_HEIGHT.0..=RAIL_HEIGHT.1).contains(&h) {
+                    ck.error(
+                        "bridge.rail_height",
+                        format!(
+                            "a rail height of {} m is outside the physically plausible range {} to {} m",
+                            number(h),
+                            RAIL_HEIGHT.0,
+                            RAIL_HEIGHT.1
+                        ),
+                    );
+                }
+            }
             within(
                 ck,
                 "bridge.bending_stiffness",
@@ -191,6 +303,7 @@ pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
             );
         }
         Bridge::Plate(p) => {
+            check_spans(ck, &p.spans);
             within(
                 ck,
                 "bridge.mass_per_area",
@@ -210,6 +323,13 @@ pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
                 }
             }
         }
+    }
+}
+
+/// Each span within [`SPAN`] (zero and negative ones are the sign checks').
+fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
+    for (k, &span) in spans.iter().enumerate() {
+        within(ck, &format!("bridge.spans[{k}]"), "a span", span, SPAN, "m");
     }
 }
 

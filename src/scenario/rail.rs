@@ -2,7 +2,7 @@
 //! train's expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
-use super::plausible::{DAMPING, MASS, STIFFNESS, within};
+use super::plausible::{DAMPING, MASS, MOMENT_OF_INERTIA, STIFFNESS, VEHICLE_LENGTH, within};
 use super::raw;
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
 use super::resolved::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
@@ -119,12 +119,9 @@ pub(super) fn resolve_rail_car(
 ) -> Vehicle {
     check_speed(ck, at, v.speed.0);
     let mut p = LCP_RAIL_CAR_PRESET;
-    apply(
-        &mut p,
-        v.parameters.as_ref(),
-        &format!("{at}.parameters"),
-        ck,
-    );
+    let parameters_at = format!("{at}.parameters");
+    apply(&mut p, v.parameters.as_ref(), &parameters_at, ck);
+    check_geometry(ck, &parameters_at, &p);
     Vehicle::RailCar(RailCar {
         speed: v.speed.0,
         acceleration: check_acceleration(ck, at, v.acceleration),
@@ -161,7 +158,7 @@ pub(super) fn resolve_train(
     );
     let rules = CarRules {
         apply,
-        check: |_, _, _| {},
+        check: check_geometry,
         span: wheelset_span,
     };
     let list = v.cars.as_ref().map(|list| {
@@ -250,6 +247,70 @@ pub(super) fn check_plausible(
             value,
             DAMPING,
             "N·s/m",
+        );
+    }
+    for (field, value) in [
+        ("body_pitch_inertia", p.body_pitch_inertia),
+        ("bogie_pitch_inertia", p.bogie_pitch_inertia),
+    ] {
+        within(
+            ck,
+            &path(field),
+            &what(field, "a moment of inertia"),
+            value,
+            MOMENT_OF_INERTIA,
+            "kg·m²",
+        );
+    }
+    for (field, value) in [
+        ("half_bogie_spacing", p.half_bogie_spacing),
+        ("half_wheelbase", p.half_wheelbase),
+    ] {
+        within(
+            ck,
+            &path(field),
+            &what(field, "a length"),
+            value,
+            VEHICLE_LENGTH,
+            "m",
+        );
+    }
+}
+
+/// Geometry a rail car needs to stand: each bogie on two wheelsets apart
+/// (a zero wheelbase leaves the bogie's pitch without a spring: no static
+/// equilibrium), and the two bogies apart and not overlapping (the rear
+/// wheelset of the front bogie ahead of the front wheelset of the rear
+/// one: a > b). Blamed at the field the file gives, else at the car's
+/// parameters.
+pub(super) fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &RailCarParameters) {
+    let at = |field: &str| {
+        let given = format!("{path}.{field}");
+        if ck.has(&given) {
+            given
+        } else {
+            path.to_owned()
+        }
+    };
+    if p.half_wheelbase <= 0.0 {
+        let at = at("half_wheelbase");
+        ck.error(
+            &at,
+            format!(
+                "half_wheelbase must be positive, got {} m: a bogie needs its two wheelsets \
+                 apart to stand (with 0 its pitch has no support)",
+                p.half_wheelbase
+            ),
+        );
+    } else if p.half_bogie_spacing <= p.half_wheelbase {
+        let at = at("half_bogie_spacing");
+        ck.error(
+            &at,
+            format!(
+                "half_bogie_spacing ({} m) must be more than half_wheelbase ({} m): the two \
+                 bogies' wheelsets would overlap",
+                p.half_bogie_spacing, p.half_wheelbase
+            ),
         );
     }
 }

@@ -247,7 +247,16 @@ fn apply(
 
 /// Geometry a car needs: its wheelsets in order along the track.
 fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &Train3dParameters) {
-    if p.half_wheelbase >= p.half_bogie_spacing {
+    if p.half_wheelbase <= 0.0 {
+        ck.error(
+            path,
+            format!(
+                "half_wheelbase must be positive, got {} m: a bogie needs its two wheelsets \
+                 apart to stand (with 0 its pitch has no support)",
+                p.half_wheelbase
+            ),
+        );
+    } else if p.half_wheelbase >= p.half_bogie_spacing {
         ck.error(
             path,
             format!(

@@ -591,17 +591,19 @@ pub(super) fn resolve(
             longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
         }
     }
+    // Deck accelerations: their highest mode keeps its phase over the run.
+    let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
+    let step_without_ground = solver_raw.time_step.is_none().then(|| {
+        content::time_step(highest, &excitations, shortest_crossing)
+            .min(content::phase_time_step(acceleration_top, longest_run))
+    });
+    // A ground-motion record is linear between its samples: a step no
+    // longer than its shortest interval sees every peak.
     let time_step = solver_raw.time_step.unwrap_or_else(|| {
-        let step = content::time_step(highest, &excitations, shortest_crossing);
-        // A ground-motion record is linear between its samples: a step no
-        // longer than its shortest interval sees every peak.
-        let step = ground_motion
+        ground_motion
             .iter()
             .map(|g| g.record.shortest_interval())
-            .fold(step, f64::min);
-        // Deck accelerations: their highest mode keeps its phase over the run.
-        let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
-        step.min(content::phase_time_step(acceleration_top, longest_run))
+            .fold(step_without_ground.unwrap_or(f64::INFINITY), f64::min)
     });
     let time_step_selection = if solver_raw.time_step.is_some() {
         "set in the file".to_owned()
@@ -633,11 +635,22 @@ pub(super) fn resolve(
         .fold(0.0, f64::max);
     super::surfaces::check_features(&surface, top_speed, time_step, ck);
     let steps = longest_run / time_step;
-    let steps_path = budget::steps_cause(raw, &slow, &solver_raw, longest_run, free_vibration);
+    let cause = super::long_run::LongRun {
+        raw,
+        slow: &slow,
+        ground_motion: &ground_motion,
+        time_step,
+        step_without_ground,
+        duration: longest_run,
+        free_vibration,
+        bridge_length: length,
+    }
+    .cause(budget.limit_of("steps"));
+    let steps_path = cause.path;
     let what = format!(
         "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
     );
-    if budget.check(ck, &steps_path, "steps", &what, steps) && points > 1.0 {
+    if budget.check_because(ck, &steps_path, "steps", &what, steps, &cause.hint) && points > 1.0 {
         budget.check(
             ck,
             "study",

@@ -516,6 +516,130 @@ impl Builder<'_> {
 
 /// Parse one YAML document. `Ok(None)` for an empty/whitespace/comment-only document.
 pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
+    match parse_once(source, None) {
+        Err(Failure::TabAfterColon(_)) => parse_untabbed(source),
+        Err(Failure::Syntax(e)) => Err(e),
+        Ok(tree) => Ok(tree),
+    }
+}
+
+/// saphyr refuses a tab between a value's `:` and a value that starts with
+/// a letter, digit or `-` (`speed:\t25`), which YAML 1.2 allows (a tab is
+/// separation white space there, production s-separate-in-line). Every tab
+/// in the white space after a `:` that content follows is replaced by a
+/// space (one byte for one, so every location stays where it was) and the
+/// text parsed again. A `:` inside a quoted or block scalar is content, not
+/// an indicator: if a replaced tab falls inside one, the text is instead
+/// repaired one scanner error at a time, each reparse bounded.
+fn parse_untabbed(source: &str) -> Result<Option<Node>, SyntaxError> {
+    let (patched, replaced) = untab_all(source);
+    let mut quoted = Vec::new();
+    match parse_once(&patched, Some(&mut quoted)) {
+        Ok(tree) => {
+            let inside = |&i: &usize| quoted.iter().any(|&(a, b)| a <= i && i < b);
+            if !replaced.iter().any(inside) {
+                return Ok(tree);
+            }
+        }
+        Err(Failure::Syntax(e)) => return Err(e),
+        Err(Failure::TabAfterColon(_)) => {}
+    }
+    // One repair per scanner error; the characters scanned over all passes
+    // are bounded so that a hostile file stays fast.
+    const SCAN_BUDGET: usize = 4 << 20;
+    let mut text = source.to_owned();
+    let mut scanned = 0;
+    loop {
+        match parse_once(&text, None) {
+            Err(Failure::TabAfterColon(at)) => {
+                scanned += at.max(1);
+                if scanned > SCAN_BUDGET || !untab_after_colon(&mut text, at) {
+                    return Err(err(
+                        byte_location(source, at),
+                        "YAML syntax error: ':' must be followed by a space here (too many tabs \
+                         after `:` to repair)",
+                    ));
+                }
+            }
+            Err(Failure::Syntax(e)) => return Err(e),
+            Ok(tree) => return Ok(tree),
+        }
+    }
+}
+
+/// `text` with every tab replaced by a space in the white space that
+/// follows a `:` and precedes content on the same line; and the character
+/// indices replaced.
+fn untab_all(text: &str) -> (String, Vec<usize>) {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut replaced = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        out.push(chars[i]);
+        if chars[i] == ':' {
+            let run = chars[i + 1..]
+                .iter()
+                .take_while(|&&c| c == ' ' || c == '\t')
+                .count();
+            let next = chars.get(i + 1 + run).copied();
+            let content = next.is_some_and(|c| !matches!(c, '\n' | '\r' | '#'));
+            for k in i + 1..i + 1 + run {
+                if content && chars[k] == '\t' {
+                    out.push(' ');
+                    replaced.push(k);
+                } else {
+                    out.push(chars[k]);
+                }
+            }
+            i += run;
+        }
+        i += 1;
+    }
+    (out, replaced)
+}
+
+/// Why one parse stopped.
+enum Failure {
+    /// A tab after a value's `:`, the scanner stopped at byte `.0` (after it).
+    TabAfterColon(usize),
+    Syntax(SyntaxError),
+}
+
+/// Replaces by spaces the tabs between the `:` and byte `at` of `text`, where
+/// saphyr stopped after them. `false` if there are none (nothing to repair).
+fn untab_after_colon(text: &mut String, at: usize) -> bool {
+    let Some(head) = text.get(..at) else {
+        return false;
+    };
+    let run = head.len() - head.trim_end_matches([' ', '\t']).len();
+    let start = at - run;
+    if run == 0 || !text[..start].ends_with(':') || !text[start..at].contains('\t') {
+        return false;
+    }
+    let spaces = " ".repeat(run);
+    text.replace_range(start..at, &spaces);
+    true
+}
+
+/// The line and column of byte `at` of `text` (lines broken like the scanner).
+fn byte_location(text: &str, at: usize) -> Location {
+    let before = text.get(..at).unwrap_or(text);
+    let line = 1 + before.matches('\n').count() + before.matches('\r').count()
+        - before.matches("\r\n").count();
+    let start = before.rfind(['\n', '\r']).map_or(0, |i| i + 1);
+    Location {
+        line,
+        col: before[start..].chars().count() + 1,
+    }
+}
+
+/// One parse of `source`; `quoted` collects the character spans of its
+/// quoted and block scalars.
+fn parse_once(
+    source: &str,
+    mut quoted: Option<&mut Vec<(usize, usize)>>,
+) -> Result<Option<Node>, Failure> {
     let mut parser = Parser::new_from_str(source);
     let mut builder = Builder {
         source,
@@ -527,17 +651,41 @@ pub fn parse(source: &str) -> Result<Option<Node>, SyntaxError> {
     };
     while let Some(next) = parser.next_event() {
         match next {
-            Ok((ev, span)) => builder.event(ev, &span)?,
+            Ok((ev, span)) => {
+                if let (Some(q), Event::Scalar(_, style, _, _)) = (quoted.as_deref_mut(), &ev)
+                    && *style != ScalarStyle::Plain
+                {
+                    q.push((
+                        span.start.index(),
+                        span.end.index().max(span.start.index() + 1),
+                    ));
+                }
+                builder.event(ev, &span).map_err(Failure::Syntax)?
+            }
+            Err(e) if e.info() == "':' must be followed by a valid YAML whitespace" => {
+                return Err(Failure::TabAfterColon(char_to_byte(
+                    source,
+                    e.marker().index(),
+                )));
+            }
             Err(e) => {
                 let loc = Location::from_marker(e.marker());
                 let (loc, hint) = relocate(source, loc, e.info());
                 let mut message = builder.scan_error_message(e.info());
                 message.push_str(hint);
-                return Err(err(loc, message));
+                return Err(Failure::Syntax(err(loc, message)));
             }
         }
     }
     Ok(builder.root.map(|b| b.node))
+}
+
+/// The byte offset of the `chars`-th character of `text` (saphyr's marker
+/// index counts characters).
+fn char_to_byte(text: &str, chars: usize) -> usize {
+    text.char_indices()
+        .nth(chars)
+        .map_or(text.len(), |(i, _)| i)
 }
 
 mod relocate;

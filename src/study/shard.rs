@@ -116,6 +116,9 @@ pub struct Part {
     pub scenario_source: String,
     /// Whether the run lifted the resource limits (`--allow-large`).
     pub allow_large: bool,
+    /// Whether the run let the file raise its own limits (`--trust-limits`).
+    #[serde(default)]
+    pub trust_limits: bool,
     /// Study type.
     pub study: String,
     /// Runs in the whole study.
@@ -279,6 +282,7 @@ pub fn run_shard(
         scenario_file: file.to_string(),
         scenario_source: source.to_string(),
         allow_large: options.allow_large,
+        trust_limits: options.trust_limits,
         study: name.into(),
         size,
         shard: shard.index,
@@ -346,6 +350,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
             || part.size != first.size
             || part.study != first.study
             || part.allow_large != first.allow_large
+            || part.trust_limits != first.trust_limits
         {
             return Err(ShardError::Mismatch(format!(
                 "{} and {} are parts of different splits of the study (shard counts, run counts, \
@@ -360,6 +365,14 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
     if first.allow_large && !options.allow_large {
         return Err(ShardError::Mismatch(format!(
             "{} was run with `--allow-large`; merge with `--allow-large` too",
+            shown(first_path)
+        )));
+    }
+    // Likewise a part run with `--trust-limits`: the file's own raised
+    // limits apply only where the merging user allows them too.
+    if first.trust_limits && !options.trust_limits {
+        return Err(ShardError::Mismatch(format!(
+            "{} was run with `--trust-limits`; merge with `--trust-limits` too",
             shown(first_path)
         )));
     }
