@@ -88,7 +88,10 @@ fn checked(elements: usize, count: usize, tolerance: f64) -> (Vec<f64>, f64) {
     assert_eq!(modal.mode_count(), count);
     let check = modal.check;
     assert!(check.largest_residual <= RESIDUAL_BOUND, "{check:?}");
-    assert!(check.orthonormality_error <= ORTHONORMALITY_BOUND, "{check:?}");
+    assert!(
+        check.orthonormality_error <= ORTHONORMALITY_BOUND,
+        "{check:?}"
+    );
     let order = 2 * elements;
     match check.inertia {
         Some((_, below)) => assert_eq!(below, count, "{elements} elements, {count} modes"),
@@ -129,7 +132,12 @@ fn the_counts_that_failed_pass_and_agree() {
         let (few, _) = checked(elements, 66, 1e-9);
         let (more, _) = checked(elements, 80, 1e-9);
         let (most, _) = checked(elements, 120, 1e-9);
-        for (j, (&a, &b)) in few.iter().zip(&more).chain(more.iter().zip(&most)).enumerate() {
+        for (j, (&a, &b)) in few
+            .iter()
+            .zip(&more)
+            .chain(more.iter().zip(&most))
+            .enumerate()
+        {
             assert!(
                 (a - b).abs() <= 1e-10 * b,
                 "{elements} elements: mode {} moved from {a} to {b} with the count",
