@@ -279,7 +279,11 @@ impl Pencil {
         let pairs = self.lowest(count)?;
         // A cut that needed more modes than the file holds (a cluster
         // straddling the request) could not be re-counted: not written.
-        if pairs.check.inertia.is_none_or(|(_, counted)| counted == count) {
+        if pairs
+            .check
+            .inertia
+            .is_none_or(|(_, counted)| counted == count)
+        {
             let _ = cache.write(key, &pairs);
         }
         let outcome = match rejected {

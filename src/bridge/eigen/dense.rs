@@ -77,6 +77,52 @@ pub fn lowest_inverted(
     Ok((eigenvalues, sorted))
 }
 
+/// Every eigenpair of K c = λ M c by the forward reduction: M = L Lᵀ,
+/// A = L⁻¹ K L⁻ᵀ, c = L⁻ᵀ y (so cᵀMc = 1), λ ascending, signs as in
+/// [`lowest_inverted`]. The dense solver finds each λ to about ε‖A‖ = ε·λₙ
+/// absolutely: accurate at the top of the spectrum, where the inverted
+/// reduction is not ([`super::Pencil`]'s dense path takes each mode from
+/// the better one). Cost O(n³) time, O(n²) memory.
+pub fn every_forward(
+    stiffness: &Mat<f64>,
+    mass: &Mat<f64>,
+) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+    faer::set_global_parallelism(Par::Seq);
+    let n = stiffness.nrows();
+    ensure_memory(n, n, 8)?;
+    let llt = mass
+        .llt(Side::Lower)
+        .map_err(|_| BridgeError::MassNotPositive)?;
+    let lower = llt.L();
+    let mut x = stiffness.clone();
+    lower.solve_lower_triangular_in_place(x.as_mut());
+    let mut a = x.transpose().to_owned();
+    lower.solve_lower_triangular_in_place(a.as_mut());
+    let a = Mat::from_fn(n, n, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
+    let eig = a
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    let values: Vec<f64> = eig.S().column_vector().iter().copied().collect();
+    let mut vectors = eig.U().to_owned();
+    lower
+        .transpose()
+        .solve_upper_triangular_in_place(vectors.as_mut());
+    for mode in 0..n {
+        let mut largest = 0.0f64;
+        for r in 0..n {
+            if vectors[(r, mode)].abs() > largest.abs() {
+                largest = vectors[(r, mode)];
+            }
+        }
+        if largest < 0.0 {
+            for r in 0..n {
+                vectors[(r, mode)] = -vectors[(r, mode)];
+            }
+        }
+    }
+    Ok((values, vectors))
+}
+
 /// Every eigenpair of a small projected pencil A y = λ B y (B positive
 /// definite, A symmetric, both k × k with k a handful): B = L Lᵀ,
 /// C = L⁻¹ A L⁻ᵀ, y = L⁻ᵀ z (so yᵀBy = 1), λ ascending. Forward: the

@@ -53,7 +53,7 @@ pub const DENSE_SHARE: f64 = 0.25;
 /// [`Pencil::refine_shifted`].
 const REFINE_CLUSTER_GAP: f64 = 1e-6;
 /// Most passes of [`Pencil::refine_shifted`].
-const REFINE_PASSES: usize = 3;
+const REFINE_PASSES: usize = 6;
 /// Relative distance of [`Pencil::refine_shifted`]'s shift below its
 /// cluster.
 const REFINE_SHIFT: f64 = 1e-7;
@@ -162,6 +162,7 @@ impl Pencil {
         let mut column = vec![0.0; n];
         let mut product = vec![0.0; n];
         let mut refined_modes = Vec::new();
+        let scratch = std::cell::RefCell::new(vec![0.0; n]);
         let mut first = 0;
         while first < count {
             let mut end = first + 1;
@@ -180,12 +181,31 @@ impl Pencil {
             let shift = eigenvalues[a] * (1.0 - REFINE_SHIFT);
             let factor = Factor::new(&shifted(&self.stiffness, &self.mass, shift)?)?;
             let mut workspace = factor.workspace()?;
+            // With an accurate K, each solve is refined against K − σM
+            // applied through it ([`lanczos::RefinedSolve`]): the factor
+            // of the assembled matrix alone leaves an error of order ε·κ
+            // in the smooth components (ε(L/πh)⁴ relatively on a beam,
+            // 5.7e-8 at 400 elements per 25 m), which a refined high mode
+            // would pass on to the low ones through the orthogonalisation
+            // below (measured: mode 1 of 500 at 400 elements, 4.5e-7).
+            let shifted_product = |x: &[f64], y: &mut [f64]| {
+                if let Some(apply) = stiffness {
+                    let mut m_x = scratch.borrow_mut();
+                    apply(x, y);
+                    multiply(&self.mass, x, &mut m_x);
+                    for (yi, mi) in y.iter_mut().zip(m_x.iter()) {
+                        *yi -= shift * mi;
+                    }
+                }
+            };
+            let refine: Option<lanczos::Product<'_>> = stiffness.map(|_| &shifted_product as _);
+            let mut solver = lanczos::RefinedSolve::new(&factor, refine, n);
             let k = b - a;
             let mut x = Mat::<f64>::zeros(n, k);
             for c in 0..k {
                 let phi: Vec<f64> = vectors.col(a + c).iter().copied().collect();
                 multiply(&self.mass, &phi, &mut column);
-                factor.solve_in_place(&mut column, &mut workspace);
+                solver.solve(&mut column, &mut workspace);
                 multiply(&self.mass, &column, &mut product);
                 let norm = column
                     .iter()
@@ -270,27 +290,78 @@ impl Pencil {
         // in proportion to their overlap, large only between close
         // neighbours, so a residual moves by about overlap × relative gap.
         // Cost O(n · count²) + O(count³).
-        let mut m_vectors = Mat::<f64>::zeros(n, count);
-        for mode in 0..count {
-            let phi: Vec<f64> = vectors.col(mode).iter().copied().collect();
-            multiply(&self.mass, &phi, &mut product);
+        lowdin(&self.mass, vectors)
+    }
+
+    /// The lowest `want` pairs by the dense reductions: the inverted one
+    /// ([`dense::lowest_inverted`]) keeps each λₖ to about ε·λₖ/λ₁
+    /// relatively, the forward one ([`dense::every_forward`]) to about
+    /// ε·λₙ/λₖ, so the modes above the crossover λₖ > √(λ₁λₙ) are taken
+    /// from the forward one (measured: the top of a 200-element beam's
+    /// spectrum, relative gaps of 1.8e-4 against the inverted reduction's
+    /// ε·λₙ/λ₁ ≈ 9e-6, left residuals of 7.5e-3 that shifted inverse
+    /// iteration could not repair). Vectors of two solves are M-orthogonal
+    /// only to their accuracy, so the forward ones are orthogonalised
+    /// against the lower ones. Requests below the crossover are unchanged.
+    fn dense_two_sided(&self, want: usize) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
+        let (stiffness, mass) = (self.stiffness.to_dense(), self.mass.to_dense());
+        let (mut values, all) = dense::lowest_inverted(&stiffness, &mass)?;
+        let n = values.len();
+        let crossover = (values[0] * values[n - 1]).sqrt();
+        let mut vectors = all.subcols(0, want).to_owned();
+        drop(all);
+        values.truncate(want);
+        if values[want - 1] <= crossover {
+            return Ok((values, vectors));
+        }
+        let (forward_values, forward) = dense::every_forward(&stiffness, &mass)?;
+        let first = (0..want)
+            .find(|&k| forward_values[k] > crossover)
+            .unwrap_or(want);
+        // Each forward vector M-orthogonalised against every lower one
+        // (twice, classical Gram–Schmidt), lowest first, so the correction
+        // goes into the higher mode: an overlap δ moved into mode k costs
+        // its residual about δ·√(λₖ/λⱼ), which a low mode j's own residual
+        // bounds (its error along mode k is below η_j·√(λⱼ/λₖ)), while the
+        // reverse would put δ·√(λₖ/λⱼ) into the low mode (measured with a
+        // symmetric orthonormalisation: mode 1 of 500 on a 400-element
+        // beam at 2.2e-2 before refinement).
+        let mut m_phi = vec![0.0; n];
+        let mut m_vectors = Mat::<f64>::zeros(n, want);
+        for k in 0..want {
+            if k >= first {
+                values[k] = forward_values[k];
+                vectors.col_mut(k).copy_from(forward.col(k));
+                for _pass in 0..2 {
+                    let lower = m_vectors.as_ref().subcols(0, k);
+                    let overlaps = lower.transpose() * vectors.col(k);
+                    let correction = vectors.as_ref().subcols(0, k) * &overlaps;
+                    for i in 0..n {
+                        vectors[(i, k)] -= correction[i];
+                    }
+                }
+                let phi: Vec<f64> = vectors.col(k).iter().copied().collect();
+                multiply(&self.mass, &phi, &mut m_phi);
+                let norm = phi
+                    .iter()
+                    .zip(&m_phi)
+                    .map(|(a, b)| a * b)
+                    .sum::<f64>()
+                    .sqrt();
+                if !(norm > 0.0 && norm.is_finite()) {
+                    return Err(BridgeError::EigenFailed);
+                }
+                for i in 0..n {
+                    vectors[(i, k)] /= norm;
+                }
+            }
+            let phi: Vec<f64> = vectors.col(k).iter().copied().collect();
+            multiply(&self.mass, &phi, &mut m_phi);
             for i in 0..n {
-                m_vectors[(i, mode)] = product[i];
+                m_vectors[(i, k)] = m_phi[i];
             }
         }
-        let gram = vectors.transpose() * &m_vectors;
-        let gram = Mat::from_fn(count, count, |i, j| 0.5 * (gram[(i, j)] + gram[(j, i)]));
-        let eig = gram
-            .self_adjoint_eigen(faer::Side::Lower)
-            .map_err(|_| BridgeError::EigenFailed)?;
-        let (u, sigma) = (eig.U(), eig.S().column_vector());
-        if sigma.iter().any(|&v| !(v > 0.0 && v.is_finite())) {
-            return Err(BridgeError::EigenFailed);
-        }
-        let scaled = Mat::from_fn(count, count, |i, j| u[(i, j)] / sigma[j].sqrt());
-        let inverse_root = &scaled * u.transpose();
-        *vectors = &*vectors * &inverse_root;
-        Ok(())
+        Ok((values, vectors))
     }
 
     /// Refines the pairs whose energy residual misses a tenth of
@@ -324,6 +395,7 @@ impl Pencil {
                 break;
             }
             self.refine_shifted(eigenvalues, vectors, &residuals, stiffness)?;
+            sort_pairs(eigenvalues, vectors);
             residuals = energy_residuals(product, &self.mass, factor, eigenvalues, vectors)?;
         }
         Ok(())
@@ -396,14 +468,14 @@ impl Pencil {
                 available: n,
             });
         }
-        // The share rule for assembled pencils (imported models) only: a
-        // beam's Lanczos with its accurate product and refined solves
-        // stays accurate there (measured: 80 of 320 beam modes, energy
-        // residual 3.0e-8 by dense + polish against < 1e-8 by Lanczos).
+        // The share rule applies to beams too: a Lanczos run that nearly
+        // exhausts the space loses its last vectors to round-off (measured:
+        // all 399 modes of a 200-element beam, one Ritz value twice, the
+        // Sturm count one short), while the dense solve's inaccurate modes
+        // (assembled K, the single shift) are refined against the accurate
+        // product ([`Pencil::refine_inaccurate`]).
         let dense = n <= DENSE_LIMIT
-            || (stiffness.is_none()
-                && n <= DENSE_SHARE_LIMIT
-                && (count + 4) as f64 >= DENSE_SHARE * n as f64);
+            || (n <= DENSE_SHARE_LIMIT && (count + 4) as f64 >= DENSE_SHARE * n as f64);
         let assembled = |x: &[f64], y: &mut [f64]| multiply(&self.stiffness, x, y);
         let product: lanczos::Product<'_> = stiffness.unwrap_or(&assembled);
         // Solve a few more than asked, so the cut can sit in a clear gap.
@@ -424,10 +496,7 @@ impl Pencil {
                 // once, twice) with the smallest worst residual is kept
                 // ([`best_candidate`]); what still misses the bound is
                 // refined below.
-                let (values, all) =
-                    dense::lowest_inverted(&self.stiffness.to_dense(), &self.mass.to_dense())?;
-                let unpolished = (values[..want].to_vec(), all.subcols(0, want).to_owned());
-                drop(all);
+                let unpolished = self.dense_two_sided(want)?;
                 let factor = self.stiffness_factor()?;
                 faer::set_global_parallelism(faer::Par::Seq);
                 let once =
@@ -442,9 +511,7 @@ impl Pencil {
                     .collect::<Result<Vec<_>, _>>()?;
                 candidates.swap_remove(best_candidate(&residuals))
             } else if dense {
-                let (values, all) =
-                    dense::lowest_inverted(&self.stiffness.to_dense(), &self.mass.to_dense())?;
-                (values[..want].to_vec(), all.subcols(0, want).to_owned())
+                self.dense_two_sided(want)?
             } else {
                 let factor = self.stiffness_factor()?;
                 if stiffness.is_none() {
@@ -488,6 +555,50 @@ impl Pencil {
             });
         }
     }
+}
+
+/// The symmetric (Löwdin) M-orthonormalisation Φ ← Φ G^{-1/2}, G = ΦᵀMΦ:
+/// the smallest change that makes the set M-orthonormal (Löwdin 1950). It
+/// mixes pairs in proportion to their overlap. Cost O(n · count²) +
+/// O(count³).
+fn lowdin(mass: &SymmetricSparse, vectors: &mut Mat<f64>) -> Result<(), BridgeError> {
+    let (n, count) = (vectors.nrows(), vectors.ncols());
+    let mut product = vec![0.0; n];
+    let mut m_vectors = Mat::<f64>::zeros(n, count);
+    for mode in 0..count {
+        let phi: Vec<f64> = vectors.col(mode).iter().copied().collect();
+        multiply(mass, &phi, &mut product);
+        for i in 0..n {
+            m_vectors[(i, mode)] = product[i];
+        }
+    }
+    let gram = vectors.transpose() * &m_vectors;
+    let gram = Mat::from_fn(count, count, |i, j| 0.5 * (gram[(i, j)] + gram[(j, i)]));
+    let eig = gram
+        .self_adjoint_eigen(faer::Side::Lower)
+        .map_err(|_| BridgeError::EigenFailed)?;
+    let (u, sigma) = (eig.U(), eig.S().column_vector());
+    if sigma.iter().any(|&v| !(v > 0.0 && v.is_finite())) {
+        return Err(BridgeError::EigenFailed);
+    }
+    let scaled = Mat::from_fn(count, count, |i, j| u[(i, j)] / sigma[j].sqrt());
+    let inverse_root = &scaled * u.transpose();
+    *vectors = &*vectors * &inverse_root;
+    Ok(())
+}
+
+/// Puts the pairs in ascending order of λ (a refinement may move an
+/// eigenvalue past a neighbour the first solve had misplaced). Stable, so
+/// pairs in order stay bit for bit where they are.
+fn sort_pairs(eigenvalues: &mut [f64], vectors: &mut Mat<f64>) {
+    if eigenvalues.windows(2).all(|w| w[0] <= w[1]) {
+        return;
+    }
+    let mut order: Vec<usize> = (0..eigenvalues.len()).collect();
+    order.sort_by(|&a, &b| eigenvalues[a].total_cmp(&eigenvalues[b]));
+    let values: Vec<f64> = order.iter().map(|&j| eigenvalues[j]).collect();
+    eigenvalues.copy_from_slice(&values);
+    *vectors = Mat::from_fn(vectors.nrows(), order.len(), |i, j| vectors[(i, order[j])]);
 }
 
 /// Where the completeness check cuts the spectrum.
