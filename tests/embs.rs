@@ -211,9 +211,13 @@ fn the_golden_seismic_scene_shakes_the_bridge_during_the_crossing() {
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/embs-viaduct-ave-s103-quake.yaml"
     );
-    let loaded = vbi::scenario::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
+    let loaded =
+        vbi::scenario::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap();
-    let ground = model.ground.as_ref().expect("the scene has a ground motion");
+    let ground = model
+        .ground
+        .as_ref()
+        .expect("the scene has a ground motion");
     let record_peak = ground
         .lateral
         .iter()
@@ -240,4 +244,73 @@ fn the_golden_seismic_scene_shakes_the_bridge_during_the_crossing() {
         on_bridge_peak / g,
         record_peak / g
     );
+}
+
+/// The golden viaduct's model (scenarios/viaduct-2span, modes to 80 Hz)
+/// and the scene's 3D car, built without running.
+fn golden_model() -> vbi::model::Model {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/embs-viaduct-ave-s103-quake.yaml"
+    );
+    let loaded =
+        vbi::scenario::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
+    vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap()
+}
+
+/// ε per direction on a model whose first mode moves no contact: the
+/// generated two-span viaduct's 2.03 Hz mode is the decks sliding
+/// longitudinally on their bearings. ε must divide by the lowest mode
+/// that moves the rails in each direction — the 11.54 Hz vertical
+/// bending of the spans, the 5.56 Hz lateral sway — not by that one.
+/// The wheelset frequencies are hand-computed from the AVE-S103 preset
+/// (EMBS paper, Table 2; rail_3d.rs) with b₀ = 0.88 m and d₁ = 1.0 m:
+/// vertically the contact coordinate z_L has m = m_w/4 + I_wx/(4b₀²) =
+/// 450 + 1000/3.0976 = 772.83 kg and k = k_z[(½ + d₁/2b₀)² + (½ −
+/// d₁/2b₀)²] = 1.2e6 × 1.14568 N/m (the two axle-box springs), so
+/// f_w = 6.713 Hz; laterally m = 1800 kg on 2 × 120 MN/m, f_w = 58.12 Hz.
+/// The sprung mass per vertical wheel is (47 800 + 2 × 3 500)/8 = 6 850 kg
+/// (f_s = 2.255 Hz), per lateral contact 54 800/4 = 13 700 kg (f_s =
+/// 21.06 Hz). Tolerance 1e-9 relative on the closed forms (round-off).
+#[test]
+fn epsilon_is_taken_per_direction_against_the_modes_that_move_the_contacts() {
+    use vbi::contact::ContactDirection::{Lateral, Vertical};
+    use vbi::solve::embs_scale::directional_scale;
+    let model = golden_model();
+    let f = model.bridge.frequencies();
+    let tau = std::f64::consts::TAU;
+    let b0: f64 = 0.88;
+    let m_v = 450.0 + 1000.0 / (4.0 * b0 * b0);
+    let k_v = 1.2e6 * ((0.5 + 1.0 / (2.0 * b0)).powi(2) + (0.5 - 1.0 / (2.0 * b0)).powi(2));
+    let hand = [
+        (
+            Vertical,
+            (k_v / m_v).sqrt() / tau,
+            (k_v / 6850.0).sqrt() / tau,
+            4,
+        ),
+        (
+            Lateral,
+            (240e6f64 / 1800.0).sqrt() / tau,
+            (240e6f64 / 13700.0).sqrt() / tau,
+            3,
+        ),
+    ];
+    for (d, wheelset, sprung, mode) in hand {
+        let s = directional_scale(&model, d).expect("the car has contacts both ways");
+        eprintln!("{s:?}");
+        assert_eq!(s.bridge_mode, mode, "{d:?}");
+        assert!((s.bridge_frequency - f[mode - 1]).abs() < 1e-12);
+        assert!(
+            (s.wheelset_frequency / wheelset - 1.0).abs() < 1e-9,
+            "{d:?}"
+        );
+        assert!((s.sprung_frequency / sprung - 1.0).abs() < 1e-9, "{d:?}");
+        assert!((s.epsilon - wheelset / f[mode - 1]).abs() < 1e-9 * s.epsilon);
+        assert!((s.epsilon_sprung - sprung / f[mode - 1]).abs() < 1e-9 * s.epsilon);
+        // The first mode (2.03 Hz) hardly moves the contacts: measured
+        // shares 3.2e-5 vertically (the bearings' tilt), 2e-33 laterally.
+        assert!(s.lowest_mode.1 < 1e-4, "{d:?}: {:?}", s.lowest_mode);
+        assert!((s.lowest_mode.0 - f[0]).abs() < 1e-12);
+    }
 }
