@@ -111,7 +111,9 @@ fn the_error_falls_at_the_order_the_expansion_predicts() {
 
 /// The scene of the paper's setting on a simply supported 3D beam: the
 /// AVE-S103 preset at 300 km/h over a 25 m span with lateral modes, the
-/// synthetic lateral record (0.2 g peak) shaking it, FRA class 5 with
+/// synthetic lateral record (0.2 g peak at 3.0 s of the record) shaking
+/// it with its peak at 0.8 s of the run, while the car is on the span
+/// (0.48–1.08 s), German low-interference track (fit for 300 km/h) with
 /// alignment on independent rails.
 fn quake_scene(first_order: bool) -> String {
     format!(
@@ -122,8 +124,8 @@ bridge: {{type: beam, spans: [25.0], bending_stiffness: 8.0e10, mass_per_length:
   rail_height: 1.2, elements_per_span: 20, damping: {{type: modal, ratio: 0.02}},
   modes: {{count: 12}}}}
 vehicles: [{{type: train_3d, speed: 300 km/h, start_position: -40.0}}]
-surface: {{type: fra, class: 5, alignment: true, rails: independent, seed: 11}}
-ground_motion: [{{file: records/synthetic-lateral.AT2, direction: lateral}}]
+surface: {{type: german, interference: low, alignment: true, rails: independent, seed: 11}}
+ground_motion: [{{file: records/synthetic-lateral.AT2, direction: lateral, start_time: -2.2}}]
 contact: {{type: permanent}}
 solver: {{method: embs, first_order: {first_order}, compare: true, time_step: 2.0e-4,
   free_vibration: 0.3}}
@@ -155,7 +157,12 @@ fn the_3d_beam_under_a_lateral_record_against_coupled() {
     let summary = embs(&quake_scene(true));
     let eps = (summary.epsilon.unwrap(), summary.epsilon_lateral.unwrap());
     eprintln!("ε = {:.3}, lateral {:.3}", eps.0, eps.1);
-    assert_eq!(summary.warnings().len(), 2);
+    let epsilon_warnings = summary
+        .warnings()
+        .iter()
+        .filter(|w| w.contains("small parameter"))
+        .count();
+    assert_eq!(epsilon_warnings, 2);
     let measured = [
         ("deck_vertical", 4.25e-2),
         ("deck_vertical_acc", 7.49e-2),
@@ -313,4 +320,156 @@ fn epsilon_is_taken_per_direction_against_the_modes_that_move_the_contacts() {
         assert!(s.lowest_mode.1 < 1e-4, "{d:?}: {:?}", s.lowest_mode);
         assert!((s.lowest_mode.0 - f[0]).abs() < 1e-12);
     }
+}
+
+/// The 25 m 3D beam of [`quake_scene`] with the primary suspension's
+/// stiffness and damping scaled by `s` (ε ∝ √s), recording vertical and
+/// lateral quantities, compared with `coupled`.
+fn suspension_scene(s: f64, compare: bool, extra: &str) -> String {
+    format!(
+        r#"
+name: embs-suspension
+bridge: {{type: beam, spans: [25.0], bending_stiffness: 8.0e10, mass_per_length: 18000.0,
+  lateral_bending_stiffness: 2.0e11, torsional_stiffness: 6.0e10, polar_mass: 90000.0,
+  rail_height: 1.2, elements_per_span: 20, damping: {{type: modal, ratio: 0.02}},
+  modes: {{count: 12}}}}
+vehicles:
+  - type: train_3d
+    speed: 300 km/h
+    start_position: -5.0
+    parameters: {{primary_longitudinal_stiffness: {kx}, primary_lateral_stiffness: {ky},
+      primary_vertical_stiffness: {kz}, primary_longitudinal_damping: {cx},
+      primary_lateral_damping: {cy}, primary_vertical_damping: {cz}}}
+surface: {{type: german, interference: low, alignment: true, rails: independent, seed: 11}}
+ground_motion: [{{file: records/synthetic-lateral.AT2, direction: lateral, start_time: -2.6}}]
+contact: {{type: permanent}}
+solver: {{method: embs, compare: {compare}, time_step: 2.0e-4, free_vibration: 0.2{extra}}}
+record:
+  - {{name: deck_vertical, quantity: bridge_displacement, x: 12.5}}
+  - {{name: deck_vertical_acc, quantity: bridge_acceleration, x: 12.5}}
+  - {{name: wheel1_force, quantity: contact_force, wheel: 1}}
+  - {{name: body_bounce_acc, quantity: vehicle_acceleration, dof: body_bounce}}
+  - {{name: deck_lateral, quantity: bridge_displacement, x: 12.5, direction: uy}}
+  - {{name: body_lateral_acc, quantity: vehicle_acceleration, dof: body_lateral}}
+"#,
+        kx = 12.5e6 * s,
+        ky = 120e6 * s,
+        kz = 1.2e6 * s,
+        cx = 9e3 * s,
+        cy = 27.9e3 * s,
+        cz = 10e3 * s,
+    )
+}
+
+/// The first-order ratio η of a quantity (summary `embs.orders`).
+fn first_order_ratio(summary: &EmbsSummary, name: &str) -> f64 {
+    summary
+        .orders
+        .iter()
+        .find(|o| o.name == name)
+        .unwrap_or_else(|| panic!("no quantity {name}"))
+        .first_order_ratio
+}
+
+/// The a-posteriori check falls as ε²: with the primary suspension's
+/// stiffness and damping scaled by s = 1, 0.1, 0.01 (ε ∝ √s, so ε² ∝ s)
+/// the first-order forcing F₁ = c_w u̇_w⁽⁰⁾ + k_wu u_u⁽⁰⁾ + c_wu u̇_u⁽⁰⁾
+/// scales with s, and so does η = max|first-order part| / max|zero
+/// order's dynamic part| of every vertical quantity: it must fall ×10 ± 30 %
+/// per step once ε < 1 (s = 0.1 → 0.01: measured in the eprintln below),
+/// and the EMBS error against coupled must fall with it.
+#[test]
+fn the_first_order_ratio_falls_as_epsilon_squared() {
+    let runs: Vec<EmbsSummary> = [1.0, 0.1, 0.01]
+        .iter()
+        .map(|&s| embs(&suspension_scene(s, true, "")))
+        .collect();
+    let vertical = [
+        "deck_vertical",
+        "deck_vertical_acc",
+        "wheel1_force",
+        "body_bounce_acc",
+    ];
+    for (run, s) in runs.iter().zip([1.0, 0.1, 0.01]) {
+        eprintln!(
+            "s = {s}: ε vertical {:.3}, lateral {:.3}",
+            run.epsilon.unwrap(),
+            run.epsilon_lateral.unwrap()
+        );
+        for o in &run.orders {
+            eprintln!(
+                "  {:18} η {:.3e} error {:.3e}",
+                o.name,
+                o.first_order_ratio,
+                error(run, &o.name)
+            );
+        }
+    }
+    for name in vertical {
+        let eta: Vec<f64> = runs.iter().map(|r| first_order_ratio(r, name)).collect();
+        let fall = eta[1] / eta[2];
+        assert!(
+            (7.0..=13.0).contains(&fall),
+            "{name}: η falls ×{fall:.2} for s ×0.1"
+        );
+        assert!(error(&runs[2], name) < error(&runs[1], name), "{name}");
+    }
+}
+
+/// Where ε ≥ 1 in a direction whose quantities are recorded the series
+/// cannot converge, and a run without `compare` is refused with the
+/// frequencies and the records named; `allow_large_epsilon: true` runs
+/// it, and a scene recording only the directions where ε < 1 runs.
+/// Here (the 25 m 3D beam, suspension ×0.1): ε = 0.41 vertically,
+/// 3.5 laterally.
+#[test]
+fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/embs-test.yaml");
+    let run = |yaml: &str| {
+        let loaded = load_str(yaml, file).unwrap_or_else(|e| panic!("{e}"));
+        simulate(loaded, &mut |_, _| {})
+    };
+    let refused = run(&suspension_scene(0.1, false, ""))
+        .err()
+        .expect("refused")
+        .to_string();
+    eprintln!("{refused}");
+    for words in [
+        "lateral",
+        "deck_lateral, body_lateral_acc",
+        "allow_large_epsilon",
+        "method: coupled",
+    ] {
+        assert!(refused.contains(words), "{words}: {refused}");
+    }
+    assert!(!refused.contains("deck_vertical"), "{refused}");
+    let allowed = run(&suspension_scene(0.1, false, ", allow_large_epsilon: true"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let summary = allowed.summary.embs.expect("an EMBS summary");
+    assert!(
+        summary
+            .warnings()
+            .iter()
+            .any(|w| w.contains("lateral small parameter"))
+    );
+    // Only vertical records: runs, ε_v = 0.41 < 1.
+    let vertical_only: String = suspension_scene(0.1, false, "")
+        .lines()
+        .filter(|l| !(l.starts_with("  - {name:") && l.contains("lateral")))
+        .collect::<Vec<_>>()
+        .join("\n");
+    run(&vertical_only).unwrap_or_else(|e| panic!("{e}"));
+    let bad = load_str(
+        &suspension_scene(0.1, false, "")
+            .replace("method: embs,", "method: coupled,")
+            .replace("compare: false,", "allow_large_epsilon: true,"),
+        "t.yaml",
+    )
+    .err()
+    .expect("refused")
+    .to_string();
+    assert!(
+        bad.contains("`allow_large_epsilon` applies to `method: embs` only"),
+        "{bad}"
+    );
 }
