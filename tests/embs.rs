@@ -375,9 +375,13 @@ fn first_order_ratio(summary: &EmbsSummary, name: &str) -> f64 {
 /// stiffness and damping scaled by s = 1, 0.1, 0.01 (ε ∝ √s, so ε² ∝ s)
 /// the first-order forcing F₁ = c_w u̇_w⁽⁰⁾ + k_wu u_u⁽⁰⁾ + c_wu u̇_u⁽⁰⁾
 /// scales with s, and so does η = max|first-order part| / max|zero
-/// order's dynamic part| of every vertical quantity: it must fall ×10 ± 30 %
-/// per step once ε < 1 (s = 0.1 → 0.01: measured in the eprintln below),
-/// and the EMBS error against coupled must fall with it.
+/// order's dynamic part| of the deck's vertical deflection and
+/// acceleration: measured ×10.00 per step (η 4.64e-2, 4.64e-3, 4.64e-4 and
+/// 3.78e-2, 3.78e-3, 3.78e-4), asserted within ×9–11; the EMBS error
+/// against coupled falls with it (2.0e-2 → 2.0e-3 for the acceleration at
+/// s = 0.1 → 0.01, 5.2 η). The vehicle's quantities fall more irregularly
+/// (the wheel force ×8.6 then ×6.8, with ε_lat 6.9 → 2.2 → 0.69 sharing
+/// the roll), and are printed only.
 #[test]
 fn the_first_order_ratio_falls_as_epsilon_squared() {
     let runs: Vec<EmbsSummary> = [1.0, 0.1, 0.01]
@@ -421,7 +425,7 @@ fn the_first_order_ratio_falls_as_epsilon_squared() {
 /// frequencies and the records named; `allow_large_epsilon: true` runs
 /// it, and a scene recording only the directions where ε < 1 runs.
 /// Here (the 25 m 3D beam, suspension ×0.1): ε = 0.41 vertically,
-/// 3.5 laterally.
+/// 2.19 laterally.
 #[test]
 fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
     let file = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/embs-test.yaml");
@@ -463,7 +467,7 @@ fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
         &suspension_scene(0.1, false, "")
             .replace("method: embs,", "method: coupled,")
             .replace("compare: false,", "allow_large_epsilon: true,"),
-        "t.yaml",
+        file,
     )
     .err()
     .expect("refused")

@@ -104,17 +104,18 @@ pub struct OrderCheck {
     pub first_order_ratio: f64,
 }
 
-/// Above this first-order ratio η a recorded quantity is flagged. Where ε
-/// < 1 in every direction the measured EMBS error against `coupled` was
-/// at most [`ERROR_PER_RATIO`] η (benches/embs_accuracy.sh: the golden
-/// seismic scene with the primary suspension scaled by 1 … 1e-4), so a
-/// flagged quantity may be ~10 % off.
-pub const FIRST_ORDER_RATIO_WARNING: f64 = 0.05;
+/// Above this first-order ratio η a recorded quantity is flagged. η falls
+/// as ε², like the error it indicates, but their ratio depends on the
+/// scene: where ε < 1 in every direction the measured EMBS error against
+/// `coupled` was 0.06–2.2 η on the golden viaduct (benches/embs_accuracy.sh)
+/// and up to [`ERROR_PER_RATIO`] η on a 25 m 3D beam (tests/embs.rs), so a
+/// flagged quantity may be several per cent off.
+pub const FIRST_ORDER_RATIO_WARNING: f64 = 0.01;
 
 /// Largest measured EMBS error over η where ε < 1 in every direction
-/// (2.1 for the deck's lateral acceleration at ε_lat = 0.33 and 0.105,
-/// 0.06–0.6 vertically; benches/embs_accuracy.sh).
-pub const ERROR_PER_RATIO: f64 = 2.2;
+/// (8.2: the body's bounce acceleration on the 25 m 3D beam at ε = 0.13
+/// vertically and 0.69 laterally, tests/embs.rs).
+pub const ERROR_PER_RATIO: f64 = 8.2;
 
 /// Above this the first-order part exceeds the zero order's dynamics: the
 /// series is not converging for that quantity.
@@ -286,8 +287,8 @@ impl EmbsSummary {
                 "EMBS a-posteriori check: the first-order part against the zero order's \
                  dynamics η = max|q⁽¹⁾| / max|q⁽⁰⁾ − q_static| is above \
                  {FIRST_ORDER_RATIO_WARNING} for {list}; where ε < 1 in every direction the \
-                 measured error against `coupled` stayed below {ERROR_PER_RATIO} η, where ε ≥ 1 \
-                 η says nothing; check with `solver.compare: true` or use `method: coupled`"
+                 measured error against `coupled` reached {ERROR_PER_RATIO} η, where ε ≥ 1 η \
+                 says nothing; check with `solver.compare: true` or use `method: coupled`"
             )
         })
     }
