@@ -31,6 +31,10 @@ pub enum RunError {
     /// A plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] crate::report::plot::PlotError),
+    /// `method: embs` refused: ε ≥ 1 in a recorded direction
+    /// ([`crate::solve::embs_scale::refusal`]).
+    #[error("{0}")]
+    EmbsOutOfRange(String),
     /// One sample of a Monte Carlo study failed (the study stops).
     #[error("sample {sample} of case {case} failed{rerun}: {source}")]
     Sample {
@@ -292,9 +296,31 @@ fn run_scene(
             recorder = recorder.spill_into(out).map_err(io)?;
         }
     }
+    if let Some(why) = crate::solve::embs_scale::refusal(&model, &scenario.record) {
+        return Err(RunError::EmbsOutOfRange(why));
+    }
+    // EMBS with its first order also records the zero order alone, for
+    // the a-posteriori check of the expansion (report::embs).
+    let mut zero_order = match model.embs {
+        Some(e)
+            if e.first_order && model.method == crate::scenario::resolved::SolverMethod::Embs =>
+        {
+            Some(
+                Recorder::new(&model, &scenario.record)
+                    .map_err(BuildError::from)?
+                    .every(scenario.output.every),
+            )
+        }
+        _ => None,
+    };
     let solve_start = Instant::now();
-    let stats = solve::run(&model, &mut recorder, progress)?;
+    let stats = match zero_order.as_mut() {
+        Some(zero) => solve::embs::run_orders(&model, &mut recorder, Some(zero), progress)
+            .map(|()| solve::SolveStats::default())?,
+        None => solve::run(&model, &mut recorder, progress)?,
+    };
     let solve_time = solve_start.elapsed().as_secs_f64();
+    let zero_order = zero_order.map(Recorder::finish);
     let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
     let mut summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
@@ -313,7 +339,9 @@ fn run_scene(
         };
         summary.embs = Some(report::embs::EmbsSummary::new(
             &model,
+            &scenario.record,
             &history,
+            zero_order.as_ref(),
             reference
                 .as_ref()
                 .map(|(h, coupled_time)| (h, *coupled_time, solve_time)),

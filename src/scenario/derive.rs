@@ -297,6 +297,7 @@ pub(super) fn resolve_embs(
         for (key, given) in [
             ("first_order", solver.first_order.is_some()),
             ("compare", solver.compare.is_some()),
+            ("allow_large_epsilon", solver.allow_large_epsilon.is_some()),
         ] {
             if given {
                 ck.error(
@@ -310,6 +311,7 @@ pub(super) fn resolve_embs(
     Some(EmbsOptions {
         first_order: solver.first_order.unwrap_or(true),
         compare: solver.compare.unwrap_or(false),
+        allow_large_epsilon: solver.allow_large_epsilon.unwrap_or(false),
     })
 }
 

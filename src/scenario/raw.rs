@@ -635,6 +635,13 @@ pub struct SolverRaw {
     #[serde(default)]
     #[schemars(extend("default" = false))]
     pub compare: Option<bool>,
+    /// `method: embs` only: run even where ε = ω_p/ω_B ≥ 1 in a contact
+    /// direction whose quantities are recorded (the expansion cannot
+    /// converge there, and such a run is otherwise refused unless
+    /// `compare` is set). Default false.
+    #[serde(default)]
+    #[schemars(extend("default" = false))]
+    pub allow_large_epsilon: Option<bool>,
 }
 
 /// Solution method.

@@ -671,6 +671,10 @@ pub struct EmbsOptions {
     pub first_order: bool,
     /// Whether the scene is also solved by `coupled` for comparison.
     pub compare: bool,
+    /// Whether to run where ε ≥ 1 in a recorded direction
+    /// ([`crate::solve::embs_scale::refusal`]).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub allow_large_epsilon: bool,
 }
 
 /// Convergence settings of the `iterative` solver.

@@ -51,26 +51,12 @@ use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::{VehicleModel, WheelKind};
 
-/// The small parameter of a scene: ε = ω_p/ω_B, ω_p the highest wheel
-/// frequency on the primary suspension √(k_cc/m_cc) over the contact DOFs
-/// in `direction` (the wheel's own rate over its mass, the group
-/// m_w⁻¹k_w of Eq. 4), ω_B the bridge's lowest kept frequency; `None`
-/// where no vehicle has such a contact.
+/// The small parameter of a scene in `direction`: ε = ω_p/ω_B,dir, the
+/// highest wheelset frequency on the primary suspension over the lowest
+/// bridge mode that moves the contacts in that direction
+/// ([`super::embs_scale`]); `None` where no vehicle has such a contact.
 pub fn small_parameter(model: &Model, direction: ContactDirection) -> Option<f64> {
-    let bridge = *model.bridge.circular_frequencies.first()?;
-    model
-        .vehicles
-        .iter()
-        .flat_map(|v| {
-            v.wheels.iter().filter_map(move |w| match w.kind {
-                WheelKind::Dof(d) if w.direction == direction && v.mass[(d, d)] > 0.0 => {
-                    Some((v.stiffness[(d, d)] / v.mass[(d, d)]).sqrt())
-                }
-                _ => None,
-            })
-        })
-        .fold(None, |m: Option<f64>, w| Some(m.map_or(w, |m| m.max(w))))
-        .map(|primary| primary / bridge)
+    super::embs_scale::directional_scale(model, direction).map(|s| s.epsilon)
 }
 
 /// Above this ε the summary warns that the expansion is not accurate.
@@ -151,11 +137,83 @@ fn load_wheels(contacts: &mut PermanentContacts, weighted: &[f64], weight: f64) 
     }
 }
 
+/// Steps the Eq. 3 vehicle (`vehicle`, under the ground's `(gravity
+/// ratio, lateral load)`) with each wheel prescribed to follow the sum of
+/// the bridge `orders`' wheel motions (plus its rail, held in the static
+/// displacement), and writes its contact forces (N, by flattened wheel).
+fn drive_vehicle(
+    vehicle: &mut PermanentContacts,
+    nm: &Newmark,
+    (ratio, lateral): (f64, f64),
+    orders: &[&[super::VehicleState]],
+    kinematics: &mut [[f64; 3]],
+    lambda: &mut [f64],
+    contact_forces: &mut [f64],
+) {
+    for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
+        let state = &vehicle.states[v];
+        partition.lateral_ground = lateral;
+        partition.begin_step(
+            nm,
+            ratio,
+            &state.displacement,
+            &state.velocity,
+            &state.acceleration,
+            vehicle.contact_of[v]
+                .iter()
+                .map(|&c| contact_forces[vehicle.contacts[c].wheel]),
+        );
+    }
+    for (c, contact) in vehicle.contacts.iter().enumerate() {
+        let (v, d) = (contact.vehicle, contact.dof);
+        let mut wheel = [vehicle.states[v].static_displacement[d], 0.0, 0.0];
+        for order in orders {
+            let state = &order[v];
+            wheel[0] += state.displacement[d];
+            wheel[1] += state.velocity[d];
+            wheel[2] += state.acceleration[d];
+        }
+        let state = &mut vehicle.states[v];
+        (
+            state.displacement[d],
+            state.velocity[d],
+            state.acceleration[d],
+        ) = (wheel[0], wheel[1], wheel[2]);
+        kinematics[c] = wheel;
+    }
+    for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
+        let state = &mut vehicle.states[v];
+        partition.finish_step(
+            nm,
+            &mut state.displacement,
+            &mut state.velocity,
+            &mut state.acceleration,
+        );
+    }
+    vehicle.vehicle_forces(kinematics, lambda);
+    for (c, contact) in vehicle.contacts.iter().enumerate() {
+        contact_forces[contact.wheel] = lambda[c];
+    }
+}
+
 /// Integrates the model by EMBS, calling `observer` at t = 0 and after
 /// every step with the summed bridge response and the Eq. 3 vehicles.
 pub fn run(
     model: &Model,
     observer: &mut dyn Observer,
+    progress: Progress<'_>,
+) -> Result<(), SolveError> {
+    run_orders(model, observer, None, progress)
+}
+
+/// [`run`], also calling `zero_observer` (when given) at the same instants
+/// with the zero order alone: the bridge u_B⁽⁰⁾ and an Eq. 3 vehicle on
+/// u_B⁽⁰⁾ (the a-posteriori check of the expansion,
+/// [`crate::report::embs`], differences the two).
+pub fn run_orders(
+    model: &Model,
+    observer: &mut dyn Observer,
+    mut zero_observer: Option<&mut dyn Observer>,
     progress: Progress<'_>,
 ) -> Result<(), SolveError> {
     let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
@@ -191,6 +249,8 @@ pub fn run(
     // The Eq. 6 upper part on held wheels, and the Eq. 3 vehicle.
     let mut upper = PermanentContacts::new(model, &nm)?;
     let mut vehicle = PermanentContacts::new(model, &nm)?;
+    // The Eq. 3 vehicle on the zero-order bridge alone (for `zero_observer`).
+    let mut vehicle0 = PermanentContacts::new(model, &nm)?;
     let nc = bridge0.count();
 
     // The static suspension force on each wheel, −(λ_static + f_g,w): the
@@ -215,12 +275,14 @@ pub fn run(
     let mut forces0 = model.static_wheel_loads.clone();
     let mut forces1 = vec![0.0; nw];
     let mut contact_forces = model.static_wheel_loads.clone();
+    let mut contact_forces0 = model.static_wheel_loads.clone();
+    let mut lambda_zero = vec![0.0; nc];
     let contact_gaps = vec![0.0; nw];
     let mut wheel_positions = vec![0.0; nw];
     let (mut displacement, mut acceleration) = (vec![0.0; modes], vec![0.0; modes]);
     model.wheel_positions(0.0, &mut wheel_positions);
 
-    observer.observe(&StepView::of(
+    let initial = StepView::of(
         0,
         0.0,
         &modal0,
@@ -228,7 +290,11 @@ pub fn run(
         &contact_forces,
         &contact_gaps,
         &wheel_positions,
-    ));
+    );
+    observer.observe(&initial);
+    if let Some(zero) = zero_observer.as_deref_mut() {
+        zero.observe(&initial);
+    }
 
     let guard = Guard::new(model);
     let mut ground = GroundStep::new(model, &nm);
@@ -308,52 +374,38 @@ pub fn run(
         }
 
         // Eq. 3: the vehicle with its wheels on u_B⁽⁰⁾ + u_B⁽¹⁾ + r.
-        for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
-            let state = &vehicle.states[v];
-            partition.lateral_ground = lateral;
-            partition.begin_step(
+        let orders = [&bridge0.states[..], &bridge1.states[..]];
+        drive_vehicle(
+            &mut vehicle,
+            &nm,
+            (ratio, lateral),
+            &orders,
+            &mut kinematics,
+            &mut lambda,
+            &mut contact_forces,
+        );
+        if let Some(zero) = zero_observer.as_deref_mut() {
+            drive_vehicle(
+                &mut vehicle0,
                 &nm,
-                ratio,
-                &state.displacement,
-                &state.velocity,
-                &state.acceleration,
-                vehicle.contact_of[v]
-                    .iter()
-                    .map(|&c| contact_forces[vehicle.contacts[c].wheel]),
+                (ratio, lateral),
+                &[&bridge0.states[..]],
+                &mut kinematics,
+                &mut lambda_zero,
+                &mut contact_forces0,
             );
+            zero.observe(&StepView {
+                step,
+                time: t,
+                modal_displacement: &modal0.displacement,
+                modal_acceleration: &modal0.acceleration,
+                vehicles: &vehicle0.states,
+                contact_forces: &contact_forces0,
+                contact_gaps: &contact_gaps,
+                wheel_positions: &wheel_positions,
+                wheel_modes: None,
+            });
         }
-        for (c, contact) in vehicle.contacts.iter().enumerate() {
-            let (v, d) = (contact.vehicle, contact.dof);
-            let (zero, one) = (&bridge0.states[v], &bridge1.states[v]);
-            let wheel = [
-                vehicle.states[v].static_displacement[d]
-                    + zero.displacement[d]
-                    + one.displacement[d],
-                zero.velocity[d] + one.velocity[d],
-                zero.acceleration[d] + one.acceleration[d],
-            ];
-            let state = &mut vehicle.states[v];
-            (
-                state.displacement[d],
-                state.velocity[d],
-                state.acceleration[d],
-            ) = (wheel[0], wheel[1], wheel[2]);
-            kinematics[c] = wheel;
-        }
-        for (v, partition) in vehicle.partitions.iter_mut().enumerate() {
-            let state = &mut vehicle.states[v];
-            partition.finish_step(
-                &nm,
-                &mut state.displacement,
-                &mut state.velocity,
-                &mut state.acceleration,
-            );
-        }
-        vehicle.vehicle_forces(&kinematics, &mut lambda);
-        for (c, contact) in vehicle.contacts.iter().enumerate() {
-            contact_forces[contact.wheel] = lambda[c];
-        }
-
         guard.check(model, &modal0, &vehicle.states, &lambda, t, step)?;
         for i in 0..modes {
             displacement[i] = modal0.displacement[i] + modal1.displacement[i];

@@ -11,6 +11,7 @@
 pub mod coupled;
 pub mod dense;
 pub mod embs;
+pub mod embs_scale;
 pub mod guard;
 pub mod iterative;
 pub mod lcp;
