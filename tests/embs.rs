@@ -395,6 +395,7 @@ fn the_lateral_ground_load_reaches_the_deck_as_computed_by_hand() {
     );
     assert!(peak > 1e-5, "the record shakes the deck: {peak:e} m");
     assert!(worst < 4e-5 * peak, "{:e} of the peak", worst / peak);
+}
 
 /// The golden seismic scene is seismic: the strong phase of its lateral
 /// record (scenarios/records/synthetic-lateral.AT2, 0.2 g peak at 3.0 s of
