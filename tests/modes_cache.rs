@@ -321,10 +321,9 @@ fn a_forged_file_missing_a_mode_is_not_used() {
     );
     let fresh = p.lowest(10).unwrap();
     assert_eq!(bits(&pairs), bits(&fresh));
-    // The fresh 2nd mode is there (the forged file skipped it).
-    assert_eq!(
-        pairs.eigenvalues[1].to_bits(),
-        eleven.eigenvalues[1].to_bits()
-    );
+    // The fresh 2nd mode is there (the forged file skipped it): the
+    // 11-mode solve's, to round-off (another Krylov run).
+    let (a, b) = (pairs.eigenvalues[1], eleven.eigenvalues[1]);
+    assert!((a - b).abs() <= 1e-10 * b, "{a} against {b}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
