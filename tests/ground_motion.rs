@@ -515,15 +515,14 @@ fn a_slow_uniform_ground_acceleration_loads_the_deck_statically() {
 fn an_imported_beam_feels_the_same_ground_motion() {
     let dir = folder("imported");
     harmonic_csv(&dir);
-    let beam = format!(
-        "name: quake\n\
-         bridge: {{type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,\n\
-         \x20 elements_per_span: 20, damping: {{type: modal, ratio: 0.02}}, modes: {{count: 6}}}}\n\
-         vehicles:\n  - {{type: moving_force, loads: [1.0e5], speed: 12.5}}\n\
-         solver: {{time_step: 2.5e-4}}\n\
-         ground_motion:\n  - {{file: harmonic.csv}}\n\
-         record:\n  - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n"
-    );
+    let beam = "name: quake\n\
+         bridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,\n\
+         \x20 elements_per_span: 20, damping: {type: modal, ratio: 0.02}, modes: {count: 6}}\n\
+         vehicles:\n  - {type: moving_force, loads: [1.0e5], speed: 12.5}\n\
+         solver: {time_step: 2.5e-4}\n\
+         ground_motion:\n  - {file: harmonic.csv}\n\
+         record:\n  - {name: midspan, quantity: bridge_displacement, x: 12.5}\n"
+        .to_string();
     export_beam(&dir, &beam);
     let built = run_in(&dir, &beam);
     let exported = dir.join("exported").join("scenario.yaml");
