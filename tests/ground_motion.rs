@@ -515,23 +515,31 @@ fn a_slow_uniform_ground_acceleration_loads_the_deck_statically() {
 fn an_imported_beam_feels_the_same_ground_motion() {
     let dir = folder("imported");
     harmonic_csv(&dir);
-    let csv = dir.join("harmonic.csv");
-    let beam = format!(
-        "name: quake\n\
-         bridge: {{type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,\n\
-         \x20 elements_per_span: 20, damping: {{type: modal, ratio: 0.02}}, modes: {{count: 6}}}}\n\
-         vehicles:\n  - {{type: moving_force, loads: [1.0e5], speed: 12.5}}\n\
-         solver: {{time_step: 2.5e-4}}\n\
-         ground_motion:\n  - {{file: \"{}\"}}\n\
-         record:\n  - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n",
-        csv.display()
-    );
+    let beam = "name: quake\n\
+         bridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,\n\
+         \x20 elements_per_span: 20, damping: {type: modal, ratio: 0.02}, modes: {count: 6}}\n\
+         vehicles:\n  - {type: moving_force, loads: [1.0e5], speed: 12.5}\n\
+         solver: {time_step: 2.5e-4}\n\
+         ground_motion:\n  - {file: harmonic.csv}\n\
+         record:\n  - {name: midspan, quantity: bridge_displacement, x: 12.5}\n"
+        .to_string();
     export_beam(&dir, &beam);
     let built = run_in(&dir, &beam);
     let exported = dir.join("exported").join("scenario.yaml");
     let text = std::fs::read_to_string(&exported).unwrap();
     assert!(text.contains("fe_import") && text.contains("ground_motion"));
-    let loaded = load_str(&text, exported.to_str().unwrap()).unwrap_or_else(|e| panic!("{e}"));
+    // The exported scene names the record by its absolute path, outside
+    // its own folder: it is read with the record's folder allowed, as
+    // `--data-dir` does.
+    let options = vbi::scenario::LoadOptions {
+        data: vbi::scenario::DataAccess {
+            data_dirs: vec![dir.clone()],
+            confine_to: None,
+        },
+        ..Default::default()
+    };
+    let loaded = vbi::scenario::load_str_with(&text, exported.to_str().unwrap(), options)
+        .unwrap_or_else(|e| panic!("{e}"));
     let imported = simulate(loaded, &mut |_, _| {}).unwrap();
     let (a, b) = (column(&built, "midspan"), column(&imported, "midspan"));
     assert_eq!(a.len(), b.len());
@@ -643,7 +651,6 @@ fn doubled_model(dir: &std::path::Path, exported: &std::path::Path, record: &str
 fn a_lateral_record_shakes_an_imported_model_sideways() {
     let dir = folder("lateral");
     harmonic_csv(&dir);
-    let csv = dir.join("harmonic.csv");
     let beam = |stiffness: f64, record: &str| {
         format!(
             "name: quake\n\
@@ -655,11 +662,10 @@ fn a_lateral_record_shakes_an_imported_model_sideways() {
              record:\n  - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n"
         )
     };
-    let vertical_record = format!("ground_motion:\n  - {{file: \"{}\"}}\n", csv.display());
-    let lateral_record = format!(
-        "ground_motion:\n  - {{file: \"{}\", direction: lateral}}\n",
-        csv.display()
-    );
+    // The scenes are in `dir`, beside the record.
+    let vertical_record = "ground_motion:\n  - {file: harmonic.csv}\n".to_string();
+    let lateral_record =
+        "ground_motion:\n  - {file: harmonic.csv, direction: lateral}\n".to_string();
     export_beam(&dir, &beam(EI, ""));
     let scene3d = doubled_model(&dir, &dir.join("exported"), &lateral_record);
     let imported = run_in(&dir, &scene3d);

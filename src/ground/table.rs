@@ -180,4 +180,3 @@ mod tests {
         assert!(parse("0,0\n").is_err());
     }
 }
-
