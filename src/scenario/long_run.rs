@@ -197,7 +197,7 @@ impl LongRun<'_> {
                 Some(a) if a.2 <= b.2 => Some(a),
                 _ => Some(b),
             })?;
-        if !(interval < without) {
+        if interval.is_nan() || interval >= without {
             return None;
         }
         let needed = self.duration / limit;

@@ -584,12 +584,12 @@ fn untab_all(text: &str) -> (String, Vec<usize>) {
                 .count();
             let next = chars.get(i + 1 + run).copied();
             let content = next.is_some_and(|c| !matches!(c, '\n' | '\r' | '#'));
-            for k in i + 1..i + 1 + run {
-                if content && chars[k] == '\t' {
+            for (k, &c) in chars.iter().enumerate().skip(i + 1).take(run) {
+                if content && c == '\t' {
                     out.push(' ');
                     replaced.push(k);
                 } else {
-                    out.push(chars[k]);
+                    out.push(c);
                 }
             }
             i += run;
