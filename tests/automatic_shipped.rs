@@ -43,15 +43,21 @@ const TRACK_GAP_SCENES: [&str; 1] = ["viaduct-2span-axle-loads.yaml"];
 
 /// The same gap, much wider, where a 3D car's heavy wheelsets are held on
 /// the rails (permanent contact) as they step onto the free rail ends
-/// (issue 13's closing note): embs-viaduct-ave-s103-quake at the automatic
-/// 564 modes (4 × the bogies' 69 Hz lateral frequency) against 1,128
-/// modes and Δt/4 — deck vertical 9.9 %, deck vertical acceleration
-/// (30 Hz) 22.4 %, deck lateral 7.5 %, its acceleration 18.0 %, body
-/// lateral 0.7 %, its acceleration 14.1 %; the same by the coupled solver
-/// (21.9 % worst), and with the static contact correction on every
-/// contact, so not quasi-static truncation. Every quantity of the scene is held to
-/// this bound so the gap cannot silently grow; the run's advice says so.
-const WHEELSET_GAP_TOLERANCE: f64 = 0.25;
+/// (issue 13's closing note; issue 24 point 4, open): embs-viaduct-ave-s103-quake
+/// at the automatic 564 modes (4 × the bogies' 69 Hz lateral frequency)
+/// against 1,128 modes and Δt/4. Measured 2026-11-27 on the scene as issue
+/// 24 remade it (German low-interference track faded in over the car's 5 m
+/// start, the record's peak during the crossing, deck-node records beside
+/// the rail records): deck node vertical 2.3 %, its acceleration (30 Hz)
+/// 25.3 %, deck node lateral 0.23 %, its acceleration 1.5 %, rail vertical
+/// 11.6 % and 25.3 %, rail lateral 2.1 % and 16.0 %, wheel force 10.1 %,
+/// lateral contact force 2.4 %, body lateral 0.02 %, its acceleration
+/// 0.9 %. (On the FRA class 5 scene before it: deck vertical 9.9 %, its
+/// acceleration 22.4 %, lateral 7.5 % and 18.0 %.) Not quasi-static
+/// truncation (the static contact correction acts on every contact). Every
+/// quantity of the scene is held to this bound, 1.2 × the worst measured,
+/// so the gap cannot silently grow; the run's advice says so.
+const WHEELSET_GAP_TOLERANCE: f64 = 0.30;
 const WHEELSET_GAP_SCENES: [&str; 1] = ["embs-viaduct-ave-s103-quake.yaml"];
 
 /// The scene's text without an explicit mode count or time step.

@@ -338,13 +338,14 @@ fn the_lateral_ground_load_reaches_the_deck_as_computed_by_hand() {
          \x20 rail_height: 0.0, damping: {{type: modal, ratio: 0.02}},\n\
          \x20 modes: {{count: 12, static_correction: false}}}}\n\
          vehicles: [{{type: train_3d, speed: 300 km/h, start_position: -40.0}}]\n\
-         ground_motion: [{{file: \"{}\", direction: lateral}}]\n\
+         ground_motion: [{{file: harmonic.csv, direction: lateral}}]\n\
          contact: {{type: permanent}}\n\
          solver: {{method: embs, time_step: 1.0e-4}}\n\
-         record: [{{name: deck_lateral, quantity: bridge_displacement, x: 12.5, direction: uy}}]\n",
-        csv.display()
+         record: [{{name: deck_lateral, quantity: bridge_displacement, x: 12.5, direction: uy}}]\n"
     );
-    let loaded = load_str(&yaml, "embs-ground.yaml").unwrap_or_else(|e| panic!("{e}"));
+    // The scene is a file of the record's folder: a scene reads only inside its own.
+    let scene_file = dir.join("embs-ground.yaml");
+    let loaded = load_str(&yaml, scene_file.to_str().unwrap()).unwrap_or_else(|e| panic!("{e}"));
     let bridge = loaded.bridge.clone();
     let modes = bridge.mode_count();
     let lateral = |x: f64| {

@@ -272,13 +272,19 @@ mod tests {
             3
         );
         assert_eq!(parse(&WEST2.replace(".0100", "-1"), 100).unwrap_err().0, 4);
-        let huge = WEST2.replace("NPTS=     5", "NPTS= 1000000000000");
+        // More samples than the budget allows, within a plausible duration:
+        // the budget refuses it (before anything is allocated).
+        let many = WEST2.replace("NPTS=     5", "NPTS=  1000");
         assert!(
-            parse(&huge, 100)
+            parse(&many, 100)
                 .unwrap_err()
                 .1
                 .contains("limits.ground_points")
         );
+        // 10^12 samples at 0.01 s would last 317 years: refused at line 4
+        // before the budget is even asked.
+        let huge = WEST2.replace("NPTS=     5", "NPTS= 1000000000000");
+        assert!(parse(&huge, 100).unwrap_err().1.contains("one day"));
         assert_eq!(parse("PEER\nX\n", 100).unwrap_err().0, 2);
     }
 }

@@ -221,7 +221,10 @@ pub(super) fn resolve(
                 Source::Stiffness => ("bridge.stiffness".to_string(), Some(&stiffness_file.shown)),
                 Source::Mass => ("bridge.mass".to_string(), Some(&mass_file.shown)),
                 Source::Damping => ("bridge.damping.file".to_string(), damping_shown.as_ref()),
-                Source::DofMap => ("bridge.dof_map".to_string(), dof_map_file.as_ref().map(|f| &f.shown)),
+                Source::DofMap => (
+                    "bridge.dof_map".to_string(),
+                    dof_map_file.as_ref().map(|f| &f.shown),
+                ),
                 Source::Constrained(i) => (format!("bridge.constrained[{i}]"), None),
                 Source::Rail(i) => (format!("bridge.rails[{i}]"), None),
                 Source::Track => ("bridge.track".to_string(), None),

@@ -95,7 +95,10 @@ pub(super) fn resolve(
         };
         // A file listed twice is read once (its samples still count twice
         // in the budget below).
-        let key = (data.real.clone(), component.units.map(AccelerationUnit::name));
+        let key = (
+            data.real.clone(),
+            component.units.map(AccelerationUnit::name),
+        );
         let samples = match read_once.get(&key) {
             Some(samples) => samples.clone(),
             None => {

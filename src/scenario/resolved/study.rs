@@ -38,11 +38,27 @@ pub struct ResonanceCheck {
     /// Highest mode frequency of the deck acceleration, Hz.
     pub max_frequency: f64,
     /// The bridge's first natural frequency f₀, Hz: the trains resonate at
-    /// f₀·D/k (D the coach length, k = 1, 2, …).
+    /// f₀·D/k (D the coach length, k = 1, 2, …). Derived from the bridge
+    /// on every load, so resolved.yaml does not write it (the format has
+    /// no such key).
+    #[serde(skip)]
     pub first_frequency: f64,
-    /// The additional damping of EN 1991-2 6.4.6.3.1(3), when asked for.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// The additional damping of EN 1991-2 6.4.6.3.1(3), when asked for;
+    /// resolved.yaml writes the file's `additional_damping: true` (Δζ is
+    /// derived again from the span on load).
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "additional_damping_asked"
+    )]
     pub additional_damping: Option<AdditionalDamping>,
+}
+
+/// `additional_damping` as the format writes it: whether it was asked for.
+fn additional_damping_asked<S: serde::Serializer>(
+    damping: &Option<AdditionalDamping>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    serializer.serialize_bool(damping.is_some())
 }
 
 /// EN 1991-2 6.4.6.3.1(3): the damping added to every mode for spans
