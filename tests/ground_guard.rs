@@ -47,10 +47,8 @@ fn constant_record(dir: &std::path::Path) -> String {
     }
     let file = dir.join("constant.csv");
     std::fs::write(&file, text).unwrap();
-    format!(
-        "ground_motion:\n  - {{file: \"{}\", direction: vertical}}\n",
-        file.display()
-    )
+    // Named beside the scene: a scene reads only inside its own folder.
+    "ground_motion:\n  - {file: constant.csv, direction: vertical}\n".to_string()
 }
 
 fn peak(outcome: &Outcome, name: &str) -> f64 {
@@ -92,12 +90,11 @@ fn a_light_force_under_the_shipped_record_runs_to_the_end() {
     let dir = folder("shipped");
     let record =
         PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/records/synthetic-vertical.AT2");
-    let ground = format!(
-        "ground_motion:\n  - {{file: \"{}\", direction: vertical}}\n",
-        record.display()
-    );
+    // A copy beside the scene: a scene reads only inside its own folder.
+    std::fs::copy(&record, dir.join("synthetic-vertical.AT2")).unwrap();
+    let ground = "ground_motion:\n  - {file: synthetic-vertical.AT2, direction: vertical}\n";
     let outcome =
-        try_run(&dir, &light_force_scene(&ground, 2.5, "")).unwrap_or_else(|e| panic!("{e}"));
+        try_run(&dir, &light_force_scene(ground, 2.5, "")).unwrap_or_else(|e| panic!("{e}"));
     let w = peak(&outcome, "midspan");
     eprintln!("peak mid-span {w:.4e} m");
     assert!(w.is_finite() && w > 0.0);

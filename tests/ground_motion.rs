@@ -567,6 +567,20 @@ const LATERAL_STIFFENING: f64 = 1.7;
 /// [`LATERAL_STIFFENING`] on the same nodes, uncoupled. Returns the
 /// scenario text of a crossing of it with a lateral record.
 fn doubled_model(dir: &std::path::Path, exported: &std::path::Path, record: &str) -> String {
+    // The exported rotations are ry = −∂w/∂x; the lateral copy's rz must be
+    // +∂v/∂x (right-handed about +z), so every copied entry with exactly
+    // one rotation index changes sign (an exact change of variable; the
+    // import refuses the copy otherwise, issue 22).
+    let rotations: std::collections::HashSet<usize> =
+        std::fs::read_to_string(exported.join("dofs.csv"))
+            .unwrap()
+            .lines()
+            .skip(1)
+            .filter_map(|row| {
+                let w: Vec<&str> = row.split(',').collect();
+                (w[2] != "uz").then(|| w[0].parse().unwrap())
+            })
+            .collect();
     let matrix = |name: &str, factor: f64| {
         let text = std::fs::read_to_string(exported.join(name)).unwrap();
         let mut lines = text.lines().filter(|l| !l.starts_with('%'));
@@ -597,7 +611,12 @@ fn doubled_model(dir: &std::path::Path, exported: &std::path::Path, record: &str
             out.push_str(&format!("{i} {j} {v:e}\n"));
         }
         for &(i, j, v) in &entries {
-            out.push_str(&format!("{} {} {:e}\n", i + n, j + n, v * factor));
+            let sign = if rotations.contains(&i) != rotations.contains(&j) {
+                -1.0
+            } else {
+                1.0
+            };
+            out.push_str(&format!("{} {} {:e}\n", i + n, j + n, sign * v * factor));
         }
         std::fs::write(dir.join(name), out).unwrap();
         n

@@ -4,10 +4,25 @@
 //! mode's own printed frequency keeps that mode.
 
 use vbi::run::{Outcome, resolved_yaml, simulate};
-use vbi::scenario::{Loaded, load_str};
+use vbi::scenario::{DataAccess, LoadOptions, Loaded, load_str_with};
 
+/// Loads `yaml`; data files may be read from the shipped scenarios' folder
+/// tree (resolved.yaml names them by absolute path, which a scene may read
+/// only from a folder the user allows: `--data-dir`).
 fn load(yaml: &str, name: &str) -> Loaded {
-    load_str(yaml, name).unwrap_or_else(|e| panic!("{name}: {e}"))
+    let options = LoadOptions {
+        data: DataAccess {
+            data_dirs: vec![std::path::PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/scenarios"
+            ))],
+            confine_to: None,
+        },
+        // As `load_str`: a program that loads a file chose it.
+        trust_limits: true,
+        ..Default::default()
+    };
+    load_str_with(yaml, name, options).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
 fn run(loaded: Loaded, name: &str) -> Outcome {
