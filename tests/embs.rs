@@ -623,10 +623,10 @@ fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
         let loaded = load_str(yaml, file).unwrap_or_else(|e| panic!("{e}"));
         simulate(loaded, &mut |_, _| {})
     };
-    let refused = run(&suspension_scene(0.1, false, ""))
-        .err()
-        .expect("refused")
-        .to_string();
+    let Err(refused) = run(&suspension_scene(0.1, false, "")) else {
+        panic!("refused")
+    };
+    let refused = refused.to_string();
     eprintln!("{refused}");
     for words in [
         "lateral",
@@ -653,15 +653,15 @@ fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
         .collect::<Vec<_>>()
         .join("\n");
     run(&vertical_only).unwrap_or_else(|e| panic!("{e}"));
-    let bad = load_str(
+    let Err(bad) = load_str(
         &suspension_scene(0.1, false, "")
             .replace("method: embs,", "method: coupled,")
             .replace("compare: false,", "allow_large_epsilon: true,"),
         file,
-    )
-    .err()
-    .expect("refused")
-    .to_string();
+    ) else {
+        panic!("refused")
+    };
+    let bad = bad.to_string();
     assert!(
         bad.contains("`allow_large_epsilon` applies to `method: embs` only"),
         "{bad}"

@@ -410,7 +410,8 @@ impl Pencil {
             self.refine_shifted(eigenvalues, vectors, &residuals, stiffness)?;
             sort_pairs(eigenvalues, vectors);
             let refined = energy_residuals(product, &self.mass, factor, eigenvalues, vectors)?;
-            if !(worst(&refined) < before) {
+            // `worst` maps NaN to infinity, so the comparison is total.
+            if worst(&refined) >= before {
                 eigenvalues.copy_from_slice(&kept_values);
                 *vectors = kept_vectors;
                 break;
