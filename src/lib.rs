@@ -11,8 +11,10 @@
 pub mod bridge;
 pub mod contact;
 pub mod export;
+pub mod format_reference;
 pub mod generate;
 pub mod ground;
+pub mod init;
 pub mod model;
 pub mod record;
 pub mod report;

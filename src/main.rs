@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use vbi::scenario::{self, LoadError};
@@ -104,8 +104,13 @@ enum Command {
         #[arg(required = true)]
         files: Vec<PathBuf>,
     },
-    /// Print the JSON Schema of the scenario format.
-    Schema,
+    /// Print the JSON Schema of the scenario format (with --markdown: the
+    /// key reference, docs/format.md, generated from it).
+    Schema {
+        /// Print the readable key reference (Markdown) instead of the schema.
+        #[arg(long)]
+        markdown: bool,
+    },
     /// Write a scene's bridge as an imported FE model: `vbi export beam
     /// SCENE --out DIR` writes K.mtx, M.mtx (Matrix Market), dofs.csv,
     /// rail.csv and scenario.yaml (the same crossing on those files).
@@ -160,6 +165,31 @@ enum Command {
         /// its own); may be repeated.
         #[arg(long, value_name = "NAME")]
         exclude: Vec<String>,
+    },
+    /// Print a shell completion script: `vbi completions bash >
+    /// ~/.local/share/bash-completion/completions/vbi` (zsh: a file `_vbi` on
+    /// `$fpath`; fish: `~/.config/fish/completions/vbi.fish`).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the manual page (roff): `vbi man > ~/.local/share/man/man1/vbi.1`.
+    Man,
+    /// Write a commented starter scene (and the schema beside it, for the
+    /// editor) that `vbi check` accepts and `vbi run` runs.
+    Init {
+        /// The bridge.
+        #[arg(long, value_enum, default_value = "beam")]
+        bridge: vbi::init::StarterBridge,
+        /// The vehicle.
+        #[arg(long, value_enum, default_value = "oscillator")]
+        vehicle: vbi::init::StarterVehicle,
+        /// The scene file to write.
+        #[arg(default_value = "scene.yaml")]
+        file: PathBuf,
+        /// Replace an existing file.
+        #[arg(long)]
+        force: bool,
     },
 }
 
@@ -299,9 +329,39 @@ fn main() -> ExitCode {
             force,
         } => merge(&parts, &out, &options, quiet, force),
         Command::Check { files } => check(&files, &load),
-        Command::Schema => {
-            out!("{}", vbi::schema::schema_json());
+        Command::Schema { markdown } => {
+            let schema = vbi::schema::schema_json();
+            if markdown {
+                out!("{}", vbi::format_reference::markdown(&schema));
+            } else {
+                out!("{schema}");
+            }
             ExitCode::SUCCESS
+        }
+        Command::Completions { shell } => {
+            let mut script = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "vbi", &mut script);
+            out!("{}", String::from_utf8_lossy(&script));
+            ExitCode::SUCCESS
+        }
+        Command::Init {
+            bridge,
+            vehicle,
+            file,
+            force,
+        } => init(bridge, vehicle, &file, force),
+        Command::Man => {
+            let mut page = Vec::new();
+            match clap_mangen::Man::new(Cli::command()).render(&mut page) {
+                Ok(()) => {
+                    out!("{}", String::from_utf8_lossy(&page));
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    errln!("error: could not render the manual page: {e}");
+                    ExitCode::from(EXIT_FAILED)
+                }
+            }
         }
         Command::Export { what: _, file, out } => match load(&file) {
             Ok(loaded) => match vbi::export::export_beam(&loaded.scenario, &out) {
@@ -835,6 +895,55 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
                 study.runs[*i].label
             ),
             None => outln!("  {name}: no run within {tolerance} %"),
+        }
+    }
+}
+
+/// `vbi init`: the starter scene, and `vbi.schema.json` beside it so the
+/// modeline (a path relative to the scene) works wherever the folder is.
+fn init(
+    bridge: vbi::init::StarterBridge,
+    vehicle: vbi::init::StarterVehicle,
+    file: &Path,
+    force: bool,
+) -> ExitCode {
+    const SCHEMA_FILE: &str = "vbi.schema.json";
+    let text = match vbi::init::starter(bridge, vehicle, SCHEMA_FILE) {
+        Ok(text) => text,
+        Err(e) => {
+            errln!("error: {e}");
+            return ExitCode::from(EXIT_INVALID);
+        }
+    };
+    if file.exists() && !force {
+        errln!(
+            "error: {} exists: choose another file name or add --force to replace it",
+            file.display()
+        );
+        return ExitCode::from(EXIT_INVALID);
+    }
+    let folder = match file.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let schema_path = folder.join(SCHEMA_FILE);
+    let written = std::fs::create_dir_all(&folder)
+        .and_then(|()| vbi::report::atomic::write_atomic(file, text.as_bytes()))
+        .and_then(|()| {
+            vbi::report::atomic::write_atomic(&schema_path, vbi::schema::schema_json().as_bytes())
+        });
+    match written {
+        Ok(()) => {
+            errln!(
+                "wrote {} (and {} for the editor); next: vbi check {0}, then vbi run {0}",
+                file.display(),
+                schema_path.display()
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            errln!("error: {}: {e}", file.display());
+            ExitCode::from(EXIT_FAILED)
         }
     }
 }

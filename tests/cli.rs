@@ -567,3 +567,271 @@ fn run_with_svg_writes_the_history_as_svg_too() {
     }
     assert!(out_dir.join("history.png").is_file());
 }
+
+/// `vbi completions SHELL` prints a script that names every subcommand (a
+/// shell loads it as is), and `vbi man` a roff page with the same commands;
+/// an unknown shell is a usage error (exit 2), not a panic.
+#[test]
+fn completions_and_man_page_generate() {
+    let dir = Scratch::new("cli", "completions");
+    let subcommands = [
+        "run", "merge", "check", "schema", "export", "modes", "generate", "converge",
+    ];
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let out = vbi(&["completions", shell], dir.dir());
+        assert_exit(&out, 0);
+        let script = text(&out.stdout);
+        for name in subcommands {
+            assert!(
+                script.contains(name),
+                "{shell} completions lack `{name}`:\n{script}"
+            );
+        }
+        assert!(
+            script.contains("--allow-large"),
+            "{shell}: no global options"
+        );
+    }
+    // bash accepts the script as syntax (where bash exists).
+    if let Ok(status) = Command::new("bash")
+        .arg("-n")
+        .arg("-c")
+        .arg(text(&vbi(&["completions", "bash"], dir.dir()).stdout))
+        .status()
+    {
+        assert!(status.success(), "bash -n rejects the completion script");
+    }
+    let man = vbi(&["man"], dir.dir());
+    assert_exit(&man, 0);
+    let page = text(&man.stdout);
+    assert!(
+        page.starts_with(".ie") || page.contains(".TH vbi"),
+        "{page}"
+    );
+    assert!(page.contains(".TH vbi 1"), "no man-page header:\n{page}");
+    for name in subcommands {
+        assert!(page.contains(name), "man page lacks `{name}`");
+    }
+    let bad = vbi(&["completions", "cmd.exe"], dir.dir());
+    assert_exit(&bad, 2);
+    assert!(
+        text(&bad.stderr).contains("possible values"),
+        "{}",
+        text(&bad.stderr)
+    );
+}
+
+/// `vbi init` writes, for every bridge × vehicle pair the models combine, a
+/// starter scene that `vbi check` accepts without a warning and `vbi run`
+/// runs (a resonance check may fail its verdict, exit 3, never its run), and
+/// the schema beside it for the modeline; a pair the models do not combine
+/// is refused with the valid pairs (exit 2), and an existing file is not
+/// replaced without --force.
+#[test]
+fn init_starters_check_and_run_for_every_pair() {
+    let dir = Scratch::new("cli", "init");
+    let bridges = ["beam", "plate"];
+    let vehicles = [
+        "moving_force",
+        "oscillator",
+        "h20_44",
+        "rail_car",
+        "train",
+        "train_3d",
+        "hslm",
+    ];
+    let railway = ["rail_car", "train", "train_3d", "hslm"];
+    for bridge in bridges {
+        for vehicle in vehicles {
+            let folder = dir.path(&format!("{bridge}-{vehicle}"));
+            let scene = folder.join("scene.yaml");
+            let out = vbi(
+                &[
+                    "init",
+                    "--bridge",
+                    bridge,
+                    "--vehicle",
+                    vehicle,
+                    scene.to_str().unwrap(),
+                ],
+                dir.dir(),
+            );
+            if bridge == "plate" && railway.contains(&vehicle) {
+                assert_exit(&out, 2);
+                assert!(
+                    text(&out.stderr).contains("no starter scene"),
+                    "{}",
+                    text(&out.stderr)
+                );
+                assert!(!scene.exists());
+                continue;
+            }
+            assert_exit(&out, 0);
+            let written = std::fs::read_to_string(&scene).unwrap();
+            assert!(
+                written.starts_with("# yaml-language-server: $schema=vbi.schema.json\n"),
+                "{written}"
+            );
+            let schema = std::fs::read_to_string(folder.join("vbi.schema.json")).unwrap();
+            let committed =
+                std::fs::read_to_string(manifest_dir().join("schema/vbi.schema.json")).unwrap();
+            assert_eq!(
+                schema, committed,
+                "the schema beside the starter is vbi's own"
+            );
+            let check = vbi(&["check", scene.to_str().unwrap()], &folder);
+            assert_exit(&check, 0);
+            assert!(
+                !text(&check.stderr).contains("warning"),
+                "{bridge} × {vehicle} starter warns:\n{}",
+                text(&check.stderr)
+            );
+            let run = vbi(
+                &[
+                    "run",
+                    "--quiet",
+                    scene.to_str().unwrap(),
+                    "--out",
+                    "results",
+                ],
+                &folder,
+            );
+            let code = run.status.code();
+            assert!(
+                code == Some(0) || (vehicle == "hslm" && code == Some(3)),
+                "{bridge} × {vehicle}: exit {code:?}\n{}",
+                text(&run.stderr)
+            );
+            assert!(folder.join("results/summary.json").is_file());
+        }
+    }
+    // An existing file is kept unless --force.
+    let scene = dir.path("beam-oscillator/scene.yaml");
+    let again = vbi(&["init", scene.to_str().unwrap()], dir.dir());
+    assert_exit(&again, 2);
+    assert!(
+        text(&again.stderr).contains("--force"),
+        "{}",
+        text(&again.stderr)
+    );
+    let forced = vbi(&["init", "--force", scene.to_str().unwrap()], dir.dir());
+    assert_exit(&forced, 0);
+}
+
+/// docs/format.md is exactly what `vbi schema --markdown` generates from the
+/// schema (regenerate it with `cargo run --release -- schema --markdown >
+/// docs/format.md`), it covers every top-level key, and each example that is
+/// not cut from a shipped scene validates when added to one.
+#[test]
+fn format_reference_matches_the_schema_and_its_examples_validate() {
+    let dir = Scratch::new("cli", "format-reference");
+    let out = vbi(&["schema", "--markdown"], dir.dir());
+    assert_exit(&out, 0);
+    let generated = text(&out.stdout);
+    let committed = std::fs::read_to_string(manifest_dir().join("docs/format.md"))
+        .expect("docs/format.md is committed");
+    assert!(
+        generated == committed,
+        "docs/format.md differs from `vbi schema --markdown`: regenerate it"
+    );
+    for key in [
+        "name",
+        "bridge",
+        "vehicles",
+        "surface",
+        "contact",
+        "solver",
+        "record",
+        "study",
+        "limits",
+        "ground_motion",
+        "envelopes",
+        "output",
+        "gravity",
+    ] {
+        assert!(
+            generated.contains(&format!("| `{key}`")),
+            "no row for `{key}`"
+        );
+    }
+    assert!(
+        generated.contains("`type: plate`"),
+        "union alternatives listed"
+    );
+    let base = std::fs::read_to_string(manifest_dir().join("scenarios/yang-yau-sprung-mass.yaml"))
+        .unwrap();
+    for (key, snippet) in vbi::format_reference::SNIPPET_EXAMPLES {
+        let scene = dir.path(&format!("{key}.yaml"));
+        std::fs::write(&scene, format!("{base}{snippet}")).unwrap();
+        let check = vbi(&["check", scene.to_str().unwrap()], dir.dir());
+        assert_exit(&check, 0);
+        assert!(
+            generated.contains(snippet),
+            "the `{key}` example is in the reference"
+        );
+    }
+}
+
+/// Every scene under examples/ validates without a warning and runs (the
+/// resonance check, whose study is the slowest, validates; the shipped
+/// hslm-resonance-20m golden runs that study), each from a copy of the
+/// examples folder so results land in the scratch folder.
+#[test]
+fn examples_check_and_run() {
+    let dir = Scratch::new("cli", "examples");
+    let source = manifest_dir().join("examples");
+    let copy = dir.path("examples");
+    copy_tree(&source, &copy);
+    let scenes = [
+        ("road-bridge-check.yaml", true),
+        ("railway-resonance-check.yaml", false),
+        ("separation-study.yaml", true),
+        ("seismic-crossing.yaml", true),
+        ("imported-fe/scene.yaml", true),
+    ];
+    let listed = std::fs::read_to_string(source.join("README.md")).unwrap();
+    for (scene, run) in scenes {
+        assert!(
+            listed.contains(&format!("`{scene}`")),
+            "examples/README.md lists {scene}"
+        );
+        let check = vbi(&["check", scene], &copy);
+        assert_exit(&check, 0);
+        assert!(
+            !text(&check.stderr).contains("warning"),
+            "{scene} warns:\n{}",
+            text(&check.stderr)
+        );
+        if run {
+            let out = vbi(&["run", "--quiet", scene, "--out", "out"], &copy);
+            assert_exit(&out, 0);
+            assert!(copy.join("out/summary.json").is_file());
+            std::fs::remove_dir_all(copy.join("out")).unwrap();
+        }
+    }
+    // Every YAML file in examples/ is one of the above.
+    let mut found = 0;
+    for entry in std::fs::read_dir(&source)
+        .unwrap()
+        .chain(std::fs::read_dir(source.join("imported-fe")).unwrap())
+    {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "yaml") {
+            found += 1;
+        }
+    }
+    assert_eq!(found, scenes.len(), "an example scene is not tested");
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_tree(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), target).unwrap();
+        }
+    }
+}
