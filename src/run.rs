@@ -243,8 +243,11 @@ pub fn folder_owner(out: &Path) -> Option<String> {
 pub fn mark_folder(out: &Path, source: &str) -> std::io::Result<()> {
     std::fs::create_dir_all(out)?;
     let source: String = source.chars().filter(|c| !c.is_control()).collect();
-    crate::report::write_atomic(&out.join(OWNER_FILE), format!("{FROM}{source}\n").as_bytes())
-        .map_err(std::io::Error::other)
+    crate::report::write_atomic(
+        &out.join(OWNER_FILE),
+        format!("{FROM}{source}\n").as_bytes(),
+    )
+    .map_err(std::io::Error::other)
 }
 
 /// Refuses to write the results of the scene file `source` (canonical) into

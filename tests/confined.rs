@@ -320,7 +320,8 @@ fn converge_and_shard_folders_are_claimed_like_run_folders() {
         Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/hostile/cases/ok-plain.yaml"),
     )
     .unwrap();
-    let sweep = format!("{scene}study: {{type: speed_sweep, speeds: {{from: 10, to: 20, count: 4}}}}\n");
+    let sweep =
+        format!("{scene}study: {{type: speed_sweep, speeds: {{from: 10, to: 20, count: 4}}}}\n");
     fs::create_dir_all(dir.join("flip")).unwrap();
     for (name, text) in [("fe.yaml", &scene), ("sweep.yaml", &sweep)] {
         fs::write(dir.join(name), text).unwrap();
@@ -366,11 +367,28 @@ fn converge_and_shard_folders_are_claimed_like_run_folders() {
     assert!(!dir.join("results/sweep/resolved.yaml").exists());
     accepted(&["run", "-q", "fe.yaml"], "a run");
     refused(
-        &["run", "-q", "--shard", "1/2", "--out", "results/fe", "sweep.yaml"],
+        &[
+            "run",
+            "-q",
+            "--shard",
+            "1/2",
+            "--out",
+            "results/fe",
+            "sweep.yaml",
+        ],
         "a shard into another scene's run folder",
     );
     accepted(
-        &["run", "-q", "--shard", "1/2", "--out", "results/fe", "--force", "sweep.yaml"],
+        &[
+            "run",
+            "-q",
+            "--shard",
+            "1/2",
+            "--out",
+            "results/fe",
+            "--force",
+            "sweep.yaml",
+        ],
         "a shard with --force",
     );
 }

@@ -891,7 +891,11 @@ fn ground_terms(
             .imported_dof(node, record.direction.unwrap_or_default())
     {
         let participation = |records: bool, factors: &[f64]| -> Vec<f64> {
-            if records { factors.to_vec() } else { Vec::new() }
+            if records {
+                factors.to_vec()
+            } else {
+                Vec::new()
+            }
         };
         if let Some((v, l)) = model.bridge.dof_ground_static_shares(
             dof,
