@@ -342,7 +342,9 @@ fn converge_and_shard_folders_are_claimed_like_run_folders() {
         assert_eq!(code, Some(0), "{what}: {stderr}");
     };
     // Converge.
-    let converge = |file: &str| vec!["converge", "-q", "--levels", "2", file];
+    fn converge(file: &str) -> [&str; 5] {
+        ["converge", "-q", "--levels", "2", file]
+    }
     accepted(&converge("fe.yaml"), "the first converge");
     let table = fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap();
     accepted(&converge("fe.yaml"), "the same scene again");

@@ -394,7 +394,7 @@ case("phys-rayleigh-frequency-1e-9", "rejected", "Rayleigh damping matched at 1 
      "outside the physically plausible range 0.001 to 100000 Hz")
 case("phys-lateral-position-1e6", "rejected", "a vehicle 1,000 km across a 13 m deck",
      scene(bridge=PLATE, vehicles="  - {type: moving_force, loads: [1.0e5], speed: 20.0, "
-           "@@lateral_position: 1.0e6}\n"),
+           "lateral_position: @@1.0e6}\n"),
      "fall off the deck, which spans 0 to 13 m")
 
 # --- many errors at once ----------------------------------------------------------
