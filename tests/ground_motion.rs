@@ -859,8 +859,9 @@ fn an_imported_model_offers_lateral_mode_components() {
 /// Then the same under the record as a vertical one, at the node's uz (its
 /// share was read at the track's x = 0 before, not at the node). Measured
 /// 2026-11-27: lateral, with the correction 1.36e-4 of the peak (node and
-/// rail alike), without it 2.38e-3; bound 5e-4 with it (3.7×), and without
-/// it at least 10× worse. Vertical: see the bound below.
+/// rail alike), without it 2.38e-3; vertical at the node 1.85e-4 and
+/// 7.36e-3 (the moving force's truncation included). Bound 6e-4 with the
+/// correction (4.4× and 3.2× measured), and without it at least 10× worse.
 #[test]
 fn the_lateral_static_correction_of_an_imported_model_converges() {
     let dir = folder("lateral-correction");
@@ -897,7 +898,7 @@ fn the_lateral_static_correction_of_an_imported_model_converges() {
             eprintln!(
                 "{direction} record, {name}, 4 modes: corrected {with:.2e}, plain {without:.2e} of the peak"
             );
-            assert!(with <= 5e-4, "{name} corrected: {with:.2e}");
+            assert!(with <= 6e-4, "{name} corrected: {with:.2e}");
             assert!(
                 without >= 10.0 * with,
                 "{name}: the correction should help: {without:.2e} vs {with:.2e}"
