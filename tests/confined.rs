@@ -346,8 +346,8 @@ fn converge_and_shard_folders_are_claimed_like_run_folders() {
         ["converge", "-q", "--levels", "2", file]
     }
     accepted(&converge("fe.yaml"), "the first converge");
-    let table = fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap();
     accepted(&converge("fe.yaml"), "the same scene again");
+    let table = fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap();
     refused(&converge("flip/fe.yaml"), "another scene's converge");
     assert_eq!(
         fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap(),
