@@ -876,17 +876,24 @@ fn the_lateral_static_correction_of_an_imported_model_converges() {
         ("lateral", &["lateral", "rail_lateral"][..]),
         ("vertical", &["vertical"][..]),
     ] {
-        let record = format!("ground_motion:\n  - {{file: harmonic.csv, direction: {direction}}}\n");
+        let record =
+            format!("ground_motion:\n  - {{file: harmonic.csv, direction: {direction}}}\n");
         let scene = doubled_model(&dir, &dir.join("exported"), &record).replace(
             "node: 11, direction: uz}\n",
             "node: 11, direction: uz}\n\
              \x20 - {name: rail_lateral, quantity: bridge_displacement, x: 12.5, direction: uy}\n",
         );
         let with_modes = |modes: &str| scene.replace("modes: {count: 80}", modes);
-        let full = run_in(&dir, &with_modes("modes: {count: 80, static_correction: false}"));
+        let full = run_in(
+            &dir,
+            &with_modes("modes: {count: 80, static_correction: false}"),
+        );
         assert_eq!(full.summary.run.frequencies.len(), 80, "every mode");
         let corrected = run_in(&dir, &with_modes("modes: {count: 4}"));
-        let plain = run_in(&dir, &with_modes("modes: {count: 4, static_correction: false}"));
+        let plain = run_in(
+            &dir,
+            &with_modes("modes: {count: 4, static_correction: false}"),
+        );
         for name in names {
             let reference = column(&full, name);
             let peak = support::max_abs(reference);
