@@ -165,6 +165,10 @@ enum Command {
         /// its own); may be repeated.
         #[arg(long, value_name = "NAME")]
         exclude: Vec<String>,
+        /// Write into the output folder even if it holds another scene
+        /// file's results.
+        #[arg(long)]
+        force: bool,
     },
     /// Print a shell completion script: `vbi completions bash >
     /// ~/.local/share/bash-completion/completions/vbi` (zsh: a file `_vbi` on
@@ -317,7 +321,7 @@ fn main() -> ExitCode {
             };
             let loaded = scenario::load_file_with(&file, options.clone());
             match (shard, sample) {
-                (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard),
+                (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard, force),
                 (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, force, k),
                 (None, None) => run(loaded, &file, out, quiet, svg, force),
             }
@@ -389,6 +393,7 @@ fn main() -> ExitCode {
             out,
             quiet,
             exclude,
+            force,
         } => converge(
             load(&file),
             &file,
@@ -397,6 +402,7 @@ fn main() -> ExitCode {
             out,
             quiet,
             exclude,
+            force,
         ),
     }
 }
@@ -716,6 +722,7 @@ fn print_vehicle_frequencies(scenario: &vbi::scenario::resolved::Scenario) {
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 fn converge(
     loaded: Result<scenario::Loaded, LoadError>,
     file: &Path,
@@ -724,6 +731,7 @@ fn converge(
     out: Option<PathBuf>,
     quiet: bool,
     exclude: Vec<String>,
+    force: bool,
 ) -> ExitCode {
     use vbi::study::converge::{self as study, ConvergeError, Options};
     let loaded = match loaded {
@@ -731,6 +739,12 @@ fn converge(
         Err(e) => return load_error(&e),
     };
     let out = out.unwrap_or_else(|| default_out(file, "-converge"));
+    // As `vbi run`: the folder is claimed before the work.
+    let source = vbi::run::source_name(file);
+    if let Err(message) = vbi::run::claim_folder(&out, &source, force) {
+        errln!("error: {message}");
+        return ExitCode::from(EXIT_INVALID);
+    }
     if loaded.scenario.study.is_some() && !quiet {
         errln!(
             "note: {}: the study section is ignored; converging the base scene",
@@ -771,8 +785,8 @@ fn converge(
     };
     bar.finish_and_clear();
     print_convergence(&study);
-    let written = std::fs::create_dir_all(&out)
-        .map_err(|e| format!("cannot create {}: {e}", out.display()))
+    let written = vbi::run::mark_folder(&out, &source)
+        .map_err(|e| format!("cannot write {}: {e}", out.display()))
         .and_then(|()| {
             vbi::report::write_atomic(&out.join("converge.csv"), &study.to_csv())
                 .map_err(|e| e.to_string())

@@ -212,19 +212,42 @@ pub fn resolved_yaml(scenario: &Scenario) -> String {
 /// results the folder holds.
 pub const FROM: &str = "# From: ";
 
+/// The file that names a folder's scene where no `resolved.yaml` does:
+/// `vbi converge`'s folder and the `--shard` parts' folder hold one line,
+/// [`FROM`] and the scene file ([`mark_folder`]).
+pub const OWNER_FILE: &str = ".vbi-owner";
+
 /// The scene file whose results the folder `out` holds, as its
-/// `resolved.yaml` names it; `None` when there is none or it names none.
-/// Only the file's first 8 kB are read (the header is its first lines).
+/// `resolved.yaml` names it, or else its [`OWNER_FILE`]; `None` when there
+/// is none or it names none. Only each file's first 8 kB are read (the
+/// header is its first lines).
 pub fn folder_owner(out: &Path) -> Option<String> {
     use std::io::Read;
-    let file = crate::scenario::data_files::open_regular(&out.join("resolved.yaml")).ok()?;
-    let mut head = Vec::new();
-    file.take(8192).read_to_end(&mut head).ok()?;
-    let head = String::from_utf8_lossy(&head);
-    head.lines()
-        .take(3)
-        .find_map(|l| l.strip_prefix(FROM))
-        .map(str::to_string)
+    let named_in = |name: &str| -> Option<String> {
+        let file = crate::scenario::data_files::open_regular(&out.join(name)).ok()?;
+        let mut head = Vec::new();
+        file.take(8192).read_to_end(&mut head).ok()?;
+        let head = String::from_utf8_lossy(&head);
+        head.lines()
+            .take(3)
+            .find_map(|l| l.strip_prefix(FROM))
+            .map(str::to_string)
+    };
+    named_in("resolved.yaml").or_else(|| named_in(OWNER_FILE))
+}
+
+/// Writes the [`OWNER_FILE`] naming `source` (canonical) into `out` (made
+/// if missing): the folder's results are that scene file's, so another
+/// scene's `vbi run`, `converge` or `--shard` into it is refused
+/// ([`claim_folder`]).
+pub fn mark_folder(out: &Path, source: &str) -> std::io::Result<()> {
+    std::fs::create_dir_all(out)?;
+    let source: String = source.chars().filter(|c| !c.is_control()).collect();
+    crate::report::write_atomic(
+        &out.join(OWNER_FILE),
+        format!("{FROM}{source}\n").as_bytes(),
+    )
+    .map_err(std::io::Error::other)
 }
 
 /// Refuses to write the results of the scene file `source` (canonical) into

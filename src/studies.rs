@@ -129,12 +129,21 @@ pub(super) fn run_shard(
     out: Option<PathBuf>,
     quiet: bool,
     shard: vbi::study::shard::Shard,
+    force: bool,
 ) -> ExitCode {
     use vbi::study::shard::{self, ShardError};
     let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),
     };
+    // The parts' folder is claimed before the work, as `vbi run`'s: parts of
+    // another scene file are not mixed with these.
+    let owner = vbi::run::source_name(file);
+    let out = out.unwrap_or_else(|| default_out(file, ""));
+    if let Err(message) = vbi::run::claim_folder(&out, &owner, force) {
+        errln!("error: {message}");
+        return ExitCode::from(EXIT_INVALID);
+    }
     // The text as loaded goes into the part, so that the merge needs no
     // access to the file; a file changed since is caught by the hash.
     let source = match std::fs::read_to_string(file) {
@@ -144,7 +153,6 @@ pub(super) fn run_shard(
             return ExitCode::from(EXIT_INVALID);
         }
     };
-    let out = out.unwrap_or_else(|| default_out(file, ""));
     let bar = progress_bar(
         quiet,
         &format!(
@@ -171,7 +179,7 @@ pub(super) fn run_shard(
     };
     bar.finish_and_clear();
     let path = out.join(shard.file_name());
-    let written = std::fs::create_dir_all(&out).and_then(|()| {
+    let written = vbi::run::mark_folder(&out, &owner).and_then(|()| {
         vbi::report::write_atomic(&path, shard::part_json(&part).as_bytes())
             .map_err(std::io::Error::other)
     });

@@ -306,3 +306,91 @@ fn two_scene_files_never_share_a_results_folder() {
     let now = fs::read_to_string(dir.join("results/fe/resolved.yaml")).unwrap();
     assert!(now.contains("flip/fe.yaml"), "{now}");
 }
+
+/// Issue 23 point 1 caveat: `vbi converge`'s folder and the `--shard` parts'
+/// folder are claimed as `vbi run`'s is. `fe-converge` of `fe.yaml` refuses
+/// `flip/fe.yaml` (and `--force` replaces it); the parts' folder of
+/// `sweep.yaml` refuses `flip/sweep.yaml`'s shard, and a run's folder
+/// refuses another scene's shard.
+#[test]
+fn converge_and_shard_folders_are_claimed_like_run_folders() {
+    let scratch = Scratch::new("confined", "claimed");
+    let dir = scratch.dir();
+    let scene = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/hostile/cases/ok-plain.yaml"),
+    )
+    .unwrap();
+    let sweep =
+        format!("{scene}study: {{type: speed_sweep, speeds: {{from: 10, to: 20, count: 4}}}}\n");
+    fs::create_dir_all(dir.join("flip")).unwrap();
+    for (name, text) in [("fe.yaml", &scene), ("sweep.yaml", &sweep)] {
+        fs::write(dir.join(name), text).unwrap();
+        fs::write(dir.join("flip").join(name), text).unwrap();
+    }
+    let refused = |args: &[&str], what: &str| {
+        let (code, _, stderr) = vbi(args, dir);
+        assert_eq!(code, Some(2), "{what}: {stderr}");
+        assert!(
+            stderr.contains("another scene file")
+                && stderr.contains("--out")
+                && stderr.contains("--force"),
+            "{what}: {stderr}"
+        );
+    };
+    let accepted = |args: &[&str], what: &str| {
+        let (code, _, stderr) = vbi(args, dir);
+        assert_eq!(code, Some(0), "{what}: {stderr}");
+    };
+    // Converge.
+    fn converge(file: &str) -> [&str; 5] {
+        ["converge", "-q", "--levels", "2", file]
+    }
+    accepted(&converge("fe.yaml"), "the first converge");
+    accepted(&converge("fe.yaml"), "the same scene again");
+    let table = fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap();
+    refused(&converge("flip/fe.yaml"), "another scene's converge");
+    assert_eq!(
+        fs::read_to_string(dir.join("results/fe-converge/converge.csv")).unwrap(),
+        table,
+        "the refused converge wrote into the folder"
+    );
+    accepted(
+        &["converge", "-q", "--levels", "2", "--force", "flip/fe.yaml"],
+        "--force",
+    );
+    refused(&converge("fe.yaml"), "the folder is now flip/fe.yaml's");
+    // Shards.
+    accepted(&["run", "-q", "--shard", "1/2", "sweep.yaml"], "shard 1");
+    accepted(&["run", "-q", "--shard", "2/2", "sweep.yaml"], "shard 2");
+    refused(
+        &["run", "-q", "--shard", "2/2", "flip/sweep.yaml"],
+        "another scene's shard",
+    );
+    assert!(!dir.join("results/sweep/resolved.yaml").exists());
+    accepted(&["run", "-q", "fe.yaml"], "a run");
+    refused(
+        &[
+            "run",
+            "-q",
+            "--shard",
+            "1/2",
+            "--out",
+            "results/fe",
+            "sweep.yaml",
+        ],
+        "a shard into another scene's run folder",
+    );
+    accepted(
+        &[
+            "run",
+            "-q",
+            "--shard",
+            "1/2",
+            "--out",
+            "results/fe",
+            "--force",
+            "sweep.yaml",
+        ],
+        "a shard with --force",
+    );
+}

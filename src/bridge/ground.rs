@@ -133,9 +133,11 @@ impl ModalBridge {
     /// symmetric), so the full deflection is the vertical one scaled by
     /// EI/EI_z (same mesh and supports); the kept modes' share is
     /// Σᵢ φᵢ(x, y) Γᵢ/ωᵢ² with φᵢ the modes' lateral components at the rails
-    /// (v − hθ) and Γᵢ the lateral participation factors. `None` for a
-    /// bridge without such a closed static answer (imported models, whose
-    /// lateral records stay modal sums).
+    /// (v − hθ) and Γᵢ the lateral participation factors. An imported
+    /// model: K⁻¹ M δ_y read laterally along the track rails (their mean,
+    /// as the kept modes' lateral values there) in place of the scaled
+    /// beam deflection (`mass_per_length` unused). `None` for a bridge
+    /// without lateral DOFs.
     pub fn lateral_ground_static_share(
         &self,
         mass_per_length: f64,
@@ -143,6 +145,16 @@ impl ModalBridge {
         y: f64,
         participation: &[f64],
     ) -> Result<Option<f64>, BridgeError> {
+        if let Shapes::Imported(imported) = &self.shapes {
+            let full = imported.lateral_inertia_field()?.value_at(x);
+            let modal = self.modal_static_in(
+                crate::contact::ContactDirection::Lateral,
+                x,
+                y,
+                participation,
+            );
+            return Ok(Some(-(full - modal)));
+        }
         let Shapes::Beam {
             sway: Some(sway), ..
         } = &self.shapes
@@ -150,15 +162,73 @@ impl ModalBridge {
             return Ok(None);
         };
         let full = sway.flexibility_ratio * self.inertia_deflection(mass_per_length, x)?;
+        let modal = self.modal_static_in(
+            crate::contact::ContactDirection::Lateral,
+            x,
+            y,
+            participation,
+        );
+        Ok(Some(-(full - modal)))
+    }
+
+    /// The static displacement of free DOF `dof` of an imported model (m,
+    /// along the DOF's direction) per unit upward and per unit lateral
+    /// ground acceleration that the kept modes leave out, m/(m/s²):
+    /// −[(K⁻¹ M δ)_dof − Σᵢ φᵢ,dof Γᵢ/ωᵢ²] for δ vertical (`vertical`, the
+    /// vertical participation factors Γ) and for δ_y lateral (`lateral`),
+    /// the mode-acceleration method of [`ModalBridge::ground_static_share`]
+    /// at a node. Both, whatever the DOF's direction: in a model that
+    /// couples the directions a lateral record also moves a uz DOF
+    /// statically. An empty participation list (no record in that
+    /// direction) gives 0 for it. `None` for any other bridge.
+    pub fn dof_ground_static_shares(
+        &self,
+        dof: usize,
+        vertical: &[f64],
+        lateral: &[f64],
+    ) -> Result<Option<(f64, f64)>, BridgeError> {
+        let Shapes::Imported(imported) = &self.shapes else {
+            return Ok(None);
+        };
+        let (full_vertical, full_lateral) = imported.inertia_at_dof(dof)?;
         let mut values = vec![0.0; self.mode_count()];
-        self.mode_values_in(crate::contact::ContactDirection::Lateral, x, y, &mut values);
-        let modal: f64 = values
+        imported.dof_values(dof, &mut values);
+        let share = |full: f64, participation: &[f64]| {
+            if participation.is_empty() {
+                return 0.0;
+            }
+            let modal: f64 = values
+                .iter()
+                .zip(participation)
+                .zip(&self.circular_frequencies)
+                .map(|((phi, gamma), w)| phi * gamma / (w * w))
+                .sum();
+            -(full - modal)
+        };
+        Ok(Some((
+            share(full_vertical, vertical),
+            share(full_lateral, lateral),
+        )))
+    }
+
+    /// Σᵢ φᵢ(x, y) Γᵢ / ωᵢ² in `direction`: the kept modes' static
+    /// displacement at a track point under the inertia load of a unit
+    /// ground acceleration, m/(m/s²).
+    fn modal_static_in(
+        &self,
+        direction: crate::contact::ContactDirection,
+        x: f64,
+        y: f64,
+        participation: &[f64],
+    ) -> f64 {
+        let mut values = vec![0.0; self.mode_count()];
+        self.mode_values_in(direction, x, y, &mut values);
+        values
             .iter()
             .zip(participation)
             .zip(&self.circular_frequencies)
             .map(|((phi, gamma), w)| phi * gamma / (w * w))
-            .sum();
-        Ok(Some(-(full - modal)))
+            .sum()
     }
 
     /// Σᵢ φᵢ(x) Γᵢ / ωᵢ²: the kept modes' static deflection at `x` (m)

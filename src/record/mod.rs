@@ -49,8 +49,9 @@ enum Probe {
     /// ẅ = Σ φᵢ q̈ᵢ.
     BridgeAcceleration { shape: Vec<f64> },
     /// The rails' lateral displacement v = Σ φᵢ qᵢ (φ the modes' lateral
-    /// components at the point), or with `acceleration` v̈: a modal sum
-    /// (the static correction and the static crossing are vertical).
+    /// components at the point), or with `acceleration` v̈: a modal sum,
+    /// plus under a lateral record the lateral static share of the modes
+    /// left out (`Column::lateral_static`; the static crossing is vertical).
     Lateral { shape: Vec<f64>, acceleration: bool },
     /// A plate deck's moment per unit width at a point; `line_of[w]` is
     /// the probe's influence line of flattened wheel w.
@@ -339,7 +340,8 @@ pub struct Column {
     ground_static: f64,
     /// Under a lateral record, the lateral rail deflection per unit lateral
     /// ground acceleration that the kept modes leave out (lateral bridge
-    /// displacements on a 3D beam with the static correction;
+    /// displacements on a 3D beam or an imported model with the static
+    /// correction;
     /// [`crate::bridge::ModalBridge::lateral_ground_static_share`]),
     /// m/(m/s²); 0 otherwise.
     lateral_static: f64,
@@ -861,10 +863,11 @@ fn ground_terms(
     let Some(ground) = &model.ground else {
         return Ok((0.0, 0.0, None));
     };
-    let (vertical, absolute) = vertical_ground_terms(model, ground, record, probe)?;
-    // Lateral rail displacements on a 3D beam: the lateral static share
-    // (mode-acceleration method, as for vertical displacements).
-    let lateral = match probe {
+    let (mut vertical, absolute) = vertical_ground_terms(model, ground, record, probe)?;
+    // Lateral rail displacements on a 3D beam or an imported model: the
+    // lateral static share (mode-acceleration method, as for vertical
+    // displacements).
+    let mut lateral = match probe {
         Probe::Lateral {
             acceleration: false,
             ..
@@ -879,6 +882,29 @@ fn ground_terms(
             .unwrap_or(0.0),
         _ => 0.0,
     };
+    // A node's DOF of an imported model: both static shares at the DOF
+    // itself (K⁻¹ M δ there), whatever its direction.
+    if let (Probe::BridgeDisplacement { .. }, Some(node), true) =
+        (probe, record.node, model.bridge.static_correction)
+        && let Ok(Some(dof)) = model
+            .bridge
+            .imported_dof(node, record.direction.unwrap_or_default())
+    {
+        let participation = |records: bool, factors: &[f64]| -> Vec<f64> {
+            if records {
+                factors.to_vec()
+            } else {
+                Vec::new()
+            }
+        };
+        if let Some((v, l)) = model.bridge.dof_ground_static_shares(
+            dof,
+            &participation(!ground.vertical.is_empty(), &ground.participation),
+            &participation(!ground.lateral.is_empty(), &ground.lateral_participation),
+        )? {
+            (vertical, lateral) = (v, l);
+        }
+    }
     Ok((vertical, lateral, absolute))
 }
 
@@ -1192,17 +1218,36 @@ impl Observer for Recorder<'_> {
             };
             let value = match column.absolute {
                 _ if model.ground.is_none() => value,
-                None if column.lateral_static != 0.0 => {
+                None if column.lateral_static != 0.0 && column.ground_static == 0.0 => {
                     value + column.lateral_static * lateral_acceleration
+                }
+                // Both shares: a node of an imported model under records
+                // in both directions, or coupled directions.
+                None if column.lateral_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
                 }
                 None => value + column.ground_static * ground_acceleration,
                 Some(GroundTerm::Acceleration) => {
                     value + column.ground_static * ground_acceleration + ground_acceleration
                 }
+                Some(GroundTerm::Displacement) if column.lateral_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
+                        + ground_displacement
+                }
                 Some(GroundTerm::Displacement) => {
                     value + column.ground_static * ground_acceleration + ground_displacement
                 }
                 Some(GroundTerm::LateralAcceleration) => value + lateral_acceleration,
+                Some(GroundTerm::LateralDisplacement) if column.ground_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
+                        + lateral_displacement
+                }
                 Some(GroundTerm::LateralDisplacement) => {
                     value + column.lateral_static * lateral_acceleration + lateral_displacement
                 }

@@ -111,8 +111,38 @@ fn resolve_sway(ck: &mut Checker<'_>, b: &raw::BeamRaw) -> Option<BeamSway> {
 fn resolve_plate(p: &raw::PlateRaw, ck: &mut Checker<'_>) -> Plate {
     check_spans(ck, &p.spans);
     ck.positive("bridge.width", p.width, "deck width");
+    use super::plausible::{DECK_WIDTH, DENSITY, PLATE_THICKNESS, within_because};
+    within_because(
+        ck,
+        "bridge.width",
+        "a deck width",
+        p.width,
+        DECK_WIDTH,
+        "m",
+        "a laboratory strip is a few centimetres wide, the widest decks about 60 m",
+    );
     if let Some(h) = p.thickness {
         ck.positive("bridge.thickness", h, "plate thickness");
+        within_because(
+            ck,
+            "bridge.thickness",
+            "a plate thickness",
+            h,
+            PLATE_THICKNESS,
+            "m",
+            "from laboratory strips of a millimetre to box girders about 15 m deep",
+        );
+    }
+    if let Some(rho) = p.density {
+        within_because(
+            ck,
+            "bridge.density",
+            "a density",
+            rho,
+            DENSITY,
+            "kg/m³",
+            "aerogels are about 2 kg/m³, osmium, the densest element, 22,590 kg/m³",
+        );
     }
     let mass_per_area = match (p.mass_per_area, p.density) {
         (Some(_), Some(_)) => {
@@ -412,10 +442,17 @@ fn resolve_damping(ck: &mut Checker<'_>, raw: Option<&raw::DampingRaw>) -> Dampi
         Some(raw::DampingRaw::Rayleigh { frequencies, ratio }) => {
             check_ratio(ck, "bridge.damping.ratio", *ratio);
             for (i, &f) in frequencies.iter().enumerate() {
-                ck.positive(
-                    &format!("bridge.damping.frequencies[{i}]"),
-                    f,
+                let at = format!("bridge.damping.frequencies[{i}]");
+                ck.positive(&at, f, "a Rayleigh frequency");
+                super::plausible::within_because(
+                    ck,
+                    &at,
                     "a Rayleigh frequency",
+                    f,
+                    super::plausible::RAYLEIGH_FREQUENCY,
+                    "Hz",
+                    "the longest suspension bridges' first mode is about 0.05 Hz; laboratory \
+                     models reach a few kHz",
                 );
             }
             if frequencies[0] == frequencies[1] {

@@ -214,6 +214,7 @@ pub(super) fn resolve(
         &rails,
         &track_index,
         rotation_sign,
+        raw.rotation_sign.is_some(),
     ) {
         Ok(model) => model,
         Err(e) => {

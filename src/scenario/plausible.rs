@@ -32,6 +32,11 @@
 //! | a length within a vehicle (spacing, height, track, radius) | 1e-3 to 1e3 | m |
 //! | gravity | 1e-3 to 300 | m/s² |
 //! | time before a vehicle reaches the bridge | 0 to 86 400 | s |
+//! | plate thickness | 1e-3 to 100 | m |
+//! | plate (deck) width | 1e-2 to 1e3 | m |
+//! | plate material density | 1 to 1e5 | kg/m³ |
+//! | explicit time step | 1e-9 to 1 | s |
+//! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
 
 use super::resolve::Checker;
 use super::resolved::{Bridge, Contact, Rigidity, Study, Vehicle};
@@ -75,6 +80,48 @@ pub const VEHICLE_LENGTH: (f64, f64) = (1e-3, 1e3);
 pub const GRAVITY: (f64, f64) = (1e-3, 300.0);
 /// Time before a vehicle reaches the bridge, s (one day).
 pub const ENTRY_TIME: (f64, f64) = (0.0, 86_400.0);
+
+/// A plate's thickness, m: a millimetre (laboratory strips) to 100 m
+/// (the deepest box girders are about 15 m deep).
+pub const PLATE_THICKNESS: (f64, f64) = (1e-3, 100.0);
+/// A plate deck's width, m: a centimetre (laboratory strips) to 1 km (the
+/// widest decks carry about 20 lanes, some 60 m).
+pub const DECK_WIDTH: (f64, f64) = (1e-2, 1e3);
+/// A plate material's density, kg/m³: from 1 (aerogels are about 2) to
+/// 1e5 (osmium, the densest element, is 22,590).
+pub const DENSITY: (f64, f64) = (1.0, 1e5);
+/// An explicit time step, s: from a nanosecond (a wheel at 500 km/h
+/// travels 0.14 µm; the stiffest Hertz contact of a steel wheel rings at a
+/// few kHz) to a second (it resolves nothing above 0.5 Hz, below the
+/// first mode of any bridge but the longest suspension spans).
+pub const TIME_STEP: (f64, f64) = (1e-9, 1.0);
+/// A frequency at which Rayleigh damping is matched, Hz: from 1 mHz
+/// (below the first mode of the longest suspension bridges, about 0.05 Hz)
+/// to 100 kHz (far above any mode a vehicle excites; laboratory models
+/// reach a few kHz).
+pub const RAYLEIGH_FREQUENCY: (f64, f64) = (1e-3, 1e5);
+
+/// [`within`] with where the range comes from (`source`, said after it).
+pub(super) fn within_because(
+    ck: &mut Checker<'_>,
+    path: &str,
+    what: &str,
+    value: f64,
+    (lo, hi): (f64, f64),
+    unit: &str,
+    source: &str,
+) {
+    let outside = value.is_nan() || value > hi || (value > 0.0 && value < lo);
+    if outside {
+        let (value, lo, hi) = (number(value), number(lo), number(hi));
+        ck.error(
+            path,
+            format!(
+                "{what} of {value} {unit} is outside the physically plausible range {lo} to {hi} {unit} ({source})"
+            ),
+        );
+    }
+}
 
 /// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`. A zero
 /// or negative value is left to the sign checks, which say "must be

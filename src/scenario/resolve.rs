@@ -225,6 +225,16 @@ pub(super) fn resolve(
     );
     if let Some(dt) = solver_raw.time_step {
         ck.positive("solver.time_step", dt, "time step");
+        super::plausible::within_because(
+            ck,
+            "solver.time_step",
+            "a time step",
+            dt,
+            super::plausible::TIME_STEP,
+            "s",
+            "a nanosecond is far below what the stiffest wheel contact needs; a second \
+             resolves nothing above 0.5 Hz, below the first mode of almost any bridge",
+        );
     }
 
     // The bridge is built only from a valid description, and only if its

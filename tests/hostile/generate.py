@@ -370,6 +370,32 @@ case("phys-entry-time-1e9", "rejected", "an entry time of 1e9 s (a CSV of gigaby
      scene(vehicles=OSC + "    entry_time: @@1e9\n"), "physically plausible range")
 case("phys-entry-time-long", "rejected", "an entry time of two days",
      scene(vehicles=OSC + "    entry_time: @@172800\n"), "physically plausible range")
+# Issue 23, point 4: the ranges that were still missing.
+case("phys-plate-thickness-1e5", "rejected", "a plate 100 km thick",
+     scene(bridge=PLATE.replace("thickness: 0.2", "thickness: @@1e5")),
+     "outside the physically plausible range 0.001 to 100 m (from laboratory strips")
+case("phys-plate-width-1e6", "rejected", "a deck 1,000 km wide",
+     scene(bridge=PLATE.replace("width: 13.0", "width: @@1e6")),
+     "outside the physically plausible range 0.01 to 1000 m (a laboratory strip")
+case("phys-plate-density-1e9", "rejected", "a plate density of 1e9 kg/m^3",
+     scene(bridge=PLATE.replace("mass_per_area: 500.0", "density: @@1e9")),
+     "outside the physically plausible range 1 to 100000 kg/m³ (aerogels")
+case("phys-time-step-1e-15", "rejected", "an explicit time step of a femtosecond",
+     scene(extra="solver: {time_step: @@1e-15}\n"),
+     "outside the physically plausible range 1e-9 to 1 s (a nanosecond")
+case("phys-time-step-1e3", "rejected", "an explicit time step of 1000 s",
+     scene(extra="solver: {time_step: @@1e3}\n"),
+     "outside the physically plausible range 1e-9 to 1 s")
+case("phys-rayleigh-frequency-1e9", "rejected", "Rayleigh damping matched at 1 GHz",
+     scene(bridge=BEAM + "  damping: {type: rayleigh, frequencies: [2.0, @@1e9], ratio: 0.02}\n"),
+     "outside the physically plausible range 0.001 to 100000 Hz (the longest suspension")
+case("phys-rayleigh-frequency-1e-9", "rejected", "Rayleigh damping matched at 1 nHz",
+     scene(bridge=BEAM + "  damping: {type: rayleigh, frequencies: [@@1e-9, 20.0], ratio: 0.02}\n"),
+     "outside the physically plausible range 0.001 to 100000 Hz")
+case("phys-lateral-position-1e6", "rejected", "a vehicle 1,000 km across a 13 m deck",
+     scene(bridge=PLATE, vehicles="  - {type: moving_force, loads: [1.0e5], speed: 20.0, "
+           "lateral_position: @@1.0e6}\n"),
+     "fall off the deck, which spans 0 to 13 m")
 
 # --- many errors at once ----------------------------------------------------------
 many = "name: many\n" + BEAM + "vehicles:\n" + "".join(
@@ -612,6 +638,18 @@ case("ok-fe-rotation-declared", "accepted",
      beam_scene(extra="  rotation_sign: {ry: -1}\n"))
 case("fe-rotation-sign-value", "rejected", "a rotation sign other than -1 or 1",
      beam_scene(extra="  rotation_sign: {ry: @@2}\n"), "a rotation's sign is -1 or 1, got 2")
+# Issue 23, point 4: a rail listing every other node of the beam: no element
+# joins two consecutive rail nodes, so no segment can tell the rotations' sign.
+FE_FILES["rail-skipping.csv"] = "node,x\n1,0.0\n3,5.0\n5,10.0\n"
+case("fe-rotation-no-evidence", "rejected",
+     "a rail whose nodes no element joins: the rotation sign cannot be checked, refused with "
+     "the reason unless `rotation_sign` confirms it (issue 23)",
+     beam_scene(at="@@").replace("fe/rail-beam.csv", "fe/rail-skipping.csv"),
+     "rail `rail`: the sign convention of its ry rotations cannot be checked")
+case("ok-fe-rotation-no-evidence-declared", "accepted",
+     "the same rail with the convention confirmed by `rotation_sign` (issue 23)",
+     beam_scene(extra="  rotation_sign: {ry: -1}\n").replace("fe/rail-beam.csv",
+                                                             "fe/rail-skipping.csv"))
 
 
 # --- confined reads (issue 23): paths out of the scene's folder by `../`, by

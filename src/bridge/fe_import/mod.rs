@@ -306,7 +306,9 @@ impl ImportedModel {
     /// other and keeps the free DOFs. `map` is required unless the
     /// stiffness file names its DOFs (Abaqus). `rotation_sign` flips the files'
     /// slope rotations into this program's convention, which each rail's
-    /// stiffness must then confirm ([`rotation`]).
+    /// stiffness must then confirm ([`rotation`]); `sign_declared` says
+    /// the scene wrote `rotation_sign` (then a rail whose stiffness cannot
+    /// tell the sign is taken at the scene's word).
     #[allow(clippy::too_many_arguments)]
     pub fn assemble(
         stiffness: MatrixFile,
@@ -317,6 +319,7 @@ impl ImportedModel {
         rails: &[RailNodes],
         track: &[usize],
         rotation_sign: RotationSign,
+        sign_declared: bool,
     ) -> Result<Self, AssemblyError> {
         let map = match (map, &stiffness.dofs) {
             (Some(map), _) => map,
@@ -502,7 +505,7 @@ impl ImportedModel {
         for rail in &rail_dofs {
             for plane in 0..2 {
                 if rail.hermite[plane] {
-                    rotation::check(&k, rail, plane, rotation_sign)?;
+                    rotation::check(&k, rail, plane, rotation_sign, sign_declared)?;
                 }
             }
         }

@@ -89,15 +89,28 @@ impl ImportedShapes {
     /// Deflection along the track under the unit load vector `load` (K u =
     /// load, by reciprocity the influence line of the point the load
     /// stands for), m/N.
-    fn static_field(&self, mut load: Vec<f64>) -> Result<TrackField, BridgeError> {
+    fn static_field(&self, load: Vec<f64>) -> Result<TrackField, BridgeError> {
+        self.static_field_in(load, RailDirection::Vertical)
+    }
+
+    /// [`Self::static_field`] read along the rails in `direction` (uz or
+    /// uy), m/N.
+    fn static_field_in(
+        &self,
+        load: Vec<f64>,
+        direction: RailDirection,
+    ) -> Result<TrackField, BridgeError> {
+        let solution = self.static_solution(load)?;
+        Ok(track_field(&self.model, direction, 1, |dof, _| {
+            solution[dof]
+        }))
+    }
+
+    /// K⁻¹ `load` on the free DOFs (one solve with the cached factor).
+    fn static_solution(&self, mut load: Vec<f64>) -> Result<Vec<f64>, BridgeError> {
         let factor = self.pencil.stiffness_factor()?;
         factor.solve_in_place(&mut load, &mut factor.workspace()?);
-        Ok(track_field(
-            &self.model,
-            RailDirection::Vertical,
-            1,
-            |dof, _| load[dof],
-        ))
+        Ok(load)
     }
 
     /// K⁻¹ M δ along the track: the static deflection under the inertia
@@ -105,6 +118,24 @@ impl ImportedShapes {
     /// m/(m/s²), in the sense of the load.
     pub fn inertia_field(&self) -> Result<TrackField, BridgeError> {
         self.static_field(self.model.vertical_inertia.clone())
+    }
+
+    /// K⁻¹ M δ_y read laterally (uy, the mean of the track rails, as
+    /// `lateral_track`): the rails' static lateral deflection under the
+    /// inertia load of a unit lateral ground acceleration
+    /// ([`ImportedModel::lateral_inertia`]), m/(m/s²), in the sense of the
+    /// load.
+    pub fn lateral_inertia_field(&self) -> Result<TrackField, BridgeError> {
+        self.static_field_in(self.model.lateral_inertia.clone(), RailDirection::Lateral)
+    }
+
+    /// (K⁻¹ M δ, K⁻¹ M δ_y) at free DOF `dof`: its static displacement
+    /// under the inertia loads of a unit vertical and a unit lateral ground
+    /// acceleration, m/(m/s²), in the sense of the loads. Two solves.
+    pub fn inertia_at_dof(&self, dof: usize) -> Result<(f64, f64), BridgeError> {
+        let vertical = self.static_solution(self.model.vertical_inertia.clone())?;
+        let lateral = self.static_solution(self.model.lateral_inertia.clone())?;
+        Ok((vertical[dof], lateral[dof]))
     }
 
     /// Influence line G(ξ) of the track point `x` (m): the deflection at x

@@ -134,16 +134,23 @@ pub fn rail_evidence(k: &[(usize, usize, f64)], rail: &RailDofs, plane: usize) -
 
 /// Refuses a rail whose stiffness says its slope rotations in `plane`
 /// have the other sign than the one `declared` (`k` as read, after the
-/// declared signs are applied).
+/// declared signs are applied), and a rail whose stiffness cannot tell
+/// (no segment votes: its nodes are not joined by elements, or every
+/// segment has a fixed DOF) unless the scene wrote `rotation_sign`
+/// (`written`): its Hermite interpolation would rest on an unverified sign.
 pub(super) fn check(
     k: &[(usize, usize, f64)],
     rail: &RailDofs,
     plane: usize,
     declared: RotationSign,
+    written: bool,
 ) -> Result<(), AssemblyError> {
     let evidence = rail_evidence(k, rail, plane);
     let program = program_sigma(plane);
     let (against, first) = evidence.votes(-program);
+    if evidence.slope + evidence.minus_slope == 0 && !written {
+        return refuse_silent(rail, plane, &evidence);
+    }
     let Some((i, j, sigma_hat)) = first else {
         return Ok(());
     };
@@ -207,6 +214,28 @@ pub(super) fn check(
             name = rail.name,
             r = r.name(),
             exact = if program > 0 { "+1" } else { "−1" },
+        ),
+    )
+}
+
+/// Refuses a rail with slope rotations in `plane` none of whose segments
+/// can tell their sign (see [`check`]).
+fn refuse_silent(rail: &RailDofs, plane: usize, evidence: &Evidence) -> Result<(), AssemblyError> {
+    let (u, r) = (["uz", "uy"][plane], rotation_of(plane).name());
+    let relation = ["∂w/∂x = −ry", "∂v/∂x = +rz"][plane];
+    fail(
+        Source::RotationSign(rotation_of(plane)),
+        format!(
+            "rail `{name}`: the sign convention of its {r} rotations cannot be checked: none of \
+             its {segments} segments is spanned by an element (K[{u}ᵢ,{u}ⱼ] between consecutive rail \
+             nodes is 0, or a DOF of the segment is fixed), so the stiffness gives no evidence, \
+             and the wheels' Hermite interpolation between the nodes uses {r} as the slope. \
+             List the rail's nodes as its elements join them (every node of the beam that models \
+             the rail), or confirm the convention by writing it under `bridge`: \
+             `rotation_sign: {{{r}: 1}}` when the file's {r} is this program's ({relation}), \
+             `{{{r}: -1}}` when it is the opposite",
+            name = rail.name,
+            segments = evidence.silent,
         ),
     )
 }
