@@ -39,16 +39,16 @@ fn cluster() -> bool {
         ),
         Ok(out) => {
             let text = String::from_utf8_lossy(&out.stdout);
-            if text.lines().any(|l| l.trim() == "idle" || l.trim() == "mixed") {
+            if text
+                .lines()
+                .any(|l| l.trim() == "idle" || l.trim() == "mixed")
+            {
                 return true;
             }
             format!("no idle node (sinfo: {:?})", text.trim())
         }
     };
-    assert!(
-        !required,
-        "VBI_REQUIRE_SLURM=1 but no Slurm cluster: {why}"
-    );
+    assert!(!required, "VBI_REQUIRE_SLURM=1 but no Slurm cluster: {why}");
     eprintln!("skipped: no Slurm cluster ({why}); `.ci/slurm` starts one (as root)");
     false
 }
@@ -92,7 +92,12 @@ fn state(id: &str) -> String {
 fn wait(ids: &[&str]) {
     let start = Instant::now();
     loop {
-        let out = run(Command::new("squeue").args(["--noheader", "--format=%i %T", "--jobs", &ids.join(",")]));
+        let out = run(Command::new("squeue").args([
+            "--noheader",
+            "--format=%i %T",
+            "--jobs",
+            &ids.join(","),
+        ]));
         if String::from_utf8_lossy(&out.stdout).trim().is_empty() {
             return;
         }
@@ -121,7 +126,10 @@ fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
                     .lines()
                     .filter(|l| !l.trim_start().starts_with("\"wall_time\""))
                     .collect();
-                assert!(kept.len() < text.lines().count(), "summary.json has a wall_time");
+                assert!(
+                    kept.len() < text.lines().count(),
+                    "summary.json has a wall_time"
+                );
                 bytes = kept.join("\n").into_bytes();
             }
             (name, bytes)
@@ -187,7 +195,12 @@ fn monte_carlo_array_merges_to_the_unsharded_run() {
         let (array, merge) = submit(dir, &[MC, n, "--out", &out]);
         let merge = merge.expect("a merge job");
         wait(&[&array, &merge]);
-        assert_eq!(state(&merge), "COMPLETED", "{}", merge_log(dir, &out, &merge));
+        assert_eq!(
+            state(&merge),
+            "COMPLETED",
+            "{}",
+            merge_log(dir, &out, &merge)
+        );
         same_files(&scratch.path(&out), &reference, &format!("{n} tasks"));
     }
 }
@@ -202,7 +215,12 @@ fn speed_sweep_array_merges_to_the_unsharded_run() {
     let (array, merge) = submit(dir, &["speed-sweep.yaml", "3", "--out", "array"]);
     let merge = merge.unwrap();
     wait(&[&array, &merge]);
-    assert_eq!(state(&merge), "COMPLETED", "{}", merge_log(dir, "array", &merge));
+    assert_eq!(
+        state(&merge),
+        "COMPLETED",
+        "{}",
+        merge_log(dir, "array", &merge)
+    );
     same_files(&scratch.path("array"), &reference, "speed sweep");
 }
 
@@ -236,7 +254,11 @@ fn rerun_as_printed(dir: &Path, log: &str) {
         .find(|s| s.starts_with("vbi run "))
         .unwrap_or_else(|| panic!("no `vbi run` command in: {log}"));
     let bin = Path::new(VBI).parent().unwrap();
-    let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
     run(Command::new("sh")
         .args(["-c", command])
         .current_dir(dir)
@@ -260,7 +282,10 @@ fn cluster_faults_leave_the_merged_run_unchanged() {
     let task = format!("{array}_2");
     let start = Instant::now();
     while state(&task) != "RUNNING" {
-        assert!(start.elapsed() < Duration::from_secs(300), "task 2 never ran");
+        assert!(
+            start.elapsed() < Duration::from_secs(300),
+            "task 2 never ran"
+        );
         std::thread::sleep(Duration::from_millis(100));
     }
     run(Command::new("scancel").arg(&task));
@@ -275,8 +300,17 @@ fn cluster_faults_leave_the_merged_run_unchanged() {
     let (again, merge) = submit(dir, &[MC, "4", "--out", "array", "--only", "2"]);
     let merge = merge.unwrap();
     wait(&[&again, &merge]);
-    assert_eq!(state(&merge), "COMPLETED", "{}", merge_log(dir, "array", &merge));
-    same_files(&scratch.path("array"), &reference, "cancelled task run again");
+    assert_eq!(
+        state(&merge),
+        "COMPLETED",
+        "{}",
+        merge_log(dir, "array", &merge)
+    );
+    same_files(
+        &scratch.path("array"),
+        &reference,
+        "cancelled task run again",
+    );
 
     // A finished task run again replaces its part by a rename (a new
     // inode), never truncating it in place, and the merge is unchanged.
@@ -286,7 +320,11 @@ fn cluster_faults_leave_the_merged_run_unchanged() {
     wait(&[&again, &merge]);
     assert_eq!(state(&merge), "COMPLETED");
     assert_ne!(std::fs::metadata(parts(2)).unwrap().ino(), inode);
-    same_files(&scratch.path("array"), &reference, "finished task run again");
+    same_files(
+        &scratch.path("array"),
+        &reference,
+        "finished task run again",
+    );
 
     // A missing part and a corrupt one: the merge job fails naming the
     // shard and the command that writes it again; run as printed, the
@@ -312,7 +350,12 @@ fn cluster_faults_leave_the_merged_run_unchanged() {
         let (_, merge) = submit(dir, &[MC, "4", "--out", "array", "--merge-only"]);
         let merge = merge.unwrap();
         wait(&[&merge]);
-        assert_eq!(state(&merge), "COMPLETED", "{}", merge_log(dir, "array", &merge));
+        assert_eq!(
+            state(&merge),
+            "COMPLETED",
+            "{}",
+            merge_log(dir, "array", &merge)
+        );
         same_files(&scratch.path("array"), &reference, fault);
     }
 }
@@ -321,7 +364,11 @@ fn cluster_faults_leave_the_merged_run_unchanged() {
 fn the_script_checks_its_arguments_before_submitting() {
     // No cluster needed: every refusal comes before sbatch.
     let scratch = Scratch::new("slurm", "arguments");
-    std::fs::copy(Path::new(REPO).join("tests/slurm").join(MC), scratch.path(MC)).unwrap();
+    std::fs::copy(
+        Path::new(REPO).join("tests/slurm").join(MC),
+        scratch.path(MC),
+    )
+    .unwrap();
     let script = Path::new(REPO).join("slurm/vbi-array.sh");
     let refused = |args: &[&str], expect: &str| {
         let out = Command::new(&script)
@@ -332,7 +379,10 @@ fn the_script_checks_its_arguments_before_submitting() {
             .unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(stderr.contains(expect), "{args:?}: expected `{expect}` in: {stderr}");
+        assert!(
+            stderr.contains(expect),
+            "{args:?}: expected `{expect}` in: {stderr}"
+        );
         assert!(out.stdout.is_empty(), "{args:?}: a job id printed");
         assert!(!scratch.path("results").exists(), "{args:?}: folders made");
     };
@@ -348,11 +398,17 @@ fn the_script_checks_its_arguments_before_submitting() {
     let text = std::fs::read_to_string(scratch.path(MC)).unwrap();
     std::fs::write(&plain, &text[..text.find("study:").unwrap()]).unwrap();
     refused(&["plain.yaml", "2"], "no `study` section");
-    std::fs::write(scratch.path("bad.yaml"), text.replace("samples: 300", "samples: -1")).unwrap();
+    std::fs::write(
+        scratch.path("bad.yaml"),
+        text.replace("samples: 300", "samples: -1"),
+    )
+    .unwrap();
     refused(&["bad.yaml", "2"], "bad.yaml:");
     // A dry run prints the two submissions and submits nothing.
     let out = run(Command::new(&script)
-        .args([MC, "4", "-n", "-A", "proj7", "-p", "short", "-t", "00:20:00"])
+        .args([
+            MC, "4", "-n", "-A", "proj7", "-p", "short", "-t", "00:20:00",
+        ])
         .current_dir(scratch.dir())
         .env("VBI", VBI));
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -365,7 +421,10 @@ fn the_script_checks_its_arguments_before_submitting() {
         "__task",
         "__merge",
     ] {
-        assert!(stderr.contains(want), "dry run: `{want}` missing in: {stderr}");
+        assert!(
+            stderr.contains(want),
+            "dry run: `{want}` missing in: {stderr}"
+        );
     }
     assert!(out.stdout.is_empty());
     let _: PathBuf = scratch.path("results");
