@@ -257,7 +257,12 @@ fn monte_carlo_array_and_its_faults_merge_to_the_unsharded_run() {
     let (array, merge) = submit(dir, &[MC, "2", "--out", "array2"]);
     let merge = merge.expect("a merge job");
     wait(&[&array, &merge]);
-    assert_eq!(state(&merge), "COMPLETED", "{}", merge_log(dir, "array2", &merge));
+    assert_eq!(
+        state(&merge),
+        "COMPLETED",
+        "{}",
+        merge_log(dir, "array2", &merge)
+    );
     same_files(&scratch.path("array2"), &reference, "2 tasks");
 
     let parts = |k: usize| scratch.path(&format!("array/parts/part-{k}-of-4.json"));
