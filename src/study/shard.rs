@@ -659,9 +659,15 @@ pub fn rerun_command(scene: Option<&str>, shard: Shard, part: &Path) -> String {
         Some(d) if !d.as_os_str().is_empty() => d.display().to_string(),
         _ => ".".into(),
     };
+    // The scene's name comes from a part: one with control characters (a
+    // forged part's terminal escapes) or of unreasonable length is not
+    // echoed.
+    let printable = |s: &&str| s.len() <= 4096 && !s.chars().any(char::is_control);
     format!(
         "vbi run {} --shard {}/{} --out {}",
-        scene.map_or_else(|| "SCENE".into(), shell_word),
+        scene
+            .filter(printable)
+            .map_or_else(|| "SCENE".into(), shell_word),
         shard.index,
         shard.count,
         shell_word(&dir)
@@ -730,6 +736,40 @@ mod tests {
         assert!(Shard::parse("9/8").is_err());
         assert!(Shard::parse("3").is_err());
         assert!(Shard::parse("a/2").is_err());
+    }
+
+    #[test]
+    fn part_names_and_rerun_commands() {
+        let of = |name: &str| Shard::from_file_name(Path::new(name));
+        assert_eq!(
+            of("dir/part-3-of-8.json"),
+            Some(Shard { index: 3, count: 8 })
+        );
+        for bad in [
+            "part-0-of-8.json",
+            "part-9-of-8.json",
+            "part-3-of-8",
+            "p-3-of-8.json",
+        ] {
+            assert_eq!(of(bad), None, "{bad}");
+        }
+        let shard = Shard { index: 3, count: 8 };
+        assert_eq!(
+            rerun_command(
+                Some("s.yaml"),
+                shard,
+                Path::new("out/parts/part-3-of-8.json")
+            ),
+            "vbi run s.yaml --shard 3/8 --out out/parts"
+        );
+        assert_eq!(
+            rerun_command(Some("it's.yaml"), shard, Path::new("part-3-of-8.json")),
+            "vbi run 'it'\\''s.yaml' --shard 3/8 --out ."
+        );
+        assert_eq!(
+            rerun_command(Some("a\u{1b}[2J.yaml"), shard, Path::new("my parts/p.json")),
+            "vbi run SCENE --shard 3/8 --out 'my parts'"
+        );
     }
 
     #[test]
