@@ -13,7 +13,9 @@
 #   -t, --time LIMIT         time limit of each task      (env VBI_SLURM_TIME, 01:00:00)
 #       --merge-time LIMIT   time limit of the merge job  (env VBI_SLURM_MERGE_TIME, 00:30:00)
 #   -c, --cpus-per-task C    CPUs of each task, used by vbi's threads (env VBI_SLURM_CPUS, 1)
-#       --mem SIZE           memory of each task and of the merge (env VBI_SLURM_MEM, 2G)
+#       --mem SIZE           memory of each task (env VBI_SLURM_MEM, 2G)
+#       --merge-mem SIZE     memory of the merge (env VBI_SLURM_MERGE_MEM, as --mem);
+#                            it reads every part: about 0.8 x their bytes
 #   -o, --out DIR            results folder, on a file system every node sees
 #                            (default results/<scene stem>): parts in DIR/parts,
 #                            job logs in DIR/logs, the merged study in DIR
@@ -58,7 +60,7 @@ fi
 # ---- On the login node: check, then submit. ----
 usage() {
   sed -n '/^#   slurm\/vbi-array.sh/,/^#   -n, --dry-run/p' "$0" | sed 's/^# \{0,1\}//' >&2
-  exit 2
+  exit 0
 }
 fail() {
   echo "vbi-array.sh: $*" >&2
@@ -72,6 +74,7 @@ time=${VBI_SLURM_TIME:-01:00:00}
 merge_time=${VBI_SLURM_MERGE_TIME:-00:30:00}
 cpus=${VBI_SLURM_CPUS:-1}
 mem=${VBI_SLURM_MEM:-2G}
+merge_mem=${VBI_SLURM_MERGE_MEM:-}
 out=
 only=
 merge=1
@@ -95,6 +98,8 @@ while [ $# -gt 0 ]; do
     --cpus-per-task=*) cpus=${1#*=}; shift ;;
     --mem) mem=${2:?$1 needs a value}; shift 2 ;;
     --mem=*) mem=${1#*=}; shift ;;
+    --merge-mem) merge_mem=${2:?$1 needs a value}; shift 2 ;;
+    --merge-mem=*) merge_mem=${1#*=}; shift ;;
     -o | --out) out=${2:?$1 needs a value}; shift 2 ;;
     --out=*) out=${1#*=}; shift ;;
     --only) only=${2:?$1 needs a value}; shift 2 ;;
@@ -154,15 +159,15 @@ if command -v scontrol >/dev/null 2>&1; then
 fi
 command -v sbatch >/dev/null 2>&1 || ((dry)) || fail "sbatch not found: run this on a Slurm login node"
 
-common=(--chdir="$PWD" --mem="$mem")
+common=(--chdir="$PWD")
 [ -n "$account" ] && common+=(--account="$account")
 [ -n "$partition" ] && common+=(--partition="$partition")
 [ -n "$qos" ] && common+=(--qos="$qos")
 self=$(readlink -f "$0")
 task_cmd=(sbatch --parsable --job-name="vbi-$stem" --array="$indices" "${common[@]}"
-  --time="$time" --cpus-per-task="$cpus" --output="$logs/task-%A_%a.out"
+  --time="$time" --cpus-per-task="$cpus" --mem="$mem" --output="$logs/task-%A_%a.out"
   "$self" __task "$vbi" "$scene" "$n" "$parts" "${vbi_args[@]}")
-merge_cmd=(sbatch --parsable --job-name="vbi-$stem-merge" "${common[@]}" --time="$merge_time"
+merge_cmd=(sbatch --parsable --job-name="vbi-$stem-merge" "${common[@]}" --time="$merge_time" --mem="${merge_mem:-$mem}"
   --cpus-per-task=1 --kill-on-invalid-dep=yes --output="$logs/merge-%j.out"
   "$self" __merge "$vbi" "$n" "$parts" "$out" "${vbi_args[@]}")
 

@@ -462,3 +462,41 @@ fn running_a_finished_shard_again_replaces_its_part_atomically() {
     };
     assert_eq!(strip(&first), strip(&std::fs::read(&path).unwrap()));
 }
+
+#[test]
+fn part_names_and_rerun_commands() {
+    let of = |name: &str| vbi::study::shard::Shard::from_file_name(Path::new(name));
+    assert_eq!(
+        of("dir/part-3-of-8.json"),
+        Some(vbi::study::shard::Shard { index: 3, count: 8 })
+    );
+    for bad in [
+        "part-0-of-8.json",
+        "part-9-of-8.json",
+        "part-3-of-8",
+        "p-3-of-8.json",
+    ] {
+        assert_eq!(of(bad), None, "{bad}");
+    }
+    let shard = vbi::study::shard::Shard { index: 3, count: 8 };
+    assert_eq!(
+        vbi::study::shard::rerun_command(
+            Some("s.yaml"),
+            shard,
+            Path::new("out/parts/part-3-of-8.json")
+        ),
+        "vbi run s.yaml --shard 3/8 --out out/parts"
+    );
+    assert_eq!(
+        vbi::study::shard::rerun_command(Some("it's.yaml"), shard, Path::new("part-3-of-8.json")),
+        "vbi run 'it'\\''s.yaml' --shard 3/8 --out ."
+    );
+    assert_eq!(
+        vbi::study::shard::rerun_command(
+            Some("a\u{1b}[2J.yaml"),
+            shard,
+            Path::new("my parts/p.json")
+        ),
+        "vbi run SCENE --shard 3/8 --out 'my parts'"
+    );
+}

@@ -739,40 +739,6 @@ mod tests {
     }
 
     #[test]
-    fn part_names_and_rerun_commands() {
-        let of = |name: &str| Shard::from_file_name(Path::new(name));
-        assert_eq!(
-            of("dir/part-3-of-8.json"),
-            Some(Shard { index: 3, count: 8 })
-        );
-        for bad in [
-            "part-0-of-8.json",
-            "part-9-of-8.json",
-            "part-3-of-8",
-            "p-3-of-8.json",
-        ] {
-            assert_eq!(of(bad), None, "{bad}");
-        }
-        let shard = Shard { index: 3, count: 8 };
-        assert_eq!(
-            rerun_command(
-                Some("s.yaml"),
-                shard,
-                Path::new("out/parts/part-3-of-8.json")
-            ),
-            "vbi run s.yaml --shard 3/8 --out out/parts"
-        );
-        assert_eq!(
-            rerun_command(Some("it's.yaml"), shard, Path::new("part-3-of-8.json")),
-            "vbi run 'it'\\''s.yaml' --shard 3/8 --out ."
-        );
-        assert_eq!(
-            rerun_command(Some("a\u{1b}[2J.yaml"), shard, Path::new("my parts/p.json")),
-            "vbi run SCENE --shard 3/8 --out 'my parts'"
-        );
-    }
-
-    #[test]
     fn fnv1a_reference_values() {
         // Published FNV-1a 64 test vectors (Fowler/Noll/Vo reference code).
         assert_eq!(fnv1a(b""), "cbf29ce484222325");
