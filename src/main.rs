@@ -103,6 +103,11 @@ enum Command {
         /// Scenario files.
         #[arg(required = true)]
         files: Vec<PathBuf>,
+        /// Also check that each file's study splits into N shards (`vbi
+        /// run --shard K/N`, K = 1..N): exit 2 if it has no study, fewer
+        /// runs than N, or N exceeds `limits.study_points`.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+        shards: Option<u64>,
     },
     /// Print the JSON Schema of the scenario format (with --markdown: the
     /// key reference, docs/format.md, generated from it).
@@ -332,7 +337,7 @@ fn main() -> ExitCode {
             quiet,
             force,
         } => merge(&parts, &out, &options, quiet, force),
-        Command::Check { files } => check(&files, &load),
+        Command::Check { files, shards } => check(&files, &load, shards, cli.allow_large),
         Command::Schema { markdown } => {
             let schema = vbi::schema::schema_json();
             if markdown {
@@ -558,11 +563,27 @@ fn run(
 fn check(
     files: &[PathBuf],
     load: &dyn Fn(&Path) -> Result<scenario::Loaded, LoadError>,
+    shards: Option<u64>,
+    allow_large: bool,
 ) -> ExitCode {
     let mut invalid = false;
     for file in files {
         match load(file) {
             Ok(loaded) => {
+                if let Some(count) = shards {
+                    let name = file.display().to_string();
+                    let count = usize::try_from(count).unwrap_or(usize::MAX);
+                    match vbi::study::shard::check_shards(&loaded, &name, count, allow_large) {
+                        Ok((study, size)) => {
+                            outln!("{name}: ok ({study} study of {size} runs, {count} shards)")
+                        }
+                        Err(e) => {
+                            invalid = true;
+                            errln!("error: {e}");
+                        }
+                    }
+                    continue;
+                }
                 outln!("{}: ok", file.display());
                 for warning in vbi::report::advice::scene_warnings(&loaded.scenario) {
                     errln!("warning: {}: {warning}", file.display());

@@ -315,3 +315,188 @@ fn missing_duplicated_and_foreign_parts_are_refused() {
     let out = vbi(&["run", a.to_str().unwrap(), "--shard", "4/3"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn an_unusable_part_names_its_shard_and_the_command_that_writes_it_again() {
+    let scratch = Scratch::new("shard", "unusable");
+    std::fs::write(scratch.path("mc.yaml"), monte_carlo()).unwrap();
+    let vbi_in = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_vbi"))
+            .args(args)
+            .current_dir(scratch.dir())
+            .output()
+            .unwrap()
+    };
+    for k in 1..=3 {
+        ok(&vbi_in(&[
+            "run",
+            "mc.yaml",
+            "-q",
+            "--shard",
+            &format!("{k}/3"),
+            "--out",
+            "my parts",
+        ]));
+    }
+    let parts: Vec<String> = (1..=3)
+        .map(|k| format!("my parts/part-{k}-of-3.json"))
+        .collect();
+    let merge = |parts: &[String]| {
+        let mut args = vec!["merge", "--out", "merged"];
+        args.extend(parts.iter().map(String::as_str));
+        let out = vbi_in(&args);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(
+            !scratch.path("merged").exists(),
+            "nothing written on refusal"
+        );
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    // The exact command, the folder quoted for the shell (it has a space).
+    let command = "`vbi run mc.yaml --shard 2/3 --out 'my parts'`";
+    let path = scratch.path("my parts/part-2-of-3.json");
+    let text = std::fs::read(&path).unwrap();
+    // Cut mid-write (a task killed while writing without the atomic rename),
+    // emptied, removed, and left out of the list.
+    std::fs::write(&path, &text[..text.len() / 2]).unwrap();
+    let cut = merge(&parts);
+    assert!(
+        cut.contains("part-2-of-3.json: not a vbi part file: it ends early")
+            && cut.contains("shard 2 of 3 is unusable")
+            && cut.contains(command),
+        "{cut}"
+    );
+    std::fs::write(&path, "").unwrap();
+    let empty = merge(&parts);
+    assert!(
+        empty.contains("shard 2 of 3 is unusable") && empty.contains(command),
+        "{empty}"
+    );
+    std::fs::remove_file(&path).unwrap();
+    let gone = merge(&parts);
+    assert!(
+        gone.contains("cannot read")
+            && gone.contains("shard 2 of 3 is unusable")
+            && gone.contains(command),
+        "{gone}"
+    );
+    let left_out = merge(&[parts[0].clone(), parts[2].clone()]);
+    assert!(
+        left_out.contains("1 of 3 shards missing: 2 (runs 3..6)") && left_out.contains(command),
+        "{left_out}"
+    );
+    // Run as printed, the merge goes through.
+    let printed = command.trim_matches('`');
+    let bin = Path::new(env!("CARGO_BIN_EXE_vbi")).parent().unwrap();
+    let status = Command::new("sh")
+        .args(["-c", printed])
+        .current_dir(scratch.dir())
+        .env(
+            "PATH",
+            format!(
+                "{}:{}",
+                bin.display(),
+                std::env::var("PATH").unwrap_or_default()
+            ),
+        )
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let mut args = vec!["merge", "-q", "--out", "merged"];
+    args.extend(parts.iter().map(String::as_str));
+    ok(&vbi_in(&args));
+}
+
+#[test]
+fn running_a_finished_shard_again_replaces_its_part_atomically() {
+    use std::os::unix::fs::MetadataExt;
+    let scratch = Scratch::new("shard", "rerun");
+    // Enough samples that the run lasts while the part is read below.
+    let scene = scratch.path("mc.yaml");
+    std::fs::write(&scene, monte_carlo().replace("samples: 5", "samples: 400")).unwrap();
+    let dir = scratch.path("parts");
+    let args = [
+        "run",
+        scene.to_str().unwrap(),
+        "-q",
+        "--shard",
+        "2/2",
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    ok(&vbi(&args));
+    let path = dir.join("part-2-of-2.json");
+    let first = std::fs::read(&path).unwrap();
+    let inode = std::fs::metadata(&path).unwrap().ino();
+    // While the shard runs again, the part on disk is always the whole
+    // old one (never truncated, never half written).
+    let mut again = Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .spawn()
+        .unwrap();
+    let mut reads = 0;
+    while again.try_wait().unwrap().is_none() {
+        let now = std::fs::read(&path).unwrap();
+        if std::fs::metadata(&path).map(|m| m.ino()).ok() == Some(inode) {
+            assert!(now == first, "the old part changed in place");
+        }
+        let parsed: serde_json::Value = serde_json::from_slice(&now).expect("a whole part");
+        assert_eq!(parsed["shard"], 2);
+        reads += 1;
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(again.wait().unwrap().success());
+    assert!(reads > 3, "the run was too short to watch ({reads} reads)");
+    // Replaced by a rename (a new file), and nothing else left behind.
+    assert_ne!(std::fs::metadata(&path).unwrap().ino(), inode);
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names, ["part-2-of-2.json"]);
+    // The same results (the wall time aside).
+    let strip = |bytes: &[u8]| {
+        let mut v: serde_json::Value = serde_json::from_slice(bytes).unwrap();
+        v["wall_time"] = serde_json::Value::Null;
+        v
+    };
+    assert_eq!(strip(&first), strip(&std::fs::read(&path).unwrap()));
+}
+
+#[test]
+fn part_names_and_rerun_commands() {
+    let of = |name: &str| vbi::study::shard::Shard::from_file_name(Path::new(name));
+    assert_eq!(
+        of("dir/part-3-of-8.json"),
+        Some(vbi::study::shard::Shard { index: 3, count: 8 })
+    );
+    for bad in [
+        "part-0-of-8.json",
+        "part-9-of-8.json",
+        "part-3-of-8",
+        "p-3-of-8.json",
+    ] {
+        assert_eq!(of(bad), None, "{bad}");
+    }
+    let shard = vbi::study::shard::Shard { index: 3, count: 8 };
+    assert_eq!(
+        vbi::study::shard::rerun_command(
+            Some("s.yaml"),
+            shard,
+            Path::new("out/parts/part-3-of-8.json")
+        ),
+        "vbi run s.yaml --shard 3/8 --out out/parts"
+    );
+    assert_eq!(
+        vbi::study::shard::rerun_command(Some("it's.yaml"), shard, Path::new("part-3-of-8.json")),
+        "vbi run 'it'\\''s.yaml' --shard 3/8 --out ."
+    );
+    assert_eq!(
+        vbi::study::shard::rerun_command(
+            Some("a\u{1b}[2J.yaml"),
+            shard,
+            Path::new("my parts/p.json")
+        ),
+        "vbi run SCENE --shard 3/8 --out 'my parts'"
+    );
+}

@@ -72,6 +72,17 @@ impl Shard {
         at(self.index - 1)..at(self.index)
     }
 
+    /// The shard a part file's name (`part-K-of-N.json`) says it holds.
+    pub fn from_file_name(path: &Path) -> Option<Shard> {
+        let name = path.file_name()?.to_str()?;
+        let (k, n) = name
+            .strip_prefix("part-")?
+            .strip_suffix(".json")?
+            .split_once("-of-")?;
+        let (index, count) = (k.parse().ok()?, n.parse().ok()?);
+        (index >= 1 && index <= count).then_some(Shard { index, count })
+    }
+
     /// The part file's name: `part-K-of-N.json`.
     pub fn file_name(self) -> String {
         format!("part-{}-of-{}.json", self.index, self.count)
@@ -170,6 +181,18 @@ pub enum ShardError {
         /// What is wrong.
         message: String,
     },
+    /// A part file named as shard K of N cannot be read or is no part.
+    #[error("{error}; shard {shard} of {count} is unusable: run it again with `{command}`")]
+    Unusable {
+        /// Why it cannot be used.
+        error: Box<ShardError>,
+        /// K.
+        shard: usize,
+        /// N.
+        count: usize,
+        /// The command that writes it again.
+        command: String,
+    },
     /// Parts disagree or do not tile the study.
     #[error("{0}")]
     Mismatch(String),
@@ -212,6 +235,30 @@ fn study_size(loaded: &Loaded, study: &Study) -> (&'static str, usize) {
         Study::MonteCarlo(mc) => ("monte_carlo", monte_carlo::size(mc)),
         Study::ResonanceCheck(check) => ("resonance_check", crate::study::resonance::size(check)),
     }
+}
+
+/// Whether the study of `loaded` (read from `file`) splits into `count`
+/// shards: the study's type name and run count if it does (what `vbi check
+/// --shards N` tells a job script before it submits N tasks).
+pub fn check_shards(
+    loaded: &Loaded,
+    file: &str,
+    count: usize,
+    allow_large: bool,
+) -> Result<(&'static str, usize), ShardError> {
+    let study = loaded
+        .scenario
+        .study
+        .as_ref()
+        .ok_or_else(|| ShardError::NoStudy {
+            file: file.to_string(),
+        })?;
+    let (name, size) = study_size(loaded, study);
+    check_count(count, size, loaded, allow_large).map_err(|message| ShardError::Shards {
+        file: file.to_string(),
+        message,
+    })?;
+    Ok((name, size))
 }
 
 /// Runs shard `shard` of the study of `loaded` (read from `file`, whose
@@ -325,11 +372,29 @@ pub struct Merged {
 /// study's run count, and only then are the results assembled.
 pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardError> {
     let mut parts = Vec::with_capacity(paths.len());
+    let mut unusable = None;
     for path in paths {
-        parts.push((
-            path.clone(),
-            super::part_file::read_part(path, options.allow_large)?,
-        ));
+        match super::part_file::read_part(path, options.allow_large) {
+            Ok(part) => parts.push((path.clone(), part)),
+            Err(e) => {
+                unusable.get_or_insert((path.clone(), e));
+            }
+        }
+    }
+    // A part that cannot be read is named with its shard (from its file
+    // name, the only thing left to trust) and the command that writes it
+    // again; the scene's file is taken from a part that did read.
+    if let Some((path, error)) = unusable {
+        let Some(shard) = Shard::from_file_name(&path) else {
+            return Err(error);
+        };
+        let scene = parts.first().map(|(_, p)| p.scenario_file.as_str());
+        return Err(ShardError::Unusable {
+            error: Box::new(error),
+            shard: shard.index,
+            count: shard.count,
+            command: rerun_command(scene, shard, &path),
+        });
     }
     let Some((first_path, first)) = parts.first() else {
         return Err(ShardError::Mismatch("no part files given".into()));
@@ -461,12 +526,23 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
         } else {
             String::new()
         };
+        let first_missing = (1..=count).find(|k| !by_index.contains_key(k)).unwrap_or(1);
+        let command = rerun_command(
+            Some(&first_file),
+            Shard {
+                index: first_missing,
+                count,
+            },
+            &paths[0],
+        );
         return Err(ShardError::Mismatch(format!(
-            "{missing} of {count} shards missing: {}{more}",
+            "{missing} of {count} shards missing: {}{more}; run each again, e.g. shard \
+             {first_missing}: `{command}`",
             named.join(", ")
         )));
     }
     let parts: Vec<Part> = by_index.into_values().map(|(_, p)| p).collect();
+    let rerun = |index: usize| rerun_command(Some(&first_file), Shard { index, count }, &paths[0]);
     let wall_time: f64 = parts
         .iter()
         .map(|p| p.wall_time)
@@ -485,7 +561,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
                     return Err(wrong());
                 };
                 if more.len() != count {
-                    return Err(short(p.shard, more.len(), count));
+                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
                 }
                 points.extend(more);
             }
@@ -513,7 +589,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
                     return Err(wrong());
                 };
                 if more.len() != count || !more.iter().all(fits) {
-                    return Err(short(p.shard, more.len(), count));
+                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
                 }
                 points.extend(more);
             }
@@ -534,7 +610,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
                 let fits =
                     |q: &crate::study::resonance::ResonancePoint| q.train < check.trains.len();
                 if more.len() != count || !more.iter().all(fits) {
-                    return Err(short(p.shard, more.len(), count));
+                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
                 }
                 points.extend(more);
             }
@@ -547,7 +623,11 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
                     return Err(wrong());
                 };
                 slice.check(mc, p.first..p.end).map_err(|e| {
-                    ShardError::Mismatch(format!("shard {} of {count}: {e}", p.shard))
+                    ShardError::Mismatch(format!(
+                        "shard {} of {count}: {e}; run it again: `{}`",
+                        p.shard,
+                        rerun(p.shard)
+                    ))
                 })?;
                 slices.push(slice);
             }
@@ -564,10 +644,45 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
     })
 }
 
-fn short(shard: usize, got: usize, want: usize) -> ShardError {
+fn short(shard: usize, got: usize, want: usize, command: String) -> ShardError {
     ShardError::Mismatch(format!(
-        "shard {shard} holds {got} points of another shape or count than the {want} of its slice"
+        "shard {shard} holds {got} points of another shape or count than the {want} of its slice; \
+         run it again: `{command}`"
     ))
+}
+
+/// The command that writes shard `shard`'s part again: `vbi run SCENE
+/// --shard K/N --out DIR`, the scene as the parts name it (`SCENE` when no
+/// part could be read) and DIR the folder of `part` (a part's path).
+pub fn rerun_command(scene: Option<&str>, shard: Shard, part: &Path) -> String {
+    let dir = match part.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.display().to_string(),
+        _ => ".".into(),
+    };
+    // The scene's name comes from a part: one with control characters (a
+    // forged part's terminal escapes) or of unreasonable length is not
+    // echoed.
+    let printable = |s: &&str| s.len() <= 4096 && !s.chars().any(char::is_control);
+    format!(
+        "vbi run {} --shard {}/{} --out {}",
+        scene
+            .filter(printable)
+            .map_or_else(|| "SCENE".into(), shell_word),
+        shard.index,
+        shard.count,
+        shell_word(&dir)
+    )
+}
+
+/// `text` as one shell word: as is when it holds only characters no shell
+/// treats specially, else in single quotes.
+fn shell_word(text: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "_-./+,:@%=".contains(c);
+    if !text.is_empty() && text.chars().all(plain) {
+        text.into()
+    } else {
+        format!("'{}'", text.replace('\'', "'\\''"))
+    }
 }
 
 /// Whether `count` shards suit a study of `size` runs: at most one shard a
