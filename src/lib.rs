@@ -15,6 +15,7 @@ pub mod generate;
 pub mod ground;
 pub mod model;
 pub mod record;
+pub mod regress;
 pub mod report;
 pub mod run;
 pub mod scenario;
