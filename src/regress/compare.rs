@@ -223,7 +223,11 @@ pub fn row_place(table: &Table, r: usize) -> String {
     for (c, (h, cell)) in table.header.iter().zip(row).enumerate() {
         let key = c == 0 || h.contains("speed") || matches!(cell, Cell::Exact(_));
         if key && !matches!(cell, Cell::Empty) {
-            parts.push(format!("{h} = {}", show(Some(cell)).replace(".000000e", "e")));
+            let value = match cell {
+                Cell::Number(x) => crate::report::number(*x),
+                other => show(Some(other)),
+            };
+            parts.push(format!("{h} = {value}"));
         }
     }
     parts.join(", ")

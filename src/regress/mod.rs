@@ -72,7 +72,7 @@ pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran,
     let start = Instant::now();
     let loaded =
         crate::scenario::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
-    let resolved = record::strip_comments(&crate::run::resolved_yaml(&loaded.scenario));
+    let resolved = canonical_scene(&loaded.scenario);
     let results = crate::run::execute(loaded, &|_, _| {})
         .map_err(|e| format!("{}: {e}", file.display()))?;
     let record = Record::new(&scene_key(file), &resolved, &results, bins);
@@ -81,6 +81,35 @@ pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran,
         record,
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Significant digits of the numbers of the resolved scene in the store
+/// and its hash: a scene edit below 1e-12 relative (a number printed
+/// another way by a tool, a round-off in a derived value) is not a change
+/// of the scene; its effect on the results is judged by the tolerances.
+pub const SCENE_DIGITS: usize = 12;
+
+/// The resolved scene as YAML (every default filled in, as in a run's
+/// `resolved.yaml`), without the header that names the version and the
+/// file, its numbers rounded to [`SCENE_DIGITS`] significant digits.
+pub fn canonical_scene(scenario: &crate::scenario::resolved::Scenario) -> String {
+    fn round(value: &mut serde_json::Value) {
+        match value {
+            serde_json::Value::Number(n) if n.is_f64() => {
+                let x = n.as_f64().unwrap_or(f64::NAN);
+                let rounded: f64 = format!("{:.*e}", SCENE_DIGITS - 1, x).parse().unwrap_or(x);
+                if let Some(r) = serde_json::Number::from_f64(rounded) {
+                    *n = r;
+                }
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(round),
+            serde_json::Value::Object(map) => map.values_mut().for_each(round),
+            _ => {}
+        }
+    }
+    let mut value = serde_json::to_value(scenario).unwrap_or(serde_json::Value::Null);
+    round(&mut value);
+    crate::report::yaml::to_yaml(&value)
 }
 
 fn check_keys(files: &[PathBuf]) -> Result<(), RegressError> {

@@ -28,8 +28,9 @@
 //!   with the largest and the smallest value of every column over its
 //!   samples, so every peak of the full history is kept whatever the
 //!   resolution (the min/max envelope decimation of oscilloscopes).
-//! - `[table NAME]` (a study): each table the study writes as CSV
-//!   (`study`, `resonance`, `separation`, `envelopes`, …), row by row.
+//! - `[table NAME]`: each table the run or study writes as CSV
+//!   (`envelopes` of a run with `envelopes:`; a study's `study`,
+//!   `resonance`, `separation`, `envelopes`, …), row by row.
 //!
 //! Floats are written with 10 significant digits (a relative rounding of
 //! at most 5e-10, far below the default tolerance), so a change at
@@ -158,10 +159,14 @@ impl Record {
     /// The record of `results`, the scene's resolved YAML being `resolved`.
     pub fn new(scene: &str, resolved: &str, results: &Results, history_bins: usize) -> Self {
         let (summary, tables) = match results {
-            Results::Scene(outcome) => (
-                serde_json::to_value(&outcome.summary),
-                vec![history_table(&outcome.history, history_bins)],
-            ),
+            Results::Scene(outcome) => {
+                let mut tables = vec![history_table(&outcome.history, history_bins)];
+                if let Some(envelope) = &outcome.history.envelope {
+                    let csv = crate::record::envelope::envelope_csv(envelope);
+                    tables.push(csv_table("envelopes", csv.as_bytes()));
+                }
+                (serde_json::to_value(&outcome.summary), tables)
+            }
             Results::SeparationMap(map) => (
                 serde_json::to_value(serde_json::json!({
                     "points": map.points.len(),
