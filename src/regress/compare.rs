@@ -214,10 +214,10 @@ pub fn row_place(table: &Table, r: usize) -> String {
     let Some(row) = table.rows.get(r) else {
         return String::new();
     };
-    if table.name == "history" {
-        if let (Some(a), Some(b)) = (row[0].number(), row.get(1).and_then(Cell::number)) {
-            return format!("t = {a:.6} … {b:.6} s");
-        }
+    if table.name == "history"
+        && let (Some(a), Some(b)) = (row[0].number(), row.get(1).and_then(Cell::number))
+    {
+        return format!("t = {a:.6} … {b:.6} s");
     }
     let mut parts = vec![format!("row {}", r + 1)];
     for (c, (h, cell)) in table.header.iter().zip(row).enumerate() {
@@ -343,7 +343,7 @@ pub fn line_diff(old: &str, new: &str, max_lines: usize) -> Vec<String> {
     let mut ops: Vec<(char, &str)> = Vec::new();
     if a.len() > 4000 || b.len() > 4000 {
         for i in 0..a.len().max(b.len()) {
-            match (a.get(i), b.get(i)) {
+            match (a.get(i).copied(), b.get(i).copied()) {
                 (Some(x), Some(y)) if x == y => ops.push((' ', x)),
                 (x, y) => {
                     if let Some(x) = x {
@@ -374,12 +374,12 @@ pub fn line_diff(old: &str, new: &str, max_lines: usize) -> Vec<String> {
                 ops.push((' ', a[i]));
                 i += 1;
                 j += 1;
-            } else if j < m && (i == n || lcs[at(i, j + 1)] >= lcs[at(i + 1, j)]) {
-                ops.push(('+', b[j]));
-                j += 1;
-            } else {
+            } else if i < n && (j == m || lcs[at(i + 1, j)] >= lcs[at(i, j + 1)]) {
                 ops.push(('-', a[i]));
                 i += 1;
+            } else {
+                ops.push(('+', b[j]));
+                j += 1;
             }
         }
     }

@@ -214,20 +214,21 @@ pub fn junit(checks: &[SceneCheck]) -> String {
     out
 }
 
-/// A file name made of `text`: letters, digits, `-`, `_` and `.` kept,
-/// everything else `_`.
+/// A file name made of `text`: letters, digits, `-` and `.` kept, every
+/// run of other characters one `_`.
 fn file_name(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect::<String>()
-        .trim_matches('_')
-        .to_string()
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        let c = if c.is_ascii_alphanumeric() || matches!(c, '-' | '.') {
+            c
+        } else {
+            '_'
+        };
+        if !(c == '_' && out.ends_with('_')) {
+            out.push(c);
+        }
+    }
+    out.trim_matches('_').to_string()
 }
 
 /// The x axis of a table's plot: a history bin's mid time, a study row's
@@ -330,7 +331,7 @@ fn plot_column(
     ];
     line_chart(
         &path,
-        &format!("{key}: {}", header),
+        &format!("{key}: {header}"),
         &x_label,
         header,
         &series,
