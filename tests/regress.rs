@@ -48,9 +48,15 @@ fn copy_scene(dir: &Scratch, name: &str) -> PathBuf {
 }
 
 /// `vbi regress ACTION SCENES… --store STORE EXTRA…` in `cwd`.
-fn regress(action: &str, scenes: &[&Path], store: &Path, extra: &[&str], cwd: &Path) -> Output {
+fn regress<S: AsRef<Path>>(
+    action: &str,
+    scenes: &[S],
+    store: &Path,
+    extra: &[&str],
+    cwd: &Path,
+) -> Output {
     let mut args: Vec<std::ffi::OsString> = vec!["regress".into(), action.into()];
-    args.extend(scenes.iter().map(|s| s.as_os_str().to_owned()));
+    args.extend(scenes.iter().map(|s| s.as_ref().as_os_str().to_owned()));
     args.push("--store".into());
     args.push(store.as_os_str().to_owned());
     args.extend(extra.iter().map(std::ffi::OsString::from));
@@ -60,7 +66,12 @@ fn regress(action: &str, scenes: &[&Path], store: &Path, extra: &[&str], cwd: &P
 /// Replaces the one occurrence of `from` in the scene file by `to`.
 fn edit(scene: &Path, from: &str, to: &str) {
     let text = std::fs::read_to_string(scene).expect("read scene");
-    assert_eq!(text.matches(from).count(), 1, "`{from}` once in {}", scene.display());
+    assert_eq!(
+        text.matches(from).count(),
+        1,
+        "`{from}` once in {}",
+        scene.display()
+    );
     std::fs::write(scene, text.replace(from, to)).expect("write scene");
 }
 
@@ -81,7 +92,10 @@ fn old_new(line: &str) -> (f64, f64) {
     let values = line.split_once(": ").expect("quantity: values").1;
     let (old, rest) = values.split_once(" → ").expect("old → new");
     let new = rest.split(' ').next().expect("new value");
-    (old.parse().expect("old number"), new.parse().expect("new number"))
+    (
+        old.parse().expect("old number"),
+        new.parse().expect("new number"),
+    )
 }
 
 /// The relative change a report line gives (`(+1.000e-3 of its peak)`).
@@ -101,7 +115,12 @@ fn approve_then_check_passes() {
     assert!(text(&out.stdout).contains("moving-force-slow (new record)"));
     let record = std::fs::read_to_string(store.join("moving-force-slow/record.tsv"))
         .expect("record written");
-    for part in ["scene_hash\tfnv1a64:", "[scalars]", "[table history]", "quantities.midspan.min.value\t"] {
+    for part in [
+        "scene_hash\tfnv1a64:",
+        "[scalars]",
+        "[table history]",
+        "quantities.midspan.min.value\t",
+    ] {
         assert!(record.contains(part), "record lacks {part}:\n{record}");
     }
     assert!(store.join("moving-force-slow/resolved.yaml").is_file());
@@ -109,11 +128,18 @@ fn approve_then_check_passes() {
     assert_exit(&out, 0);
     let report = text(&out.stdout);
     assert!(report.contains("PASS  moving-force-slow"), "{report}");
-    assert!(report.contains("1 scene: 1 passed, 0 changed, 0 could not run"), "{report}");
+    assert!(
+        report.contains("1 scene: 1 passed, 0 changed, 0 could not run"),
+        "{report}"
+    );
     // Approving again without a change leaves the record as it was.
     let out = regress("approve", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 0);
-    assert!(text(&out.stdout).contains("(record unchanged)"), "{}", text(&out.stdout));
+    assert!(
+        text(&out.stdout).contains("(record unchanged)"),
+        "{}",
+        text(&out.stdout)
+    );
 }
 
 /// A 0.1 % stiffer beam: the slow crossing is quasi-static, so the midspan
@@ -126,7 +152,11 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
     let scene = copy_scene(&dir, SLOW);
     let store = dir.path("golden");
     assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
-    edit(&scene, "bending_stiffness: 8.323e9", "bending_stiffness: 8.331323e9");
+    edit(
+        &scene,
+        "bending_stiffness: 8.323e9",
+        "bending_stiffness: 8.331323e9",
+    );
     let plots = dir.path("plots");
     let out = regress(
         "check",
@@ -137,10 +167,16 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
     );
     assert_exit(&out, 1);
     let report = text(&out.stdout);
-    assert!(report.contains("FAIL  moving-force-slow: the scene changed"), "{report}");
+    assert!(
+        report.contains("FAIL  moving-force-slow: the scene changed"),
+        "{report}"
+    );
     assert!(report.contains("results changed"), "{report}");
     // The resolved diff shows the stiffness line, old and new.
-    assert!(report.contains("- ") && report.contains("8323000000"), "{report}");
+    assert!(
+        report.contains("- ") && report.contains("8323000000"),
+        "{report}"
+    );
     assert!(report.contains("8331323000"), "{report}");
     // The deflection extreme (negative, downward) shrinks by 1 − 1/1.001 =
     // 9.99e-4 of its peak, so new − old is positive; the dynamic share (DAF
@@ -164,7 +200,9 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
         new / old
     );
     // A plot of old against new for the changed history column.
-    let plot = plots.join("moving-force-slow").join("history-midspan_m_min.png");
+    let plot = plots
+        .join("moving-force-slow")
+        .join("history-midspan_m_min.png");
     assert!(plot.is_file(), "no plot {}:\n{report}", plot.display());
     assert!(report.contains("plot: "), "{report}");
 }
@@ -178,7 +216,11 @@ fn change_of_1e_13_relative_passes() {
     let scene = copy_scene(&dir, SLOW);
     let store = dir.path("golden");
     assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
-    edit(&scene, "bending_stiffness: 8.323e9", "bending_stiffness: 8.3230000000008323e9");
+    edit(
+        &scene,
+        "bending_stiffness: 8.323e9",
+        "bending_stiffness: 8.3230000000008323e9",
+    );
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 0);
     assert!(text(&out.stdout).contains("PASS  moving-force-slow"));
@@ -193,7 +235,11 @@ fn scene_edit_is_reported_as_such() {
     let scene = copy_scene(&dir, SLOW);
     let store = dir.path("golden");
     assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
-    edit(&scene, "name: moving-force-slow", "name: moving-force-slow-renamed");
+    edit(
+        &scene,
+        "name: moving-force-slow",
+        "name: moving-force-slow-renamed",
+    );
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 1);
     let report = text(&out.stdout);
@@ -203,8 +249,7 @@ fn scene_edit_is_reported_as_such() {
     );
     let diff_line = |tag: &str, name: &str| {
         report.lines().map(str::trim).any(|l| {
-            l.starts_with(&format!("{tag} name: "))
-                && l.trim_end_matches('"').ends_with(name)
+            l.starts_with(&format!("{tag} name: ")) && l.trim_end_matches('"').ends_with(name)
         })
     };
     assert!(diff_line("-", "moving-force-slow"), "{report}");
@@ -220,20 +265,33 @@ fn tolerances_from_the_store_file() {
     let scene = copy_scene(&dir, SLOW);
     let store = dir.path("golden");
     assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
-    std::fs::write(store.join("regress.yaml"), "scenes:\n  moving-force-slow:\n    relative: 1.0e-2\n")
-        .expect("write settings");
-    edit(&scene, "bending_stiffness: 8.323e9", "bending_stiffness: 8.331323e9");
+    std::fs::write(
+        store.join("regress.yaml"),
+        "scenes:\n  moving-force-slow:\n    relative: 1.0e-2\n",
+    )
+    .expect("write settings");
+    edit(
+        &scene,
+        "bending_stiffness: 8.323e9",
+        "bending_stiffness: 8.331323e9",
+    );
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 1);
     let report = text(&out.stdout);
     assert!(report.contains("results within tolerance"), "{report}");
     // A bad key is refused with its place.
-    std::fs::write(store.join("regress.yaml"), "relative: 1.0e-5\nscenes:\n  a: {relativ: 1}\n")
-        .expect("write settings");
+    std::fs::write(
+        store.join("regress.yaml"),
+        "relative: 1.0e-5\nscenes:\n  a: {relativ: 1}\n",
+    )
+    .expect("write settings");
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 2);
     let err = text(&out.stderr);
-    assert!(err.contains("regress.yaml:3:") && err.contains("relativ"), "{err}");
+    assert!(
+        err.contains("regress.yaml:3:") && err.contains("relativ"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -244,9 +302,17 @@ fn missing_record_and_broken_scene_could_not_run() {
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 2);
     assert!(text(&out.stdout).contains("ERROR moving-force-slow: could not run"));
-    assert!(text(&out.stdout).contains("approve the scene first"), "{}", text(&out.stdout));
+    assert!(
+        text(&out.stdout).contains("approve the scene first"),
+        "{}",
+        text(&out.stdout)
+    );
     assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
-    edit(&scene, "mass_per_length: 2303.0", "mass_per_length: -2303.0");
+    edit(
+        &scene,
+        "mass_per_length: 2303.0",
+        "mass_per_length: -2303.0",
+    );
     let out = regress("check", &[&scene], &store, &[], dir.dir());
     assert_exit(&out, 2);
 }
@@ -276,7 +342,11 @@ fn study_table_change_is_caught() {
     let record = std::fs::read_to_string(store.join("sweep/record.tsv")).expect("record");
     assert!(record.contains("[table study]"), "{record}");
     assert_exit(&regress("check", &[&scene], &store, &[], dir.dir()), 0);
-    edit(&scene, "bending_stiffness: 8.323e9", "bending_stiffness: 8.331323e9");
+    edit(
+        &scene,
+        "bending_stiffness: 8.323e9",
+        "bending_stiffness: 8.331323e9",
+    );
     let plots = dir.path("plots");
     let out = regress(
         "check",
@@ -295,7 +365,13 @@ fn study_table_change_is_caught() {
         (-1.5e-3..-0.5e-3).contains(&relative),
         "peak deflection moved by {relative:e}, expected about -1e-3: {line}"
     );
-    assert!(plots.join("sweep").join("study-max_abs_midspan_m.png").is_file(), "{report}");
+    assert!(
+        plots
+            .join("sweep")
+            .join("study-max_abs_midspan_m.png")
+            .is_file(),
+        "{report}"
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -369,7 +445,11 @@ fn parse_xml(xml: &str) -> Result<Element, String> {
             if done.name != name {
                 return Err(format!("</{name}> closes <{}>", done.name));
             }
-            stack.last_mut().ok_or("closing tag at the top")?.children.push(done);
+            stack
+                .last_mut()
+                .ok_or("closing tag at the top")?
+                .children
+                .push(done);
             continue;
         }
         let empty = tag.ends_with('/');
@@ -384,11 +464,15 @@ fn parse_xml(xml: &str) -> Result<Element, String> {
             if attrs.is_empty() {
                 break;
             }
-            let eq = attrs.find("=\"").ok_or(format!("attribute without =\": {attrs}"))?;
+            let eq = attrs
+                .find("=\"")
+                .ok_or(format!("attribute without =\": {attrs}"))?;
             let key = attrs[..eq].to_string();
             let after = &attrs[eq + 2..];
             let close = after.find('"').ok_or("unterminated attribute")?;
-            element.attributes.push((key, unescape_xml(&after[..close])?));
+            element
+                .attributes
+                .push((key, unescape_xml(&after[..close])?));
             attrs = &after[close + 1..];
         }
         if empty {
@@ -426,23 +510,41 @@ fn junit_xml_has_the_common_schema_structure() {
     let passing = copy_scene(&dir, SLOW);
     let changing = copy_scene(&dir, "two-axle-moving-force.yaml");
     let store = dir.path("golden");
-    assert_exit(&regress("approve", &[&passing, &changing], &store, &[], dir.dir()), 0);
+    assert_exit(
+        &regress("approve", &[&passing, &changing], &store, &[], dir.dir()),
+        0,
+    );
     let text_before = std::fs::read_to_string(&changing).expect("read");
     let speed = text_before
         .lines()
         .find(|l| l.trim_start().starts_with("speed:"))
         .expect("a speed line")
         .to_string();
-    let value: f64 = speed.split(':').nth(1).expect("value").trim().parse().expect("number");
+    let value: f64 = speed
+        .split(':')
+        .nth(1)
+        .expect("value")
+        .trim()
+        .parse()
+        .expect("number");
     let indent = &speed[..speed.len() - speed.trim_start().len()];
-    edit(&changing, &speed, &format!("{indent}speed: {}", value * 1.01));
+    edit(
+        &changing,
+        &speed,
+        &format!("{indent}speed: {}", value * 1.01),
+    );
     let unapproved = copy_scene(&dir, "moving-force-fast.yaml");
     let junit = dir.path("junit.xml");
     let out = regress(
         "check",
         &[&passing, &changing, &unapproved],
         &store,
-        &["--junit", junit.to_str().expect("utf-8"), "--out", dir.path("plots").to_str().expect("utf-8")],
+        &[
+            "--junit",
+            junit.to_str().expect("utf-8"),
+            "--out",
+            dir.path("plots").to_str().expect("utf-8"),
+        ],
         dir.dir(),
     );
     assert_exit(&out, 2);
@@ -457,19 +559,45 @@ fn junit_xml_has_the_common_schema_structure() {
         assert_eq!(count(element, "tests"), 3, "{xml}");
         assert_eq!(count(element, "failures"), 1, "{xml}");
         assert_eq!(count(element, "errors"), 1, "{xml}");
-        let time: f64 = element.attribute("time").expect("time").parse().expect("seconds");
+        let time: f64 = element
+            .attribute("time")
+            .expect("time")
+            .parse()
+            .expect("seconds");
         assert!(time >= 0.0);
     }
-    let names: Vec<&str> = suite.children.iter().map(|c| c.attribute("name").unwrap_or("")).collect();
-    assert_eq!(names, ["moving-force-slow", "two-axle-moving-force", "moving-force-fast"]);
+    let names: Vec<&str> = suite
+        .children
+        .iter()
+        .map(|c| c.attribute("name").unwrap_or(""))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "moving-force-slow",
+            "two-axle-moving-force",
+            "moving-force-fast"
+        ]
+    );
     for case in &suite.children {
         assert_eq!(case.name, "testcase");
         assert!(case.attribute("classname").is_some_and(|c| !c.is_empty()));
-        let _: f64 = case.attribute("time").expect("time").parse().expect("seconds");
+        let _: f64 = case
+            .attribute("time")
+            .expect("time")
+            .parse()
+            .expect("seconds");
         assert!(case.children.len() <= 1);
         for outcome in &case.children {
-            assert!(["failure", "error"].contains(&outcome.name.as_str()), "{}", outcome.name);
-            assert!(outcome.attribute("message").is_some_and(|m| !m.is_empty()), "{xml}");
+            assert!(
+                ["failure", "error"].contains(&outcome.name.as_str()),
+                "{}",
+                outcome.name
+            );
+            assert!(
+                outcome.attribute("message").is_some_and(|m| !m.is_empty()),
+                "{xml}"
+            );
             assert!(outcome.attribute("type").is_some(), "{xml}");
         }
     }
@@ -480,7 +608,10 @@ fn junit_xml_has_the_common_schema_structure() {
         .collect();
     assert_eq!(kinds, [None, Some("failure"), Some("error")]);
     // The failure's text names what moved.
-    assert!(suite.children[1].children[0].text.contains("quantities."), "{xml}");
+    assert!(
+        suite.children[1].children[0].text.contains("quantities."),
+        "{xml}"
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -501,11 +632,12 @@ fn regress_commands(file: &str) -> Vec<String> {
 }
 
 fn shell(command: &str, cwd: &Path) -> Output {
-    let bin = Path::new(env!("CARGO_BIN_EXE_vbi")).parent().expect("bin dir");
-    let path = std::env::join_paths(
-        std::iter::once(bin.to_path_buf())
-            .chain(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default())),
-    )
+    let bin = Path::new(env!("CARGO_BIN_EXE_vbi"))
+        .parent()
+        .expect("bin dir");
+    let path = std::env::join_paths(std::iter::once(bin.to_path_buf()).chain(
+        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()),
+    ))
     .expect("PATH");
     Command::new("sh")
         .arg("-c")
@@ -523,15 +655,21 @@ fn shell(command: &str, cwd: &Path) -> Output {
 fn documented_ci_commands_run_as_written() {
     let readme = regress_commands("README.md");
     let approve: Vec<&String> = readme.iter().filter(|c| c.contains(" approve ")).collect();
-    assert!(!approve.is_empty(), "README shows no `vbi regress approve` line");
+    assert!(
+        !approve.is_empty(),
+        "README shows no `vbi regress approve` line"
+    );
     let mut checks = regress_commands("docs/ci/github-actions.yml");
     checks.extend(regress_commands("docs/ci/gitlab-ci.yml"));
     assert_eq!(checks.len(), 2, "one check per workflow: {checks:?}");
     let dir = Scratch::new("regress", "ci");
     std::fs::create_dir_all(dir.path("scenes")).expect("mkdir");
     for name in [SLOW, "two-axle-moving-force.yaml"] {
-        std::fs::copy(manifest_dir().join("scenarios").join(name), dir.path("scenes").join(name))
-            .expect("copy");
+        std::fs::copy(
+            manifest_dir().join("scenarios").join(name),
+            dir.path("scenes").join(name),
+        )
+        .expect("copy");
     }
     for command in &approve {
         assert_exit(&shell(command, dir.dir()), 0);
@@ -539,9 +677,17 @@ fn documented_ci_commands_run_as_written() {
     for command in &checks {
         let out = shell(command, dir.dir());
         assert_exit(&out, 0);
-        assert!(text(&out.stdout).contains("2 scenes: 2 passed"), "{command}: {}", text(&out.stdout));
+        assert!(
+            text(&out.stdout).contains("2 scenes: 2 passed"),
+            "{command}: {}",
+            text(&out.stdout)
+        );
     }
-    edit(&dir.path("scenes").join(SLOW), "bending_stiffness: 8.323e9", "bending_stiffness: 8.4e9");
+    edit(
+        &dir.path("scenes").join(SLOW),
+        "bending_stiffness: 8.323e9",
+        "bending_stiffness: 8.4e9",
+    );
     for command in &checks {
         let _ = std::fs::remove_file(dir.path("regress-junit.xml"));
         assert_exit(&shell(command, dir.dir()), 1);
@@ -569,13 +715,28 @@ fn shipped_scenarios_approve_and_check() {
     let store = dir.path("store");
     let out = regress("approve", &refs, &store, &[], manifest_dir());
     assert_exit(&out, 0);
-    let record = std::fs::read_to_string(store.join("hslm-resonance-20m/record.tsv")).expect("record");
+    let record =
+        std::fs::read_to_string(store.join("hslm-resonance-20m/record.tsv")).expect("record");
     assert!(record.contains("[table resonance]"), "{record}");
     let out = regress("check", &refs, &store, &[], manifest_dir());
     assert_exit(&out, 0);
     let report = text(&out.stdout);
-    assert!(report.contains("4 scenes: 4 passed, 0 changed, 0 could not run"), "{report}");
+    assert!(
+        report.contains("4 scenes: 4 passed, 0 changed, 0 could not run"),
+        "{report}"
+    );
     // Output order is the order given, whatever finished first.
-    let order: Vec<&str> = report.lines().filter_map(|l| l.strip_prefix("PASS  ")).collect();
-    assert_eq!(order, ["moving-force-slow", "two-axle-moving-force", "yang-yau-sprung-mass", "hslm-resonance-20m"]);
+    let order: Vec<&str> = report
+        .lines()
+        .filter_map(|l| l.strip_prefix("PASS  "))
+        .collect();
+    assert_eq!(
+        order,
+        [
+            "moving-force-slow",
+            "two-axle-moving-force",
+            "yang-yau-sprung-mass",
+            "hslm-resonance-20m"
+        ]
+    );
 }

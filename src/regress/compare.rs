@@ -299,9 +299,7 @@ fn compare_table(scene: &str, old: &Table, new: &Table, settings: &Settings, out
         for (r, (orow, nrow)) in old.rows.iter().zip(&new.rows).enumerate() {
             let (a, b) = (&orow[c], &nrow[nc]);
             let (pass, size) = match (a, b) {
-                (Cell::Number(x), Cell::Number(y)) => {
-                    (tol.accepts(*x, *y, peak), (y - x).abs())
-                }
+                (Cell::Number(x), Cell::Number(y)) => (tol.accepts(*x, *y, peak), (y - x).abs()),
                 (x, y) => (x == y, f64::INFINITY),
             };
             if !pass {

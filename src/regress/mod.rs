@@ -73,8 +73,8 @@ pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran,
     let loaded =
         crate::scenario::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
     let resolved = canonical_scene(&loaded.scenario);
-    let results = crate::run::execute(loaded, &|_, _| {})
-        .map_err(|e| format!("{}: {e}", file.display()))?;
+    let results =
+        crate::run::execute(loaded, &|_, _| {}).map_err(|e| format!("{}: {e}", file.display()))?;
     let record = Record::new(&scene_key(file), &resolved, &results, bins);
     Ok(Ran {
         resolved,
@@ -157,8 +157,9 @@ pub fn approve(
         .iter()
         .zip(runs)
         .map(|(file, ran)| match ran {
-            Ok(ran) => write_record(store, &scene_key(file), &ran)
-                .unwrap_or_else(Approved::CouldNotRun),
+            Ok(ran) => {
+                write_record(store, &scene_key(file), &ran).unwrap_or_else(Approved::CouldNotRun)
+            }
             Err(e) => Approved::CouldNotRun(e),
         })
         .collect())

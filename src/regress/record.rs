@@ -197,11 +197,7 @@ impl Record {
             ),
         };
         let mut scalars = Vec::new();
-        flatten(
-            &summary.unwrap_or(Value::Null),
-            String::new(),
-            &mut scalars,
-        );
+        flatten(&summary.unwrap_or(Value::Null), String::new(), &mut scalars);
         Record {
             vbi_version: env!("CARGO_PKG_VERSION").into(),
             scene: scene.into(),
@@ -336,11 +332,16 @@ pub fn history_table(history: &History, bins: usize) -> Table {
             continue;
         }
         let slice = &rows_all[from..to];
-        let mut row = vec![Cell::Number(slice[0][0]), Cell::Number(slice[to - from - 1][0])];
+        let mut row = vec![
+            Cell::Number(slice[0][0]),
+            Cell::Number(slice[to - from - 1][0]),
+        ];
         for c in 1..labels.len() {
-            let (hi, lo) = slice.iter().fold((f64::NEG_INFINITY, f64::INFINITY), |(h, l), r| {
-                (h.max(r[c]), l.min(r[c]))
-            });
+            let (hi, lo) = slice
+                .iter()
+                .fold((f64::NEG_INFINITY, f64::INFINITY), |(h, l), r| {
+                    (h.max(r[c]), l.min(r[c]))
+                });
             row.push(Cell::Number(hi));
             row.push(Cell::Number(lo));
         }
@@ -487,7 +488,10 @@ impl Record {
             if line.is_empty() {
                 continue;
             }
-            if let Some(name) = line.strip_prefix("[table ").and_then(|l| l.strip_suffix(']')) {
+            if let Some(name) = line
+                .strip_prefix("[table ")
+                .and_then(|l| l.strip_suffix(']'))
+            {
                 record.tables.push(Table {
                     name: unescape(name),
                     header: Vec::new(),
@@ -541,7 +545,9 @@ impl Record {
                                 table.header.len()
                             )));
                         }
-                        table.rows.push(fields.iter().map(|f| read_cell(f)).collect());
+                        table
+                            .rows
+                            .push(fields.iter().map(|f| read_cell(f)).collect());
                     }
                 }
             }

@@ -256,7 +256,11 @@ fn abscissa(table: &Table) -> (String, Vec<f64>) {
     match pick {
         Some((c, h)) => (
             h.clone(),
-            table.column(c).into_iter().map(|v| v.unwrap_or(f64::NAN)).collect(),
+            table
+                .column(c)
+                .into_iter()
+                .map(|v| v.unwrap_or(f64::NAN))
+                .collect(),
         ),
         None => (
             "row".into(),
@@ -269,10 +273,7 @@ fn abscissa(table: &Table) -> (String, Vec<f64>) {
 /// `out/<scene>/`: the golden values and the new ones against time (a
 /// history) or the row's speed (a study table). The paths written, with
 /// their scene's key.
-pub fn write_plots(
-    checks: &[SceneCheck],
-    out: &Path,
-) -> Result<Vec<(String, PathBuf)>, PlotError> {
+pub fn write_plots(checks: &[SceneCheck], out: &Path) -> Result<Vec<(String, PathBuf)>, PlotError> {
     let mut written = Vec::new();
     for check in checks {
         let (Some(c), Some((old, new))) = (&check.comparison, &check.records) else {
@@ -303,7 +304,10 @@ fn plot_column(
         return Ok(None);
     };
     let values = |t: &Table, c: usize| -> Vec<f64> {
-        t.column(c).into_iter().map(|v| v.unwrap_or(f64::NAN)).collect()
+        t.column(c)
+            .into_iter()
+            .map(|v| v.unwrap_or(f64::NAN))
+            .collect()
     };
     let (old_y, new_y) = (values(&old_t, changed.column), values(&new_t, new_c));
     if old_y.iter().all(|v| v.is_nan()) && new_y.iter().all(|v| v.is_nan()) {
@@ -316,7 +320,11 @@ fn plot_column(
         path: folder.clone(),
         source,
     })?;
-    let path = folder.join(format!("{}-{}.png", file_name(&changed.table), file_name(header)));
+    let path = folder.join(format!(
+        "{}-{}.png",
+        file_name(&changed.table),
+        file_name(header)
+    ));
     let series = [
         Series {
             label: "golden (approved)",

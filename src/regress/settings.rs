@@ -233,7 +233,10 @@ fn tolerance_value(node: &Node) -> Result<f64, Located> {
 fn bins(node: &Node) -> Result<usize, Located> {
     match number(node) {
         Some(x) if x.fract() == 0.0 && (2.0..=100_000.0).contains(&x) => Ok(x as usize),
-        _ => Err((node.loc, "history_bins: expected a whole number from 2 to 100000".into())),
+        _ => Err((
+            node.loc,
+            "history_bins: expected a whole number from 2 to 100000".into(),
+        )),
     }
 }
 
@@ -281,7 +284,10 @@ mod tests {
         )
         .expect("parses");
         assert_eq!(s.tolerance("b", "run.steps").relative, 1e-6);
-        assert_eq!(s.tolerance("b", "quantities.midspan.max.value").relative, 1e-4);
+        assert_eq!(
+            s.tolerance("b", "quantities.midspan.max.value").relative,
+            1e-4
+        );
         assert_eq!(s.tolerance("b", "midspan [m] max").relative, 1e-4);
         let a = s.tolerance("a", "midspan [m] min");
         assert_eq!((a.relative, a.absolute), (0.01, 0.5));
