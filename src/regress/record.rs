@@ -1,20 +1,21 @@
 //! The golden record of one scene (`vbi regress`, issue 30): what a run or
-//! a study produced, compact and in a text that diffs well line by line.
+//! a study produced, compact and in a text that diffs well line by line
+//! (tab-separated; shown here with spaces):
 //!
 //! ```text
 //! # vbi regress golden record …
-//! vbi_version	0.1.0
-//! scene	moving-force-slow
-//! scene_hash	fnv1a64:5f0c…
-//! history_bins	200
+//! vbi_version  0.1.0
+//! scene  moving-force-slow
+//! scene_hash  fnv1a64:5f0c…
+//! history_bins  200
 //!
 //! [scalars]
-//! name	value	time_s	position_m
-//! quantities.midspan.max.value	5.77186173e-4	1.09968e0	2.627056132e1
-//! run.steps	77325
+//! name  value  time_s  position_m
+//! quantities.midspan.max.value  5.77186173e-4  1.09968e0  2.627056132e1
+//! run.steps  77325
 //!
 //! [table history]
-//! time_from [s]	time_to [s]	midspan [m] max	midspan [m] min	…
+//! time_from [s]  time_to [s]  midspan [m] max  midspan [m] min  …
 //! ```
 //!
 //! - `[scalars]`: every number and text of the run's or study's
