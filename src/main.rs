@@ -195,7 +195,8 @@ enum Regress {
         /// Also write the result as JUnit XML (one test case per scene).
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
-        /// Folder for the plots of old against new of each changed history.
+        /// Folder for the plots of old against new of each changed history
+        /// column or study table column (in DIR/<scene>/).
         /// Default: results/regress.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
