@@ -17,6 +17,7 @@ pub mod ground;
 pub mod init;
 pub mod model;
 pub mod record;
+pub mod regress;
 pub mod report;
 pub mod run;
 pub mod scenario;

@@ -200,6 +200,46 @@ enum Command {
         #[arg(long)]
         force: bool,
     },
+    /// Golden-file regression for your own scenes: `approve` runs them and
+    /// stores a compact record of their results in the store folder,
+    /// `check` re-runs them and compares (exit 0 all pass, 1 a result or
+    /// scene changed, 2 a scene could not run or has no record). Tolerances:
+    /// `regress.yaml` in the store (see the README, "Regression").
+    Regress {
+        #[command(subcommand)]
+        action: Regress,
+    },
+}
+
+#[derive(Debug, Subcommand)]
+enum Regress {
+    /// Run the scenes and write (or replace) their golden records in the store.
+    Approve {
+        /// Scenario files (single runs and studies).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Folder of the golden records (created): one folder per scene,
+        /// named after the file's stem.
+        #[arg(long, value_name = "DIR")]
+        store: PathBuf,
+    },
+    /// Re-run the scenes and compare them with their golden records.
+    Check {
+        /// Scenario files (single runs and studies).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Folder of the golden records.
+        #[arg(long, value_name = "DIR")]
+        store: PathBuf,
+        /// Also write the result as JUnit XML (one test case per scene).
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+        /// Folder for the plots of old against new of each changed history
+        /// column or study table column (in DIR/<scene>/).
+        /// Default: results/regress.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+    },
 }
 
 #[derive(Debug, Subcommand)]
@@ -282,6 +322,7 @@ const EXIT_INVALID: u8 = 2;
 const EXIT_CHECK_FAILED: u8 = 3;
 
 // After the macros, which it uses.
+mod regress_cmd;
 mod studies;
 use studies::{merge, run_sample, run_shard, write_study};
 
@@ -391,6 +432,15 @@ fn main() -> ExitCode {
         },
         Command::Modes { file, shapes, json } => modes(&file, options, shapes.as_deref(), json),
         Command::Generate { what } => generate(what),
+        Command::Regress { action } => match action {
+            Regress::Approve { scenes, store } => regress_cmd::approve(&scenes, &store, &options),
+            Regress::Check {
+                scenes,
+                store,
+                junit,
+                out,
+            } => regress_cmd::check(&scenes, &store, &options, junit.as_deref(), out),
+        },
         Command::Converge {
             file,
             tolerance,
