@@ -500,7 +500,7 @@ pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: 
             wavelength,
             2.0,
         ),
-        Surface::PiecewiseLinear { ref points } => {
+        Surface::PiecewiseLinear { ref points, .. } => {
             if let Some(i) = (1..points.len()).find(|&i| {
                 let d = points[i][0] - points[i - 1][0];
                 d > 0.0 && d < step_travel

@@ -682,6 +682,7 @@ mod tests {
                 amplitude: 0.003,
                 wavelength: 1.5,
                 phase: 0.5,
+                direction: TrackDirection::Vertical,
             },
             10.0,
         )
