@@ -640,7 +640,9 @@ fn modes_json(
 /// Each vehicle's natural frequencies (Hz, wheels on rigid ground, massless
 /// DOFs condensed out) as JSON objects `{vehicle, type, frequencies_hz}`,
 /// every frequency in its shortest round-trip form.
-fn vehicle_frequencies_json(scenario: &vbi::scenario::resolved::Scenario) -> Vec<serde_json::Value> {
+fn vehicle_frequencies_json(
+    scenario: &vbi::scenario::resolved::Scenario,
+) -> Vec<serde_json::Value> {
     use vbi::scenario::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     scenario

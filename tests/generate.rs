@@ -395,8 +395,9 @@ fn the_full_scale_scene_checks_against_the_generated_viaduct() {
         dir.join("records/synthetic-lateral.AT2"),
     )
     .unwrap();
-    let scene = std::fs::read_to_string(root.join("scenarios/embs-viaduct-30span-ave-s103-train.yaml"))
-        .unwrap();
+    let scene =
+        std::fs::read_to_string(root.join("scenarios/embs-viaduct-30span-ave-s103-train.yaml"))
+            .unwrap();
     assert!(scene.contains("modes: {max_frequency: 15.0}"));
     std::fs::write(
         dir.join("scene.yaml"),

@@ -412,16 +412,14 @@ fn modes_json_lists_vehicle_frequencies_at_full_precision() {
     let scene = scratch.path("car.yaml");
     std::fs::write(
         &scene,
-        "bridge: {type: beam, spans: [30.0], bending_stiffness: 1.0e11, mass_per_length: \
+        "name: car\nbridge: {type: beam, spans: [30.0], bending_stiffness: 1.0e11, mass_per_length: \
          1.5e4, modes: {count: 2}}\nvehicles: [{type: train_3d, speed: 300 km/h}]\n",
     )
     .unwrap();
     let json = modes_json(&scene);
     let loaded = vbi::scenario::load_file(&scene).unwrap();
-    let model = vbi::vehicle::VehicleModel::build(
-        &loaded.scenario.vehicles[0],
-        loaded.scenario.gravity,
-    );
+    let model =
+        vbi::vehicle::VehicleModel::build(&loaded.scenario.vehicles[0], loaded.scenario.gravity);
     let want = vbi::scenario::content::vehicle_frequencies(&model, None);
     let got: Vec<u64> = json["vehicles"][0]["frequencies_hz"]
         .as_array()

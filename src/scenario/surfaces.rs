@@ -527,7 +527,11 @@ pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: 
 /// where no vehicle can follow it: only a `train_3d`'s wheelsets have a
 /// lateral DOF at the rail, every other vehicle would run as on straight
 /// track and the shape would be silently ignored.
-pub(super) fn check_lateral_followers(surface: &Surface, vehicles: &[Vehicle], ck: &mut Checker<'_>) {
+pub(super) fn check_lateral_followers(
+    surface: &Surface,
+    vehicles: &[Vehicle],
+    ck: &mut Checker<'_>,
+) {
     let explicit = !matches!(surface, Surface::Measured { .. }) && surface.spectrum().is_none();
     if explicit
         && surface.has_lateral_geometry()

@@ -160,8 +160,10 @@ mod tests {
 
     #[test]
     fn reads_both_rails_vertical_and_lateral() {
-        let p = parse("x,left,right,left_lateral,right_lateral\n0,1e-3,2e-3,3e-3,4e-3\n2,0,0,-1e-3,-2e-3\n")
-            .unwrap();
+        let p = parse(
+            "x,left,right,left_lateral,right_lateral\n0,1e-3,2e-3,3e-3,4e-3\n2,0,0,-1e-3,-2e-3\n",
+        )
+        .unwrap();
         assert_eq!(p.x, vec![0.0, 2.0]);
         assert_eq!(p.right, Some(vec![2e-3, 0.0]));
         assert_eq!(p.lateral, Some((vec![3e-3, -1e-3], vec![4e-3, -2e-3])));
@@ -176,7 +178,10 @@ mod tests {
         // Four columns: neither per-rail vertical nor the recording car's five.
         let (line, message) = parse("0,0,0,0\n").unwrap_err();
         assert_eq!(line, 1);
-        assert!(message.contains("5 (x, left, right, left_lateral, right_lateral)"), "{message}");
+        assert!(
+            message.contains("5 (x, left, right, left_lateral, right_lateral)"),
+            "{message}"
+        );
         // A bad lateral value is named by its column.
         let (line, message) = parse("0,0,0,0,0\n1,0,0,0,x\n").unwrap_err();
         assert_eq!(line, 2);
