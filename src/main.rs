@@ -668,7 +668,7 @@ fn modes(
     };
     let plate = bridge.width().is_some();
     if json {
-        outln!("{}", modes_json(&name, &bridge));
+        outln!("{}", modes_json(&name, &bridge, scenario.as_ref()));
         return ExitCode::SUCCESS;
     }
     out!(
@@ -723,8 +723,15 @@ fn modes(
 
 /// The modes of `bridge` as JSON: every frequency at full precision
 /// (shortest round-trip decimal), damping, character, and the checks the
-/// modes passed ([`vbi::bridge::eigen::ModeCheck`]).
-fn modes_json(name: &str, bridge: &vbi::bridge::ModalBridge) -> String {
+/// modes passed ([`vbi::bridge::eigen::ModeCheck`]); and, when the scene
+/// has vehicles, each vehicle's natural frequencies with its wheels on
+/// rigid ground at full precision (the text output prints them to four
+/// decimals).
+fn modes_json(
+    name: &str,
+    bridge: &vbi::bridge::ModalBridge,
+    scenario: Option<&vbi::scenario::resolved::Scenario>,
+) -> String {
     let check = bridge.check;
     let two_pi = 2.0 * std::f64::consts::PI;
     let modes: Vec<serde_json::Value> = bridge
@@ -762,8 +769,32 @@ fn modes_json(name: &str, bridge: &vbi::bridge::ModalBridge) -> String {
             })),
         },
         "modes": modes,
+        "vehicles": scenario.map_or_else(Vec::new, vehicle_frequencies_json),
     });
     serde_json::to_string_pretty(&value).expect("JSON of numbers and strings")
+}
+
+/// Each vehicle's natural frequencies (Hz, wheels on rigid ground, massless
+/// DOFs condensed out) as JSON objects `{vehicle, type, frequencies_hz}`,
+/// every frequency in its shortest round-trip form.
+fn vehicle_frequencies_json(
+    scenario: &vbi::scenario::resolved::Scenario,
+) -> Vec<serde_json::Value> {
+    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::vehicle::VehicleModel;
+    scenario
+        .vehicles
+        .iter()
+        .enumerate()
+        .map(|(i, vehicle)| {
+            let model = VehicleModel::build(vehicle, scenario.gravity);
+            serde_json::json!({
+                "vehicle": i + 1,
+                "type": vehicle.type_name(),
+                "frequencies_hz": vehicle_frequencies(&model, None),
+            })
+        })
+        .collect()
 }
 
 /// Each vehicle's own natural frequencies with its wheels held on rigid

@@ -369,3 +369,48 @@ fn written_files_round_trip() {
     assert!(String::from_utf8_lossy(&huge.stderr).contains("above the limit"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The shipped full-scale scene (issue 24 point 7,
+/// scenarios/embs-viaduct-30span-ave-s103-train.yaml) validates against
+/// the files `vbi generate viaduct` writes at its defaults: generated into
+/// a scratch folder beside a copy of the scene and its record, `vbi check
+/// --trust-limits` accepts it (eight cars at the stated spacing, the deck
+/// node and rail records, the record's placement). To stay fast the copy
+/// keeps 10 modes instead of the scene's cut at 15 Hz (the full solve is
+/// benches/full_scale_viaduct.sh); nothing else is changed.
+#[test]
+fn the_full_scale_scene_checks_against_the_generated_viaduct() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = std::env::temp_dir().join(format!("vbi-generate-full-scale-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("records")).unwrap();
+    let generated = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(["generate", "viaduct", "--out"])
+        .arg(dir.join("viaduct-30span"))
+        .output()
+        .unwrap();
+    assert!(generated.status.success(), "{generated:?}");
+    std::fs::copy(
+        root.join("scenarios/records/synthetic-lateral.AT2"),
+        dir.join("records/synthetic-lateral.AT2"),
+    )
+    .unwrap();
+    let scene =
+        std::fs::read_to_string(root.join("scenarios/embs-viaduct-30span-ave-s103-train.yaml"))
+            .unwrap();
+    assert!(scene.contains("modes: {max_frequency: 15.0}"));
+    std::fs::write(
+        dir.join("scene.yaml"),
+        scene.replace("modes: {max_frequency: 15.0}", "modes: {count: 10}"),
+    )
+    .unwrap();
+    let checked = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(["check", "--trust-limits"])
+        .arg(dir.join("scene.yaml"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&checked.stderr);
+    assert!(checked.status.success(), "{stderr}");
+    assert!(String::from_utf8_lossy(&checked.stdout).contains("scene.yaml: ok"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

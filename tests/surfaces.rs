@@ -6,7 +6,7 @@
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
-use vbi::scenario::resolved::{Rails, Sampling, Surface};
+use vbi::scenario::resolved::{Rails, Sampling, Surface, TrackDirection};
 use vbi::surface::spectrum::{
     Interference, IsoClass, Spectrum, fra_alignment, fra_vertical, german_alignment,
     german_vertical, iso8608,
@@ -426,6 +426,7 @@ fn reseeding() {
         start: 1.0,
         length: 2.0,
         height: 0.01,
+        direction: TrackDirection::Vertical,
     };
     assert!(!ramp.is_random());
     assert_eq!(ramp.reseeded(5), ramp);
@@ -451,6 +452,7 @@ fn shapes_by_hand() {
             start: 2.0,
             length: 4.0,
             height: 0.02,
+            direction: TrackDirection::Vertical,
         },
         20.0,
     )
@@ -462,6 +464,7 @@ fn shapes_by_hand() {
         &Surface::Step {
             position: 5.0,
             height: -0.003,
+            direction: TrackDirection::Vertical,
         },
         20.0,
     )
@@ -474,6 +477,7 @@ fn shapes_by_hand() {
         start: 3.0,
         length: 2.0,
         height: 0.01,
+        direction: TrackDirection::Vertical,
     };
     let p = Profile::build(&bump, 20.0).unwrap();
     assert!((p.elevation(4.0) - 0.01).abs() < 1e-15);
@@ -486,6 +490,7 @@ fn shapes_by_hand() {
     let pl = Profile::build(
         &Surface::PiecewiseLinear {
             points: vec![[0.0, 0.0], [2.0, 0.004], [5.0, -0.002]],
+            direction: TrackDirection::Vertical,
         },
         20.0,
     )
@@ -493,6 +498,24 @@ fn shapes_by_hand() {
     assert_eq!(pl.elevation_slope_curvature(1.0), (0.002, 0.002, 0.0));
     assert!((pl.elevation(3.5) - 0.001).abs() < 1e-15);
     assert_eq!(pl.elevation(-1.0), 0.0);
+    // Laid sideways (issue 24.6): the rails are level and the shape is the
+    // track's alignment, value, slope and curvature alike.
+    let lateral = Profile::build(
+        &Surface::Bump {
+            start: 3.0,
+            length: 2.0,
+            height: 0.01,
+            direction: TrackDirection::Lateral,
+        },
+        20.0,
+    )
+    .unwrap();
+    for x in [2.0, 3.5, 4.0, 4.7, 6.0] {
+        assert_eq!(lateral.elevation_slope_curvature(x), (0.0, 0.0, 0.0));
+        assert_eq!(lateral.alignment_at(x), p.elevation_slope_curvature(x));
+    }
+    assert_eq!(lateral.slope_scale(), 0.0);
+    assert_eq!(lateral.alignment_slope_scale(), p.slope_scale());
     assert_eq!(pl.elevation(8.0), -0.002);
 }
 
@@ -684,6 +707,36 @@ fn bad_surfaces_are_located() {
             &[],
             "[2, 0]",
             "x must increase strictly",
+        ),
+        // Issue 24.6: lateral track geometry.
+        (
+            "lateral-without-train-3d",
+            "{type: harmonic, amplitude: 0.001, wavelength: 10.0, direction: lateral}",
+            &[],
+            "lateral}",
+            "only a `train_3d`'s wheelsets follow",
+        ),
+        (
+            "csv-four-columns",
+            "{type: measured, file: p.csv}",
+            &[("p.csv", "x,l,r,y\n-2,0,0,0\n30,0,0,0\n")],
+            "p.csv",
+            "p.csv:2: a row has 2 columns (x, elevation), 3 (x, left, right) or 5 (x, left, \
+             right, left_lateral, right_lateral), this one has 4",
+        ),
+        (
+            "csv-lateral-infinite",
+            "{type: measured, file: p.csv}",
+            &[("p.csv", "-2,0,0,0,0\n5,0,0,0,inf\n30,0,0,0,0\n")],
+            "p.csv",
+            "p.csv:2: column 5: `inf` is not a finite number",
+        ),
+        (
+            "csv-lateral-dropped",
+            "{type: measured, file: p.csv}",
+            &[("p.csv", "-2,0,0,0,0\n5,0,0\n30,0,0,0,0\n")],
+            "p.csv",
+            "p.csv:2: this row has 3 columns, the rows above have 5",
         ),
     ];
     for (name, surface, files, at, want) in cases {

@@ -369,3 +369,66 @@ fn modes_json_has_full_precision_and_the_checks() {
     assert!(check["orthonormality_error"].as_f64().unwrap() <= ORTHONORMALITY_BOUND);
     assert_eq!(check["sturm_count"]["modes"].as_u64(), Some(10));
 }
+
+/// `vbi modes --json` lists each vehicle's natural frequencies (wheels on
+/// rigid ground) at full precision: the Yang & Yau sprung mass's is the
+/// closed form f = √(k/m)/2π (k = 1.595e6 N/m, m = 5750 kg) to round-off,
+/// the same number the text output prints to four decimals; and the
+/// 27-DOF AVE-S103's list has the library's values to the bit.
+#[test]
+fn modes_json_lists_vehicle_frequencies_at_full_precision() {
+    let modes_json = |path: &std::path::Path| -> serde_json::Value {
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+            .args(["modes", "--json"])
+            .arg(path)
+            .output()
+            .expect("vbi runs");
+        assert!(output.status.success(), "{output:?}");
+        serde_json::from_slice(&output.stdout).expect("JSON")
+    };
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let json = modes_json(&root.join("scenarios/yang-yau-sprung-mass.yaml"));
+    let vehicles = json["vehicles"].as_array().expect("a vehicles list");
+    assert_eq!(vehicles.len(), 1);
+    assert_eq!(vehicles[0]["vehicle"], 1);
+    assert_eq!(vehicles[0]["type"], "oscillator");
+    let f: Vec<f64> = vehicles[0]["frequencies_hz"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_f64().unwrap())
+        .collect();
+    let closed_form = (1.595e6f64 / 5750.0).sqrt() / (2.0 * std::f64::consts::PI);
+    assert_eq!(f.len(), 1);
+    assert!(
+        (f[0] - closed_form).abs() <= 1e-13 * closed_form,
+        "{} vs {closed_form}",
+        f[0]
+    );
+    // More digits than the text output's four.
+    assert_ne!(f[0], format!("{:.4}", f[0]).parse::<f64>().unwrap());
+
+    let scratch = support::Scratch::new("trust", "modes_json_vehicles");
+    let scene = scratch.path("car.yaml");
+    std::fs::write(
+        &scene,
+        "name: car\nbridge: {type: beam, spans: [30.0], bending_stiffness: 1.0e11, mass_per_length: \
+         1.5e4, modes: {count: 2}}\nvehicles: [{type: train_3d, speed: 300 km/h}]\n",
+    )
+    .unwrap();
+    let json = modes_json(&scene);
+    let loaded = vbi::scenario::load_file(&scene).unwrap();
+    let model =
+        vbi::vehicle::VehicleModel::build(&loaded.scenario.vehicles[0], loaded.scenario.gravity);
+    let want = vbi::scenario::content::vehicle_frequencies(&model, None);
+    let got: Vec<u64> = json["vehicles"][0]["frequencies_hz"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_f64().unwrap().to_bits())
+        .collect();
+    assert_eq!(json["vehicles"][0]["type"], "train_3d");
+    assert_eq!(got, want.iter().map(|f| f.to_bits()).collect::<Vec<_>>());
+    // 27 DOFs less the 12 wheelset contact coordinates held on the ground.
+    assert_eq!(got.len(), 15);
+}

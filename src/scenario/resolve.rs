@@ -644,6 +644,7 @@ pub(super) fn resolve(
         .map(|v| v.speed().max(v.motion().speed_at(v.exit_time(length))))
         .fold(0.0, f64::max);
     super::surfaces::check_features(&surface, top_speed, time_step, ck);
+    super::surfaces::check_lateral_followers(&surface, &vehicles, ck);
     let steps = longest_run / time_step;
     let cause = super::long_run::LongRun {
         raw,

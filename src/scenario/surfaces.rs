@@ -126,6 +126,7 @@ pub(super) fn resolve_surface(
             amplitude,
             wavelength,
             phase,
+            direction,
         } => {
             ck.non_negative("surface.amplitude", *amplitude, "roughness amplitude");
             ck.positive("surface.wavelength", *wavelength, "roughness wavelength");
@@ -133,6 +134,7 @@ pub(super) fn resolve_surface(
                 amplitude: *amplitude,
                 wavelength: *wavelength,
                 phase: phase.unwrap_or(0.0),
+                direction: direction.unwrap_or_default(),
             }
         }
         R::Random {
@@ -245,22 +247,30 @@ pub(super) fn resolve_surface(
             start,
             length,
             height,
+            direction,
         } => {
             ck.positive("surface.length", *length, "ramp length");
             Surface::Ramp {
                 start: *start,
                 length: *length,
                 height: *height,
+                direction: direction.unwrap_or_default(),
             }
         }
-        R::Step { position, height } => Surface::Step {
+        R::Step {
+            position,
+            height,
+            direction,
+        } => Surface::Step {
             position: *position,
             height: *height,
+            direction: direction.unwrap_or_default(),
         },
         R::Bump {
             start,
             length,
             height,
+            direction,
         } => {
             ck.positive("surface.length", *length, "bump length");
             ck.positive(
@@ -272,12 +282,14 @@ pub(super) fn resolve_surface(
                 start: *start,
                 length: *length,
                 height: *height,
+                direction: direction.unwrap_or_default(),
             }
         }
         R::Dip {
             start,
             length,
             depth,
+            direction,
         } => {
             ck.positive("surface.length", *length, "dip length");
             ck.positive("surface.depth", *depth, "dip depth");
@@ -285,9 +297,10 @@ pub(super) fn resolve_surface(
                 start: *start,
                 length: *length,
                 height: -*depth,
+                direction: direction.unwrap_or_default(),
             }
         }
-        R::PiecewiseLinear { points } => {
+        R::PiecewiseLinear { points, direction } => {
             if points.len() < 2 {
                 ck.error(
                     "surface.points",
@@ -311,6 +324,7 @@ pub(super) fn resolve_surface(
             }
             Surface::PiecewiseLinear {
                 points: points.clone(),
+                direction: direction.unwrap_or_default(),
             }
         }
     }
@@ -486,7 +500,7 @@ pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: 
             wavelength,
             2.0,
         ),
-        Surface::PiecewiseLinear { ref points } => {
+        Surface::PiecewiseLinear { ref points, .. } => {
             if let Some(i) = (1..points.len()).find(|&i| {
                 let d = points[i][0] - points[i - 1][0];
                 d > 0.0 && d < step_travel
@@ -506,6 +520,29 @@ pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: 
             }
         }
         _ => {}
+    }
+}
+
+/// Refuses lateral track geometry given explicitly (`direction: lateral`)
+/// where no vehicle can follow it: only a `train_3d`'s wheelsets have a
+/// lateral DOF at the rail, every other vehicle would run as on straight
+/// track and the shape would be silently ignored.
+pub(super) fn check_lateral_followers(
+    surface: &Surface,
+    vehicles: &[Vehicle],
+    ck: &mut Checker<'_>,
+) {
+    let explicit = !matches!(surface, Surface::Measured { .. }) && surface.spectrum().is_none();
+    if explicit
+        && surface.has_lateral_geometry()
+        && !vehicles.iter().any(|v| matches!(v, Vehicle::Train3d(_)))
+    {
+        ck.error(
+            "surface.direction",
+            "a lateral profile is the track's alignment, which only a `train_3d`'s wheelsets \
+             follow; no vehicle of this scene has a lateral DOF at the rail (use \
+             `type: train_3d`, or `direction: vertical`)",
+        );
     }
 }
 

@@ -32,7 +32,7 @@ use self::interp::{CubicSpline, QuinticGrid, Triple};
 use self::shapes::Shape;
 use self::spectrum::Spectrum;
 use self::synth::{SpectralSeries, uniform};
-use crate::scenario::resolved::{Rails, Sampling, Surface};
+use crate::scenario::resolved::{Rails, Sampling, Surface, TrackDirection};
 
 /// Grid nodes per shortest wavelength of a sampled random profile: quintic
 /// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude
@@ -187,9 +187,17 @@ pub enum Profile {
         left: CubicSpline,
         /// The right rail, if measured.
         right: Option<CubicSpline>,
+        /// The track's alignment, if measured: the spline of the mean of
+        /// the two rails' lateral positions (the mean of the two rails'
+        /// natural splines, the spline being linear in its data).
+        alignment: Option<CubicSpline>,
     },
     /// A deterministic shape.
     Shape(Shape),
+    /// A deterministic profile (a harmonic or a shape) laid sideways: the
+    /// rails are level and the inner profile is the track's alignment, m
+    /// (+ to the left of travel), both rails displaced alike.
+    Alignment(Box<Profile>),
 }
 
 impl Profile {
@@ -216,11 +224,13 @@ impl Profile {
                 amplitude,
                 wavelength,
                 phase,
+                direction,
             } => Profile::Harmonic {
                 amplitude,
                 wavenumber: 2.0 * PI / wavelength,
                 phase,
-            },
+            }
+            .laid(direction),
             Surface::Random {
                 coefficient,
                 sampling_length,
@@ -254,29 +264,45 @@ impl Profile {
                     .right
                     .as_ref()
                     .map(|r| CubicSpline::new(profile.x.clone(), r.clone())),
+                alignment: profile.lateral.as_ref().map(|(left, right)| {
+                    let centre = left.iter().zip(right).map(|(l, r)| 0.5 * (l + r)).collect();
+                    CubicSpline::new(profile.x.clone(), centre)
+                }),
             },
             Surface::Ramp {
                 start,
                 length,
                 height,
+                direction,
             } => Profile::Shape(Shape::Ramp {
                 start,
                 length,
                 height,
-            }),
-            Surface::Step { position, height } => Profile::Shape(Shape::Step { position, height }),
+            })
+            .laid(direction),
+            Surface::Step {
+                position,
+                height,
+                direction,
+            } => Profile::Shape(Shape::Step { position, height }).laid(direction),
             Surface::Bump {
                 start,
                 length,
                 height,
+                direction,
             } => Profile::Shape(Shape::Bump {
                 start,
                 length,
                 height,
-            }),
-            Surface::PiecewiseLinear { ref points } => Profile::Shape(Shape::PiecewiseLinear {
+            })
+            .laid(direction),
+            Surface::PiecewiseLinear {
+                ref points,
+                direction,
+            } => Profile::Shape(Shape::PiecewiseLinear {
                 points: points.iter().map(|p| (p[0], p[1])).collect(),
-            }),
+            })
+            .laid(direction),
             Surface::Fra { class, sampling } => {
                 Self::sampled(Spectrum::Fra { class }, sampling, reach, front_start)?
             }
@@ -293,6 +319,15 @@ impl Profile {
                 Self::sampled(Spectrum::Iso8608 { class }, sampling, reach, front_start)?
             }
         })
+    }
+
+    /// A deterministic profile in `direction`: itself (vertical), or laid
+    /// sideways as the track's alignment ([`Profile::Alignment`]).
+    fn laid(self, direction: TrackDirection) -> Self {
+        match direction {
+            TrackDirection::Vertical => self,
+            TrackDirection::Lateral => Profile::Alignment(Box::new(self)),
+        }
     }
 
     /// A random sample of `spectrum` on a grid from its fade's start
@@ -440,10 +475,11 @@ impl Profile {
             Profile::Sampled { left, right, .. } => left
                 .max_slope()
                 .max(right.as_ref().map_or(0.0, QuinticGrid::max_slope)),
-            Profile::Measured { left, right } => left
+            Profile::Measured { left, right, .. } => left
                 .max_slope()
                 .max(right.as_ref().map_or(0.0, CubicSpline::max_slope)),
             Profile::Shape(shape) => shape.max_slope(),
+            Profile::Alignment(_) => 0.0,
         }
     }
 
@@ -458,6 +494,11 @@ impl Profile {
             } => left
                 .max_slope()
                 .max(right.as_ref().map_or(0.0, QuinticGrid::max_slope)),
+            Profile::Measured {
+                alignment: Some(alignment),
+                ..
+            } => alignment.max_slope(),
+            Profile::Alignment(inner) => inner.slope_scale(),
             _ => 0.0,
         }
     }
@@ -479,7 +520,7 @@ impl Profile {
     #[inline]
     pub fn elevation_on(&self, rail: Rail, x: f64) -> f64 {
         match *self {
-            Profile::Smooth => 0.0,
+            Profile::Smooth | Profile::Alignment(_) => 0.0,
             Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => 0.0,
             Profile::Harmonic {
                 amplitude,
@@ -510,7 +551,7 @@ impl Profile {
     #[inline]
     pub fn elevation_slope_curvature_on(&self, rail: Rail, x: f64) -> Triple {
         match *self {
-            Profile::Smooth => (0.0, 0.0, 0.0),
+            Profile::Smooth | Profile::Alignment(_) => (0.0, 0.0, 0.0),
             Profile::Harmonic { .. } | Profile::Random { .. } if x < 0.0 => (0.0, 0.0, 0.0),
             Profile::Harmonic {
                 amplitude,
@@ -540,6 +581,7 @@ impl Profile {
             Profile::Measured {
                 ref left,
                 ref right,
+                ..
             } => match (rail, right) {
                 (Rail::Right, Some(r)) => r.at(x),
                 _ => left.at(x),
@@ -552,7 +594,9 @@ impl Profile {
     /// to the left), its slope and curvature (1/m) that a wheelset
     /// following both rails sideways takes — the mean of the left and right
     /// rails' alignment (the track centre line); zero where the surface
-    /// samples none (every profile but a spectrum with `alignment: true`).
+    /// samples none. A spectrum with `alignment: true` samples it, a
+    /// measured profile with lateral columns gives it (their mean), and a
+    /// harmonic or shape with `direction: lateral` is it.
     #[inline]
     pub fn alignment_at(&self, x: f64) -> Triple {
         match self {
@@ -566,6 +610,11 @@ impl Profile {
                 }
                 None => left.at(x),
             },
+            Profile::Measured {
+                alignment: Some(alignment),
+                ..
+            } => alignment.at(x),
+            Profile::Alignment(inner) => inner.elevation_slope_curvature_on(Rail::Left, x),
             _ => (0.0, 0.0, 0.0),
         }
     }
@@ -633,6 +682,7 @@ mod tests {
                 amplitude: 0.003,
                 wavelength: 1.5,
                 phase: 0.5,
+                direction: TrackDirection::Vertical,
             },
             10.0,
         )

@@ -25,6 +25,13 @@ pub enum SurfaceRaw {
         #[serde(default)]
         #[schemars(extend("default" = 0.0))]
         phase: Option<f64>,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
     /// Random road profile, a stationary Gaussian process with the power
     /// spectral density S(Ω) = A_r (Ω/Ω₀)⁻², Ω₀ = 1/2π, sampled by the
@@ -201,10 +208,15 @@ pub enum SurfaceRaw {
         run_in: Option<f64>,
     },
     /// A measured profile from a CSV file: rows `x, elevation` (one profile
-    /// under every wheel) or `x, left, right` (per rail; a wheel with
+    /// under every wheel), `x, left, right` (per rail; a wheel with
     /// lateral offset > 0 runs on the left rail, < 0 on the right, 0 on
-    /// the left), x in m from the bridge entrance (negative on the
-    /// approach), strictly increasing, elevations in m, positive upward.
+    /// the left) or `x, left, right, left_lateral, right_lateral` (as
+    /// recording cars deliver it: each rail's vertical and lateral
+    /// position; a `train_3d`'s wheelsets follow the mean of the two
+    /// lateral columns, the track's centre line), x in m from the bridge
+    /// entrance (negative on the approach), strictly increasing,
+    /// elevations in m, positive upward, lateral positions in m, + to the
+    /// left of travel.
     /// Lines starting with `#` and a header line are skipped. Interpolated
     /// by a natural cubic spline; it must cover every position the wheels
     /// reach during the run.
@@ -222,6 +234,13 @@ pub enum SurfaceRaw {
         length: f64,
         /// Rise, m (negative: a descent).
         height: f64,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
     /// r = 0 before `position`, `height` from there on (a sudden change of
     /// level).
@@ -230,6 +249,13 @@ pub enum SurfaceRaw {
         position: f64,
         /// Change of level, m (negative: a step down).
         height: f64,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
     /// A cosine bump: r = (height/2)(1 − cos(2π(x − start)/length)) over
     /// `length` from `start`, 0 elsewhere.
@@ -242,6 +268,13 @@ pub enum SurfaceRaw {
         /// Peak height, m.
         #[schemars(transform = crate::schema::positive)]
         height: f64,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
     /// A cosine dip: r = −(depth/2)(1 − cos(2π(x − start)/length)) over
     /// `length` from `start`, 0 elsewhere.
@@ -254,6 +287,13 @@ pub enum SurfaceRaw {
         /// Deepest point below the level, m.
         #[schemars(transform = crate::schema::positive)]
         depth: f64,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
     /// Straight lines between points `[x, r]` (x in m from the entrance,
     /// strictly increasing; r in m, positive upward), held at the end
@@ -261,6 +301,13 @@ pub enum SurfaceRaw {
     PiecewiseLinear {
         /// At least two `[x, r]` pairs, m.
         points: Vec<[f64; 2]>,
+        /// `vertical` (default): the shape is the rails' elevation;
+        /// `lateral`: it is the track's alignment, both rails displaced
+        /// sideways (m, + to the left of travel), which a `train_3d`'s
+        /// wheelsets follow (the vertical profile is then level).
+        #[serde(default)]
+        #[schemars(extend("default" = "vertical"))]
+        direction: Option<TrackDirection>,
     },
 }
 
@@ -280,6 +327,27 @@ pub enum RoughnessClassRaw {
     Poor,
     /// A_r = 1024e-6.
     VeryPoor,
+}
+
+/// The direction a deterministic profile displaces the rails in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum TrackDirection {
+    /// The rails' elevation (m, positive upward): every vehicle's wheels
+    /// follow it.
+    #[default]
+    Vertical,
+    /// The track's alignment (m, + to the left of travel): both rails
+    /// displaced sideways; a `train_3d`'s wheelsets follow it, no other
+    /// vehicle has a lateral DOF at the rail.
+    Lateral,
+}
+
+impl TrackDirection {
+    /// Whether it is the default (vertical): written only when lateral.
+    pub fn is_vertical(&self) -> bool {
+        *self == TrackDirection::Vertical
+    }
 }
 
 /// Whether the two rails (wheel tracks) carry the same random profile.

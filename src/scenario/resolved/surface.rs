@@ -4,7 +4,9 @@ use std::sync::Arc;
 
 use serde::Serialize;
 
-pub use crate::scenario::raw::{RailsRaw as Rails, RoughnessClassRaw as RoughnessClass};
+pub use crate::scenario::raw::{
+    RailsRaw as Rails, RoughnessClassRaw as RoughnessClass, TrackDirection,
+};
 use crate::surface::spectrum::Spectrum;
 
 /// How a random track or road profile is sampled (the spectral
@@ -44,6 +46,9 @@ pub struct MeasuredProfile {
     pub left: Vec<f64>,
     /// Elevation under the right rail, m, if the file gives one.
     pub right: Option<Vec<f64>>,
+    /// Lateral position of the left and right rails (m, + to the left of
+    /// travel), if the file gives them (five columns).
+    pub lateral: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 /// Surface profile. Serialises to the input format (`type` and its fields),
@@ -61,6 +66,10 @@ pub enum Surface {
         wavelength: f64,
         /// rad
         phase: f64,
+        /// Vertical (the rails' elevation) or lateral (the track's
+        /// alignment); written only when lateral.
+        #[serde(skip_serializing_if = "TrackDirection::is_vertical")]
+        direction: TrackDirection,
     },
     /// Random profile from the PSD A_r (Ω/Ω₀)⁻² (the plate paper's series).
     Random {
@@ -117,6 +126,10 @@ pub enum Surface {
         length: f64,
         /// m
         height: f64,
+        /// Vertical (the rails' elevation) or lateral (the track's
+        /// alignment); written only when lateral.
+        #[serde(skip_serializing_if = "TrackDirection::is_vertical")]
+        direction: TrackDirection,
     },
     /// A step ([`crate::surface::shapes::Shape::Step`]), m.
     Step {
@@ -124,6 +137,10 @@ pub enum Surface {
         position: f64,
         /// m
         height: f64,
+        /// Vertical (the rails' elevation) or lateral (the track's
+        /// alignment); written only when lateral.
+        #[serde(skip_serializing_if = "TrackDirection::is_vertical")]
+        direction: TrackDirection,
     },
     /// A cosine bump, or a dip with negative height
     /// ([`crate::surface::shapes::Shape::Bump`]), m.
@@ -134,11 +151,19 @@ pub enum Surface {
         length: f64,
         /// m (negative: a dip)
         height: f64,
+        /// Vertical (the rails' elevation) or lateral (the track's
+        /// alignment); written only when lateral.
+        #[serde(skip_serializing_if = "TrackDirection::is_vertical")]
+        direction: TrackDirection,
     },
     /// Straight lines between `[x, r]` points, m.
     PiecewiseLinear {
         /// `[x, r]`, m.
         points: Vec<[f64; 2]>,
+        /// Vertical (the rails' elevation) or lateral (the track's
+        /// alignment); written only when lateral.
+        #[serde(skip_serializing_if = "TrackDirection::is_vertical")]
+        direction: TrackDirection,
     },
 }
 
@@ -194,6 +219,21 @@ impl Surface {
             Surface::Bump { height, .. } if *height < 0.0 => "dip".into(),
             Surface::Bump { .. } => "bump".into(),
             Surface::PiecewiseLinear { .. } => "piecewise-linear".into(),
+        }
+    }
+
+    /// Whether the surface displaces the rails sideways: a lateral shape
+    /// or harmonic, a measured profile with lateral columns, or a
+    /// spectrum sampling the alignment.
+    pub fn has_lateral_geometry(&self) -> bool {
+        match self {
+            Surface::Harmonic { direction, .. }
+            | Surface::Ramp { direction, .. }
+            | Surface::Step { direction, .. }
+            | Surface::Bump { direction, .. }
+            | Surface::PiecewiseLinear { direction, .. } => !direction.is_vertical(),
+            Surface::Measured { profile, .. } => profile.lateral.is_some(),
+            _ => self.spectrum().is_some_and(|(_, s)| s.alignment),
         }
     }
 

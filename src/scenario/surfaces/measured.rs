@@ -1,5 +1,7 @@
-//! Reading a measured profile's CSV file: rows `x, elevation` or
-//! `x, left, right` (m), `#` comments and blank lines skipped, an optional
+//! Reading a measured profile's CSV file: rows `x, elevation`,
+//! `x, left, right` or `x, left, right, left_lateral, right_lateral` (m:
+//! each rail's vertical and lateral position, as recording cars deliver
+//! track geometry), `#` comments and blank lines skipped, an optional
 //! header as the first row. Every problem is reported at the scenario's
 //! `surface.file` with the CSV's own line and column in the message; the
 //! file's size and row count are budgeted before anything is allocated per
@@ -57,6 +59,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
     let mut x = Vec::with_capacity(rows);
     let mut left = Vec::with_capacity(rows);
     let mut right: Vec<f64> = Vec::new();
+    let (mut left_lateral, mut right_lateral): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
     let mut columns = None;
     for row in crate::text_table::rows(text) {
         let (n, fields) = (row.line, row.fields);
@@ -64,19 +67,24 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
             continue;
         }
         let count = fields.len();
-        if !(2..=3).contains(&count) {
+        if !matches!(count, 2 | 3 | 5) {
             return Err((
                 n,
                 format!(
-                    "a row has 2 columns (x, elevation) or 3 (x, left, right), this one has {count}"
+                    "a row has 2 columns (x, elevation), 3 (x, left, right) or 5 (x, left, \
+                     right, left_lateral, right_lateral), this one has {count}"
                 ),
             ));
         }
         match columns {
             None => {
                 columns = Some(count);
-                if count == 3 {
+                if count >= 3 {
                     right.reserve(rows);
+                }
+                if count == 5 {
+                    left_lateral.reserve(rows);
+                    right_lateral.reserve(rows);
                 }
             }
             Some(c) if c != count => {
@@ -87,7 +95,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
             }
             Some(_) => {}
         }
-        let mut values = [0.0; 3];
+        let mut values = [0.0; 5];
         for (k, field) in fields.iter().enumerate() {
             let v: f64 = field
                 .parse()
@@ -110,8 +118,12 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
         }
         x.push(values[0]);
         left.push(values[1]);
-        if count == 3 {
+        if count >= 3 {
             right.push(values[2]);
+        }
+        if count == 5 {
+            left_lateral.push(values[3]);
+            right_lateral.push(values[4]);
         }
     }
     if x.len() < 2 {
@@ -126,7 +138,8 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
     Ok(MeasuredProfile {
         x,
         left,
-        right: (columns == Some(3)).then_some(right),
+        right: (columns >= Some(3)).then_some(right),
+        lateral: (columns == Some(5)).then_some((left_lateral, right_lateral)),
     })
 }
 
@@ -142,6 +155,18 @@ mod tests {
         assert_eq!(p.right, Some(vec![0.002, -0.001]));
         let p = parse("0 0\n1 1e-3\n").unwrap();
         assert_eq!(p.right, None);
+        assert_eq!(p.lateral, None);
+    }
+
+    #[test]
+    fn reads_both_rails_vertical_and_lateral() {
+        let p = parse(
+            "x,left,right,left_lateral,right_lateral\n0,1e-3,2e-3,3e-3,4e-3\n2,0,0,-1e-3,-2e-3\n",
+        )
+        .unwrap();
+        assert_eq!(p.x, vec![0.0, 2.0]);
+        assert_eq!(p.right, Some(vec![2e-3, 0.0]));
+        assert_eq!(p.lateral, Some((vec![3e-3, -1e-3], vec![4e-3, -2e-3])));
     }
 
     #[test]
@@ -150,6 +175,18 @@ mod tests {
         assert_eq!(parse("0,0\n1,abc\n").unwrap_err().0, 2);
         assert_eq!(parse("0,0\n0,1\n").unwrap_err().0, 2);
         assert_eq!(parse("0,0\n1,1,1\n").unwrap_err().0, 2);
+        // Four columns: neither per-rail vertical nor the recording car's five.
+        let (line, message) = parse("0,0,0,0\n").unwrap_err();
+        assert_eq!(line, 1);
+        assert!(
+            message.contains("5 (x, left, right, left_lateral, right_lateral)"),
+            "{message}"
+        );
+        // A bad lateral value is named by its column.
+        let (line, message) = parse("0,0,0,0,0\n1,0,0,0,x\n").unwrap_err();
+        assert_eq!(line, 2);
+        assert!(message.contains("column 5"), "{message}");
+        assert_eq!(parse("0,0,0,0,0\n1,0,0,0\n").unwrap_err().0, 2);
         assert!(parse("0,0\n").is_err());
     }
 }
