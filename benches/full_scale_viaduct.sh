@@ -1,6 +1,6 @@
 #!/bin/bash
 # The EMBS paper's scene at full scale (issue 24 point 7): the shipped
-# scenarios/embs-viaduct-30span-ave-s103-train.yaml (the 30-span viaduct of
+# scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml (the 30-span viaduct of
 # `vbi generate viaduct` at its defaults, 48,516 DOFs; an eight-car
 # AVE-S103 set at 300 km/h; the synthetic lateral record's strong phase
 # during the crossing; EMBS and coupled side by side, `compare: true`).
@@ -18,9 +18,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 cargo build --release --locked --bin vbi
 vbi=$here/target/release/vbi
-scene=scenarios/embs-viaduct-30span-ave-s103-train.yaml
-if [ ! -f scenarios/viaduct-30span/K.mtx ]; then
-    "$vbi" generate viaduct --out scenarios/viaduct-30span
+scene=scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml
+if [ ! -f scenarios/full-scale/viaduct-30span/K.mtx ]; then
+    "$vbi" generate viaduct --out scenarios/full-scale/viaduct-30span
 fi
 mkdir -p "$work"
 rm -rf "$work/out"

@@ -371,7 +371,7 @@ fn written_files_round_trip() {
 }
 
 /// The shipped full-scale scene (issue 24 point 7,
-/// scenarios/embs-viaduct-30span-ave-s103-train.yaml) validates against
+/// scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml) validates against
 /// the files `vbi generate viaduct` writes at its defaults: generated into
 /// a scratch folder beside a copy of the scene and its record, `vbi check
 /// --trust-limits` accepts it (eight cars at the stated spacing, the deck
@@ -396,7 +396,7 @@ fn the_full_scale_scene_checks_against_the_generated_viaduct() {
     )
     .unwrap();
     let scene =
-        std::fs::read_to_string(root.join("scenarios/embs-viaduct-30span-ave-s103-train.yaml"))
+        std::fs::read_to_string(root.join("scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml"))
             .unwrap();
     assert!(scene.contains("modes: {max_frequency: 15.0}"));
     std::fs::write(
