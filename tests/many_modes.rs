@@ -210,7 +210,10 @@ fn many_identical_spans_are_solved_when_the_budget_allows() {
     let single = discrete_spectrum_of(10.0, 2)[0];
     let relative = (lambda - single).abs() / single;
     println!("300 spans, mode 1 against the single span's closed form: {relative:.2e}");
-    assert!(relative <= 1e-10, "{lambda} against {single} ({relative:e})");
+    assert!(
+        relative <= 1e-10,
+        "{lambda} against {single} ({relative:e})"
+    );
 }
 
 /// 5,000 such spans are refused by `vbi check` before any solve, by

@@ -22,6 +22,7 @@
 //!   returned eigenvalue counts exactly the modes returned (Sturm sequence
 //!   property), so no mode in the range is missing.
 
+pub mod block;
 pub mod cache;
 mod checks;
 pub mod dense;
@@ -323,7 +324,18 @@ impl Pencil {
                     // the thread count.
                     faer::set_global_parallelism(faer::Par::Seq);
                 }
-                let (_, ritz) = lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?;
+                // A large assembled pencil: block Lanczos (matrix–matrix
+                // re-orthogonalisation, multi-right-hand-side solves;
+                // [`block`]), the single-vector run where it declines.
+                let blocked = if stiffness.is_none() && n > DENSE_SHARE_LIMIT {
+                    block::lowest(&self.mass, factor, want)?
+                } else {
+                    None
+                };
+                let ritz = match blocked {
+                    Some((_, ritz)) => ritz,
+                    None => lanczos::lowest(&self.mass, factor, 0.0, want, stiffness)?.1,
+                };
                 match stiffness {
                     // An accurate product (a beam): per-vector polish with
                     // refined solves and Rayleigh quotients through it.
