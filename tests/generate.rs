@@ -375,8 +375,11 @@ fn written_files_round_trip() {
 /// from which an assembled pencil takes the block path) pass every check
 /// through `Pencil::lowest`, and equal those of the single-vector
 /// Lanczos run on the same factor (an independent Krylov run, one vector
-/// at a time), polished alike, to 1e-9 relatively (the residual bound is
-/// 1e-8 in the energy norm, which bounds the relative eigenvalue error).
+/// at a time), polished alike, to 1e-8 relatively: the energy-norm
+/// residual bound each side passes, which bounds the relative eigenvalue
+/// error, and the rounding of a Rayleigh quotient through the assembled K
+/// (ε·λ_max/λ; the two runs were measured 1.5e-9 apart on mode 2, and
+/// vbi and scipy 4.0e-9 apart on the 157,296-DOF viaduct).
 #[test]
 fn block_lanczos_agrees_with_the_single_vector_run() {
     let params = ViaductParams {
@@ -409,7 +412,7 @@ fn block_lanczos_agrees_with_the_single_vector_run() {
     let mut worst = 0.0f64;
     for (i, (&x, &y)) in a.iter().zip(&b).take(count).enumerate() {
         let error = (x - y).abs() / y;
-        assert!(error < 1e-9, "mode {}: {x} vs {y} ({error:e})", i + 1);
+        assert!(error < 1e-8, "mode {}: {x} vs {y} ({error:e})", i + 1);
         assert_eq!(x, pairs.eigenvalues[i], "mode {}", i + 1);
         worst = worst.max(error);
     }

@@ -46,6 +46,10 @@ const RITZ_TOLERANCE: f64 = 1e-13;
 /// orthogonalisation has no new direction (an invariant subspace).
 const BREAKDOWN: f64 = 1e-12;
 
+/// Eigenvalues λ (rad²/s²) ascending and their M-normalised vectors as
+/// columns.
+pub type Pairs = (Vec<f64>, Mat<f64>);
+
 /// The `wanted` eigenpairs of K φ = λ M φ with the smallest λ, ascending,
 /// M-normalised vectors as columns; `factor` is the LDLᵀ of K. `None` when
 /// the run would need more than the whole space (the caller falls back to
@@ -56,7 +60,7 @@ pub fn lowest(
     mass: &SymmetricSparse,
     factor: &Factor,
     wanted: usize,
-) -> Result<Option<(Vec<f64>, Mat<f64>)>, BridgeError> {
+) -> Result<Option<Pairs>, BridgeError> {
     let n = mass.nrows();
     let p = BLOCK;
     if wanted == 0 || n < 4 * p || wanted + 2 * p > n / 2 {
@@ -191,17 +195,17 @@ pub fn lowest(
                     Par::Seq,
                 );
                 let mut eigenvalues = Vec::with_capacity(wanted);
-                for c in 0..wanted {
+                for (c, &theta) in thetas.iter().take(wanted).enumerate() {
                     column.copy_from_slice(vectors.col(c).try_as_col_major().unwrap().as_slice());
                     multiply(mass, &column, &mut m_column);
                     let norm = dot(&column, &m_column).sqrt();
-                    if !(norm > 0.0 && norm.is_finite() && thetas[c] > 0.0) {
+                    if !(norm > 0.0 && norm.is_finite() && theta > 0.0) {
                         return Err(BridgeError::EigenFailed);
                     }
                     for x in vectors.col_mut(c).iter_mut() {
                         *x /= norm;
                     }
-                    eigenvalues.push(1.0 / thetas[c]);
+                    eigenvalues.push(1.0 / theta);
                 }
                 return Ok(Some((eigenvalues, vectors)));
             }
