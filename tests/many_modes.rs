@@ -46,7 +46,12 @@ fn beam(elements: usize) -> Bridge {
 /// exactly, and 1 − cos q = 2 sin²(q/2), so the small roots keep full
 /// relative accuracy (taken as det/the large root).
 fn discrete_spectrum(elements: usize) -> Vec<f64> {
-    let h = LENGTH / elements as f64;
+    discrete_spectrum_of(LENGTH, elements)
+}
+
+/// [`discrete_spectrum`] of a span of `length` (m).
+fn discrete_spectrum_of(length: f64, elements: usize) -> Vec<f64> {
+    let h = length / elements as f64;
     let (ks, ms) = (EI / h.powi(3), MASS * h / 420.0);
     let mut out = Vec::with_capacity(2 * elements);
     for k in 0..=elements {
@@ -169,5 +174,80 @@ fn every_mode_up_to_the_default_limit() {
                 "mode {k}: {relative:e}"
             );
         }
+    }
+}
+
+/// Identical spans (issue 23): a continuous beam over S equal spans has S
+/// modes in each frequency band, so the Lanczos basis must hold S vectors
+/// before the lowest of a band separate, and the solve grows as S³ (10 m
+/// spans × 2 elements, 10 modes: 1.9 s at 1,000 spans, 53 s at 3,000).
+/// 300 spans are solved, every check passes, and mode 1 is exactly the
+/// single span's simply-supported mode with alternating signs (zero
+/// moment and continuous slope at every support), so it equals the
+/// two-element span's closed-form discrete eigenvalue (measured to
+/// rounding; bound 1e-10, the check's own residual bound is 1e-8).
+#[test]
+fn many_identical_spans_are_solved_when_the_budget_allows() {
+    let spans = 300;
+    let bridge = Bridge::Beam(Beam {
+        spans: vec![10.0; spans],
+        bending_stiffness: EI,
+        mass_per_length: MASS,
+        elements_per_span: 2,
+        modes: Modes {
+            count: Some(10),
+            max_frequency: None,
+            static_correction: true,
+        },
+        damping: Damping::Modal { ratio: 0.0 },
+        sway: None,
+    });
+    let modal = ModalBridge::build_with(&bridge, ModeRequest::Lowest(10)).expect("300 spans");
+    assert_eq!(modal.mode_count(), 10);
+    assert!(modal.check.largest_residual <= RESIDUAL_BOUND);
+    assert_eq!(modal.check.inertia.map(|(_, below)| below), Some(10));
+    let lambda = (2.0 * std::f64::consts::PI * modal.frequencies()[0]).powi(2);
+    let single = discrete_spectrum_of(10.0, 2)[0];
+    let relative = (lambda - single).abs() / single;
+    println!("300 spans, mode 1 against the single span's closed form: {relative:.2e}");
+    assert!(
+        relative <= 1e-10,
+        "{lambda} against {single} ({relative:e})"
+    );
+}
+
+/// 5,000 such spans are refused by `vbi check` before any solve, by
+/// `limits.eigen_work` at the spans, with the cause (the band of 5,000
+/// nearly equal modes) and the span count that fits.
+#[test]
+fn many_identical_spans_are_refused_before_the_solve() {
+    let folder = std::env::temp_dir().join(format!("vbi-many-spans-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let file = folder.join("spans.yaml");
+    let spans = vec!["10.0"; 5000].join(", ");
+    std::fs::write(
+        &file,
+        format!(
+            "name: many\nbridge:\n  type: beam\n  spans: [{spans}]\n  bending_stiffness: 8.323e9\n\
+             \x20 mass_per_length: 2303.0\n  elements_per_span: 2\n  modes: {{count: 10}}\n\
+             vehicles:\n  - {{type: moving_force, loads: [1.0e5], speed: 27.7}}\n"
+        ),
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .arg("check")
+        .arg(&file)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&folder);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    for needle in [
+        "spans.yaml:4:10:",
+        "limits.eigen_work",
+        "5000 spans put 5000 modes in each frequency band",
+        "at most 873 spans of this mesh fit",
+    ] {
+        assert!(stderr.contains(needle), "`{needle}` not in: {stderr}");
     }
 }

@@ -154,6 +154,29 @@ impl Factor {
         MemBuffer::try_new(self.solve_scratch).map_err(|_| BridgeError::OutOfMemory)
     }
 
+    /// A work buffer for [`Factor::solve_block_in_place`] with up to
+    /// `columns` right-hand sides.
+    pub fn block_workspace(&self, columns: usize) -> Result<MemBuffer, BridgeError> {
+        MemBuffer::try_new(
+            self.symbolic
+                .solve_in_place_scratch::<f64>(columns, Par::Seq),
+        )
+        .map_err(|_| BridgeError::OutOfMemory)
+    }
+
+    /// Solves A X = B in place for several right-hand sides at once (one
+    /// pass over the factor for all of them), with a workspace from
+    /// [`Factor::block_workspace`] for at least as many columns. Cost
+    /// O(nnz(L) · columns).
+    pub fn solve_block_in_place(&self, rhs: MatMut<'_, f64>, workspace: &mut MemBuffer) {
+        LdltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
+            Conj::No,
+            rhs,
+            Par::Seq,
+            MemStack::new(workspace),
+        );
+    }
+
     /// Solves A x = b in place (`rhs` holds b on entry, x on return); no
     /// allocation with a workspace from [`Factor::workspace`]. Cost O(nnz(L)).
     pub fn solve_in_place(&self, rhs: &mut [f64], workspace: &mut MemBuffer) {
