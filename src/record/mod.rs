@@ -1023,7 +1023,7 @@ impl Observer for Recorder<'_> {
                     None => {
                         model
                             .bridge
-                            .mode_values(view.wheel_positions[w], model.wheel_y[w], values)
+                            .contact_mode_values(view.wheel_positions[w], model.wheel_y[w], values)
                     }
                 }
             }
