@@ -20,11 +20,12 @@ use crate::bridge::fe_import::{
 const MIN_ENTRY_BYTES: f64 = 10.0;
 
 /// Default length over which a wheel's load enters an imported track at a
-/// free rail end, m: about the distance ahead of a wheel at which a
-/// continuous rail on ballasted track already bends under it (the first
-/// zero of its deflection line, 3π/4 · L_c with L_c ≈ 0.7–1 m:
-/// [`crate::bridge::fe_import::entry`]), and long enough that the ramp
-/// rings no track mode: measured on scenarios/viaduct-2span (issue 24.4).
+/// free rail end, m: a little beyond the distance ahead of a wheel at which
+/// a continuous rail on ballasted track already bends under it (the first
+/// zero of its deflection line, 1.7–2.1 m: [`crate::bridge::fe_import::entry`]),
+/// and long enough that the ramp rings no track mode above the automatic
+/// cut-off: measured on scenarios/viaduct-2span (issue 24.4; README,
+/// "Imported FE models").
 pub const DEFAULT_ENTRY_LENGTH: f64 = 3.0;
 
 /// Resolves the `fe_import` bridge; `None` after reporting its problems.

@@ -9,9 +9,10 @@
 //! every track mode (rails on pads, sleepers on ballast, up to kHz) and
 //! that a real line does not have: its rail continues, and a wheel already
 //! bends the rail some metres ahead of it (the deflection line of a rail on
-//! an elastic foundation reaches its first zero 3π/4 · L_c from the load,
-//! L_c = (4EI/k)^(1/4) ≈ 0.7–1 m for a UIC60 rail on ballasted track:
-//! 2–2.5 m; Esveld, *Modern Railway Track*, 2nd ed., §6.2).
+//! an elastic foundation, Zimmermann's e^(−x/L)(cos x/L + sin x/L), reaches
+//! its first zero 3π/4 · L from the load, L = (4EI/k)^(1/4) = 0.71–0.90 m
+//! for a UIC60 rail, EI = 6.4 MN·m², on k = 40–100 MN/m²: 1.7–2.1 m; e.g.
+//! Esveld, *Modern Railway Track*, 2001).
 //!
 //! The model therefore receives the load over an entry length L at each
 //! free rail end: a wheel at x couples to the model's rail with the weight
