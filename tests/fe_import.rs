@@ -514,7 +514,14 @@ fn the_load_enters_a_free_rail_end_over_the_entry_length() {
     .unwrap();
     let (mut point, mut contact) = ([0.0; 2], [0.0; 2]);
     // s(x) on the 5 m rail: ramps over [0, 2] and [3, 5] m.
-    for (x, s) in [(0.0, 0.0), (1.0, 0.5), (2.0, 1.0), (2.5, 1.0), (4.0, 0.5), (5.0, 0.0)] {
+    for (x, s) in [
+        (0.0, 0.0),
+        (1.0, 0.5),
+        (2.0, 1.0),
+        (2.5, 1.0),
+        (4.0, 0.5),
+        (5.0, 0.0),
+    ] {
         bridge.mode_values(x, 0.0, &mut point);
         bridge.contact_mode_values(x, 0.0, &mut contact);
         for i in 0..2 {
@@ -523,7 +530,10 @@ fn the_load_enters_a_free_rail_end_over_the_entry_length() {
                 "x = {x}: {contact:?} against {s} × {point:?}"
             );
         }
-        assert!(point.iter().any(|v| v.abs() > 1e-6), "x = {x}: the point moves");
+        assert!(
+            point.iter().any(|v| v.abs() > 1e-6),
+            "x = {x}: the point moves"
+        );
     }
     for (extra, words) in [
         ("  entry_length: 3.0\n", "does not fit"),
