@@ -541,7 +541,7 @@ fn the_load_enters_a_free_rail_end_over_the_entry_length() {
     ] {
         let message = refused("entry_refused", &[], extra);
         assert!(
-            message.contains("bridge.entry_length") && message.contains(words),
+            message.contains("entry length") && message.contains(words),
             "{extra}: {message}"
         );
     }

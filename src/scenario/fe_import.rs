@@ -259,7 +259,10 @@ pub(super) fn resolve(
     };
     // A wheel's load enters the track over `entry_length` at each free rail
     // end (bridge::fe_import::entry), none where the support holds it.
-    let entry_length = raw.entry_length.unwrap_or(DEFAULT_ENTRY_LENGTH);
+    // The default keeps both ramps on the outer quarters of a short track.
+    let entry_length = raw
+        .entry_length
+        .unwrap_or(DEFAULT_ENTRY_LENGTH.min(0.25 * model.length));
     if entry_length.is_finite() {
         ck.non_negative("bridge.entry_length", entry_length, "the entry length");
     } else {

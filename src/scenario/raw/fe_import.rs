@@ -53,7 +53,8 @@ pub struct FeImportRaw {
     /// end to 1 at this distance (quintic smoothstep), as a continuous rail
     /// takes a wheel's load before it arrives. Applies only where the
     /// track's end node is free to move vertically (not at a deck end held
-    /// by its support). Default 3 m; 0 puts the whole load on at once.
+    /// by its support). Default 3 m (at most a quarter of the track); 0 puts
+    /// the whole load on at once.
     #[serde(default)]
     #[schemars(range(min = 0.0))]
     pub entry_length: Option<f64>,
