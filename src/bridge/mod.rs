@@ -164,17 +164,25 @@ impl Flexibility {
 pub enum InfluenceLine {
     /// A Hermite field.
     Hermite(HermiteField),
-    /// An imported model's track.
-    Track(TrackField),
+    /// An imported model's track, and how a load enters it at its ends
+    /// (the load at ξ couples with its entry weight, [`fe_import::entry`]).
+    Track(TrackField, fe_import::entry::RailEntry),
 }
 
 impl InfluenceLine {
-    /// G at `x` (m), m/N.
+    /// G at the load position `x` (m), m/N.
     #[inline]
     pub fn value_at(&self, x: f64) -> f64 {
         match self {
             InfluenceLine::Hermite(f) => f.value_at(x),
-            InfluenceLine::Track(f) => f.value_at(x),
+            InfluenceLine::Track(f, entry) => {
+                let g = f.value_at(x);
+                if entry.is_active() {
+                    g * entry.weight(x).0
+                } else {
+                    g
+                }
+            }
         }
     }
 }
@@ -816,6 +824,78 @@ impl ModalBridge {
         }
     }
 
+    /// The entry weight of a contact at `x` on an imported track with free
+    /// rail ends ([`fe_import::entry`]); `None` where loads enter at once.
+    #[inline]
+    fn contact_entry(&self) -> Option<&fe_import::entry::RailEntry> {
+        match &self.shapes {
+            Shapes::Imported(imported) if imported.model.entry.is_active() => {
+                Some(&imported.model.entry)
+            }
+            _ => None,
+        }
+    }
+
+    /// [`ModalBridge::mode_values`] as a wheel's contact at (x, y) sees
+    /// them: on an imported track with free rail ends, times the entry
+    /// weight s(x) ([`fe_import::entry`]); elsewhere the same.
+    #[inline]
+    pub fn contact_mode_values(&self, x: f64, y: f64, values: &mut [f64]) {
+        self.mode_values(x, y, values);
+        if let Some(entry) = self.contact_entry() {
+            entry.apply(x, values, &mut [], &mut []);
+        }
+    }
+
+    /// [`ModalBridge::mode_values_slopes_curvatures`] as a contact sees
+    /// them (values, slopes and curvatures of s·φ).
+    #[inline]
+    pub fn contact_mode_values_slopes_curvatures(
+        &self,
+        x: f64,
+        y: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        self.mode_values_slopes_curvatures(x, y, values, slopes, curvatures);
+        if let Some(entry) = self.contact_entry() {
+            entry.apply(x, values, slopes, curvatures);
+        }
+    }
+
+    /// [`ModalBridge::mode_components`] as a contact sees them.
+    #[inline]
+    pub fn contact_mode_components(
+        &self,
+        direction: ContactDirection,
+        x: f64,
+        y: f64,
+        values: &mut [f64],
+        slopes: &mut [f64],
+        curvatures: &mut [f64],
+    ) {
+        self.mode_components(direction, x, y, values, slopes, curvatures);
+        if let Some(entry) = self.contact_entry() {
+            entry.apply(x, values, slopes, curvatures);
+        }
+    }
+
+    /// [`ModalBridge::mode_values_in`] as a contact sees them.
+    #[inline]
+    pub fn contact_mode_values_in(
+        &self,
+        direction: ContactDirection,
+        x: f64,
+        y: f64,
+        values: &mut [f64],
+    ) {
+        self.mode_values_in(direction, x, y, values);
+        if let Some(entry) = self.contact_entry() {
+            entry.apply(x, values, &mut [], &mut []);
+        }
+    }
+
     /// Static deflection influence line of the point (`x_point`, `y_point`)
     /// for loads travelling along the line `y_load` (m; a beam ignores both
     /// y): G(ξ), m/N, the downward deflection at the point due to a unit
@@ -832,9 +912,9 @@ impl ModalBridge {
             Shapes::Plate { modes, .. } => modes
                 .influence_line(x_point, y_point, y_load)
                 .map(InfluenceLine::Hermite),
-            Shapes::Imported(imported) => {
-                imported.influence_line(x_point).map(InfluenceLine::Track)
-            }
+            Shapes::Imported(imported) => imported
+                .influence_line(x_point)
+                .map(|f| InfluenceLine::Track(f, imported.model.entry)),
         }
     }
 
@@ -883,9 +963,9 @@ impl ModalBridge {
     /// direction under a unit downward load).
     pub fn dof_influence_line(&self, dof: usize) -> Result<InfluenceLine, BridgeError> {
         match &self.shapes {
-            Shapes::Imported(imported) => {
-                imported.dof_influence_line(dof).map(InfluenceLine::Track)
-            }
+            Shapes::Imported(imported) => imported
+                .dof_influence_line(dof)
+                .map(|f| InfluenceLine::Track(f, imported.model.entry)),
             _ => Err(BridgeError::EigenFailed),
         }
     }

@@ -1046,11 +1046,11 @@ impl Observer for Recorder<'_> {
                 let values = &mut self.wheel_modes[w * modes..(w + 1) * modes];
                 match view.wheel_modes {
                     Some(given) => values.copy_from_slice(&given[w * modes..(w + 1) * modes]),
-                    None => {
-                        model
-                            .bridge
-                            .mode_values(view.wheel_positions[w], model.wheel_y[w], values)
-                    }
+                    None => model.bridge.contact_mode_values(
+                        view.wheel_positions[w],
+                        model.wheel_y[w],
+                        values,
+                    ),
                 }
             }
         }

@@ -19,6 +19,15 @@ use crate::bridge::fe_import::{
 /// Abaqus's `1,1,1,1,1` 10): the size check before reading counts 10.
 const MIN_ENTRY_BYTES: f64 = 10.0;
 
+/// Default length over which a wheel's load enters an imported track at a
+/// free rail end, m: a little beyond the distance ahead of a wheel at which
+/// a continuous rail on ballasted track already bends under it (the first
+/// zero of its deflection line, 1.7–2.1 m: [`crate::bridge::fe_import::entry`]),
+/// and long enough that the ramp rings no track mode above the automatic
+/// cut-off: measured on scenarios/viaduct-2span (issue 24.4; README,
+/// "Imported FE models").
+pub const DEFAULT_ENTRY_LENGTH: f64 = 3.0;
+
 /// Resolves the `fe_import` bridge; `None` after reporting its problems.
 pub(super) fn resolve(
     raw: &raw::FeImportRaw,
@@ -205,7 +214,7 @@ pub(super) fn resolve(
         None => None,
     };
     let pairs: Vec<(u64, Direction)> = constrained.iter().map(|c| (c.node, c.direction)).collect();
-    let model = match ImportedModel::assemble(
+    let mut model = match ImportedModel::assemble(
         stiffness,
         mass,
         damping_file,
@@ -249,6 +258,39 @@ pub(super) fn resolve(
             return None;
         }
     };
+    // A wheel's load enters the track over `entry_length` at each free rail
+    // end (bridge::fe_import::entry), none where the support holds it.
+    // The default keeps both ramps on the outer quarters of a short track.
+    let entry_length = raw
+        .entry_length
+        .unwrap_or(DEFAULT_ENTRY_LENGTH.min(0.25 * model.length));
+    if entry_length.is_finite() {
+        ck.non_negative("bridge.entry_length", entry_length, "the entry length");
+    } else {
+        ck.error(
+            "bridge.entry_length",
+            format!("the entry length must be a finite length in m, got {entry_length}"),
+        );
+    }
+    let (free_start, free_end) = model.free_rail_ends();
+    if entry_length.is_finite()
+        && (free_start || free_end)
+        && entry_length * (free_start as u8 + free_end as u8) as f64 > model.length
+    {
+        ck.error(
+            "bridge.entry_length",
+            format!(
+                "the entry length {entry_length} m at the free rail ends does not fit on the \
+                 {:.4} m track",
+                model.length
+            ),
+        );
+    }
+    if ck.diagnostics.len() > before {
+        return None;
+    }
+    model.entry.entry = if free_start { entry_length } else { 0.0 };
+    model.entry.exit = if free_end { entry_length } else { 0.0 };
     Some(FeImport {
         stiffness: stiffness_file.shown,
         mass: mass_file.shown,
@@ -259,6 +301,7 @@ pub(super) fn resolve(
         track,
         modes,
         rotation_sign,
+        entry_length,
         spans: vec![model.length],
         model: Arc::new(model),
     })

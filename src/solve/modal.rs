@@ -116,7 +116,7 @@ impl ModalStep {
         self.current_force.fill(0.0);
         for (x, y, load) in loads {
             if bridge.is_on(x) {
-                bridge.mode_values(x, y, &mut self.shape_work);
+                bridge.contact_mode_values(x, y, &mut self.shape_work);
                 for (f, phi) in self.current_force.iter_mut().zip(&self.shape_work) {
                     *f -= load * phi;
                 }

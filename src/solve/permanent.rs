@@ -235,7 +235,7 @@ impl PermanentContacts {
             let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
             self.path[c] = (v, a);
             let s = &mut self.shapes[c];
-            bridge.mode_components(
+            bridge.contact_mode_components(
                 contact.direction,
                 x,
                 contact.y,

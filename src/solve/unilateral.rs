@@ -160,7 +160,7 @@ impl ContactGeometry {
             let scaled_c = &mut self.scaled[c * modes..(c + 1) * modes];
             // Off the deck every mode value is 0: no lookup needed.
             if self.on_deck[c] {
-                bridge.mode_values(x, model.wheel_y[contact.wheel], phi);
+                bridge.contact_mode_values(x, model.wheel_y[contact.wheel], phi);
                 for i in 0..modes {
                     scaled_c[i] = phi[i] * contact_flexibility[i];
                 }
@@ -641,7 +641,7 @@ pub fn run(
             carried[c] = lambda[c];
             if model.contact == ContactLaw::Rigid && was_apart[c] && lambda[c] > 0.0 {
                 let x = wheel_positions[contact.wheel];
-                bridge.mode_values_slopes_curvatures(
+                bridge.contact_mode_values_slopes_curvatures(
                     x,
                     model.wheel_y[contact.wheel],
                     &mut landing_values,

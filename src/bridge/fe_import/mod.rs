@@ -12,6 +12,7 @@
 
 pub mod abaqus;
 mod entries;
+pub mod entry;
 pub mod harwell_boeing;
 pub mod matrix_market;
 pub mod modal;
@@ -296,6 +297,9 @@ pub struct ImportedModel {
     /// included), kg: the inertia load of a unit lateral ground
     /// acceleration; all zero for a model without lateral DOFs.
     pub lateral_inertia: Vec<f64>,
+    /// How a wheel's load passes onto the track at its ends ([`entry`]);
+    /// none unless the scene sets it.
+    pub entry: entry::RailEntry,
 }
 
 /// A rail as given: name and (node, x) pairs.
@@ -520,7 +524,28 @@ impl ImportedModel {
             vertical_mass,
             vertical_inertia,
             lateral_inertia,
+            entry: entry::RailEntry {
+                start: 0.0,
+                end: end - origin,
+                entry: 0.0,
+                exit: 0.0,
+            },
         })
+    }
+
+    /// Whether the track's rail ends are free to move vertically, (first
+    /// node, last node): a rail end on pads and sleepers rather than a deck
+    /// end held by its support (whose constrained uz takes the load as it
+    /// enters, so no entry length is needed there).
+    pub fn free_rail_ends(&self) -> (bool, bool) {
+        let free = |last: bool| {
+            self.track.iter().any(|&r| {
+                let uz = &self.rails[r].displacement[0];
+                let node = if last { uz.last() } else { uz.first() };
+                node.is_some_and(|d| d.is_some())
+            })
+        };
+        (free(false), free(true))
     }
 
     /// Free DOF of (node, direction), if any.

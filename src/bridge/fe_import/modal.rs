@@ -286,6 +286,12 @@ impl ImportedFlexibility {
                 sum += wi * self.inverse[j * n + i] * wj;
             }
         }
+        // Both points are contacts: each couples to the model with its
+        // entry weight at a free rail end ([`super::entry`]).
+        let entry = &self.model.entry;
+        if entry.is_active() {
+            sum *= entry.weight(c.1).0 * entry.weight(d.1).0;
+        }
         sum
     }
 }

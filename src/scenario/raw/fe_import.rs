@@ -47,6 +47,17 @@ pub struct FeImportRaw {
     /// a sign the stiffness contradicts along a rail is refused.
     #[serde(default)]
     pub rotation_sign: Option<RotationSign>,
+    /// Length over which a wheel's load passes from the rigid approach onto
+    /// the model at a free rail end (and off it at the far end), m: the
+    /// wheel couples to the rail with a weight rising from 0 at the rail
+    /// end to 1 at this distance (quintic smoothstep), as a continuous rail
+    /// takes a wheel's load before it arrives. Applies only where the
+    /// track's end node is free to move vertically (not at a deck end held
+    /// by its support). Default 3 m (at most a quarter of the track); 0 puts
+    /// the whole load on at once.
+    #[serde(default)]
+    #[schemars(range(min = 0.0))]
+    pub entry_length: Option<f64>,
 }
 
 /// A node's DOF.

@@ -33,6 +33,9 @@ pub struct FeImport {
     /// Signs of the files' slope rotations (ry here = sign × ry in the files).
     #[serde(skip_serializing_if = "RotationSign::is_default")]
     pub rotation_sign: RotationSign,
+    /// Length over which a wheel's load enters the model at each free rail
+    /// end, m (0: at once; [`crate::bridge::fe_import::entry`]).
+    pub entry_length: f64,
     /// One span: the deck length from the first rail node to the last, m
     /// (the supports of an imported model are not known by position).
     #[serde(skip)]
