@@ -6,7 +6,7 @@
 //! for good once v = 0). Nothing of vbi's Newmark scheme, finite elements or
 //! kinematics is used by the reference.
 
-mod support;
+use crate::support;
 
 use support::{column, max_abs, run_yaml};
 

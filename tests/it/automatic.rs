@@ -1,7 +1,7 @@
 //! Modelling only what a scene needs: the automatic mode cut-off and time
 //! step, their reasons in the summary, and user overrides.
 
-mod support;
+use crate::support;
 
 use support::reference as exact;
 use vbi::run::{Outcome, simulate};
@@ -34,7 +34,7 @@ fn peak(outcome: &Outcome, name: &str) -> f64 {
 }
 
 /// The automatic cut-off keeps the Yang & Yau (1997) benchmark within 0.5 %
-/// of the independent reference (tests/support: 40 analytic modes, RK4 at
+/// of the independent reference (tests/it/support: 40 analytic modes, RK4 at
 /// 5e-6 s) on both the mid-span deflection and the vehicle acceleration, with
 /// fewer modes than a generous fixed count (40), at the scenario's step and
 /// at the automatic step; the summary says how many modes and why.

@@ -419,7 +419,7 @@ fn run_rejects_each_bad_file_and_writes_nothing() {
 fn modes_rejects_each_bad_file_and_writes_no_shapes() {
     let mut problems = Vec::new();
     // `vbi modes` needs only the bridge: a file without vehicles is valid
-    // there (tests/cli.rs, `modes_works_without_vehicles`).
+    // there (tests/it/cli.rs, `modes_works_without_vehicles`).
     for case in CASES.iter().filter(|c| c.file != "missing-vehicles.yaml") {
         let scratch = Scratch::new(&format!("modes-{}", case.file.trim_end_matches(".yaml")));
         let path = bad_dir().join(case.file);

@@ -2,7 +2,7 @@
 //! (EMBS paper §1: the simply supported bridge with lateral modes). Each
 //! test states its reference and tolerance.
 
-mod support;
+use crate::support;
 
 use std::f64::consts::PI;
 

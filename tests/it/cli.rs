@@ -1,7 +1,7 @@
 //! The command line end to end: `run` and its output files, the resolved
 //! scenario round trip, `modes`, `schema`, help and usage errors.
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

@@ -7,7 +7,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-mod support;
+use crate::support;
 use support::Scratch;
 
 /// A secret outside every scene folder: no output may ever contain it.

@@ -1,8 +1,6 @@
 //! The EMBS solver (EMBS paper, Section 2) against the coupled solution of
 //! the same scene. Each test states its reference and tolerance.
 
-mod support;
-
 use vbi::report::embs::EmbsSummary;
 use vbi::run::simulate;
 use vbi::scenario::load_str;

@@ -1,6 +1,6 @@
 //! Self-tests of the tensionless-contact reference solution.
 #![allow(clippy::needless_range_loop)]
-mod support;
+use crate::support;
 use support::event_reference::*;
 
 const G: f64 = GRAVITY;

@@ -4,13 +4,13 @@
 //! with their file, line and column.
 //!
 //! The reference is the `type: beam` bridge itself (its Hermite elements,
-//! checked against closed forms in tests/physics.rs): the export writes the
+//! checked against closed forms in tests/it/physics.rs): the export writes the
 //! same element matrices with shortest round-trip decimals, so modes and
 //! runs agree to round-off; 1e-8 relative leaves room for the different
 //! eigen path (the beam's curvature-form Rayleigh quotient against the
 //! assembled K of the import) and nothing else.
 
-mod support;
+use crate::support;
 
 use std::path::Path;
 
@@ -457,7 +457,7 @@ RSA                        2             2             3             0
 }
 
 /// The automatic mode choice on an imported track model carries a known
-/// gap (tests/automatic_shipped.rs): a run that used it says so, and one
+/// gap (tests/it/automatic_shipped.rs): a run that used it says so, and one
 /// with its modes set does not.
 #[test]
 fn automatic_modes_on_an_imported_track_are_flagged() {

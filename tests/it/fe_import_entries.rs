@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 /// A scratch folder under the system temp dir, unique per process and
-/// test, removed on drop (tests/support's, without the reference models
+/// test, removed on drop (tests/it/support's, without the reference models
 /// that module compiles and tests).
 struct Scratch(std::path::PathBuf);
 

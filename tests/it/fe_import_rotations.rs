@@ -4,8 +4,8 @@
 //! entries, and symmetry errors located at their file's line.
 //!
 //! The reference model is `vbi export beam` of a `type: beam` scene (its
-//! Hermite elements are checked against closed forms in tests/physics.rs;
-//! tests/fe_import.rs checks the export against the beam to 1e-8). The
+//! Hermite elements are checked against closed forms in tests/it/physics.rs;
+//! tests/it/fe_import.rs checks the export against the beam to 1e-8). The
 //! textbook convention is made from it by flipping the sign of every matrix
 //! entry with exactly one ry index, which is exactly the change of variable
 //! θ = −ry: its runs must equal the export's bit for bit once declared.
@@ -16,7 +16,7 @@ use std::process::{Command, Output};
 use vbi::bridge::fe_import::{Direction, abaqus, harwell_boeing};
 
 /// A scratch folder under the system temp dir, unique per process and
-/// test, removed on drop (tests/support's, without the reference models
+/// test, removed on drop (tests/it/support's, without the reference models
 /// that module compiles and tests).
 struct Scratch(std::path::PathBuf);
 

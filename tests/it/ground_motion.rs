@@ -4,7 +4,7 @@
 //! record as CSV giving the same run, absolute records, and located
 //! refusals of bad record files.
 
-mod support;
+use crate::support;
 
 use std::f64::consts::PI;
 use std::path::PathBuf;

@@ -15,7 +15,7 @@
 //!
 //! Measured figures are printed with `eprintln!` (`--nocapture` shows them).
 
-mod support;
+use crate::support;
 
 use support::{column, max_abs};
 
@@ -418,7 +418,7 @@ fn critical_scene(vehicle: &str, dt: f64, free_vibration: f64) -> String {
 /// of free vibration (above critical speed the maximum comes after the exit):
 /// - finite;
 /// - bounded: the moving force's DAF within 5e-4 of Frýba's closed form
-///   (50 exact sine modes, tests/support; measured 1.3e-5 and 6.3e-5), and
+///   (50 exact sine modes, tests/it/support; measured 1.3e-5 and 6.3e-5), and
 ///   the light oscillator's DAF within 15 % of the moving force's (measured
 ///   −5 % and −8 %: a physical bound, not an error);
 /// - converged: DAF within 1e-3 of the run at Δt/4 (measured ≤ 2.0e-4).

@@ -1,11 +1,11 @@
 //! Hertz contact (F = C·δ^1.5, tensionless) verified independently: vbi's
 //! LCP solver with the Newton-linearised Hertz law against the event-driven
-//! reference of tests/support/event_reference.rs (Dormand–Prince 5(4), exact
+//! reference of tests/it/support/event_reference.rs (Dormand–Prince 5(4), exact
 //! event location at δ = 0, analytic sine modes), the reference itself
 //! checked against closed forms (static settlement at (P/C)^(2/3), energy
 //! conservation), and the law checked pointwise on vbi's histories.
 
-mod support;
+use crate::support;
 
 use support::event_reference::{
     EventKind, GRAVITY, TensionlessCase, extremes, tensionless_from_state, tensionless_reference,

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-mod support;
+use crate::support;
 use support::Scratch;
 
 /// Virtual memory a `vbi check` may map, KiB (the binary and its thread

@@ -589,7 +589,7 @@ fn hover_shows_the_field_and_variant_text_with_units() {
 #[test]
 fn a_bad_file_gets_diagnostics_where_vbi_check_would_object() {
     let Some(mut server) = start() else { return };
-    // Each line breaks one rule `vbi check` enforces (see tests/schema.rs).
+    // Each line breaks one rule `vbi check` enforces (see tests/it/schema.rs).
     let bad = format!(
         "{MODELINE}name: lsp\n\
          bridge:\n  type: beam\n  spans: [-20.0]\n  bending_stiffness: 3.2e9\n  mass_per_length: 2000.0\n  elements_per_span: 0\n\

@@ -6,7 +6,7 @@
 //! far beyond the threshold); a scene with nothing random is refused with
 //! its location and exit code 2.
 
-mod support;
+use crate::support;
 
 use std::process::Command;
 

@@ -4,7 +4,7 @@
 //! plate, where no wheel lifts, against permanent contact — rigid, elastic
 //! and Hertz contact each.
 
-mod support;
+use crate::support;
 
 use support::event_reference::{EventKind, TensionlessCase, extremes};
 use support::multi_reference::{MultiCase, Oscillator};
@@ -211,7 +211,7 @@ fn three_separating_oscillators_match_the_reference() {
 }
 
 /// The H20-44 truck at 30 m/s on a good random road over a deck: the
-/// three-span beam of tests/truck.rs or the plate paper's orthotropic deck.
+/// three-span beam of tests/it/truck.rs or the plate paper's orthotropic deck.
 fn truck_scene(deck: &str, contact: &str, tyres: &str, time_step: f64) -> String {
     let bridge = if deck == "beam" {
         "bridge: {type: beam, spans: [24.0, 30.0, 24.0], bending_stiffness: 3.3e10, \

@@ -1,5 +1,5 @@
 //! Several wheels leaving the surface at different times, against an
-//! independent brute-force reference (tests/support/vehicle_reference.rs:
+//! independent brute-force reference (tests/it/support/vehicle_reference.rs:
 //! closed-form deck modes, the vehicle typed here from its source data, RK4
 //! at a tenth of vbi's step, rigid contact events located): the H20-44
 //! truck over a bump on a beam and on a plate, and two oscillators at
@@ -7,9 +7,9 @@
 //! for the truck, elastic and Hertz for the oscillators, and rigid for them
 //! up to the first landing (their wheels have mass: a rigid landing is an
 //! impact, step-dependent in vbi by design, see the README and
-//! tests/hard_cases.rs).
+//! tests/it/hard_cases.rs).
 
-mod support;
+use crate::support;
 
 use support::vehicle_reference::{Case, Deck, Element, GRAVITY, History, Road, Vehicle, WheelAt};
 use support::{column, max_abs, run_yaml};
@@ -266,7 +266,7 @@ fn truck_yaml(
 /// grid; asserted > 1.6), the peak force and gap errors by 1.7–14 (first
 /// order at least: losses and landings fall on the step grid; asserted >
 /// 1.4). Rigid contact converges here, landings included, unlike the
-/// hopping oscillator of tests/hard_cases.rs: the truck's contact points
+/// hopping oscillator of tests/it/hard_cases.rs: the truck's contact points
 /// are massless, so a landing has no impact to resolve.
 #[test]
 fn truck_lifting_over_a_bump_on_a_beam_matches_the_reference() {

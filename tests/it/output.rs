@@ -3,7 +3,7 @@
 //! CSV's values; every CSV header carries its unit; a run that would write
 //! more than `limits.output_bytes` is refused before it starts.
 
-mod support;
+use crate::support;
 
 use std::process::Command;
 

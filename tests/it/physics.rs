@@ -1,7 +1,7 @@
 //! Physics verification against closed forms and independent references
-//! (tests/support/reference.rs). Each test states its source and tolerance.
+//! (tests/it/support/reference.rs). Each test states its source and tolerance.
 
-mod support;
+use crate::support;
 
 use support::{column, max_abs, run_yaml};
 
@@ -100,7 +100,7 @@ fn beam(spans: &[f64], ei: f64, m: f64, elements_per_span: usize, count: usize) 
 
 /// Natural frequencies of continuous beams on pinned supports against the
 /// exact transcendental solution (determinant of the span-wise
-/// Euler–Bernoulli solutions, tests/support): first six within 0.1 % with
+/// Euler–Bernoulli solutions, tests/it/support): first six within 0.1 % with
 /// 20 Hermite elements per span.
 #[test]
 fn continuous_beam_frequencies_match_exact_solution() {
@@ -373,7 +373,7 @@ fn fryba_half_critical() -> (exact::MovingForceBeam, f64) {
 /// Bridge acceleration against the closed form: a constant force crossing a
 /// simply supported beam (Frýba's problem, 2 % damping, α = 0.5), vbi's
 /// mid-span `bridge_acceleration` history against the series solution
-/// differentiated twice in time (tests/support/reference.rs,
+/// differentiated twice in time (tests/it/support/reference.rs,
 /// `moving_force_acceleration`: each mode's exact forced and free response
 /// and q̈ from its equation), both on the lowest 6 modes (40 elements). The
 /// history's largest difference falls at second order with the step

@@ -1,13 +1,11 @@
 //! Verification of the Rayleigh–Ritz plate deck (`vbi::bridge::plate`):
 //! natural frequencies against closed forms, the continuous beam and an
 //! independent conforming plate finite-element model
-//! (tests/support/plate_fe.rs); static influence lines against the beam and
+//! (tests/it/support/plate_fe.rs); static influence lines against the beam and
 //! Maxwell's reciprocity; and the consistency of the fast line evaluation.
 //! Each test states where its reference comes from and its tolerance.
 
-#[allow(dead_code)] // the static field is used by tests/plate_truck.rs
-#[path = "support/plate_fe.rs"]
-mod plate_fe;
+use crate::support::plate_fe;
 
 use std::f64::consts::PI;
 

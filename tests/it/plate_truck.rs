@@ -2,10 +2,8 @@
 //! solver against `coupled`, the slow crossing against the static influence
 //! surface, and the DAF table. Each test states its source and tolerance.
 
-#[allow(dead_code)] // the frequency solver is used by tests/plate.rs
-#[path = "support/plate_fe.rs"]
-mod plate_fe;
-mod support;
+use crate::support;
+use crate::support::plate_fe;
 
 use support::{assert_histories_agree, column, max_abs, run_yaml};
 
@@ -75,7 +73,7 @@ record:
 /// here: the loads by the lever rule from the preset's masses and centre of
 /// gravity (58 810.8 N front, 32 422.5 N rear per wheel), the influence
 /// surface from the independent BFS plate finite elements
-/// (tests/support/plate_fe.rs, 0.5 m × b/28 elements, rigidities typed from
+/// (tests/it/support/plate_fe.rs, 0.5 m × b/28 elements, rigidities typed from
 /// the paper; converged: its peak moves by 5e-5 between 0.5 m × b/14 and
 /// 0.25 m × b/28 elements) by reciprocity.
 /// `terms` is the deck's Ritz basis line.

@@ -1,7 +1,7 @@
 //! The 10-DOF rail car and trains (the LCP separation paper's Section 5.2,
 //! Table 2). Each test states its reference and tolerance.
 
-mod support;
+use crate::support;
 
 use std::f64::consts::PI;
 

@@ -5,7 +5,7 @@
 //! load at ξ, V = R_A or R_A − P), and the convergence with the mode count
 //! with and without the mode-acceleration correction.
 
-mod support;
+use crate::support;
 
 use support::{column, run_yaml};
 
@@ -270,7 +270,7 @@ fn envelopes_csv_is_written() {
 }
 
 /// Shears and envelopes are beam quantities: a plate refuses them with a
-/// located message (its moments per unit width are recorded: tests/plate.rs).
+/// located message (its moments per unit width are recorded: tests/it/plate.rs).
 #[test]
 fn a_plate_refuses_shears_and_envelopes() {
     let plate = "name: p

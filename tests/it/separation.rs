@@ -3,7 +3,7 @@
 //! reference, rigid as the limit of elastic, Hertz contact, separation
 //! statistics, and the paper's qualitative findings (Figs. 4–6).
 
-mod support;
+use crate::support;
 
 use support::{column, max_abs, run_yaml};
 
@@ -160,7 +160,7 @@ fn rigid_lcp_agrees_with_coupled_for_a_wheel_mass() {
 }
 
 /// Elastic (tensionless spring) contact converges as the step shrinks to an
-/// independent event-driven reference of the same system (tests/support:
+/// independent event-driven reference of the same system (tests/it/support:
 /// Dormand–Prince 5(4) with dense output, stopping and restarting exactly at
 /// each loss and regain of contact, analytic sine modes): maximum contact
 /// force and maximum separation gap within 2e-4 at Δt = 2.5e-5 s (measured
@@ -262,7 +262,7 @@ fn rigid_is_the_limit_of_elastic() {
 /// the wheel starts compressed by δ₀ = (P/C)^(2/3); and a very stiff Hertz
 /// contact behaves like rigid contact (max gap within 1 % on the Fig. 4
 /// scene; measured 0.27 %). The Hertz law itself is verified against an
-/// independent reference in tests/hertz.rs.
+/// independent reference in tests/it/hertz.rs.
 #[test]
 fn hertz_contact() {
     let c = vbi::scenario::derive::hertz_coefficient(0.43, vbi::scenario::raw::TreadProfile::Worn);

@@ -4,7 +4,7 @@
 //! (Monte Carlo, separation map, speed sweep); missing, duplicated and
 //! foreign parts are refused with exit code 2 and a message naming them.
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

@@ -4,7 +4,7 @@
 //! cut-off and time step serve the whole sweep; a plate sweep tabulates every
 //! girder line; and `vbi run` writes every output, or nothing on failure.
 
-mod support;
+use crate::support;
 
 use std::path::Path;
 use std::process::{Command, Output};

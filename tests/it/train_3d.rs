@@ -1,7 +1,7 @@
 //! The 27-DOF 3D car of the EMBS paper (Section 3.2, Table 2: the
 //! AVE-S103). Each test states its reference and tolerance.
 
-mod support;
+use crate::support;
 
 use std::f64::consts::PI;
 

@@ -2,7 +2,7 @@
 //! solver (the plate paper's Sections 2.2–2.5). Each test states its source
 //! and tolerance.
 
-mod support;
+use crate::support;
 
 use std::f64::consts::PI;
 

@@ -3,7 +3,7 @@
 //! every mode passes, a large model, the inertia count, and the regressions
 //! of the forward-reduced solver this path replaced.
 
-mod support;
+use crate::support;
 
 use support::reference as exact;
 use support::{column, max_abs, run_yaml};

@@ -1,10 +1,11 @@
 //! Independent reference solutions shared by the physics tests, and the
 //! small helpers those tests share for running scenes and reading results.
 
-#![allow(dead_code)] // each test binary uses its own subset
+#![allow(dead_code)] // each test module uses its own subset
 
 pub mod event_reference;
 pub mod multi_reference;
+pub mod plate_fe;
 pub mod reference;
 pub mod vehicle_reference;
 

@@ -15,7 +15,7 @@
 //! contact law evaluated pointwise (no event location at all): the law is C⁰ (linear)
 //! or C¹ (Hertz) at δ = 0, so the error near a switch is O(h²) locally, and with
 //! h = 1 µs it is far below the errors of the code under test (checked against the
-//! event-driven reference in `tests/multi_wheel.rs`). Contact losses and landings are
+//! event-driven reference in `tests/it/multi_wheel.rs`). Contact losses and landings are
 //! found as sign changes of δ between steps, located by linear interpolation.
 #![allow(dead_code)]
 #![allow(clippy::needless_range_loop)]
