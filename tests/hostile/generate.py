@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Generates the hostile corpus of issue 10: tests/hostile/cases/*.yaml and
-tests/hostile/expected.tsv, which tests/hostile.rs runs (no Python needed to
+tests/hostile/expected.tsv, which tests/it/hostile.rs runs (no Python needed to
 run the tests; this script only regenerates the committed files).
 
 Every case says what it tests and how `vbi check` must answer:
@@ -74,7 +74,7 @@ case("ok-name-dotdot", "accepted", "`..` as a name is accepted as a title", scen
 case("ok-name-unicode", "accepted", "a Unicode name", scene(name="pont de l'Île"))
 case("size-limits-self-raised", "budget",
      "a file raising its own wheel limit for 600 axles is refused unless the command line "
-     "allows it (`--trust-limits`; tests/hostile.rs runs it so) (issue 23; one record, so "
+     "allows it (`--trust-limits`; tests/it/hostile.rs runs it so) (issue 23; one record, so "
      "that the trusted run stays small: the default records would write 400 MB)",
      scene(vehicles="  @@- type: moving_force\n    loads: [" + ", ".join(["1e4"] * 600)
            + "]\n    axle_spacings: [" + ", ".join(["0.1"] * 599) + "]\n    speed: 20.0\n",
@@ -230,13 +230,13 @@ case("size-modes-count", "budget", "more modes than the budget",
      scene(bridge=BEAM + "  elements_per_span: 900\n  modes: {count: @@1000}\n",
            extra="limits: {dofs: 2000}\n"), "limits.modes")
 case("size-modes-automatic", "budget",
-     "a 10 km span whose automatic cut-off keeps 595 modes (found by tests/fuzz.rs with 100 km, "
+     "a 10 km span whose automatic cut-off keeps 595 modes (found by tests/it/fuzz.rs with 100 km, "
      "now beyond the plausible span: it used to solve for all of them inside `vbi check`)",
      "name: hostile\nbridge:\n  type: beam\n  spans: @@[10000]\n  bending_stiffness: 8.323e9\n"
      "  mass_per_length: 2303.0\n  elements_per_span: 10000\nvehicles:\n" + OSC, "limits.modes")
 case("size-eigen-work", "budget",
      "EI = 1 N·m² on a 10,000-element span: the automatic cut-off keeps 449 modes of 20,000 DOFs, "
-     "a Lanczos solve of 4e9 (n k²) that took 18–30 s inside `vbi check` (found by tests/fuzz.rs)",
+     "a Lanczos solve of 4e9 (n k²) that took 18–30 s inside `vbi check` (found by tests/it/fuzz.rs)",
      "name: hostile\nbridge:\n  type: beam\n  spans: @@[25.0]\n  bending_stiffness: 1\n"
      "  mass_per_length: 2303.0\n  elements_per_span: 10000\nvehicles:\n" + OSC, "limits.eigen_work")
 case("size-many-spans", "budget",
@@ -422,7 +422,7 @@ big = "name: big\n" + BEAM + "vehicles:\n" + "".join(
     for i in range(20000)) + "limits: {wheels: 100000}\n"
 case("many-errors-20000", "budget",
      "20,000 errors in one file (diagnostics were quadratic: 15 s for 1.5 MB); the file raises "
-     "its wheel limit, refused without `--trust-limits` (tests/hostile.rs runs it with it)",
+     "its wheel limit, refused without `--trust-limits` (tests/it/hostile.rs runs it with it)",
      big.replace("  - {type", "  @@- {type", 1), "--trust-limits")
 
 # --- structure: keys, variants, references ------------------------------------------
@@ -662,7 +662,7 @@ case("ok-fe-rotation-no-evidence-declared", "accepted",
 # --- confined reads (issue 23): paths out of the scene's folder by `../`, by
 # a symlink or absolute, to a device, and a canary file beside the cases'
 # folder (tests/hostile/canary.txt) whose content must never appear in any
-# output (tests/hostile.rs checks every case for it). Each is refused at the
+# output (tests/it/hostile.rs checks every case for it). Each is refused at the
 # key that names the file, with the path and `--data-dir`, before it is read.
 CANARY = "CANARY-SECRET-8a41f2"
 CANARY_TEXT = ("root:x:0:0:root:/root:/bin/bash " + CANARY + "\n"
@@ -712,9 +712,9 @@ case("content-not-a-record", "rejected", "a record CSV that is not one is not qu
      "the first row is not a number")
 
 # --- forged part files for `vbi merge` (issue 23), written to
-# tests/hostile/parts/: tests/hostile.rs merges each alone and expects exit
+# tests/hostile/parts/: tests/it/hostile.rs merges each alone and expects exit
 # 2 within the caps and no canary. (Forgeries that carry the right scene
-# hash are made from a real part at test time, in tests/confined.rs.)
+# hash are made from a real part at test time, in tests/it/confined.rs.)
 PART_SCENE = scene(extra="study:\n  type: separation_map\n  velocity_ratio: {from: 0.1, to: 0.3, count: 3}\n"
                    "  mass_ratio: {from: 0.1, to: 0.2, count: 2}\n")
 

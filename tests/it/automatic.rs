@@ -1,0 +1,116 @@
+//! Modelling only what a scene needs: the automatic mode cut-off and time
+//! step, their reasons in the summary, and user overrides.
+
+use crate::support;
+
+use support::reference as exact;
+use vbi::run::{Outcome, simulate};
+use vbi::scenario::load_str;
+
+fn run(text: &str) -> Outcome {
+    let loaded = load_str(text, "test.yaml").unwrap_or_else(|e| panic!("{e}"));
+    simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn yang_yau(modes: &str, time_step: &str) -> String {
+    format!(
+        "name: yy\nbridge: {{type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0{modes}}}\n\
+         vehicles: [{{type: oscillator, sprung_mass: 5750.0, stiffness: 1.595e6, speed: 27.777777777777778}}]\n\
+         solver: {{free_vibration: 0.0{time_step}}}\n\
+         record:\n\
+         - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n\
+         - {{name: body_acceleration, quantity: vehicle_acceleration, dof: sprung}}\n"
+    )
+}
+
+fn peak(outcome: &Outcome, name: &str) -> f64 {
+    outcome
+        .summary
+        .quantities
+        .iter()
+        .find(|q| q.name == name)
+        .map(|q| q.max_abs.value.abs())
+        .expect("recorded")
+}
+
+/// The automatic cut-off keeps the Yang & Yau (1997) benchmark within 0.5 %
+/// of the independent reference (tests/it/support: 40 analytic modes, RK4 at
+/// 5e-6 s) on both the mid-span deflection and the vehicle acceleration, with
+/// fewer modes than a generous fixed count (40), at the scenario's step and
+/// at the automatic step; the summary says how many modes and why.
+#[test]
+fn automatic_modes_keep_yang_yau_within_half_a_percent() {
+    let case = exact::yang_yau_1997();
+    let reference = exact::sprung_mass_reference(&case, 40, 5e-6, case.crossing_time());
+    let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let deflection = max_abs(&reference.midspan_deflection);
+    let acceleration = max_abs(&reference.vehicle_acceleration);
+    let generous = run(&yang_yau(", modes: {count: 40}", ", time_step: 1.0e-4"));
+    for step in [", time_step: 1.0e-4", ""] {
+        let automatic = run(&yang_yau("", step));
+        let used = automatic.summary.run.modes_used;
+        assert!(used < generous.summary.run.modes_used, "{used} modes");
+        assert!(
+            automatic
+                .summary
+                .run
+                .modes_selection
+                .starts_with("automatic")
+        );
+        for (name, exact_peak) in [("midspan", deflection), ("body_acceleration", acceleration)] {
+            let error = (peak(&automatic, name) - exact_peak).abs() / exact_peak;
+            eprintln!(
+                "{name}{step}: {used} automatic modes, Δt = {:.3e} s, error {:.3} %",
+                automatic.summary.run.time_step,
+                error * 100.0
+            );
+            assert!(error < 0.005, "{name}{step}: {:.3} %", error * 100.0);
+        }
+    }
+}
+
+/// The cut-off follows the excitation: a stiff elastic contact adds the wheel
+/// hop (√(k_c/m_u)/2π = 50 Hz for 1e8 N/m under 1000 kg) and roughness adds
+/// v/λ, so more modes are kept (cut-off ≥ 4 × 50 Hz) and the default step
+/// resolves the hop with ≥ 20 steps per period; the cut-off is written back
+/// as `max_frequency` so the resolved scenario reproduces the choice.
+#[test]
+fn cutoff_and_step_follow_the_excitation() {
+    let scene = |contact: &str| {
+        format!(
+            "name: hop\nbridge: {{type: beam, spans: [20.0], bending_stiffness: 3.2423e9, mass_per_length: 2000.0}}\n\
+             vehicles: [{{type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: 25.0}}]\n\
+             contact: {contact}\n"
+        )
+    };
+    let permanent = load_str(&scene("{type: permanent}"), "a").expect("valid");
+    let elastic = load_str(&scene("{type: elastic, stiffness: 1.0e8}"), "b").expect("valid");
+    let hop = (1.0e8f64 / 1000.0).sqrt() / (2.0 * std::f64::consts::PI);
+    let cutoff = elastic
+        .scenario
+        .bridge
+        .modes()
+        .max_frequency
+        .expect("written back");
+    assert!(cutoff >= 4.0 * hop, "cut-off {cutoff} Hz");
+    assert!(elastic.bridge.mode_count() > permanent.bridge.mode_count());
+    let top = elastic
+        .bridge
+        .frequencies()
+        .last()
+        .copied()
+        .unwrap()
+        .max(hop);
+    assert!(elastic.scenario.solver.time_step <= 1.0 / (20.0 * top) * (1.0 + 1e-12));
+    assert!(elastic.scenario.solver.time_step < permanent.scenario.solver.time_step);
+}
+
+/// Every automatic choice can be overridden: an explicit mode count and time
+/// step are used as given and reported as requested.
+#[test]
+fn explicit_choices_override_the_automatic_ones() {
+    let outcome = run(&yang_yau(", modes: {count: 7}", ", time_step: 2.0e-4"));
+    assert_eq!(outcome.summary.run.modes_used, 7);
+    assert_eq!(outcome.summary.run.time_step, 2.0e-4);
+    assert!(outcome.summary.run.modes_selection.starts_with("requested"));
+}

@@ -1,0 +1,66 @@
+//! The integration tests, as one crate (issue 25, point 4): every file here
+//! is a module of one test binary, so `cargo test --release` builds and links
+//! the library into one test executable instead of one per file (a cold
+//! build of 48 binaries took most of CI's time). Run a part of it by module
+//! path: `cargo test --release --test it fuzz::`. A new test file goes here
+//! as `mod name;` below; it shares `support` (the independent reference
+//! solutions and helpers), which is compiled once for all of them.
+//!
+//! The modules run in one process, on the harness's threads: a test must not
+//! set environment variables or the working directory in-process (none does:
+//! the child `vbi` processes get theirs through `Command`), and scratch
+//! folders carry the module's name as well as the process id.
+
+mod support;
+
+mod accelerating;
+mod automatic;
+mod automatic_shipped;
+mod bad_inputs;
+mod beam_3d;
+mod cli;
+mod confined;
+mod converge;
+mod embs;
+mod event_reference_oracle;
+mod fe_import;
+mod fe_import_entries;
+mod fe_import_rotations;
+mod fuzz;
+mod generate;
+mod golden;
+mod ground_guard;
+mod ground_motion;
+mod hard_cases;
+mod hertz;
+mod hostile;
+mod lateral_geometry;
+mod lsp;
+mod many_modes;
+mod modes_cache;
+mod monte_carlo;
+mod multi_wheel;
+mod multi_wheel_lift;
+mod output;
+mod physics;
+mod plate;
+mod plate_truck;
+mod profile_entrance;
+mod regress;
+mod rail_car;
+mod resolved_rerun;
+mod resonance;
+mod resonance_verdict;
+mod schema;
+mod section_forces;
+mod separation;
+mod shard;
+mod shipped_clean;
+mod slurm;
+mod speed_sweep;
+mod speed_units;
+mod surfaces;
+mod train_3d;
+mod truck;
+mod trust;
+mod untrusted;

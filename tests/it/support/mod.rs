@@ -1,0 +1,98 @@
+//! Independent reference solutions shared by the physics tests, and the
+//! small helpers those tests share for running scenes and reading results.
+
+#![allow(dead_code)] // each test module uses its own subset
+
+pub mod event_reference;
+pub mod multi_reference;
+pub mod plate_fe;
+pub mod reference;
+pub mod vehicle_reference;
+
+use std::path::{Path, PathBuf};
+
+use vbi::run::{Outcome, simulate};
+use vbi::scenario::load_str;
+
+/// Loads and runs a scene given as YAML text, panicking with the error.
+pub fn run_yaml(yaml: &str) -> Outcome {
+    let loaded = load_str(yaml, "test.yaml").unwrap_or_else(|e| panic!("{e}"));
+    simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The recorded history named `name`.
+pub fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
+    &outcome
+        .history
+        .columns
+        .iter()
+        .find(|c| c.name == name)
+        .unwrap_or_else(|| panic!("no column {name}"))
+        .values
+}
+
+/// Largest absolute value.
+pub fn max_abs(values: &[f64]) -> f64 {
+    values.iter().fold(0.0, |m, v| m.max(v.abs()))
+}
+
+/// Asserts that the histories `names` of two runs agree everywhere to
+/// `tolerance` × the peak |value| of `reference`'s history.
+pub fn assert_histories_agree(run: &Outcome, reference: &Outcome, names: &[&str], tolerance: f64) {
+    for name in names {
+        let (a, b) = (column(run, name), column(reference, name));
+        let peak = max_abs(b);
+        let worst = a
+            .iter()
+            .zip(b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        eprintln!("{name}: differs by {:.2e} of its peak", worst / peak);
+        assert!(
+            worst <= tolerance * peak,
+            "{name}: differs by {worst} against a peak of {peak}"
+        );
+    }
+}
+
+/// A scratch folder under the system temp dir, unique per process, test
+/// binary and test, removed on drop.
+pub struct Scratch(PathBuf);
+
+impl Scratch {
+    /// Creates the empty folder for `test` of the test binary `binary`.
+    pub fn new(binary: &str, test: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create scratch dir");
+        Scratch(dir)
+    }
+
+    /// The folder.
+    pub fn dir(&self) -> &Path {
+        &self.0
+    }
+
+    /// The path of `name` inside the folder.
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Runs `f` in a rayon pool of `threads` threads, or in the global pool
+/// when `None`.
+pub fn on_threads<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> T {
+    match threads {
+        None => f(),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .expect("pool")
+            .install(f),
+    }
+}
