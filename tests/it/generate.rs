@@ -395,9 +395,10 @@ fn the_full_scale_scene_checks_against_the_generated_viaduct() {
         dir.join("records/synthetic-lateral.AT2"),
     )
     .unwrap();
-    let scene =
-        std::fs::read_to_string(root.join("scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml"))
-            .unwrap();
+    let scene = std::fs::read_to_string(
+        root.join("scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml"),
+    )
+    .unwrap();
     assert!(scene.contains("modes: {max_frequency: 15.0}"));
     std::fs::write(
         dir.join("scene.yaml"),
@@ -413,6 +414,7 @@ fn the_full_scale_scene_checks_against_the_generated_viaduct() {
     assert!(checked.status.success(), "{stderr}");
     assert!(String::from_utf8_lossy(&checked.stdout).contains("scene.yaml: ok"));
     std::fs::remove_dir_all(&dir).unwrap();
+}
 
 /// The block Lanczos of large imports (issue 22 point 8): the lowest 40
 /// modes of a generated three-span viaduct above 4,000 DOFs (the size
