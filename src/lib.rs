@@ -8,8 +8,10 @@
 
 #![warn(missing_docs)]
 
+pub mod atomic_file;
 pub mod bridge;
 pub mod contact;
+pub mod execute;
 pub mod export;
 pub mod generate;
 pub mod ground;
@@ -18,9 +20,14 @@ pub mod record;
 pub mod report;
 pub mod run;
 pub mod scenario;
-pub mod schema;
 pub mod solve;
 pub mod study;
 pub mod surface;
 pub mod text_table;
 pub mod vehicle;
+
+#[cfg(test)]
+mod layers;
+
+/// The JSON Schema of the format; it lives with the format ([`scenario::schema`]).
+pub use scenario::schema;

@@ -444,7 +444,7 @@ fn run(
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let results = match vbi::run::execute_into(loaded, &out, &progress) {
+    let results = match vbi::execute::execute_into(loaded, &out, &progress) {
         Ok(r) => r,
         Err(e) => {
             bar.abandon();
@@ -454,7 +454,7 @@ fn run(
     };
     bar.finish_and_clear();
     let outcome = match results {
-        vbi::run::Results::Scene(outcome) => outcome,
+        vbi::execute::Results::Scene(outcome) => outcome,
         study => return write_study(&out, &scenario, &study, quiet),
     };
     if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {

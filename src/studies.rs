@@ -13,14 +13,14 @@ use vbi::scenario::{self, LoadError};
 pub(super) fn write_study(
     out: &Path,
     scenario: &vbi::scenario::resolved::Scenario,
-    results: &vbi::run::Results,
+    results: &vbi::execute::Results,
     quiet: bool,
 ) -> ExitCode {
-    use vbi::run::Results;
+    use vbi::execute::Results;
     let written = match results {
         Results::Scene(_) => unreachable!("a study's results"),
-        Results::SeparationMap(map) => vbi::run::write_study(out, scenario, map),
-        Results::SpeedSweep(sweep) => vbi::run::write_speed_sweep(out, scenario, sweep),
+        Results::SeparationMap(map) => vbi::study::separation_map::write(out, scenario, map),
+        Results::SpeedSweep(sweep) => vbi::study::speed_sweep::write(out, scenario, sweep),
         Results::MonteCarlo(mc) => vbi::study::monte_carlo::write(out, scenario, mc),
         Results::ResonanceCheck(check) => vbi::study::resonance::write(out, scenario, check),
     };

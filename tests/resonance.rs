@@ -5,7 +5,7 @@
 
 mod support;
 
-use vbi::run::{Results, execute};
+use vbi::execute::{Results, execute};
 use vbi::scenario::load_str;
 use vbi::scenario::raw::HslmModel;
 use vbi::scenario::resolved::Vehicle;

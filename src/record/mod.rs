@@ -394,9 +394,7 @@ impl History {
     }
 }
 
-/// Gap above which a wheel with zero contact force counts as separated, m.
-/// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
-pub const SEPARATION_GAP: f64 = 1e-9;
+pub use crate::contact::SEPARATION_GAP;
 
 /// Loss of contact of one wheel over a run.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]

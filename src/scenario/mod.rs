@@ -32,6 +32,7 @@ pub mod resolve;
 pub mod resolved;
 pub mod resonance;
 pub mod resonance_grid;
+pub mod schema;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;

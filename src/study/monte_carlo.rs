@@ -114,7 +114,7 @@ pub struct WheelOutcome {
     /// Wheel number from 1.
     pub wheel: usize,
     /// Whether the wheel lost contact (zero contact force with a gap above
-    /// [`crate::record::SEPARATION_GAP`]) at any step.
+    /// [`crate::contact::SEPARATION_GAP`]) at any step.
     pub separated: bool,
     /// Largest gap between wheel and surface, m (0 if never separated).
     pub max_gap: f64,
