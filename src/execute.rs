@@ -6,7 +6,7 @@ use std::path::Path;
 
 use crate::run::{self, RunError};
 use crate::scenario::Loaded;
-use crate::scenario::resolved::Study;
+use crate::scene::Study;
 pub use crate::study::Results;
 use crate::study::{monte_carlo, separation_map, speed_sweep};
 

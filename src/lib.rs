@@ -20,6 +20,7 @@ pub mod record;
 pub mod report;
 pub mod run;
 pub mod scenario;
+pub mod scene;
 pub mod solve;
 pub mod study;
 pub mod surface;

@@ -631,7 +631,7 @@ fn modes_json(name: &str, bridge: &vbi::bridge::ModalBridge) -> String {
 
 /// Each vehicle's own natural frequencies with its wheels held on rigid
 /// ground (massless DOFs condensed out), to set against the bridge's.
-fn print_vehicle_frequencies(scenario: &vbi::scenario::resolved::Scenario) {
+fn print_vehicle_frequencies(scenario: &vbi::scene::Scenario) {
     use vbi::scenario::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     let hz = |f: &[f64]| {

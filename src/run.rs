@@ -12,7 +12,7 @@ use crate::record::{History, Recorder};
 use crate::report::summary::Summary;
 use crate::report::{self, ReportError};
 use crate::scenario::Loaded;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 use crate::solve::{self, Progress, SolveError};
 
 pub use crate::report::folder::{
@@ -104,7 +104,7 @@ fn run_scene(
     // the a-posteriori check of the expansion (report::embs).
     let mut zero_order = match model.embs {
         Some(e)
-            if e.first_order && model.method == crate::scenario::resolved::SolverMethod::Embs =>
+            if e.first_order && model.method == crate::scene::SolverMethod::Embs =>
         {
             Some(
                 Recorder::new(&model, &scenario.record)
@@ -125,7 +125,7 @@ fn run_scene(
     let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
     let mut summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
-    if model.method == crate::scenario::resolved::SolverMethod::Embs {
+    if model.method == crate::scene::SolverMethod::Embs {
         // The same model and records through `coupled`, as the reference.
         let reference = if compare {
             let mut coupled = Recorder::new(&model, &scenario.record)

@@ -12,7 +12,7 @@ use vbi::scenario::{self, LoadError};
 /// Writes a study's results into `out` and says what it found.
 pub(super) fn write_study(
     out: &Path,
-    scenario: &vbi::scenario::resolved::Scenario,
+    scenario: &vbi::scene::Scenario,
     results: &vbi::execute::Results,
     quiet: bool,
 ) -> ExitCode {
@@ -205,7 +205,7 @@ pub(super) fn run_sample(
     force: bool,
     k: u64,
 ) -> ExitCode {
-    use vbi::scenario::resolved::Study;
+    use vbi::scene::Study;
     let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),

@@ -17,7 +17,7 @@ use super::{StaticProbe, corrected_displacement, dot, filtered_shape, static_sha
 use crate::bridge::BridgeError;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
-use crate::scenario::resolved::{Envelopes, Quantity};
+use crate::scene::{Envelopes, Quantity};
 use crate::solve::StepView;
 
 /// The extremes of one quantity at one point.

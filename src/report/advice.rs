@@ -4,7 +4,7 @@
 
 use crate::report::summary::Summary;
 use crate::scenario::raw::{KM_H, km_h_to_m_s};
-use crate::scenario::resolved::{Quantity, Scenario, Study, Surface};
+use crate::scene::{Quantity, Scenario, Study, Surface};
 use crate::surface::fade_start;
 use crate::surface::spectrum::{FRA_MAX_SPEED_MPH, fra_max_speed};
 
@@ -188,7 +188,7 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     // on scenarios/viaduct-2span-axle-loads.yaml; tests/automatic_shipped.rs).
     if matches!(
         scenario.bridge,
-        crate::scenario::resolved::Bridge::FeImport(_)
+        crate::scene::Bridge::FeImport(_)
     ) && run.modes_selection.starts_with("automatic")
     {
         out.push(

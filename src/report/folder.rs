@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use super::ReportError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 
 /// The default output folder of a scene: `results/` and its `name` made
 /// safe as one folder name ([`crate::scenario::names::folder_name`]: no

@@ -5,7 +5,7 @@
 
 use super::raw;
 use super::resolve::Checker;
-use super::resolved::*;
+use crate::scene::*;
 use crate::bridge::ModalBridge;
 
 /// Relative difference below which a given value agrees with a derived one.

@@ -9,7 +9,7 @@ use super::budget::Budget;
 use super::data_files::{self, DataFile};
 use super::raw;
 use super::resolve::Checker;
-use super::resolved::*;
+use crate::scene::*;
 use crate::bridge::fe_import::{
     Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market,
     tables,

@@ -11,7 +11,7 @@ use super::budget::Budget;
 use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
 use super::resolve::Checker;
-use super::resolved::{Bridge, GroundMotion};
+use crate::scene::{Bridge, GroundMotion};
 use crate::ground::{AccelerationUnit, Direction, GroundRecord, at2, table};
 
 /// A record's samples as read: times (s), accelerations (in the units),

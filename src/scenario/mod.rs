@@ -29,7 +29,8 @@ pub mod rail_3d;
 pub mod raw;
 mod records;
 pub mod resolve;
-pub mod resolved;
+/// The resolved scene, which the format produces: [`crate::scene`].
+pub use crate::scene as resolved;
 pub mod resonance;
 pub mod resonance_grid;
 pub mod schema;
@@ -49,7 +50,7 @@ pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
-use self::resolved::Scenario;
+use crate::scene::Scenario;
 use self::yaml::Location;
 use crate::bridge::ModalBridge;
 

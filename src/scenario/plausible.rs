@@ -34,7 +34,7 @@
 //! | time before a vehicle reaches the bridge | 0 to 86 400 | s |
 
 use super::resolve::Checker;
-use super::resolved::{Bridge, Contact, Rigidity, Study, Vehicle};
+use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
 use crate::bridge::ModalBridge;
 
 /// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).

@@ -2,7 +2,7 @@
 //!
 //! These are the "low" arguments (ripgrep's `lowargs`): optional fields stay
 //! `Option`, nothing is checked beyond syntax and types. [`super::resolve`]
-//! turns them into the validated [`super::resolved::Scenario`]. Every field's
+//! turns them into the validated [`crate::scene::Scenario`]. Every field's
 //! doc comment becomes its description in the JSON Schema, so each states its
 //! unit. Tagged unions are dispatched on a `type` key by our own deserializer
 //! ([`super::de`]), which keeps source locations; `#[schemars(tag = "type")]`
@@ -753,7 +753,7 @@ pub struct RecordRaw {
     /// Bridge and vehicle displacements and accelerations only.
     #[serde(default)]
     #[schemars(extend("default" = "relative"))]
-    pub frame: Option<crate::scenario::resolved::Frame>,
+    pub frame: Option<crate::scene::Frame>,
     /// Which moment per unit width a `bridge_moment` on a plate deck
     /// records (N·m/m, sagging positive): `mx` longitudinal bending (the
     /// default), `my` transverse bending, `mxy` twisting.

@@ -15,7 +15,7 @@ use super::diagnostic::{Diagnostic, Lines};
 use super::plausible;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
-use super::resolved::*;
+use crate::scene::*;
 use super::yaml::{Location, Node, PathSeg};
 use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
 

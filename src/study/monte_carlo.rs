@@ -31,7 +31,7 @@ use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::{Recorder, SharedStatics};
 use crate::run::RunError;
-use crate::scenario::resolved::{MonteCarlo, Scenario, SweepRoughness};
+use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::scenario::sweep;
 use crate::solve;
 

@@ -13,7 +13,7 @@ use super::resonance::{ResonancePoint, ResonanceResults};
 use crate::report::plot::{Series, line_chart, line_chart_with_reference};
 use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 use crate::scenario::resonance_grid::km_h;
 
 impl ResonanceResults {

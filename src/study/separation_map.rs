@@ -18,7 +18,7 @@ use crate::model::Model;
 use crate::record::Recorder;
 use crate::report;
 use crate::run::RunError;
-use crate::scenario::resolved::{Contact, Grid, Quantity, Record, Scenario, Vehicle};
+use crate::scene::{Contact, Grid, Quantity, Record, Scenario, Vehicle};
 use crate::solve;
 
 /// Result of one grid point.

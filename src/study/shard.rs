@@ -31,7 +31,7 @@ use super::monte_carlo::{self, MonteCarloPart};
 use super::separation_map::{self, MapPoint};
 use super::speed_sweep::{self, SweepPoint};
 use crate::run::RunError;
-use crate::scenario::resolved::Study;
+use crate::scene::Study;
 use crate::scenario::{self, LoadOptions, Loaded};
 use crate::study::Results;
 

@@ -8,7 +8,7 @@
 use super::super::budget::Budget;
 use super::super::data_files::{self, DataFile};
 use super::super::resolve::Checker;
-use super::super::resolved::MeasuredProfile;
+use crate::scene::MeasuredProfile;
 use crate::ground::table::not_a_number;
 
 /// Fewest bytes a data row takes (`0,0` and a line break).

@@ -15,7 +15,7 @@ use super::MonteCarloResults;
 use crate::report::plot::{Series, line_chart, line_chart_over_samples};
 use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 use crate::study::speed_sweep::KM_H;
 
 /// Standard normal quantile of a two-sided 95 % interval.

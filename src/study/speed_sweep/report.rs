@@ -9,7 +9,7 @@ use super::{DafSource, KM_H, SweepResults};
 use crate::report::plot::{Series, category_heat_map, line_chart};
 use crate::report::{self, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 
 const DAF_LABEL: &str = "DAF = max |w dynamic| / max |w static|";
 const SPEED_LABEL: &str = "speed (km/h)";

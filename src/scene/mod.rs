@@ -16,13 +16,13 @@ pub use self::ground::*;
 pub use self::rail::*;
 pub use self::study::*;
 pub use self::surface::*;
-pub use super::budget::Limits;
+pub use crate::scenario::budget::Limits;
 
-pub use super::raw::{
+pub use crate::scenario::raw::{
     GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, SolverMethod, TermsRaw as Terms,
 };
 
-/// A validated scene. See [`super::raw::ScenarioRaw`] for the meaning of each field.
+/// A validated scene. See [`crate::scenario::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Scenario {
     /// The scene file it was loaded from (its canonical path), when the
@@ -421,28 +421,6 @@ impl Vehicle {
         }
     }
 
-    /// How the vehicle travels (speed at t = 0, acceleration, entry time).
-    pub fn motion(&self) -> crate::vehicle::motion::Motion {
-        crate::vehicle::motion::Motion {
-            speed: self.speed(),
-            acceleration: self.acceleration(),
-            entry_time: self.entry_time(),
-        }
-    }
-
-    /// Time at which the last axle leaves a bridge of length `length` (m), s;
-    /// for a vehicle that brakes to a stop before, the time it stops.
-    pub fn exit_time(&self, length: f64) -> f64 {
-        if self.acceleration() == 0.0 {
-            return self.entry_time() + (length + self.length()) / self.speed();
-        }
-        let motion = self.motion();
-        motion
-            .time_at(length + self.length())
-            .or(motion.stop_time())
-            .unwrap_or(f64::INFINITY)
-    }
-
     /// Speed at t = 0, m/s.
     pub fn speed(&self) -> f64 {
         match self {
@@ -484,7 +462,7 @@ impl Vehicle {
             Vehicle::H20Truck(v) => {
                 v.parameters.front_axle_to_centre + v.parameters.centre_to_rear_axle
             }
-            Vehicle::RailCar(v) => crate::vehicle::rail_car::wheelset_span(&v.parameters),
+            Vehicle::RailCar(v) => wheelset_span(&v.parameters),
             Vehicle::Train(v) => v.length(),
             Vehicle::Train3d(v) => v.length(),
         }
