@@ -103,15 +103,11 @@ fn run_scene(
     // EMBS with its first order also records the zero order alone, for
     // the a-posteriori check of the expansion (report::embs).
     let mut zero_order = match model.embs {
-        Some(e)
-            if e.first_order && model.method == crate::scene::SolverMethod::Embs =>
-        {
-            Some(
-                Recorder::new(&model, &scenario.record)
-                    .map_err(BuildError::from)?
-                    .every(scenario.output.every),
-            )
-        }
+        Some(e) if e.first_order && model.method == crate::scene::SolverMethod::Embs => Some(
+            Recorder::new(&model, &scenario.record)
+                .map_err(BuildError::from)?
+                .every(scenario.output.every),
+        ),
         _ => None,
     };
     let solve_start = Instant::now();

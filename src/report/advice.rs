@@ -186,10 +186,8 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     }
     // The known gap of the automatic choice on imported tracks (measured
     // on scenarios/viaduct-2span-axle-loads.yaml; tests/automatic_shipped.rs).
-    if matches!(
-        scenario.bridge,
-        crate::scene::Bridge::FeImport(_)
-    ) && run.modes_selection.starts_with("automatic")
+    if matches!(scenario.bridge, crate::scene::Bridge::FeImport(_))
+        && run.modes_selection.starts_with("automatic")
     {
         out.push(
             "the automatic mode choice is not verified against its 0.5 % target on an \

@@ -9,9 +9,9 @@ use serde::Deserialize;
 use super::budget::{Budget, LoadOptions};
 use super::raw::{BridgeRaw, LimitsRaw};
 use super::resolve::Checker;
-use crate::scene::Scenario;
 use super::{LoadError, bridges, content, de, parse_raw};
 use crate::bridge::{ModalBridge, ModeRequest};
+use crate::scene::Scenario;
 
 /// The scene as `vbi modes` sees it.
 #[derive(Debug, Clone)]

@@ -17,8 +17,8 @@ use std::f64::consts::PI;
 
 use nalgebra::DMatrix;
 
-use crate::scene::{Contact, Surface, Vehicle};
 use crate::bridge::ModalBridge;
+use crate::scene::{Contact, Surface, Vehicle};
 use crate::vehicle::{VehicleModel, WheelKind};
 
 /// Cut-off frequency over the highest excitation frequency.

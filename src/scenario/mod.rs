@@ -50,9 +50,9 @@ pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
-use crate::scene::Scenario;
 use self::yaml::Location;
 use crate::bridge::ModalBridge;
+use crate::scene::Scenario;
 
 /// A scenario that passed every check, with the bridge's modal model built
 /// while resolving.

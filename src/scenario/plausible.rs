@@ -34,8 +34,8 @@
 //! | time before a vehicle reaches the bridge | 0 to 86 400 | s |
 
 use super::resolve::Checker;
-use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
 use crate::bridge::ModalBridge;
+use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
 
 /// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).
 pub const MASS: (f64, f64) = (1e-3, 1e10);

@@ -4,8 +4,8 @@
 use super::raw::{self, DeckRaw, HslmModel, km_h_to_m_s};
 use super::records::acceleration_cutoff;
 use super::resolve::{Checker, MAX_SPEED};
-use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 use super::resonance_grid::additional_damping_percent;
+use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 
 /// Most speeds per train (a count from the input, checked before the grid
 /// is built).

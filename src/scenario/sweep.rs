@@ -5,10 +5,10 @@
 use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
+use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
 use crate::scene::{
     Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
-use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
 use crate::surface::synth::default_terms;
 
 /// Most values on the speed grid.

@@ -85,9 +85,9 @@ pub struct TrainCar {
 impl Train {
     /// Distance from the first wheelset back to the last one, m.
     pub fn length(&self) -> f64 {
-        self.cars.last().map_or(0.0, |c| {
-            c.offset + wheelset_span(&c.parameters)
-        })
+        self.cars
+            .last()
+            .map_or(0.0, |c| c.offset + wheelset_span(&c.parameters))
     }
 }
 

@@ -187,10 +187,7 @@ pub const DIVERGENT_EPSILON: f64 = 1.0;
 /// lateral; ux neither), a vehicle DOF by its name (lateral, yaw and roll
 /// DOFs lateral, the rest vertical), a contact quantity by its wheel's
 /// direction. `None` for a quantity of neither.
-pub fn record_direction(
-    model: &Model,
-    record: &crate::scene::Record,
-) -> Option<ContactDirection> {
+pub fn record_direction(model: &Model, record: &crate::scene::Record) -> Option<ContactDirection> {
     use crate::bridge::fe_import::Direction;
     use crate::scene::Quantity;
     match record.quantity {

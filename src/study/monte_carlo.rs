@@ -31,8 +31,8 @@ use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::{Recorder, SharedStatics};
 use crate::run::RunError;
-use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::scenario::sweep;
+use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::solve;
 
 pub use self::report::write;

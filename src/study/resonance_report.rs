@@ -13,8 +13,8 @@ use super::resonance::{ResonancePoint, ResonanceResults};
 use crate::report::plot::{Series, line_chart, line_chart_with_reference};
 use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scene::Scenario;
 use crate::scenario::resonance_grid::km_h;
+use crate::scene::Scenario;
 
 impl ResonanceResults {
     /// resonance.csv: one row per run, with whether it keeps within the

@@ -31,8 +31,8 @@ use super::monte_carlo::{self, MonteCarloPart};
 use super::separation_map::{self, MapPoint};
 use super::speed_sweep::{self, SweepPoint};
 use crate::run::RunError;
-use crate::scene::Study;
 use crate::scenario::{self, LoadOptions, Loaded};
+use crate::scene::Study;
 use crate::study::Results;
 
 /// Version tag of the part format.

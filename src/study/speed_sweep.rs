@@ -24,8 +24,8 @@ use crate::model::Model;
 use crate::record::Recorder;
 use crate::report::summary::Summary;
 use crate::run::RunError;
-use crate::scene::{Bridge, Quantity, Scenario, SpeedSweep, SweepRoughness, Vehicle};
 use crate::scenario::sweep;
+use crate::scene::{Bridge, Quantity, Scenario, SpeedSweep, SweepRoughness, Vehicle};
 use crate::solve;
 
 /// km/h per m/s.
