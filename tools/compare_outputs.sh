@@ -5,7 +5,8 @@
 #   tools/compare_outputs.sh diff A B        compare two such folders; exit 1 on any difference
 #
 # Ignored: only the fields that measure the machine, not the physics: every JSON key named
-# `wall_time`, `*_time` measured in wall seconds (`solve_time`, `coupled_time`, ...), `vbi_version`,
+# `wall_time`, `*_time` measured in wall seconds (`solve_time`, `coupled_time`, ...), EMBS's
+# `speed_up` (a ratio of two wall times), `vbi_version`,
 # and the `.vbi-cache` folders (modes caches are an optimisation, not a result).
 set -u
 cmd=${1:-}; shift || true
@@ -28,7 +29,7 @@ diff)
 import json, re, sys
 def scrub(v):
     if isinstance(v, dict):
-        return {k: ("<wall>" if (k in ("wall_time", "vbi_version") or re.fullmatch(r".*_time(_s)?", k) and k not in ("end_time", "start_time", "arrival_time")) else scrub(x)) for k, x in v.items()}
+        return {k: ("<wall>" if (k in ("wall_time", "vbi_version", "speed_up") or re.fullmatch(r".*_time(_s)?", k) and k not in ("end_time", "start_time", "arrival_time")) else scrub(x)) for k, x in v.items()}
     if isinstance(v, list):
         return [scrub(x) for x in v]
     return v
@@ -46,7 +47,7 @@ PY
     while IFS= read -r rel; do
         if [ ! -e "$b/$rel" ]; then echo "only in $a: $rel"; status=1; continue; fi
         if ! cmp -s "$a/$rel" "$b/$rel"; then
-            if ! cmp -s <(norm "$a/$rel") <(norm "$b/$rel"); then echo "differs: $rel"; status=1; fi
+            if ! cmp -s <(norm "$a/$rel" 2>/dev/null) <(norm "$b/$rel" 2>/dev/null); then echo "differs: $rel"; status=1; fi
         fi
     done < <(cd "$a" && find . -type f -not -path '*/.vbi-cache/*' | sort)
     while IFS= read -r rel; do
