@@ -19,7 +19,8 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use vbi::run::{Outcome, Results};
+use vbi::execute::Results;
+use vbi::run::Outcome;
 use vbi::scenario::Loaded;
 use vbi::study::separation_map::SeparationMap;
 
@@ -143,7 +144,7 @@ fn monte_carlo_of(budget: f64, label: &str, text: &str) {
             .expect("pool");
         let times = sample(budget, || {
             let start = Instant::now();
-            match pool.install(|| vbi::run::execute(loaded.clone(), &|_, _| {})) {
+            match pool.install(|| vbi::execute::execute(loaded.clone(), &|_, _| {})) {
                 Ok(Results::MonteCarlo(_)) => {}
                 _ => panic!("a Monte Carlo study"),
             }
@@ -577,7 +578,7 @@ fn foundation(budget: f64) {
 // c. Separation maps 40 × 40
 
 fn execute_map(loaded: &Loaded) -> SeparationMap {
-    match vbi::run::execute(loaded.clone(), &|_, _| {}).expect("study runs") {
+    match vbi::execute::execute(loaded.clone(), &|_, _| {}).expect("study runs") {
         Results::SeparationMap(map) => map,
         _ => panic!("expected a separation map"),
     }
@@ -603,7 +604,7 @@ fn separation_maps(budget: f64) {
         .build()
         .expect("one-thread pool");
     println!(
-        "`vbi::run::execute` on a pre-loaded scene (both grids `count: 20` → `count: 40`); \
+        "`vbi::execute::execute` on a pre-loaded scene (both grids `count: 20` → `count: 40`); \
          wall time of the whole map (`map.wall_time`).\n"
     );
     println!(

@@ -6,6 +6,10 @@
 //! one DOF of its model that follows it ([`crate::vehicle::WheelKind::Dof`]).
 //! Vertical-only scenes have only vertical contacts and keep their cost.
 
+/// Gap above which a wheel with zero contact force counts as separated, m.
+/// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
+pub const SEPARATION_GAP: f64 = 1e-9;
+
 /// The direction in which a contact point follows the bridge (and the
 /// track irregularity of its rail).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]

@@ -15,7 +15,7 @@ use thiserror::Error;
 use crate::bridge::BridgeError;
 use crate::bridge::beam::BeamModel;
 use crate::bridge::fe_import::matrix_market;
-use crate::scenario::resolved::{Bridge, Damping, Scenario};
+use crate::scene::{Bridge, Damping, Scenario};
 
 /// Why an export failed.
 #[derive(Debug, Error)]

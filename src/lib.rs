@@ -1,15 +1,56 @@
 //! vbi — declarative vehicle–bridge interaction dynamics.
 //!
-//! A scene flows one way through the stages: load ([`scenario`]) → build
-//! ([`model`], [`bridge`], [`vehicle`], [`surface`]) → solve ([`solve`]) →
-//! record ([`record`]) → report ([`report`]). [`run`] strings them together.
-//! Units are SI throughout; vertical quantities are positive upward and
-//! contact forces positive in compression.
+//! A scene flows one way through layers that import only downward
+//! (ARCHITECTURE.md has the map; `src/layers.rs` checks it): [`scene`] (the
+//! resolved scene description, plain data) ← [`scenario`] (the format: YAML →
+//! raw types → scene, every check, the JSON Schema) ← the physics
+//! ([`contact`], [`ground`], [`surface`], [`vehicle`], [`bridge`]) ← [`model`]
+//! (the built system) ← [`solve`] ← [`record`] ← [`report`] (the only code
+//! that writes results) ← [`run`] (one scene) ← [`study`] ← [`execute`]
+//! (scene or study). Units are SI throughout; vertical quantities are
+//! positive upward and contact forces positive in compression.
+//!
+//! # Using vbi as a library
+//!
+//! Load a scene (from a file with [`scenario::load_file`], from text with
+//! [`scenario::load_str`]), run it, and get the results back as data; files
+//! are written only when you hand the results to the report layer. Loading
+//! also makes the automatic choices (modes, time step, budgets): the
+//! planning stage is not yet a step of its own.
+//!
+//! ```
+//! use vbi::execute::{Results, execute};
+//!
+//! let yaml = "
+//! name: api-example
+//! bridge: {type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,
+//!          modes: {count: 4}, damping: {type: modal, ratio: 0.02}}
+//! vehicles: [{type: moving_force, loads: [100.0e3], speed: 25.0}]
+//! solver: {time_step: 1.0e-3}
+//! record: [{name: midspan, quantity: bridge_displacement, x: 12.5}]
+//! ";
+//! let loaded = vbi::scenario::load_str(yaml, "api-example.yaml")?;
+//! let Results::Scene(outcome) = execute(loaded.clone(), &|_done, _total| {})? else {
+//!     unreachable!("a scene without a study")
+//! };
+//! // The results as data: the midspan's largest downward deflection, m.
+//! let midspan = &outcome.summary.quantities[0];
+//! assert_eq!(midspan.name, "midspan");
+//! assert!(midspan.min.value < 0.0);
+//! // Files only through the report layer (summary.json, history.csv, …).
+//! let out = std::env::temp_dir().join(format!("vbi-api-example-{}", std::process::id()));
+//! vbi::run::write_results(&out, &loaded.scenario, &outcome)?;
+//! assert!(out.join("summary.json").exists());
+//! # std::fs::remove_dir_all(&out)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 #![warn(missing_docs)]
 
+pub mod atomic_file;
 pub mod bridge;
 pub mod contact;
+pub mod execute;
 pub mod export;
 pub mod format_reference;
 pub mod generate;
@@ -21,9 +62,15 @@ pub mod regress;
 pub mod report;
 pub mod run;
 pub mod scenario;
-pub mod schema;
+pub mod scene;
 pub mod solve;
 pub mod study;
 pub mod surface;
 pub mod text_table;
 pub mod vehicle;
+
+#[cfg(test)]
+mod layers;
+
+/// The JSON Schema of the format; it lives with the format ([`scenario::schema`]).
+pub use scenario::schema;

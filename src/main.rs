@@ -565,7 +565,7 @@ fn run(
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let results = match vbi::run::execute_into(loaded, &out, &progress) {
+    let results = match vbi::execute::execute_into(loaded, &out, &progress) {
         Ok(r) => r,
         Err(e) => {
             bar.abandon();
@@ -575,7 +575,7 @@ fn run(
     };
     bar.finish_and_clear();
     let outcome = match results {
-        vbi::run::Results::Scene(outcome) => outcome,
+        vbi::execute::Results::Scene(outcome) => outcome,
         study => return write_study(&out, &scenario, &study, quiet),
     };
     if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
@@ -799,7 +799,7 @@ fn vehicle_frequencies_json(
 
 /// Each vehicle's own natural frequencies with its wheels held on rigid
 /// ground (massless DOFs condensed out), to set against the bridge's.
-fn print_vehicle_frequencies(scenario: &vbi::scenario::resolved::Scenario) {
+fn print_vehicle_frequencies(scenario: &vbi::scene::Scenario) {
     use vbi::scenario::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     let hz = |f: &[f64]| {

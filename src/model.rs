@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
 use crate::contact::ContactDirection;
-use crate::scenario::resolved::{Contact, Iteration, Scenario, SolverMethod};
+use crate::scene::{Contact, Iteration, Scenario, SolverMethod};
 use crate::surface::{Profile, Rail};
 use crate::vehicle::{VehicleError, VehicleModel, WheelKind};
 
@@ -111,7 +111,7 @@ pub struct Model {
     /// Convergence settings of the `iterative` method.
     pub iteration: Iteration,
     /// Settings of the `embs` method (`None` for any other).
-    pub embs: Option<crate::scenario::resolved::EmbsOptions>,
+    pub embs: Option<crate::scene::EmbsOptions>,
     /// Transverse positions y of the girder lines, m (a beam: one line): the
     /// recorder tabulates the DAF at every span's middle on each.
     pub girder_lines: Vec<f64>,

@@ -1,4 +1,6 @@
-//! One scene end to end: build → solve → record → report.
+//! One scene end to end: build → solve → record, results returned as data
+//! ([`Outcome`]); [`write_results`] hands them to the report layer. Studies
+//! ([`crate::study`]) compose this; [`crate::execute`] picks scene or study.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -10,11 +12,13 @@ use crate::record::{History, Recorder};
 use crate::report::summary::Summary;
 use crate::report::{self, ReportError};
 use crate::scenario::Loaded;
-use crate::scenario::resolved::{Scenario, Study};
+use crate::scene::Scenario;
 use crate::solve::{self, Progress, SolveError};
-use crate::study::monte_carlo::{self, MonteCarloResults};
-use crate::study::separation_map::{self, SeparationMap};
-use crate::study::speed_sweep::{self, SweepResults};
+
+pub use crate::report::folder::{
+    FROM, OWNER_FILE, claim_folder, create_out, default_out, folder_owner, mark_folder,
+    resolved_yaml, source_name,
+};
 
 /// Errors of a run after loading.
 #[derive(Debug, Error)]
@@ -47,231 +51,6 @@ pub enum RunError {
         /// Why it failed.
         source: Box<RunError>,
     },
-}
-
-/// What a scenario file produces: one scene, or a study.
-#[derive(Debug, Clone)]
-pub enum Results {
-    /// A single scene.
-    Scene(Box<Outcome>),
-    /// A separation map.
-    SeparationMap(SeparationMap),
-    /// A speed sweep.
-    SpeedSweep(SweepResults),
-    /// A Monte Carlo study.
-    MonteCarlo(MonteCarloResults),
-    /// A railway resonance check.
-    ResonanceCheck(crate::study::resonance::ResonanceResults),
-}
-
-/// Runs the scenario's study if it has one, else the scene.
-/// `progress` gets (done, total) in steps (scene) or grid points (study).
-pub fn execute(
-    loaded: Loaded,
-    progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Results, RunError> {
-    match &loaded.scenario.study {
-        Some(Study::SeparationMap {
-            velocity_ratio,
-            mass_ratio,
-        }) => Ok(Results::SeparationMap(separation_map::run(
-            &loaded.scenario,
-            &loaded.bridge,
-            velocity_ratio,
-            mass_ratio,
-            progress,
-        )?)),
-        Some(Study::SpeedSweep(sweep)) => Ok(Results::SpeedSweep(speed_sweep::run(
-            &loaded.scenario,
-            &loaded.bridge,
-            sweep,
-            progress,
-        )?)),
-        Some(Study::ResonanceCheck(check)) => Ok(Results::ResonanceCheck(
-            crate::study::resonance::run(&loaded.scenario, &loaded.bridge, check, progress)?,
-        )),
-        Some(Study::MonteCarlo(mc)) => Ok(Results::MonteCarlo(monte_carlo::run(
-            &loaded.scenario,
-            &loaded.bridge,
-            mc,
-            progress,
-        )?)),
-        None => Ok(Results::Scene(Box::new(simulate(loaded, &mut |d, t| {
-            progress(d, t)
-        })?))),
-    }
-}
-
-/// Summary of a separation-map study.
-#[derive(Debug, Clone, serde::Serialize)]
-pub struct StudySummary {
-    /// Scenario name.
-    pub scenario: String,
-    /// Study type.
-    pub study: &'static str,
-    /// vbi version.
-    pub vbi_version: &'static str,
-    /// Wall time of all points, s.
-    pub wall_time: f64,
-    /// Number of grid points.
-    pub points: usize,
-    /// Points where the wheel lost contact.
-    pub separated: usize,
-    /// Velocity ratios swept.
-    pub velocity_ratios: Vec<f64>,
-    /// Mass ratios swept.
-    pub mass_ratios: Vec<f64>,
-}
-
-/// Writes a study's `summary.json`, `study.csv`, `separation_map.png` and
-/// `resolved.yaml` into `out`.
-pub fn write_study(out: &Path, scenario: &Scenario, map: &SeparationMap) -> Result<(), RunError> {
-    create_out(out)?;
-    let summary = StudySummary {
-        scenario: scenario.name.clone(),
-        study: "separation_map",
-        vbi_version: env!("CARGO_PKG_VERSION"),
-        wall_time: map.wall_time,
-        points: map.points.len(),
-        separated: map.separated_count(),
-        velocity_ratios: map.velocity_ratios.clone(),
-        mass_ratios: map.mass_ratios.clone(),
-    };
-    report::write_atomic(&out.join("study.csv"), &map.to_csv())?;
-    let state: Vec<bool> = map.points.iter().map(|p| p.separated).collect();
-    crate::report::plot::binary_map(
-        &out.join("separation_map.png"),
-        &format!("{}: wheel–bridge separation", scenario.name),
-        "velocity ratio v / (2 f1 L)",
-        "vehicle-to-bridge mass ratio (ms + mu) / (m L)",
-        &map.velocity_ratios,
-        &map.mass_ratios,
-        &state,
-        "separated",
-        "no separation",
-    )?;
-    report::write_atomic(
-        &out.join("resolved.yaml"),
-        resolved_yaml(scenario).as_bytes(),
-    )?;
-    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
-    report::write_atomic(&out.join("summary.json"), text.as_bytes())?;
-    Ok(())
-}
-
-/// Writes a speed sweep's `study.csv`, `daf_speed.png`,
-/// `daf_speed_roughness.png`, `daf_map.png`, `resolved.yaml` and, last,
-/// `summary.json` into `out`.
-pub fn write_speed_sweep(
-    out: &Path,
-    scenario: &Scenario,
-    results: &SweepResults,
-) -> Result<(), RunError> {
-    speed_sweep::write(out, scenario, results)
-}
-
-/// The default output folder of a scene: `results/` and its `name` made
-/// safe as one folder name ([`crate::scenario::names::folder_name`]: no
-/// separators, no `..`, not absolute, no control characters), then
-/// `suffix`. A name from someone else's file therefore cannot put results
-/// anywhere but under `results/`.
-pub fn default_out(name: &str, suffix: &str) -> PathBuf {
-    let folder = crate::scenario::names::folder_name(name);
-    Path::new("results").join(format!("{folder}{suffix}"))
-}
-
-/// Creates the output folder and removes the partial files a run killed
-/// from outside left there ([`report::PARTIAL_MARK`] in the name, written by
-/// another process id that is no longer running here).
-pub(crate) fn create_out(out: &Path) -> Result<(), RunError> {
-    std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
-        path: out.to_path_buf(),
-        source,
-    })?;
-    report::remove_stale_partials(out);
-    Ok(())
-}
-
-/// The resolved scenario as YAML, with a header line (and, when the scene
-/// knows its file, a second one naming it: [`FROM`]).
-pub fn resolved_yaml(scenario: &Scenario) -> String {
-    let resolved = serde_json::to_value(scenario).expect("scenario serialises");
-    let from = scenario.source_file.as_ref().map_or_else(String::new, |f| {
-        // One line whatever the name holds.
-        let f: String = f.chars().filter(|c| !c.is_control()).collect();
-        format!("{FROM}{f}\n")
-    });
-    format!(
-        "# Resolved by vbi {}: the scene as run, every default filled in.\n{from}{}",
-        env!("CARGO_PKG_VERSION"),
-        report::yaml::to_yaml(&resolved)
-    )
-}
-
-/// The start of `resolved.yaml`'s line that names the scene file whose
-/// results the folder holds.
-pub const FROM: &str = "# From: ";
-
-/// The file that names a folder's scene where no `resolved.yaml` does:
-/// `vbi converge`'s folder and the `--shard` parts' folder hold one line,
-/// [`FROM`] and the scene file ([`mark_folder`]).
-pub const OWNER_FILE: &str = ".vbi-owner";
-
-/// The scene file whose results the folder `out` holds, as its
-/// `resolved.yaml` names it, or else its [`OWNER_FILE`]; `None` when there
-/// is none or it names none. Only each file's first 8 kB are read (the
-/// header is its first lines).
-pub fn folder_owner(out: &Path) -> Option<String> {
-    use std::io::Read;
-    let named_in = |name: &str| -> Option<String> {
-        let file = crate::scenario::data_files::open_regular(&out.join(name)).ok()?;
-        let mut head = Vec::new();
-        file.take(8192).read_to_end(&mut head).ok()?;
-        let head = String::from_utf8_lossy(&head);
-        head.lines()
-            .take(3)
-            .find_map(|l| l.strip_prefix(FROM))
-            .map(str::to_string)
-    };
-    named_in("resolved.yaml").or_else(|| named_in(OWNER_FILE))
-}
-
-/// Writes the [`OWNER_FILE`] naming `source` (canonical) into `out` (made
-/// if missing): the folder's results are that scene file's, so another
-/// scene's `vbi run`, `converge` or `--shard` into it is refused
-/// ([`claim_folder`]).
-pub fn mark_folder(out: &Path, source: &str) -> std::io::Result<()> {
-    std::fs::create_dir_all(out)?;
-    let source: String = source.chars().filter(|c| !c.is_control()).collect();
-    crate::report::write_atomic(
-        &out.join(OWNER_FILE),
-        format!("{FROM}{source}\n").as_bytes(),
-    )
-    .map_err(std::io::Error::other)
-}
-
-/// Refuses to write the results of the scene file `source` (canonical) into
-/// `out` when the folder holds another scene file's results (issue 22: two
-/// scenes must not mix their files in one folder); `force` allows it.
-pub fn claim_folder(out: &Path, source: &str, force: bool) -> Result<(), String> {
-    match folder_owner(out) {
-        Some(owner) if owner != source && !force => Err(format!(
-            "{} holds the results of another scene file, {owner}; give this one its own folder \
-             with `--out DIR`, or replace them with `--force`",
-            out.display()
-        )),
-        _ => Ok(()),
-    }
-}
-
-/// The name a scene file is known by in `resolved.yaml`: its canonical
-/// path (symlinks resolved), or its absolute path when that fails.
-pub fn source_name(file: &Path) -> String {
-    std::fs::canonicalize(file)
-        .or_else(|_| std::path::absolute(file))
-        .unwrap_or_else(|_| file.to_path_buf())
-        .display()
-        .to_string()
 }
 
 /// Results of one scene.
@@ -325,15 +104,11 @@ fn run_scene(
     // EMBS with its first order also records the zero order alone, for
     // the a-posteriori check of the expansion (report::embs).
     let mut zero_order = match model.embs {
-        Some(e)
-            if e.first_order && model.method == crate::scenario::resolved::SolverMethod::Embs =>
-        {
-            Some(
-                Recorder::new(&model, &scenario.record)
-                    .map_err(BuildError::from)?
-                    .every(scenario.output.every),
-            )
-        }
+        Some(e) if e.first_order && model.method == crate::scene::SolverMethod::Embs => Some(
+            Recorder::new(&model, &scenario.record)
+                .map_err(BuildError::from)?
+                .every(scenario.output.every),
+        ),
         _ => None,
     };
     let solve_start = Instant::now();
@@ -347,7 +122,7 @@ fn run_scene(
     let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
     let mut summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
-    if model.method == crate::scenario::resolved::SolverMethod::Embs {
+    if model.method == crate::scene::SolverMethod::Embs {
         // The same model and records through `coupled`, as the reference.
         let reference = if compare {
             let mut coupled = Recorder::new(&model, &scenario.record)
@@ -409,23 +184,6 @@ pub fn simulate_streaming_above(
     run_scene(loaded, progress, Some((out, stream_above_bytes)))
 }
 
-/// [`execute`] with a single scene's rows streamed to the output folder
-/// `out` ([`simulate_into`]); studies run as in [`execute`].
-pub fn execute_into(
-    loaded: Loaded,
-    out: &Path,
-    progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Results, RunError> {
-    if loaded.scenario.study.is_some() {
-        return execute(loaded, progress);
-    }
-    Ok(Results::Scene(Box::new(simulate_into(
-        loaded,
-        out,
-        &mut |d, t| progress(d, t),
-    )?)))
-}
-
 /// Writes `summary.json`, the history (`history.csv` and/or `history.npy`
 /// with `history_columns.txt`, as `output.format` asks), `history.png` and
 /// `resolved.yaml` into `out` (created if needed), each atomically.
@@ -454,7 +212,7 @@ pub fn write_results_with(
     if let Some(envelope) = &outcome.history.envelope {
         report::write_atomic(
             &out.join("envelopes.csv"),
-            crate::record::envelope::envelope_csv(envelope).as_bytes(),
+            report::envelopes::envelope_csv(envelope).as_bytes(),
         )?;
     }
     if outcome.model.bridge.width().is_some() {

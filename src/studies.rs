@@ -12,15 +12,15 @@ use vbi::scenario::{self, LoadError};
 /// Writes a study's results into `out` and says what it found.
 pub(super) fn write_study(
     out: &Path,
-    scenario: &vbi::scenario::resolved::Scenario,
-    results: &vbi::run::Results,
+    scenario: &vbi::scene::Scenario,
+    results: &vbi::execute::Results,
     quiet: bool,
 ) -> ExitCode {
-    use vbi::run::Results;
+    use vbi::execute::Results;
     let written = match results {
         Results::Scene(_) => unreachable!("a study's results"),
-        Results::SeparationMap(map) => vbi::run::write_study(out, scenario, map),
-        Results::SpeedSweep(sweep) => vbi::run::write_speed_sweep(out, scenario, sweep),
+        Results::SeparationMap(map) => vbi::study::separation_map::write(out, scenario, map),
+        Results::SpeedSweep(sweep) => vbi::study::speed_sweep::write(out, scenario, sweep),
         Results::MonteCarlo(mc) => vbi::study::monte_carlo::write(out, scenario, mc),
         Results::ResonanceCheck(check) => vbi::study::resonance::write(out, scenario, check),
     };
@@ -213,7 +213,7 @@ pub(super) fn run_sample(
     force: bool,
     k: u64,
 ) -> ExitCode {
-    use vbi::scenario::resolved::Study;
+    use vbi::scene::Study;
     let loaded = match loaded {
         Ok(l) => l,
         Err(e) => return load_error(&e),

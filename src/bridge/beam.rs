@@ -12,7 +12,7 @@ use super::BridgeError;
 use super::eigen::sparse::symmetric_from_entries;
 use super::eigen::{Eigenpairs, Pencil};
 use super::hermite::HermiteField;
-use crate::scenario::resolved::Beam;
+use crate::scene::Beam;
 
 /// Assembled beam finite-element model with the support conditions applied.
 #[derive(Debug, Clone)]

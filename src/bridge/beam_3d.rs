@@ -26,7 +26,7 @@
 use std::f64::consts::PI;
 
 use super::hermite::HermiteField;
-use crate::scenario::resolved::{Beam, BeamSway};
+use crate::scene::{Beam, BeamSway};
 
 /// Which motion a kept mode of a 3D beam is.
 #[derive(Debug, Clone, Copy, PartialEq)]

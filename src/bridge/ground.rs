@@ -12,7 +12,7 @@
 
 use super::section::{SectionForces, SectionProbe};
 use super::{BridgeError, ModalBridge, Shapes};
-use crate::scenario::resolved::Bridge;
+use crate::scene::Bridge;
 
 /// Gauss–Legendre nodes and weights on [−1, 1], 2 points (exact for the
 /// cubic Hermite shapes along x).

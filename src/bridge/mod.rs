@@ -25,7 +25,7 @@ use self::fe_import::modal::{ImportedFlexibility, ImportedShapes};
 use self::fe_import::track::TrackField;
 use self::hermite::HermiteField;
 use self::plate::PlateModes;
-use crate::scenario::resolved::{Bridge, Modes};
+use crate::scene::{Bridge, Modes};
 
 /// Errors while building a bridge model.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -985,7 +985,7 @@ impl ModalBridge {
 /// pencil at eigenvalue·EI/EI_z) and the twist ones (closed form). Cost
 /// one or two sparse factorisations.
 fn beam_count_below(
-    beam: &crate::scenario::resolved::Beam,
+    beam: &crate::scene::Beam,
     model: &BeamModel,
     eigenvalue: f64,
 ) -> Result<usize, BridgeError> {

@@ -50,7 +50,7 @@ use faer::{Mat, Side};
 use super::beam::BeamModel;
 use super::hermite::{HermiteField, shape_curvatures, shape_functions};
 use super::{BridgeError, eigen};
-use crate::scenario::resolved::{Beam, Damping, Modes, Plate, PlateEdges};
+use crate::scene::{Beam, Damping, Modes, Plate, PlateEdges};
 
 pub mod moments;
 mod transverse;

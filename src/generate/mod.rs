@@ -159,7 +159,7 @@ pub fn write_viaduct(params: &ViaductParams, out: &Path) -> Result<Reduced, Writ
     files.push(("README.txt", info(params, &model, &reduced)));
     for (name, text) in files {
         let path = out.join(name);
-        crate::report::atomic::write_atomic(&path, text.as_bytes()).map_err(io(&path))?;
+        crate::atomic_file::write_atomic(&path, text.as_bytes()).map_err(io(&path))?;
     }
     Ok(reduced)
 }

@@ -17,7 +17,7 @@ use super::{StaticProbe, corrected_displacement, dot, filtered_shape, static_sha
 use crate::bridge::BridgeError;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
-use crate::scenario::resolved::{Envelopes, Quantity};
+use crate::scene::{Envelopes, Quantity};
 use crate::solve::StepView;
 
 /// The extremes of one quantity at one point.
@@ -38,7 +38,8 @@ pub struct Extremes {
 }
 
 impl Extremes {
-    fn new(value: f64, time: f64, position: f64) -> Self {
+    /// Both extremes at `value`, reached at `time` s with the lead vehicle at `position` m.
+    pub fn new(value: f64, time: f64, position: f64) -> Self {
         Self {
             max: value,
             max_time: time,
@@ -203,45 +204,4 @@ impl EnvelopeTracker {
     pub(super) fn finish(self) -> Envelope {
         self.envelope
     }
-}
-
-/// `envelopes.csv`: one row per point, for each quantity its max and min
-/// with time and lead-vehicle position, units in the header.
-pub fn envelope_csv(envelope: &Envelope) -> String {
-    use crate::report::number;
-    use crate::scenario::quantity_name_of;
-    let mut out = String::from("x_m");
-    for column in &envelope.columns {
-        let name = quantity_name_of(column.quantity);
-        let unit = column.unit;
-        for side in ["max", "min"] {
-            out.push_str(&format!(
-                ",{name}_{side}_{unit},{name}_{side}_time_s,{name}_{side}_position_m"
-            ));
-        }
-    }
-    out.push('\n');
-    for (p, x) in envelope.x.iter().enumerate() {
-        out.push_str(&number(*x));
-        for column in &envelope.columns {
-            let e = column
-                .extremes
-                .get(p)
-                .copied()
-                .unwrap_or(Extremes::new(0.0, 0.0, 0.0));
-            for value in [
-                e.max,
-                e.max_time,
-                e.max_position,
-                e.min,
-                e.min_time,
-                e.min_position,
-            ] {
-                out.push(',');
-                out.push_str(&number(value));
-            }
-        }
-        out.push('\n');
-    }
-    out
 }

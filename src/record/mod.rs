@@ -21,7 +21,7 @@ use crate::bridge::BridgeError;
 use crate::bridge::InfluenceLine;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;
-use crate::scenario::resolved::{Envelopes, Quantity, Record};
+use crate::scene::{Envelopes, Quantity, Record};
 use crate::solve::{Observer, StepView};
 
 /// What the summary reports as "position" of an extreme value: the position
@@ -396,9 +396,7 @@ impl History {
     }
 }
 
-/// Gap above which a wheel with zero contact force counts as separated, m.
-/// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
-pub const SEPARATION_GAP: f64 = 1e-9;
+pub use crate::contact::SEPARATION_GAP;
 
 /// Loss of contact of one wheel over a run.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -915,7 +913,7 @@ fn vertical_ground_terms(
     record: &Record,
     probe: &Probe,
 ) -> Result<(f64, Option<GroundTerm>), BridgeError> {
-    let absolute = record.frame == crate::scenario::resolved::Frame::Absolute;
+    let absolute = record.frame == crate::scene::Frame::Absolute;
     let lateral_node =
         record.node.is_some() && record.direction == Some(crate::bridge::fe_import::Direction::Uy);
     Ok(match *probe {

@@ -3,7 +3,7 @@
 //! table) is appended to a file of little-endian f64 in the output folder
 //! instead of growing vectors, so a run's memory does not grow with its
 //! step count. The file carries the partial-file mark
-//! ([`crate::report::PARTIAL_MARK`]): it is removed when the last
+//! ([`crate::atomic_file::PARTIAL_MARK`]): it is removed when the last
 //! [`SpilledRows`] handle goes (after the history files are written from
 //! it), and a run killed from outside leaves it visible for the next run
 //! into the folder to remove. Cost per row: one buffered write of
@@ -30,7 +30,7 @@ pub struct SpillWriter {
 impl SpillWriter {
     /// A new spill file in `folder` for rows of `width` values.
     pub fn create(folder: &Path, width: usize) -> io::Result<Self> {
-        let path = folder.join(crate::report::partial_name("history.rows", "-spill"));
+        let path = folder.join(crate::atomic_file::partial_name("history.rows", "-spill"));
         let file = File::create_new(&path)?;
         Ok(Self {
             rows_handle: Some(SpilledRows {

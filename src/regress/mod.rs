@@ -73,8 +73,8 @@ pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran,
     let loaded =
         crate::scenario::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
     let resolved = canonical_scene(&loaded.scenario);
-    let results =
-        crate::run::execute(loaded, &|_, _| {}).map_err(|e| format!("{}: {e}", file.display()))?;
+    let results = crate::execute::execute(loaded, &|_, _| {})
+        .map_err(|e| format!("{}: {e}", file.display()))?;
     let record = Record::new(&scene_key(file), &resolved, &results, bins);
     Ok(Ran {
         resolved,

@@ -40,8 +40,8 @@
 
 use serde_json::Value;
 
+use crate::execute::Results;
 use crate::record::History;
-use crate::run::Results;
 
 /// Significant digits of a float in the record.
 const DIGITS: usize = 10;
@@ -163,7 +163,7 @@ impl Record {
             Results::Scene(outcome) => {
                 let mut tables = vec![history_table(&outcome.history, history_bins)];
                 if let Some(envelope) = &outcome.history.envelope {
-                    let csv = crate::record::envelope::envelope_csv(envelope);
+                    let csv = crate::report::envelopes::envelope_csv(envelope);
                     tables.push(csv_table("envelopes", csv.as_bytes()));
                 }
                 (serde_json::to_value(&outcome.summary), tables)

@@ -4,7 +4,7 @@
 
 use crate::report::summary::Summary;
 use crate::scenario::raw::{KM_H, km_h_to_m_s};
-use crate::scenario::resolved::{Quantity, Scenario, Study, Surface};
+use crate::scene::{Quantity, Scenario, Study, Surface};
 use crate::surface::fade_start;
 use crate::surface::spectrum::{FRA_MAX_SPEED_MPH, fra_max_speed};
 
@@ -188,7 +188,7 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
     // (`entry_length: 0`): the step rings track modes above the automatic
     // cut (measured on scenarios/viaduct-2span-axle-loads.yaml with the
     // entry removed; README, "Imported FE models").
-    if let crate::scenario::resolved::Bridge::FeImport(fe) = &scenario.bridge {
+    if let crate::scene::Bridge::FeImport(fe) = &scenario.bridge {
         let (start, end) = fe.model.free_rail_ends();
         if (start || end) && fe.entry_length == 0.0 && run.modes_selection.starts_with("automatic")
         {

@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::record::History;
-use crate::scenario::resolved::Record;
+use crate::scene::Record;
 use crate::solve::embs::SMALL_EPSILON;
 use crate::solve::embs_scale::{
     DirectionalScale, FLEXIBILITY_SHARE, directional_scale, record_direction,

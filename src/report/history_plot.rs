@@ -7,7 +7,7 @@ use std::path::Path;
 
 use super::plot::{self, Marker, Panel, PlotError, Series};
 use crate::record::History;
-use crate::scenario::resolved::{Quantity, Scenario};
+use crate::scene::{Quantity, Scenario};
 
 /// The words for a quantity on an axis.
 fn axis_name(quantity: Quantity) -> &'static str {

@@ -2,15 +2,16 @@
 //! scenario, each written whole or not at all.
 
 pub mod advice;
-pub mod atomic;
+pub use crate::atomic_file as atomic;
 pub mod embs;
+pub mod envelopes;
+pub mod folder;
 pub mod history_files;
 pub mod history_plot;
 pub mod plot;
 pub mod summary;
 pub mod yaml;
 
-use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
@@ -31,52 +32,7 @@ pub enum ReportError {
     },
 }
 
-/// What marks a file being written: `summary.json.vbi-partial-1234` until
-/// it is complete and renamed. Visible (no leading dot) and recognisable,
-/// so a run killed from outside leaves nothing hidden, and the next run into
-/// the same folder removes it ([`remove_stale_partials`]).
-pub const PARTIAL_MARK: &str = ".vbi-partial-";
-
-/// The temporary name of `file_name` while this process writes it; `tag`
-/// tells apart several temporaries of one process.
-pub fn partial_name(file_name: &str, tag: &str) -> String {
-    format!("{file_name}{PARTIAL_MARK}{}{tag}", std::process::id())
-}
-
-/// Removes the partial files in `folder` that a process no longer running
-/// left behind (killed mid-write). A process that is still running (its
-/// `/proc` entry exists) keeps its files; where there is no `/proc`, only
-/// files older than an hour are removed. Best effort: errors are ignored.
-pub fn remove_stale_partials(folder: &Path) {
-    let Ok(entries) = fs::read_dir(folder) else {
-        return;
-    };
-    let me = std::process::id();
-    let proc_fs = Path::new("/proc/self").exists();
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let Some((_, after)) = name.rsplit_once(PARTIAL_MARK) else {
-            continue;
-        };
-        let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
-        let Ok(pid) = digits.parse::<u32>() else {
-            continue;
-        };
-        let stale = if proc_fs {
-            pid != me && !Path::new("/proc").join(pid.to_string()).exists()
-        } else {
-            entry
-                .metadata()
-                .and_then(|m| m.modified())
-                .ok()
-                .and_then(|t| t.elapsed().ok())
-                .is_some_and(|age| age.as_secs() > 3600)
-        };
-        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
-            let _ = fs::remove_file(entry.path());
-        }
-    }
-}
+pub use crate::atomic_file::{PARTIAL_MARK, partial_name, remove_stale_partials};
 
 /// Writes `contents` to `path` whole or not at all ([`atomic::write_atomic`]).
 pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ReportError> {

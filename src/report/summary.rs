@@ -5,7 +5,7 @@ use serde::Serialize;
 use crate::model::Model;
 use crate::record::extremes::{Running, Sample};
 use crate::record::{Column, GirderDaf, History, WheelSeparation};
-use crate::scenario::resolved::{Quantity, SolverMethod};
+use crate::scene::{Quantity, SolverMethod};
 use crate::solve::SolveStats;
 use crate::solve::iterative::IterationStats;
 

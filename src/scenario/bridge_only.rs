@@ -9,9 +9,9 @@ use serde::Deserialize;
 use super::budget::{Budget, LoadOptions};
 use super::raw::{BridgeRaw, LimitsRaw};
 use super::resolve::Checker;
-use super::resolved::Scenario;
 use super::{LoadError, bridges, content, de, parse_raw};
 use crate::bridge::{ModalBridge, ModeRequest};
+use crate::scene::Scenario;
 
 /// The scene as `vbi modes` sees it.
 #[derive(Debug, Clone)]
@@ -79,7 +79,7 @@ pub fn load_for_modes(
     })?;
     let mut ck = Checker::new(file, source, &node);
     ck.set_data_access(options.data.clone());
-    let limits = super::resolved::Limits::resolve(raw.limits.as_ref(), &mut ck);
+    let limits = crate::scene::Limits::resolve(raw.limits.as_ref(), &mut ck);
     let budget = Budget::new(limits, &options);
     let Some(mut bridge) = bridges::resolve_bridge(&raw.bridge, &budget, &mut ck) else {
         return Err(LoadError::Invalid(ck.diagnostics));
@@ -95,7 +95,7 @@ pub fn load_for_modes(
         Some(count) => (count, "bridge.modes.count"),
         None => (minimum, "bridge.spans"),
     };
-    let fits = budget.model(&bridge, &super::resolved::Surface::Smooth, &mut ck)
+    let fits = budget.model(&bridge, &crate::scene::Surface::Smooth, &mut ck)
         && budget.check(
             &mut ck,
             asked_path,

@@ -3,7 +3,7 @@
 
 use super::raw;
 use super::resolve::{Checker, DEFAULT_ELEMENTS_PER_SPAN, check_ratio};
-use super::resolved::*;
+use crate::scene::*;
 
 /// Default Ritz transverse functions.
 pub const DEFAULT_TRANSVERSE_TERMS: usize = 8;

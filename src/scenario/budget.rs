@@ -15,7 +15,7 @@ use serde::Serialize;
 
 use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
-use super::resolved::{Bridge, Surface};
+use crate::scene::{Bridge, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where
 /// solved modes are cached.

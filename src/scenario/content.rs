@@ -17,8 +17,8 @@ use std::f64::consts::PI;
 
 use nalgebra::DMatrix;
 
-use super::resolved::{Contact, Surface, Vehicle};
 use crate::bridge::ModalBridge;
+use crate::scene::{Contact, Surface, Vehicle};
 use crate::vehicle::{VehicleModel, WheelKind};
 
 /// Cut-off frequency over the highest excitation frequency.
@@ -39,7 +39,7 @@ pub const HEAVY_WHEEL_RATIO: f64 = 0.1;
 /// unsprung mass, a rail car's wheelset; 0 for the truck's massless tyre
 /// contact points and for moving forces) exceeds [`HEAVY_WHEEL_RATIO`] of
 /// the lightest span's mass.
-pub fn heavy_wheels(vehicles: &[Vehicle], bridge: &super::resolved::Bridge, gravity: f64) -> bool {
+pub fn heavy_wheels(vehicles: &[Vehicle], bridge: &crate::scene::Bridge, gravity: f64) -> bool {
     let shortest = bridge.spans().iter().copied().fold(f64::INFINITY, f64::min);
     let limit = HEAVY_WHEEL_RATIO * bridge.mass_per_length() * shortest;
     vehicles.iter().any(|vehicle| {
@@ -207,17 +207,17 @@ pub fn excitations(
 /// shape under an eccentric wheel needs the torsional and first
 /// transverse-bending families as well as bending: 45 on a three-span deck,
 /// the count the plate paper uses); at most what the model offers.
-pub fn minimum_modes(bridge: &super::resolved::Bridge) -> usize {
+pub fn minimum_modes(bridge: &crate::scene::Bridge) -> usize {
     (modes_per_span(bridge) * bridge.spans().len())
         .min(ModalBridge::available_of(bridge))
         .max(1)
 }
 
 /// Fewest modes per span the automatic choice keeps ([`minimum_modes`]).
-pub fn modes_per_span(bridge: &super::resolved::Bridge) -> usize {
+pub fn modes_per_span(bridge: &crate::scene::Bridge) -> usize {
     match bridge {
-        super::resolved::Bridge::Plate(_) => MODES_PER_SPAN * PLATE_FAMILIES,
-        super::resolved::Bridge::Beam(_) | super::resolved::Bridge::FeImport(_) => MODES_PER_SPAN,
+        crate::scene::Bridge::Plate(_) => MODES_PER_SPAN * PLATE_FAMILIES,
+        crate::scene::Bridge::Beam(_) | crate::scene::Bridge::FeImport(_) => MODES_PER_SPAN,
     }
 }
 

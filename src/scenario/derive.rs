@@ -5,8 +5,8 @@
 
 use super::raw;
 use super::resolve::Checker;
-use super::resolved::*;
 use crate::bridge::ModalBridge;
+use crate::scene::*;
 
 /// Relative difference below which a given value agrees with a derived one.
 const AGREEMENT: f64 = 1e-9;

@@ -4,7 +4,7 @@
 use super::raw::{self, Quantity};
 use super::records::{acceleration_cutoff, quantity_name_of};
 use super::resolve::Checker;
-use super::resolved::{Bridge, Envelopes};
+use crate::scene::{Bridge, Envelopes};
 
 /// Most envelope points: each keeps two influence lines over the mesh and
 /// a few mode vectors, so their memory grows as points × (nodes + modes).

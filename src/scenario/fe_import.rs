@@ -9,11 +9,11 @@ use super::budget::Budget;
 use super::data_files::{self, DataFile};
 use super::raw;
 use super::resolve::Checker;
-use super::resolved::*;
 use crate::bridge::fe_import::{
     Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market,
     tables,
 };
+use crate::scene::*;
 
 /// Fewest bytes a matrix entry line takes (`1 1 1` and a line break is 6;
 /// Abaqus's `1,1,1,1,1` 10): the size check before reading counts 10.

@@ -11,8 +11,8 @@ use super::budget::Budget;
 use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
 use super::resolve::Checker;
-use super::resolved::{Bridge, GroundMotion};
 use crate::ground::{AccelerationUnit, Direction, GroundRecord, at2, table};
+use crate::scene::{Bridge, GroundMotion};
 
 /// A record's samples as read: times (s), accelerations (in the units),
 /// the units.

@@ -8,7 +8,7 @@
 //! crossing, the file's own time step, else the slowest vehicle's speed.
 
 use super::raw;
-use super::resolved::{GroundMotion, Vehicle};
+use crate::scene::{GroundMotion, Vehicle};
 
 /// The run whose steps are budgeted.
 pub(super) struct LongRun<'a> {

@@ -29,9 +29,11 @@ pub mod rail_3d;
 pub mod raw;
 mod records;
 pub mod resolve;
-pub mod resolved;
+/// The resolved scene, which the format produces: [`crate::scene`].
+pub use crate::scene as resolved;
 pub mod resonance;
 pub mod resonance_grid;
+pub mod schema;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;
@@ -48,9 +50,9 @@ pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
-use self::resolved::Scenario;
 use self::yaml::Location;
 use crate::bridge::ModalBridge;
+use crate::scene::Scenario;
 
 /// A scenario that passed every check, with the bridge's modal model built
 /// while resolving.

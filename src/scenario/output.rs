@@ -3,7 +3,7 @@
 
 use super::raw::{HistoryFormat, OutputRaw};
 use super::resolve::Checker;
-use super::resolved::Output;
+use crate::scene::Output;
 
 /// Most steps between written samples (beyond it a history of a run within
 /// the step budget would hold a handful of rows at most).

@@ -39,8 +39,8 @@
 //! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
 
 use super::resolve::Checker;
-use super::resolved::{Bridge, Contact, Rigidity, Study, Vehicle};
 use crate::bridge::ModalBridge;
+use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
 
 /// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).
 pub const MASS: (f64, f64) = (1e-3, 1e10);

@@ -5,7 +5,7 @@ use super::cars::{CarRules, resolve_cars};
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
 use super::raw::{Train3dParametersRaw, Train3dRaw};
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
-use super::resolved::{Train3d, Train3dCar, Train3dParameters, Vehicle};
+use crate::scene::{Train3d, Train3dCar, Train3dParameters, Vehicle};
 
 /// The 3D car preset: the Siemens Velaro AVE-S103 of the EMBS paper's
 /// Table 2 (Section 3.2), legible in our copy, per axle box (primary) and

@@ -2,7 +2,7 @@
 //!
 //! These are the "low" arguments (ripgrep's `lowargs`): optional fields stay
 //! `Option`, nothing is checked beyond syntax and types. [`super::resolve`]
-//! turns them into the validated [`super::resolved::Scenario`]. Every field's
+//! turns them into the validated [`crate::scene::Scenario`]. Every field's
 //! doc comment becomes its description in the JSON Schema, so each states its
 //! unit. Tagged unions are dispatched on a `type` key by our own deserializer
 //! ([`super::de`]), which keeps source locations; `#[schemars(tag = "type")]`
@@ -48,20 +48,20 @@ pub use self::truck::*;
 #[serde(deny_unknown_fields)]
 pub struct ScenarioRaw {
     /// Short name of the scene, used in reports.
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub name: String,
     /// Free text describing the scene and its source.
     #[serde(default)]
     pub description: Option<String>,
     /// Gravitational acceleration, m/s². Default 9.81.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     #[schemars(extend("default" = super::resolve::DEFAULT_GRAVITY))]
     pub gravity: Option<f64>,
     /// The bridge.
     pub bridge: BridgeRaw,
     /// The vehicles crossing the bridge (at least one).
-    #[schemars(transform = crate::schema::non_empty)]
+    #[schemars(transform = crate::scenario::schema::non_empty)]
     pub vehicles: Vec<VehicleRaw>,
     /// The road or rail surface profile. Default: smooth.
     #[serde(default)]
@@ -123,22 +123,22 @@ pub enum BridgeRaw {
 #[serde(deny_unknown_fields)]
 pub struct PlateRaw {
     /// Span lengths, m, from the entrance; rigid line supports between spans.
-    #[schemars(transform = crate::schema::positive_list)]
+    #[schemars(transform = crate::scenario::schema::positive_list)]
     pub spans: Vec<f64>,
     /// Deck width b, m.
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub width: f64,
     /// Plate thickness h, m. Needed by an isotropic `rigidity` and by `density`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub thickness: Option<f64>,
     /// Mass per unit area ρh, kg/m². Give this or `density`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub mass_per_area: Option<f64>,
     /// Density ρ, kg/m³ (with `thickness`). Give this or `mass_per_area`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub density: Option<f64>,
     /// Flexural and torsional rigidities.
     pub rigidity: RigidityRaw,
@@ -154,7 +154,7 @@ pub struct PlateRaw {
     /// Finite elements per span of the continuous beam whose modes are the
     /// longitudinal beam functions. Default 20.
     #[serde(default)]
-    #[schemars(transform = crate::schema::elements_per_span)]
+    #[schemars(transform = crate::scenario::schema::elements_per_span)]
     #[schemars(extend("default" = super::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic, as for
@@ -170,7 +170,7 @@ pub struct PlateRaw {
     /// the DAF at the middle of every span on each line. Default: the deck's
     /// centre line.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative_list)]
+    #[schemars(transform = crate::scenario::schema::non_negative_list)]
     pub girder_lines: Option<Vec<f64>>,
 }
 
@@ -183,11 +183,11 @@ pub enum RigidityRaw {
     /// Dx = Dy = H = D.
     Isotropic {
         /// Young's modulus E, Pa.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         youngs_modulus: f64,
         /// Poisson's ratio ν (dimensionless). Default 0.2 (concrete).
         #[serde(default)]
-        #[schemars(transform = crate::schema::isotropic_poisson)]
+        #[schemars(transform = crate::scenario::schema::isotropic_poisson)]
         #[schemars(extend("default" = super::bridges::DEFAULT_ISOTROPIC_POISSON))]
         poisson_ratio: Option<f64>,
     },
@@ -195,14 +195,14 @@ pub enum RigidityRaw {
     /// rigidity Dxy = G h³/12 or the equivalent rigidity H = ν_xy Dy + 2 Dxy.
     Orthotropic {
         /// Flexural rigidity along the bridge Dx, N·m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         flexural_rigidity_x: f64,
         /// Flexural rigidity across the bridge Dy, N·m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         flexural_rigidity_y: f64,
         /// Torsional rigidity Dxy = G h³ / 12, N·m. Give this or `equivalent_rigidity`.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         torsional_rigidity: Option<f64>,
         /// Equivalent rigidity H = ν_xy Dy + 2 Dxy, N·m. Give this or `torsional_rigidity`.
         #[serde(default)]
@@ -210,7 +210,7 @@ pub enum RigidityRaw {
         /// Poisson's ratio ν_xy (dimensionless); the coupling rigidity is
         /// D1 = ν_xy Dy. Default 0.3.
         #[serde(default)]
-        #[schemars(transform = crate::schema::ratio)]
+        #[schemars(transform = crate::scenario::schema::ratio)]
         #[schemars(extend("default" = super::bridges::DEFAULT_ORTHOTROPIC_POISSON))]
         poisson_ratio: Option<f64>,
     },
@@ -231,11 +231,11 @@ pub enum PlateEdgesRaw {
 #[serde(deny_unknown_fields)]
 pub struct TermsRaw {
     /// Longitudinal beam functions (modes of the continuous beam over the same spans).
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub longitudinal: usize,
     /// Transverse functions (Legendre polynomials for free edges, sines for
     /// simply supported edges).
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub transverse: usize,
 }
 
@@ -245,17 +245,17 @@ pub struct TermsRaw {
 pub struct BeamRaw {
     /// Span lengths, m, from the entrance. One span = simply supported; several
     /// = continuous over pinned intermediate supports.
-    #[schemars(transform = crate::schema::positive_list)]
+    #[schemars(transform = crate::scenario::schema::positive_list)]
     pub spans: Vec<f64>,
     /// Bending stiffness EI, N·m².
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub bending_stiffness: f64,
     /// Mass per unit length m, kg/m.
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub mass_per_length: f64,
     /// Hermite-cubic finite elements per span. Default 20.
     #[serde(default)]
-    #[schemars(transform = crate::schema::elements_per_span)]
+    #[schemars(transform = crate::scenario::schema::elements_per_span)]
     #[schemars(extend("default" = super::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic — every
@@ -276,15 +276,15 @@ pub struct BeamRaw {
     /// so a `train_3d` follows the rails laterally and a lateral ground
     /// motion shakes the deck.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub lateral_bending_stiffness: Option<f64>,
     /// Torsional stiffness GJ, N·m²/rad (3D beam).
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub torsional_stiffness: Option<f64>,
     /// Polar mass moment of inertia per length I_p, kg·m²/m (3D beam).
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub polar_mass: Option<f64>,
     /// Height of the rail heads above the section's shear centre, m (3D
     /// beam): a twist θ moves the rails sideways by −h θ and a rail at y
@@ -300,13 +300,13 @@ pub struct BeamRaw {
 pub struct ModesRaw {
     /// Keep the lowest `count` modes.
     #[serde(default)]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub count: Option<usize>,
     /// Keep every mode whose natural frequency is at most this, Hz (within
     /// a relative 1e-8: a frequency copied as printed keeps its mode). With
     /// `count`: the lowest `count`, none of them above this.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub max_frequency: Option<f64>,
     /// Add the quasi-static share of the modes left out to every recorded
     /// bridge displacement (the mode-acceleration method: the exact static
@@ -324,17 +324,17 @@ pub enum DampingRaw {
     /// The same modal damping ratio ζ for every mode.
     Modal {
         /// Damping ratio ζ (fraction of critical, dimensionless), e.g. 0.02.
-        #[schemars(transform = crate::schema::ratio)]
+        #[schemars(transform = crate::scenario::schema::ratio)]
         ratio: f64,
     },
     /// Rayleigh damping C = a₀M + a₁K with the given ratio at two frequencies;
     /// mode i then has ζᵢ = a₀/(2ωᵢ) + a₁ωᵢ/2.
     Rayleigh {
         /// The two frequencies where the damping ratio is matched, Hz.
-        #[schemars(transform = crate::schema::positive_items)]
+        #[schemars(transform = crate::scenario::schema::positive_items)]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both frequencies (dimensionless).
-        #[schemars(transform = crate::schema::ratio)]
+        #[schemars(transform = crate::scenario::schema::ratio)]
         ratio: f64,
     },
 }
@@ -404,18 +404,18 @@ impl VehicleRaw {
 #[serde(deny_unknown_fields)]
 pub struct MovingForceRaw {
     /// Axle loads, N (downward, positive), front axle first.
-    #[schemars(transform = crate::schema::positive_list)]
+    #[schemars(transform = crate::scenario::schema::positive_list)]
     pub loads: Vec<f64>,
     /// Distances between consecutive axles, m; one fewer than `loads`.
     /// Give this or `axle_positions`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive_items)]
+    #[schemars(transform = crate::scenario::schema::positive_items)]
     pub axle_spacings: Option<Vec<f64>>,
     /// Distance of each axle behind the front axle, m: 0 first, then
     /// increasing; one per load (an axle-load train such as an HSLM train).
     /// Give this or `axle_spacings`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative_list)]
+    #[schemars(transform = crate::scenario::schema::non_negative_list)]
     pub axle_positions: Option<Vec<f64>>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
@@ -428,12 +428,12 @@ pub struct MovingForceRaw {
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_positive)]
+    #[schemars(transform = crate::scenario::schema::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the loads on a plate deck, m. Default: the
     /// deck's centre line.
@@ -448,20 +448,20 @@ pub struct MovingForceRaw {
 pub struct OscillatorRaw {
     /// Sprung (body) mass, kg. Required unless `dimensionless` is given.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub sprung_mass: Option<f64>,
     /// Unsprung (wheel) mass, kg. Default 0: a massless wheel.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub unsprung_mass: Option<f64>,
     /// Suspension stiffness, N/m. Required unless `dimensionless` is given.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub stiffness: Option<f64>,
     /// Suspension damping, N·s/m. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub damping: Option<f64>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`). Required unless
@@ -477,12 +477,12 @@ pub struct OscillatorRaw {
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the wheel at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_positive)]
+    #[schemars(transform = crate::scenario::schema::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the wheel on a plate deck, m. Default: the
     /// deck's centre line.
@@ -503,23 +503,23 @@ pub struct OscillatorRaw {
 pub struct DimensionlessRaw {
     /// Velocity ratio α = v / (2 f₁ L) (dimensionless; 1 = the critical speed
     /// of the moving-force resonance).
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub velocity_ratio: f64,
     /// Vehicle-to-bridge mass ratio (m_s + m_u) / (m L) (dimensionless).
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub mass_ratio: f64,
     /// Unsprung-to-sprung mass ratio m_u / m_s (dimensionless). Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub unsprung_ratio: Option<f64>,
     /// Bridge-to-vehicle frequency ratio f₁ / f_v with f_v = √(k/m_s) / 2π
     /// (dimensionless).
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub frequency_ratio: f64,
     /// Vehicle damping ratio ζ_v = c / (2√(k m_s)) (dimensionless). Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::schema::ratio)]
+    #[schemars(transform = crate::scenario::schema::ratio)]
     #[schemars(extend("default" = 0.0))]
     pub damping_ratio: Option<f64>,
 }
@@ -546,13 +546,13 @@ pub enum ContactRaw {
     Elastic {
         /// Contact spring stiffness per wheel, N/m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         stiffness: Option<f64>,
         /// Contact-to-suspension stiffness ratio k_c / k_v (dimensionless); the
         /// stiffness is this times the suspension stiffness of the oscillator(s),
         /// which must then all have the same suspension stiffness.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         stiffness_ratio: Option<f64>,
     },
     /// Hertzian wheel–rail contact: force = C · compression^1.5 when compressed,
@@ -561,14 +561,14 @@ pub enum ContactRaw {
     Hertz {
         /// Hertz coefficient C, N/m^1.5.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         coefficient: Option<f64>,
         /// Wheel rolling radius, m; C = G^-1.5 with the contact constant
         /// G = 4.57e-8 R^-0.149 m/N^(2/3) for a worn (LM) tread or
         /// G = 3.86e-8 R^-0.115 for a conical tread (Zhai, Vehicle–Track Coupled
         /// Dynamics, 2020, §2.4.1).
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         wheel_radius: Option<f64>,
         /// Tread profile for `wheel_radius`: `worn` (default) or `conical`.
         #[serde(default)]
@@ -599,7 +599,7 @@ pub struct SolverRaw {
     /// or frequency excited (see `bridge.modes`), and at most 1/200 of the
     /// shortest crossing.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
     /// acceleration: unconditionally stable, second order, no numerical
@@ -608,19 +608,19 @@ pub struct SolverRaw {
     pub newmark: Option<NewmarkRaw>,
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_negative)]
+    #[schemars(transform = crate::scenario::schema::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub free_vibration: Option<f64>,
     /// `method: iterative` only: relative tolerance ε on the contact
     /// displacements between iterations, max|Δw| ≤ ε·max|w| (the plate paper's
     /// Eq. 32; dimensionless). Default 1e-8.
     #[serde(default)]
-    #[schemars(transform = crate::schema::iteration_tolerance)]
+    #[schemars(transform = crate::scenario::schema::iteration_tolerance)]
     pub tolerance: Option<f64>,
     /// `method: iterative` only: most iterations allowed in one time step
     /// before the run stops with an error. Default 100.
     #[serde(default)]
-    #[schemars(transform = crate::schema::max_iterations)]
+    #[schemars(transform = crate::scenario::schema::max_iterations)]
     pub max_iterations: Option<usize>,
     /// `method: embs` only: add the first-order bridge response (the EMBS
     /// paper's Eq. 7) to the zero-order one (Eq. 5). Default true; false
@@ -680,18 +680,18 @@ pub enum SolverMethod {
 pub struct NewmarkRaw {
     /// β (dimensionless). Default 0.25, or (1 − α)²/4 when `alpha` is given.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub beta: Option<f64>,
     /// γ (dimensionless). Default 0.5, or 1/2 − α when `alpha` is given.
     #[serde(default)]
-    #[schemars(transform = crate::schema::newmark_gamma)]
+    #[schemars(transform = crate::scenario::schema::newmark_gamma)]
     pub gamma: Option<f64>,
     /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark), except
     /// −0.05 with rigid contact when β and γ are not given. A negative α keeps
     /// second order and unconditional stability and damps the highest modes,
     /// which quiets the ringing of wheels held to the surface (rigid contact).
     #[serde(default)]
-    #[schemars(transform = crate::schema::hht_alpha)]
+    #[schemars(transform = crate::scenario::schema::hht_alpha)]
     pub alpha: Option<f64>,
 }
 
@@ -700,7 +700,7 @@ pub struct NewmarkRaw {
 #[serde(deny_unknown_fields)]
 pub struct RecordRaw {
     /// Column name in the CSV and key in summary.json.
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub name: String,
     /// What is recorded.
     pub quantity: Quantity,
@@ -721,23 +721,23 @@ pub struct RecordRaw {
     /// Vehicle number, counted from 1 in the order of `vehicles` (vehicle
     /// quantities and contact forces). Default 1.
     #[serde(default)]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub vehicle: Option<usize>,
     /// Wheel number within the vehicle, counted from 1 front to rear
     /// (contact forces); on a train, over the whole train, or within `car`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub wheel: Option<usize>,
     /// Car of a train, counted from 1 front to rear: `wheel` then counts
     /// that car's wheelsets (1–4) and `dof` names that car's DOF.
     #[serde(default)]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub car: Option<usize>,
     /// Vehicle degree of freedom by name, e.g. `sprung` or `wheel` for the
     /// oscillator, `body_bounce` or `wheelset3` for a rail car (of a train:
     /// with `car`) (vehicle quantities).
     #[serde(default)]
-    #[schemars(transform = crate::schema::dof_name)]
+    #[schemars(transform = crate::scenario::schema::dof_name)]
     pub dof: Option<String>,
     /// Highest mode frequency a bridge acceleration includes, Hz
     /// (`bridge_acceleration` only). Default, as EN 1990 A2.4.4.2.1(4) and
@@ -745,7 +745,7 @@ pub struct RecordRaw {
     /// of 30 Hz, 1.5 f₁ and f₃. The automatic mode choice keeps every mode up
     /// to it.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub max_frequency: Option<f64>,
     /// Under ground motion: `relative` to the moving ground (the default:
     /// deflections, what loads the structure) or `absolute` (adds the
@@ -753,7 +753,7 @@ pub struct RecordRaw {
     /// Bridge and vehicle displacements and accelerations only.
     #[serde(default)]
     #[schemars(extend("default" = "relative"))]
-    pub frame: Option<crate::scenario::resolved::Frame>,
+    pub frame: Option<crate::scene::Frame>,
     /// Which moment per unit width a `bridge_moment` on a plate deck
     /// records (N·m/m, sagging positive): `mx` longitudinal bending (the
     /// default), `my` transverse bending, `mxy` twisting.

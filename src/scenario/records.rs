@@ -3,7 +3,7 @@
 
 use super::raw;
 use super::resolve::Checker;
-use super::resolved::*;
+use crate::scene::*;
 
 use crate::bridge::fe_import::Direction;
 use crate::vehicle::{rail_car, train_3d};

@@ -15,9 +15,9 @@ use super::diagnostic::{Diagnostic, Lines};
 use super::plausible;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
-use super::resolved::*;
 use super::yaml::{Location, Node, PathSeg};
 use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
+use crate::scene::*;
 
 /// Default finite elements per span.
 pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;

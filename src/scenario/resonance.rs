@@ -4,8 +4,8 @@
 use super::raw::{self, DeckRaw, HslmModel, km_h_to_m_s};
 use super::records::acceleration_cutoff;
 use super::resolve::{Checker, MAX_SPEED};
-use super::resolved::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 use super::resonance_grid::additional_damping_percent;
+use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 
 /// Most speeds per train (a count from the input, checked before the grid
 /// is built).
@@ -154,7 +154,7 @@ pub(super) fn resolve_resonance(
 pub fn train_vehicle(train: HslmModel, speed: f64) -> Vehicle {
     let raw = train.train();
     let positions = raw.axle_positions();
-    Vehicle::MovingForce(super::resolved::MovingForce {
+    Vehicle::MovingForce(crate::scene::MovingForce {
         loads: vec![raw.axle_force; positions.len()],
         axle_spacings: positions.windows(2).map(|w| w[1] - w[0]).collect(),
         speed,

@@ -8,7 +8,7 @@
 //! noise (no 359.00000000000006). A run's m/s value is the km/h value
 //! converted as a `speed: … km/h` input is.
 
-use super::resolved::ResonanceCheck;
+use crate::scene::ResonanceCheck;
 
 /// km/h per m/s.
 const KM_H_PER_M_S: f64 = 3.6;
@@ -180,7 +180,7 @@ impl ResonanceCheck {
 mod tests {
     use super::*;
     use crate::scenario::raw::{DeckRaw, HslmModel};
-    use crate::scenario::resolved::ResonanceSpeeds;
+    use crate::scene::ResonanceSpeeds;
 
     /// HSLM-A1 (D = 18 m) at speeds in km/h over a bridge of f₀ Hz.
     fn check(from: f64, to: f64, step: f64, line: f64, f0: f64) -> ResonanceCheck {

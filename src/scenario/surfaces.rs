@@ -8,7 +8,7 @@ use std::sync::Arc;
 use super::budget::Budget;
 use super::raw::{self, RailsRaw, RoughnessClassRaw};
 use super::resolve::Checker;
-use super::resolved::{Sampling, Surface, Vehicle};
+use crate::scene::{Sampling, Surface, Vehicle};
 use crate::surface::grid_nodes;
 use crate::surface::synth::default_terms;
 use crate::vehicle::VehicleModel;

@@ -5,10 +5,10 @@
 use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
-use super::resolved::{
+use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use crate::scene::{
     Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
-use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
 use crate::surface::synth::default_terms;
 
 /// Most values on the speed grid.
@@ -140,7 +140,7 @@ pub fn surface(
                 longest_wavelength: RAIL_BAND.1,
                 terms: default_terms(RAIL_BAND.0, RAIL_BAND.1).min(MAX_TERMS),
                 seed: 1,
-                rails: crate::scenario::resolved::Rails::Identical,
+                rails: crate::scene::Rails::Identical,
                 // The default run-in: the band's longest wavelength.
                 run_in: RAIL_BAND.1,
                 alignment: false,

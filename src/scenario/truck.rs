@@ -2,7 +2,7 @@
 
 use super::raw;
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
-use super::resolved::{H20Truck, H20TruckParameters, Vehicle};
+use crate::scene::{H20Truck, H20TruckParameters, Vehicle};
 
 /// The H20-44 preset.
 ///

@@ -187,12 +187,9 @@ pub const DIVERGENT_EPSILON: f64 = 1.0;
 /// lateral; ux neither), a vehicle DOF by its name (lateral, yaw and roll
 /// DOFs lateral, the rest vertical), a contact quantity by its wheel's
 /// direction. `None` for a quantity of neither.
-pub fn record_direction(
-    model: &Model,
-    record: &crate::scenario::resolved::Record,
-) -> Option<ContactDirection> {
+pub fn record_direction(model: &Model, record: &crate::scene::Record) -> Option<ContactDirection> {
     use crate::bridge::fe_import::Direction;
-    use crate::scenario::resolved::Quantity;
+    use crate::scene::Quantity;
     match record.quantity {
         Quantity::BridgeDisplacement | Quantity::BridgeAcceleration => {
             match record.direction.unwrap_or_default() {
@@ -223,7 +220,7 @@ pub fn record_direction(
 /// Why an EMBS run of `model` recording `records` is refused: a direction
 /// with ε ≥ [`DIVERGENT_EPSILON`] whose quantities are recorded, without
 /// `compare` or `allow_large_epsilon`. `None` when it may run.
-pub fn refusal(model: &Model, records: &[crate::scenario::resolved::Record]) -> Option<String> {
+pub fn refusal(model: &Model, records: &[crate::scene::Record]) -> Option<String> {
     let options = model.embs?;
     if options.compare || options.allow_large_epsilon {
         return None;

@@ -44,7 +44,7 @@ use super::newmark::Newmark;
 use super::unilateral::{ContactGeometry, block_inverse, contact_wheels, vehicle_step_matrices};
 use super::{Observer, SolveError, StepView, VehicleState, describe_positions};
 use crate::model::{ContactLaw, Model};
-use crate::scenario::resolved::SolverMethod;
+use crate::scene::SolverMethod;
 
 /// Samples stepped together.
 pub const LANES: usize = 16;

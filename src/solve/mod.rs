@@ -26,7 +26,7 @@ use nalgebra::DVector;
 use thiserror::Error;
 
 use crate::model::Model;
-use crate::scenario::resolved::SolverMethod;
+use crate::scene::SolverMethod;
 
 /// Errors of the solve stage.
 #[derive(Debug, Error, Clone, PartialEq)]

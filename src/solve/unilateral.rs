@@ -34,8 +34,8 @@ use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
 use crate::contact::ContactDirection;
+use crate::contact::SEPARATION_GAP;
 use crate::model::{ContactLaw, Model};
-use crate::record::SEPARATION_GAP;
 use crate::vehicle::WheelKind;
 
 /// Newton iterations allowed per step for the Hertz law.

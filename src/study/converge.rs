@@ -42,7 +42,7 @@ use crate::record::History;
 use crate::report::plot::{self, PlotError, Series};
 use crate::run::{self, Outcome, RunError};
 use crate::scenario::Loaded;
-use crate::scenario::resolved::Modes;
+use crate::scene::Modes;
 
 /// The reference's time step is the scenario's divided by this.
 pub const REFERENCE_REFINEMENT: usize = 4;

@@ -11,3 +11,23 @@ mod resonance_report;
 pub mod separation_map;
 pub mod shard;
 pub mod speed_sweep;
+
+use crate::run::Outcome;
+use monte_carlo::MonteCarloResults;
+use separation_map::SeparationMap;
+use speed_sweep::SweepResults;
+
+/// What a scenario file produces: one scene, or a study.
+#[derive(Debug, Clone)]
+pub enum Results {
+    /// A single scene.
+    Scene(Box<Outcome>),
+    /// A separation map.
+    SeparationMap(SeparationMap),
+    /// A speed sweep.
+    SpeedSweep(SweepResults),
+    /// A Monte Carlo study.
+    MonteCarlo(MonteCarloResults),
+    /// A railway resonance check.
+    ResonanceCheck(resonance::ResonanceResults),
+}

@@ -31,8 +31,8 @@ use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::{Recorder, SharedStatics};
 use crate::run::RunError;
-use crate::scenario::resolved::{MonteCarlo, Scenario, SweepRoughness};
 use crate::scenario::sweep;
+use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::solve;
 
 pub use self::report::write;
@@ -114,7 +114,7 @@ pub struct WheelOutcome {
     /// Wheel number from 1.
     pub wheel: usize,
     /// Whether the wheel lost contact (zero contact force with a gap above
-    /// [`crate::record::SEPARATION_GAP`]) at any step.
+    /// [`crate::contact::SEPARATION_GAP`]) at any step.
     pub separated: bool,
     /// Largest gap between wheel and surface, m (0 if never separated).
     pub max_gap: f64,

@@ -26,9 +26,9 @@ use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::Recorder;
 use crate::run::RunError;
-use crate::scenario::resolved::{AdditionalDamping, Envelopes, Quantity, ResonanceCheck, Scenario};
 use crate::scenario::resonance::train_vehicle;
 use crate::scenario::resonance_grid::km_h;
+use crate::scene::{AdditionalDamping, Envelopes, Quantity, ResonanceCheck, Scenario};
 use crate::solve;
 
 pub use super::resonance_report::write;

@@ -13,8 +13,8 @@ use super::resonance::{ResonancePoint, ResonanceResults};
 use crate::report::plot::{Series, line_chart, line_chart_with_reference};
 use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
 use crate::scenario::resonance_grid::km_h;
+use crate::scene::Scenario;
 
 impl ResonanceResults {
     /// resonance.csv: one row per run, with whether it keeps within the
@@ -132,7 +132,7 @@ impl ResonanceResults {
 
 /// Writes the check's files into `out` (see the module documentation).
 pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Result<(), RunError> {
-    crate::run::create_out(out)?;
+    crate::report::folder::create_out(out)?;
     write_atomic(&out.join("resonance.csv"), &results.to_csv())?;
     write_atomic(&out.join("resonance_trains.csv"), &results.trains_csv())?;
     let speed_label = "speed (km/h)";
@@ -206,7 +206,7 @@ pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Res
     )?;
     write_atomic(
         &out.join("resolved.yaml"),
-        crate::run::resolved_yaml(scenario).as_bytes(),
+        crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
     let summary = results.summary(&scenario.name);
     let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";

@@ -7,6 +7,7 @@
 //! lost contact. Points run in parallel; each is an independent,
 //! deterministic run, so the map is the same whatever the thread count.
 
+use std::path::Path;
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -15,8 +16,9 @@ use serde::Serialize;
 use crate::bridge::ModalBridge;
 use crate::model::Model;
 use crate::record::Recorder;
+use crate::report;
 use crate::run::RunError;
-use crate::scenario::resolved::{Contact, Grid, Quantity, Record, Scenario, Vehicle};
+use crate::scene::{Contact, Grid, Quantity, Record, Scenario, Vehicle};
 use crate::solve;
 
 /// Result of one grid point.
@@ -276,4 +278,61 @@ impl SeparationMap {
     pub fn separated_count(&self) -> usize {
         self.points.iter().filter(|p| p.separated).count()
     }
+}
+
+/// Summary of a separation-map study.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct StudySummary {
+    /// Scenario name.
+    pub scenario: String,
+    /// Study type.
+    pub study: &'static str,
+    /// vbi version.
+    pub vbi_version: &'static str,
+    /// Wall time of all points, s.
+    pub wall_time: f64,
+    /// Number of grid points.
+    pub points: usize,
+    /// Points where the wheel lost contact.
+    pub separated: usize,
+    /// Velocity ratios swept.
+    pub velocity_ratios: Vec<f64>,
+    /// Mass ratios swept.
+    pub mass_ratios: Vec<f64>,
+}
+
+/// Writes a study's `summary.json`, `study.csv`, `separation_map.png` and
+/// `resolved.yaml` into `out`.
+pub fn write(out: &Path, scenario: &Scenario, map: &SeparationMap) -> Result<(), RunError> {
+    report::folder::create_out(out)?;
+    let summary = StudySummary {
+        scenario: scenario.name.clone(),
+        study: "separation_map",
+        vbi_version: env!("CARGO_PKG_VERSION"),
+        wall_time: map.wall_time,
+        points: map.points.len(),
+        separated: map.separated_count(),
+        velocity_ratios: map.velocity_ratios.clone(),
+        mass_ratios: map.mass_ratios.clone(),
+    };
+    report::write_atomic(&out.join("study.csv"), &map.to_csv())?;
+    let state: Vec<bool> = map.points.iter().map(|p| p.separated).collect();
+    report::plot::binary_map(
+        &out.join("separation_map.png"),
+        &format!("{}: wheel–bridge separation", scenario.name),
+        "velocity ratio v / (2 f1 L)",
+        "vehicle-to-bridge mass ratio (ms + mu) / (m L)",
+        &map.velocity_ratios,
+        &map.mass_ratios,
+        &state,
+        "separated",
+        "no separation",
+    )?;
+    report::write_atomic(
+        &out.join("resolved.yaml"),
+        report::folder::resolved_yaml(scenario).as_bytes(),
+    )?;
+    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
+    report::write_atomic(&out.join("summary.json"), text.as_bytes())?;
+    Ok(())
 }

@@ -30,9 +30,10 @@ use thiserror::Error;
 use super::monte_carlo::{self, MonteCarloPart};
 use super::separation_map::{self, MapPoint};
 use super::speed_sweep::{self, SweepPoint};
-use crate::run::{Results, RunError};
-use crate::scenario::resolved::Study;
+use crate::run::RunError;
 use crate::scenario::{self, LoadOptions, Loaded};
+use crate::scene::Study;
+use crate::study::Results;
 
 /// Version tag of the part format.
 pub const PART_FORMAT: &str = "vbi-part-1";
@@ -218,7 +219,7 @@ pub fn fnv1a(bytes: &[u8]) -> String {
 
 /// The hash of a loaded scenario.
 pub fn scenario_hash(loaded: &Loaded) -> String {
-    fnv1a(crate::run::resolved_yaml(&loaded.scenario).as_bytes())
+    fnv1a(crate::report::folder::resolved_yaml(&loaded.scenario).as_bytes())
 }
 
 /// Study type name and number of runs.

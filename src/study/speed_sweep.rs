@@ -24,8 +24,8 @@ use crate::model::Model;
 use crate::record::Recorder;
 use crate::report::summary::Summary;
 use crate::run::RunError;
-use crate::scenario::resolved::{Bridge, Quantity, Scenario, SpeedSweep, SweepRoughness, Vehicle};
 use crate::scenario::sweep;
+use crate::scene::{Bridge, Quantity, Scenario, SpeedSweep, SweepRoughness, Vehicle};
 use crate::solve;
 
 /// km/h per m/s.
@@ -201,7 +201,7 @@ fn run_point(
         .map(|q| q.max.value)
         .collect();
     let seed = match scenario.surface {
-        crate::scenario::resolved::Surface::Random { seed, .. } => Some(seed),
+        crate::scene::Surface::Random { seed, .. } => Some(seed),
         _ => None,
     };
     // From the running extremes: a sweep's runs keep no samples.
@@ -251,7 +251,7 @@ fn layout(
         .map(|(&e, &n)| {
             (0..n)
                 .filter_map(|k| match sweep::surface(&base.surface, e, k, length) {
-                    crate::scenario::resolved::Surface::Random { seed, .. } => Some(seed),
+                    crate::scene::Surface::Random { seed, .. } => Some(seed),
                     _ => None,
                 })
                 .collect()

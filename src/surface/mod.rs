@@ -32,7 +32,7 @@ use self::interp::{CubicSpline, QuinticGrid, Triple};
 use self::shapes::Shape;
 use self::spectrum::Spectrum;
 use self::synth::{SpectralSeries, uniform};
-use crate::scenario::resolved::{Rails, Sampling, Surface, TrackDirection};
+use crate::scene::{Rails, Sampling, Surface, TrackDirection};
 
 /// Grid nodes per shortest wavelength of a sampled random profile: quintic
 /// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude

@@ -23,7 +23,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{VehicleModel, Wheel, WheelKind};
-use crate::scenario::resolved::{H20Truck, H20TruckParameters};
+use crate::scene::{H20Truck, H20TruckParameters};
 
 /// DOF names, as used by `record: … dof:`.
 pub const DOF_NAMES: [&str; 11] = [

@@ -17,7 +17,7 @@ use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
 
 use crate::contact::ContactDirection;
-use crate::scenario::resolved::Vehicle;
+use crate::scene::Vehicle;
 
 /// Errors while building a vehicle model.
 #[derive(Debug, Error, Clone, PartialEq)]

@@ -103,6 +103,32 @@ pub fn time_to_cover(speed: f64, acceleration: f64, distance: f64) -> Option<f64
     Some(2.0 * distance / denominator)
 }
 
+/// The scene's vehicle in motion: its kinematics live here, with [`Motion`],
+/// so the scene description stays plain data.
+impl crate::scene::Vehicle {
+    /// How the vehicle travels (speed at t = 0, acceleration, entry time).
+    pub fn motion(&self) -> Motion {
+        Motion {
+            speed: self.speed(),
+            acceleration: self.acceleration(),
+            entry_time: self.entry_time(),
+        }
+    }
+
+    /// Time at which the last axle leaves a bridge of length `length` (m), s;
+    /// for a vehicle that brakes to a stop before, the time it stops.
+    pub fn exit_time(&self, length: f64) -> f64 {
+        if self.acceleration() == 0.0 {
+            return self.entry_time() + (length + self.length()) / self.speed();
+        }
+        let motion = self.motion();
+        motion
+            .time_at(length + self.length())
+            .or(motion.stop_time())
+            .unwrap_or(f64::INFINITY)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

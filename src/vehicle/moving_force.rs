@@ -4,7 +4,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{VehicleModel, Wheel, WheelKind};
-use crate::scenario::resolved::MovingForce;
+use crate::scene::MovingForce;
 
 /// A load set has no degrees of freedom; each axle is a [`WheelKind::Load`].
 pub fn build(v: &MovingForce) -> VehicleModel {

@@ -10,7 +10,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{VehicleModel, Wheel, WheelKind};
-use crate::scenario::resolved::Oscillator;
+use crate::scene::Oscillator;
 
 /// DOF names, as used by `record: … dof:`.
 pub const DOF_NAMES: [&str; 2] = ["sprung", "wheel"];

@@ -31,7 +31,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{VehicleModel, Wheel, WheelKind};
-use crate::scenario::resolved::{RailCar, RailCarParameters, Train};
+use crate::scene::{RailCar, RailCarParameters, Train};
 
 /// DOF names of one car, as used by `record: … dof:`.
 pub const DOF_NAMES: [&str; 10] = [
@@ -102,10 +102,7 @@ pub fn wheelset_offsets(p: &RailCarParameters) -> [f64; WHEELSETS] {
     [0.0, 2.0 * b, 2.0 * a, 2.0 * a + 2.0 * b]
 }
 
-/// Distance from the car's front wheelset back to its rear wheelset, m.
-pub fn wheelset_span(p: &RailCarParameters) -> f64 {
-    2.0 * (p.half_bogie_spacing + p.half_wheelbase)
-}
+pub use crate::scene::wheelset_span;
 
 /// Builds the model of cars `cars` (each with the distance of its front
 /// wheelset behind the first car's, m), running at `speed` (m/s).

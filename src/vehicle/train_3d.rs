@@ -46,7 +46,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::{VehicleModel, Wheel, WheelKind};
 use crate::contact::ContactDirection;
-use crate::scenario::resolved::{Train3d, Train3dParameters};
+use crate::scene::{Train3d, Train3dParameters};
 
 /// DOF names of one car, as used by `record: … dof:` (a train prefixes
 /// `car{k}_`).

@@ -30,9 +30,9 @@
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
+use vbi::execute::Results;
 use vbi::record::History;
 use vbi::run::Outcome;
-use vbi::run::Results;
 use vbi::study::monte_carlo::MonteCarloResults;
 use vbi::study::separation_map::SeparationMap;
 use vbi::study::speed_sweep::SweepResults;
@@ -304,7 +304,7 @@ fn insta_settings() -> insta::Settings {
 fn study(path: &Path) -> Option<Result<(String, String), String>> {
     let loaded = vbi::scenario::load_file(path).ok()?;
     loaded.scenario.study.as_ref()?;
-    Some(match catch(|| vbi::run::execute(loaded, &|_, _| {})) {
+    Some(match catch(|| vbi::execute::execute(loaded, &|_, _| {})) {
         Ok(Ok(Results::SeparationMap(map))) => Ok(study_snapshots(&map)),
         Ok(Ok(Results::SpeedSweep(sweep))) => Ok(sweep_snapshots(&sweep)),
         Ok(Ok(Results::MonteCarlo(mc))) => Ok(monte_carlo_snapshots(&mc)),

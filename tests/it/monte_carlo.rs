@@ -11,7 +11,8 @@ use crate::support;
 use std::process::Command;
 
 use support::{Scratch, on_threads};
-use vbi::run::{Results, execute, simulate};
+use vbi::execute::{Results, execute};
+use vbi::run::simulate;
 use vbi::scenario::Loaded;
 use vbi::scenario::load_str;
 use vbi::scenario::resolved::Study;

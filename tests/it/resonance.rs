@@ -3,7 +3,7 @@
 //! and placed by hand), an HSLM vehicle resolving to those moving forces,
 //! and the first resonance of a simply supported span at v = f₁ D.
 
-use vbi::run::{Results, execute};
+use vbi::execute::{Results, execute};
 use vbi::scenario::load_str;
 use vbi::scenario::raw::HslmModel;
 use vbi::scenario::resolved::Vehicle;

@@ -10,7 +10,8 @@ use support::{column, max_abs, run_yaml};
 use std::path::Path;
 
 use support::event_reference::{TensionlessCase, extremes};
-use vbi::run::{Outcome, Results, execute};
+use vbi::execute::{Results, execute};
+use vbi::run::Outcome;
 use vbi::scenario::load_file;
 use vbi::study::separation_map::SeparationMap;
 

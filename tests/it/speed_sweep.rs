@@ -10,7 +10,7 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 use support::{Scratch, on_threads, run_yaml};
-use vbi::run::{Results, execute};
+use vbi::execute::{Results, execute};
 use vbi::scenario::load_str;
 use vbi::study::speed_sweep::SweepResults;
 

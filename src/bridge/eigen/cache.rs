@@ -22,7 +22,7 @@
 //! else (truncated, corrupt, foreign, forged) is not used: the modes are
 //! recomputed and written anew, and the outcome says why
 //! ([`CacheOutcome::Rejected`]).
-//! Writes go through [`crate::report::atomic::write_atomic`] (a temporary
+//! Writes go through [`crate::atomic_file::write_atomic`] (a temporary
 //! file renamed onto the target), so concurrent runs each write a whole
 //! file and a reader never sees a partial one.
 
@@ -167,7 +167,7 @@ impl ModesCache {
     /// report or ignore (a cache that cannot be written only costs time).
     pub fn write(&self, key: u128, pairs: &Eigenpairs) -> std::io::Result<()> {
         std::fs::create_dir_all(&self.folder)?;
-        crate::report::atomic::write_atomic(&self.path(key), &encode(key, pairs))
+        crate::atomic_file::write_atomic(&self.path(key), &encode(key, pairs))
     }
 }
 

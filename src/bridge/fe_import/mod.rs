@@ -106,12 +106,12 @@ pub struct RotationSign {
     /// Sign of the file's ry (−1 or +1; default +1): −1 when the file's ry
     /// is the slope +∂w/∂x.
     #[serde(default = "plus_one")]
-    #[schemars(transform = crate::schema::sign)]
+    #[schemars(transform = crate::scenario::schema::sign)]
     pub ry: i64,
     /// Sign of the file's rz (−1 or +1; default +1): −1 when the file's rz
     /// is −∂v/∂x.
     #[serde(default = "plus_one")]
-    #[schemars(transform = crate::schema::sign)]
+    #[schemars(transform = crate::scenario::schema::sign)]
     pub rz: i64,
 }
 

@@ -15,11 +15,11 @@ use crate::bridge::fe_import::{Direction, RotationSign};
 #[serde(deny_unknown_fields)]
 pub struct FeImportRaw {
     /// Stiffness matrix K file (N/m, N·m/rad for rotations).
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub stiffness: String,
     /// Mass matrix M file (kg, kg·m² for rotations). Every free DOF needs a
     /// positive diagonal mass (massless DOFs are refused, not condensed).
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub mass: String,
     /// CSV `dof,node,direction` naming each matrix row (1-based) by node
     /// and direction (ux, uy, uz, rx, ry, rz). Not needed by an Abaqus
@@ -75,7 +75,7 @@ pub struct NodeDofRaw {
 #[serde(deny_unknown_fields)]
 pub struct RailNodesRaw {
     /// Rail name (for `track`).
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub name: String,
     /// CSV file with header `node,x` (x in m, strictly increasing).
     #[serde(default)]
@@ -103,16 +103,16 @@ pub enum ImportDampingRaw {
     /// The same modal damping ratio ζ for every mode.
     Modal {
         /// Damping ratio ζ (fraction of critical, dimensionless).
-        #[schemars(transform = crate::schema::ratio)]
+        #[schemars(transform = crate::scenario::schema::ratio)]
         ratio: f64,
     },
     /// Rayleigh damping matched at two frequencies (Hz) with ratio ζ.
     Rayleigh {
         /// The two frequencies, Hz.
-        #[schemars(transform = crate::schema::positive_items)]
+        #[schemars(transform = crate::scenario::schema::positive_items)]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both (dimensionless).
-        #[schemars(transform = crate::schema::ratio)]
+        #[schemars(transform = crate::scenario::schema::ratio)]
         ratio: f64,
     },
     /// A damping matrix C (N·s/m) in the stiffness file's format and DOF
@@ -120,7 +120,7 @@ pub enum ImportDampingRaw {
     /// the coupling terms φᵢᵀCφⱼ of a non-classical C are left out).
     Matrix {
         /// The damping matrix file.
-        #[schemars(transform = crate::schema::non_empty_string)]
+        #[schemars(transform = crate::scenario::schema::non_empty_string)]
         file: String,
     },
 }

@@ -15,7 +15,7 @@ pub struct GroundMotionRaw {
     /// The record: a PEER NGA `.AT2` file (units from its header, usually
     /// g) or a CSV table `time [s], acceleration [unit]` (evenly spaced or
     /// not); the path is relative to this scenario file.
-    #[schemars(transform = crate::schema::non_empty_string)]
+    #[schemars(transform = crate::scenario::schema::non_empty_string)]
     pub file: String,
     /// Direction of the motion: `vertical` (positive upward), `lateral` or
     /// `longitudinal`. Default vertical.

@@ -20,7 +20,7 @@ pub struct OutputRaw {
     /// of time steps (at least one), which the resolved scenario shows as
     /// `every`. Give this or `every`.
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub interval: Option<f64>,
     /// Format of the time history: `csv` (history.csv), `npy` (history.npy,
     /// one float64 array with a row per written step and a column per

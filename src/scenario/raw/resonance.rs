@@ -58,7 +58,7 @@ pub struct ResonanceSpeedsRaw {
 pub struct ResonanceCheckRaw {
     /// Trains to run, `A1` … `A10`. Default: all ten.
     #[serde(default)]
-    #[schemars(transform = crate::schema::non_empty)]
+    #[schemars(transform = crate::scenario::schema::non_empty)]
     pub trains: Option<Vec<HslmModel>>,
     /// The maximum line speed, m/s or with its unit (`300 km/h`).
     pub line_speed: SpeedRaw,
@@ -75,7 +75,7 @@ pub struct ResonanceCheckRaw {
     /// Highest mode frequency the deck acceleration includes, Hz. Default:
     /// the greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub max_frequency: Option<f64>,
     /// Add the damping Δζ of EN 1991-2 6.4.6.3.1(3) for spans below 30 m
     /// (vehicle–bridge interaction): Δζ [%] = (0.0187 L − 0.00064 L²) /

@@ -116,7 +116,7 @@ pub struct SpeedGridRaw {
     /// Last speed: m/s, or with its unit (`420 km/h`).
     pub to: SpeedRaw,
     /// Number of speeds (≥ 1; 1 gives `from` only).
-    #[schemars(transform = crate::schema::grid_count)]
+    #[schemars(transform = crate::scenario::schema::grid_count)]
     pub count: usize,
 }
 

@@ -46,7 +46,7 @@ pub enum StudyRaw {
 pub struct MonteCarloRaw {
     /// Random profiles per case (≥ 1; dimensionless count).
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub samples: usize,
     /// Study seed: sample k (from 1) uses the k-th output of SplitMix64
     /// started from this seed (the same k-th seed on every case, every
@@ -86,14 +86,14 @@ pub struct SeparationMapRaw {
 #[serde(deny_unknown_fields)]
 pub struct GridRaw {
     /// First value.
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub from: f64,
     /// Last value.
-    #[schemars(transform = crate::schema::positive)]
+    #[schemars(transform = crate::scenario::schema::positive)]
     pub to: f64,
     /// Number of values (≥ 1; 1 gives `from` only).
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::schema::grid_count)]
+    #[schemars(transform = crate::scenario::schema::grid_count)]
     pub count: usize,
 }
 
@@ -130,7 +130,7 @@ pub struct SpeedSweepRaw {
     /// Default 1.
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     #[schemars(extend("default" = 1))]
     pub samples: Option<usize>,
     /// Span (counted from 1 at the entrance) at whose middle the plots and
@@ -138,14 +138,14 @@ pub struct SpeedSweepRaw {
     /// equally long ones), e.g. span 2 of the plate paper's 3-span deck.
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     pub span: Option<usize>,
     /// Girder line (counted from 1 in `bridge.girder_lines`) of the
     /// roughness plot, the DAF map and the summary. Default 1 (a beam has
     /// only line 1).
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::schema::at_least_one)]
+    #[schemars(transform = crate::scenario::schema::at_least_one)]
     #[schemars(extend("default" = 1))]
     pub girder: Option<usize>,
 }

@@ -19,7 +19,7 @@ pub enum SurfaceRaw {
         /// Amplitude, m.
         amplitude: f64,
         /// Wavelength, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         wavelength: f64,
         /// Phase at the entrance, rad. Default 0.
         #[serde(default)]
@@ -45,7 +45,7 @@ pub enum SurfaceRaw {
         class: Option<RoughnessClassRaw>,
         /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
         #[serde(default)]
-        #[schemars(transform = crate::schema::non_negative)]
+        #[schemars(transform = crate::scenario::schema::non_negative)]
         coefficient: Option<f64>,
         /// Length L_c the series repeats over, m. Default: twice the bridge length.
         #[serde(default)]
@@ -71,11 +71,11 @@ pub enum SurfaceRaw {
         class: u8,
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -110,7 +110,7 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::schema::non_negative)]
+        #[schemars(transform = crate::scenario::schema::non_negative)]
         run_in: Option<f64>,
     },
     /// Random vertical track profile from the German high-speed spectrum:
@@ -122,11 +122,11 @@ pub enum SurfaceRaw {
         interference: Interference,
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -161,7 +161,7 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::schema::non_negative)]
+        #[schemars(transform = crate::scenario::schema::non_negative)]
         run_in: Option<f64>,
     },
     /// Random road profile of an ISO 8608 class: G_d(n) = G_d(n₀)(n/n₀)⁻²,
@@ -172,11 +172,11 @@ pub enum SurfaceRaw {
         class: IsoClass,
         /// Shortest wavelength sampled, m. Default: 0.5 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 100 m.
         #[serde(default)]
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -204,7 +204,7 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::schema::non_negative)]
+        #[schemars(transform = crate::scenario::schema::non_negative)]
         run_in: Option<f64>,
     },
     /// A measured profile from a CSV file: rows `x, elevation` (one profile
@@ -230,7 +230,7 @@ pub enum SurfaceRaw {
         /// Where the ramp starts, m from the entrance.
         start: f64,
         /// Horizontal length, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         length: f64,
         /// Rise, m (negative: a descent).
         height: f64,
@@ -263,10 +263,10 @@ pub enum SurfaceRaw {
         /// Where the bump starts, m from the entrance.
         start: f64,
         /// Length, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         length: f64,
         /// Peak height, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -282,10 +282,10 @@ pub enum SurfaceRaw {
         /// Where the dip starts, m from the entrance.
         start: f64,
         /// Length, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         length: f64,
         /// Deepest point below the level, m.
-        #[schemars(transform = crate::schema::positive)]
+        #[schemars(transform = crate::scenario::schema::positive)]
         depth: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced

@@ -10,8 +10,8 @@
 use super::super::budget::Budget;
 use super::super::data_files::{self, DataFile};
 use super::super::resolve::Checker;
-use super::super::resolved::MeasuredProfile;
 use crate::ground::table::not_a_number;
+use crate::scene::MeasuredProfile;
 
 /// Fewest bytes a data row takes (`0,0` and a line break).
 const MIN_ROW_BYTES: f64 = 4.0;

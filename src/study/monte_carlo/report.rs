@@ -15,7 +15,7 @@ use super::MonteCarloResults;
 use crate::report::plot::{Series, line_chart, line_chart_over_samples};
 use crate::report::{number, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 use crate::study::speed_sweep::KM_H;
 
 /// Standard normal quantile of a two-sided 95 % interval.
@@ -440,7 +440,7 @@ fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Re
 
 /// Writes every output of the study into `out`, summary.json last.
 pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Result<(), RunError> {
-    crate::run::create_out(out)?;
+    crate::report::folder::create_out(out)?;
     // The tables and the charts are independent files: written side by side.
     let (tables, charts) = rayon::join(
         || -> Result<(), RunError> {
@@ -458,7 +458,7 @@ pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Re
     charts?;
     write_atomic(
         &out.join("resolved.yaml"),
-        crate::run::resolved_yaml(scenario).as_bytes(),
+        crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
     let text = serde_json::to_string_pretty(&results.summary(&scenario.name))
         .expect("summary serialises")

@@ -9,7 +9,7 @@ use super::{DafSource, KM_H, SweepResults};
 use crate::report::plot::{Series, category_heat_map, line_chart};
 use crate::report::{self, write_atomic};
 use crate::run::RunError;
-use crate::scenario::resolved::Scenario;
+use crate::scene::Scenario;
 
 const DAF_LABEL: &str = "DAF = max |w dynamic| / max |w static|";
 const SPEED_LABEL: &str = "speed (km/h)";
@@ -257,7 +257,7 @@ fn plot_roughness(out: &Path, name: &str, results: &SweepResults) -> Result<(), 
 /// Writes `study.csv`, `daf_speed.png`, `daf_speed_roughness.png`,
 /// `daf_map.png`, `resolved.yaml` and, last, `summary.json` into `out`.
 pub fn write(out: &Path, scenario: &Scenario, results: &SweepResults) -> Result<(), RunError> {
-    crate::run::create_out(out)?;
+    crate::report::folder::create_out(out)?;
     write_atomic(&out.join("study.csv"), &results.to_csv())?;
     plot_daf_speed(
         &out.join("daf_speed.png"),
@@ -268,7 +268,7 @@ pub fn write(out: &Path, scenario: &Scenario, results: &SweepResults) -> Result<
     plot_roughness(out, &scenario.name, results)?;
     write_atomic(
         &out.join("resolved.yaml"),
-        crate::run::resolved_yaml(scenario).as_bytes(),
+        crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
     let summary = SweepSummary::new(&scenario.name, results);
     let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";

@@ -1,11 +1,12 @@
-//! The one way results reach the disk: whole or not at all.
+//! The one way files reach the disk: whole or not at all. Below every layer
+//! that writes (the modes cache, the spilled history rows, the report).
 //!
 //! Every output file (summary, CSV, resolved scenario, plots, study tables,
 //! mode shapes) goes through [`write_atomic`]: the bytes go to a new
 //! temporary file beside the target (a name no other writer in this or any
 //! other process uses: `NAME.vbi-partial-PID-N`, created exclusively, and
 //! visible, so that a run killed mid-write leaves nothing hidden and the next
-//! run into the folder removes it, [`super::remove_stale_partials`]), are flushed
+//! run into the folder removes it, [`remove_stale_partials`]), are flushed
 //! to the disk (`sync_all`, so that after a crash the renamed file is never
 //! empty or short), and the file is renamed onto the target, which readers
 //! then see either old or new, never partial. On any failure the temporary
@@ -16,6 +17,53 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+/// What marks a file being written: `summary.json.vbi-partial-1234` until
+/// it is complete and renamed. Visible (no leading dot) and recognisable,
+/// so a run killed from outside leaves nothing hidden, and the next run into
+/// the same folder removes it ([`remove_stale_partials`]).
+pub const PARTIAL_MARK: &str = ".vbi-partial-";
+
+/// The temporary name of `file_name` while this process writes it; `tag`
+/// tells apart several temporaries of one process.
+pub fn partial_name(file_name: &str, tag: &str) -> String {
+    format!("{file_name}{PARTIAL_MARK}{}{tag}", std::process::id())
+}
+
+/// Removes the partial files in `folder` that a process no longer running
+/// left behind (killed mid-write). A process that is still running (its
+/// `/proc` entry exists) keeps its files; where there is no `/proc`, only
+/// files older than an hour are removed. Best effort: errors are ignored.
+pub fn remove_stale_partials(folder: &Path) {
+    let Ok(entries) = fs::read_dir(folder) else {
+        return;
+    };
+    let me = std::process::id();
+    let proc_fs = Path::new("/proc/self").exists();
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let Some((_, after)) = name.rsplit_once(PARTIAL_MARK) else {
+            continue;
+        };
+        let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
+        let Ok(pid) = digits.parse::<u32>() else {
+            continue;
+        };
+        let stale = if proc_fs {
+            pid != me && !Path::new("/proc").join(pid.to_string()).exists()
+        } else {
+            entry
+                .metadata()
+                .and_then(|m| m.modified())
+                .ok()
+                .and_then(|t| t.elapsed().ok())
+                .is_some_and(|age| age.as_secs() > 3600)
+        };
+        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
+
 /// Writes `bytes` to `path` atomically (see the module doc).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
@@ -25,7 +73,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
             format!("'{}' names no file", path.display()),
         )
     })?;
-    let tmp_name = super::partial_name(
+    let tmp_name = partial_name(
         &file_name.to_string_lossy(),
         &format!("-{}", COUNTER.fetch_add(1, Ordering::Relaxed)),
     );
@@ -58,7 +106,7 @@ pub fn write_atomic_with(
             format!("'{}' names no file", path.display()),
         )
     })?;
-    let tmp_name = super::partial_name(
+    let tmp_name = partial_name(
         &file_name.to_string_lossy(),
         &format!("-s{}", COUNTER.fetch_add(1, Ordering::Relaxed)),
     );

@@ -26,7 +26,44 @@ pub fn schema_json() -> String {
     type_unions(&mut value);
     describe_tags(&mut value);
     unwrap_descriptions(&mut value);
+    drop_raw_suffix(&mut value);
     serde_json::to_string_pretty(&value).expect("schema serialises") + "\n"
+}
+
+/// The `$defs` names without the `Raw` suffix of the format's internal
+/// types (`BridgeRaw` → `Bridge`), and every `$ref` to them: editors show
+/// these names, and users write a bridge, not a `BridgeRaw`. No two types
+/// differ only by the suffix (the names are the types' own, all in one
+/// `$defs`), so the renaming is one to one.
+fn drop_raw_suffix(value: &mut Value) {
+    const PREFIX: &str = "#/$defs/";
+    fn plain(name: &str) -> &str {
+        name.strip_suffix("Raw")
+            .filter(|n| !n.is_empty())
+            .unwrap_or(name)
+    }
+    fn walk(value: &mut Value) {
+        match value {
+            Value::Object(map) => {
+                if let Some(Value::String(target)) = map.get_mut("$ref")
+                    && let Some(name) = target.strip_prefix(PREFIX)
+                {
+                    *target = format!("{PREFIX}{}", plain(name));
+                }
+                map.values_mut().for_each(walk);
+            }
+            Value::Array(items) => items.iter_mut().for_each(walk),
+            _ => {}
+        }
+    }
+    if let Some(Value::Object(defs)) = value.get_mut("$defs") {
+        let renamed: Map<String, Value> = std::mem::take(defs)
+            .into_iter()
+            .map(|(name, def)| (plain(&name).to_string(), def))
+            .collect();
+        *defs = renamed;
+    }
+    walk(value);
 }
 
 /// Removes `"default": null` and the `null` alternative of optional fields:

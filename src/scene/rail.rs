@@ -85,9 +85,9 @@ pub struct TrainCar {
 impl Train {
     /// Distance from the first wheelset back to the last one, m.
     pub fn length(&self) -> f64 {
-        self.cars.last().map_or(0.0, |c| {
-            c.offset + crate::vehicle::rail_car::wheelset_span(&c.parameters)
-        })
+        self.cars
+            .last()
+            .map_or(0.0, |c| c.offset + wheelset_span(&c.parameters))
     }
 }
 
@@ -233,4 +233,9 @@ impl Serialize for Train3dParameters {
         out.serialize_field("wheel_radius", &self.wheel_radius)?;
         out.end()
     }
+}
+
+/// Distance from the car's front wheelset back to its rear wheelset, m.
+pub fn wheelset_span(p: &RailCarParameters) -> f64 {
+    2.0 * (p.half_bogie_spacing + p.half_wheelbase)
 }
