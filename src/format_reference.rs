@@ -177,6 +177,19 @@ impl Writer<'_> {
         if level == 2 && anchor != "top-level" {
             self.example(anchor);
         }
+        if anchor == "top-level" {
+            // The top-level keys that are plain values (no section of their
+            // own) get their examples here.
+            for (key, _) in SNIPPET_EXAMPLES {
+                if schema
+                    .get("properties")
+                    .and_then(|properties| properties.get(key))
+                    .is_some_and(|field| !is_section(self.resolve(field)))
+                {
+                    self.example(key);
+                }
+            }
+        }
         let child_level = if anchor == "top-level" { 2 } else { level + 1 };
         for (child_title, child_anchor, child) in children {
             self.section(&child_title, &child_anchor, &child, child_level);

@@ -179,8 +179,25 @@ fn cheapest_within_tolerance_is_the_largest_step_that_meets_it() {
         .max_by(|a, b| a.time_step.total_cmp(&b.time_step))
         .expect("a run meets the tolerance");
     let chosen = study.cheapest_run().expect("a run meets the tolerance");
-    assert_eq!(chosen.label, expected.label);
-    assert_eq!(chosen.label, "dt=5e-4 s, 4 modes");
+    // The choice is by measured wall time, so on a loaded machine the
+    // millisecond runs can swap places: the chosen run meets the tolerance
+    // and no qualifying run was measured faster. The largest qualifying
+    // step is the expected winner (half the steps of the finer rung), which
+    // only timing noise can overturn.
+    assert!(chosen.worst_max_abs().unwrap() <= tolerance);
+    let qualifying: Vec<&RunReport> = study
+        .runs
+        .iter()
+        .filter(|r| r.worst_max_abs().is_some_and(|e| e <= tolerance))
+        .collect();
+    assert!(
+        qualifying
+            .iter()
+            .all(|r| r.wall_time.unwrap() >= chosen.wall_time.unwrap()),
+        "{} chosen, not the fastest qualifying run",
+        chosen.label
+    );
+    assert_eq!(expected.label, "dt=5e-4 s, 4 modes");
     // Tighter than every run's error: nothing qualifies.
     let best = study
         .runs
@@ -260,10 +277,17 @@ fn a_diverging_run_is_reported_as_failed() {
 
 #[test]
 fn the_table_is_deterministic_apart_from_wall_times() {
+    // The cheapest run is chosen by measured wall time (by design: the
+    // fastest within tolerance), so under a loaded machine it may differ
+    // between two runs; everything else must not.
     let strip = |mut s: Convergence| {
         s.reference.wall_time = None;
         for run in &mut s.runs {
             run.wall_time = None;
+        }
+        s.cheapest = None;
+        for (_, cheapest) in &mut s.cheapest_per_quantity {
+            *cheapest = None;
         }
         s
     };

@@ -149,8 +149,15 @@ fn sharded_equals_unsharded_exiting(test: &str, text: &str, verdict: i32) -> Vec
             ]));
             parts.push(parts_dir.join(format!("part-{k}-of-{n}.json")));
         }
-        // Only the part files are written by a shard.
-        assert_eq!(std::fs::read_dir(&parts_dir).unwrap().count(), n);
+        // Only the part files are written by a shard, besides the mark
+        // naming the folder's scene (.vbi-owner, issue 23.1).
+        let written: Vec<String> = std::fs::read_dir(&parts_dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|name| name != vbi::run::OWNER_FILE)
+            .collect();
+        assert_eq!(written.len(), n, "{written:?}");
+        assert!(parts_dir.join(vbi::run::OWNER_FILE).is_file());
         let merged = scratch.path(&format!("merged{n}"));
         let mut args = vec!["merge", "-q", "--out", merged.to_str().unwrap()];
         // Given in reverse: the order of the arguments does not matter.
@@ -452,6 +459,7 @@ fn running_a_finished_shard_again_replaces_its_part_atomically() {
     let names: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|name| name != vbi::run::OWNER_FILE)
         .collect();
     assert_eq!(names, ["part-2-of-2.json"]);
     // The same results (the wall time aside).
