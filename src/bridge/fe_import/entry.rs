@@ -126,8 +126,16 @@ mod tests {
             exit: 2.5,
         };
         let h = 1e-4;
+        // The smoothstep is C² with a jump of 60/l³ in s‴ where a ramp starts
+        // or ends: a central difference straddling such a knot is only O(h)
+        // accurate there (h/4 × the jump ≈ 1e-4), so the points within 2h
+        // of a knot are left out; everywhere else it is O(h²).
+        let knots = [0.0, 2.5, 3.0, 5.0];
         for k in 1..100 {
             let x = 0.05 * k as f64;
+            if knots.iter().any(|knot| (x - knot).abs() < 2.0 * h) {
+                continue;
+            }
             let (_, d, dd) = entry.weight(x);
             let (sp, dp, _) = entry.weight(x + h);
             let (sm, dm, _) = entry.weight(x - h);
