@@ -7,34 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use serde_json::Value;
-use support::Scratch;
-
-fn manifest_dir() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-fn assert_exit(out: &Output, code: i32) {
-    assert_eq!(
-        out.status.code(),
-        Some(code),
-        "stdout:\n{}\nstderr:\n{}",
-        text(&out.stdout),
-        text(&out.stderr)
-    );
-    assert!(!text(&out.stderr).contains("panicked"));
-}
+use support::{Scratch, assert_exit, manifest_dir, text, vbi};
 
 /// The Yang & Yau sprung-mass scenario with a 1 ms step (900 steps), copied
 /// into `dir`.

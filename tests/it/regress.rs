@@ -9,34 +9,7 @@ use crate::support;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use support::Scratch;
-
-fn manifest_dir() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-fn assert_exit(out: &Output, code: i32) {
-    assert_eq!(
-        out.status.code(),
-        Some(code),
-        "stdout:\n{}\nstderr:\n{}",
-        text(&out.stdout),
-        text(&out.stderr)
-    );
-    assert!(!text(&out.stderr).contains("panicked"));
-}
+use support::{Scratch, assert_exit, manifest_dir, text, vbi};
 
 /// A shipped scene copied into the scratch folder.
 fn copy_scene(dir: &Scratch, name: &str) -> PathBuf {

@@ -14,6 +14,37 @@ use std::path::{Path, PathBuf};
 use vbi::run::{Outcome, simulate};
 use vbi::scenario::load_str;
 
+/// The repository root (where Cargo.toml is).
+pub fn manifest_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs the `vbi` binary with `args` in `cwd`.
+pub fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("run vbi")
+}
+
+/// A command's output as text.
+pub fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// The command exited with `code` and did not panic (its streams shown if not).
+pub fn assert_exit(out: &std::process::Output, code: i32) {
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "stdout:\n{}\nstderr:\n{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(!text(&out.stderr).contains("panicked"));
+}
+
 /// Loads and runs a scene given as YAML text, panicking with the error.
 pub fn run_yaml(yaml: &str) -> Outcome {
     let loaded = load_str(yaml, "test.yaml").unwrap_or_else(|e| panic!("{e}"));
