@@ -25,6 +25,8 @@ use super::{SolveError, VehicleState};
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::WheelKind;
+use faer::linalg::matmul::matmul;
+use faer::{Accum, Mat, Par};
 
 /// A wheel that rides the surface through a vehicle DOF.
 #[derive(Debug, Clone, Copy)]
@@ -104,6 +106,17 @@ pub struct PermanentContacts {
     path: Vec<(f64, f64)>,
     /// Modal correction −DΦᵀλ work vector.
     correction: Vec<f64>,
+    /// This step's contact rows gathered for the contact system's matrix
+    /// products: [φ, P₁, P₂] of every contact, each nc × modes (row c is
+    /// contact c), and Dφ of every contact as the columns of a modes × nc
+    /// matrix. Three products of these replace nc² separate dot products
+    /// (the same sums, blocked and vectorised: on 96 contacts × 148 modes
+    /// the step's contact system costs a fraction of what the dot products
+    /// did).
+    contact_rows: [Mat<f64>; 3],
+    scaled_columns: Mat<f64>,
+    /// [ΦDΦᵀ, P₁DΦᵀ, P₂DΦᵀ] between the contacts this step, nc × nc.
+    contact_products: [Mat<f64>; 3],
     /// Residual (static) flexibility between the contacts this step, m/N,
     /// row-major nc × nc ([`crate::bridge::ModalBridge::residual_flexibility`]);
     /// empty when the contact static correction is off.
@@ -173,6 +186,9 @@ impl PermanentContacts {
             surface: vec![(0.0, 0.0, 0.0); nc],
             path: vec![(0.0, 0.0); nc],
             correction: vec![0.0; modes],
+            contact_rows: std::array::from_fn(|_| Mat::zeros(nc, modes)),
+            scaled_columns: Mat::zeros(modes, nc),
+            contact_products: std::array::from_fn(|_| Mat::zeros(nc, nc)),
             residual: if model.bridge.corrects_contacts() {
                 vec![0.0; nc * nc]
             } else {
@@ -256,6 +272,12 @@ impl PermanentContacts {
                     *row += a * slope;
                 }
             }
+            for i in 0..s.values.len() {
+                self.contact_rows[0][(c, i)] = s.values[i];
+                self.contact_rows[1][(c, i)] = s.velocity_row[i];
+                self.contact_rows[2][(c, i)] = s.acceleration_row[i];
+                self.scaled_columns[(i, c)] = s.scaled[i];
+            }
             let (r, dr, ddr) = if self.follow_irregularity {
                 model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x)
             } else {
@@ -323,17 +345,26 @@ impl PermanentContacts {
     /// residual flexibility when the contact correction is on), written to
     /// `sens`, and each vehicle's wheel rows λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W
     /// close it. Cost O(modes·contacts²) + O(contacts²·wheels per vehicle).
-    pub fn contact_system(&self, sens: &mut [[f64; 3]], system: &mut [f64]) {
+    pub fn contact_system(&mut self, sens: &mut [[f64; 3]], system: &mut [f64]) {
         let nc = self.contacts.len();
-        let shapes = &self.shapes;
+        for (product, rows) in self.contact_products.iter_mut().zip(&self.contact_rows) {
+            matmul(
+                product.as_mut(),
+                Accum::Replace,
+                rows.as_ref(),
+                self.scaled_columns.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+        }
+        let [flexibility, velocity, acceleration] = &self.contact_products;
         for c in 0..nc {
             for d in 0..nc {
-                let (sc, sd) = (&shapes[c], &shapes[d]);
                 let r = self.residual.get(c * nc + d).copied().unwrap_or(0.0);
                 sens[c * nc + d] = [
-                    -dot(&sc.values, &sd.scaled) - r,
-                    -dot(&sc.velocity_row, &sd.scaled),
-                    -dot(&sc.acceleration_row, &sd.scaled),
+                    -flexibility[(c, d)] - r,
+                    -velocity[(c, d)],
+                    -acceleration[(c, d)],
                 ];
             }
         }
