@@ -590,6 +590,17 @@ impl ModalBridge {
         self.contact_flexibility.is_some()
     }
 
+    /// The full model's static flexibility G(c, d) between two contact
+    /// points, m/N; `None` when the contact correction is off. The residual
+    /// flexibility is G(c, d) − Σᵢ φᵢ(c)φᵢ(d)/ωᵢ² ([`Self::residual_flexibility`]);
+    /// a solver holding many contacts forms the modal sum for all pairs at
+    /// once as one matrix product.
+    pub fn static_flexibility(&self, c: ContactPoint, d: ContactPoint) -> Option<f64> {
+        self.contact_flexibility
+            .as_ref()
+            .map(|flexibility| flexibility.green(c, d))
+    }
+
     /// Residual (static) flexibility between two contact points c and d
     /// (direction, x along and y across the track, m), m/N: the full static
     /// Green's function minus its modal part, R = G(c, d) −

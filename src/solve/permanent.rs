@@ -117,6 +117,12 @@ pub struct PermanentContacts {
     scaled_columns: Mat<f64>,
     /// [ΦDΦᵀ, P₁DΦᵀ, P₂DΦᵀ] between the contacts this step, nc × nc.
     contact_products: [Mat<f64>; 3],
+    /// φᵢ/ωᵢ² of every contact as the columns of a modes × nc matrix, and
+    /// the kept modes' flexibility ΦΩ⁻²Φᵀ between the contacts, nc × nc:
+    /// the part of the static flexibility the residual leaves out (empty
+    /// when the contact correction is off).
+    modal_columns: Mat<f64>,
+    modal_flexibility: Mat<f64>,
     /// Residual (static) flexibility between the contacts this step, m/N,
     /// row-major nc × nc ([`crate::bridge::ModalBridge::residual_flexibility`]);
     /// empty when the contact static correction is off.
@@ -189,6 +195,16 @@ impl PermanentContacts {
             contact_rows: std::array::from_fn(|_| Mat::zeros(nc, modes)),
             scaled_columns: Mat::zeros(modes, nc),
             contact_products: std::array::from_fn(|_| Mat::zeros(nc, nc)),
+            modal_columns: if model.bridge.corrects_contacts() {
+                Mat::zeros(modes, nc)
+            } else {
+                Mat::zeros(0, 0)
+            },
+            modal_flexibility: if model.bridge.corrects_contacts() {
+                Mat::zeros(nc, nc)
+            } else {
+                Mat::zeros(0, 0)
+            },
             residual: if model.bridge.corrects_contacts() {
                 vec![0.0; nc * nc]
             } else {
@@ -306,17 +322,27 @@ impl PermanentContacts {
             // s̈ is negligible).
             let nc = self.contacts.len();
             for c in 0..nc {
+                let values = &self.shapes[c].values;
+                for (i, omega) in bridge.circular_frequencies.iter().enumerate() {
+                    self.modal_columns[(i, c)] = values[i] / (omega * omega);
+                }
+            }
+            matmul(
+                self.modal_flexibility.as_mut(),
+                Accum::Replace,
+                self.contact_rows[0].as_ref(),
+                self.modal_columns.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+            let point = |k: usize| {
+                let contact = &self.contacts[k];
+                (contact.direction, wheel_positions[contact.wheel], contact.y)
+            };
+            for c in 0..nc {
                 for d in 0..=c {
-                    let point = |k: usize| {
-                        let contact = &self.contacts[k];
-                        (contact.direction, wheel_positions[contact.wheel], contact.y)
-                    };
-                    let r = bridge.residual_flexibility(
-                        point(c),
-                        point(d),
-                        &self.shapes[c].values,
-                        &self.shapes[d].values,
-                    );
+                    let green = bridge.static_flexibility(point(c), point(d)).unwrap_or(0.0);
+                    let r = green - self.modal_flexibility[(c, d)];
                     self.residual[c * nc + d] = r;
                     self.residual[d * nc + c] = r;
                 }
@@ -368,19 +394,24 @@ impl PermanentContacts {
                 ];
             }
         }
+        // Row c of (I − A) for each vehicle's wheel c: A_c· = Σ_b (M̃ S₂ + C̃ S₁
+        // + K̃ S₀)_{cb,·}, accumulated along whole rows so the inner loop runs
+        // over contiguous memory. 0 − x₁ − x₂ … rounds exactly as −(x₁ + x₂ …)
+        // and 1 is added last, as 1 − Σ was: the same bits as the sum per entry.
         for (v, partition) in self.partitions.iter().enumerate() {
             let local = &self.contact_of[v];
             for (a, &c) in local.iter().enumerate() {
-                for d in 0..nc {
-                    let mut a_cd = 0.0;
-                    for (b, &cb) in local.iter().enumerate() {
-                        let s = sens[cb * nc + d];
-                        a_cd += partition.condensed_mass[(a, b)] * s[2]
-                            + partition.condensed_damping[(a, b)] * s[1]
-                            + partition.condensed_stiffness[(a, b)] * s[0];
+                let row = &mut system[c * nc..(c + 1) * nc];
+                row.fill(0.0);
+                for (b, &cb) in local.iter().enumerate() {
+                    let mass = partition.condensed_mass[(a, b)];
+                    let damping = partition.condensed_damping[(a, b)];
+                    let stiffness = partition.condensed_stiffness[(a, b)];
+                    for (entry, s) in row.iter_mut().zip(&sens[cb * nc..(cb + 1) * nc]) {
+                        *entry -= mass * s[2] + damping * s[1] + stiffness * s[0];
                     }
-                    system[c * nc + d] = if c == d { 1.0 - a_cd } else { -a_cd };
                 }
+                row[c] += 1.0;
             }
         }
     }
