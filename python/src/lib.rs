@@ -8,7 +8,9 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::Duration;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1};
@@ -30,9 +32,9 @@ pyo3::create_exception!(
      (file, line, column, message, rendered) tuples."
 );
 
-/// How often a running scene re-acquires the GIL to check for Ctrl-C and
-/// call the progress callback: often enough that Ctrl-C feels immediate,
-/// rarely enough that the run does not notice.
+/// How often the caller's thread takes the GIL during a run to check for
+/// Ctrl-C and call the progress callback: often enough that Ctrl-C feels
+/// immediate, rarely enough that nothing else notices.
 const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(100);
 
 /// Where a scene comes from: a file (`kind = "path"`) or YAML text
@@ -107,10 +109,14 @@ fn check(py: Python<'_>, kind: &str, scene: &str, name: &str) -> PyResult<String
     Ok(vbi::run::resolved_yaml(&loaded.scenario))
 }
 
-/// Runs a scene or its study with the GIL released. `progress(done,
-/// total)` is called (with the GIL) at most every 0.1 s; Ctrl-C or an
-/// exception in the callback stops the run and is raised. `workdir` is an
-/// empty folder where a study writes its tables (read back by the caller).
+/// Runs a scene or its study with the GIL released. The run goes on a
+/// worker thread while the calling thread waits without the GIL and, every
+/// 0.1 s, takes it to check for Ctrl-C (Python runs signal handlers only on
+/// the main thread, so the check must happen on the caller's thread) and to
+/// call `progress(done, total)` when it moved. Ctrl-C, or an exception in
+/// the callback, cancels the run ([`vbi::solve::cancel`]) and is raised.
+/// `workdir` is an empty folder where a study writes its tables (read back
+/// by the caller).
 #[pyfunction]
 #[pyo3(signature = (kind, scene, name = "<string>", progress = None, workdir = None))]
 fn run<'py>(
@@ -125,34 +131,57 @@ fn run<'py>(
     let loaded = py.detach(|| source.load()).map_err(load_error)?;
     let scenario = loaded.scenario.clone();
     let token = CancelToken::new();
-    // The first error raised in the progress path (KeyboardInterrupt, or
-    // the callback's own), re-raised once the run has stopped.
-    let raised: Mutex<Option<PyErr>> = Mutex::new(None);
-    let last_check = Mutex::new(Instant::now());
-    let on_progress = |done: usize, total: usize| {
-        if token.is_cancelled() {
-            return;
-        }
-        {
-            let mut last = last_check.lock().expect("progress lock");
-            if last.elapsed() < SIGNAL_CHECK_INTERVAL && done < total {
-                return;
-            }
-            *last = Instant::now();
-        }
-        Python::attach(|py| {
-            let result = py.check_signals().and_then(|()| match &progress {
-                Some(callback) => callback.call1(py, (done, total)).map(drop),
-                None => Ok(()),
-            });
-            if let Err(e) = result {
-                raised.lock().expect("error lock").get_or_insert(e);
-                token.cancel();
-            }
-        });
+    let done = AtomicUsize::new(0);
+    let total = AtomicUsize::new(0);
+    let on_progress = |d: usize, t: usize| {
+        // Study points finish out of order: keep the largest count.
+        done.fetch_max(d, Ordering::Relaxed);
+        total.store(t, Ordering::Relaxed);
     };
-    let results = py.detach(|| token.scope(|| execute(loaded, &on_progress)));
-    if let Some(e) = raised.lock().expect("error lock").take() {
+    let (finished, wait) = mpsc::channel::<()>();
+    let wait = Mutex::new(wait);
+    // The first error raised on the caller's side (KeyboardInterrupt, or
+    // the callback's own), re-raised once the run has stopped.
+    let mut raised: Option<PyErr> = None;
+    let results = std::thread::scope(|s| {
+        let worker = s.spawn(|| {
+            let results = token.scope(|| execute(loaded, &on_progress));
+            let _ = finished.send(());
+            results
+        });
+        let mut reported = (0, 0);
+        loop {
+            let over = py.detach(|| {
+                !matches!(
+                    wait.lock()
+                        .expect("wait lock")
+                        .recv_timeout(SIGNAL_CHECK_INTERVAL),
+                    Err(RecvTimeoutError::Timeout)
+                )
+            });
+            if raised.is_none() {
+                let now = (done.load(Ordering::Relaxed), total.load(Ordering::Relaxed));
+                let result = py.check_signals().and_then(|()| match &progress {
+                    Some(callback) if now != reported && now.1 > 0 => {
+                        reported = now;
+                        callback.call1(py, now).map(drop)
+                    }
+                    _ => Ok(()),
+                });
+                if let Err(e) = result {
+                    raised = Some(e);
+                    token.cancel();
+                }
+            }
+            if over {
+                break;
+            }
+        }
+        worker
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+    });
+    if let Some(e) = raised {
         return Err(e);
     }
     let results = match results {

@@ -92,14 +92,16 @@ class _Source:
     kind: str  # "path" or "text"
     scene: str
     name: str
-    # For a dict: the YAML text written and the key path of each line.
+    # For a dict: the key path of each line of the YAML written, and the
+    # lines where a mapping starts (``to_yaml``).
     dict_lines: Optional[List[str]] = None
+    dict_starts: Optional[Dict[int, str]] = None
 
 
 def _source(scene: Scene) -> _Source:
     if isinstance(scene, Mapping):
-        text, paths = to_yaml(scene)
-        return _Source("text", text, "<dict>", paths)
+        text, paths, starts = to_yaml(scene)
+        return _Source("text", text, "<dict>", paths, starts)
     if isinstance(scene, os.PathLike):
         return _Source("path", os.fspath(scene), os.fspath(scene))
     if isinstance(scene, str):
@@ -117,7 +119,9 @@ def _raise_invalid(error: Exception, source: _Source) -> None:
     for file, line, column, message, rendered in items:
         path = None
         if source.dict_lines is not None:
-            path = path_at(source.scene, source.dict_lines, line, column)
+            path = path_at(
+                source.scene, source.dict_lines, source.dict_starts or {}, line, column, message
+            )
         diagnostics.append(Diagnostic(file, line, column, message, path, rendered))
     raise ScenarioError(diagnostics) from None
 

@@ -15,7 +15,7 @@ import math
 import numbers
 import re
 from collections.abc import Mapping, Sequence
-from typing import Any, List, Tuple
+from typing import Any, Dict, List, Tuple
 
 # A key written without quotes: letters, digits, `_`, `-`, `.`, not looking
 # like a number, a boolean or null.
@@ -32,6 +32,8 @@ def _key(key: Any) -> str:
 
 
 def _scalar(value: Any) -> str:
+    if hasattr(value, "item") and getattr(value, "ndim", None) == 0:
+        value = value.item()  # a numpy scalar
     if value is None:
         return "null"
     if isinstance(value, bool):
@@ -61,15 +63,22 @@ def _is_sequence(value: Any) -> bool:
         return False
     if isinstance(value, Sequence):
         return True
-    # numpy arrays and the like
-    return hasattr(value, "tolist") and hasattr(value, "__len__") and not isinstance(value, Mapping)
+    # numpy arrays and the like (a 0-d array is a scalar)
+    return (
+        hasattr(value, "tolist")
+        and getattr(value, "ndim", 1) > 0
+        and hasattr(value, "__len__")
+        and not isinstance(value, Mapping)
+    )
 
 
-def to_yaml(scene: Mapping) -> Tuple[str, List[str]]:
-    """The YAML text of ``scene`` and, for each line (index 0 = line 1), the
-    key path of the entry on it (``""`` for the document)."""
+def to_yaml(scene: Mapping) -> Tuple[str, List[str], Dict[int, str]]:
+    """The YAML text of ``scene``; for each line (index 0 = line 1) the key
+    path of the entry on it; and the lines (1-based) where a mapping's first
+    entry starts, with that mapping's path (``""`` for the scene)."""
     lines: List[str] = []
     paths: List[str] = []
+    starts: Dict[int, str] = {}
 
     def emit(text: str, path: str) -> None:
         lines.append(text)
@@ -79,6 +88,7 @@ def to_yaml(scene: Mapping) -> Tuple[str, List[str]]:
         """Writes the entries of a mapping or the items of a sequence."""
         pad = " " * indent
         if isinstance(value, Mapping):
+            starts[len(lines) + 1] = path
             for k, v in value.items():
                 sub = f"{path}.{k}" if path else str(k)
                 head = f"{pad}{_key(k)}:"
@@ -120,22 +130,30 @@ def to_yaml(scene: Mapping) -> Tuple[str, List[str]]:
     if not isinstance(scene, Mapping):
         raise TypeError(f"a scene dict must be a mapping; got {type(scene).__name__}")
     node(scene, 0, "")
-    return "\n".join(lines) + "\n", paths
+    return "\n".join(lines) + "\n", paths, starts
 
 
-def path_at(text: str, paths: List[str], line: int, column: int) -> str:
+def path_at(
+    text: str, paths: List[str], starts: Dict[int, str], line: int, column: int, message: str
+) -> str:
     """The key path of a diagnostic at ``line``:``column`` (1-based) of the
-    ``text`` that ``to_yaml`` wrote with ``paths``. At the dash of
-    ``- key: value`` (an error about the sequence item itself, such as a
-    missing key) it names the item, not its first key."""
+    ``text`` that ``to_yaml`` wrote with ``paths`` and ``starts``.
+
+    A mapping is located at its first key, so a problem of the mapping as a
+    whole (a missing key) and one of that first key share a place: the
+    message tells them apart. The dash of ``- key: value`` names the item.
+    """
     if not 1 <= line <= len(paths):
         return ""
-    path = paths[line - 1]
     row = text.split("\n")[line - 1]
+    indent = len(row) - len(row.lstrip(" -"))
+    if line in starts and column <= indent + 1 and message.startswith("missing"):
+        return starts[line]
     stripped = row.lstrip(" ")
-    dash_col = len(row) - len(stripped) + 1
-    if stripped.startswith("- ") and column <= dash_col:
+    if stripped.startswith("- ") and column <= len(row) - len(stripped) + 1:
+        path = paths[line - 1]
         cut = path.rfind(".")
         if cut > path.rfind("]"):
             return path[:cut]
-    return path
+        return path
+    return paths[line - 1]
