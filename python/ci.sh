@@ -14,8 +14,6 @@ python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet pytest pandas numpy matplotlib nbclient nbformat ipykernel
 "$venv/bin/pip" install --quiet "$here"
 export VBI_BIN="$repo/target/release/vbi"
-# The notebook runs with the venv's kernel; MPLBACKEND: no display.
-export MPLBACKEND=Agg
 cd "$here"
 # pytest also executes examples/quickstart.ipynb (tests/test_notebook.py).
 "$venv/bin/python" -m pytest -q tests

@@ -35,8 +35,10 @@ def cli_run(scene: Path, out: Path) -> Path:
 
 def read_csv(path: Path) -> pd.DataFrame:
     """A CSV table with every number parsed to the double its shortest
-    round-trip text names (pandas' default parser may be off by an ulp)."""
-    return pd.read_csv(path, float_precision="round_trip")
+    round-trip text names (pandas' C parser before 3.0 may be off by an ulp
+    unless asked for round-trip parsing; 3.0 is exact by default)."""
+    exact = {} if int(pd.__version__.split(".")[0]) >= 3 else {"float_precision": "round_trip"}
+    return pd.read_csv(path, **exact)
 
 
 def bits(values) -> np.ndarray:

@@ -13,7 +13,8 @@ NOTEBOOK = HERE.parent / "examples" / "quickstart.ipynb"
 
 
 def test_quickstart_notebook_executes(monkeypatch):
-    monkeypatch.setenv("MPLBACKEND", "Agg")
+    # The kernel draws inline (images in the outputs) unless told otherwise.
+    monkeypatch.delenv("MPLBACKEND", raising=False)
     nb = nbformat.read(NOTEBOOK, as_version=4)
     client = nbclient.NotebookClient(
         nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(NOTEBOOK.parent)}}
