@@ -198,7 +198,7 @@ fn run<'py>(
     match results {
         Results::Scene(outcome) => {
             out.set_item("kind", "scene")?;
-            scene_results(py, &out, &outcome)?;
+            scene_results(py, &out, *outcome)?;
         }
         study => {
             out.set_item("kind", "study")?;
@@ -228,44 +228,62 @@ fn write_study(
     }
 }
 
-/// A single scene's results: the history as arrays (moved into numpy, not
-/// copied), the summary as JSON text, and the report layer's tables as CSV
-/// text (the same bytes `vbi run` writes).
+/// A single scene's results: the history as arrays (the recorded vectors
+/// handed to numpy as they are, not copied), the summary as JSON text, and
+/// the report layer's tables as CSV text (the same bytes `vbi run` writes).
 fn scene_results(
     py: Python<'_>,
     out: &Bound<'_, PyDict>,
-    outcome: &vbi::run::Outcome,
+    mut outcome: vbi::run::Outcome,
 ) -> PyResult<()> {
     use vbi::report::history_files::{clean_time, each_row, time_decimals};
-    let history = &outcome.history;
     // The time stamps exactly as history.csv writes them.
     let decimals = time_decimals(outcome.model.time_step);
-    let width = history.row_width();
-    // A streamed history is read back from its file; in memory the columns
-    // are taken as they are.
-    let mut rows: Vec<Vec<f64>> = vec![Vec::new(); width];
-    each_row(history, |row| {
-        for (k, &value) in row.iter().enumerate() {
-            rows[k].push(if k == 0 {
-                clean_time(value, decimals)
-            } else {
-                value
-            });
+    let history = &mut outcome.history;
+    let mut time = std::mem::take(&mut history.time);
+    let mut taken: Vec<(Vec<f64>, Option<Vec<f64>>)> = history
+        .columns
+        .iter_mut()
+        .map(|c| (std::mem::take(&mut c.values), c.static_values.take()))
+        .collect();
+    if history.spilled.is_some() {
+        // A streamed history is read back from its file.
+        time.clear();
+        for (values, statics) in &mut taken {
+            values.clear();
+            if let Some(s) = statics {
+                s.clear();
+            }
         }
-    })
-    .map_err(|e| PyOSError::new_err(e.to_string()))?;
-    let mut rows = rows.into_iter();
-    out.set_item("time", rows.next().unwrap_or_default().into_pyarray(py))?;
+        each_row(history, |row| {
+            time.push(row[0]);
+            let mut k = 1;
+            for (values, statics) in &mut taken {
+                values.push(row[k]);
+                k += 1;
+                if let Some(s) = statics {
+                    s.push(row[k]);
+                    k += 1;
+                }
+            }
+        })
+        .map_err(|e| PyOSError::new_err(e.to_string()))?;
+    }
+    for t in &mut time {
+        *t = clean_time(*t, decimals);
+    }
+    out.set_item("time", time.into_pyarray(py))?;
     let columns = PyList::empty(py);
-    for c in &history.columns {
-        let values = rows.next().unwrap_or_default();
-        let statics = c
-            .static_values
-            .as_ref()
-            .map(|_| rows.next().unwrap_or_default().into_pyarray(py));
-        columns.append((c.name.as_str(), c.unit, values.into_pyarray(py), statics))?;
+    for (c, (values, statics)) in history.columns.iter().zip(taken) {
+        columns.append((
+            c.name.as_str(),
+            c.unit,
+            values.into_pyarray(py),
+            statics.map(|s| s.into_pyarray(py)),
+        ))?;
     }
     out.set_item("columns", columns)?;
+    let history = &outcome.history;
     let summary =
         serde_json::to_string_pretty(&outcome.summary).expect("summary serialises") + "\n";
     out.set_item("summary", summary)?;

@@ -190,9 +190,8 @@ pub fn run_slice(
     grid[range]
         .par_iter()
         .map(|&(a, m)| {
-            let point = crate::solve::cancel::in_scope(token.as_ref(), || {
-                run_point(base, bridge, a, m)
-            });
+            let point =
+                crate::solve::cancel::in_scope(token.as_ref(), || run_point(base, bridge, a, m));
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point
