@@ -101,3 +101,19 @@ def test_gil_released_two_threads():
     ratio = two / one
     print(f"one run {one:.3f} s, two threads {two:.3f} s, ratio {ratio:.2f}")
     assert ratio < 1.6, f"two threads took {ratio:.2f}× one run"
+
+
+def test_keyboard_interrupt_stops_a_study():
+    """Ctrl-C also stops a study, whose runs go on worker threads: the
+    caller's thread checks for it and cancels every run in flight."""
+    scene = (SCENARIOS / "lcp-fig6-smooth.yaml").read_text()  # 400 runs
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            vbi.run(scene)
+    finally:
+        timer.cancel()
+    elapsed = time.perf_counter() - start
+    assert elapsed < 5.0, elapsed
