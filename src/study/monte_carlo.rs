@@ -474,19 +474,23 @@ pub fn run_slice(
     }
     let total = range.len();
     let done = AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     let reduced: Vec<(usize, usize, usize, Reduced)> = {
         use rayon::prelude::*;
         jobs.par_iter()
             .map(|&(case, lo, hi)| {
                 let batch = |ks: Range<usize>| {
                     let count = ks.len();
-                    let r = run_batch(
-                        base,
-                        bridge,
-                        mc,
-                        &cases,
-                        case * s + ks.start..case * s + ks.end,
-                    );
+                    let r = crate::solve::cancel::in_scope(token.as_ref(), || {
+                        crate::solve::cancel::check()?;
+                        run_batch(
+                            base,
+                            bridge,
+                            mc,
+                            &cases,
+                            case * s + ks.start..case * s + ks.end,
+                        )
+                    });
                     progress(done.fetch_add(count, Ordering::Relaxed) + count, total);
                     r
                 };

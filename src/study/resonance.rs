@@ -174,10 +174,13 @@ pub fn run_slice(
     let bridge = &damped(bridge, check);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     jobs[range]
         .par_iter()
         .map(|&job| {
-            let point = run_point(base, bridge, check, job);
+            let point = crate::solve::cancel::in_scope(token.as_ref(), || {
+                run_point(base, bridge, check, job)
+            });
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point

@@ -186,10 +186,12 @@ pub fn run_slice(
     let grid = grid(velocity_ratio, mass_ratio);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     grid[range]
         .par_iter()
         .map(|&(a, m)| {
-            let point = run_point(base, bridge, a, m);
+            let point =
+                crate::solve::cancel::in_scope(token.as_ref(), || run_point(base, bridge, a, m));
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point

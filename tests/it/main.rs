@@ -18,6 +18,7 @@ mod automatic;
 mod automatic_shipped;
 mod bad_inputs;
 mod beam_3d;
+mod cancel;
 mod cli;
 mod confined;
 mod converge;

@@ -1,0 +1,119 @@
+"""Good-library behaviour: the GIL is released during a run, Ctrl-C stops
+it with KeyboardInterrupt, progress reaches a callback, nothing is
+printed, and runs are deterministic."""
+
+import _thread
+import os
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import vbi
+from conftest import SCENARIOS
+
+YANG_YAU = SCENARIOS / "yang-yau-sprung-mass.yaml"
+
+
+def slow_scene(time_step: float) -> str:
+    """Yang–Yau's scene with a smaller step: the same physics, more steps
+    (25 m at 100 km/h = 0.9 s of crossing)."""
+    return YANG_YAU.read_text().replace("time_step: 1.0e-4", f"time_step: {time_step!r}")
+
+
+def test_nothing_printed(capfd):
+    vbi.run(YANG_YAU)
+    captured = capfd.readouterr()
+    assert captured.out == ""
+    assert captured.err == ""
+
+
+def test_deterministic():
+    a = vbi.run(YANG_YAU).history.to_numpy()
+    b = vbi.run(YANG_YAU).history.to_numpy()
+    assert np.array_equal(a, b)
+
+
+def test_progress_callback():
+    calls = []
+    vbi.run(slow_scene(2.0e-5), progress=lambda done, total: calls.append((done, total)))
+    assert calls, "the callback was never called"
+    dones = [d for d, _ in calls]
+    assert dones == sorted(dones)
+    total = calls[-1][1]
+    # 0.9 s crossing / 2e-5 s ≥ 45,000 steps; the last call reports the end.
+    assert total >= 45_000 and calls[-1][0] == total
+
+
+def test_progress_exception_stops_the_run():
+    class Stop(Exception):
+        pass
+
+    def stop(done, total):
+        raise Stop
+
+    start = time.perf_counter()
+    with pytest.raises(Stop):
+        vbi.run(slow_scene(1.0e-6), progress=stop)
+    # 900,000 steps take many seconds; the first callback (≤ 0.1 s) stops it.
+    assert time.perf_counter() - start < 5.0
+
+
+def test_keyboard_interrupt():
+    """SIGINT during a run (simulated from a timer thread, as Ctrl-C in a
+    terminal or notebook) raises KeyboardInterrupt within ~0.1 s."""
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            vbi.run(slow_scene(1.0e-6))
+    finally:
+        timer.cancel()
+    elapsed = time.perf_counter() - start
+    # The full run takes far longer (900,000 steps); the interrupt lands
+    # at the next check, every 0.1 s.
+    assert elapsed < 3.0, elapsed
+    # The package still works afterwards.
+    assert len(vbi.run(YANG_YAU).history) == 9001
+
+
+def test_gil_released_two_threads():
+    """Two threads running a scene each finish in about the time of one
+    (on ≥ 2 cores): the GIL is released while the scene computes. With the
+    GIL held they would take twice as long. The bound is loose (1.6) since
+    the machine may be shared."""
+    if (os.cpu_count() or 1) < 2:
+        pytest.skip("needs 2 cores")
+    scene = slow_scene(1.0e-5)
+    vbi.run(YANG_YAU)  # warm up
+    start = time.perf_counter()
+    vbi.run(scene)
+    one = time.perf_counter() - start
+    threads = [threading.Thread(target=vbi.run, args=(scene,)) for _ in range(2)]
+    start = time.perf_counter()
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    two = time.perf_counter() - start
+    ratio = two / one
+    print(f"one run {one:.3f} s, two threads {two:.3f} s, ratio {ratio:.2f}")
+    assert ratio < 1.6, f"two threads took {ratio:.2f}× one run"
+
+
+def test_keyboard_interrupt_stops_a_study():
+    """Ctrl-C also stops a study, whose runs go on worker threads: the
+    caller's thread checks for it and cancels every run in flight."""
+    scene = (SCENARIOS / "lcp-fig6-smooth.yaml").read_text()  # 400 runs
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            vbi.run(scene)
+    finally:
+        timer.cancel()
+    elapsed = time.perf_counter() - start
+    assert elapsed < 5.0, elapsed
