@@ -5,7 +5,7 @@
 //! are reported together, like a compiler.
 
 use super::bridges::resolve_bridge;
-use super::budget::{self, Budget, Limits, LoadOptions};
+use super::budget::{self, Budget, LoadOptions};
 use super::content;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_embs, resolve_iteration, resolve_method,
@@ -483,8 +483,8 @@ pub(super) fn resolve(
             let available = ModalBridge::available_of(&bridge);
             let has = |d| ground_motion.iter().any(|g| g.direction == d);
             let (vertical, lateral) = (
-                has(crate::ground::Direction::Vertical),
-                has(crate::ground::Direction::Lateral),
+                has(crate::scene::Direction::Vertical),
+                has(crate::scene::Direction::Lateral),
             );
             loop {
                 let share = |(participation, mass): (Vec<f64>, f64)| {

@@ -12,8 +12,7 @@ use crate::support::{assert_exit, manifest_dir, text, vbi};
 /// A scratch copy of the shipped 1,584-DOF viaduct scene (its matrices
 /// beside it), with `solver:` replaced by `solver_line`.
 fn viaduct_scene(tag: &str, solver_line: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("vbi-plan-order-{tag}-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("vbi-plan-order-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let data = dir.join("viaduct-2span");
     std::fs::create_dir_all(&data).unwrap();
@@ -24,9 +23,15 @@ fn viaduct_scene(tag: &str, solver_line: &str) -> PathBuf {
     }
     let yaml = std::fs::read_to_string(shipped.join("viaduct-2span-axle-loads.yaml")).unwrap();
     let yaml = yaml
-        .replace("# yaml-language-server: $schema=../schema/vbi.schema.json\n", "")
+        .replace(
+            "# yaml-language-server: $schema=../schema/vbi.schema.json\n",
+            "",
+        )
         .replace("solver: {free_vibration: 0.2}", solver_line);
-    assert!(yaml.contains(solver_line), "the shipped scene's solver line moved");
+    assert!(
+        yaml.contains(solver_line),
+        "the shipped scene's solver line moved"
+    );
     std::fs::write(dir.join("scene.yaml"), yaml).unwrap();
     dir
 }
@@ -39,13 +44,15 @@ fn cache_files(folder: &Path) -> usize {
 fn a_step_budget_refusal_comes_before_the_eigen_solve() {
     // 0.2 s of free vibration plus the ~0.6 s crossing at 300 km/h over
     // 1e-8 s steps: ~8e7 steps, over the default budget of 1e7.
-    let dir = viaduct_scene(
-        "over",
-        "solver: {free_vibration: 0.2, time_step: 1.0e-8}",
-    );
+    let dir = viaduct_scene("over", "solver: {free_vibration: 0.2, time_step: 1.0e-8}");
     let cache = dir.join("cache");
     let out = vbi(
-        &["check", "scene.yaml", "--modes-cache", cache.to_str().unwrap()],
+        &[
+            "check",
+            "scene.yaml",
+            "--modes-cache",
+            cache.to_str().unwrap(),
+        ],
         &dir,
     );
     assert_exit(&out, 2);
@@ -69,10 +76,19 @@ fn the_same_scene_within_budget_does_solve() {
     let dir = viaduct_scene("within", "solver: {free_vibration: 0.2, time_step: 1.0e-4}");
     let cache = dir.join("cache");
     let out = vbi(
-        &["check", "scene.yaml", "--modes-cache", cache.to_str().unwrap()],
+        &[
+            "check",
+            "scene.yaml",
+            "--modes-cache",
+            cache.to_str().unwrap(),
+        ],
         &dir,
     );
     assert_exit(&out, 0);
-    assert!(cache_files(&cache) > 0, "no modes cache written: {}", text(&out.stderr));
+    assert!(
+        cache_files(&cache) > 0,
+        "no modes cache written: {}",
+        text(&out.stderr)
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
