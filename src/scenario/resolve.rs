@@ -246,6 +246,20 @@ pub(super) fn resolve(
     if !budget.model(&bridge, &surface, ck) {
         return None;
     }
+    // The cheapest budget before the dearest work: a step count set by the
+    // file is refused before any eigen solve (issue 23.3).
+    if !super::long_run::steps_fit_before_modes(
+        raw,
+        &vehicles,
+        &ground_motion,
+        &surface,
+        bridge.length(),
+        free_vibration,
+        &budget,
+        ck,
+    ) {
+        return None;
+    }
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let minimum = content::minimum_modes(&bridge);
     // The modes the solve will at least compute, before it starts.
