@@ -478,7 +478,7 @@ impl<'m> Recorder<'m> {
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
-                        && record.direction == Some(crate::bridge::fe_import::Direction::Uy)
+                        && record.direction == Some(crate::scene::imported::Direction::Uy)
                     {
                         model.bridge.mode_values_in(
                             crate::contact::ContactDirection::Lateral,
@@ -915,7 +915,7 @@ fn vertical_ground_terms(
 ) -> Result<(f64, Option<GroundTerm>), BridgeError> {
     let absolute = record.frame == crate::scene::Frame::Absolute;
     let lateral_node =
-        record.node.is_some() && record.direction == Some(crate::bridge::fe_import::Direction::Uy);
+        record.node.is_some() && record.direction == Some(crate::scene::imported::Direction::Uy);
     Ok(match *probe {
         Probe::Lateral { acceleration, .. } => {
             let term = if acceleration {

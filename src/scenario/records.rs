@@ -1,11 +1,11 @@
 //! Resolving `record`: each recorded quantity checked against the bridge and
 //! the vehicles, and the default set when the scene gives none.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::*;
 
-use crate::bridge::fe_import::Direction;
+use crate::scene::imported::Direction;
 use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
@@ -179,7 +179,7 @@ pub(super) fn resolve_records(
             }
             Some(c) => Some(c),
             None if q == Quantity::BridgeMoment && on_plate => {
-                Some(crate::bridge::plate::moments::PlateMoment::Longitudinal)
+                Some(crate::scene::PlateMoment::Longitudinal)
             }
             None => None,
         };

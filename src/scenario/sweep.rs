@@ -2,10 +2,11 @@
 //! roughness entry and sample, the checks of the `study` section, and the
 //! excitation the automatic defaults must cover over the whole sweep.
 
+use super::checker::Checker;
 use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
-use super::resolve::{Checker, MAX_SPEED};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use super::vehicles::MAX_SPEED;
 use crate::scene::{
     Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
@@ -344,7 +345,7 @@ pub(super) fn resolve(
 
 /// Checks a study's speed grid (m/s): positive, ordered, below the speed
 /// limit, 1 to [`MAX_SPEEDS`] values.
-fn check_speeds(ck: &mut Checker<'_>, grid: &super::raw::GridRaw) {
+fn check_speeds(ck: &mut Checker<'_>, grid: &crate::scene::Grid) {
     if grid.from <= 0.0 {
         ck.error(
             "study.speeds.from",

@@ -209,8 +209,8 @@ pub fn assemble(
         additional_damping: check.additional_damping,
         limit: check.deck.acceleration_limit(),
         deck: match check.deck {
-            crate::scenario::raw::DeckRaw::Ballasted => "ballasted".into(),
-            crate::scenario::raw::DeckRaw::DirectFastening => "direct_fastening".into(),
+            crate::scene::Deck::Ballasted => "ballasted".into(),
+            crate::scene::Deck::DirectFastening => "direct_fastening".into(),
         },
         line_speed: check.line_speed,
         max_frequency: check.max_frequency,

@@ -44,6 +44,7 @@ mod multi_wheel;
 mod multi_wheel_lift;
 mod output;
 mod physics;
+mod plan_order;
 mod plate;
 mod plate_truck;
 mod profile_entrance;

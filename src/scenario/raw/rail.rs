@@ -17,12 +17,12 @@ pub struct RailCarRaw {
     pub acceleration: Option<f64>,
     /// Time at which the front wheelset reaches the bridge entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
@@ -97,12 +97,12 @@ pub struct TrainRaw {
     /// Time at which the first car's front wheelset reaches the bridge
     /// entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the first car's front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
@@ -110,16 +110,16 @@ pub struct TrainRaw {
     pub lateral_position: Option<f64>,
     /// Number of identical cars (with `car_spacing`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub count: Option<usize>,
     /// Distance between the front wheelsets of consecutive cars, m (with
     /// `count`); at least a car's wheelset span 2(a + b).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub car_spacing: Option<f64>,
     /// The cars, front first (instead of `count`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub cars: Option<Vec<TrainCarRaw>>,
     /// Overrides of the rail car preset for every car.
     #[serde(default)]
@@ -134,7 +134,7 @@ pub struct TrainCarRaw {
     /// wheelset, m; at least the previous car's wheelset span. Required for
     /// every car but the first (which has none).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub spacing: Option<f64>,
     /// Overrides for this car, on top of the train's `parameters`.
     #[serde(default)]
@@ -161,12 +161,12 @@ pub struct Train3dRaw {
     /// Time at which the first car's front wheelset reaches the bridge
     /// entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the first car's front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
@@ -175,16 +175,16 @@ pub struct Train3dRaw {
     /// Number of identical cars (with `car_spacing` when more than one).
     /// Default 1.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub count: Option<usize>,
     /// Distance between the front wheelsets of consecutive cars, m (with
     /// `count`); more than a car's wheelset span 2(a + b).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub car_spacing: Option<f64>,
     /// The cars, front first (instead of `count`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub cars: Option<Vec<Train3dCarRaw>>,
     /// Overrides of the AVE-S103 preset for every car. The preset is the
     /// EMBS paper's Table 2: body 47 800 kg, roll 119 328, pitch and yaw
@@ -211,7 +211,7 @@ pub struct Train3dCarRaw {
     /// wheelset, m; more than the previous car's wheelset span. Required
     /// for every car but the first.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub spacing: Option<f64>,
     /// Overrides for this car, on top of the train's `parameters`.
     #[serde(default)]

@@ -17,12 +17,12 @@ pub struct H20TruckRaw {
     pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
     pub start_position: Option<f64>,
     /// Transverse position y of the truck's centre line on a plate deck, m.
     /// Default: the deck's centre line.
