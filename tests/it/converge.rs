@@ -417,3 +417,142 @@ fn quantities_are_judged_on_their_own_and_can_be_left_out() {
     let error = converge::converge(&loaded, &unknown, &mut |_, _, _| {}).unwrap_err();
     assert!(error.to_string().contains("no-such-record"), "{error}");
 }
+
+/// The smooth scene in block style, as a user writes it, with keys a pasted
+/// setting must replace (`time_step` inside `solver:`, `modes` inside
+/// `bridge:`) and keys it must leave alone.
+fn block_scene() -> String {
+    "name: smooth-block
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 3.2423e9
+  mass_per_length: 2000.0
+  modes: {count: 4}
+  damping: {type: modal, ratio: 0.02}
+vehicles:
+  - type: oscillator
+    sprung_mass: 4000.0
+    unsprung_mass: 1000.0
+    stiffness: 4.0e6
+    damping: 2.53e4
+    speed: 25.0
+solver:
+  method: coupled
+  time_step: 2.5e-4
+  free_vibration: 0.2
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 10.0}
+  - {name: sprung_acceleration, quantity: vehicle_acceleration, dof: sprung}
+  - {name: contact_force, quantity: contact_force, wheel: 1}
+"
+    .to_string()
+}
+
+/// Pastes a block of `parent:` / `  key: value` lines into `scene`: each
+/// `key` line replaces the line of the same key directly under the same
+/// top-level `parent` (as a user replaces a setting in an editor).
+fn paste(scene: &str, block: &str) -> String {
+    let mut lines: Vec<String> = scene.lines().map(str::to_string).collect();
+    let mut parent = String::new();
+    for line in block.lines().filter(|l| !l.trim_start().starts_with('#')) {
+        if line.trim().is_empty() {
+            continue;
+        }
+        if !line.starts_with(' ') {
+            parent = line.trim_end_matches(':').trim().to_string();
+            assert!(line.trim_end().ends_with(':'), "a parent line: {line:?}");
+            continue;
+        }
+        let key = line.trim_start().split(':').next().unwrap().to_string();
+        let start = lines
+            .iter()
+            .position(|l| *l == format!("{parent}:"))
+            .unwrap_or_else(|| panic!("no `{parent}:` in the scene"));
+        let end = lines[start + 1..]
+            .iter()
+            .position(|l| !l.starts_with(' '))
+            .map_or(lines.len(), |e| start + 1 + e);
+        let at = (start + 1..end)
+            .find(|&i| lines[i].trim_start().starts_with(&format!("{key}:")))
+            .unwrap_or_else(|| panic!("no `{key}` under `{parent}:`"));
+        lines[at] = line.to_string();
+    }
+    lines.join("\n") + "\n"
+}
+
+/// `vbi converge` hands over its answer: the YAML it prints (and writes to
+/// `cheapest.yaml`), pasted into the scene, runs, and the run is the chosen
+/// run of the study bit for bit (every recorded sample, compared by bits).
+#[test]
+fn printed_yaml_pasted_into_the_scene_reproduces_the_chosen_run() {
+    let dir = scratch("paste");
+    let scene = block_scene();
+    std::fs::write(dir.join("scene.yaml"), &scene).unwrap();
+    let out = vbi(
+        &[
+            "converge",
+            "scene.yaml",
+            "--tolerance",
+            "5%",
+            "--levels",
+            "3",
+            "--out",
+            "conv",
+            "--quiet",
+        ],
+        &dir,
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    let block = std::fs::read_to_string(dir.join("conv/cheapest.yaml"))
+        .expect("converge writes cheapest.yaml");
+    let yaml: String = block
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert!(stdout.contains(&yaml), "stdout lacks\n{yaml}\n{stdout}");
+    assert!(yaml.contains("solver:\n  time_step: "), "{yaml}");
+    assert!(yaml.contains("bridge:\n  modes: {count: "), "{yaml}");
+    // The chosen run, named by the summary line, and its resolution from
+    // converge.csv.
+    let label = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("cheapest within 5 %: "))
+        .expect("a cheapest run")
+        .trim();
+    let csv = std::fs::read_to_string(dir.join("conv/converge.csv")).unwrap();
+    let row: Vec<&str> = csv
+        .lines()
+        .find(|l| l.starts_with(&format!("{label},")))
+        .unwrap_or_else(|| panic!("{label} in {csv}"))
+        .split(',')
+        .collect();
+    let resolution = converge::Resolution {
+        time_step: row[1].parse().unwrap(),
+        modes: row[2].parse().unwrap(),
+    };
+    let pasted = paste(&scene, &block);
+    std::fs::write(dir.join("pasted.yaml"), &pasted).unwrap();
+    let run = vbi(&["run", "pasted.yaml", "--out", "run", "--quiet"], &dir);
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let chosen = converge::at_resolution(&load(&scene), resolution).unwrap();
+    let expected = vbi::run::simulate(chosen, &mut |_, _| {}).unwrap().history;
+    let got = vbi::run::simulate(load(&pasted), &mut |_, _| {})
+        .unwrap()
+        .history;
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&got.time), bits(&expected.time), "{pasted}");
+    assert_eq!(got.columns.len(), expected.columns.len());
+    for (g, e) in got.columns.iter().zip(&expected.columns) {
+        assert_eq!(g.name, e.name);
+        assert!(bits(&g.values) == bits(&e.values), "{} differs", g.name);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
