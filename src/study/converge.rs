@@ -38,15 +38,14 @@
 //! the wall times is deterministic.
 
 mod answer;
+mod plot;
 
-use std::path::Path;
 use std::time::Instant;
 
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
 use crate::record::History;
-use crate::report::plot::{self, PlotError, Series};
 use crate::run::{self, Outcome, RunError};
 use crate::scenario::Loaded;
 use crate::scene::Modes;
@@ -690,53 +689,5 @@ impl Convergence {
             }
         }
         out.into_inner().expect("writing to memory")
-    }
-
-    /// Log–log chart of max-abs relative error against wall time (s), one
-    /// series per quantity (the time-step ladder, a break, then the mode
-    /// ladder), and the tolerance as a horizontal line.
-    pub fn plot(&self, path: &Path) -> Result<(), PlotError> {
-        let names = self.quantities();
-        let mut data: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-        // One line per quantity and ladder, labelled with the ladder, so
-        // that the time-step and the mode ladders are told apart.
-        for (ladder, which) in [
-            (Ladder::TimeStep, "Δt ladder"),
-            (Ladder::Modes, "modes ladder"),
-        ] {
-            for (q, name) in names.iter().enumerate() {
-                let (mut x, mut y) = (Vec::new(), Vec::new());
-                for run in self.runs.iter().filter(|r| r.ladder == ladder) {
-                    if let (Some(t), Ok(errors)) = (run.wall_time, &run.errors) {
-                        x.push(t);
-                        y.push(errors[q].max_abs);
-                    }
-                }
-                if !x.is_empty() {
-                    data.push((format!("{name}, {which}"), x, y));
-                }
-            }
-        }
-        let times: Vec<f64> = self.runs.iter().filter_map(|r| r.wall_time).collect();
-        if let (Some(lo), Some(hi)) = (
-            times.iter().copied().reduce(f64::min),
-            times.iter().copied().reduce(f64::max),
-        ) {
-            let label = format!("tolerance {} %", percent(self.tolerance));
-            data.push((label, vec![lo, hi], vec![self.tolerance; 2]));
-        }
-        let series: Vec<Series> = data
-            .iter()
-            .map(|(label, x, y)| Series { label, x, y })
-            .collect();
-        plot::line_chart(
-            path,
-            &format!("{}: error against wall time", self.scenario),
-            "wall time (s)",
-            "max-abs error / max |reference|",
-            &series,
-            true,
-            true,
-        )
     }
 }
