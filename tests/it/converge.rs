@@ -218,6 +218,53 @@ fn cheapest_within_tolerance_is_the_largest_step_that_meets_it() {
     assert_eq!(strict.cheapest, None);
 }
 
+/// With every run within tolerance, the combined ladder pairs each coarser
+/// step with each smaller mode count (finest step, most modes first); runs
+/// outside the tolerance on their own ladder are not combined.
+#[test]
+fn the_combined_ladder_pairs_coarser_steps_with_fewer_modes() {
+    let study = study(&smooth_scene(2.5e-4, ""), 3, 1.0);
+    let combined: Vec<&str> = study
+        .runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::Combined)
+        .map(|r| r.label.as_str())
+        .collect();
+    assert_eq!(
+        combined,
+        [
+            "dt=5e-4 s, 2 modes",
+            "dt=5e-4 s, 1 mode",
+            "dt=1e-3 s, 2 modes",
+            "dt=1e-3 s, 1 mode"
+        ]
+    );
+    // Each combined run is measured against the reference like the others.
+    for run in study.runs.iter().filter(|r| r.ladder == Ladder::Combined) {
+        assert!(run.worst_max_abs().unwrap() > 0.0, "{}", run.label);
+    }
+    // From the measured runs: only the halves within tolerance combine.
+    let at = |ladder, time_step, modes, error| RunReport {
+        ladder,
+        time_step,
+        modes,
+        ..synthetic("", 1.0, error)
+    };
+    let runs = [
+        at(Ladder::TimeStep, 1e-3, 8, 0.001),
+        at(Ladder::TimeStep, 2e-3, 8, 0.005),
+        at(Ladder::TimeStep, 4e-3, 8, 0.05),
+        at(Ladder::Modes, 1e-3, 4, 0.002),
+        at(Ladder::Modes, 1e-3, 2, 0.2),
+    ];
+    let pairs: Vec<(f64, usize)> = converge::combined_plan(&runs, 1e-3, 8, 0.01, &[])
+        .iter()
+        .map(|r| (r.time_step, r.modes))
+        .collect();
+    assert_eq!(pairs, [(2e-3, 4)]);
+    assert!(converge::combined_plan(&runs, 1e-3, 8, 0.0001, &[]).is_empty());
+}
+
 fn synthetic(label: &str, wall_time: f64, error: f64) -> RunReport {
     RunReport {
         label: label.into(),
@@ -345,8 +392,28 @@ fn cli_writes_csv_and_png() {
         lines.next(),
         Some("label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure")
     );
-    // 3 time-step runs + 2 mode runs (2 and 1 modes), 5 quantities each.
-    assert_eq!(lines.count(), 5 * 5);
+    // 3 time-step runs + 2 mode runs (2 and 1 modes), then the combined
+    // ladder's runs (a coarser step with fewer modes, each half within the
+    // tolerance on its own ladder), 5 quantities each.
+    let rows: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect();
+    assert_eq!(rows.len() % 5, 0);
+    let labels: Vec<&str> = rows.iter().step_by(5).map(|r| r[0].as_str()).collect();
+    assert_eq!(
+        labels[..5],
+        [
+            "dt=1e-3 s, 4 modes",
+            "dt=2e-3 s, 4 modes",
+            "dt=4e-3 s, 4 modes",
+            "dt=1e-3 s, 2 modes",
+            "dt=1e-3 s, 1 mode"
+        ]
+    );
+    for row in rows.iter().skip(25).step_by(5) {
+        let (step, modes): (f64, usize) = (row[1].parse().unwrap(), row[2].parse().unwrap());
+        assert!(step > 1e-3 && modes < 4, "{row:?}");
+    }
     let png = std::fs::read(dir.join("conv/converge.png")).unwrap();
     assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
     let _ = std::fs::remove_dir_all(&dir);

@@ -61,7 +61,13 @@ pub fn ladder_chart(
         let area = with_title(root, title)?;
         let columns = area.split_evenly((1, panels.len()));
         for (column, panel) in columns.iter().zip(panels) {
-            let ok_x = |x: f64| if panel.log_x { usable_log(x) } else { usable(x) };
+            let ok_x = |x: f64| {
+                if panel.log_x {
+                    usable_log(x)
+                } else {
+                    usable(x)
+                }
+            };
             let xs = panel
                 .series
                 .iter()
@@ -108,7 +114,9 @@ where
         }
     };
     let y_fmt = tick_formatter(&y_coord.range(), true);
-    let area = area.titled(panel.title, font(DESC_SIZE)).map_err(draw_err)?;
+    let area = area
+        .titled(panel.title, font(DESC_SIZE))
+        .map_err(draw_err)?;
     let mut chart = ChartBuilder::on(&area)
         .margin(15)
         .margin_right(25)
@@ -140,7 +148,11 @@ where
     mesh.draw().map_err(draw_err)?;
 
     let usable_point = |&(x, y): &(f64, f64)| {
-        (if panel.log_x { usable_log(x) } else { usable(x) }) && usable_log(y)
+        (if panel.log_x {
+            usable_log(x)
+        } else {
+            usable(x)
+        }) && usable_log(y)
     };
     let mut all_runs: Vec<Vec<Vec<(f64, f64)>>> = Vec::new();
     let mut legend: Vec<Series> = Vec::new();
@@ -149,13 +161,12 @@ where
     for (k, (s, is_dashed)) in lines.chain(dashed).enumerate() {
         let colour = PALETTE[k % PALETTE.len()];
         let style = colour.stroke_width(2);
-        let points: Vec<(f64, f64)> = s
-            .x
-            .iter()
-            .copied()
-            .zip(s.y.iter().copied())
-            .filter(usable_point)
-            .collect();
+        let points: Vec<(f64, f64)> =
+            s.x.iter()
+                .copied()
+                .zip(s.y.iter().copied())
+                .filter(usable_point)
+                .collect();
         if !s.label.is_empty() {
             let entry = chart
                 .draw_series(LineSeries::new(std::iter::empty(), style))

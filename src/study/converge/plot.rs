@@ -82,7 +82,9 @@ impl Convergence {
 
         let chosen = self.cheapest_run();
         let chosen_label = chosen.map(|r| {
-            let wall = r.wall_time.map_or(String::new(), |t| format!(", {:.3} ms", 1e3 * t));
+            let wall = r
+                .wall_time
+                .map_or(String::new(), |t| format!(", {:.3} ms", 1e3 * t));
             format!("cheapest: {}{wall}", r.label)
         });
         let mark = |ladders: &[Ladder], x: &dyn Fn(&RunReport) -> f64| {

@@ -107,13 +107,15 @@ impl EnvelopeFold {
     /// becomes its envelope.
     fn collapse(&mut self, case: usize) -> Result<(), AssembleError> {
         while self.stack.len() >= 2 {
-            let (a, b) = (&self.stack[self.stack.len() - 2], &self.stack[self.stack.len() - 1]);
+            let (a, b) = (
+                &self.stack[self.stack.len() - 2],
+                &self.stack[self.stack.len() - 1],
+            );
             let (lo, hi) = (a.lo, b.hi);
             if a.hi != lo + (hi - lo) / 2 || !is_tree_node(self.samples, lo, hi) {
                 break;
             }
-            if a.moments.names != b.moments.names || a.moments.time.len() != b.moments.time.len()
-            {
+            if a.moments.names != b.moments.names || a.moments.time.len() != b.moments.time.len() {
                 return Err(AssembleError::Shape { case });
             }
             let b = self.stack.pop().expect("two nodes");
@@ -179,7 +181,10 @@ mod tests {
             time: (0..steps).map(|i| i as f64 * 1e-3).collect(),
             names: vec!["a".into(), "b".into()],
             units: vec!["m".into(), "N".into()],
-            mean: vec![(0..steps).map(x).collect(), (0..steps).map(|i| -x(i)).collect()],
+            mean: vec![
+                (0..steps).map(x).collect(),
+                (0..steps).map(|i| -x(i)).collect(),
+            ],
             m2: vec![vec![0.0; steps], vec![0.0; steps]],
         }
     }
@@ -200,7 +205,13 @@ mod tests {
             let (lo, hi) = (a.max(case * samples), b.min((case + 1) * samples));
             if lo < hi {
                 let mut out = Vec::new();
-                cover(0, samples, lo - case * samples, hi - case * samples, &mut out);
+                cover(
+                    0,
+                    samples,
+                    lo - case * samples,
+                    hi - case * samples,
+                    &mut out,
+                );
                 nodes.extend(out.into_iter().map(|(lo, hi)| Node {
                     case,
                     lo,
@@ -267,7 +278,11 @@ mod tests {
                         .collect()
                 };
                 assert_eq!(fold.envelopes.len(), cases);
-                assert_eq!(bits(&fold.envelopes), bits(&batch), "{samples} samples, {shards} shards");
+                assert_eq!(
+                    bits(&fold.envelopes),
+                    bits(&batch),
+                    "{samples} samples, {shards} shards"
+                );
                 assert_eq!(fold.envelopes, batch);
                 // At most one pending node a tree level (plus the new one).
                 let depth = (samples as f64).log2().ceil() as usize + 1;

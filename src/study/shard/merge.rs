@@ -205,7 +205,13 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
         by_index.insert(index, slot);
     }
     if by_index.len() < count {
-        return Err(missing_error(&by_index, count, size, &first_file, &paths[0]));
+        return Err(missing_error(
+            &by_index,
+            count,
+            size,
+            &first_file,
+            &paths[0],
+        ));
     }
     // The wall time in shard order, as the batch merge summed it.
     let wall_time: f64 = by_index
@@ -431,4 +437,3 @@ impl Fold {
         })
     }
 }
-
