@@ -395,9 +395,7 @@ fn cli_writes_csv_and_png() {
     // 3 time-step runs + 2 mode runs (2 and 1 modes), then the combined
     // ladder's runs (a coarser step with fewer modes, each half within the
     // tolerance on its own ladder), 5 quantities each.
-    let rows: Vec<Vec<String>> = lines
-        .map(|l| l.split(',').map(str::to_string).collect())
-        .collect();
+    let rows = csv_rows(&csv);
     assert_eq!(rows.len() % 5, 0);
     let labels: Vec<&str> = rows.iter().step_by(5).map(|r| r[0].as_str()).collect();
     assert_eq!(
@@ -483,6 +481,14 @@ fn quantities_are_judged_on_their_own_and_can_be_left_out() {
     };
     let error = converge::converge(&loaded, &unknown, &mut |_, _, _| {}).unwrap_err();
     assert!(error.to_string().contains("no-such-record"), "{error}");
+}
+
+/// The records of converge.csv after its header.
+fn csv_rows(text: &str) -> Vec<Vec<String>> {
+    csv::Reader::from_reader(text.as_bytes())
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .collect()
 }
 
 /// The smooth scene in block style, as a user writes it, with keys a pasted
@@ -590,12 +596,10 @@ fn printed_yaml_pasted_into_the_scene_reproduces_the_chosen_run() {
         .expect("a cheapest run")
         .trim();
     let csv = std::fs::read_to_string(dir.join("conv/converge.csv")).unwrap();
-    let row: Vec<&str> = csv
-        .lines()
-        .find(|l| l.starts_with(&format!("{label},")))
-        .unwrap_or_else(|| panic!("{label} in {csv}"))
-        .split(',')
-        .collect();
+    let row = csv_rows(&csv)
+        .into_iter()
+        .find(|r| r[0] == label)
+        .unwrap_or_else(|| panic!("{label} in {csv}"));
     let resolution = converge::Resolution {
         time_step: row[1].parse().unwrap(),
         modes: row[2].parse().unwrap(),

@@ -77,7 +77,14 @@ pub fn ladder_chart(
             let (x_lo, x_hi) = min_max(xs);
             let y = LogCoord::from(y_range.clone().log_scale());
             if panel.log_x {
-                let x = LogCoord::from(log_range(x_lo, x_hi).log_scale());
+                // A little beyond the points rather than whole decades: a
+                // ladder of factors of 2 spans about one decade.
+                let range = if usable_log(x_lo) && x_hi >= x_lo {
+                    (x_lo / 1.5)..(x_hi * 1.5)
+                } else {
+                    log_range(x_lo, x_hi)
+                };
+                let x = LogCoord::from(range.log_scale());
                 draw_panel(column, x, y, panel, y_label, limit, limit_label)?;
             } else {
                 // Whole numbers (mode counts) from 0, with room to the right.
@@ -235,16 +242,18 @@ where
     if let Some((x, y, label)) = panel.chosen
         && usable_point(&(x, y))
     {
-        // Ring and label; the label on the side with room.
-        let (px, _) = chart.backend_coord(&(x, y));
-        let pixels = area.get_pixel_range().0;
-        let (left, right) = (pixels.start, pixels.end);
-        let anchor = if px - left > right - px {
-            Pos::new(HPos::Right, VPos::Bottom)
-        } else {
-            Pos::new(HPos::Left, VPos::Bottom)
-        };
-        let dx = if px - left > right - px { -12 } else { 12 };
+        // Ring and label; the label on the side with room, below the ring
+        // in the upper half (where the tolerance line usually is), else above.
+        let (px, py) = chart.backend_coord(&(x, y));
+        let (xs, ys) = area.get_pixel_range();
+        let (left, right) = (xs.start, xs.end);
+        let upper = py - ys.start < ys.end - py;
+        let to_left = px - left > right - px;
+        let h = if to_left { HPos::Right } else { HPos::Left };
+        let v = if upper { VPos::Top } else { VPos::Bottom };
+        let anchor = Pos::new(h, v);
+        let dx = if to_left { -12 } else { 12 };
+        let dy = if upper { 12 } else { -12 };
         let red = RGBColor(220, 0, 0);
         chart
             .draw_series(std::iter::once(
@@ -252,7 +261,7 @@ where
                     + Circle::new((0, 0), 10, red.stroke_width(3))
                     + Text::new(
                         label.to_string(),
-                        (dx, -12),
+                        (dx, dy),
                         font(LEGEND_SIZE).color(&red).pos(anchor),
                     ),
             ))
