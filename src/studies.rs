@@ -254,8 +254,8 @@ pub(super) fn run_sample(
 /// and returns them on free, but after the first free it raises its mmap
 /// threshold to that size (its dynamic threshold), so the next parts land
 /// in the heap, where fragmentation keeps them resident: measured on the
-/// rail car's 14 MB part, 70 MB peak RSS against 43 MB with the threshold
-/// fixed. Setting `M_MMAP_THRESHOLD` fixes it at glibc's initial 128 kB and
+/// rail car's 14 MB part, 70 MB peak RSS, 47 MB with the threshold fixed
+/// (BENCHMARKS.md, "Studies on a Slurm cluster"). Setting `M_MMAP_THRESHOLD` fixes it at glibc's initial 128 kB and
 /// turns the adjustment off (mallopt(3)).
 fn keep_large_buffers_out_of_the_heap() {
     #[cfg(all(target_os = "linux", target_env = "gnu"))]
