@@ -52,6 +52,9 @@ fn peak_rss(args: &[String], dir: &Path) -> (i32, u64) {
     let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
     let waited = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
     assert_eq!(waited, pid, "wait4");
+    let mut child = child;
+    // Already reaped by wait4: std's wait finds no child (an error, ignored).
+    let _ = child.wait();
     let code = if libc::WIFEXITED(status) {
         libc::WEXITSTATUS(status)
     } else {
