@@ -897,6 +897,22 @@ fn converge(
             study
                 .plot(&out.join("converge.png"))
                 .map_err(|e| e.to_string())
+        })
+        .and_then(|()| {
+            // The answer to paste; none (and no stale one from an earlier
+            // study in the folder) when no run is within tolerance.
+            let path = out.join("cheapest.yaml");
+            match study.cheapest_yaml() {
+                Some(yaml) => {
+                    vbi::report::write_atomic(&path, yaml.as_bytes()).map_err(|e| e.to_string())
+                }
+                None => match std::fs::remove_file(&path) {
+                    Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                        Err(format!("cannot remove {}: {e}", path.display()))
+                    }
+                    _ => Ok(()),
+                },
+            }
         });
     if let Err(e) = written {
         errln!("error: {e}");
@@ -1012,6 +1028,11 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
             ),
             None => outln!("  {name}: no run within {tolerance} %"),
         }
+    }
+    if let Some(yaml) = study.cheapest_yaml() {
+        // Ready to paste (also written to cheapest.yaml).
+        outln!();
+        out!("{yaml}");
     }
 }
 

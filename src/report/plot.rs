@@ -399,11 +399,13 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
 
 mod grid;
 mod history;
+mod ladders;
 mod line;
 mod scale;
 
 use grid::*;
 pub use history::{Marker, Panel, history_chart, history_chart_svg};
+pub use ladders::{LadderPanel, ladder_chart};
 use line::*;
 use scale::*;
 

@@ -18,6 +18,7 @@
 //! (separation, largest gap) are kept per sample and reduced in sample order
 //! when the report is written.
 
+mod fold;
 pub mod report;
 
 use std::collections::HashMap;
@@ -35,6 +36,7 @@ use crate::scenario::sweep;
 use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::solve;
 
+pub use self::fold::EnvelopeFold;
 pub use self::report::write;
 
 /// The seed of sample `index` (from 0): the (index + 1)-th output of
@@ -584,6 +586,26 @@ impl MonteCarloPart {
                     node.case, node.lo, node.hi
                 ));
             }
+        }
+        // Exactly the nodes a run of the slice reduces, in order: the merge
+        // folds them as they come (`EnvelopeFold`).
+        let mut expected = Vec::new();
+        if !range.is_empty() {
+            for case in range.start / s..=(range.end - 1) / s {
+                let (a, b) = (range.start.max(case * s), range.end.min((case + 1) * s));
+                let mut nodes = Vec::new();
+                cover(0, s, a - case * s, b - case * s, &mut nodes);
+                expected.extend(nodes.into_iter().map(|(lo, hi)| (case, lo, hi)));
+            }
+        }
+        let given = self.nodes.iter().map(|n| (n.case, n.lo, n.hi));
+        if !given.eq(expected.iter().copied()) {
+            return Err(format!(
+                "its reduction nodes are not the {} whole tree nodes of runs {}..{}",
+                expected.len(),
+                range.start,
+                range.end
+            ));
         }
         Ok(())
     }

@@ -38,6 +38,7 @@ mod hostile;
 mod lateral_geometry;
 mod lsp;
 mod many_modes;
+mod merge_memory;
 mod modes_cache;
 mod monte_carlo;
 mod multi_wheel;
