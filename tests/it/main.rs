@@ -21,6 +21,7 @@ mod beam_3d;
 mod cli;
 mod confined;
 mod converge;
+mod csv_headers;
 mod embs;
 mod event_reference_oracle;
 mod fe_import;
