@@ -8,13 +8,14 @@ use crate::scenario::quantity_name_of;
 /// `envelopes.csv`: one row per point, for each quantity its max and min
 /// with time and lead-vehicle position, units in the header.
 pub fn envelope_csv(envelope: &Envelope) -> String {
-    let mut out = String::from("x_m");
+    let mut out = String::from("x [m]");
     for column in &envelope.columns {
         let name = quantity_name_of(column.quantity);
         let unit = column.unit;
         for side in ["max", "min"] {
             out.push_str(&format!(
-                ",{name}_{side}_{unit},{name}_{side}_time_s,{name}_{side}_position_m"
+                ",{},{name}_{side}_time [s],{name}_{side}_position [m]",
+                super::heading(&format!("{name}_{side}"), unit)
             ));
         }
     }

@@ -14,10 +14,24 @@ const TITLE_BAND: u32 = 45;
 pub struct Panel<'a> {
     /// Vertical axis label with the unit, e.g. `bridge displacement (m)`.
     pub y_label: String,
-    /// The lines (same x for all panels: time).
+    /// The unit of the values, written after each peak's value (`m`, `N`).
+    pub unit: String,
+    /// The lines (same x for all panels: time); each one's peak (largest
+    /// |value|) is marked and labelled with its value and time.
     pub series: Vec<Series<'a>>,
-    /// Lines drawn thin and grey (e.g. the static response), not in the legend.
-    pub references: Vec<Series<'a>>,
+    /// Lines that belong to a series (e.g. its static response), drawn thin
+    /// and dashed in its colour, each with its own legend entry (its label).
+    pub references: Vec<Reference<'a>>,
+}
+
+/// A line drawn with a series of its panel (the static crossing response of
+/// a deflection): `of` is the index of that series in the panel.
+#[derive(Debug, Clone)]
+pub struct Reference<'a> {
+    /// Index of the series in [`Panel::series`] it belongs to.
+    pub of: usize,
+    /// The line (its label is its legend entry).
+    pub line: Series<'a>,
 }
 
 /// A vertical line across every panel at `x`, labelled at the top.
@@ -58,7 +72,7 @@ pub(super) fn render_history(
     }
     for s in panels
         .iter()
-        .flat_map(|p| p.series.iter().chain(&p.references))
+        .flat_map(|p| p.series.iter().chain(p.references.iter().map(|r| &r.line)))
     {
         if s.x.len() != s.y.len() {
             return Err(PlotError::InvalidInput(format!(
@@ -83,7 +97,7 @@ fn x_range_of(panels: &[Panel]) -> Range<f64> {
     let (x_lo, x_hi) = min_max(
         panels
             .iter()
-            .flat_map(|p| p.series.iter().chain(&p.references))
+            .flat_map(|p| p.series.iter().chain(p.references.iter().map(|r| &r.line)))
             .flat_map(|s| s.x.iter().copied())
             .filter(|&v| usable(v)),
     );
@@ -124,7 +138,9 @@ fn draw_history<DB: DrawingBackend>(
     markers: &[Marker],
     x_range: &Range<f64>,
 ) -> Result<(), PlotError> {
-    let body = root.titled(title, font(TITLE_SIZE)).map_err(draw_err)?;
+    let body = root
+        .titled(title, title_font(root, title))
+        .map_err(draw_err)?;
     let rows = body.split_evenly((panels.len(), 1));
     for (k, (panel, area)) in panels.iter().zip(&rows).enumerate() {
         let last = k + 1 == panels.len();
@@ -179,7 +195,7 @@ fn draw_panel<DB: DrawingBackend>(
     let references: Vec<Vec<(f64, f64)>> = panel
         .references
         .iter()
-        .map(|s| reduce(s.x, s.y, buckets))
+        .map(|r| reduce(r.line.x, r.line.y, buckets))
         .collect();
     let (y_lo, y_hi) = min_max(lines.iter().chain(&references).flatten().map(|p| p.1));
     let y_range = linear_range(y_lo, y_hi, 0.08);
@@ -246,25 +262,85 @@ fn draw_panel<DB: DrawingBackend>(
             .map_err(draw_err)?;
         }
     }
-    for line in &references {
+    let colour = |k: usize| PALETTE[k % PALETTE.len()];
+    for (r, line) in panel.references.iter().zip(&references) {
+        // A lighter, dashed line in its series' colour: which static
+        // response belongs to which record, when several share a panel.
+        let style = colour(r.of).mix(0.55).stroke_width(2);
         chart
-            .draw_series(LineSeries::new(
-                line.iter().copied(),
-                RGBColor(150, 150, 150).stroke_width(1),
-            ))
+            .draw_series(DashedLineSeries::new(line.iter().copied(), 8, 5, style))
             .map_err(draw_err)?;
+        if !r.line.label.is_empty() {
+            chart
+                .draw_series(LineSeries::new(std::iter::empty(), style))
+                .map_err(draw_err)?
+                .label(r.line.label)
+                .legend(move |(x, y)| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new(vec![(0, 0), (10, 0)], style)
+                        + PathElement::new(vec![(14, 0), (24, 0)], style)
+                });
+        }
     }
     for (k, (s, line)) in panel.series.iter().zip(&lines).enumerate() {
-        let style = PALETTE[k % PALETTE.len()].stroke_width(2);
+        let style = colour(k).stroke_width(2);
         chart
             .draw_series(LineSeries::new(line.iter().copied(), style))
             .map_err(draw_err)?
             .label(s.label)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
     }
-    if panel.series.iter().any(|s| !s.label.is_empty()) {
-        let runs: Vec<Vec<Vec<(f64, f64)>>> = lines.iter().map(|l| vec![l.clone()]).collect();
-        let position = legend_position(&chart, &panel.series, &runs)?;
+    // Peaks over the lines: a ring and `value unit at t` beside it.
+    for (k, s) in panel.series.iter().enumerate() {
+        let Some((t, v)) = peak(s.x, s.y) else {
+            continue;
+        };
+        let c = colour(k);
+        chart
+            .draw_series(std::iter::once(Circle::new((t, v), 5, c.stroke_width(2))))
+            .map_err(draw_err)?;
+        let at = chart.backend_coord(&(t, v));
+        let base = area.get_base_pixel();
+        let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+        // Right of the ring, or left of it in the right third; above a
+        // maximum and below a minimum (away from the line), one line
+        // further per series so that neighbouring peaks' labels do not
+        // sit on each other; inside the plotting area.
+        let right_third = at.0 > px_x.start + 2 * (px_x.end - px_x.start) / 3;
+        let (h, dx) = if right_third {
+            (HPos::Right, -9)
+        } else {
+            (HPos::Left, 9)
+        };
+        let step = (LABEL_SIZE as i32) + 2;
+        let above = v >= 0.0;
+        let dy = if above {
+            -step - step * k as i32
+        } else {
+            4 + step * k as i32
+        };
+        let y = (at.1 + dy).clamp(px_y.start + 2, px_y.end - step);
+        let style = font(LABEL_SIZE - 1.0).color(&c).pos(Pos::new(h, VPos::Top));
+        area.draw(&Text::new(
+            peak_label(v, &panel.unit, t),
+            (at.0 + dx - base.0, y - base.1),
+            style,
+        ))
+        .map_err(draw_err)?;
+    }
+    let labelled: Vec<Series> = panel
+        .series
+        .iter()
+        .chain(panel.references.iter().map(|r| &r.line))
+        .copied()
+        .collect();
+    if labelled.iter().any(|s| !s.label.is_empty()) {
+        let runs: Vec<Vec<Vec<(f64, f64)>>> = lines
+            .iter()
+            .chain(&references)
+            .map(|l| vec![l.clone()])
+            .collect();
+        let position = legend_position(&chart, &labelled, &runs)?;
         chart
             .configure_series_labels()
             .position(position)
@@ -276,4 +352,34 @@ fn draw_panel<DB: DrawingBackend>(
             .map_err(draw_err)?;
     }
     Ok(())
+}
+
+/// The sample of largest |y| (the first of equals), as (x, y).
+pub(super) fn peak(x: &[f64], y: &[f64]) -> Option<(f64, f64)> {
+    x.iter()
+        .zip(y)
+        .filter(|&(&a, &b)| usable(a) && usable(b))
+        .fold(None, |best: Option<(f64, f64)>, (&a, &b)| match best {
+            Some((_, v)) if v.abs() >= b.abs() => best,
+            _ => Some((a, b)),
+        })
+}
+
+/// A peak's label: the value to 4 significant digits with its unit, and
+/// its time to the millisecond (`-5.772×10⁻⁴ m at 1.100 s`).
+pub(super) fn peak_label(value: f64, unit: &str, time: f64) -> String {
+    let magnitude = value.abs();
+    let value = if magnitude == 0.0 || (1e-2..1e5).contains(&magnitude) {
+        let decimals = (3 - magnitude.log10().floor() as i32).clamp(0, 6) as usize;
+        format!("{value:.decimals$}")
+    } else {
+        pow10_digits(value, 4)
+    };
+    let value = value.replacen('-', "−", 1);
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    format!("{value}{unit} at {time:.3} s")
 }
