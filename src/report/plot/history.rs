@@ -142,10 +142,16 @@ fn draw_history<DB: DrawingBackend>(
         .titled(title, title_font(root, title))
         .map_err(draw_err)?;
     let rows = body.split_evenly((panels.len(), 1));
+    // The unit of x for the peak labels: `time (s)` → `s`.
+    let x_unit = x_label
+        .rsplit_once('(')
+        .and_then(|(_, u)| u.strip_suffix(')'))
+        .unwrap_or("")
+        .to_string();
     for (k, (panel, area)) in panels.iter().zip(&rows).enumerate() {
         let last = k + 1 == panels.len();
         let x_label = if last { x_label } else { "" };
-        draw_panel(area, panel, x_range, x_label, markers, k == 0)?;
+        draw_panel(area, panel, x_range, x_label, &x_unit, markers, k == 0)?;
     }
     Ok(())
 }
@@ -183,6 +189,7 @@ fn draw_panel<DB: DrawingBackend>(
     panel: &Panel,
     x_range: &Range<f64>,
     x_label: &str,
+    x_unit: &str,
     markers: &[Marker],
     label_markers: bool,
 ) -> Result<(), PlotError> {
@@ -322,7 +329,7 @@ fn draw_panel<DB: DrawingBackend>(
         let y = (at.1 + dy).clamp(px_y.start + 2, px_y.end - step);
         let style = font(LABEL_SIZE - 1.0).color(&c).pos(Pos::new(h, VPos::Top));
         area.draw(&Text::new(
-            peak_label(v, &panel.unit, t),
+            peak_label(v, &panel.unit, t, x_unit),
             (at.0 + dx - base.0, y - base.1),
             style,
         ))
@@ -366,8 +373,8 @@ pub(super) fn peak(x: &[f64], y: &[f64]) -> Option<(f64, f64)> {
 }
 
 /// A peak's label: the value to 4 significant digits with its unit, and
-/// its time to the millisecond (`-5.772×10⁻⁴ m at 1.100 s`).
-pub(super) fn peak_label(value: f64, unit: &str, time: f64) -> String {
+/// where, its abscissa to 3 decimals in `x_unit` (`-5.772×10⁻⁴ m at 1.100 s`).
+pub(super) fn peak_label(value: f64, unit: &str, time: f64, x_unit: &str) -> String {
     let magnitude = value.abs();
     let value = if magnitude == 0.0 || (1e-2..1e5).contains(&magnitude) {
         let decimals = (3 - magnitude.log10().floor() as i32).clamp(0, 6) as usize;
@@ -381,5 +388,10 @@ pub(super) fn peak_label(value: f64, unit: &str, time: f64) -> String {
     } else {
         format!(" {unit}")
     };
-    format!("{value}{unit} at {time:.3} s")
+    let x_unit = if x_unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {x_unit}")
+    };
+    format!("{value}{unit} at {time:.3}{x_unit}")
 }

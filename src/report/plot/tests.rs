@@ -712,15 +712,15 @@ fn history_peaks_are_the_largest_magnitude_and_read_value_unit_and_time() {
     );
     assert_eq!(history::peak(&t, &[f64::NAN; 4]), None);
     assert_eq!(
-        history::peak_label(-5.7718e-4, "m", 1.09968),
+        history::peak_label(-5.7718e-4, "m", 1.09968, "s"),
         "−5.772×10⁻⁴ m at 1.100 s"
     );
     assert_eq!(
-        history::peak_label(123456.0, "N", 2.0),
-        "1.235×10⁵ N at 2.000 s"
+        history::peak_label(123456.0, "N*m", 12.5, "m"),
+        "1.235×10⁵ N*m at 12.500 m"
     );
     assert_eq!(
-        history::peak_label(1.2346, "m/s^2", 0.25),
+        history::peak_label(1.2346, "m/s^2", 0.25, "s"),
         "1.235 m/s^2 at 0.250 s"
     );
 }
