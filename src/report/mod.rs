@@ -67,6 +67,10 @@ pub fn heading(name: &str, unit: &str) -> String {
 /// `359 km/h` is written `359`, not `359.00000000000006` (issue 26.5).
 pub use crate::scenario::resonance_grid::km_h;
 
+/// `x` rounded to 12 significant digits, for output: the float noise of
+/// k·Δt or of a unit conversion removed (`0.018000000000000002` → `0.018`).
+pub use crate::scenario::resonance_grid::clean;
+
 /// Shortest round-trip text of `x`: plain notation for moderate magnitudes,
 /// exponent notation for very small or large ones, and `0` for ±0.
 pub fn number(x: f64) -> String {

@@ -46,6 +46,7 @@ mod output;
 mod physics;
 mod plate;
 mod plate_truck;
+mod plots;
 mod profile_entrance;
 mod rail_car;
 mod regress;

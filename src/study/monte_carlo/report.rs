@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use super::MonteCarloResults;
 use crate::report::plot::{Series, line_chart, line_chart_over_samples};
-use crate::report::{heading, km_h, number, write_atomic};
+use crate::report::{clean, heading, km_h, number, write_atomic};
 use crate::run::RunError;
 use crate::scene::Scenario;
 
@@ -275,7 +275,8 @@ impl MonteCarloResults {
             let cells = self.case_cells(c);
             for (i, &t) in m.time.iter().enumerate() {
                 let mut row = cells.to_vec();
-                row.push(number(t));
+                // k·Δt without its float noise (0.018, not 0.018000000000000002).
+                row.push(number(clean(t)));
                 for (mean, s) in m.mean.iter().zip(&std) {
                     let (mu, sigma) = (mean[i], s[i]);
                     row.extend([
@@ -322,10 +323,13 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
             .zip(&std[r])
             .map(|(mu, s)| mu + 3.0 * s)
             .collect();
+        // Every line in the legend: the grey samples under one entry.
+        let samples_label = format!("{} of {} samples", shown.len(), m.count);
         let mut series: Vec<Series> = shown
             .iter()
-            .map(|h| Series {
-                label: "",
+            .enumerate()
+            .map(|(k, h)| Series {
+                label: if k == 0 { &samples_label } else { "" },
                 x: &m.time,
                 y: &h[r],
             })
