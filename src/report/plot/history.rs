@@ -298,6 +298,12 @@ fn draw_panel<DB: DrawingBackend>(
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
     }
     // Peaks over the lines: a ring and `value unit at t` beside it.
+    let base = area.get_base_pixel();
+    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+    let step = (LABEL_SIZE as i32) + 2;
+    // The marker labels take the first line of the first panel.
+    let top = px_y.start + 2 + if label_markers { step } else { 0 };
+    let mut labels = Vec::new();
     for (k, s) in panel.series.iter().enumerate() {
         let Some((t, v)) = peak(s.x, s.y) else {
             continue;
@@ -307,33 +313,28 @@ fn draw_panel<DB: DrawingBackend>(
             .draw_series(std::iter::once(Circle::new((t, v), 5, c.stroke_width(2))))
             .map_err(draw_err)?;
         let at = chart.backend_coord(&(t, v));
-        let base = area.get_base_pixel();
-        let (px_x, px_y) = chart.plotting_area().get_pixel_range();
         // Right of the ring, or left of it in the right third; above a
         // maximum and below a minimum (away from the line), one line
         // further per series so that neighbouring peaks' labels do not
         // sit on each other; inside the plotting area.
         let right_third = at.0 > px_x.start + 2 * (px_x.end - px_x.start) / 3;
-        let (h, dx) = if right_third {
-            (HPos::Right, -9)
+        let text = peak_label(v, &panel.unit, t, x_unit);
+        let style = font(LABEL_SIZE - 1.0).color(&c);
+        let width = area
+            .estimate_text_size(&text, &style)
+            .map_or(200, |(w, _)| w as i32);
+        let left = if right_third {
+            at.0 - 9 - width
         } else {
-            (HPos::Left, 9)
+            at.0 + 9
         };
-        let step = (LABEL_SIZE as i32) + 2;
-        let above = v >= 0.0;
-        let dy = if above {
+        let dy = if v >= 0.0 {
             -step - step * k as i32
         } else {
             4 + step * k as i32
         };
-        let y = (at.1 + dy).clamp(px_y.start + 2, px_y.end - step);
-        let style = font(LABEL_SIZE - 1.0).color(&c).pos(Pos::new(h, VPos::Top));
-        area.draw(&Text::new(
-            peak_label(v, &panel.unit, t, x_unit),
-            (at.0 + dx - base.0, y - base.1),
-            style,
-        ))
-        .map_err(draw_err)?;
+        let y = (at.1 + dy).clamp(top, (px_y.end - step).max(top));
+        labels.push((text, style, (left, y), width));
     }
     let labelled: Vec<Series> = panel
         .series
@@ -342,10 +343,30 @@ fn draw_panel<DB: DrawingBackend>(
         .copied()
         .collect();
     if labelled.iter().any(|s| !s.label.is_empty()) {
+        // The legend avoids the lines and the peak labels (each label's
+        // outline, in data coordinates, counts as a line).
+        let to_data = |(px, py): (i32, i32)| {
+            let fx = f64::from(px - px_x.start) / f64::from((px_x.end - px_x.start).max(1));
+            let fy = f64::from(py - px_y.start) / f64::from((px_y.end - px_y.start).max(1));
+            (
+                x_range.start + fx * (x_range.end - x_range.start),
+                y_range.end - fy * (y_range.end - y_range.start),
+            )
+        };
         let runs: Vec<Vec<Vec<(f64, f64)>>> = lines
             .iter()
             .chain(&references)
             .map(|l| vec![l.clone()])
+            .chain(labels.iter().map(|(_, _, (x, y), w)| {
+                let corners = [
+                    (*x, *y),
+                    (x + w, *y),
+                    (x + w, y + step),
+                    (*x, y + step),
+                    (*x, *y),
+                ];
+                vec![corners.into_iter().map(to_data).collect()]
+            }))
             .collect();
         let position = legend_position(&chart, &labelled, &runs)?;
         chart
@@ -356,6 +377,11 @@ fn draw_panel<DB: DrawingBackend>(
             .border_style(BLACK)
             .margin(6)
             .draw()
+            .map_err(draw_err)?;
+    }
+    // Labels last: over the legend box if it could go nowhere else.
+    for (text, style, (x, y), _) in labels {
+        area.draw(&Text::new(text, (x - base.0, y - base.1), style))
             .map_err(draw_err)?;
     }
     Ok(())
