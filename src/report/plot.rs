@@ -369,14 +369,14 @@ fn with_title<'a>(root: &Area<'a>, title: &str) -> Result<Area<'a>, PlotError> {
 const MIN_TITLE_SIZE: f64 = 11.0;
 
 /// The title's font: [`TITLE_SIZE`], or as much smaller as a long title
-/// needs to fit the image's width with 10 px each side. A centred title
+/// needs to fit the image's width with 20 px each side. A centred title
 /// wider than the image is cut at both edges (the Monte Carlo plots' long
 /// titles lost their scene name).
 fn title_font<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
 ) -> TextStyle<'static> {
-    let room = f64::from(root.dim_in_pixel().0) - 20.0;
+    let room = f64::from(root.dim_in_pixel().0) - 40.0;
     let mut size = TITLE_SIZE;
     while size > MIN_TITLE_SIZE {
         match root.estimate_text_size(title, &font(size)) {

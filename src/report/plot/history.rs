@@ -319,9 +319,8 @@ fn draw_panel<DB: DrawingBackend>(
         // sit on each other; inside the plotting area.
         let right_third = at.0 > px_x.start + 2 * (px_x.end - px_x.start) / 3;
         let text = peak_label(v, &panel.unit, t, x_unit);
-        let style = font(LABEL_SIZE - 1.0).color(&c);
         let width = area
-            .estimate_text_size(&text, &style)
+            .estimate_text_size(&text, &font(LABEL_SIZE - 1.0))
             .map_or(200, |(w, _)| w as i32);
         let left = if right_third {
             at.0 - 9 - width
@@ -334,7 +333,7 @@ fn draw_panel<DB: DrawingBackend>(
             4 + step * k as i32
         };
         let y = (at.1 + dy).clamp(top, (px_y.end - step).max(top));
-        labels.push((text, style, (left, y), width));
+        labels.push((text, k, (left, y), width));
     }
     let labelled: Vec<Series> = panel
         .series
@@ -380,7 +379,9 @@ fn draw_panel<DB: DrawingBackend>(
             .map_err(draw_err)?;
     }
     // Labels last: over the legend box if it could go nowhere else.
-    for (text, style, (x, y), _) in labels {
+    for (text, k, (x, y), _) in labels {
+        let c = colour(k);
+        let style = font(LABEL_SIZE - 1.0).color(&c);
         area.draw(&Text::new(text, (x - base.0, y - base.1), style))
             .map_err(draw_err)?;
     }
