@@ -175,7 +175,7 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
     // A plot of old against new for the changed history column.
     let plot = plots
         .join("moving-force-slow")
-        .join("history-midspan_m_min.png");
+        .join("history-midspan_min_m.png");
     assert!(plot.is_file(), "no plot {}:\n{report}", plot.display());
     assert!(report.contains("plot: "), "{report}");
 }
