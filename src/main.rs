@@ -552,7 +552,9 @@ fn run(
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
-        let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+        // No length until the run reports one: a bar of length 0 reads
+        // 100 % (indicatif), which flashed before every run's first step.
+        let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
         bar.set_style(
             ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {percent}% eta {eta}")
                 .expect("valid template")
@@ -561,10 +563,7 @@ fn run(
         bar.set_message(scenario.name.clone());
         bar
     };
-    let progress = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-    };
+    let progress = |done: usize, total: usize| studies::advance(&bar, done, total);
     let results = match vbi::execute::execute_into(loaded, &out, &progress) {
         Ok(r) => r,
         Err(e) => {
@@ -856,7 +855,7 @@ fn converge(
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
-        let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+        let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
         bar.set_style(
             ProgressStyle::with_template("{spinner} run {pos}/{len} {msg}")
                 .expect("valid template"),

@@ -32,6 +32,10 @@ pub struct PositionRef {
     pub vehicle: usize,
     /// Distance behind the front axle, m.
     pub offset: f64,
+    /// The wheel, numbered from 1 in its vehicle, when the record is that
+    /// wheel's own (a contact force or gap); `None` for the vehicle's front
+    /// axle as a reference (bridge and vehicle-body records).
+    pub wheel: Option<usize>,
 }
 
 /// How a column is computed each step.
@@ -466,6 +470,7 @@ impl<'m> Recorder<'m> {
         let lead = PositionRef {
             vehicle: 0,
             offset: 0.0,
+            wheel: None,
         };
         let mut columns = Vec::with_capacity(records.len());
         for record in records {
@@ -581,7 +586,11 @@ impl<'m> Recorder<'m> {
                         .wheel_index(vehicle, wheel)
                         .expect("wheel numbers were validated when resolving");
                     let offset = model.vehicles[vehicle].wheels[wheel].offset;
-                    let position = PositionRef { vehicle, offset };
+                    let position = PositionRef {
+                        vehicle,
+                        offset,
+                        wheel: Some(wheel + 1),
+                    };
                     if record.quantity == Quantity::ContactForce {
                         (Probe::ContactForce { wheel: flat }, "N", position)
                     } else {
@@ -602,6 +611,7 @@ impl<'m> Recorder<'m> {
                     let position = PositionRef {
                         vehicle,
                         offset: 0.0,
+                        wheel: None,
                     };
                     if record.quantity == Quantity::VehicleDisplacement {
                         (Probe::VehicleDisplacement { vehicle, dof }, "m", position)

@@ -659,14 +659,14 @@ impl Convergence {
         }
     }
 
-    /// CSV, one row per ladder run × quantity: `label, time_step` (s),
-    /// `modes, steps, wall_time` (s), `quantity, max_abs_error, rms_error`
+    /// CSV, one row per ladder run × quantity: `label, time_step [s]`,
+    /// `modes, steps, wall_time [s]`, `quantity, max_abs_error, rms_error`
     /// (dimensionless fractions), `failure` (the message of a failed run,
     /// whose other measured fields are empty).
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
-        let header =
-            "label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure";
+        let header = "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,\
+                      rms_error,failure";
         out.write_record(header.split(','))
             .expect("writing to memory");
         let number = crate::report::number;

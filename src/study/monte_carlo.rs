@@ -334,7 +334,7 @@ fn failed_sample(
     let (case, index) = (flat / mc.samples, flat % mc.samples);
     let mut label = sweep::label(&base.surface, cases[case].entry);
     if let Some(speed) = cases[case].speed {
-        label += &format!(", {:.1} km/h", speed * speed_sweep::KM_H);
+        label += &format!(", {:.1} km/h", crate::report::km_h(speed));
     }
     RunError::Sample {
         sample: index + 1,

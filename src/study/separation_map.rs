@@ -241,17 +241,17 @@ impl SeparationMap {
         out.write_record([
             "velocity_ratio",
             "mass_ratio",
-            "speed",
-            "sprung_mass",
-            "unsprung_mass",
-            "stiffness",
-            "damping",
-            "contact_stiffness",
+            "speed [m/s]",
+            "sprung_mass [kg]",
+            "unsprung_mass [kg]",
+            "stiffness [N/m]",
+            "damping [N*s/m]",
+            "contact_stiffness [N/m]",
             "separated",
             "episodes",
-            "first_loss_position",
-            "max_gap",
-            "min_contact_force",
+            "first_loss_position [m]",
+            "max_gap [m]",
+            "min_contact_force [N]",
         ])
         .expect("writing to memory");
         let number = crate::report::number;

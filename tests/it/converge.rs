@@ -390,7 +390,9 @@ fn cli_writes_csv_and_png() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
-        Some("label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure")
+        Some(
+            "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,rms_error,failure"
+        )
     );
     // 3 time-step runs + 2 mode runs (2 and 1 modes), then the combined
     // ladder's runs (a coarser step with fewer modes, each half within the
