@@ -46,11 +46,8 @@ const LAYERS: &[&[&str]] = &[
 /// when its imports are gone (the test fails on a stale line too).
 const KNOWN_UPWARD: &[(&str, &str)] = &[
     // The format builds bridges and solves eigenproblems for automatic
-    // choices and budgets (the planning stage is not yet split out: the
-    // automatic mode choice is `scenario::automatic_modes`), reads the data
-    // files a scene names with the physics modules' readers (matrices,
-    // AT2/table records) and takes vehicle constants (DOF names, wheelset
-    // spans, `motion::time_to_cover`) and surface grids from them.
+    // choices and budgets (the planning stage is not yet split out), and
+    // holds physics types in the resolved scene.
     ("scenario", "bridge"),
     ("scenario", "ground"),
     ("scenario", "surface"),

@@ -7,8 +7,8 @@
 use serde::Deserialize;
 
 use super::budget::{Budget, LoadOptions};
-use super::checker::Checker;
 use super::raw::{BridgeRaw, LimitsRaw};
+use super::resolve::Checker;
 use super::{LoadError, bridges, content, de, parse_raw};
 use crate::bridge::{ModalBridge, ModeRequest};
 use crate::scene::Scenario;

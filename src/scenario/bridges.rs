@@ -1,9 +1,8 @@
 //! Resolving `bridge`: the beam and the plate deck, with their checks and
 //! defaults.
 
-use super::checker::{Checker, check_ratio};
 use super::raw;
-use super::resolve::DEFAULT_ELEMENTS_PER_SPAN;
+use super::resolve::{Checker, DEFAULT_ELEMENTS_PER_SPAN, check_ratio};
 use crate::scene::*;
 
 /// Default Ritz transverse functions.

@@ -3,8 +3,8 @@
 //! elastic stiffness from a ratio, a Hertz coefficient from a wheel radius),
 //! the solver method the contact needs, and studies.
 
-use super::checker::Checker;
 use super::raw;
+use super::resolve::Checker;
 use crate::bridge::ModalBridge;
 use crate::scene::*;
 
@@ -63,10 +63,10 @@ pub(super) fn derive_dimensionless(
             groups.frequency_ratio,
             "frequency ratio",
         );
-        super::checker::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
+        super::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
         let mut derived = groups.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
         // The derived speed is blamed on the ratio that gives it.
-        if derived.speed > super::vehicles::MAX_SPEED {
+        if derived.speed > super::resolve::MAX_SPEED {
             ck.error(
                 &dpath("velocity_ratio"),
                 format!(
@@ -75,7 +75,7 @@ pub(super) fn derive_dimensionless(
                     groups.velocity_ratio,
                     derived.speed,
                     modal.length,
-                    super::vehicles::MAX_SPEED
+                    super::resolve::MAX_SPEED
                 ),
             );
         }
@@ -114,8 +114,8 @@ pub(super) fn derive_dimensionless(
             derived.speed,
             "speed",
         );
-        derived.acceleration = super::vehicles::check_acceleration(ck, &at, o.acceleration);
-        derived.entry_time = super::vehicles::entry_time(
+        derived.acceleration = super::resolve::check_acceleration(ck, &at, o.acceleration);
+        derived.entry_time = super::resolve::entry_time(
             ck,
             &at,
             derived.speed,

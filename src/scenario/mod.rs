@@ -6,12 +6,10 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
-mod automatic_modes;
 pub mod bridge_only;
 pub mod bridges;
 pub mod budget;
 mod cars;
-mod checker;
 pub mod content;
 pub mod data_files;
 #[allow(missing_docs)]
@@ -39,7 +37,6 @@ pub mod schema;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;
-pub mod vehicles;
 #[allow(missing_docs)]
 pub mod yaml;
 
@@ -393,7 +390,7 @@ pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
 pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Loaded, LoadError> {
     let (raw, node) = parse_raw(source, file)?;
     let source = source.strip_prefix(BOM).unwrap_or(source);
-    let mut checker = checker::Checker::new(file, source, &node);
+    let mut checker = resolve::Checker::new(file, source, &node);
     match resolve::resolve(&raw, &mut checker, options) {
         Some((scenario, bridge)) if checker.diagnostics.is_empty() => {
             Ok(Loaded { scenario, bridge })

@@ -38,7 +38,7 @@
 //! | explicit time step | 1e-9 to 1 | s |
 //! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
 
-use super::checker::Checker;
+use super::resolve::Checker;
 use crate::bridge::ModalBridge;
 use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
 
@@ -465,14 +465,14 @@ pub(super) fn check_study(
         point.mass_ratio = m;
         let derived = point.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
         let speed = derived.speed;
-        if !(speed > 0.0 && speed <= super::vehicles::MAX_SPEED) {
+        if !(speed > 0.0 && speed <= super::resolve::MAX_SPEED) {
             ck.error(
                 vpath,
                 format!(
                     "the study's velocity ratio {v} gives a speed of {} m/s (2 × ratio × f1 × L with f1 = {f1:.4} Hz, L = {} m), outside 0 to {} m/s",
                     number(speed),
                     modal.length,
-                    super::vehicles::MAX_SPEED
+                    super::resolve::MAX_SPEED
                 ),
             );
         }

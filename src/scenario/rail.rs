@@ -2,10 +2,9 @@
 //! train's expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
-use super::checker::Checker;
 use super::plausible::{DAMPING, MASS, MOMENT_OF_INERTIA, STIFFNESS, VEHICLE_LENGTH, within};
 use super::raw;
-use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
+use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
 use crate::vehicle::rail_car::wheelset_span;
 

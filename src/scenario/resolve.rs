@@ -6,16 +6,16 @@
 
 use super::bridges::resolve_bridge;
 use super::budget::{self, Budget, LoadOptions};
-use super::checker::Checker;
 use super::content;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_embs, resolve_iteration, resolve_method,
     resolve_study,
 };
+use super::diagnostic::{Diagnostic, Lines};
 use super::plausible;
 use super::raw::{self, ScenarioRaw};
 use super::records::resolve_records;
-use super::vehicles::resolve_vehicles;
+use super::yaml::{Location, Node, PathSeg};
 use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
 use crate::scene::*;
 
@@ -25,6 +25,113 @@ pub const DEFAULT_ELEMENTS_PER_SPAN: usize = 20;
 pub const DEFAULT_GRAVITY: f64 = 9.81;
 /// HHT α used by default with rigid unilateral contact.
 pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
+
+/// Collects diagnostics while resolving one file.
+pub(super) struct Checker<'a> {
+    file: &'a str,
+    lines: Lines<'a>,
+    root: &'a Node,
+    /// Where the files the scene names may be read from.
+    data: super::data_files::DataAccess,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Parses "vehicles[0].speed" into path segments.
+fn parse_path(path: &str) -> Vec<PathSeg<'_>> {
+    let mut segs = Vec::new();
+    for part in path.split('.') {
+        let (key, rest) = part.split_once('[').unwrap_or((part, ""));
+        if !key.is_empty() {
+            segs.push(PathSeg::Key(key));
+        }
+        for idx in rest.split('[') {
+            if let Ok(i) = idx.trim_end_matches(']').parse() {
+                segs.push(PathSeg::Index(i));
+            }
+        }
+    }
+    segs
+}
+
+impl<'a> Checker<'a> {
+    pub(super) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
+        Self {
+            file,
+            lines: Lines::new(source),
+            root,
+            data: Default::default(),
+            diagnostics: Vec::new(),
+        }
+    }
+
+    /// Sets where the files the scene names may be read from.
+    pub(super) fn set_data_access(&mut self, data: super::data_files::DataAccess) {
+        self.data = data;
+    }
+
+    /// Where the files the scene names may be read from.
+    pub(super) fn data_access(&self) -> &super::data_files::DataAccess {
+        &self.data
+    }
+
+    fn location(&self, path: &str) -> Location {
+        self.root.locate(&parse_path(path))
+    }
+
+    /// Records an error at `path`.
+    pub(super) fn error(&mut self, path: &str, message: impl Into<String>) {
+        let loc = self.location(path);
+        let diagnostic = self.lines.diagnostic(self.file, loc, message);
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// The scenario file's name as given (relative paths in the scene are
+    /// relative to its folder).
+    pub(super) fn file(&self) -> &str {
+        self.file
+    }
+
+    pub(super) fn positive(&mut self, path: &str, value: f64, what: &str) {
+        if value <= 0.0 {
+            self.error(path, format!("{what} must be positive, got {value}"));
+        }
+    }
+
+    /// Whether the file writes the key at `path` (defaults are blamed on the
+    /// section that could set them instead).
+    pub(super) fn has(&self, path: &str) -> bool {
+        let segs = parse_path(path);
+        let (last, parent) = match segs.split_last() {
+            Some((PathSeg::Key(k), parent)) => (*k, parent),
+            _ => return false,
+        };
+        let mut node = self.root;
+        for seg in parent {
+            let next = match seg {
+                PathSeg::Key(k) => node.get(k),
+                PathSeg::Index(i) => match &node.kind {
+                    super::yaml::NodeKind::Sequence(items) => items.get(*i),
+                    _ => None,
+                },
+            };
+            match next {
+                Some(n) => node = n,
+                None => return false,
+            }
+        }
+        node.get(last).is_some()
+    }
+
+    pub(super) fn non_negative(&mut self, path: &str, value: f64, what: &str) {
+        if value < 0.0 {
+            self.error(path, format!("{what} must not be negative, got {value}"));
+        }
+    }
+}
+
+/// Share of the bridge's mass the automatic modes carry under ground
+/// motion (EN 1998-1 4.3.3.3.1(3)).
+const GROUND_MASS_SHARE: f64 = 0.9;
 
 /// Resolves a parsed scenario. Returns the scenario with every default filled
 /// in and the modal bridge built on the way (mode selection and the default
@@ -310,19 +417,137 @@ pub(super) fn resolve(
         (a, b) => a.or(b),
     };
     if automatic {
-        let cutoff = super::automatic_modes::choose(
-            &mut modal,
-            &bridge,
-            &build,
-            &excitations,
-            record_cutoff,
-            &vehicles,
-            &ground_motion,
-            minimum,
-            gravity,
-            &budget,
-            ck,
-        )?;
+        // Automatic: keep the modes this scene excites; write the cut-off back
+        // so the resolved scenario reproduces the choice.
+        let (mut cutoff, mut dynamic, top) = content::mode_cutoff(&modal, &excitations);
+        // Deck accelerations sum every mode up to their own cut-off (30 Hz
+        // or more, EN 1990 A2.4.4.2.1(4)): keep all of them, so that the
+        // filtered acceleration is complete and converges with the step.
+        let acceleration_cut = record_cutoff.filter(|&cut| cut > cutoff);
+        if let Some(cut) = acceleration_cut {
+            cutoff = cut;
+            dynamic = true;
+        }
+        // Heavy wheels feel the bridge's acceleration under them, which a
+        // few modes resolve poorly: keep twice the minimum.
+        let heavy = content::heavy_wheels(&vehicles, &bridge, gravity);
+        let floor = if heavy {
+            (2 * minimum).min(ModalBridge::available_of(&bridge))
+        } else {
+            minimum
+        };
+        dynamic |= heavy;
+        if dynamic {
+            // The cut-off the excitation asks for may keep more modes than the
+            // budget allows (a very long or very flexible span): count them
+            // with one factorisation before solving for them.
+            let kept = ModalBridge::count_up_to(&bridge, cutoff)
+                .ok()
+                .flatten()
+                .map_or(floor, |n| n.max(floor));
+            if !budget.check(
+                ck,
+                "bridge.spans",
+                "modes",
+                &format!("bridge modes up to the {cutoff:.4} Hz the vehicles excite"),
+                kept as f64,
+            ) || !budget.eigen(ck, "bridge.spans", &bridge, kept)
+            {
+                return None;
+            }
+            modal = match build(ModeRequest::AtLeastUpTo(floor, cutoff)) {
+                Ok(m) => m,
+                Err((path, message)) => {
+                    ck.error(path, message);
+                    return None;
+                }
+            };
+        }
+        // The cut-off written back must reproduce the modes kept.
+        cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
+        modal.selection = match acceleration_cut {
+            _ if heavy => format!(
+                "automatic: {} modes up to {cutoff:.2} Hz, at least twice the {minimum} of the \
+                 minimum because a wheel's mass exceeds {} of a span's (its contact force \
+                 follows the deck's acceleration under it)",
+                modal.mode_count(),
+                content::HEAVY_WHEEL_RATIO
+            ),
+            Some(cut) => format!(
+                "automatic: {} modes, every one up to {cut:.2} Hz that the deck accelerations \
+                 sum (EN 1990 A2.4.4.2.1: max(30 Hz, 1.5 f₁, f₃) unless the record sets \
+                 `max_frequency`)",
+                modal.mode_count()
+            ),
+            None => content::mode_reason(
+                modal.mode_count(),
+                cutoff,
+                dynamic,
+                &top,
+                content::modes_per_span(&bridge),
+            ),
+        };
+        // Ground motion: keep modes until they carry 90 % of the bridge's
+        // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
+        // vertical record excites the symmetric modes, each less than the
+        // last, so a few suffice.
+        // A lateral record asks the same of the lateral modes (a bridge in
+        // the vertical plane has no lateral mass to carry: skipped).
+        if !ground_motion.is_empty() {
+            let available = ModalBridge::available_of(&bridge);
+            let has = |d| ground_motion.iter().any(|g| g.direction == d);
+            let (vertical, lateral) = (
+                has(crate::scene::Direction::Vertical),
+                has(crate::scene::Direction::Lateral),
+            );
+            loop {
+                let share = |(participation, mass): (Vec<f64>, f64)| {
+                    if mass > 0.0 {
+                        participation.iter().map(|g| g * g).sum::<f64>() / mass
+                    } else {
+                        1.0
+                    }
+                };
+                let mut ratio = 1.0f64;
+                if vertical {
+                    ratio = ratio.min(share(modal.vertical_participation(&bridge)));
+                }
+                if lateral {
+                    ratio = ratio.min(share(modal.lateral_participation(&bridge)));
+                }
+                let count = modal.mode_count();
+                if ratio >= GROUND_MASS_SHARE || count >= available {
+                    if ratio >= GROUND_MASS_SHARE {
+                        modal.selection.push_str(&format!(
+                            "; for the ground motion they carry {:.1} % of the bridge's mass (EN 1998-1 4.3.3.3.1: at least {:.0} %)",
+                            100.0 * ratio,
+                            100.0 * GROUND_MASS_SHARE
+                        ));
+                    }
+                    break;
+                }
+                let more = (2 * count).min(available);
+                if !budget.check(
+                    ck,
+                    "ground_motion",
+                    "modes",
+                    "bridge modes for 90 % of the mass under ground motion",
+                    more as f64,
+                ) || !budget.eigen(ck, "ground_motion", &bridge, more)
+                {
+                    return None;
+                }
+                modal = match build(ModeRequest::Lowest(more)) {
+                    Ok(m) => m,
+                    Err((path, message)) => {
+                        ck.error(path, message);
+                        return None;
+                    }
+                };
+            }
+            let top = modal.frequencies().last().copied().unwrap_or(0.0);
+            cutoff = cutoff.max(top);
+        }
         // Written back as the count kept and the cut-off (at least the
         // last kept mode's own frequency): the count cannot round a mode
         // away, the cut-off says why ([`ModalBridge::build_cached`]).
@@ -554,4 +779,356 @@ pub(super) fn resolve(
             .collect(),
     };
     Some((scenario, modal))
+}
+
+pub(super) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
+    if !(0.0..1.0).contains(&ratio) {
+        ck.error(
+            path,
+            format!("a damping ratio must be in [0, 1), got {ratio}"),
+        );
+    }
+}
+
+/// Entry time from `entry_time` / `start_position` (front axle at t = 0),
+/// for a vehicle at `speed` (m/s, at t = 0) with constant `acceleration`
+/// (m/s²). A braking vehicle must still be moving when it reaches the
+/// entrance: one that stops before gets a located error.
+pub(super) fn entry_time(
+    ck: &mut Checker<'_>,
+    at: &str,
+    speed: f64,
+    acceleration: f64,
+    entry_time: Option<f64>,
+    start_position: Option<f64>,
+) -> f64 {
+    let stop = crate::vehicle::motion::Motion {
+        speed,
+        acceleration,
+        entry_time: 0.0,
+    }
+    .stop_time();
+    match (entry_time, start_position) {
+        (Some(_), Some(_)) => {
+            ck.error(
+                &format!("{at}.start_position"),
+                "give `entry_time` or `start_position`, not both",
+            );
+            0.0
+        }
+        (Some(t), None) => {
+            ck.non_negative(&format!("{at}.entry_time"), t, "entry time");
+            if let Some(stop) = stop.filter(|&stop| t >= stop && speed > 0.0) {
+                ck.error(
+                    &format!("{at}.entry_time"),
+                    format!(
+                        "braking at {acceleration} m/s² from {speed} m/s, the vehicle stops at \
+                         t = {stop:.4} s, before its entry time of {t} s"
+                    ),
+                );
+            }
+            t
+        }
+        (None, Some(x)) => {
+            if x > 0.0 {
+                ck.error(
+                    &format!("{at}.start_position"),
+                    format!("the vehicle must start on the approach (start_position ≤ 0), got {x}"),
+                );
+            }
+            if speed <= 0.0 || !acceleration.is_finite() {
+                return 0.0;
+            }
+            match crate::vehicle::motion::time_to_cover(speed, acceleration, (-x).max(0.0)) {
+                Some(t) => t,
+                None => {
+                    let reach = speed * speed / (-2.0 * acceleration);
+                    ck.error(
+                        &format!("{at}.acceleration"),
+                        format!(
+                            "braking at {acceleration} m/s² from {speed} m/s, the vehicle stops \
+                             after {reach:.4} m, {:.4} m before the bridge (start_position {x})",
+                            -x - reach
+                        ),
+                    );
+                    0.0
+                }
+            }
+        }
+        (None, None) => 0.0,
+    }
+}
+
+/// Largest |acceleration| accepted, m/s² (ten times what any train or road
+/// vehicle brakes at; beyond it the input is surely a unit mistake).
+pub const MAX_ACCELERATION: f64 = 100.0;
+
+/// Checks a vehicle's acceleration (`None`: 0) and returns it, m/s².
+pub(super) fn check_acceleration(ck: &mut Checker<'_>, at: &str, acceleration: Option<f64>) -> f64 {
+    let a = acceleration.unwrap_or(0.0);
+    if !a.is_finite() || a.abs() > MAX_ACCELERATION {
+        ck.error(
+            &format!("{at}.acceleration"),
+            format!("an acceleration must be a number within ±{MAX_ACCELERATION} m/s², got {a}"),
+        );
+        return 0.0;
+    }
+    a
+}
+
+/// Highest vehicle speed accepted, m/s (beyond any vehicle; keeps the time
+/// grid and the contact kinematics meaningful).
+pub const MAX_SPEED: f64 = 1000.0;
+
+pub(super) fn check_speed(ck: &mut Checker<'_>, at: &str, speed: f64) {
+    ck.positive(&format!("{at}.speed"), speed, "speed");
+    if speed > MAX_SPEED {
+        ck.error(
+            &format!("{at}.speed"),
+            format!("a speed of {speed} m/s is above {MAX_SPEED} m/s"),
+        );
+    }
+}
+
+fn resolve_vehicles(
+    raws: &[raw::VehicleRaw],
+    width: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Option<Vec<Vehicle>> {
+    let before = ck.diagnostics.len();
+    if raws.is_empty() {
+        ck.error("vehicles", "`vehicles` needs at least one vehicle");
+    }
+    let mut out = Vec::with_capacity(raws.len());
+    for (i, raw) in raws.iter().enumerate() {
+        let at = format!("vehicles[{i}]");
+        // An HSLM train is its table's moving forces.
+        let hslm;
+        let raw = match raw {
+            raw::VehicleRaw::Hslm(h) => {
+                hslm = raw::VehicleRaw::MovingForce(h.moving_force());
+                &hslm
+            }
+            other => other,
+        };
+        match raw {
+            raw::VehicleRaw::MovingForce(v) => {
+                check_speed(ck, &at, v.speed.0);
+                if v.loads.is_empty() {
+                    ck.error(
+                        &format!("{at}.loads"),
+                        "`loads` needs at least one axle load",
+                    );
+                }
+                for (k, &p) in v.loads.iter().enumerate() {
+                    ck.positive(&format!("{at}.loads[{k}]"), p, "an axle load");
+                }
+                let spacings = match (&v.axle_positions, &v.axle_spacings) {
+                    (Some(positions), given) => {
+                        if given.is_some() {
+                            ck.error(
+                                &format!("{at}.axle_positions"),
+                                "give `axle_spacings` or `axle_positions`, not both",
+                            );
+                        }
+                        axle_positions_to_spacings(ck, &at, positions, v.loads.len())
+                    }
+                    (None, given) => given.clone().unwrap_or_default(),
+                };
+                if v.axle_positions.is_none() && spacings.len() + 1 != v.loads.len().max(1) {
+                    let path = if v.axle_spacings.is_some() {
+                        format!("{at}.axle_spacings")
+                    } else {
+                        at.clone()
+                    };
+                    ck.error(
+                        &path,
+                        format!(
+                            "{} axle loads need {} axle spacings, found {}",
+                            v.loads.len(),
+                            v.loads.len().saturating_sub(1),
+                            spacings.len()
+                        ),
+                    );
+                }
+                for (k, &s) in spacings.iter().enumerate() {
+                    ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
+                }
+                let acceleration = check_acceleration(ck, &at, v.acceleration);
+                let entry = entry_time(
+                    ck,
+                    &at,
+                    v.speed.0,
+                    acceleration,
+                    v.entry_time,
+                    v.start_position,
+                );
+                out.push(Vehicle::MovingForce(MovingForce {
+                    loads: v.loads.clone(),
+                    axle_spacings: spacings,
+                    speed: v.speed.0,
+                    acceleration,
+                    entry_time: entry,
+                    lateral_position: lateral(ck, &at, v.lateral_position, width, 0.0),
+                }));
+            }
+            raw::VehicleRaw::Oscillator(v) => {
+                let unsprung = v.unsprung_mass.unwrap_or(0.0);
+                let lateral_position = lateral(ck, &at, v.lateral_position, width, 0.0);
+                let damping = v.damping.unwrap_or(0.0);
+                if v.dimensionless.is_some() {
+                    // Derived once the bridge's first frequency is known.
+                    out.push(Vehicle::Oscillator(Oscillator {
+                        sprung_mass: 0.0,
+                        unsprung_mass: 0.0,
+                        stiffness: 0.0,
+                        damping: 0.0,
+                        speed: 0.0,
+                        acceleration: 0.0,
+                        entry_time: 0.0,
+                        lateral_position,
+                        dimensionless: None,
+                    }));
+                    continue;
+                }
+                let mut required = |field: &str, value: Option<f64>| {
+                    value.unwrap_or_else(|| {
+                        ck.error(
+                            &at,
+                            format!("an oscillator needs `{field}` (or `dimensionless`)"),
+                        );
+                        0.0
+                    })
+                };
+                let (sprung, stiffness, speed) = (
+                    required("sprung_mass", v.sprung_mass),
+                    required("stiffness", v.stiffness),
+                    required("speed", v.speed.map(|s| s.0)),
+                );
+                check_speed(ck, &at, speed);
+                ck.positive(&format!("{at}.sprung_mass"), sprung, "sprung mass");
+                ck.non_negative(&format!("{at}.unsprung_mass"), unsprung, "unsprung mass");
+                ck.positive(
+                    &format!("{at}.stiffness"),
+                    stiffness,
+                    "suspension stiffness",
+                );
+                ck.non_negative(&format!("{at}.damping"), damping, "suspension damping");
+                let acceleration = check_acceleration(ck, &at, v.acceleration);
+                let entry =
+                    entry_time(ck, &at, speed, acceleration, v.entry_time, v.start_position);
+                out.push(Vehicle::Oscillator(Oscillator {
+                    sprung_mass: sprung,
+                    unsprung_mass: unsprung,
+                    stiffness,
+                    damping,
+                    speed,
+                    acceleration,
+                    entry_time: entry,
+                    lateral_position,
+                    dimensionless: None,
+                }));
+            }
+            raw::VehicleRaw::H20Truck(v) => {
+                out.push(super::truck::resolve_h20(v, &at, width, ck));
+            }
+            raw::VehicleRaw::RailCar(v) => {
+                out.push(super::rail::resolve_rail_car(v, &at, width, ck));
+            }
+            // Turned into moving forces above.
+            raw::VehicleRaw::Hslm(_) => {}
+            raw::VehicleRaw::Train(v) => {
+                out.push(super::rail::resolve_train(v, &at, width, ck));
+            }
+            raw::VehicleRaw::Train3d(v) => {
+                out.push(super::rail_3d::resolve_train_3d(v, &at, width, ck));
+            }
+        }
+    }
+    (ck.diagnostics.len() == before).then_some(out)
+}
+
+/// An axle-load train's axle positions behind its front axle (0 first,
+/// strictly increasing, one per load) as the spacings between consecutive
+/// axles, m; errors at `{at}.axle_positions`.
+fn axle_positions_to_spacings(
+    ck: &mut Checker<'_>,
+    at: &str,
+    positions: &[f64],
+    loads: usize,
+) -> Vec<f64> {
+    let path = format!("{at}.axle_positions");
+    if positions.len() != loads {
+        ck.error(
+            &path,
+            format!(
+                "{loads} axle loads need {loads} axle positions, found {}",
+                positions.len()
+            ),
+        );
+        return Vec::new();
+    }
+    if let Some(&first) = positions.first()
+        && first != 0.0
+    {
+        ck.error(
+            &format!("{path}[0]"),
+            format!("the front axle is the reference: its position must be 0, got {first}"),
+        );
+    }
+    let mut spacings = Vec::with_capacity(positions.len().saturating_sub(1));
+    for (k, pair) in positions.windows(2).enumerate() {
+        let spacing = pair[1] - pair[0];
+        if spacing <= 0.0 {
+            ck.error(
+                &format!("{path}[{}]", k + 1),
+                format!(
+                    "axle positions must increase from front to rear: {} m follows {} m",
+                    pair[1], pair[0]
+                ),
+            );
+        }
+        spacings.push(spacing);
+    }
+    spacings
+}
+
+/// The transverse position of a vehicle's path: only on a plate (default
+/// its centre line), with every wheel at `half_track` either side on the deck.
+pub(super) fn lateral(
+    ck: &mut Checker<'_>,
+    at: &str,
+    given: Option<f64>,
+    width: Option<f64>,
+    half_track: f64,
+) -> Option<f64> {
+    match (given, width) {
+        (Some(_), None) => {
+            ck.error(
+                &format!("{at}.lateral_position"),
+                "`lateral_position` places a vehicle across a plate deck; a beam has no width",
+            );
+            None
+        }
+        (None, None) => None,
+        (given, Some(width)) => {
+            let y = given.unwrap_or(width / 2.0);
+            if y - half_track < 0.0 || y + half_track > width {
+                let path = if given.is_some() {
+                    format!("{at}.lateral_position")
+                } else {
+                    at.to_owned()
+                };
+                ck.error(
+                    &path,
+                    format!(
+                        "wheels at y = {:.4} to {:.4} m fall off the deck, which spans 0 to {width} m",
+                        y - half_track,
+                        y + half_track
+                    ),
+                );
+            }
+            Some(y)
+        }
+    }
 }

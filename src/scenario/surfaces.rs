@@ -6,8 +6,8 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
-use super::checker::Checker;
 use super::raw;
+use super::resolve::Checker;
 use crate::scene::{Rails, RoughnessClass};
 use crate::scene::{Sampling, Surface, Vehicle};
 use crate::surface::grid_nodes;

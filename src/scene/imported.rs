@@ -91,7 +91,7 @@ pub struct ImportedModel {
     /// included), kg: the inertia load of a unit lateral ground
     /// acceleration; all zero for a model without lateral DOFs.
     pub lateral_inertia: Vec<f64>,
-    /// How a wheel's load passes onto the track at its ends ([`entry`](crate::bridge::fe_import::entry));
+    /// How a wheel's load passes onto the track at its ends ([`entry`]);
     /// none unless the scene sets it.
     pub entry: RailEntry,
 }

@@ -39,27 +39,27 @@ pub enum IsoClass {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "spectrum", rename_all = "snake_case")]
 pub enum Spectrum {
-    /// FRA vertical profile, class 1–6 ([`fra_vertical`](crate::surface::spectrum::fra_vertical)).
+    /// FRA vertical profile, class 1–6 ([`fra_vertical`]).
     Fra {
         /// Track class 1 (worst) to 6 (best).
         class: u8,
     },
-    /// German high-speed vertical profile ([`german_vertical`](crate::surface::spectrum::german_vertical)).
+    /// German high-speed vertical profile ([`german_vertical`]).
     German {
         /// Interference level.
         interference: Interference,
     },
-    /// ISO 8608 road class ([`iso8608`](crate::surface::spectrum::iso8608)).
+    /// ISO 8608 road class ([`iso8608`]).
     Iso8608 {
         /// Road class A–H.
         class: IsoClass,
     },
-    /// FRA alignment (lateral), class 1–6 ([`fra_alignment`](crate::surface::spectrum::fra_alignment)).
+    /// FRA alignment (lateral), class 1–6 ([`fra_alignment`]).
     FraAlignment {
         /// Track class 1 (worst) to 6 (best).
         class: u8,
     },
-    /// German high-speed alignment ([`german_alignment`](crate::surface::spectrum::german_alignment)).
+    /// German high-speed alignment ([`german_alignment`]).
     GermanAlignment {
         /// Interference level.
         interference: Interference,
