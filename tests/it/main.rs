@@ -41,6 +41,7 @@ mod modes_cache;
 mod monte_carlo;
 mod multi_wheel;
 mod multi_wheel_lift;
+mod one_round;
 mod output;
 mod physics;
 mod plate;
