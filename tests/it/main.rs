@@ -64,4 +64,5 @@ mod surfaces;
 mod train_3d;
 mod truck;
 mod trust;
+mod units;
 mod untrusted;

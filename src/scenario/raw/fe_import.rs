@@ -57,6 +57,8 @@ pub struct FeImportRaw {
     /// the whole load on at once.
     #[serde(default)]
     #[schemars(range(min = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub entry_length: Option<f64>,
 }
 
@@ -92,6 +94,8 @@ pub struct RailNodeRaw {
     /// Node id.
     pub node: u64,
     /// Position along the track, m.
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub x: f64,
 }
 
