@@ -452,8 +452,16 @@ pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<L
         .iter()
         .map(|d| (d.loc.line, d.loc.col, d.message.clone()))
         .collect();
+    // A vehicle lost to a type error renumbers the ones after it: the
+    // records' vehicle numbers are not checked against that list.
+    let renumbered = node
+        .get("vehicles")
+        .is_some_and(|v| parsed.pruned.contains(&v.loc))
+        .then(|| section_lines(&node, "record"))
+        .flatten();
     for d in checker.diagnostics {
-        let consequence = parsed.pruned.contains(&d.loc);
+        let consequence = parsed.pruned.contains(&d.loc)
+            || renumbered.is_some_and(|(from, to)| (from..to).contains(&d.loc.line));
         if !consequence && seen.insert((d.loc.line, d.loc.col, d.message.clone())) {
             diagnostics.push(d);
         }
@@ -468,4 +476,20 @@ pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<L
             Err(LoadError::Invalid(diagnostics))
         }
     }
+}
+
+/// The lines a top-level section spans: from its key to the next top-level
+/// key (or the end of the file).
+fn section_lines(root: &yaml::Node, key: &str) -> Option<(usize, usize)> {
+    let yaml::NodeKind::Mapping(entries) = &root.kind else {
+        return None;
+    };
+    let from = root.key_loc(key)?.line;
+    let to = entries
+        .iter()
+        .map(|(k, _)| k.loc.line)
+        .filter(|&line| line > from)
+        .min()
+        .unwrap_or(usize::MAX);
+    Some((from, to))
 }

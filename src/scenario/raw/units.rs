@@ -48,6 +48,7 @@ pub struct Dimension {
 
 use Scale::{Decimal, Factor};
 
+/// A length and its units.
 pub const LENGTH: Dimension = Dimension {
     name: "a length",
     si: "m",
@@ -58,16 +59,19 @@ pub const LENGTH: Dimension = Dimension {
         ("km", Decimal(3)),
     ],
 };
+/// A mass and its units.
 pub const MASS: Dimension = Dimension {
     name: "a mass",
     si: "kg",
     units: &[("kg", Decimal(0)), ("t", Decimal(3))],
 };
+/// A force and its units.
 pub const FORCE: Dimension = Dimension {
     name: "a force",
     si: "N",
     units: &[("N", Decimal(0)), ("kN", Decimal(3)), ("MN", Decimal(6))],
 };
+/// A stiffness and its units.
 pub const STIFFNESS: Dimension = Dimension {
     name: "a stiffness",
     si: "N/m",
@@ -79,6 +83,7 @@ pub const STIFFNESS: Dimension = Dimension {
         ("kN/mm", Decimal(6)),
     ],
 };
+/// A damping coefficient and its units.
 pub const DAMPING: Dimension = Dimension {
     name: "a damping coefficient",
     si: "N*s/m",
@@ -88,21 +93,25 @@ pub const DAMPING: Dimension = Dimension {
         ("MN*s/m", Decimal(6)),
     ],
 };
+/// A time and its units.
 pub const TIME: Dimension = Dimension {
     name: "a time",
     si: "s",
     units: &[("s", Decimal(0)), ("ms", Decimal(-3)), ("min", Factor(60.0))],
 };
+/// A frequency and its units.
 pub const FREQUENCY: Dimension = Dimension {
     name: "a frequency",
     si: "Hz",
     units: &[("Hz", Decimal(0)), ("kHz", Decimal(3))],
 };
+/// An acceleration and its units.
 pub const ACCELERATION: Dimension = Dimension {
     name: "an acceleration",
     si: "m/s^2",
     units: &[("m/s^2", Decimal(0)), ("g", Factor(STANDARD_GRAVITY))],
 };
+/// A bending stiffness and its units.
 pub const BENDING_STIFFNESS: Dimension = Dimension {
     name: "a bending stiffness",
     si: "N*m^2",
@@ -113,21 +122,25 @@ pub const BENDING_STIFFNESS: Dimension = Dimension {
         ("GN*m^2", Decimal(9)),
     ],
 };
+/// A mass per length and its units.
 pub const MASS_PER_LENGTH: Dimension = Dimension {
     name: "a mass per length",
     si: "kg/m",
     units: &[("kg/m", Decimal(0)), ("t/m", Decimal(3))],
 };
+/// A mass per area and its units.
 pub const MASS_PER_AREA: Dimension = Dimension {
     name: "a mass per area",
     si: "kg/m^2",
     units: &[("kg/m^2", Decimal(0)), ("t/m^2", Decimal(3))],
 };
+/// A density and its units.
 pub const DENSITY: Dimension = Dimension {
     name: "a density",
     si: "kg/m^3",
     units: &[("kg/m^3", Decimal(0)), ("t/m^3", Decimal(3))],
 };
+/// A modulus (pressure) and its units.
 pub const PRESSURE: Dimension = Dimension {
     name: "a modulus (pressure)",
     si: "Pa",
@@ -138,11 +151,13 @@ pub const PRESSURE: Dimension = Dimension {
         ("GPa", Decimal(9)),
     ],
 };
+/// A moment of inertia and its units.
 pub const INERTIA: Dimension = Dimension {
     name: "a moment of inertia",
     si: "kg*m^2",
     units: &[("kg*m^2", Decimal(0)), ("t*m^2", Decimal(3))],
 };
+/// A plate rigidity and its units.
 pub const PLATE_RIGIDITY: Dimension = Dimension {
     name: "a plate rigidity",
     si: "N*m",
@@ -283,6 +298,12 @@ impl Dimension {
         );
         let example = self.units.get(1).unwrap_or(&self.units[0]).0;
         json_schema!({
+            "description": format!(
+                "{}: a number in {} or a string with its unit ({})",
+                self.name,
+                self.si,
+                self.unit_list()
+            ),
             "anyOf": [
                 {"type": "number", "description": self.si},
                 {
@@ -415,63 +436,81 @@ pub fn list<'de, D: Deserializer<'de>>(d: D, dimension: &Dimension) -> Result<Ve
     d.deserialize_seq(QuantityList(dimension))
 }
 
-/// The list schema of `dimension`.
-pub fn list_schema(dimension: &Dimension) -> Schema {
-    let items = dimension.schema();
-    json_schema!({"type": "array", "items": items})
-}
-
 /// The field functions of one dimension, for `deserialize_with` and
 /// `schema_with`: `one` (f64), `option` (Option<f64>, with
 /// `#[serde(default)]`), `list` (Vec<f64>), `option_list`
-/// (Option<Vec<f64>>), and their schemas.
+/// (Option<Vec<f64>>), and their schemas, which refer to the dimension's
+/// one definition in the schema's `$defs` (`#/$defs/Length`) instead of
+/// repeating it at every field.
 macro_rules! field_functions {
-    ($($module:ident => $dimension:ident),* $(,)?) => {$(
+    ($($module:ident => $dimension:ident as $name:literal),* $(,)?) => {$(
         #[allow(dead_code)]
+        #[doc = concat!("Field functions of ", stringify!($dimension), ".")]
         pub mod $module {
-            use schemars::{Schema, SchemaGenerator};
+            use std::borrow::Cow;
+
+            use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
             use serde::Deserializer;
 
+            /// The dimension's entry of the schema's `$defs`.
+            pub struct Definition;
+
+            impl JsonSchema for Definition {
+                fn schema_name() -> Cow<'static, str> {
+                    $name.into()
+                }
+                fn json_schema(_: &mut SchemaGenerator) -> Schema {
+                    super::$dimension.schema()
+                }
+            }
+
+            /// One value.
             pub fn one<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
                 super::one(d, &super::$dimension)
             }
+            /// An optional value (with `#[serde(default)]`).
             pub fn option<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
                 super::one(d, &super::$dimension).map(Some)
             }
+            /// A list.
             pub fn list<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
                 super::list(d, &super::$dimension)
             }
+            /// An optional list.
             pub fn option_list<'de, D: Deserializer<'de>>(
                 d: D,
             ) -> Result<Option<Vec<f64>>, D::Error> {
                 super::list(d, &super::$dimension).map(Some)
             }
-            pub fn schema(_: &mut SchemaGenerator) -> Schema {
-                super::$dimension.schema()
+            /// The schema of one value.
+            pub fn schema(generator: &mut SchemaGenerator) -> Schema {
+                generator.subschema_for::<Definition>()
             }
-            pub fn list_schema(_: &mut SchemaGenerator) -> Schema {
-                super::list_schema(&super::$dimension)
+            /// The schema of a list.
+            pub fn list_schema(generator: &mut SchemaGenerator) -> Schema {
+                let items = generator.subschema_for::<Definition>();
+                json_schema!({"type": "array", "items": items})
             }
         }
     )*};
 }
 
 field_functions! {
-    length => LENGTH,
-    mass => MASS,
-    force => FORCE,
-    stiffness => STIFFNESS,
-    damping => DAMPING,
-    time => TIME,
-    frequency => FREQUENCY,
-    acceleration => ACCELERATION,
-    bending_stiffness => BENDING_STIFFNESS,
-    mass_per_length => MASS_PER_LENGTH,
-    mass_per_area => MASS_PER_AREA,
-    density => DENSITY,
-    pressure => PRESSURE,
-    inertia => INERTIA,
-    plate_rigidity => PLATE_RIGIDITY,
+    length => LENGTH as "Length",
+    mass => MASS as "Mass",
+    force => FORCE as "Force",
+    stiffness => STIFFNESS as "Stiffness",
+    damping => DAMPING as "DampingCoefficient",
+    time => TIME as "Time",
+    frequency => FREQUENCY as "Frequency",
+    acceleration => ACCELERATION as "Acceleration",
+    bending_stiffness => BENDING_STIFFNESS as "BendingStiffness",
+    mass_per_length => MASS_PER_LENGTH as "MassPerLength",
+    mass_per_area => MASS_PER_AREA as "MassPerArea",
+    density => DENSITY as "Density",
+    pressure => PRESSURE as "Modulus",
+    inertia => INERTIA as "MomentOfInertia",
+    plate_rigidity => PLATE_RIGIDITY as "PlateRigidity",
 }
 
 #[cfg(test)]
