@@ -99,7 +99,10 @@ impl<'a> Checker<'a> {
         help: Option<String>,
     ) {
         let loc = self.location(path);
-        let diagnostic = self.lines.diagnostic(self.file, loc, message).with_help(help);
+        let diagnostic = self
+            .lines
+            .diagnostic(self.file, loc, message)
+            .with_help(help);
         self.diagnostics.push(diagnostic);
     }
 

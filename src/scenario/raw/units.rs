@@ -13,8 +13,8 @@
 //! A decimal prefix (mm, kN, MN, GPa, …) shifts the written number's decimal
 //! exponent before it is read (`250 mm` is read as `250e-3`), so the value is
 //! the correctly rounded one, bit for bit what the SI number written out
-//! (`0.25`) gives. Other factors (`t` = 1000 kg is decimal too; `g`, `min`)
-//! multiply once.
+//! (`0.25`) gives. The other factors are exact decimals too (`g` =
+//! 9.80665 m/s², `min` = 60 s) and multiply the written digits exactly.
 
 use std::fmt;
 
@@ -26,13 +26,24 @@ use serde::de::{self, DeserializeSeed, Deserializer, SeqAccess, Visitor};
 /// scene may set to a local value: `0.35 g` means the same in every scene.
 pub const STANDARD_GRAVITY: f64 = 9.80665;
 
-/// How a unit turns a written number into SI.
+/// How a unit turns a written number into SI: × `factor` × 10^`shift`,
+/// both exact decimals, so that the product is computed in decimal and
+/// read with one rounding (`0.35 g` is read as `0.35 × 980665e-5` =
+/// `3.4323275`, bit for bit what that SI number written out gives).
 #[derive(Debug, Clone, Copy)]
-enum Scale {
-    /// × 10^k, applied to the decimal exponent before reading.
-    Decimal(i32),
-    /// × the factor, one rounding.
-    Factor(f64),
+struct Scale {
+    factor: u64,
+    shift: i32,
+}
+
+/// × 10^k.
+const fn decimal(shift: i32) -> Scale {
+    Scale { factor: 1, shift }
+}
+
+/// × `factor` × 10^`shift`.
+const fn exact(factor: u64, shift: i32) -> Scale {
+    Scale { factor, shift }
 }
 
 /// One physical dimension of the format: its name in messages, and its
@@ -46,41 +57,39 @@ pub struct Dimension {
     units: &'static [(&'static str, Scale)],
 }
 
-use Scale::{Decimal, Factor};
-
 /// A length and its units.
 pub const LENGTH: Dimension = Dimension {
     name: "a length",
     si: "m",
     units: &[
-        ("m", Decimal(0)),
-        ("mm", Decimal(-3)),
-        ("cm", Decimal(-2)),
-        ("km", Decimal(3)),
+        ("m", decimal(0)),
+        ("mm", decimal(-3)),
+        ("cm", decimal(-2)),
+        ("km", decimal(3)),
     ],
 };
 /// A mass and its units.
 pub const MASS: Dimension = Dimension {
     name: "a mass",
     si: "kg",
-    units: &[("kg", Decimal(0)), ("t", Decimal(3))],
+    units: &[("kg", decimal(0)), ("t", decimal(3))],
 };
 /// A force and its units.
 pub const FORCE: Dimension = Dimension {
     name: "a force",
     si: "N",
-    units: &[("N", Decimal(0)), ("kN", Decimal(3)), ("MN", Decimal(6))],
+    units: &[("N", decimal(0)), ("kN", decimal(3)), ("MN", decimal(6))],
 };
 /// A stiffness and its units.
 pub const STIFFNESS: Dimension = Dimension {
     name: "a stiffness",
     si: "N/m",
     units: &[
-        ("N/m", Decimal(0)),
-        ("kN/m", Decimal(3)),
-        ("MN/m", Decimal(6)),
-        ("N/mm", Decimal(3)),
-        ("kN/mm", Decimal(6)),
+        ("N/m", decimal(0)),
+        ("kN/m", decimal(3)),
+        ("MN/m", decimal(6)),
+        ("N/mm", decimal(3)),
+        ("kN/mm", decimal(6)),
     ],
 };
 /// A damping coefficient and its units.
@@ -88,83 +97,87 @@ pub const DAMPING: Dimension = Dimension {
     name: "a damping coefficient",
     si: "N*s/m",
     units: &[
-        ("N*s/m", Decimal(0)),
-        ("kN*s/m", Decimal(3)),
-        ("MN*s/m", Decimal(6)),
+        ("N*s/m", decimal(0)),
+        ("kN*s/m", decimal(3)),
+        ("MN*s/m", decimal(6)),
     ],
 };
 /// A time and its units.
 pub const TIME: Dimension = Dimension {
     name: "a time",
     si: "s",
-    units: &[("s", Decimal(0)), ("ms", Decimal(-3)), ("min", Factor(60.0))],
+    units: &[
+        ("s", decimal(0)),
+        ("ms", decimal(-3)),
+        ("min", exact(60, 0)),
+    ],
 };
 /// A frequency and its units.
 pub const FREQUENCY: Dimension = Dimension {
     name: "a frequency",
     si: "Hz",
-    units: &[("Hz", Decimal(0)), ("kHz", Decimal(3))],
+    units: &[("Hz", decimal(0)), ("kHz", decimal(3))],
 };
 /// An acceleration and its units.
 pub const ACCELERATION: Dimension = Dimension {
     name: "an acceleration",
     si: "m/s^2",
-    units: &[("m/s^2", Decimal(0)), ("g", Factor(STANDARD_GRAVITY))],
+    units: &[("m/s^2", decimal(0)), ("g", exact(980_665, -5))],
 };
 /// A bending stiffness and its units.
 pub const BENDING_STIFFNESS: Dimension = Dimension {
     name: "a bending stiffness",
     si: "N*m^2",
     units: &[
-        ("N*m^2", Decimal(0)),
-        ("kN*m^2", Decimal(3)),
-        ("MN*m^2", Decimal(6)),
-        ("GN*m^2", Decimal(9)),
+        ("N*m^2", decimal(0)),
+        ("kN*m^2", decimal(3)),
+        ("MN*m^2", decimal(6)),
+        ("GN*m^2", decimal(9)),
     ],
 };
 /// A mass per length and its units.
 pub const MASS_PER_LENGTH: Dimension = Dimension {
     name: "a mass per length",
     si: "kg/m",
-    units: &[("kg/m", Decimal(0)), ("t/m", Decimal(3))],
+    units: &[("kg/m", decimal(0)), ("t/m", decimal(3))],
 };
 /// A mass per area and its units.
 pub const MASS_PER_AREA: Dimension = Dimension {
     name: "a mass per area",
     si: "kg/m^2",
-    units: &[("kg/m^2", Decimal(0)), ("t/m^2", Decimal(3))],
+    units: &[("kg/m^2", decimal(0)), ("t/m^2", decimal(3))],
 };
 /// A density and its units.
 pub const DENSITY: Dimension = Dimension {
     name: "a density",
     si: "kg/m^3",
-    units: &[("kg/m^3", Decimal(0)), ("t/m^3", Decimal(3))],
+    units: &[("kg/m^3", decimal(0)), ("t/m^3", decimal(3))],
 };
 /// A modulus (pressure) and its units.
 pub const PRESSURE: Dimension = Dimension {
     name: "a modulus (pressure)",
     si: "Pa",
     units: &[
-        ("Pa", Decimal(0)),
-        ("kPa", Decimal(3)),
-        ("MPa", Decimal(6)),
-        ("GPa", Decimal(9)),
+        ("Pa", decimal(0)),
+        ("kPa", decimal(3)),
+        ("MPa", decimal(6)),
+        ("GPa", decimal(9)),
     ],
 };
 /// A moment of inertia and its units.
 pub const INERTIA: Dimension = Dimension {
     name: "a moment of inertia",
     si: "kg*m^2",
-    units: &[("kg*m^2", Decimal(0)), ("t*m^2", Decimal(3))],
+    units: &[("kg*m^2", decimal(0)), ("t*m^2", decimal(3))],
 };
 /// A plate rigidity and its units.
 pub const PLATE_RIGIDITY: Dimension = Dimension {
     name: "a plate rigidity",
     si: "N*m",
     units: &[
-        ("N*m", Decimal(0)),
-        ("kN*m", Decimal(3)),
-        ("MN*m", Decimal(6)),
+        ("N*m", decimal(0)),
+        ("kN*m", decimal(3)),
+        ("MN*m", decimal(6)),
     ],
 };
 
@@ -271,10 +284,13 @@ impl Dimension {
                 self.unit_list()
             ));
         };
-        let value = match scale {
-            Decimal(0) => written,
-            Decimal(shift) => shifted(number, shift).unwrap_or(written * 10f64.powi(shift)),
-            Factor(f) => written * f,
+        let value = if scale.factor == 1 && scale.shift == 0 {
+            written
+        } else {
+            // A number too long for exact decimal arithmetic (over 30
+            // digits) is scaled in floating point.
+            times_decimal(number, scale)
+                .unwrap_or(written * scale.factor as f64 * 10f64.powi(scale.shift))
         };
         if value.is_finite() {
             Ok(value)
@@ -347,17 +363,37 @@ fn regex_escape(unit: &str) -> String {
     out
 }
 
-/// `number` × 10^shift read in one rounding: the decimal exponent is
-/// shifted in the text (`250` mm → `250e-3`). `None` if the text is not a
-/// plain decimal number.
-fn shifted(number: &str, shift: i32) -> Option<f64> {
-    let (mantissa, exponent) = match number.find(['e', 'E']) {
-        Some(i) => (&number[..i], number[i + 1..].parse::<i32>().ok()?),
-        None => (number, 0),
+/// `number` × `scale` in decimal, read with one rounding: the digits of
+/// the written number (at most 30) times the integer factor, with the
+/// decimal exponents summed (`250` mm → `250e-3`). `None` if the text is
+/// not a plain decimal number or too long.
+fn times_decimal(number: &str, scale: Scale) -> Option<f64> {
+    let (sign, unsigned) = match number.strip_prefix('-') {
+        Some(rest) => ("-", rest),
+        None => ("", number.strip_prefix('+').unwrap_or(number)),
     };
-    format!("{mantissa}e{}", exponent.checked_add(shift)?)
-        .parse()
-        .ok()
+    let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
+        Some(i) => (&unsigned[..i], unsigned[i + 1..].parse::<i32>().ok()?),
+        None => (unsigned, 0),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if !(whole.bytes().chain(fraction.bytes())).all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let digits = format!("{whole}{fraction}");
+    let digits = digits.trim_start_matches('0');
+    if digits.len() > 30 {
+        return None;
+    }
+    let value: u128 = if digits.is_empty() {
+        0
+    } else {
+        digits.parse().ok()?
+    };
+    let product = value.checked_mul(u128::from(scale.factor))?;
+    let places = i32::try_from(fraction.len()).ok()?;
+    let exponent = exponent.checked_sub(places)?.checked_add(scale.shift)?;
+    format!("{sign}{product}e{exponent}").parse().ok()
 }
 
 /// One value of `dimension`: a number (SI) or a string with a unit.
@@ -367,9 +403,10 @@ impl<'de> Visitor<'de> for Quantity<'_> {
     type Value = f64;
 
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // "expected a number" first, as for any plain number field.
         write!(
             f,
-            "{} in {}, or a string with its unit ({})",
+            "a number ({} in {}) or a string with its unit ({})",
             self.0.name,
             self.0.si,
             self.0.unit_list()
@@ -546,8 +583,12 @@ mod tests {
             let got = dimension.parse(text).unwrap();
             assert_eq!(got.to_bits(), want.to_bits(), "{text}: {got} vs {want}");
         }
-        // g is standard gravity: one multiplication.
-        assert_eq!(ACCELERATION.parse("0.35 g").unwrap(), 0.35 * 9.80665);
+        // g is standard gravity, 9.80665 m/s² exactly: the product is
+        // computed in decimal, 0.35 g = 3.4323275 m/s² (one multiplication
+        // in floating point would give 3.4323274999999995).
+        assert_eq!(ACCELERATION.parse("0.35 g").unwrap(), 3.4323275);
+        assert_eq!(ACCELERATION.parse("1 g").unwrap(), STANDARD_GRAVITY);
+        assert_eq!(TIME.parse("1.5 min").unwrap(), 90.0);
         assert_eq!(ACCELERATION.parse("3.5 m/s^2").unwrap(), 3.5);
         assert_eq!(ACCELERATION.parse("3.5 m/s²").unwrap(), 3.5);
     }
