@@ -25,6 +25,7 @@ mod speed;
 mod study;
 mod surface;
 mod truck;
+pub mod units;
 pub use self::envelopes::*;
 pub use self::fe_import::*;
 pub use self::ground::*;
@@ -59,6 +60,8 @@ pub struct ScenarioRaw {
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[schemars(extend("default" = super::resolve::DEFAULT_GRAVITY))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub gravity: Option<f64>,
     /// The bridge.
     pub bridge: BridgeRaw,
@@ -126,21 +129,31 @@ pub enum BridgeRaw {
 pub struct PlateRaw {
     /// Span lengths, m, from the entrance; rigid line supports between spans.
     #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub spans: Vec<f64>,
     /// Deck width b, m.
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub width: f64,
     /// Plate thickness h, m. Needed by an isotropic `rigidity` and by `density`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub thickness: Option<f64>,
     /// Mass per unit area ρh, kg/m². Give this or `density`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_area::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass_per_area::schema")]
     pub mass_per_area: Option<f64>,
     /// Density ρ, kg/m³ (with `thickness`). Give this or `mass_per_area`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::density::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::density::schema")]
     pub density: Option<f64>,
     /// Flexural and torsional rigidities.
     pub rigidity: RigidityRaw,
@@ -173,6 +186,8 @@ pub struct PlateRaw {
     /// centre line.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub girder_lines: Option<Vec<f64>>,
 }
 
@@ -186,6 +201,8 @@ pub enum RigidityRaw {
     Isotropic {
         /// Young's modulus E, Pa.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::pressure::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::pressure::schema")]
         youngs_modulus: f64,
         /// Poisson's ratio ν (dimensionless). Default 0.2 (concrete).
         #[serde(default)]
@@ -198,16 +215,24 @@ pub enum RigidityRaw {
     Orthotropic {
         /// Flexural rigidity along the bridge Dx, N·m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         flexural_rigidity_x: f64,
         /// Flexural rigidity across the bridge Dy, N·m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         flexural_rigidity_y: f64,
         /// Torsional rigidity Dxy = G h³ / 12, N·m. Give this or `equivalent_rigidity`.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         torsional_rigidity: Option<f64>,
         /// Equivalent rigidity H = ν_xy Dy + 2 Dxy, N·m. Give this or `torsional_rigidity`.
         #[serde(default)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         equivalent_rigidity: Option<f64>,
         /// Poisson's ratio ν_xy (dimensionless); the coupling rigidity is
         /// D1 = ν_xy Dy. Default 0.3.
@@ -225,12 +250,18 @@ pub struct BeamRaw {
     /// Span lengths, m, from the entrance. One span = simply supported; several
     /// = continuous over pinned intermediate supports.
     #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub spans: Vec<f64>,
     /// Bending stiffness EI, N·m².
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::bending_stiffness::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::bending_stiffness::schema")]
     pub bending_stiffness: f64,
     /// Mass per unit length m, kg/m.
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass_per_length::schema")]
     pub mass_per_length: f64,
     /// Hermite-cubic finite elements per span. Default 20.
     #[serde(default)]
@@ -256,6 +287,8 @@ pub struct BeamRaw {
     /// motion shakes the deck.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::bending_stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::bending_stiffness::schema")]
     pub lateral_bending_stiffness: Option<f64>,
     /// Torsional stiffness GJ, N·m²/rad (3D beam).
     #[serde(default)]
@@ -270,6 +303,8 @@ pub struct BeamRaw {
     /// across the centre line up by y θ. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub rail_height: Option<f64>,
 }
 
@@ -286,6 +321,8 @@ pub struct ModesRaw {
     /// `count`: the lowest `count`, none of them above this.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Add the quasi-static share of the modes left out to every recorded
     /// bridge displacement (the mode-acceleration method: the exact static
@@ -384,17 +421,23 @@ impl VehicleRaw {
 pub struct MovingForceRaw {
     /// Axle loads, N (downward, positive), front axle first.
     #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::force::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::force::list_schema")]
     pub loads: Vec<f64>,
     /// Distances between consecutive axles, m; one fewer than `loads`.
     /// Give this or `axle_positions`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive_items)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub axle_spacings: Option<Vec<f64>>,
     /// Distance of each axle behind the front axle, m: 0 first, then
     /// increasing; one per load (an axle-load train such as an HSLM train).
     /// Give this or `axle_spacings`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub axle_positions: Option<Vec<f64>>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
@@ -403,20 +446,28 @@ pub struct MovingForceRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the loads on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
 }
 
@@ -428,20 +479,28 @@ pub struct OscillatorRaw {
     /// Sprung (body) mass, kg. Required unless `dimensionless` is given.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub sprung_mass: Option<f64>,
     /// Unsprung (wheel) mass, kg. Default 0: a massless wheel.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub unsprung_mass: Option<f64>,
     /// Suspension stiffness, N/m. Required unless `dimensionless` is given.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub stiffness: Option<f64>,
     /// Suspension damping, N·s/m. Default 0.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub damping: Option<f64>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`). Required unless
     /// `dimensionless` is given.
@@ -452,20 +511,28 @@ pub struct OscillatorRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the wheel at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the wheel on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Derive masses, stiffness, damping and speed from dimensionless groups
     /// relative to the bridge (its first natural frequency f₁, length L and
@@ -526,6 +593,8 @@ pub enum ContactRaw {
         /// Contact spring stiffness per wheel, N/m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
         stiffness: Option<f64>,
         /// Contact-to-suspension stiffness ratio k_c / k_v (dimensionless); the
         /// stiffness is this times the suspension stiffness of the oscillator(s),
@@ -548,6 +617,8 @@ pub enum ContactRaw {
         /// Dynamics, 2020, §2.4.1).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         wheel_radius: Option<f64>,
         /// Tread profile for `wheel_radius`: `worn` (default) or `conical`.
         #[serde(default)]
@@ -579,6 +650,8 @@ pub struct SolverRaw {
     /// shortest crossing.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
     /// acceleration: unconditionally stable, second order, no numerical
@@ -589,6 +662,8 @@ pub struct SolverRaw {
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub free_vibration: Option<f64>,
     /// `method: iterative` only: relative tolerance ε on the contact
     /// displacements between iterations, max|Δw| ≤ ε·max|w| (the plate paper's
@@ -656,6 +731,8 @@ pub struct RecordRaw {
     pub quantity: Quantity,
     /// Position along the bridge, m (bridge quantities).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub x: Option<f64>,
     /// Node of an imported (`fe_import`) bridge, instead of `x`: the
     /// quantity at that node's DOF `direction`.
@@ -667,6 +744,8 @@ pub struct RecordRaw {
     /// Position across a plate deck, m (bridge quantities on a plate).
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub y: Option<f64>,
     /// Vehicle number, counted from 1 in the order of `vehicles` (vehicle
     /// quantities and contact forces). Default 1.
@@ -696,6 +775,8 @@ pub struct RecordRaw {
     /// to it.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Under ground motion: `relative` to the moving ground (the default:
     /// deflections, what loads the structure) or `absolute` (adds the

@@ -434,7 +434,7 @@ pub(super) fn resolve_records(
                     &at,
                     format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
                 ),
-                Some(d) if !names.contains(&d.as_str()) => ck.error(
+                Some(d) if !names.contains(&d.as_str()) => ck.error_with_help(
                     &format!("{at}.dof"),
                     if names.is_empty() {
                         format!(
@@ -447,6 +447,7 @@ pub(super) fn resolve_records(
                             names.join(", ")
                         )
                     },
+                    super::diagnostic::did_you_mean(d, names.iter().copied()),
                 ),
                 _ => {}
             }

@@ -18,10 +18,16 @@ use crate::scene::schema_rules::set;
 
 use crate::scenario::raw::ScenarioRaw;
 
+/// The schema's `$id`: a stable name for it (issue 28.5), the same
+/// wherever the file is copied; editors find the file through the scene's
+/// modeline or their `yaml.schemas` setting, not through this URL.
+pub const SCHEMA_ID: &str = "https://vbi.dev/schema/vbi.schema.json";
+
 /// The schema as pretty-printed JSON with a trailing newline (what
 /// `vbi schema` prints and `schema/vbi.schema.json` holds).
 pub fn schema_json() -> String {
     let mut schema = schemars::schema_for!(ScenarioRaw);
+    schema.insert("$id".into(), SCHEMA_ID.into());
     schema.insert("title".into(), "vbi scenario".into());
     let mut value = schema.to_value();
     tidy_optional(&mut value);

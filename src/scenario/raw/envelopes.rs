@@ -28,5 +28,7 @@ pub struct EnvelopesRaw {
     /// 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
 }

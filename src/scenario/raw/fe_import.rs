@@ -58,6 +58,8 @@ pub struct FeImportRaw {
     /// the whole load on at once.
     #[serde(default)]
     #[schemars(range(min = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub entry_length: Option<f64>,
 }
 

@@ -31,6 +31,8 @@ pub struct GroundMotionRaw {
     /// run starts part way through the record). Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub start_time: Option<f64>,
     /// Units of a CSV table's accelerations when its header does not state
     /// them (`g`, `m/s^2`, `cm/s^2`); a unit given both ways must agree.

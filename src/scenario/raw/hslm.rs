@@ -46,13 +46,19 @@ pub struct HslmRaw {
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the loads on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
 }
 

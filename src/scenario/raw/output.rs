@@ -23,6 +23,8 @@ pub struct OutputRaw {
     /// `every`. Give this or `every`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub interval: Option<f64>,
     /// Format of the time history: `csv` (history.csv), `npy` (history.npy,
     /// one float64 array with a row per written step and a column per

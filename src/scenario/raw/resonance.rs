@@ -66,6 +66,8 @@ pub struct ResonanceCheckRaw {
     /// the greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Add the damping Δζ of EN 1991-2 6.4.6.3.1(3) for spans below 30 m
     /// (vehicle–bridge interaction): Δζ [%] = (0.0187 L − 0.00064 L²) /

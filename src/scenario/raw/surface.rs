@@ -17,9 +17,13 @@ pub enum SurfaceRaw {
     /// r(x) = amplitude · sin(2π x / wavelength + phase) for x ≥ 0, positive upward.
     Harmonic {
         /// Amplitude, m.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         amplitude: f64,
         /// Wavelength, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         wavelength: f64,
         /// Phase at the entrance, rad. Default 0.
         #[serde(default)]
@@ -49,6 +53,8 @@ pub enum SurfaceRaw {
         coefficient: Option<f64>,
         /// Length L_c the series repeats over, m. Default: twice the bridge length.
         #[serde(default)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         sampling_length: Option<f64>,
         /// Number of terms N of the series. Default: enough for wavelengths
         /// down to 0.5 m (N = L_c / 0.5).
@@ -72,10 +78,14 @@ pub enum SurfaceRaw {
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -111,6 +121,8 @@ pub enum SurfaceRaw {
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// Random vertical track profile from the German high-speed spectrum:
@@ -123,10 +135,14 @@ pub enum SurfaceRaw {
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -162,6 +178,8 @@ pub enum SurfaceRaw {
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// Random road profile of an ISO 8608 class: G_d(n) = G_d(n₀)(n/n₀)⁻²,
@@ -173,10 +191,14 @@ pub enum SurfaceRaw {
         /// Shortest wavelength sampled, m. Default: 0.5 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 100 m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -205,6 +227,8 @@ pub enum SurfaceRaw {
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// A measured profile from a CSV file: rows `x, elevation` (one profile
@@ -228,11 +252,17 @@ pub enum SurfaceRaw {
     /// then `height`.
     Ramp {
         /// Where the ramp starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Horizontal length, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Rise, m (negative: a descent).
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -246,8 +276,12 @@ pub enum SurfaceRaw {
     /// level).
     Step {
         /// Where the step is, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         position: f64,
         /// Change of level, m (negative: a step down).
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -261,12 +295,18 @@ pub enum SurfaceRaw {
     /// `length` from `start`, 0 elsewhere.
     Bump {
         /// Where the bump starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Length, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Peak height, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -280,12 +320,18 @@ pub enum SurfaceRaw {
     /// `length` from `start`, 0 elsewhere.
     Dip {
         /// Where the dip starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Length, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Deepest point below the level, m.
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         depth: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
