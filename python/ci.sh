@@ -14,6 +14,9 @@ python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet pytest pandas numpy matplotlib nbclient nbformat ipykernel
 "$venv/bin/pip" install --quiet "$here"
 export VBI_BIN="$repo/target/release/vbi"
-cd "$here"
+# From the repository's root, not python/: `python -m` puts the working
+# folder on sys.path, and python/vbi (the sources, without the compiled
+# extension) would shadow the installed package.
+cd "$repo"
 # pytest also executes examples/quickstart.ipynb (tests/test_notebook.py).
-"$venv/bin/python" -m pytest -q tests
+"$venv/bin/python" -m pytest -q -p no:cacheprovider python/tests

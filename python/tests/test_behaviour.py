@@ -88,19 +88,42 @@ def test_gil_released_two_threads():
         pytest.skip("needs 2 cores")
     scene = slow_scene(1.0e-5)
     vbi.run(YANG_YAU)  # warm up
+    # Best of three: another process on the machine can take a core for a
+    # moment; with the GIL held every attempt would be near 2.
+    ratios = []
+    for _ in range(3):
+        start = time.perf_counter()
+        vbi.run(scene)
+        one = time.perf_counter() - start
+        threads = [threading.Thread(target=vbi.run, args=(scene,)) for _ in range(2)]
+        start = time.perf_counter()
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        two = time.perf_counter() - start
+        ratios.append(two / one)
+        print(f"one run {one:.3f} s, two threads {two:.3f} s, ratio {two / one:.2f}")
+    assert min(ratios) < 1.6, f"two threads took {min(ratios):.2f}× one run at best"
+
+
+def test_python_runs_while_a_scene_computes():
+    """Independent of the machine's load: while another thread runs a scene,
+    this thread keeps running Python. With the GIL held for the whole run
+    it could not, and its longest pause would be the run itself."""
+    scene = slow_scene(1.0e-5)
+    worker = threading.Thread(target=vbi.run, args=(scene,))
     start = time.perf_counter()
-    vbi.run(scene)
-    one = time.perf_counter() - start
-    threads = [threading.Thread(target=vbi.run, args=(scene,)) for _ in range(2)]
-    start = time.perf_counter()
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    two = time.perf_counter() - start
-    ratio = two / one
-    print(f"one run {one:.3f} s, two threads {two:.3f} s, ratio {ratio:.2f}")
-    assert ratio < 1.6, f"two threads took {ratio:.2f}× one run"
+    worker.start()
+    last, longest_pause, ticks = start, 0.0, 0
+    while worker.is_alive():
+        now = time.perf_counter()
+        longest_pause = max(longest_pause, now - last)
+        last, ticks = now, ticks + 1
+    run = time.perf_counter() - start
+    print(f"run {run:.3f} s, {ticks} ticks, longest pause {longest_pause:.4f} s")
+    assert ticks > 1000
+    assert longest_pause < 0.5 * run, f"paused {longest_pause:.3f} s of a {run:.3f} s run"
 
 
 def test_keyboard_interrupt_stops_a_study():

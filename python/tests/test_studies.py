@@ -108,7 +108,7 @@ def test_modes_equal_cli(tmp_path):
     assert_bitwise_equal(modes.damping_ratios, [m["damping_ratio"] for m in expected["modes"]], "damping")
     table = read_csv(shapes_csv)
     assert modes.shapes.shape == (len(table), 10)
-    assert_bitwise_equal(modes.x, table["x"].to_numpy(), "x")
+    assert_bitwise_equal(modes.x, table["x [m]"].to_numpy(), "x")
     for i in range(10):
         assert_bitwise_equal(modes.shapes[:, i], table.iloc[:, 1 + i].to_numpy(), f"mode {i + 1}")
     # Closed form, simply supported Euler–Bernoulli beam:
