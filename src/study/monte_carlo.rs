@@ -657,11 +657,32 @@ pub fn assemble(
     let envelopes = (0..cases.len())
         .map(|c| evaluate(c, 0, mc.samples, &mut given))
         .collect::<Result<Vec<_>, _>>()?;
+    Ok(results(
+        base,
+        mc,
+        cases,
+        sample_results,
+        envelopes,
+        wall_time,
+    ))
+}
+
+/// The study's results from its cases, every sample's result and each
+/// case's envelope moments (the batch [`assemble`] and the streaming
+/// [`fold::EnvelopeFold`] end here alike).
+fn results(
+    base: &Scenario,
+    mc: &MonteCarlo,
+    cases: Vec<Case>,
+    sample_results: Vec<SampleResult>,
+    envelopes: Vec<Moments>,
+    wall_time: f64,
+) -> MonteCarloResults {
     let labels = cases
         .iter()
         .map(|c| sweep::label(&base.surface, c.entry))
         .collect();
-    Ok(MonteCarloResults {
+    MonteCarloResults {
         labels,
         own_speed: base.vehicles.first().map(|v| v.speed()),
         cases,
@@ -671,7 +692,7 @@ pub fn assemble(
         sample_results,
         envelopes,
         wall_time,
-    })
+    }
 }
 
 /// Runs the whole study (in parallel) and assembles it.

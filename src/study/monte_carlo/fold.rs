@@ -12,8 +12,9 @@
 //! batch evaluation, so the envelopes are bit-identical, and at most one
 //! node a tree level (≈ log₂ samples) is alive at any time.
 
-use super::{AssembleError, Moments, MonteCarloPart, MonteCarloResults, SampleResult, cases};
-use crate::scenario::sweep;
+use super::{
+    AssembleError, Moments, MonteCarloPart, MonteCarloResults, SampleResult, cases, results,
+};
 use crate::scene::{MonteCarlo, Scenario};
 
 /// A reduced node waiting for its sibling: samples [lo, hi) of the current case.
@@ -148,22 +149,14 @@ impl EnvelopeFold {
                 sample: self.next_sample() + 1,
             });
         }
-        let cases = cases(mc);
-        let labels = cases
-            .iter()
-            .map(|c| sweep::label(&base.surface, c.entry))
-            .collect();
-        Ok(MonteCarloResults {
-            labels,
-            own_speed: base.vehicles.first().map(|v| v.speed()),
-            cases,
-            samples: mc.samples,
-            seed: mc.seed,
-            show: mc.show,
-            sample_results: self.sample_results,
-            envelopes: self.envelopes,
+        Ok(results(
+            base,
+            mc,
+            cases(mc),
+            self.sample_results,
+            self.envelopes,
             wall_time,
-        })
+        ))
     }
 }
 
