@@ -6,7 +6,8 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, default_out, emit, load_error, run};
+use super::run_cmd::{default_out, load_error, run};
+use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, emit};
 use vbi::scenario::{self, LoadError};
 
 /// Writes a study's results into `out` and says what it found.
