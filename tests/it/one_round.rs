@@ -49,3 +49,34 @@ fn seven_mistakes_give_seven_located_diagnostics_in_one_check() {
     }
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn a_bridge_that_does_not_parse_hides_no_other_section_s_errors() {
+    // `bridge` is required: when it fails to parse, the vehicles, solver
+    // and records are still checked (without the bridge), so that the
+    // file's every error comes in this one `vbi check`.
+    let file = "tests/multi/bridge-type-error.yaml";
+    let out = vbi(&["check", file], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let mut got = located(&stderr, file);
+    got.sort();
+    // Line and column of each mistake, as the comments in the file say.
+    let want = vec![
+        (8, 22),  // bending_stiffness: stiff (type)
+        (12, 18), // sprung mass −5750 kg (semantic)
+        (17, 21), // time step −0.001 s (semantic)
+        (19, 59), // vehicle 3 of one (cross-field, needs no bridge)
+        (20, 76), // max_frequency on a displacement (semantic)
+    ];
+    assert_eq!(got, want, "{stderr}");
+    for message in [
+        "sprung mass must be positive",
+        "time step must be positive",
+        "vehicle 3 does not exist",
+        "`max_frequency` is not used by `bridge_displacement`",
+    ] {
+        assert!(stderr.contains(message), "no `{message}` in\n{stderr}");
+    }
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
