@@ -186,8 +186,8 @@ pub(super) fn resolve(
 /// the file writes them, when an earlier error stopped the resolution
 /// before them (so that a file's mistakes come in one round, issue 28.1).
 /// The bridge and vehicles are resolved again into a scratch checker (their
-/// own errors are already reported); without a valid bridge nothing is
-/// checked. Defaults that need the bridge's frequencies are not needed for
+/// own errors are already reported); without a valid bridge what needs it
+/// (a position on the deck, a node, the envelopes) is not checked. Defaults that need the bridge's frequencies are not needed for
 /// checking and get none.
 fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) {
     let mut scratch = Checker::new(ck.file, ck.source, ck.root);
@@ -197,17 +197,14 @@ fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) 
     if !budget.counts(raw, &mut scratch) {
         return;
     }
-    // A bridge that did not parse: the records are checked against the
-    // vehicles alone (a bridge with errors of its own still stops here).
-    scratch.bridge_unknown = ck.bridge_unreadable;
+    // A bridge that did not parse or has errors of its own: the records
+    // are checked against the vehicles alone.
     let bridge = if ck.bridge_unreadable {
         None
     } else {
-        let Some(bridge) = resolve_bridge(&raw.bridge, &budget, &mut scratch) else {
-            return;
-        };
-        Some(bridge)
+        resolve_bridge(&raw.bridge, &budget, &mut scratch)
     };
+    scratch.bridge_unknown = bridge.is_none();
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = vehicles_as_written(&raw.vehicles, width, &mut scratch);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, &mut scratch);

@@ -80,3 +80,37 @@ fn a_bridge_that_does_not_parse_hides_no_other_section_s_errors() {
     }
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn a_bridge_with_an_error_of_its_own_still_lets_the_records_be_checked() {
+    // The bridge parses but is invalid (a negative span): the records are
+    // checked against the vehicles alone, in the same round.
+    let scratch = crate::support::Scratch::new("one_round", "bridge-semantic");
+    let path = scratch.path("scene.yaml");
+    std::fs::write(
+        &path,
+        "name: bridge-semantic
+bridge: {type: beam, spans: [-32.0], bending_stiffness: 1.3e10, mass_per_length: 12000.0}
+vehicles: [{type: moving_force, loads: [1.0e5], speed: 20.0}]
+record:
+  - {name: deck, quantity: bridge_displacement, x: 16.0, dof: body_bounce}
+  - {name: body, quantity: vehicle_displacement, vehicle: 2, dof: body_bounce}
+",
+    )
+    .unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let file = path.display().to_string();
+    let mut got = located(&stderr, &file);
+    got.sort();
+    // The span, `dof` on a bridge quantity, vehicle 2 of one.
+    assert_eq!(got, vec![(2, 30), (5, 63), (6, 59)], "{stderr}");
+    for message in [
+        "a span length must be positive, got -32",
+        "`dof` is not used by `bridge_displacement`",
+        "vehicle 2 does not exist; the scene has only vehicle 1",
+    ] {
+        assert!(stderr.contains(message), "no `{message}` in\n{stderr}");
+    }
+}

@@ -264,13 +264,19 @@ surface: {type: harmonic, amplitude: 0.003, wavelength: 1.5, phase: PHASE}
 contact: {type: hertz, coefficient: 1.0e11}
 ";
     let units = si
-        .replace("torsional_stiffness: 4.0e9", "torsional_stiffness: 4 GN*m^2/rad")
+        .replace(
+            "torsional_stiffness: 4.0e9",
+            "torsional_stiffness: 4 GN*m^2/rad",
+        )
         .replace("polar_mass: 60000.0", "polar_mass: 60 t*m^2/m")
         .replace("frequencies: [2.0, 30.0]", "frequencies: [2 Hz, 0.03 kHz]")
         .replace("coefficient: 1.0e11", "coefficient: 100 GN/m^1.5");
     // A phase in mrad is a decimal shift (bit for bit 0.5); in degrees it
     // is one multiplication by the f64 nearest π/180, the documented rule.
-    same_scene(&si.replace("PHASE", "0.5"), &units.replace("PHASE", "500 mrad"));
+    same_scene(
+        &si.replace("PHASE", "0.5"),
+        &units.replace("PHASE", "500 mrad"),
+    );
     let degrees = 30.0 * (std::f64::consts::PI / 180.0);
     same_scene(
         &si.replace("PHASE", &format!("{degrees:?}")),
@@ -350,8 +356,7 @@ vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e4]}]
     for (name, text) in [("si.yaml", si), ("units.yaml", &units)] {
         let path = scratch.path(name);
         std::fs::write(&path, text).unwrap();
-        let loaded =
-            vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let loaded = vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
         resolved.push(format!("{:?}", loaded.scenario));
     }
     assert_eq!(resolved[0], resolved[1]);
@@ -395,12 +400,32 @@ contact: {type: hertz, coefficient: 1.0e11 N/m}
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     let file = path.display().to_string();
     for (line, col, message) in [
-        (8, 24, "expected a torsional stiffness (N*m^2/rad, kN*m^2/rad"),
+        (
+            8,
+            24,
+            "expected a torsional stiffness (N*m^2/rad, kN*m^2/rad",
+        ),
         (8, 24, "found a plate rigidity (`MN*m`) in `4 MN*m`"),
-        (9, 15, "expected a moment of inertia per length (kg*m^2/m, t*m^2/m), found a mass (`t`)"),
-        (10, 49, "expected a frequency (Hz, kHz), found a time (`s`) in `30 s`"),
-        (13, 69, "expected an angle (rad, mrad, deg), found a time (`s`) in `90 s`"),
-        (14, 37, "expected a Hertz coefficient (N/m^1.5, kN/m^1.5, MN/m^1.5, GN/m^1.5), found a stiffness (`N/m`)"),
+        (
+            9,
+            15,
+            "expected a moment of inertia per length (kg*m^2/m, t*m^2/m), found a mass (`t`)",
+        ),
+        (
+            10,
+            49,
+            "expected a frequency (Hz, kHz), found a time (`s`) in `30 s`",
+        ),
+        (
+            13,
+            69,
+            "expected an angle (rad, mrad, deg), found a time (`s`) in `90 s`",
+        ),
+        (
+            14,
+            37,
+            "expected a Hertz coefficient (N/m^1.5, kN/m^1.5, MN/m^1.5, GN/m^1.5), found a stiffness (`N/m`)",
+        ),
     ] {
         let head = format!("{file}:{line}:{col}: ");
         let found = stderr

@@ -4,8 +4,8 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::ModesRaw;
-use crate::scene::imported::RotationSign;
 use crate::scene::NodeDof;
+use crate::scene::imported::RotationSign;
 
 /// A bridge imported from a finite-element program: stiffness and mass
 /// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`

@@ -78,7 +78,10 @@ fn a_unit_of_another_dimension_is_named() {
     assert!(LENGTH.parse("25").unwrap_err().contains("no unit"));
     // EI and GJ share N·m²; only GJ's `/rad` tells them apart.
     let e = BENDING_STIFFNESS.parse("4 GN*m^2/rad").unwrap_err();
-    assert!(e.contains("found a torsional stiffness (`GN*m^2/rad`)"), "{e}");
+    assert!(
+        e.contains("found a torsional stiffness (`GN*m^2/rad`)"),
+        "{e}"
+    );
     let e = HERTZ_COEFFICIENT.parse("1e11 N/m").unwrap_err();
     assert!(e.contains("found a stiffness (`N/m`)"), "{e}");
     let e = ROUGHNESS_COEFFICIENT.parse("16 cm").unwrap_err();
