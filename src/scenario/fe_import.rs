@@ -139,7 +139,7 @@ pub(super) fn resolve(
                 rail_inputs.push(RailInput {
                     name: rail.name.clone(),
                     file: None,
-                    nodes: Some(nodes.clone()),
+                    nodes: Some(nodes.iter().map(|n| n.resolved()).collect()),
                 });
             }
             _ => ck.error(

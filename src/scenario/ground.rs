@@ -42,7 +42,9 @@ pub(super) fn resolve(
         let direction = component.direction.unwrap_or(Direction::Vertical);
         match direction {
             Direction::Vertical => {}
-            Direction::Lateral if moves_sideways(bridge) || vehicles_move_sideways => {}
+            // Without a valid bridge its lateral modes are not known.
+            Direction::Lateral
+                if bridge.is_none() || moves_sideways(bridge) || vehicles_move_sideways => {}
             Direction::Lateral => {
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",

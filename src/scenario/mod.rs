@@ -271,6 +271,10 @@ pub struct Parsed {
     /// The mappings and sequences that lost an entry: a check that finds
     /// something missing there is a consequence of a type error.
     pub pruned: Vec<Location>,
+    /// Whether `bridge`, a required section, did not parse (or is absent):
+    /// a stand-in took its place in `raw` so that the other sections are
+    /// still checked, and it must not be checked itself.
+    pub bridge_unreadable: bool,
 }
 
 /// Parses a scenario's text and reports every type error (unknown key,
@@ -308,6 +312,7 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
                 raw: Some((raw, node)),
                 diagnostics: Vec::new(),
                 pruned: Vec::new(),
+                bridge_unreadable: false,
             });
         }
         Err(e) => e,
@@ -320,6 +325,8 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
     let mut pruned: Vec<Location> = Vec::new();
     let mut error = first;
     let mut rest = None;
+    // Required sections given a stand-in.
+    let mut stood_in: Vec<&'static str> = Vec::new();
     for pass in 1.. {
         let loc = error.loc.unwrap_or(tree.loc);
         let consequence = pruned.contains(&loc)
@@ -341,7 +348,26 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
             ));
             break;
         }
-        if !prune(&mut tree, loc, &mut pruned) {
+        // A required section lost to a type error (or never written) gets
+        // a stand-in, so that the other sections are still checked.
+        let missing = ["name", "bridge", "vehicles"]
+            .into_iter()
+            .find(|s| error.message == format!("missing field `{s}`"));
+        if loc == tree.loc
+            && let Some(section) = missing
+            && !stood_in.contains(&section)
+        {
+            if !stand_in(&mut tree, section) {
+                break;
+            }
+            stood_in.push(section);
+            // What is checked against a stand-in name or vehicle list
+            // (located at the root, where the stand-in is) is a
+            // consequence; a stand-in bridge is not checked at all.
+            if section != "bridge" {
+                pruned.push(tree.loc);
+            }
+        } else if !prune(&mut tree, loc, &mut pruned) {
             break;
         }
         match de::from_node::<ScenarioRaw>(&tree) {
@@ -356,7 +382,48 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
         raw: rest.map(|raw| (raw, tree)),
         diagnostics,
         pruned,
+        bridge_unreadable: stood_in.contains(&"bridge"),
     })
+}
+
+/// Puts a stand-in for the required `section` into the root mapping
+/// `tree`, every node at the root's location: `name: unnamed`, an empty
+/// `vehicles` list, or a valid beam `bridge` (which the loader marks
+/// unreadable, so it is never resolved or checked). `false` if the root is
+/// not a mapping.
+fn stand_in(tree: &mut yaml::Node, section: &str) -> bool {
+    use self::yaml::{Node, NodeKind};
+    let loc = tree.loc;
+    let NodeKind::Mapping(entries) = &mut tree.kind else {
+        return false;
+    };
+    let scalar = |text: &str| Node {
+        kind: NodeKind::Scalar {
+            text: text.into(),
+            plain: true,
+        },
+        loc,
+    };
+    let entry = |key: &str, value: Node| (scalar(key), value);
+    let list = |items: Vec<Node>| Node {
+        kind: NodeKind::Sequence(items),
+        loc,
+    };
+    let value = match section {
+        "name" => scalar("unnamed"),
+        "vehicles" => list(Vec::new()),
+        _ => Node {
+            kind: NodeKind::Mapping(vec![
+                entry("type", scalar("beam")),
+                entry("spans", list(vec![scalar("1.0")])),
+                entry("bending_stiffness", scalar("1.0")),
+                entry("mass_per_length", scalar("1.0")),
+            ]),
+            loc,
+        },
+    };
+    entries.push(entry(section, value));
+    true
 }
 
 /// Removes the deepest mapping entry (by its key or value) or sequence item
@@ -443,6 +510,8 @@ pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<L
         return Err(LoadError::Invalid(parsed.diagnostics));
     };
     let mut checker = resolve::Checker::new(file, source, &node);
+    checker.bridge_unreadable = parsed.bridge_unreadable;
+    checker.bridge_unknown = parsed.bridge_unreadable;
     let resolved = resolve::resolve(&raw, &mut checker, options);
     let mut diagnostics = parsed.diagnostics;
     let typed = diagnostics.len();

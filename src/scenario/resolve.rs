@@ -38,6 +38,13 @@ pub(super) struct Checker<'a> {
     /// Whether the records were checked: an error that stops the
     /// resolution before them leaves them to [`cross_checks`].
     records_checked: bool,
+    /// No valid bridge to check the other sections against: the file's
+    /// `bridge` did not parse (a stand-in took its place, set by the
+    /// loader) or has errors of its own. Checks that need the bridge's
+    /// length or width are then left out, not failed.
+    pub bridge_unknown: bool,
+    /// The file's `bridge` did not parse: it is not resolved at all.
+    pub bridge_unreadable: bool,
 }
 
 /// Parses "vehicles[0].speed" into path segments.
@@ -67,6 +74,8 @@ impl<'a> Checker<'a> {
             data: Default::default(),
             diagnostics: Vec::new(),
             records_checked: false,
+            bridge_unknown: false,
+            bridge_unreadable: false,
         }
     }
 
@@ -177,8 +186,8 @@ pub(super) fn resolve(
 /// the file writes them, when an earlier error stopped the resolution
 /// before them (so that a file's mistakes come in one round, issue 28.1).
 /// The bridge and vehicles are resolved again into a scratch checker (their
-/// own errors are already reported); without a valid bridge nothing is
-/// checked. Defaults that need the bridge's frequencies are not needed for
+/// own errors are already reported); without a valid bridge what needs it
+/// (a position on the deck, a node, the envelopes) is not checked. Defaults that need the bridge's frequencies are not needed for
 /// checking and get none.
 fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) {
     let mut scratch = Checker::new(ck.file, ck.source, ck.root);
@@ -188,13 +197,22 @@ fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) 
     if !budget.counts(raw, &mut scratch) {
         return;
     }
-    let Some(bridge) = resolve_bridge(&raw.bridge, &budget, &mut scratch) else {
-        return;
+    // A bridge that did not parse or has errors of its own: the records
+    // are checked against the vehicles alone.
+    let bridge = if ck.bridge_unreadable {
+        None
+    } else {
+        resolve_bridge(&raw.bridge, &budget, &mut scratch)
     };
-    let vehicles = vehicles_as_written(&raw.vehicles, bridge.width(), &mut scratch);
+    scratch.bridge_unknown = bridge.is_none();
+    let width = bridge.as_ref().and_then(Bridge::width);
+    let vehicles = vehicles_as_written(&raw.vehicles, width, &mut scratch);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, &mut scratch);
-    resolve_records(raw.record.as_deref(), &[], &bridge, &vehicles, &contact, ck);
-    super::envelopes::resolve_envelopes(raw.envelopes.as_ref(), &[], &bridge, ck);
+    let records = raw.record.as_deref();
+    resolve_records(records, &[], bridge.as_ref(), &vehicles, &contact, ck);
+    if let Some(bridge) = &bridge {
+        super::envelopes::resolve_envelopes(raw.envelopes.as_ref(), &[], bridge, ck);
+    }
 }
 
 /// [`resolve`], stopping at the first stage with errors.
@@ -223,10 +241,15 @@ fn resolve_checked(
         "m/s²",
     );
 
-    let bridge = resolve_bridge(&raw.bridge, &budget, ck);
+    let bridge = if ck.bridge_unreadable {
+        None
+    } else {
+        resolve_bridge(&raw.bridge, &budget, ck)
+    };
     if let Some(bridge) = &bridge {
         plausible::check_bridge(ck, bridge);
     }
+    ck.bridge_unknown = bridge.is_none();
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
     let bridge_length = bridge.as_ref().map_or(0.0, Bridge::length);
@@ -754,7 +777,7 @@ fn resolve_checked(
     let record = resolve_records(
         raw.record.as_deref(),
         &modal.frequencies(),
-        &bridge,
+        Some(&bridge),
         &vehicles,
         &contact,
         ck,
@@ -1178,6 +1201,8 @@ pub(super) fn lateral(
     half_track: f64,
 ) -> Option<f64> {
     match (given, width) {
+        // Without a valid bridge the deck's width is not known.
+        (Some(given), None) if ck.bridge_unknown => Some(given),
         (Some(_), None) => {
             ck.error(
                 &format!("{at}.lateral_position"),

@@ -86,12 +86,16 @@ pub(super) fn resolve_random(
             0.0
         }
     };
+    // The default needs the bridge's length: not checked without a bridge.
+    if sampling_length.is_some() || !ck.bridge_unknown {
+        let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
+        ck.positive(
+            "surface.sampling_length",
+            sampling_length,
+            "sampling length",
+        );
+    }
     let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
-    ck.positive(
-        "surface.sampling_length",
-        sampling_length,
-        "sampling length",
-    );
     let terms = terms.unwrap_or_else(|| {
         ((sampling_length / DEFAULT_SHORTEST_WAVELENGTH).round() as usize).clamp(1, MAX_TERMS)
     });
