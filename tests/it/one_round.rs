@@ -114,3 +114,35 @@ record:
         assert!(stderr.contains(message), "no `{message}` in\n{stderr}");
     }
 }
+
+#[test]
+fn vehicles_that_do_not_parse_hide_no_solver_error() {
+    // `vehicles` written as a mapping, not a list: a type error; the
+    // solver is still checked in the same round (the records, numbered
+    // against a vehicle list that is not there, are not).
+    let scratch = crate::support::Scratch::new("one_round", "vehicles-mapping");
+    let path = scratch.path("scene.yaml");
+    std::fs::write(
+        &path,
+        "name: vehicles-mapping
+bridge: {type: beam, spans: [32.0], bending_stiffness: 1.3e10, mass_per_length: 12000.0}
+vehicles: {type: moving_force, loads: [1.0e5], speed: 20.0}
+solver: {time_step: -1.0}
+",
+    )
+    .unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let mut got = located(&stderr, &path.display().to_string());
+    got.sort();
+    assert_eq!(got, vec![(3, 11), (4, 21)], "{stderr}");
+    assert!(
+        stderr.contains("invalid type: map, expected a sequence"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("time step must be positive, got -1"),
+        "{stderr}"
+    );
+}
