@@ -137,7 +137,7 @@ impl ModalBridge {
     }
 
     /// The entry weight of a contact at `x` on an imported track with free
-    /// rail ends ([`fe_import::entry`]); `None` where loads enter at once.
+    /// rail ends ([`super::fe_import::entry`]); `None` where loads enter at once.
     #[inline]
     fn contact_entry(&self) -> Option<&crate::scene::imported::RailEntry> {
         match &self.shapes {
@@ -150,7 +150,7 @@ impl ModalBridge {
 
     /// [`ModalBridge::mode_values`] as a wheel's contact at (x, y) sees
     /// them: on an imported track with free rail ends, times the entry
-    /// weight s(x) ([`fe_import::entry`]); elsewhere the same.
+    /// weight s(x) ([`super::fe_import::entry`]); elsewhere the same.
     #[inline]
     pub fn contact_mode_values(&self, x: f64, y: f64, values: &mut [f64]) {
         self.mode_values(x, y, values);

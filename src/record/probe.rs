@@ -168,7 +168,7 @@ impl Clone for ColumnStatics {
 }
 
 /// The per-step values the recorders of one lockstep batch share
-/// ([`Recorder::sharing_statics`]).
+/// ([`super::Recorder::sharing_statics`]).
 #[derive(Debug, Default)]
 pub struct SharedStatics {
     /// The step they belong to.
