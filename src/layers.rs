@@ -49,8 +49,6 @@ const KNOWN_UPWARD: &[(&str, &str)] = &[
     // choices and budgets (the planning stage is not yet split out), and
     // holds physics types in the resolved scene.
     ("scenario", "bridge"),
-    ("scenario", "ground"),
-    ("scenario", "surface"),
     ("scenario", "vehicle"),
 ];
 

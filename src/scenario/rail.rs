@@ -5,8 +5,8 @@ use super::cars::{CarRules, resolve_cars};
 use super::plausible::{DAMPING, MASS, MOMENT_OF_INERTIA, STIFFNESS, VEHICLE_LENGTH, within};
 use super::raw;
 use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use crate::scene::wheelset_span;
 use crate::scene::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
-use crate::vehicle::rail_car::wheelset_span;
 
 /// The rail car preset: the LCP separation paper's Table 2 (Section 5.2),
 /// whose values are legible in our copy: car body M_c = 31 994 kg and

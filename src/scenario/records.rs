@@ -5,16 +5,16 @@ use super::raw;
 use super::resolve::Checker;
 use crate::scene::*;
 
+use crate::scene::dof_names::{rail_car, train_3d};
 use crate::scene::imported::Direction;
-use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
 /// defines them (for a train: one car's names, picked with `car`).
 fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
-        Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
-        Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
+        Vehicle::Oscillator(_) => &crate::scene::dof_names::oscillator::DOF_NAMES,
+        Vehicle::H20Truck(_) => &crate::scene::dof_names::h20_44::DOF_NAMES,
         Vehicle::RailCar(_) | Vehicle::Train(_) => &rail_car::DOF_NAMES,
         Vehicle::Train3d(_) => &train_3d::DOF_NAMES,
     }

@@ -865,7 +865,7 @@ pub(super) fn entry_time(
     entry_time: Option<f64>,
     start_position: Option<f64>,
 ) -> f64 {
-    let stop = crate::vehicle::motion::Motion {
+    let stop = crate::scene::motion::Motion {
         speed,
         acceleration,
         entry_time: 0.0,
@@ -902,7 +902,7 @@ pub(super) fn entry_time(
             if speed <= 0.0 || !acceleration.is_finite() {
                 return 0.0;
             }
-            match crate::vehicle::motion::time_to_cover(speed, acceleration, (-x).max(0.0)) {
+            match crate::scene::motion::time_to_cover(speed, acceleration, (-x).max(0.0)) {
                 Some(t) => t,
                 None => {
                     let reach = speed * speed / (-2.0 * acceleration);

@@ -8,10 +8,10 @@ use std::sync::Arc;
 use super::budget::Budget;
 use super::raw;
 use super::resolve::Checker;
+use crate::scene::default_terms;
+use crate::scene::grid_nodes;
 use crate::scene::{Rails, RoughnessClass};
 use crate::scene::{Sampling, Surface, Vehicle};
-use crate::surface::grid_nodes;
-use crate::surface::synth::default_terms;
 use crate::vehicle::VehicleModel;
 
 mod measured;
@@ -443,7 +443,7 @@ pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Ch
             continue;
         }
         if let Some(t) =
-            crate::vehicle::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
+            crate::scene::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
         {
             vehicle.set_entry_time(t);
         }
@@ -617,7 +617,7 @@ pub(super) fn check_reach(
             &format!(
                 "grid nodes of the sampled profile ({} per shortest wavelength over the {:.1} m \
                  from the run-in's start to where the wheels reach, per rail)",
-                crate::surface::NODES_PER_WAVELENGTH,
+                crate::scene::NODES_PER_WAVELENGTH,
                 end + sampling.run_in
             ),
             nodes * rails,
@@ -636,7 +636,7 @@ pub(super) fn check_reach(
     if let Surface::Random { terms, .. } = *surface {
         // The power-law series is sampled over one period (32 nodes per
         // shortest wavelength), whatever the wheels' travel.
-        let nodes = crate::surface::power_law_grid_nodes(terms) as f64;
+        let nodes = crate::scene::power_law_grid_nodes(terms) as f64;
         let path = if ck.has("surface.terms") {
             "surface.terms"
         } else {

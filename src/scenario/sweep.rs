@@ -6,10 +6,10 @@ use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use crate::scene::default_terms;
 use crate::scene::{
     Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
-use crate::surface::synth::default_terms;
 
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
@@ -33,14 +33,14 @@ pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
                 let start = -*entry_time * *vehicle_speed;
                 *entry_time = -start / speed;
             } else {
-                let start = crate::vehicle::motion::Motion {
+                let start = crate::scene::motion::Motion {
                     speed: *vehicle_speed,
                     acceleration,
                     entry_time: *entry_time,
                 }
                 .position(0.0);
                 if let Some(t) =
-                    crate::vehicle::motion::time_to_cover(speed, acceleration, (-start).max(0.0))
+                    crate::scene::motion::time_to_cover(speed, acceleration, (-start).max(0.0))
                 {
                     *entry_time = t;
                 }
@@ -73,7 +73,7 @@ pub fn stops_before_entry(vehicles: &[Vehicle], speed: f64) -> Option<usize> {
             return false;
         }
         let start = v.motion().position(0.0);
-        crate::vehicle::motion::time_to_cover(speed, a, (-start).max(0.0)).is_none()
+        crate::scene::motion::time_to_cover(speed, a, (-start).max(0.0)).is_none()
     })
 }
 
