@@ -12,8 +12,8 @@
 //!
 //! # Using vbi as a library
 //!
-//! Load a scene (from a file with [`scenario::load_file`], from text with
-//! [`scenario::load_str`]), run it, and get the results back as data; files
+//! Load a scene (from a file with [`plan::load_file`], from text with
+//! [`plan::load_str`]), run it, and get the results back as data; files
 //! are written only when you hand the results to the report layer. Loading
 //! also makes the automatic choices (modes, time step, budgets): the
 //! planning stage is not yet a step of its own.
@@ -29,7 +29,7 @@
 //! solver: {time_step: 1.0e-3}
 //! record: [{name: midspan, quantity: bridge_displacement, x: 12.5}]
 //! ";
-//! let loaded = vbi::scenario::load_str(yaml, "api-example.yaml")?;
+//! let loaded = vbi::plan::load_str(yaml, "api-example.yaml")?;
 //! let Results::Scene(outcome) = execute(loaded.clone(), &|_done, _total| {})? else {
 //!     unreachable!("a scene without a study")
 //! };
@@ -57,6 +57,7 @@ pub mod generate;
 pub mod ground;
 pub mod init;
 pub mod model;
+pub mod plan;
 pub mod record;
 pub mod regress;
 pub mod report;

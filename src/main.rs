@@ -18,6 +18,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use clap::{CommandFactory, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
+use vbi::plan;
 use vbi::scenario::{self, LoadError};
 
 /// Vehicle–bridge interaction dynamics from a YAML scene.
@@ -349,7 +350,7 @@ fn main() -> ExitCode {
         modes_cache: cache_in(None),
         data: data.clone(),
     };
-    let load = |file: &Path| scenario::load_file_with(file, options.clone());
+    let load = |file: &Path| plan::load_file_with(file, options.clone());
     match cli.command {
         Command::Run {
             file,
@@ -365,7 +366,7 @@ fn main() -> ExitCode {
                 modes_cache: cache_in(Some(&folder)),
                 ..options.clone()
             };
-            let loaded = scenario::load_file_with(&file, options.clone());
+            let loaded = plan::load_file_with(&file, options.clone());
             match (shard, sample) {
                 (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard, force),
                 (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, force, k),
@@ -525,7 +526,7 @@ fn load_error(e: &LoadError) -> ExitCode {
 }
 
 fn run(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     out: Option<PathBuf>,
     quiet: bool,
@@ -611,7 +612,7 @@ fn run(
 
 fn check(
     files: &[PathBuf],
-    load: &dyn Fn(&Path) -> Result<scenario::Loaded, LoadError>,
+    load: &dyn Fn(&Path) -> Result<plan::Loaded, LoadError>,
     shards: Option<u64>,
     allow_large: bool,
 ) -> ExitCode {
@@ -657,11 +658,11 @@ fn modes(
     shapes: Option<&Path>,
     json: bool,
 ) -> ExitCode {
-    let vbi::scenario::bridge_only::ModesScene {
+    let vbi::plan::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
-    } = match scenario::load_file_for_modes(file, options) {
+    } = match plan::load_file_for_modes(file, options) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };
@@ -779,7 +780,7 @@ fn modes_json(
 fn vehicle_frequencies_json(
     scenario: &vbi::scenario::resolved::Scenario,
 ) -> Vec<serde_json::Value> {
-    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::plan::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     scenario
         .vehicles
@@ -799,7 +800,7 @@ fn vehicle_frequencies_json(
 /// Each vehicle's own natural frequencies with its wheels held on rigid
 /// ground (massless DOFs condensed out), to set against the bridge's.
 fn print_vehicle_frequencies(scenario: &vbi::scene::Scenario) {
-    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::plan::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     let hz = |f: &[f64]| {
         if f.is_empty() {
@@ -825,7 +826,7 @@ fn print_vehicle_frequencies(scenario: &vbi::scene::Scenario) {
 
 #[allow(clippy::too_many_arguments)]
 fn converge(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     tolerance: f64,
     levels: usize,

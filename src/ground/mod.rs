@@ -208,21 +208,4 @@ mod tests {
         // Linear interpolation of the sine: relative error (ΩΔ)²/24 = 6.6e-6.
         assert!((r.peak_velocity() / (6.0 / omega) - 1.0).abs() < 2e-5);
     }
-
-    #[test]
-    fn units_are_recognised() {
-        assert_eq!(
-            AccelerationUnit::parse("G"),
-            Some(AccelerationUnit::StandardGravity)
-        );
-        assert_eq!(
-            AccelerationUnit::parse("cm/sec/sec"),
-            Some(AccelerationUnit::CentimetresPerSecondSquared)
-        );
-        assert_eq!(
-            AccelerationUnit::parse(" m/s² "),
-            Some(AccelerationUnit::MetresPerSecondSquared)
-        );
-        assert_eq!(AccelerationUnit::parse("in/s^2"), None);
-    }
 }

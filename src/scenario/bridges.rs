@@ -19,7 +19,7 @@ pub const DEFAULT_ORTHOTROPIC_POISSON: f64 = 0.3;
 pub const MAX_RITZ_TERMS: usize = 2_000;
 
 /// Resolves the bridge description; `None` after reporting its problems.
-pub(super) fn resolve_bridge(
+pub(crate) fn resolve_bridge(
     raw: &raw::BridgeRaw,
     budget: &super::budget::Budget,
     ck: &mut Checker<'_>,
@@ -403,7 +403,7 @@ fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     elements_per_span
 }
 
-pub(super) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
+pub(crate) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
     match raw {
         None => Modes {
             count: None,

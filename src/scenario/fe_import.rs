@@ -29,7 +29,7 @@ const MIN_ENTRY_BYTES: f64 = 10.0;
 pub const DEFAULT_ENTRY_LENGTH: f64 = 3.0;
 
 /// Resolves the `fe_import` bridge; `None` after reporting its problems.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: &raw::FeImportRaw,
     budget: &Budget,
     ck: &mut Checker<'_>,

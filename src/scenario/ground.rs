@@ -37,7 +37,7 @@ type Samples = Arc<(Vec<f64>, Vec<f64>, AccelerationUnit)>;
 const MIN_SAMPLE_BYTES: f64 = 2.0;
 
 /// Resolves every component; those with errors are reported and left out.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: Option<&[GroundMotionRaw]>,
     bridge: Option<&Bridge>,
     vehicles_move_sideways: bool,

@@ -11,7 +11,7 @@ use crate::scene::Output;
 const MAX_EVERY: u64 = 1 << 40;
 
 /// The resolved `output` for a run at `time_step` (s).
-pub(super) fn resolve_output(
+pub(crate) fn resolve_output(
     raw: Option<&OutputRaw>,
     time_step: f64,
     ck: &mut Checker<'_>,

@@ -91,7 +91,7 @@ pub fn acceleration_cutoff(frequencies: &[f64]) -> f64 {
 
 /// The highest mode frequency any bridge acceleration record sums, Hz
 /// (`None` without such records): what the automatic mode choice must keep.
-pub(super) fn highest_acceleration_cutoff(
+pub(crate) fn highest_acceleration_cutoff(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
 ) -> Option<f64> {
@@ -116,7 +116,7 @@ pub fn quantity_name_of(q: Quantity) -> String {
 
 /// `frequencies` are the bridge's lowest natural frequencies, Hz (for the
 /// default acceleration cut-off).
-pub(super) fn resolve_records(
+pub(crate) fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
     bridge: &Bridge,

@@ -16,7 +16,7 @@ pub const MAX_RESONANCE_SPEEDS: usize = 10_000;
 pub const DEFAULT_LOWEST_SPEED: f64 = 40.0;
 
 /// `frequencies`: the bridge's lowest natural frequencies, Hz.
-pub(super) fn resolve_resonance(
+pub(crate) fn resolve_resonance(
     raw: &raw::ResonanceCheckRaw,
     bridge: &Bridge,
     frequencies: &[f64],

@@ -2,13 +2,12 @@
 //! roughness entry and sample, the checks of the `study` section, and the
 //! excitation the automatic defaults must cover over the whole sweep.
 
-use super::content::{self, Excitation};
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
 use super::resolve::{Checker, MAX_SPEED};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
 use crate::scene::default_terms;
 use crate::scene::{
-    Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
+    Bridge, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
 
 /// Most values on the speed grid.
@@ -79,7 +78,7 @@ pub fn stops_before_entry(vehicles: &[Vehicle], speed: f64) -> Option<usize> {
 
 /// The vehicles of the sweep's fastest and slowest runs (the scene's own
 /// vehicles twice when `study` is not a speed sweep).
-pub(super) fn extreme_vehicles(
+pub(crate) fn extreme_vehicles(
     study: Option<&Study>,
     vehicles: &[Vehicle],
 ) -> (Vec<Vehicle>, Vec<Vehicle>) {
@@ -176,39 +175,6 @@ pub fn surface(
     }
 }
 
-/// Excitations over the whole study: every vehicle at the top speed (`None`:
-/// the scene's own speeds) on each swept surface (`None` entry: the scene's
-/// own), so that the automatic mode cut-off and time step serve every run.
-pub(super) fn excitations(
-    top: Option<f64>,
-    entries: &[Option<SweepRoughness>],
-    vehicles: &[Vehicle],
-    contact: &Contact,
-    base: &Surface,
-    bridge: &Bridge,
-    gravity: f64,
-) -> Vec<Excitation> {
-    let fast = match top {
-        Some(top) => with_speed(vehicles, top),
-        None => vehicles.to_vec(),
-    };
-    let mut out = Vec::new();
-    for &entry in entries {
-        let surface = surface(base, entry, 0, bridge.length());
-        for mut e in content::excitations(&fast, contact, &surface, bridge.spans(), gravity) {
-            if let Some(top) = top
-                && e.source.contains("(v /")
-            {
-                e.source = format!("{} at the study's top speed, {top} m/s", e.source);
-            }
-            if !out.contains(&e) {
-                out.push(e);
-            }
-        }
-    }
-    out
-}
-
 /// The surfaces of a `roughness` list (`None`: the scene's own only).
 pub fn entries_of(list: Option<&[SweepRoughness]>) -> Vec<Option<SweepRoughness>> {
     match list {
@@ -222,7 +188,7 @@ pub const MAX_SHOWN: usize = 20;
 
 /// Checks the `study` section of a Monte Carlo study and fills its
 /// defaults; refuses a study with nothing random to sample.
-pub(super) fn resolve_monte_carlo(
+pub(crate) fn resolve_monte_carlo(
     raw: &MonteCarloRaw,
     surface: &Surface,
     ck: &mut Checker<'_>,
@@ -272,7 +238,7 @@ pub(super) fn resolve_monte_carlo(
 }
 
 /// Checks the `study` section of a speed sweep and fills its defaults.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: &SpeedSweepRaw,
     bridge: &Bridge,
     surface: &Surface,

@@ -47,7 +47,7 @@ pub const H20_44_PRESET: H20TruckParameters = H20TruckParameters {
 };
 
 /// Resolves one H20-44 truck at `at` (e.g. `vehicles[0]`).
-pub(super) fn resolve_h20(
+pub(crate) fn resolve_h20(
     v: &raw::H20TruckRaw,
     at: &str,
     width: Option<f64>,

@@ -169,3 +169,25 @@ impl GroundRecord {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn units_are_recognised() {
+        assert_eq!(
+            AccelerationUnit::parse("G"),
+            Some(AccelerationUnit::StandardGravity)
+        );
+        assert_eq!(
+            AccelerationUnit::parse("cm/sec/sec"),
+            Some(AccelerationUnit::CentimetresPerSecondSquared)
+        );
+        assert_eq!(
+            AccelerationUnit::parse(" m/s² "),
+            Some(AccelerationUnit::MetresPerSecondSquared)
+        );
+        assert_eq!(AccelerationUnit::parse("in/s^2"), None);
+    }
+}
