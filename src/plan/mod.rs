@@ -12,7 +12,7 @@
 //! - the budgets that need a mode count or the eigen solve's size;
 //! - oscillators given by dimensionless groups (they need f₁).
 //!
-//! Data flow: [`load_str`] → the format ([`crate::scenario::resolve_with`]:
+//! Data flow: [`load_str`] → the format (`scenario::resolve_with`:
 //! YAML → raw → the described scene, every check that needs no physics) →
 //! [`choices::plan`] → [`Loaded`], which [`crate::run`] runs. Errors found
 //! here carry the file, line and column of the key they blame, as the

@@ -9,9 +9,18 @@ use super::budget::Budget;
 use super::data_files::{self, DataFile};
 use super::raw;
 use super::resolve::Checker;
-use crate::bridge::fe_import::{
-    MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market, tables,
+pub mod abaqus;
+mod entries;
+pub mod harwell_boeing;
+pub mod matrix_market;
+mod read;
+pub mod rotation;
+pub mod tables;
+
+pub use self::read::{
+    AssemblyError, MatrixFile, RailNodes, ReadError, SYMMETRY_TOLERANCE, SizeCheck, Source,
 };
+pub(crate) use self::read::{fail, fail_at, parse_value};
 use crate::scene::imported::{Direction, ImportedModel};
 use crate::scene::*;
 
@@ -22,7 +31,7 @@ const MIN_ENTRY_BYTES: f64 = 10.0;
 /// Default length over which a wheel's load enters an imported track at a
 /// free rail end, m: a little beyond the distance ahead of a wheel at which
 /// a continuous rail on ballasted track already bends under it (the first
-/// zero of its deflection line, 1.7–2.1 m: [`crate::bridge::fe_import::entry`]),
+/// zero of its deflection line, 1.7–2.1 m: `crate::bridge::fe_import::entry`),
 /// and long enough that the ramp rings no track mode above the automatic
 /// cut-off: measured on scenarios/viaduct-2span (issue 24.4; README,
 /// "Imported FE models").

@@ -16,7 +16,7 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod envelopes;
-pub(crate) mod fe_import;
+pub mod fe_import;
 pub(crate) mod ground;
 pub(crate) mod long_run;
 pub mod names;
