@@ -14,7 +14,7 @@
 //!
 //! Data flow: [`load_str`] → the format (`scenario::resolve_with`:
 //! YAML → raw → the described scene, every check that needs no physics) →
-//! [`choices::plan`] → [`Loaded`], which [`crate::run`] runs. Errors found
+//! `choices::plan` → [`Loaded`], which [`crate::run`] runs. Errors found
 //! here carry the file, line and column of the key they blame, as the
 //! format's own.
 
