@@ -10,8 +10,8 @@ use super::budget::eigen_fits;
 use super::content;
 use crate::bridge::{ModalBridge, ModeRequest};
 use crate::scenario::budget::{Budget, LoadOptions};
+use crate::scenario::checker::Checker;
 use crate::scenario::raw::{BridgeRaw, LimitsRaw};
-use crate::scenario::resolve::Checker;
 use crate::scenario::{LoadError, bridges, de, parse_raw};
 use crate::scene::Scenario;
 

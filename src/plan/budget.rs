@@ -2,7 +2,7 @@
 
 use crate::bridge::ModalBridge;
 use crate::scenario::budget::{Budget, lanczos_vectors};
-use crate::scenario::resolve::Checker;
+use crate::scenario::checker::Checker;
 use crate::scene::Bridge;
 
 /// Whether a beam's eigen solve for `modes` modes fits

@@ -8,12 +8,13 @@
 
 use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
 use crate::scenario::budget;
+use crate::scenario::checker::Checker;
 use crate::scenario::derive::{
     resolve_contact, resolve_embs, resolve_iteration, resolve_method, resolve_study,
 };
 use crate::scenario::plausible;
 use crate::scenario::records::resolve_records;
-use crate::scenario::resolve::{Checker, Described};
+use crate::scenario::resolve::Described;
 use crate::scene::*;
 
 use super::budget::eigen_fits;

@@ -2,8 +2,8 @@
 //! first natural frequency is known (LCP separation paper, Table 1).
 
 use crate::bridge::ModalBridge;
+use crate::scenario::checker::Checker;
 use crate::scenario::raw;
-use crate::scenario::resolve::Checker;
 use crate::scene::*;
 
 /// Relative difference below which a given value agrees with a derived one.
@@ -61,10 +61,10 @@ pub(crate) fn derive_dimensionless(
             groups.frequency_ratio,
             "frequency ratio",
         );
-        crate::scenario::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
+        crate::scenario::checker::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
         let mut derived = groups.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
         // The derived speed is blamed on the ratio that gives it.
-        if derived.speed > crate::scenario::resolve::MAX_SPEED {
+        if derived.speed > crate::scenario::vehicles::MAX_SPEED {
             ck.error(
                 &dpath("velocity_ratio"),
                 format!(
@@ -73,7 +73,7 @@ pub(crate) fn derive_dimensionless(
                     groups.velocity_ratio,
                     derived.speed,
                     modal.length,
-                    crate::scenario::resolve::MAX_SPEED
+                    crate::scenario::vehicles::MAX_SPEED
                 ),
             );
         }
@@ -113,8 +113,8 @@ pub(crate) fn derive_dimensionless(
             "speed",
         );
         derived.acceleration =
-            crate::scenario::resolve::check_acceleration(ck, &at, o.acceleration);
-        derived.entry_time = crate::scenario::resolve::entry_time(
+            crate::scenario::vehicles::check_acceleration(ck, &at, o.acceleration);
+        derived.entry_time = crate::scenario::vehicles::entry_time(
             ck,
             &at,
             derived.speed,

@@ -2,8 +2,8 @@
 //! bridge's first frequency (a separation map).
 
 use crate::bridge::ModalBridge;
+use crate::scenario::checker::Checker;
 use crate::scenario::plausible::*;
-use crate::scenario::resolve::Checker;
 use crate::scene::{Bridge, Contact, Study, Vehicle};
 
 /// Checks every point of a study: a separation map derives the oscillator
@@ -58,14 +58,14 @@ pub(crate) fn check_study(
         point.mass_ratio = m;
         let derived = point.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
         let speed = derived.speed;
-        if !(speed > 0.0 && speed <= crate::scenario::resolve::MAX_SPEED) {
+        if !(speed > 0.0 && speed <= crate::scenario::vehicles::MAX_SPEED) {
             ck.error(
                 vpath,
                 format!(
                     "the study's velocity ratio {v} gives a speed of {} m/s (2 × ratio × f1 × L with f1 = {f1:.4} Hz, L = {} m), outside 0 to {} m/s",
                     number(speed),
                     modal.length,
-                    crate::scenario::resolve::MAX_SPEED
+                    crate::scenario::vehicles::MAX_SPEED
                 ),
             );
         }

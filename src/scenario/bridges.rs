@@ -1,8 +1,9 @@
 //! Resolving `bridge`: the beam and the plate deck, with their checks and
 //! defaults.
 
+use super::checker::{Checker, check_ratio};
 use super::raw;
-use super::resolve::{Checker, DEFAULT_ELEMENTS_PER_SPAN, check_ratio};
+use super::resolve::DEFAULT_ELEMENTS_PER_SPAN;
 use crate::scene::*;
 
 /// Default Ritz transverse functions.

@@ -11,8 +11,8 @@
 //! estimate is computed in `f64` or with checked integer arithmetic, so no
 //! user-given size can wrap around.
 
+use super::checker::Checker;
 use super::raw::{self, LimitsRaw};
-use super::resolve::Checker;
 use crate::scene::{Bridge, Limits, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where

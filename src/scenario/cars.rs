@@ -5,8 +5,8 @@
 //! was given, so the resolved scene (written as a `cars` list) resolves to
 //! the same offsets bit for bit.
 
+use super::checker::Checker;
 use super::rail::MAX_CARS;
-use super::resolve::Checker;
 
 /// How one kind of car is resolved and checked.
 pub(crate) struct CarRules<P, R> {

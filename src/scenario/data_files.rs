@@ -16,7 +16,7 @@
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use super::resolve::Checker;
+use super::checker::Checker;
 
 /// Where the files a scene names may be read from.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]

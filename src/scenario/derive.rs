@@ -3,8 +3,8 @@
 //! from a wheel radius), the solver method the contact needs, and studies
 //! (oscillators from dimensionless groups need f₁: `plan::derive`).
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::*;
 
 /// Relative difference below which a given value agrees with a derived one.

@@ -1,9 +1,9 @@
 //! Resolving `envelopes:`: the quantities and points checked against the
 //! bridge, every default filled in.
 
+use super::checker::Checker;
 use super::raw;
 use super::records::{acceleration_cutoff, quantity_name_of};
-use super::resolve::Checker;
 use crate::scene::Quantity;
 use crate::scene::{Bridge, Envelopes};
 

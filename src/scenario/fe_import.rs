@@ -6,9 +6,9 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::data_files::{self, DataFile};
 use super::raw;
-use super::resolve::Checker;
 pub mod abaqus;
 mod entries;
 pub mod harwell_boeing;
@@ -56,11 +56,11 @@ pub(crate) fn resolve(
     let (damping, damping_file) = match &raw.damping {
         None => (ImportDamping::Modal { ratio: 0.0 }, None),
         Some(raw::ImportDampingRaw::Modal { ratio }) => {
-            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            super::checker::check_ratio(ck, "bridge.damping.ratio", *ratio);
             (ImportDamping::Modal { ratio: *ratio }, None)
         }
         Some(raw::ImportDampingRaw::Rayleigh { frequencies, ratio }) => {
-            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            super::checker::check_ratio(ck, "bridge.damping.ratio", *ratio);
             for (i, &f) in frequencies.iter().enumerate() {
                 ck.positive(
                     &format!("bridge.damping.frequencies[{i}]"),

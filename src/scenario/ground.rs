@@ -13,9 +13,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
-use super::resolve::Checker;
 use crate::scene::{AccelerationUnit, Direction, GroundRecord};
 use crate::scene::{Bridge, GroundMotion};
 

@@ -8,8 +8,8 @@
 //! crossing, the file's own time step, else the slowest vehicle's speed.
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::{GroundMotion, Surface, Vehicle};
 
 /// The run whose steps are budgeted.

@@ -9,6 +9,7 @@
 pub mod bridges;
 pub mod budget;
 pub(crate) mod cars;
+pub mod checker;
 pub mod data_files;
 #[allow(missing_docs)]
 pub mod de;
@@ -35,6 +36,7 @@ pub mod schema;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;
+pub mod vehicles;
 #[allow(missing_docs)]
 pub mod yaml;
 
@@ -44,11 +46,12 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub use self::budget::LoadOptions;
+pub(crate) use self::checker::Checker;
 pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
-pub(crate) use self::resolve::{Checker, Described};
+pub(crate) use self::resolve::Described;
 use self::yaml::Location;
 
 /// Why a scenario could not be loaded.
@@ -409,7 +412,7 @@ pub(crate) fn resolve_with<T>(
     let Some((raw, node)) = parsed.raw else {
         return Err(LoadError::Invalid(parsed.diagnostics));
     };
-    let mut checker = resolve::Checker::new(file, source, &node);
+    let mut checker = checker::Checker::new(file, source, &node);
     let resolved = resolve::resolve(&raw, &mut checker, options, plan);
     let mut diagnostics = parsed.diagnostics;
     let typed = diagnostics.len();

@@ -4,7 +4,7 @@
 //! outside the output folder, nor smuggle control characters into a
 //! terminal or a CSV header.
 
-use super::resolve::Checker;
+use super::checker::Checker;
 
 /// Longest scene or record name accepted, in characters.
 pub const MAX_NAME_CHARS: usize = 200;

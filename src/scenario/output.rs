@@ -1,8 +1,8 @@
 //! Resolving the `output` section: `every` or `interval` into a whole
 //! number of steps between written samples, and the history's format.
 
+use super::checker::Checker;
 use super::raw::OutputRaw;
-use super::resolve::Checker;
 use crate::scene::HistoryFormat;
 use crate::scene::Output;
 

@@ -38,7 +38,7 @@
 //! | explicit time step | 1e-9 to 1 | s |
 //! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
 
-use super::resolve::Checker;
+use super::checker::Checker;
 use crate::scene::{Bridge, Contact, Rigidity, Vehicle};
 
 /// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).

@@ -2,9 +2,10 @@
 //! train's expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
+use super::checker::Checker;
 use super::plausible::{DAMPING, MASS, MOMENT_OF_INERTIA, STIFFNESS, VEHICLE_LENGTH, within};
 use super::raw;
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::wheelset_span;
 use crate::scene::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
 

@@ -2,9 +2,10 @@
 //! and the expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
+use super::checker::Checker;
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
 use super::raw::{Train3dParametersRaw, Train3dRaw};
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{Train3d, Train3dCar, Train3dParameters, Vehicle};
 
 /// The 3D car preset: the Siemens Velaro AVE-S103 of the EMBS paper's

@@ -1,8 +1,8 @@
 //! Resolving `record`: each recorded quantity checked against the bridge and
 //! the vehicles, and the default set when the scene gives none.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::*;
 
 use crate::scene::dof_names::{rail_car, train_3d};

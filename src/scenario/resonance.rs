@@ -1,10 +1,11 @@
 //! Resolving a resonance check: trains, speeds, deck and filter checked,
 //! every default filled in.
 
+use super::checker::Checker;
 use super::raw::{self, km_h_to_m_s};
 use super::records::acceleration_cutoff;
-use super::resolve::{Checker, MAX_SPEED};
 use super::resonance_grid::additional_damping_percent;
+use super::vehicles::MAX_SPEED;
 use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 use crate::scene::{Deck, HslmModel};
 

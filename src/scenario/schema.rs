@@ -211,8 +211,8 @@ pub fn dof_name(schema: &mut Schema) {
     set(schema, "enum", names);
 }
 
-/// A speed in m/s: > 0 and at most [`crate::scenario::resolve::MAX_SPEED`] (`check_speed`).
+/// A speed in m/s: > 0 and at most [`crate::scenario::vehicles::MAX_SPEED`] (`check_speed`).
 pub fn speed(schema: &mut Schema) {
     crate::scene::schema_rules::positive(schema);
-    set(schema, "maximum", crate::scenario::resolve::MAX_SPEED);
+    set(schema, "maximum", crate::scenario::vehicles::MAX_SPEED);
 }

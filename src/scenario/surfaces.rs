@@ -6,8 +6,8 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::default_terms;
 use crate::scene::grid_nodes;
 use crate::scene::{Rails, RoughnessClass};

@@ -2,9 +2,10 @@
 //! roughness entry and sample, the checks of the `study` section, and the
 //! excitation the automatic defaults must cover over the whole sweep.
 
+use super::checker::Checker;
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
-use super::resolve::{Checker, MAX_SPEED};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use super::vehicles::MAX_SPEED;
 use crate::scene::default_terms;
 use crate::scene::{
     Bridge, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,

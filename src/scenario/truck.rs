@@ -1,7 +1,8 @@
 //! Resolving the H20-44 truck: the preset and the user's overrides.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{H20Truck, H20TruckParameters, Vehicle};
 
 /// The H20-44 preset.

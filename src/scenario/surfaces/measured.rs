@@ -8,8 +8,8 @@
 //! row.
 
 use super::super::budget::Budget;
+use super::super::checker::Checker;
 use super::super::data_files::{self, DataFile};
-use super::super::resolve::Checker;
 use crate::scenario::ground::not_a_number;
 use crate::scene::MeasuredProfile;
 
