@@ -8,11 +8,12 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::run_cmd::{default_out, load_error};
 use super::{EXIT_FAILED, EXIT_INVALID, emit};
-use vbi::scenario::{self, LoadError};
+use vbi::plan;
+use vbi::scenario::LoadError;
 
 #[allow(clippy::too_many_arguments)]
 pub(super) fn converge(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     tolerance: f64,
     levels: usize,

@@ -17,6 +17,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::{CommandFactory, Parser};
 
+use vbi::plan;
 use vbi::scenario;
 
 /// Whether stdout / stderr still has a reader.
@@ -106,7 +107,7 @@ fn main() -> ExitCode {
         modes_cache: cache_in(None),
         data: data.clone(),
     };
-    let load = |file: &Path| scenario::load_file_with(file, options.clone());
+    let load = |file: &Path| plan::load_file_with(file, options.clone());
     match cli.command {
         Command::Run {
             file,
@@ -122,7 +123,7 @@ fn main() -> ExitCode {
                 modes_cache: cache_in(Some(&folder)),
                 ..options.clone()
             };
-            let loaded = scenario::load_file_with(&file, options.clone());
+            let loaded = plan::load_file_with(&file, options.clone());
             match (shard, sample) {
                 (Some(shard), _) => run_shard(loaded, &file, &options, out, quiet, shard, force),
                 (None, Some(k)) => run_sample(loaded, &file, out, quiet, svg, force, k),

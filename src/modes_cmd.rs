@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use super::run_cmd::load_error;
 use super::{EXIT_FAILED, emit};
+use vbi::plan;
 use vbi::scenario;
 
 pub(super) fn modes(
@@ -14,11 +15,11 @@ pub(super) fn modes(
     shapes: Option<&Path>,
     json: bool,
 ) -> ExitCode {
-    let vbi::scenario::bridge_only::ModesScene {
+    let vbi::plan::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
-    } = match scenario::load_file_for_modes(file, options) {
+    } = match plan::load_file_for_modes(file, options) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };
@@ -136,7 +137,7 @@ pub(super) fn modes_json(
 pub(super) fn vehicle_frequencies_json(
     scenario: &vbi::scenario::resolved::Scenario,
 ) -> Vec<serde_json::Value> {
-    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::plan::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     scenario
         .vehicles
@@ -156,7 +157,7 @@ pub(super) fn vehicle_frequencies_json(
 /// Each vehicle's own natural frequencies with its wheels held on rigid
 /// ground (massless DOFs condensed out), to set against the bridge's.
 pub(super) fn print_vehicle_frequencies(scenario: &vbi::scene::Scenario) {
-    use vbi::scenario::content::vehicle_frequencies;
+    use vbi::plan::content::vehicle_frequencies;
     use vbi::vehicle::VehicleModel;
     let hz = |f: &[f64]| {
         if f.is_empty() {

@@ -8,10 +8,10 @@ use std::time::Instant;
 use thiserror::Error;
 
 use crate::model::{BuildError, Model};
+use crate::plan::Loaded;
 use crate::record::{History, Recorder};
 use crate::report::summary::Summary;
 use crate::report::{self, ReportError};
-use crate::scenario::Loaded;
 use crate::scene::Scenario;
 use crate::solve::{self, Progress, SolveError};
 

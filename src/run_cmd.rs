@@ -8,7 +8,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::studies::{self, write_study};
 use super::{EXIT_FAILED, EXIT_INVALID, emit};
-use vbi::scenario::{self, LoadError};
+use vbi::plan;
+use vbi::scenario::LoadError;
 
 /// The default output folder: `results/<file stem><suffix>`. From the file,
 /// not the scene's `name`: two files that share a `name` do not overwrite
@@ -30,7 +31,7 @@ pub(super) fn load_error(e: &LoadError) -> ExitCode {
 }
 
 pub(super) fn run(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     out: Option<PathBuf>,
     quiet: bool,
@@ -116,7 +117,7 @@ pub(super) fn run(
 
 pub(super) fn check(
     files: &[PathBuf],
-    load: &dyn Fn(&Path) -> Result<scenario::Loaded, LoadError>,
+    load: &dyn Fn(&Path) -> Result<plan::Loaded, LoadError>,
     shards: Option<u64>,
     allow_large: bool,
 ) -> ExitCode {

@@ -1,20 +1,20 @@
 //! Resolving `record`: each recorded quantity checked against the bridge and
 //! the vehicles, and the default set when the scene gives none.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::*;
 
+use crate::scene::dof_names::{rail_car, train_3d};
 use crate::scene::imported::Direction;
-use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
 /// defines them (for a train: one car's names, picked with `car`).
 fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
-        Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
-        Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
+        Vehicle::Oscillator(_) => &crate::scene::dof_names::oscillator::DOF_NAMES,
+        Vehicle::H20Truck(_) => &crate::scene::dof_names::h20_44::DOF_NAMES,
         Vehicle::RailCar(_) | Vehicle::Train(_) => &rail_car::DOF_NAMES,
         Vehicle::Train3d(_) => &train_3d::DOF_NAMES,
     }
@@ -91,7 +91,7 @@ pub fn acceleration_cutoff(frequencies: &[f64]) -> f64 {
 
 /// The highest mode frequency any bridge acceleration record sums, Hz
 /// (`None` without such records): what the automatic mode choice must keep.
-pub(super) fn highest_acceleration_cutoff(
+pub(crate) fn highest_acceleration_cutoff(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
 ) -> Option<f64> {
@@ -118,7 +118,7 @@ pub fn quantity_name_of(q: Quantity) -> String {
 /// default acceleration cut-off). Without a `bridge` (the file's did not
 /// parse) the checks that need it are left out and the rest made, so that
 /// a file's errors come in one round.
-pub(super) fn resolve_records(
+pub(crate) fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
     bridge: Option<&Bridge>,

@@ -48,8 +48,8 @@ use std::time::Instant;
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
+use crate::plan::Loaded;
 use crate::run::{self, Outcome, RunError};
-use crate::scenario::Loaded;
 use crate::scene::Modes;
 
 /// The reference's time step is the scenario's divided by this.

@@ -29,26 +29,9 @@ use std::f64::consts::PI;
 use self::interp::{CubicSpline, QuinticGrid, Triple};
 use self::shapes::Shape;
 
-/// Grid nodes per shortest wavelength of a sampled random profile: quintic
-/// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude
-/// ([`QuinticGrid`]).
-pub const NODES_PER_WAVELENGTH: f64 = 10.0;
-
-/// Grid nodes per shortest wavelength of the plate paper's power-law series
-/// (one period, so the grid costs 32·N nodes whatever the run's length):
-/// finer than [`NODES_PER_WAVELENGTH`] because the plate paper's results are
-/// reproduced to six digits, curvature included (the wheel's v²r″ term):
-/// the quintic Hermite error of r is (2π/32)⁶/46080 = 1.3e-9 of the shortest
-/// wave's amplitude, of r″ about (2π/32)⁴/384 = 3.9e-6 of its curvature
-/// (`random_grid_follows_the_series` measures both).
-pub const POWER_LAW_NODES_PER_WAVELENGTH: usize = 32;
-
-/// Grid nodes of the power-law series' period grid for `terms` terms:
-/// [`POWER_LAW_NODES_PER_WAVELENGTH`] per shortest wavelength over one
-/// period, plus two (one interval past the period).
-pub fn power_law_grid_nodes(terms: usize) -> usize {
-    POWER_LAW_NODES_PER_WAVELENGTH * terms.max(1) + 2
-}
+pub use crate::scene::{
+    NODES_PER_WAVELENGTH, POWER_LAW_NODES_PER_WAVELENGTH, grid_nodes, power_law_grid_nodes,
+};
 
 /// Why a profile could not be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -115,13 +98,6 @@ pub fn fade_start(run_in: f64, front_start: f64) -> f64 {
     } else {
         0.0
     }
-}
-
-/// Nodes of the grid a sampled profile needs to reach `reach` (m from the
-/// entrance) with the given shortest wavelength (m); f64 so a hostile size
-/// cannot wrap (budgeted while resolving).
-pub fn grid_nodes(reach: f64, shortest_wavelength: f64) -> f64 {
-    (reach.max(0.0) / (shortest_wavelength / NODES_PER_WAVELENGTH)).ceil() + 2.0
 }
 
 /// Ω₀ of the road PSD S(Ω) = A_r (Ω/Ω₀)⁻², rad/m (the plate paper's Eq. 14:

@@ -12,8 +12,8 @@ use crate::support::{Scratch, manifest_dir, text, vbi};
 /// with its unit is marked as stated (`speeds_stated`, which silences the
 /// km/h-typed-as-m/s warning), the one intended difference.
 fn same_scene(si: &str, units: &str) {
-    let a = vbi::scenario::load_str(si, "si.yaml").unwrap_or_else(|e| panic!("SI scene: {e}"));
-    let b = vbi::scenario::load_str(units, "units.yaml")
+    let a = vbi::plan::load_str(si, "si.yaml").unwrap_or_else(|e| panic!("SI scene: {e}"));
+    let b = vbi::plan::load_str(units, "units.yaml")
         .unwrap_or_else(|e| panic!("scene with units: {e}"));
     let (a, b) = (format!("{:?}", a.scenario), format!("{:?}", b.scenario));
     assert_eq!(a, b, "the scene with units differs from the SI one");
@@ -356,7 +356,7 @@ vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e4]}]
     for (name, text) in [("si.yaml", si), ("units.yaml", &units)] {
         let path = scratch.path(name);
         std::fs::write(&path, text).unwrap();
-        let loaded = vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let loaded = vbi::plan::load_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
         resolved.push(format!("{:?}", loaded.scenario));
     }
     assert_eq!(resolved[0], resolved[1]);
