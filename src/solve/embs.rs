@@ -381,11 +381,22 @@ pub fn run_orders(
                 weighted[c] = -(weight * force - nm.alpha * suspension_previous[c]);
             }
             suspension_previous.copy_from_slice(&suspension);
-            bridge1.begin_step(&first, &nm, &mut modal1, t, &wheel_positions, &forces1);
+            // The same wheel positions over the same bridge: the zero
+            // order's contact geometry (shape rows, residual flexibility)
+            // serves the first order too, as its LU does.
+            bridge1.begin_step_located(
+                &mut bridge0,
+                &first,
+                &nm,
+                &mut modal1,
+                &wheel_positions,
+                &forces1,
+            );
             load_wheels(&mut bridge1, &weighted, weight);
             bridge1.vehicle_forces(&bridge1.base, &mut lambda1);
             lu_apply(&system, &pivots, &mut lambda1, nc);
             bridge1.finish_step(&nm, &mut modal1, &lambda1, &mut forces1);
+            bridge1.return_geometry(&mut bridge0);
         }
 
         // Eq. 3: the vehicle with its wheels on u_B⁽⁰⁾ + u_B⁽¹⁾ + r.

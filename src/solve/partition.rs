@@ -61,6 +61,10 @@ pub struct Partition {
     pub condensed_damping: DMatrix<f64>,
     /// K̃/w, N/m.
     pub condensed_stiffness: DMatrix<f64>,
+    /// Each wheel row's span of columns where M̃, C̃ or K̃ is nonzero
+    /// (half-open): a `count:` train's uncoupled cars condense to exact
+    /// blocks, and the products over the zeros between them are skipped.
+    pub condensed_spans: Vec<(usize, usize)>,
     gravity_f: DVector<f64>,
     gravity_w: DVector<f64>,
     /// Rows F (resp. W) of the vehicle's lateral ground load −M δ_y,
@@ -155,6 +159,11 @@ impl Partition {
             damping_fw,
             stiffness_fw,
             transfer: RowSpans::new(&transfer),
+            condensed_spans: column_spans(&[
+                &condensed_mass.transpose(),
+                &condensed_damping.transpose(),
+                &condensed_stiffness.transpose(),
+            ]),
             condensed_mass,
             condensed_damping,
             condensed_stiffness,

@@ -249,19 +249,84 @@ impl PermanentContacts {
         wheel_positions: &[f64],
         contact_forces: &[f64],
     ) {
-        let bridge = &model.bridge;
+        self.predict_loads(model, nm, modal, wheel_positions);
+        self.locate(model, nm, modal, t, wheel_positions);
+        self.predict_wheels(model, modal, wheel_positions);
+        self.begin_partitions(nm, contact_forces);
+    }
+
+    /// [`Self::begin_step`] with the contacts' geometry of this step (shape
+    /// rows, contact columns, residual flexibility) taken from `located`,
+    /// which began the same step at the same wheel positions over the same
+    /// bridge and [`ModalStep::contact_flexibility`] (EMBS's zero- and
+    /// first-order bridges). The buffers are swapped, not copied: `located`
+    /// gets them back from [`Self::return_geometry`]. Bit for bit what
+    /// `begin_step` computes; it saves the O(modes·contacts²) of forming the
+    /// geometry a second time.
+    #[allow(clippy::too_many_arguments)]
+    pub fn begin_step_located(
+        &mut self,
+        located: &mut Self,
+        model: &Model,
+        nm: &Newmark,
+        modal: &mut ModalStep,
+        wheel_positions: &[f64],
+        contact_forces: &[f64],
+    ) {
+        self.swap_geometry(located);
+        self.predict_loads(model, nm, modal, wheel_positions);
+        self.predict_wheels(model, modal, wheel_positions);
+        self.begin_partitions(nm, contact_forces);
+    }
+
+    /// Gives the geometry taken by [`Self::begin_step_located`] back to
+    /// `located` (O(1)).
+    pub fn return_geometry(&mut self, located: &mut Self) {
+        self.swap_geometry(located);
+    }
+
+    fn swap_geometry(&mut self, other: &mut Self) {
+        debug_assert_eq!(self.contacts.len(), other.contacts.len());
+        debug_assert_eq!(self.residual.len(), other.residual.len());
+        std::mem::swap(&mut self.shapes, &mut other.shapes);
+        std::mem::swap(&mut self.path, &mut other.path);
+        std::mem::swap(&mut self.contact_columns, &mut other.contact_columns);
+        std::mem::swap(&mut self.scaled_columns, &mut other.scaled_columns);
+        std::mem::swap(&mut self.residual, &mut other.residual);
+    }
+
+    /// The bridge's predictor q* under the moving loads (wheels without a
+    /// DOF).
+    fn predict_loads(
+        &self,
+        model: &Model,
+        nm: &Newmark,
+        modal: &mut ModalStep,
+        wheel_positions: &[f64],
+    ) {
         modal.predict(
             nm,
-            bridge,
+            &model.bridge,
             self.load_wheels
                 .iter()
                 .map(|&(flat, load)| (wheel_positions[flat], model.wheel_y[flat], load)),
         );
-        let (q_star, inertia_history, damping_history) = (
-            &modal.predictor,
-            &modal.inertia_history,
-            &modal.damping_history,
-        );
+    }
+
+    /// The contacts' geometry at this step's wheel positions: speed and
+    /// acceleration along the path, the shape rows φ, φ′, φ″ and the Newmark
+    /// velocity and acceleration rows, the contact columns, and the residual
+    /// flexibility R = G − ΦΩ⁻²Φᵀ when the contacts are corrected.
+    /// Cost O(modes·contacts) + O(modes·contacts²) with the correction.
+    fn locate(
+        &mut self,
+        model: &Model,
+        nm: &Newmark,
+        modal: &ModalStep,
+        t: f64,
+        wheel_positions: &[f64],
+    ) {
+        let bridge = &model.bridge;
         for (c, contact) in self.contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
             let vehicle = &model.vehicles[contact.vehicle];
@@ -301,21 +366,6 @@ impl PermanentContacts {
             self.scaled_columns
                 .col_as_slice_mut(c)
                 .copy_from_slice(&s.scaled);
-            let (r, dr, ddr) = if self.follow_irregularity {
-                model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x)
-            } else {
-                (0.0, 0.0, 0.0)
-            };
-            self.surface[c] = (r, dr, ddr);
-            self.base[c] = [
-                dot(&s.values, q_star) + r,
-                dot(&s.velocity_row, q_star) - dot(&s.values, damping_history) + v * dr,
-                dot(&s.acceleration_row, q_star)
-                    - dot(&s.values, inertia_history)
-                    - 2.0 * v * dot(&s.slopes, damping_history)
-                    + v * v * ddr
-                    + if a != 0.0 { a * dr } else { 0.0 },
-            ];
         }
         if !self.residual.is_empty() {
             // The modes left out deflect quasi-statically under the contact
@@ -355,6 +405,42 @@ impl PermanentContacts {
                 }
             }
         }
+    }
+
+    /// Each contact's λ = 0 kinematics (the bridge's predictor seen by the
+    /// wheel, plus the surface when `follow_irregularity`), from the located
+    /// geometry.
+    fn predict_wheels(&mut self, model: &Model, modal: &ModalStep, wheel_positions: &[f64]) {
+        let (q_star, inertia_history, damping_history) = (
+            &modal.predictor,
+            &modal.inertia_history,
+            &modal.damping_history,
+        );
+        for (c, contact) in self.contacts.iter().enumerate() {
+            let x = wheel_positions[contact.wheel];
+            let (v, a) = self.path[c];
+            let s = &self.shapes[c];
+            let (r, dr, ddr) = if self.follow_irregularity {
+                model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x)
+            } else {
+                (0.0, 0.0, 0.0)
+            };
+            self.surface[c] = (r, dr, ddr);
+            self.base[c] = [
+                dot(&s.values, q_star) + r,
+                dot(&s.velocity_row, q_star) - dot(&s.values, damping_history) + v * dr,
+                dot(&s.acceleration_row, q_star)
+                    - dot(&s.values, inertia_history)
+                    - 2.0 * v * dot(&s.slopes, damping_history)
+                    + v * v * ddr
+                    + if a != 0.0 { a * dr } else { 0.0 },
+            ];
+        }
+    }
+
+    /// Each vehicle's condensed wheel rows from its state at tₙ and the
+    /// previous contact forces (N, by flattened wheel).
+    fn begin_partitions(&mut self, nm: &Newmark, contact_forces: &[f64]) {
         for (v, partition) in self.partitions.iter_mut().enumerate() {
             let state = &self.states[v];
             partition.lateral_ground = self.lateral_ground;
@@ -410,7 +496,8 @@ impl PermanentContacts {
             for (a, &c) in local.iter().enumerate() {
                 let row = &mut system[c * nc..(c + 1) * nc];
                 row.fill(0.0);
-                for (b, &cb) in local.iter().enumerate() {
+                let (first, end) = partition.condensed_spans[a];
+                for (b, &cb) in local.iter().enumerate().take(end).skip(first) {
                     let mass = partition.condensed_mass[(a, b)];
                     let damping = partition.condensed_damping[(a, b)];
                     let stiffness = partition.condensed_stiffness[(a, b)];
@@ -436,7 +523,8 @@ impl PermanentContacts {
         for (v, partition) in self.partitions.iter().enumerate() {
             for (a, &c) in self.contact_of[v].iter().enumerate() {
                 let mut force = partition.base_forces[a];
-                for (b, &cb) in self.contact_of[v].iter().enumerate() {
+                let (first, end) = partition.condensed_spans[a];
+                for (b, &cb) in self.contact_of[v].iter().enumerate().take(end).skip(first) {
                     // The zero blocks between uncoupled cars add nothing.
                     if partition.condensed_mass[(a, b)] == 0.0
                         && partition.condensed_damping[(a, b)] == 0.0
