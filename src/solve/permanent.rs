@@ -21,6 +21,7 @@
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::partition::Partition;
+use super::residual_rates::{ResidualRates, ResidualStart, step_of};
 use super::{SolveError, VehicleState};
 use crate::contact::ContactDirection;
 use crate::model::Model;
@@ -135,6 +136,9 @@ pub struct PermanentContacts {
     /// acceleration this step: ṡₙ₊₁ and the wheel's s̈ are affine in
     /// sₙ₊₁ = −Σ_d R_cd λ_d.
     residual_rates: Vec<ResidualRates>,
+    /// Whether each contact was off the model ([`Self::off_model`]) at tₙ;
+    /// `None` before the first step.
+    off_model_before: Vec<Option<bool>>,
     /// This step's vehicle loads as a multiple of their weights beyond 1:
     /// the HHT-weighted vertical ground acceleration over g (a vertical
     /// record acts on a vehicle as gravity g + üg). Set by the solver
@@ -219,7 +223,8 @@ impl PermanentContacts {
                 Vec::new()
             },
             residual_motion: vec![[0.0; 3]; nc],
-            residual_rates: vec![ResidualRates::new(nm, 1.0); nc],
+            residual_rates: vec![ResidualRates::new(nm, ResidualStart::Running); nc],
+            off_model_before: vec![None; nc],
             contacts,
             load_wheels,
             contact_of,
@@ -247,7 +252,10 @@ impl PermanentContacts {
     #[inline]
     fn off_model(&self, c: usize) -> bool {
         let nc = self.contacts.len();
-        self.residual.is_empty() || self.residual[c * nc..(c + 1) * nc].iter().all(|&r| r == 0.0)
+        self.residual.is_empty()
+            || self.residual[c * nc..(c + 1) * nc]
+                .iter()
+                .all(|&r| r == 0.0)
     }
 
     /// Number of contact wheels.
@@ -372,18 +380,32 @@ impl PermanentContacts {
                     self.residual[d * nc + c] = r;
                 }
             }
-            for (v, partition) in self.partitions.iter().enumerate() {
-                for (a, &c) in self.contact_of[v].iter().enumerate() {
-                    let mass = partition.condensed_mass[(a, a)].abs();
-                    let compliance = self.residual[c * nc + c].abs();
-                    self.residual_rates[c] =
-                        ResidualRates::new(nm, residual_rho_infinity(nm, mass, compliance));
-                }
-            }
             for c in 0..nc {
+                let start = if self.off_model(c) {
+                    ResidualStart::Running
+                } else {
+                    match self.off_model_before[c] {
+                        Some(true) => ResidualStart::Entering,
+                        Some(false) => ResidualStart::Running,
+                        // The first step: a wheel on the model at t₀ starts
+                        // at rest (s static); one at a support or off the
+                        // model then enters. Its place at t₀ from its speed.
+                        None => {
+                            let contact = &self.contacts[c];
+                            let x0 = wheel_positions[contact.wheel] - self.path[c].0 * step_of(nm);
+                            let point = (contact.direction, x0, contact.y);
+                            match bridge.static_flexibility(point, point) {
+                                Some(g) if g != 0.0 => ResidualStart::AtRest,
+                                _ => ResidualStart::Entering,
+                            }
+                        }
+                    }
+                };
+                self.residual_rates[c] = ResidualRates::new(nm, start);
                 if self.off_model(c) {
                     self.residual_motion[c] = [0.0; 3];
                 }
+                self.off_model_before[c] = Some(self.off_model(c));
                 let [velocity, acceleration] =
                     self.residual_rates[c].history(self.residual_motion[c]);
                 self.base[c][1] += velocity;
@@ -550,101 +572,5 @@ impl PermanentContacts {
                 &mut state.acceleration,
             );
         }
-    }
-}
-
-/// Spectral radius at ωΔt → ∞ of the residual deflection's rates
-/// ([`ResidualRates`]). The wheel on the residual spring has
-/// ω_r = 1/√(m R), unbounded where R → 0 (at a simple support, and over an
-/// imported track's entry ramps, where R falls as the load weight's
-/// square): undamped there, the trapezoidal rule (ρ∞ = 1) gained energy
-/// from the changing R and the contact forces diverged at the exit ramp of
-/// the EMBS golden viaduct (8,000 % on the wheel force, notes/embs/NOTES.md).
-/// 0.8 damps what the step cannot resolve as Newmark's γ = 0.6 did there
-/// (ρ∞ ≈ 0.82), but keeps second order.
-const RESIDUAL_RHO_INFINITY: f64 = 0.8;
-
-/// The step Δt (s) of a Newmark scheme: a₇ = γΔt and a₂/a₁ = 1/γ.
-fn step_of(nm: &Newmark) -> f64 {
-    nm.a7 * nm.a2 / nm.a1
-}
-
-/// ρ∞ of a contact's residual rates, for a wheel of mass `mass` (kg) on
-/// the residual compliance `compliance` (m/N). EXPERIMENT (EMBS3_RHO).
-fn residual_rho_infinity(nm: &Newmark, mass: f64, compliance: f64) -> f64 {
-    match std::env::var("EMBS3_RHO").ok().as_deref() {
-        Some("var") => {
-            let x2 = step_of(nm).powi(2) / (mass * compliance);
-            if x2.is_finite() { 1.0 / (1.0 + x2) } else { 0.0 }
-        }
-        Some(text) => text.parse().unwrap_or(RESIDUAL_RHO_INFINITY),
-        None => RESIDUAL_RHO_INFINITY,
-    }
-}
-
-/// The rates of the residual deflection s = −Σ_d R_cd λ_d, an algebraic
-/// function of the contact forces, by the WBZ-α method (Wood, Bossak &
-/// Zienkiewicz 1980; the generalized-α method with α_f = 0, Chung &
-/// Hulbert 1993, Eq. 25 ff.): Newmark's relations with γ = ½ − α_m,
-/// β = ¼(1 − α_m)² give ṡₙ₊₁ and s̈ₙ₊₁ from sₙ₊₁, and the wheel's inertia
-/// takes (1 − α_m)s̈ₙ₊₁ + α_m s̈ₙ. With α_m = (ρ∞ − 1)/(ρ∞ + 1) < 0 the scheme
-/// damps the unresolved residual oscillation to [`RESIDUAL_RHO_INFINITY`]
-/// per step, and remains second order: Newmark's s̈ₙ approximates
-/// s̈(tₙ + α_mΔt) to second order (Erlicher, Bonaventura & Bursi 2002), so the
-/// weighted sum approximates s̈(tₙ₊₁), where the vehicle's equation is
-/// written, and ṡₙ₊₁ approximates ṡ(tₙ₊₁). (Newmark's γ = 0.6 alone, tried
-/// first, made the contact force first order: physics::newmark_converges_at_second_order.)
-#[derive(Debug, Clone, Copy)]
-struct ResidualRates {
-    /// Newmark's relations with γ = ½ − α_m, β = ¼(1 − α_m)².
-    scheme: Newmark,
-    /// WBZ's α_m (≤ 0).
-    alpha_m: f64,
-}
-
-impl ResidualRates {
-    /// The rates at the step of the main scheme `nm` with spectral radius
-    /// `rho_infinity` at ωΔt → ∞.
-    fn new(nm: &Newmark, rho_infinity: f64) -> Self {
-        let dt = step_of(nm);
-        let alpha_m = (rho_infinity - 1.0) / (rho_infinity + 1.0);
-        let gamma = 0.5 - alpha_m;
-        let beta = 0.25 * (1.0 - alpha_m).powi(2);
-        Self {
-            scheme: Newmark::new(beta, gamma, 0.0, dt),
-            alpha_m,
-        }
-    }
-
-    /// ∂ṡₙ₊₁/∂sₙ₊₁ (1/s) and ∂(wheel's s̈)/∂sₙ₊₁ (1/s²).
-    fn slopes(&self) -> [f64; 2] {
-        [self.scheme.a1, (1.0 - self.alpha_m) * self.scheme.a0]
-    }
-
-    /// The parts of ṡₙ₊₁ (m/s) and of the wheel's s̈ (m/s²) that do not
-    /// depend on sₙ₊₁, from s, ṡ, s̈ at tₙ (`motion`).
-    fn history(&self, [s, velocity, acceleration]: [f64; 3]) -> [f64; 2] {
-        let nm = &self.scheme;
-        [
-            -nm.damping_history(s, velocity, acceleration),
-            -(1.0 - self.alpha_m) * nm.inertia_history(s, velocity, acceleration)
-                + self.alpha_m * acceleration,
-        ]
-    }
-
-    /// s, ṡ and Newmark's s̈ at tₙ₊₁ from those at tₙ (`motion`) and sₙ₊₁ =
-    /// `residual` (m), and the velocity (m/s) and acceleration (m/s²) the
-    /// wheel rides.
-    fn advance(&self, motion: [f64; 3], residual: f64) -> ([f64; 3], [f64; 2]) {
-        let nm = &self.scheme;
-        let [s, velocity, acceleration] = motion;
-        let new_acceleration = nm.acceleration(residual, s, velocity, acceleration);
-        let new_velocity = nm.velocity(velocity, acceleration, new_acceleration);
-        let wheel_acceleration =
-            (1.0 - self.alpha_m) * new_acceleration + self.alpha_m * acceleration;
-        (
-            [residual, new_velocity, new_acceleration],
-            [new_velocity, wheel_acceleration],
-        )
     }
 }
