@@ -22,6 +22,7 @@ pub mod newmark;
 pub mod partition;
 pub mod permanent;
 mod residual_rates;
+pub mod row_spans;
 pub mod unilateral;
 
 use nalgebra::DVector;
