@@ -21,7 +21,7 @@
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::partition::Partition;
-use super::residual_rates::{ResidualRates, ResidualStart, step_of};
+use super::residual_rates::{ResidualRates, ResidualStart, residual_coupling, step_of};
 use super::{SolveError, VehicleState};
 use crate::contact::ContactDirection;
 use crate::model::Model;
@@ -140,6 +140,11 @@ pub struct PermanentContacts {
     /// Whether each contact was off the model ([`Self::off_model`]) at tₙ;
     /// `None` before the first step.
     off_model_before: Vec<Option<bool>>,
+    /// Each contact wheel's condensed mass on its contact DOF (kg): the
+    /// mass that rides the residual deflection ([`residual_coupling`]).
+    wheel_mass: Vec<f64>,
+    /// The highest kept mode's circular frequency ω_N (rad/s).
+    top_omega: f64,
     /// This step's vehicle loads as a multiple of their weights beyond 1:
     /// the HHT-weighted vertical ground acceleration over g (a vertical
     /// record acts on a vehicle as gravity g + üg). Set by the solver
@@ -178,7 +183,7 @@ impl PermanentContacts {
             }
         }
         let nc = contacts.len();
-        let contact_of = (0..model.vehicles.len())
+        let contact_of: Vec<Vec<usize>> = (0..model.vehicles.len())
             .map(|v| (0..nc).filter(|&c| contacts[c].vehicle == v).collect())
             .collect();
         let mut states = Vec::with_capacity(model.vehicles.len());
@@ -196,7 +201,20 @@ impl PermanentContacts {
             states.push(VehicleState::at_rest(model, v));
             partitions.push(partition);
         }
+        let mut wheel_mass = vec![0.0; nc];
+        for (v, local) in contact_of.iter().enumerate() {
+            for (a, &c) in local.iter().enumerate() {
+                wheel_mass[c] = partitions[v].condensed_mass[(a, a)].abs();
+            }
+        }
+        let top_omega = model
+            .bridge
+            .circular_frequencies
+            .iter()
+            .fold(0.0, |top: f64, &w| top.max(w));
         Ok(Self {
+            wheel_mass,
+            top_omega,
             gravity_ratio: 0.0,
             lateral_ground: 0.0,
             follow_irregularity: true,
@@ -224,7 +242,7 @@ impl PermanentContacts {
                 Vec::new()
             },
             residual_motion: vec![[0.0; 3]; nc],
-            residual_rates: vec![ResidualRates::new(nm, ResidualStart::Running); nc],
+            residual_rates: vec![ResidualRates::new(nm, ResidualStart::Running, 0.0); nc],
             off_model_before: vec![None; nc],
             contacts,
             load_wheels,
@@ -359,7 +377,10 @@ impl PermanentContacts {
             // inertia off it and shifted the wheel–track (P2-type, 30–50 Hz)
             // response by 9 % of the wheel force and 22 % of the deck
             // acceleration against twice the modes (issue 24.4,
-            // notes/embs/NOTES.md).
+            // notes/embs/NOTES.md). Only where the wheel's oscillation on the
+            // residual lies below the kept band does the wheel ride s's
+            // rates ([`residual_coupling`]): above it (beams at few modes,
+            // the load weight's ramps) the residual stays quasi-static.
             let nc = self.contacts.len();
             for c in 0..nc {
                 let values = &self.shapes[c].values;
@@ -408,7 +429,12 @@ impl PermanentContacts {
                         }
                     }
                 };
-                self.residual_rates[c] = ResidualRates::new(nm, start);
+                let coupling = residual_coupling(
+                    self.wheel_mass[c],
+                    self.residual[c * nc + c],
+                    self.top_omega,
+                );
+                self.residual_rates[c] = ResidualRates::new(nm, start, coupling);
                 if self.off_model(c) {
                     self.residual_motion[c] = [0.0; 3];
                 }
