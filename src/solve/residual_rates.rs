@@ -17,7 +17,9 @@ use super::newmark::Newmark;
 /// than γ = 0.6 at ω_rΔt ~ 1–10, as on the exit ramp, where that first-order
 /// scheme's ξ ≈ (γ − ½)ωΔt/2 acted (measured on the EMBS golden scene at 564
 /// modes: wheel force 22 % against 8.6 % with γ = 0.6 off the converged
-/// answer there, notes/embs/NOTES.md).
+/// answer there, notes/embs/NOTES.md). The ramps no longer rely on it: the
+/// wheel rides s's rates only where ω_r lies below the kept band
+/// ([`residual_coupling`]: 4.2 % there).
 const RESIDUAL_RHO_INFINITY: f64 = 0.8;
 
 /// The step Δt (s) of a Newmark scheme: a₇ = γΔt and a₂/a₁ = 1/γ.
