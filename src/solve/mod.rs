@@ -21,6 +21,7 @@ pub mod modal;
 pub mod newmark;
 pub mod partition;
 pub mod permanent;
+mod residual_rates;
 pub mod row_spans;
 pub mod unilateral;
 
