@@ -298,6 +298,7 @@ impl PermanentContacts {
         self.predict_loads(model, nm, modal, wheel_positions);
         self.locate(model, nm, modal, t, wheel_positions);
         self.predict_wheels(model, modal, wheel_positions);
+        self.begin_residual_rates(model, nm, wheel_positions);
         self.begin_partitions(nm, contact_forces);
     }
 
@@ -322,6 +323,7 @@ impl PermanentContacts {
         self.swap_geometry(located);
         self.predict_loads(model, nm, modal, wheel_positions);
         self.predict_wheels(model, modal, wheel_positions);
+        self.begin_residual_rates(model, nm, wheel_positions);
         self.begin_partitions(nm, contact_forces);
     }
 
@@ -458,42 +460,54 @@ impl PermanentContacts {
                     self.residual[d * nc + c] = r;
                 }
             }
-            for c in 0..nc {
-                let start = if self.off_model(c) {
-                    ResidualStart::Running
-                } else {
-                    match self.off_model_before[c] {
-                        Some(true) => ResidualStart::Entering,
-                        Some(false) => ResidualStart::Running,
-                        // The first step: a wheel on the model at t₀ starts
-                        // at rest (s static); one at a support or off the
-                        // model then enters. Its place at t₀ from its speed.
-                        None => {
-                            let contact = &self.contacts[c];
-                            let x0 = wheel_positions[contact.wheel] - self.path[c].0 * step_of(nm);
-                            let point = (contact.direction, x0, contact.y);
-                            match bridge.static_flexibility(point, point) {
-                                Some(g) if g != 0.0 => ResidualStart::AtRest,
-                                _ => ResidualStart::Entering,
-                            }
+        }
+    }
+
+    /// The residual deflection's rates for this step ([`ResidualRates`]):
+    /// each contact's WBZ-α relations from its motion at tₙ, restarted where
+    /// the wheel enters the model, and their history terms added to the
+    /// λ = 0 kinematics ([`Self::base`]). After [`Self::predict_wheels`];
+    /// nothing without the contact correction.
+    fn begin_residual_rates(&mut self, model: &Model, nm: &Newmark, wheel_positions: &[f64]) {
+        if self.residual.is_empty() {
+            return;
+        }
+        let bridge = &model.bridge;
+        let nc = self.contacts.len();
+        for c in 0..nc {
+            let start = if self.off_model(c) {
+                ResidualStart::Running
+            } else {
+                match self.off_model_before[c] {
+                    Some(true) => ResidualStart::Entering,
+                    Some(false) => ResidualStart::Running,
+                    // The first step: a wheel on the model at t₀ starts
+                    // at rest (s static); one at a support or off the
+                    // model then enters. Its place at t₀ from its speed.
+                    None => {
+                        let contact = &self.contacts[c];
+                        let x0 = wheel_positions[contact.wheel] - self.path[c].0 * step_of(nm);
+                        let point = (contact.direction, x0, contact.y);
+                        match bridge.static_flexibility(point, point) {
+                            Some(g) if g != 0.0 => ResidualStart::AtRest,
+                            _ => ResidualStart::Entering,
                         }
                     }
-                };
-                let coupling = residual_coupling(
-                    self.wheel_mass[c],
-                    self.residual[c * nc + c],
-                    self.top_omega,
-                );
-                self.residual_rates[c] = ResidualRates::new(nm, start, coupling);
-                if self.off_model(c) {
-                    self.residual_motion[c] = [0.0; 3];
                 }
-                self.off_model_before[c] = Some(self.off_model(c));
-                let [velocity, acceleration] =
-                    self.residual_rates[c].history(self.residual_motion[c]);
-                self.base[c][1] += velocity;
-                self.base[c][2] += acceleration;
+            };
+            let coupling = residual_coupling(
+                self.wheel_mass[c],
+                self.residual[c * nc + c],
+                self.top_omega,
+            );
+            self.residual_rates[c] = ResidualRates::new(nm, start, coupling);
+            if self.off_model(c) {
+                self.residual_motion[c] = [0.0; 3];
             }
+            self.off_model_before[c] = Some(self.off_model(c));
+            let [velocity, acceleration] = self.residual_rates[c].history(self.residual_motion[c]);
+            self.base[c][1] += velocity;
+            self.base[c][2] += acceleration;
         }
     }
 
