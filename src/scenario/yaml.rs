@@ -15,9 +15,9 @@ use std::collections::HashMap;
 
 /// Deepest nesting we accept. Deserialization and `Drop` recurse once per
 /// level, so a cap keeps hostile inputs like `[[[[...` from blowing the stack.
-const MAX_DEPTH: usize = 128;
+pub(crate) const MAX_DEPTH: usize = 128;
 /// Upper bound on nodes after alias expansion, against "billion laughs" inputs.
-const MAX_NODES: usize = 1_000_000;
+pub(crate) const MAX_NODES: usize = 1_000_000;
 
 /// 1-based line and column of a node or key in the source text.
 ///
