@@ -13,8 +13,8 @@ use crate::scenario::derive::{
     resolve_contact, resolve_embs, resolve_iteration, resolve_method, resolve_study,
 };
 use crate::scenario::plausible;
-use crate::scenario::records::resolve_records;
 use crate::scenario::raw::ScenarioRaw;
+use crate::scenario::records::resolve_records;
 use crate::scenario::resolve::Sections;
 use crate::scene::*;
 

@@ -51,7 +51,12 @@ impl KeyPaths {
         })
     }
 
-    fn node(&mut self, value: &Value, path: String, depth: usize) -> Result<Node, (String, String)> {
+    fn node(
+        &mut self,
+        value: &Value,
+        path: String,
+        depth: usize,
+    ) -> Result<Node, (String, String)> {
         if depth >= MAX_DEPTH {
             return Err((
                 path,

@@ -14,11 +14,13 @@ use std::path::Path;
 
 use super::checker::Checker;
 use super::diagnostic::Diagnostic;
+use super::from_data::KeyPaths;
 use super::raw::ScenarioRaw;
 use super::resolve::{Sections, cross_checks, describe};
-use super::from_data::KeyPaths;
 use super::yaml::{self, Location};
-use super::{BOM, LoadError, LoadOptions, Parsed, check_types, parse_raw_all, read_source, trusted};
+use super::{
+    BOM, LoadError, LoadOptions, Parsed, check_types, parse_raw_all, read_source, trusted,
+};
 use crate::scene::{Bridge, Vehicle};
 
 /// A scene the format read and checked, before the planning stage: the
@@ -152,7 +154,11 @@ pub fn load_str(source: &str, file: &str) -> Result<Described, LoadError> {
 /// in the order of the file. A check that blames a mapping or sequence that
 /// lost an entry to a type error is left out (its complaint, e.g. an empty
 /// list, is a consequence of that error).
-pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Described, LoadError> {
+pub fn load_str_with(
+    source: &str,
+    file: &str,
+    options: LoadOptions,
+) -> Result<Described, LoadError> {
     let parsed = parse_raw_all(source, file)?;
     let source = source.strip_prefix(BOM).unwrap_or(source);
     described(parsed, file, source, options, None)

@@ -50,11 +50,11 @@ use thiserror::Error;
 pub use self::budget::LoadOptions;
 pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
-use self::raw::ScenarioRaw;
-pub use self::records::quantity_name_of;
 pub use self::load::{
     Described, load_file, load_file_with, load_str, load_str_with, load_value, load_value_with,
 };
+use self::raw::ScenarioRaw;
+pub use self::records::quantity_name_of;
 use self::yaml::Location;
 
 /// Why a scenario could not be loaded.

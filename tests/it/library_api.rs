@@ -58,7 +58,10 @@ fn a_scene_given_as_data_gets_the_file_s_diagnostics_by_key_path() {
         shown.starts_with("<data>: contact.stifness: unknown field `stifness`"),
         "{shown}"
     );
-    assert!(shown.contains("= help: did you mean `stiffness`?"), "{shown}");
+    assert!(
+        shown.contains("= help: did you mean `stiffness`?"),
+        "{shown}"
+    );
     assert!(!shown.contains(" | "), "{shown}");
 }
 
@@ -75,9 +78,16 @@ fn a_missing_key_is_blamed_on_its_mapping_s_path() {
     assert_eq!(d.len(), 1, "{d:?}");
     assert_eq!(d[0].path.as_deref(), Some("bridge"));
     assert!(d[0].message.contains("bending_stiffness"), "{}", d[0]);
-    let d = invalid(vbi::scenario::load_value(&serde_json::json!([1, 2]), "<data>"));
+    let d = invalid(vbi::scenario::load_value(
+        &serde_json::json!([1, 2]),
+        "<data>",
+    ));
     assert_eq!(d[0].path.as_deref(), Some(""));
-    assert!(d[0].to_string().starts_with("<data>: invalid type"), "{}", d[0]);
+    assert!(
+        d[0].to_string().starts_with("<data>: invalid type"),
+        "{}",
+        d[0]
+    );
 }
 
 /// Every shipped scene reads the same from its text and from its tree as
@@ -100,7 +110,10 @@ fn shipped_scenes_describe_the_same_from_text_and_from_data() {
         assert_eq!(data.name(), text.name(), "{name}");
         assert_eq!(data.bridge(), text.bridge(), "{name}");
         assert_eq!(data.vehicles(), text.vehicles(), "{name}");
-        assert!(data.errors().is_empty() && text.errors().is_empty(), "{name}");
+        assert!(
+            data.errors().is_empty() && text.errors().is_empty(),
+            "{name}"
+        );
     }
 }
 
@@ -117,7 +130,10 @@ fn load_then_plan_resolves_as_the_one_call_does() {
     let resolved = |l: &vbi::plan::Loaded| serde_json::to_string(&l.scenario).unwrap();
     assert_eq!(resolved(&two_calls), resolved(&one_call));
     assert_eq!(resolved(&from_data), resolved(&one_call));
-    assert_eq!(two_calls.bridge.frequencies(), one_call.bridge.frequencies());
+    assert_eq!(
+        two_calls.bridge.frequencies(),
+        one_call.bridge.frequencies()
+    );
 }
 
 /// A type error in a section the description does not need (a record's
@@ -139,7 +155,7 @@ record:
     let described = vbi::scenario::load_str(yaml, "pending.yaml").unwrap();
     let pending = described.errors();
     assert_eq!(pending.len(), 1, "{pending:?}");
-    assert_eq!((pending[0].loc.line, pending[0].loc.col), (7, 53));
+    assert_eq!((pending[0].loc.line, pending[0].loc.col), (7, 55));
     let two_calls = invalid(vbi::plan::plan(described));
     let one_call = invalid(vbi::plan::load_str(yaml, "pending.yaml"));
     let shown = |d: &[Diagnostic]| d.iter().map(|d| d.to_string()).collect::<Vec<_>>();
