@@ -1,10 +1,13 @@
 //! The scenario format: loading with source locations, semantic checks,
 //! defaults.
 //!
-//! Data flow: text → [`yaml::parse`] (a position-marked tree) →
+//! Data flow: text → [`yaml::parse`] (a position-marked tree; or data the
+//! caller parsed, given synthetic locations named by key path) →
 //! [`de::from_node`] (serde types in [`raw`], tagged unions dispatched on
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
-//! [`resolved::Scenario`].
+//! an owned [`Described`] scene ([`load_str`], [`load_file`],
+//! [`load_value`]), which the planning stage ([`crate::plan::plan`])
+//! finishes into a [`resolved::Scenario`].
 
 pub mod bridges;
 pub mod budget;

@@ -87,9 +87,9 @@ pub(crate) struct Sections {
     pub free_vibration: f64,
 }
 
-/// The format's part of [`resolve`]: every check that needs no physics on
-/// the sections the planning stage starts from, stopping at the first stage
-/// with errors.
+/// The format's part of a scene's resolution: every check that needs no
+/// physics on the sections the planning stage starts from, stopping at the
+/// first stage with errors ([`super::load`] drives it, then the plan).
 pub(crate) fn describe(
     raw: &ScenarioRaw,
     ck: &mut Checker<'_>,
