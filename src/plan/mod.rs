@@ -95,6 +95,14 @@ pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<L
     plan(crate::scenario::load_str_with(source, file, options)?)
 }
 
+/// Checks and plans a scene the caller already parsed with the default
+/// budgets, as raised or lowered by its own `limits`
+/// ([`crate::scenario::load_value`], then [`plan`]); diagnostics name key
+/// paths.
+pub fn load_value(value: &serde_json::Value, file: &str) -> Result<Loaded, LoadError> {
+    load_value_with(value, file, trusted())
+}
+
 /// Checks and plans a scene the caller already parsed
 /// ([`crate::scenario::load_value_with`], then [`plan`]); diagnostics name
 /// key paths.
