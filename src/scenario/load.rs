@@ -172,7 +172,9 @@ pub fn load_str_with(
 ///
 /// Numbers are read as the YAML text of their shortest round-trip form
 /// would be, strings as quoted YAML strings (a number with a unit is a
-/// string: `"90 km/h"`).
+/// string: `"90 km/h"`). Files the scene names (ground records, FE
+/// matrices, measured profiles) are looked for in `file`'s folder, as for
+/// a scene file of that name (`.` for a bare name such as `<data>`).
 ///
 /// ```
 /// let scene = serde_json::json!({
