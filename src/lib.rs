@@ -13,12 +13,15 @@
 //!
 //! # Using vbi as a library
 //!
-//! Three stages: load (the format reads and checks the scene), plan (the
-//! bridge's modes and every automatic choice: modes, time step, budgets, each
-//! with its reason) and run. [`plan::load_file`] and [`plan::load_str`] do
-//! the first two and return a [`plan::Loaded`]; [`execute::execute`] (or
-//! [`run::simulate`] for a scene) runs it and returns the results as data; files
-//! are written only when you hand the results to the report layer.
+//! Three stages, three calls: load ([`scenario::load_str`],
+//! [`scenario::load_file`], or [`scenario::load_value`] for data the caller
+//! already parsed) reads and checks the scene and returns it described, as
+//! owned data; plan ([`plan::plan`]) builds the bridge's modes and makes
+//! every automatic choice (modes, time step, budgets, each with its reason)
+//! and returns a [`plan::Loaded`]; run ([`execute::execute`], or
+//! [`run::simulate`] for a scene) returns the results as data. Files are
+//! written only when you hand the results to the report layer.
+//! [`plan::load_file`] and [`plan::load_str`] do the first two in one call.
 //!
 //! ```
 //! use vbi::execute::{Results, execute};
@@ -31,9 +34,11 @@
 //! solver: {time_step: 1.0e-3}
 //! record: [{name: midspan, quantity: bridge_displacement, x: 12.5}]
 //! ";
-//! // Load and plan: the format's checks, then the modal bridge and the
-//! // automatic choices, each with its reason.
-//! let loaded = vbi::plan::load_str(yaml, "api-example.yaml")?;
+//! // Load: the format's checks, every one that needs no physics.
+//! let described = vbi::scenario::load_str(yaml, "api-example.yaml")?;
+//! assert_eq!(described.name(), "api-example");
+//! // Plan: the modal bridge and the automatic choices, each with its reason.
+//! let loaded = vbi::plan::plan(described)?;
 //! assert_eq!(loaded.scenario.solver.time_step_selection, "set in the file");
 //! // Run.
 //! let Results::Scene(outcome) = execute(loaded.clone(), &|_done, _total| {})? else {

@@ -13,8 +13,9 @@ use crate::scenario::derive::{
     resolve_contact, resolve_embs, resolve_iteration, resolve_method, resolve_study,
 };
 use crate::scenario::plausible;
+use crate::scenario::raw::ScenarioRaw;
 use crate::scenario::records::resolve_records;
-use crate::scenario::resolve::Described;
+use crate::scenario::resolve::Sections;
 use crate::scene::*;
 
 use super::budget::eigen_fits;
@@ -28,11 +29,11 @@ const GROUND_MASS_SHARE: f64 = 0.9;
 /// Builds the bridge's modal model and makes the automatic choices of a
 /// scene the format described; `None` once an error is reported.
 pub(crate) fn plan(
-    described: Described<'_>,
+    described: Sections,
+    raw: &ScenarioRaw,
     ck: &mut Checker<'_>,
 ) -> Option<(Scenario, ModalBridge)> {
-    let Described {
-        raw,
+    let Sections {
         options,
         limits,
         budget,

@@ -12,11 +12,14 @@
 //! - the budgets that need a mode count or the eigen solve's size;
 //! - oscillators given by dimensionless groups (they need f₁).
 //!
-//! Data flow: [`load_str`] → the format (`scenario::resolve_with`:
-//! YAML → raw → the described scene, every check that needs no physics) →
-//! `choices::plan` → [`Loaded`], which [`crate::run`] runs. Errors found
-//! here carry the file, line and column of the key they blame, as the
-//! format's own.
+//! Data flow: the format ([`crate::scenario::load_str`], `load_file` or
+//! `load_value`: YAML or data → raw → the owned
+//! [`Described`] scene, every check that needs no physics) → [`plan`]
+//! → [`Loaded`], which [`crate::run`] runs. [`load_str`] and [`load_file`]
+//! do both calls. Errors found here carry the file, line and column of the
+//! key they blame (or its key path, for a scene given as data), as the
+//! format's own, and come in one round with the type errors the format
+//! went on past.
 
 pub mod bridge_only;
 mod budget;
@@ -30,7 +33,7 @@ mod travel;
 use std::path::Path;
 
 use crate::bridge::ModalBridge;
-use crate::scenario::{LoadError, LoadOptions, read_source, resolve_with, trusted};
+use crate::scenario::{Described, LoadError, LoadOptions, read_source, trusted};
 use crate::scene::Scenario;
 
 /// A scenario that passed every check, planned: the bridge's modal model
@@ -41,6 +44,19 @@ pub struct Loaded {
     pub scenario: Scenario,
     /// The modal bridge.
     pub bridge: ModalBridge,
+}
+
+/// Plans a scene the format described: builds the bridge's modal model and
+/// makes every automatic choice, each with its reason. The options are the
+/// ones the scene was loaded with ([`Described::options`]).
+///
+/// Fails with every diagnostic of the plan and the type errors the format
+/// went on past ([`Described::errors`]), in one round, located as the
+/// format locates its own.
+pub fn plan(described: Described) -> Result<Loaded, LoadError> {
+    described
+        .plan_with(choices::plan)
+        .map(|(scenario, bridge)| Loaded { scenario, bridge })
 }
 
 /// Reads, resolves and plans a scenario file with the default budgets, as
@@ -73,9 +89,27 @@ pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
 }
 
 /// Parses, resolves and plans a scenario from text; `file` labels
-/// diagnostics. Every diagnostic of the format and of the plan comes in
-/// one round, as [`crate::scenario::resolve_with`] describes.
+/// diagnostics: [`crate::scenario::load_str_with`], then [`plan`]. Every
+/// diagnostic of the format and of the plan comes in one round.
 pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Loaded, LoadError> {
-    resolve_with(source, file, options, choices::plan)
-        .map(|(scenario, bridge)| Loaded { scenario, bridge })
+    plan(crate::scenario::load_str_with(source, file, options)?)
+}
+
+/// Checks and plans a scene the caller already parsed with the default
+/// budgets, as raised or lowered by its own `limits`
+/// ([`crate::scenario::load_value`], then [`plan`]); diagnostics name key
+/// paths.
+pub fn load_value(value: &serde_json::Value, file: &str) -> Result<Loaded, LoadError> {
+    load_value_with(value, file, trusted())
+}
+
+/// Checks and plans a scene the caller already parsed
+/// ([`crate::scenario::load_value_with`], then [`plan`]); diagnostics name
+/// key paths.
+pub fn load_value_with(
+    value: &serde_json::Value,
+    file: &str,
+    options: LoadOptions,
+) -> Result<Loaded, LoadError> {
+    plan(crate::scenario::load_value_with(value, file, options)?)
 }

@@ -110,6 +110,7 @@ impl Limits {
 
 /// Compares estimates with the limits and reports at the input that drives
 /// each one.
+#[derive(Debug, Clone)]
 pub(crate) struct Budget {
     /// The limits that apply: the file's where it lowers them (or where the
     /// command line trusts it), else the defaults.

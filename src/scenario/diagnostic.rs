@@ -27,6 +27,11 @@ pub struct Diagnostic {
     /// A suggestion printed under the excerpt as rustc's `= help:` line
     /// (`did you mean `stiffness`?`), if one is close enough.
     pub help: Option<String>,
+    /// For a scene given as data rather than text
+    /// ([`super::load_value`]): the key path of the place
+    /// (`vehicles[0].speed`, empty for the scene as a whole); `loc` is
+    /// then 0:0, there being no line or column.
+    pub path: Option<String>,
 }
 
 impl Diagnostic {
@@ -42,6 +47,23 @@ impl Diagnostic {
             message: message.into(),
             source_line: excerpt(source_line(source, loc.line).as_deref()),
             help: None,
+            path: None,
+        }
+    }
+
+    /// A diagnostic at a key path of a scene given as data (no text).
+    pub fn at_path(
+        file: impl Into<String>,
+        path: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
+        Diagnostic {
+            file: file.into(),
+            loc: Location::default(),
+            message: message.into(),
+            source_line: None,
+            help: None,
+            path: Some(path.into()),
         }
     }
 
@@ -138,6 +160,7 @@ impl<'a> Lines<'a> {
             message: message.into(),
             source_line: excerpt(self.line(loc.line)),
             help: None,
+            path: None,
         }
     }
 }
@@ -171,7 +194,12 @@ fn source_line(source: &str, line: usize) -> Option<String> {
 impl std::fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let Location { line, col } = self.loc;
-        write!(f, "{}:{line}:{col}: {}", self.file, self.message)?;
+        match self.path.as_deref() {
+            // A scene given as data: its place is a key path.
+            Some("") => write!(f, "{}: {}", self.file, self.message)?,
+            Some(path) => write!(f, "{}: {path}: {}", self.file, self.message)?,
+            None => write!(f, "{}:{line}:{col}: {}", self.file, self.message)?,
+        }
         let Some(text) = &self.source_line else {
             if let Some(help) = &self.help {
                 write!(f, "\n  = help: {help}")?;

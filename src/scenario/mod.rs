@@ -1,10 +1,13 @@
 //! The scenario format: loading with source locations, semantic checks,
 //! defaults.
 //!
-//! Data flow: text → [`yaml::parse`] (a position-marked tree) →
+//! Data flow: text → [`yaml::parse`] (a position-marked tree; or data the
+//! caller parsed, given synthetic locations named by key path) →
 //! [`de::from_node`] (serde types in [`raw`], tagged unions dispatched on
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
-//! [`resolved::Scenario`].
+//! an owned [`Described`] scene ([`load_str`], [`load_file`],
+//! [`load_value`]), which the planning stage ([`crate::plan::plan`])
+//! finishes into a [`resolved::Scenario`].
 
 pub mod bridges;
 pub mod budget;
@@ -18,7 +21,9 @@ pub mod derive;
 pub mod diagnostic;
 pub mod envelopes;
 pub mod fe_import;
+mod from_data;
 pub(crate) mod ground;
+pub mod load;
 pub(crate) mod long_run;
 pub mod names;
 pub(crate) mod output;
@@ -46,12 +51,13 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub use self::budget::LoadOptions;
-pub(crate) use self::checker::Checker;
 pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
+pub use self::load::{
+    Described, load_file, load_file_with, load_str, load_str_with, load_value, load_value_with,
+};
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
-pub(crate) use self::resolve::Described;
 use self::yaml::Location;
 
 /// Why a scenario could not be loaded.
@@ -275,14 +281,21 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
         }
         Err(e) => return Err(invalid(e.loc, format!("YAML syntax error: {}", e.message))),
     };
+    Ok(check_types(node, file, source))
+}
+
+/// The type checker's passes over a tree ([`parse_raw_all`]); `source`
+/// (the tree's text, empty for a tree the caller built) gives the
+/// diagnostics their excerpts.
+fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
     let first = match de::from_node::<ScenarioRaw>(&node) {
         Ok(raw) => {
-            return Ok(Parsed {
+            return Parsed {
                 raw: Some((raw, node)),
                 diagnostics: Vec::new(),
                 pruned: Vec::new(),
                 bridge_unreadable: false,
-            });
+            };
         }
         Err(e) => e,
     };
@@ -347,12 +360,12 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
             Err(e) => error = e,
         }
     }
-    Ok(Parsed {
+    Parsed {
         raw: rest.map(|raw| (raw, tree)),
         diagnostics,
         pruned,
         bridge_unreadable: stood_in.contains(&"bridge"),
-    })
+    }
 }
 
 /// Puts a stand-in for the required `section` into the root mapping
@@ -457,78 +470,4 @@ fn plain_words(message: &str) -> String {
         out = out.replace(&format!("expected {int}"), "expected a whole number");
     }
     out
-}
-
-/// Parses and resolves a scenario from text, `plan` (the planning stage,
-/// [`crate::plan`]) finishing what the format describes; `file` labels
-/// diagnostics.
-///
-/// Type errors do not stop the checks: what is left without the entries
-/// they are in is checked too, and the diagnostics of both come together,
-/// in the order of the file. A check that blames a mapping or sequence that
-/// lost an entry to a type error is left out (its complaint, e.g. an empty
-/// list, is a consequence of that error).
-pub(crate) fn resolve_with<T>(
-    source: &str,
-    file: &str,
-    options: LoadOptions,
-    plan: impl FnOnce(Described<'_>, &mut Checker<'_>) -> Option<T>,
-) -> Result<T, LoadError> {
-    let parsed = parse_raw_all(source, file)?;
-    let source = source.strip_prefix(BOM).unwrap_or(source);
-    let Some((raw, node)) = parsed.raw else {
-        return Err(LoadError::Invalid(parsed.diagnostics));
-    };
-    let mut checker = checker::Checker::new(file, source, &node);
-    checker.bridge_unreadable = parsed.bridge_unreadable;
-    checker.bridge_unknown = parsed.bridge_unreadable;
-    let resolved = resolve::resolve(&raw, &mut checker, options, plan);
-    let mut diagnostics = parsed.diagnostics;
-    let typed = diagnostics.len();
-    // A check may run twice (the records after an earlier error): each
-    // message once. Hashed: a hostile file has thousands.
-    let mut seen: std::collections::HashSet<(usize, usize, String)> = diagnostics
-        .iter()
-        .map(|d| (d.loc.line, d.loc.col, d.message.clone()))
-        .collect();
-    // A vehicle lost to a type error renumbers the ones after it: the
-    // records' vehicle numbers are not checked against that list.
-    let renumbered = node
-        .get("vehicles")
-        .is_some_and(|v| parsed.pruned.contains(&v.loc))
-        .then(|| section_lines(&node, "record"))
-        .flatten();
-    for d in checker.diagnostics {
-        let consequence = parsed.pruned.contains(&d.loc)
-            || renumbered.is_some_and(|(from, to)| (from..to).contains(&d.loc.line));
-        if !consequence && seen.insert((d.loc.line, d.loc.col, d.message.clone())) {
-            diagnostics.push(d);
-        }
-    }
-    match resolved {
-        Some(planned) if diagnostics.is_empty() => Ok(planned),
-        _ => {
-            if typed > 0 {
-                // Read top to bottom, as the file is.
-                diagnostics.sort_by_key(|d| (d.loc.line, d.loc.col));
-            }
-            Err(LoadError::Invalid(diagnostics))
-        }
-    }
-}
-
-/// The lines a top-level section spans: from its key to the next top-level
-/// key (or the end of the file).
-fn section_lines(root: &yaml::Node, key: &str) -> Option<(usize, usize)> {
-    let yaml::NodeKind::Mapping(entries) = &root.kind else {
-        return None;
-    };
-    let from = root.key_loc(key)?.line;
-    let to = entries
-        .iter()
-        .map(|(k, _)| k.loc.line)
-        .filter(|&line| line > from)
-        .min()
-        .unwrap_or(usize::MAX);
-    Some((from, to))
 }

@@ -1,4 +1,7 @@
-//! Semantic checks and defaults: [`ScenarioRaw`] → [`Scenario`].
+//! Semantic checks and defaults: [`ScenarioRaw`] → the described
+//! [`Sections`] the planning stage starts from ([`describe`]), and the
+//! records' checks that still run when an error stopped either stage
+//! ([`cross_checks`]). The stages are driven by [`super::load`].
 //!
 //! Every problem is reported with the location of the offending key (or, if
 //! the key is absent, of the section that lacks it), and all problems found
@@ -21,27 +24,6 @@ pub const DEFAULT_GRAVITY: f64 = 9.81;
 /// HHT α used by default with rigid unilateral contact.
 pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
 
-/// Resolves a parsed scenario: the format's checks ([`describe`]), then
-/// `plan`, the planning stage, which builds the bridge's modal model and
-/// makes the automatic choices (mode selection and the default time step
-/// depend on the natural frequencies).
-///
-/// An error that stops the resolution before the records (a vehicle or the
-/// surface out of range, a budget) does not hide the records' own errors:
-/// [`cross_checks`] checks them against the bridge and vehicles as written.
-pub(crate) fn resolve<T>(
-    raw: &ScenarioRaw,
-    ck: &mut Checker<'_>,
-    options: LoadOptions,
-    plan: impl FnOnce(Described<'_>, &mut Checker<'_>) -> Option<T>,
-) -> Option<T> {
-    let resolved = describe(raw, ck, options.clone()).and_then(|described| plan(described, ck));
-    if resolved.is_none() && !ck.records_checked {
-        cross_checks(raw, ck, &options);
-    }
-    resolved
-}
-
 /// The records and envelopes checked against the bridge and the vehicles as
 /// the file writes them, when an earlier error stopped the resolution
 /// before them (so that a file's mistakes come in one round, issue 28.1).
@@ -49,7 +31,7 @@ pub(crate) fn resolve<T>(
 /// own errors are already reported); without a valid bridge what needs it
 /// (a position on the deck, a node, the envelopes) is not checked. Defaults that need the bridge's frequencies are not needed for
 /// checking and get none.
-fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) {
+pub(crate) fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) {
     let mut scratch = Checker::new(ck.file, ck.source, ck.root);
     scratch.set_data_access(options.data.clone());
     let limits = Limits::resolve(raw.limits.as_ref(), &mut scratch);
@@ -76,11 +58,11 @@ fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) 
 }
 
 /// A scene as the format leaves it for the planning stage
-/// ([`crate::plan`]): the sections checked without physics, the file's raw
-/// form for the rest (records, study, contact, output), and the budgets.
-pub(crate) struct Described<'r> {
-    /// The file as parsed.
-    pub raw: &'r ScenarioRaw,
+/// ([`crate::plan`]): the sections checked without physics and the budgets;
+/// the file's raw form (for the rest: records, study, contact, output)
+/// travels beside it.
+#[derive(Debug, Clone)]
+pub(crate) struct Sections {
     /// How the file was loaded.
     pub options: LoadOptions,
     /// The budgets the file asked for.
@@ -105,14 +87,14 @@ pub(crate) struct Described<'r> {
     pub free_vibration: f64,
 }
 
-/// The format's part of [`resolve`]: every check that needs no physics on
-/// the sections the planning stage starts from, stopping at the first stage
-/// with errors.
-fn describe<'r>(
-    raw: &'r ScenarioRaw,
+/// The format's part of a scene's resolution: every check that needs no
+/// physics on the sections the planning stage starts from, stopping at the
+/// first stage with errors ([`super::load`] drives it, then the plan).
+pub(crate) fn describe(
+    raw: &ScenarioRaw,
     ck: &mut Checker<'_>,
     options: LoadOptions,
-) -> Option<Described<'r>> {
+) -> Option<Sections> {
     ck.set_data_access(options.data.clone());
     super::names::check_name(ck, &raw.name);
     let limits = Limits::resolve(raw.limits.as_ref(), ck);
@@ -237,8 +219,7 @@ fn describe<'r>(
     ) {
         return None;
     }
-    Some(Described {
-        raw,
+    Some(Sections {
         options,
         limits,
         budget,

@@ -37,6 +37,7 @@ mod hard_cases;
 mod hertz;
 mod hostile;
 mod lateral_geometry;
+mod library_api;
 mod lsp;
 mod many_modes;
 mod merge_memory;
