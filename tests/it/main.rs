@@ -39,6 +39,7 @@ mod lsp;
 mod many_modes;
 mod modes_cache;
 mod monte_carlo;
+mod moreau_jean;
 mod multi_wheel;
 mod multi_wheel_lift;
 mod output;
