@@ -291,7 +291,7 @@ impl Summary {
                 },
                 contact: match model.contact {
                     crate::model::ContactLaw::Permanent => "permanent",
-                    crate::model::ContactLaw::Rigid => "rigid",
+                    crate::model::ContactLaw::Rigid { .. } => "rigid",
                     crate::model::ContactLaw::Elastic { .. } => "elastic",
                     crate::model::ContactLaw::Hertz { .. } => "hertz",
                 },
@@ -313,7 +313,7 @@ impl Summary {
                     STATIC_REFERENCE
                 },
                 iterations: stats.iterations,
-                step_dependent: if model.contact == crate::model::ContactLaw::Rigid {
+                step_dependent: if matches!(model.contact, crate::model::ContactLaw::Rigid { .. }) {
                     Some(RIGID_STEP_DEPENDENCE)
                 } else if history.separation.iter().any(|w| w.separated) {
                     Some(LANDING_STEP_DEPENDENCE)

@@ -409,7 +409,7 @@ pub(super) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
             HERTZ,
             "N/m^1.5",
         ),
-        Contact::Permanent | Contact::Rigid => {}
+        Contact::Permanent | Contact::Rigid { .. } => {}
     }
 }
 

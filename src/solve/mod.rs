@@ -15,6 +15,7 @@ pub mod embs_scale;
 pub mod guard;
 pub mod iterative;
 pub mod lcp;
+mod impact;
 pub mod lockstep;
 pub mod modal;
 pub mod newmark;

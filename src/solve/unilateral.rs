@@ -29,6 +29,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::GroundStep;
 use super::guard::Guard;
+use super::impact::Impacts;
 use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
@@ -130,6 +131,8 @@ pub(super) struct ContactGeometry {
     /// The contact compliance W = EᵀH + ΦDΦᵀ + residual flexibility, m/N,
     /// row-major nc × nc.
     pub compliance: Vec<f64>,
+    /// Its residual (static-correction) part R, m/N, row-major nc × nc.
+    pub residual: Vec<f64>,
 }
 
 impl ContactGeometry {
@@ -140,6 +143,7 @@ impl ContactGeometry {
             shapes: vec![0.0; contacts * modes],
             scaled: vec![0.0; contacts * modes],
             compliance: vec![0.0; contacts * contacts],
+            residual: vec![0.0; contacts * contacts],
         }
     }
 
@@ -183,7 +187,7 @@ impl ContactGeometry {
         let (bridge, nc) = (&model.bridge, contacts.len());
         let modes = bridge.mode_count();
         let (on_deck, shapes, scaled) = (&self.on_deck, &self.shapes, &self.scaled);
-        let compliance = &mut self.compliance;
+        let (compliance, residual) = (&mut self.compliance, &mut self.residual);
         for a in 0..nc {
             for b in 0..=a {
                 let (ca, cb) = (contacts[a], contacts[b]);
@@ -191,6 +195,7 @@ impl ContactGeometry {
                 // flexibility (both exactly 0): skip the O(modes) work, which
                 // dominates long trains with most wheels off the bridge.
                 let mut w = 0.0;
+                let mut r = 0.0;
                 if on_deck[a] && on_deck[b] {
                     let pa = &shapes[a * modes..(a + 1) * modes];
                     let sb = &scaled[b * modes..(b + 1) * modes];
@@ -198,7 +203,7 @@ impl ContactGeometry {
                     // The modes left out add their static flexibility between the
                     // two contacts (contact static correction; 0 when off).
                     // Unilateral contacts are vertical.
-                    w += bridge.residual_flexibility(
+                    r = bridge.residual_flexibility(
                         (
                             ContactDirection::Vertical,
                             wheel_positions[ca.wheel],
@@ -212,11 +217,16 @@ impl ContactGeometry {
                         pa,
                         &shapes[b * modes..(b + 1) * modes],
                     );
+                    w += r;
                 } else if ca.vehicle != cb.vehicle {
                     compliance[a * nc + b] = 0.0;
                     compliance[b * nc + a] = 0.0;
+                    residual[a * nc + b] = 0.0;
+                    residual[b * nc + a] = 0.0;
                     continue;
                 }
+                residual[a * nc + b] = r;
+                residual[b * nc + a] = r;
                 if ca.vehicle == cb.vehicle {
                     w += contact_response(ca.vehicle)[(ca.dof, cb.column)];
                 }
@@ -307,6 +317,10 @@ pub fn run(
         .iter()
         .map(|c| model.static_wheel_loads[c.wheel])
         .collect();
+    // Moreau–Jean impacts for rigid contact (wheels with mass).
+    let mut impacts = Impacts::new(model, &contacts, &mut states, &mut carried);
+    let mut rows: Vec<usize> = Vec::with_capacity(nc);
+    let mut row_lambda = vec![0.0; nc];
     // Whether each contact wheel was off the surface after the previous step.
     let mut was_apart = vec![false; nc];
     let mut free_gap = vec![0.0; nc];
@@ -328,6 +342,27 @@ pub fn run(
     }
     let mut wheel_positions = vec![0.0; nw];
     model.wheel_positions(0.0, &mut wheel_positions);
+    if let Some(impacts) = &mut impacts {
+        // The starting relative velocities: vehicles at rest, the bridge at
+        // rest, the surface moving under the wheels.
+        geometry.locate(
+            model,
+            &modal.contact_flexibility,
+            &contacts,
+            &wheel_positions,
+        );
+        impacts.locate(model, &contacts, &geometry.on_deck, &wheel_positions, 0.0);
+        for (c, contact) in contacts.iter().enumerate() {
+            impacts.relative_velocity[c] = impacts.relative(
+                c,
+                modes,
+                states[contact.vehicle].velocity[contact.dof],
+                &geometry.shapes[c * modes..(c + 1) * modes],
+                &modal.displacement,
+                &modal.velocity,
+            );
+        }
+    }
 
     observer.observe(&StepView::of(
         0,
@@ -456,7 +491,75 @@ pub fn run(
                 reason,
             };
             match model.contact {
-                ContactLaw::Rigid | ContactLaw::Elastic { .. } => {
+                ContactLaw::Rigid { .. } if impacts.is_some() => {
+                    let impacts = impacts.as_mut().expect("rigid contact");
+                    impacts.locate(model, &contacts, on_deck, &wheel_positions, t);
+                    for i in 0..modes {
+                        impacts.free_modal_velocity[i] =
+                            nm.a1 * modal.predictor[i] - modal.damping_history[i];
+                    }
+                    // The step's contact problem: wheels with mass whose free
+                    // end-of-step gap closes take Newton's law at the velocity
+                    // level; massless contact points the gap law.
+                    rows.clear();
+                    for (c, contact) in contacts.iter().enumerate() {
+                        if impacts.takes_impacts(c) {
+                            let vs = &steps[contact.vehicle];
+                            let wheel = nm.a1 * vs.predictor[contact.dof]
+                                - vs.damping_history[contact.dof];
+                            impacts.free_velocity[c] = impacts.relative(
+                                c,
+                                modes,
+                                wheel,
+                                &shapes[c * modes..(c + 1) * modes],
+                                &modal.predictor,
+                                &impacts.free_modal_velocity,
+                            );
+                            if free_gap[c] <= 0.0 {
+                                rows.push(c);
+                            }
+                        } else {
+                            rows.push(c);
+                        }
+                    }
+                    let m = rows.len();
+                    for (ra, &a) in rows.iter().enumerate() {
+                        for (rb, &b) in rows.iter().enumerate() {
+                            let w = compliance[a * nc + b];
+                            lcp_matrix[ra * m + rb] = if impacts.takes_impacts(a) {
+                                impacts.velocity_row_entry(
+                                    &nm,
+                                    a,
+                                    modes,
+                                    w - geometry.residual[a * nc + b],
+                                    &geometry.scaled[b * modes..(b + 1) * modes],
+                                )
+                            } else {
+                                w
+                            };
+                        }
+                        lcp_vector[ra] = if impacts.takes_impacts(a) {
+                            impacts.free_velocity[a]
+                                + impacts.restitution * impacts.relative_velocity[a]
+                        } else {
+                            free_gap[a]
+                        };
+                        previous[ra] = lambda[a];
+                    }
+                    solve_warm(
+                        &lcp_matrix[..m * m],
+                        &lcp_vector[..m],
+                        &mut row_lambda[..m],
+                        &mut workspace,
+                        &previous[..m],
+                    )
+                    .map_err(|e| fail(e.to_string()))?;
+                    lambda.fill(0.0);
+                    for (ra, &a) in rows.iter().enumerate() {
+                        lambda[a] = row_lambda[ra];
+                    }
+                }
+                ContactLaw::Rigid { .. } | ContactLaw::Elastic { .. } => {
                     lcp_matrix.copy_from_slice(compliance);
                     if let ContactLaw::Elastic { stiffness } = model.contact {
                         for c in 0..nc {
@@ -524,11 +627,33 @@ pub fn run(
         }
 
         // Gaps with the forces, then both subsystems finish the step.
+        if let Some(impacts) = &mut impacts {
+            // Impulses, and the forces reported: averaged over the window
+            // for wheels with mass, the step's force for contact points.
+            impacts.record(&nm, &lambda);
+            for (c, contact) in contacts.iter().enumerate() {
+                contact_forces[contact.wheel] = if impacts.takes_impacts(c) {
+                    impacts.averaged_force(c, model.time_step)
+                } else {
+                    lambda[c]
+                };
+            }
+        }
         for (c, contact) in contacts.iter().enumerate() {
             let row = &compliance[c * nc..(c + 1) * nc];
             contact_gaps[contact.wheel] =
                 free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
-            contact_forces[contact.wheel] = lambda[c];
+            if impacts.is_some() {
+                // The residual static deflection rides the reported
+                // (averaged) forces, not a landing step's impulse / Δt.
+                let residual = &geometry.residual[c * nc..(c + 1) * nc];
+                for (d, other) in contacts.iter().enumerate() {
+                    contact_gaps[contact.wheel] +=
+                        residual[d] * (contact_forces[other.wheel] - lambda[d]);
+                }
+            } else {
+                contact_forces[contact.wheel] = lambda[c];
+            }
             if on_deck[c] {
                 modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
             }
@@ -636,10 +761,28 @@ pub fn run(
         // trapezoidal rule hand the landing velocity back as a rebound (and
         // the landing step's acceleration spike re-enters the next velocity
         // update), so a wheel chatters for ever after one kink in the profile.
+        if let Some(impacts) = &mut impacts {
+            moreau_jean_finish(
+                model,
+                &nm,
+                impacts,
+                &contacts,
+                &geometry,
+                &lambda,
+                &mut modal,
+                &mut states,
+                &mut contact_gaps,
+            );
+        }
         for (c, contact) in contacts.iter().enumerate() {
             let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
+            if impacts.as_ref().is_some_and(|i| i.takes_impacts(c)) {
+                carried[c] = 0.0;
+                was_apart[c] = apart;
+                continue;
+            }
             carried[c] = lambda[c];
-            if model.contact == ContactLaw::Rigid && was_apart[c] && lambda[c] > 0.0 {
+            if matches!(model.contact, ContactLaw::Rigid { .. }) && was_apart[c] && lambda[c] > 0.0 {
                 let x = wheel_positions[contact.wheel];
                 bridge.contact_mode_values_slopes_curvatures(
                     x,
@@ -698,6 +841,59 @@ pub fn run(
         }
     }
     Ok(())
+}
+
+/// The end of a Moreau–Jean step ([`super::impact`]) for the wheels with
+/// mass: the stored accelerations become the smooth ones (the step's contact
+/// force stripped: it acted as an impulse), the contact leaves nothing for
+/// the next step's HHT term, a wheel that carried an impulse is put back on
+/// the surface, and the relative velocities U_{n+1} are taken.
+#[allow(clippy::too_many_arguments)]
+fn moreau_jean_finish(
+    model: &Model,
+    nm: &Newmark,
+    impacts: &mut Impacts,
+    contacts: &[ContactWheel],
+    geometry: &ContactGeometry,
+    lambda: &[f64],
+    modal: &mut ModalStep,
+    states: &mut [VehicleState],
+    contact_gaps: &mut [f64],
+) {
+    let modes = model.bridge.mode_count();
+    let w = nm.weight();
+    for (c, contact) in contacts.iter().enumerate() {
+        let Some(column) = &impacts.inverse_mass[c] else {
+            continue;
+        };
+        let shape = &geometry.shapes[c * modes..(c + 1) * modes];
+        if lambda[c] != 0.0 {
+            let state = &mut states[contact.vehicle];
+            state.acceleration.axpy(-w * lambda[c], column, 1.0);
+            if geometry.on_deck[c] {
+                for (a, phi) in modal.acceleration.iter_mut().zip(shape) {
+                    *a += w * phi * lambda[c];
+                }
+                modal.forget_contact(shape, lambda[c]);
+            }
+        }
+        if lambda[c] > 0.0 {
+            states[contact.vehicle].displacement[contact.dof] -= contact_gaps[contact.wheel];
+            contact_gaps[contact.wheel] = 0.0;
+        }
+    }
+    for (c, contact) in contacts.iter().enumerate() {
+        if impacts.takes_impacts(c) {
+            impacts.relative_velocity[c] = impacts.relative(
+                c,
+                modes,
+                states[contact.vehicle].velocity[contact.dof],
+                &geometry.shapes[c * modes..(c + 1) * modes],
+                &modal.displacement,
+                &modal.velocity,
+            );
+        }
+    }
 }
 
 /// y += a · A x over the diagonal blocks `blocks` of A (zero outside them:

@@ -110,7 +110,7 @@ fn automatic_choices_meet_the_stated_tolerance_on_every_shipped_scene() {
             "{name}: modes not automatic: {}",
             loaded.bridge.selection
         );
-        let rigid = loaded.scenario.contact == Contact::Rigid;
+        let rigid = matches!(loaded.scenario.contact, Contact::Rigid { .. });
         let quantities: Vec<(String, Quantity)> = loaded
             .scenario
             .record
