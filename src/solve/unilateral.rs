@@ -505,8 +505,8 @@ pub fn run(
                     for (c, contact) in contacts.iter().enumerate() {
                         if impacts.takes_impacts(c) {
                             let vs = &steps[contact.vehicle];
-                            let wheel = nm.a1 * vs.predictor[contact.dof]
-                                - vs.damping_history[contact.dof];
+                            let wheel =
+                                nm.a1 * vs.predictor[contact.dof] - vs.damping_history[contact.dof];
                             impacts.free_velocity[c] = impacts.relative(
                                 c,
                                 modes,
@@ -782,7 +782,8 @@ pub fn run(
                 continue;
             }
             carried[c] = lambda[c];
-            if matches!(model.contact, ContactLaw::Rigid { .. }) && was_apart[c] && lambda[c] > 0.0 {
+            if matches!(model.contact, ContactLaw::Rigid { .. }) && was_apart[c] && lambda[c] > 0.0
+            {
                 let x = wheel_positions[contact.wheel];
                 bridge.contact_mode_values_slopes_curvatures(
                     x,
