@@ -157,7 +157,13 @@ fn history_error(run: &[f64], reference: &[f64], stride: usize, floor: f64) -> f
 fn moreau_jean_follows_the_impact_reference() {
     let t_end = SPAN / 30.0;
     let finest = 2.5e-5;
-    for (amplitude, restitution) in [(0.0045, 0.0), (0.003, 0.5), (0.0045, 0.5)] {
+    // (amplitude m, e, bound on every relative history error at Δt = 2.5e-5 s:
+    // 3× the largest measured, 4.2e-4, 2.1e-3 and 4.5e-3).
+    for (amplitude, restitution, bound) in [
+        (0.0045, 0.0, 1.5e-3),
+        (0.003, 0.5, 7e-3),
+        (0.0045, 0.5, 1.5e-2),
+    ] {
         let reference = rigid_reference(&reference_case(amplitude, restitution), t_end, finest, 10);
         let sprung_static = -4000.0 * 9.81 / 4.0e6;
         let body: Vec<f64> = reference.sprung.iter().map(|y| y - sprung_static).collect();
@@ -194,6 +200,11 @@ fn moreau_jean_follows_the_impact_reference() {
             errors.push(e);
         }
         for k in 0..4 {
+            assert!(
+                errors[2][k] < bound,
+                "a = {amplitude}, e = {restitution}: quantity {k} error {:.3e} above {bound:.1e}",
+                errors[2][k]
+            );
             assert!(
                 errors[2][k] < 0.75 * errors[0][k],
                 "e = {restitution}: quantity {k} does not converge: {errors:?}"
@@ -245,7 +256,7 @@ fn paper_rigid_cases_converge() {
                 values(&rows[2])[k],
             );
             assert!(
-                (c - b).abs() < 0.75 * (b - a).abs() + 1e-3 * c.abs(),
+                (c - b).abs() <= 0.75 * (b - a).abs() + 1e-3 * c.abs(),
                 "{name}: statistic {k}: {a}, {b}, {c}"
             );
         }
