@@ -262,3 +262,18 @@ fn paper_rigid_cases_converge() {
         }
     }
 }
+
+/// A coefficient of restitution outside [0, 1] is refused with its file,
+/// line and column.
+#[test]
+fn restitution_outside_zero_to_one_is_refused() {
+    for bad in ["1.5", "-0.1"] {
+        let text = hopping_scene(1e-4, 0.003, &format!("{{type: rigid, restitution: {bad}}}"));
+        let error = vbi::scenario::load_str(&text, "hop.yaml")
+            .err()
+            .unwrap_or_else(|| panic!("restitution {bad} accepted"))
+            .to_string();
+        assert!(error.contains("restitution"), "{error}");
+        assert!(error.contains("hop.yaml:5:37"), "{error}");
+    }
+}
