@@ -38,7 +38,6 @@
 
 use nalgebra::DVector;
 
-use super::VehicleState;
 use super::newmark::Newmark;
 use super::unilateral::{ContactWheel, block_inverse};
 use crate::model::{ContactLaw, Model};
@@ -67,6 +66,11 @@ pub(super) struct Impacts {
     pub speed: Vec<f64>,
     /// The step's impulse per contact, N·s.
     pub impulse: Vec<f64>,
+    /// Whether contact `c` lands this step (separated at its start, its free
+    /// gap closing): Newton's law at the velocity level.
+    pub landing: Vec<bool>,
+    /// Steps since contact `c`'s last landing (`usize::MAX`: none yet).
+    since_landing: Vec<usize>,
     /// Impulses of the last `window` steps, ring buffer, step-major.
     history: Vec<f64>,
     window: usize,
@@ -79,15 +83,10 @@ pub(super) struct Impacts {
 }
 
 impl Impacts {
-    /// `None` unless the contact is rigid. Strips the static contact force
-    /// from the starting accelerations of every wheel with mass (the smooth
-    /// acceleration at rest is −M⁻¹Eλ₀) and zeroes what is carried for it.
-    pub fn new(
-        model: &Model,
-        contacts: &[ContactWheel],
-        states: &mut [VehicleState],
-        carried: &mut [f64],
-    ) -> Option<Self> {
+    /// `None` unless the contact is rigid. Every vehicle starts in static
+    /// equilibrium and in contact (the displacement-level law), so the force
+    /// window starts full of the static wheel load's impulses.
+    pub fn new(model: &Model, contacts: &[ContactWheel], static_loads: &[f64]) -> Option<Self> {
         let ContactLaw::Rigid { restitution } = model.contact else {
             return None;
         };
@@ -110,22 +109,12 @@ impl Impacts {
             .collect();
         let (nc, modes) = (contacts.len(), model.bridge.mode_count());
         let window = ((FORCE_WINDOW / model.time_step).round() as usize).max(1);
-        // Every vehicle starts in static equilibrium: the window holds the
-        // static wheel load's impulses.
         let mut history = vec![0.0; window * nc];
         for (c, column) in inverse_mass.iter().enumerate() {
             if column.is_some() {
                 for k in 0..window {
-                    history[k * nc + c] = carried[c] * model.time_step;
+                    history[k * nc + c] = static_loads[c] * model.time_step;
                 }
-            }
-        }
-        for (c, contact) in contacts.iter().enumerate() {
-            if let Some(column) = &inverse_mass[c] {
-                states[contact.vehicle]
-                    .acceleration
-                    .axpy(-carried[c], column, 1.0);
-                carried[c] = 0.0;
             }
         }
         Some(Self {
@@ -137,6 +126,8 @@ impl Impacts {
             surface_slope: vec![0.0; nc],
             speed: vec![0.0; nc],
             impulse: vec![0.0; nc],
+            landing: vec![false; nc],
+            since_landing: vec![usize::MAX; nc],
             history,
             free_modal_velocity: vec![0.0; modes],
             window,
@@ -223,20 +214,39 @@ impl Impacts {
         nm.a1 * compliance_less_residual + self.speed[a] * coupling
     }
 
-    /// Records the step's impulses P = γΔt(1+α)λ and returns nothing; the
-    /// averaged force of contact `c` is then [`Self::averaged_force`].
-    pub fn record(&mut self, nm: &Newmark, lambda: &[f64]) {
+    /// Records the step's impulses: P = γΔt(1+α)λ for a landing, λΔt for a
+    /// wheel under the displacement-level law (λ its force over the step).
+    pub fn record(&mut self, nm: &Newmark, lambda: &[f64], dt: f64) {
         let nc = self.impulse.len();
         for (c, l) in lambda.iter().enumerate() {
-            self.impulse[c] = if self.takes_impacts(c) {
+            self.impulse[c] = if !self.takes_impacts(c) {
+                0.0
+            } else if self.landing[c] {
                 nm.a7 * nm.weight() * l
             } else {
-                0.0
+                l * dt
+            };
+            self.since_landing[c] = if self.landing[c] && *l > 0.0 {
+                0
+            } else {
+                self.since_landing[c].saturating_add(1)
             };
         }
         let row = &mut self.history[self.cursor * nc..(self.cursor + 1) * nc];
         row.copy_from_slice(&self.impulse);
         self.cursor = (self.cursor + 1) % self.window;
+    }
+
+    /// The force reported for contact `c`, N: within [`FORCE_WINDOW`] after
+    /// a landing the impulse over the last window divided by it (the landing
+    /// impulse spread over the window, which converges as Δt → 0, instead of
+    /// its step's P/Δt spike); otherwise the step's force `lambda`.
+    pub fn reported_force(&self, c: usize, lambda: f64, dt: f64) -> f64 {
+        if self.takes_impacts(c) && self.since_landing[c] < self.window {
+            self.averaged_force(c, dt)
+        } else {
+            lambda
+        }
     }
 
     /// The impulse of contact `c` over the last window divided by it, N.

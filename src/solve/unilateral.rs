@@ -318,7 +318,7 @@ pub fn run(
         .map(|c| model.static_wheel_loads[c.wheel])
         .collect();
     // Moreau–Jean impacts for rigid contact (wheels with mass).
-    let mut impacts = Impacts::new(model, &contacts, &mut states, &mut carried);
+    let mut impacts = Impacts::new(model, &contacts, &carried);
     let mut rows: Vec<usize> = Vec::with_capacity(nc);
     let mut row_lambda = vec![0.0; nc];
     // Whether each contact wheel was off the surface after the previous step.
@@ -498,12 +498,24 @@ pub fn run(
                         impacts.free_modal_velocity[i] =
                             nm.a1 * modal.predictor[i] - modal.damping_history[i];
                     }
-                    // The step's contact problem: wheels with mass whose free
-                    // end-of-step gap closes take Newton's law at the velocity
-                    // level; massless contact points the gap law.
+                    // The step's contact problem (a hybrid Moreau–Jean step):
+                    // a wheel with mass that was off the surface at the start
+                    // of the step and whose free end-of-step gap closes LANDS:
+                    // Newton's law at the velocity level, U_{n+1} + eUₙ ≥ 0 ⊥
+                    // P ≥ 0. Every other wheel in contact at the start keeps
+                    // the displacement-level law, g_{n+1} ≥ 0 ⊥ λ ≥ 0, so a
+                    // run without lift-off is the plain rigid contact (=
+                    // permanent contact) and lift-offs are located by the
+                    // gap as before. A separated wheel whose free gap stays
+                    // open takes no force.
                     rows.clear();
+                    let mut any_landing = false;
                     for (c, contact) in contacts.iter().enumerate() {
-                        if impacts.takes_impacts(c) {
+                        impacts.landing[c] = false;
+                        if impacts.takes_impacts(c) && was_apart[c] {
+                            if free_gap[c] > 0.0 {
+                                continue;
+                            }
                             let vs = &steps[contact.vehicle];
                             let wheel =
                                 nm.a1 * vs.predictor[contact.dof] - vs.damping_history[contact.dof];
@@ -515,18 +527,20 @@ pub fn run(
                                 &modal.predictor,
                                 &impacts.free_modal_velocity,
                             );
-                            if free_gap[c] <= 0.0 {
-                                rows.push(c);
-                            }
-                        } else {
-                            rows.push(c);
+                            impacts.landing[c] = true;
+                            any_landing = true;
                         }
+                        rows.push(c);
                     }
+                    // With a landing in the problem, the gap rows are scaled
+                    // by a₁ (1/s) to the velocity rows' size: the same LCP
+                    // solution, a better-scaled tableau.
+                    let gap_scale = if any_landing { nm.a1 } else { 1.0 };
                     let m = rows.len();
                     for (ra, &a) in rows.iter().enumerate() {
                         for (rb, &b) in rows.iter().enumerate() {
                             let w = compliance[a * nc + b];
-                            lcp_matrix[ra * m + rb] = if impacts.takes_impacts(a) {
+                            lcp_matrix[ra * m + rb] = if impacts.landing[a] {
                                 impacts.velocity_row_entry(
                                     &nm,
                                     a,
@@ -535,14 +549,14 @@ pub fn run(
                                     &geometry.scaled[b * modes..(b + 1) * modes],
                                 )
                             } else {
-                                w
+                                gap_scale * w
                             };
                         }
-                        lcp_vector[ra] = if impacts.takes_impacts(a) {
+                        lcp_vector[ra] = if impacts.landing[a] {
                             impacts.free_velocity[a]
                                 + impacts.restitution * impacts.relative_velocity[a]
                         } else {
-                            free_gap[a]
+                            gap_scale * free_gap[a]
                         };
                         previous[ra] = lambda[a];
                     }
@@ -628,32 +642,16 @@ pub fn run(
 
         // Gaps with the forces, then both subsystems finish the step.
         if let Some(impacts) = &mut impacts {
-            // Impulses, and the forces reported: averaged over the window
-            // for wheels with mass, the step's force for contact points.
-            impacts.record(&nm, &lambda);
-            for (c, contact) in contacts.iter().enumerate() {
-                contact_forces[contact.wheel] = if impacts.takes_impacts(c) {
-                    impacts.averaged_force(c, model.time_step)
-                } else {
-                    lambda[c]
-                };
-            }
+            impacts.record(&nm, &lambda, model.time_step);
         }
         for (c, contact) in contacts.iter().enumerate() {
             let row = &compliance[c * nc..(c + 1) * nc];
             contact_gaps[contact.wheel] =
                 free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
-            if impacts.is_some() {
-                // The residual static deflection rides the reported
-                // (averaged) forces, not a landing step's impulse / Δt.
-                let residual = &geometry.residual[c * nc..(c + 1) * nc];
-                for (d, other) in contacts.iter().enumerate() {
-                    contact_gaps[contact.wheel] +=
-                        residual[d] * (contact_forces[other.wheel] - lambda[d]);
-                }
-            } else {
-                contact_forces[contact.wheel] = lambda[c];
-            }
+            contact_forces[contact.wheel] = match &impacts {
+                Some(impacts) => impacts.reported_force(c, lambda[c], model.time_step),
+                None => lambda[c],
+            };
             if on_deck[c] {
                 modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
             }
@@ -769,54 +767,40 @@ pub fn run(
                 &contacts,
                 &geometry,
                 &lambda,
+                (&wheel_positions, t),
                 &mut modal,
                 &mut states,
                 &mut contact_gaps,
+                [
+                    &mut landing_values,
+                    &mut landing_slopes,
+                    &mut landing_curvatures,
+                ],
             );
         }
         for (c, contact) in contacts.iter().enumerate() {
             let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
-            if impacts.as_ref().is_some_and(|i| i.takes_impacts(c)) {
-                carried[c] = 0.0;
+            if let Some(impacts) = impacts.as_ref().filter(|i| i.takes_impacts(c)) {
+                // A landing impulse has done its work within its step.
+                carried[c] = if impacts.landing[c] { 0.0 } else { lambda[c] };
                 was_apart[c] = apart;
                 continue;
             }
             carried[c] = lambda[c];
             if matches!(model.contact, ContactLaw::Rigid { .. }) && was_apart[c] && lambda[c] > 0.0
             {
-                let x = wheel_positions[contact.wheel];
-                bridge.contact_mode_values_slopes_curvatures(
-                    x,
-                    model.wheel_y[contact.wheel],
-                    &mut landing_values,
-                    &mut landing_slopes,
-                    &mut landing_curvatures,
+                let (velocity, acceleration) = surface_motion(
+                    model,
+                    &modal,
+                    contact,
+                    wheel_positions[contact.wheel],
+                    t,
+                    [
+                        &mut landing_values,
+                        &mut landing_slopes,
+                        &mut landing_curvatures,
+                    ],
                 );
-                // v and a along the path at t_{n+1}; the a-terms are those
-                // of an accelerating vehicle (see `permanent`).
-                let vehicle = &model.vehicles[contact.vehicle];
-                let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
-                let (_, dr, ddr) = model
-                    .profile
-                    .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
-                let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
-                if a != 0.0 {
-                    acceleration += a * dr;
-                }
-                for i in 0..modes {
-                    let (q, qd, qdd) = (
-                        modal.displacement[i],
-                        modal.velocity[i],
-                        modal.acceleration[i],
-                    );
-                    velocity += landing_values[i] * qd + v * landing_slopes[i] * q;
-                    acceleration += landing_values[i] * qdd
-                        + 2.0 * v * landing_slopes[i] * qd
-                        + v * v * landing_curvatures[i] * q;
-                    if a != 0.0 {
-                        acceleration += a * landing_slopes[i] * q;
-                    }
-                }
                 let state = &mut states[contact.vehicle];
                 state.velocity[contact.dof] = velocity;
                 state.acceleration[contact.dof] = acceleration;
@@ -844,11 +828,62 @@ pub fn run(
     Ok(())
 }
 
-/// The end of a Moreau–Jean step ([`super::impact`]) for the wheels with
-/// mass: the stored accelerations become the smooth ones (the step's contact
-/// force stripped: it acted as an impulse), the contact leaves nothing for
-/// the next step's HHT term, a wheel that carried an impulse is put back on
-/// the surface, and the relative velocities U_{n+1} are taken.
+/// The surface's velocity and acceleration under contact wheel `contact`
+/// at `x` (m) and time `t` (s): u̇ = φ·q̇ + v(φ′·q + r′),
+/// ü = φ·q̈ + 2vφ′·q̇ + v²(φ″·q + r″) (+ a(φ′·q + r′) for a vehicle
+/// accelerating along its path, see `permanent`); m/s and m/s².
+/// `work` holds the mode values, slopes and curvatures.
+fn surface_motion(
+    model: &Model,
+    modal: &ModalStep,
+    contact: &ContactWheel,
+    x: f64,
+    t: f64,
+    work: [&mut [f64]; 3],
+) -> (f64, f64) {
+    let [values, slopes, curvatures] = work;
+    model.bridge.contact_mode_values_slopes_curvatures(
+        x,
+        model.wheel_y[contact.wheel],
+        values,
+        slopes,
+        curvatures,
+    );
+    let vehicle = &model.vehicles[contact.vehicle];
+    let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
+    let (_, dr, ddr) = model
+        .profile
+        .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
+    let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
+    if a != 0.0 {
+        acceleration += a * dr;
+    }
+    for i in 0..values.len() {
+        let (q, qd, qdd) = (
+            modal.displacement[i],
+            modal.velocity[i],
+            modal.acceleration[i],
+        );
+        velocity += values[i] * qd + v * slopes[i] * q;
+        acceleration += values[i] * qdd + 2.0 * v * slopes[i] * qd + v * v * curvatures[i] * q;
+        if a != 0.0 {
+            acceleration += a * slopes[i] * q;
+        }
+    }
+    (velocity, acceleration)
+}
+
+/// The end of a hybrid Moreau–Jean step ([`super::impact`]). A wheel that
+/// landed with an impulse: its stored accelerations (vehicle and bridge)
+/// become the smooth ones (the step's contact force stripped: it acted as
+/// an impulse), nothing is carried into the next step's HHT term, and the
+/// wheel is put back on the surface (gap 0). If it stays there — its
+/// relative velocity after the impact plus a step of its smooth relative
+/// acceleration does not open the gap — its acceleration becomes the
+/// surface's, the one the constraint imposes from the next step on (a smooth
+/// acceleration there would re-enter the trapezoidal velocity update and
+/// make the next contact forces alternate). Then the relative velocities
+/// U_{n+1} of every wheel with mass are taken (Uₙ of a landing's law).
 #[allow(clippy::too_many_arguments)]
 fn moreau_jean_finish(
     model: &Model,
@@ -857,30 +892,46 @@ fn moreau_jean_finish(
     contacts: &[ContactWheel],
     geometry: &ContactGeometry,
     lambda: &[f64],
+    (wheel_positions, t): (&[f64], f64),
     modal: &mut ModalStep,
     states: &mut [VehicleState],
     contact_gaps: &mut [f64],
+    work: [&mut [f64]; 3],
 ) {
     let modes = model.bridge.mode_count();
     let w = nm.weight();
+    let [values, slopes, curvatures] = work;
     for (c, contact) in contacts.iter().enumerate() {
+        if !impacts.landing[c] || lambda[c] == 0.0 {
+            continue;
+        }
         let Some(column) = &impacts.inverse_mass[c] else {
             continue;
         };
         let shape = &geometry.shapes[c * modes..(c + 1) * modes];
-        if lambda[c] != 0.0 {
-            let state = &mut states[contact.vehicle];
-            state.acceleration.axpy(-w * lambda[c], column, 1.0);
-            if geometry.on_deck[c] {
-                for (a, phi) in modal.acceleration.iter_mut().zip(shape) {
-                    *a += w * phi * lambda[c];
-                }
-                modal.forget_contact(shape, lambda[c]);
+        let state = &mut states[contact.vehicle];
+        state.acceleration.axpy(-w * lambda[c], column, 1.0);
+        if geometry.on_deck[c] {
+            for (a, phi) in modal.acceleration.iter_mut().zip(shape) {
+                *a += w * phi * lambda[c];
             }
+            modal.forget_contact(shape, lambda[c]);
         }
-        if lambda[c] > 0.0 {
-            states[contact.vehicle].displacement[contact.dof] -= contact_gaps[contact.wheel];
-            contact_gaps[contact.wheel] = 0.0;
+        state.displacement[contact.dof] -= contact_gaps[contact.wheel];
+        contact_gaps[contact.wheel] = 0.0;
+        let (surface_velocity, surface_acceleration) = surface_motion(
+            model,
+            modal,
+            contact,
+            wheel_positions[contact.wheel],
+            t,
+            [&mut *values, &mut *slopes, &mut *curvatures],
+        );
+        let state = &mut states[contact.vehicle];
+        let separating = state.velocity[contact.dof] - surface_velocity
+            + model.time_step * (state.acceleration[contact.dof] - surface_acceleration);
+        if separating <= 0.0 {
+            state.acceleration[contact.dof] = surface_acceleration;
         }
     }
     for (c, contact) in contacts.iter().enumerate() {
