@@ -512,7 +512,15 @@ pub fn run(
                     let mut any_landing = false;
                     for (c, contact) in contacts.iter().enumerate() {
                         impacts.landing[c] = false;
-                        if impacts.takes_impacts(c) && was_apart[c] {
+                        // The first step is an impact too for a wheel the
+                        // surface under it approaches at t = 0 (vehicles
+                        // start at rest: a surface sloped under the wheel
+                        // moves into it at v·r′, a velocity jump).
+                        let kicked = step == 1 && impacts.relative_velocity[c] < 0.0;
+                        if impacts.takes_impacts(c)
+                            && (was_apart[c] || kicked)
+                            && (free_gap[c] <= 0.0 || was_apart[c])
+                        {
                             if free_gap[c] > 0.0 {
                                 continue;
                             }
@@ -648,6 +656,18 @@ pub fn run(
             let row = &compliance[c * nc..(c + 1) * nc];
             contact_gaps[contact.wheel] =
                 free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
+            if let Some(impacts) = &impacts {
+                // A landing's multiplier is an impulse over the step, not a
+                // force: the residual (quasi-static) flexibility does not
+                // deflect under it (its velocity is neglected in Newton's law
+                // too), so its part comes out of every gap.
+                let residual = &geometry.residual[c * nc..(c + 1) * nc];
+                for d in 0..nc {
+                    if impacts.landing[d] {
+                        contact_gaps[contact.wheel] -= residual[d] * lambda[d];
+                    }
+                }
+            }
             contact_forces[contact.wheel] = match &impacts {
                 Some(impacts) => impacts.reported_force(c, lambda[c], model.time_step),
                 None => lambda[c],
