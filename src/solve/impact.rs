@@ -69,6 +69,10 @@ pub(super) struct Impacts {
     /// Whether contact `c` lands this step (separated at its start, its free
     /// gap closing): Newton's law at the velocity level.
     pub landing: Vec<bool>,
+    /// Whether contact `c` left the surface after this step's impact (e > 0).
+    pub leaving: Vec<bool>,
+    /// Whether contact `c` was on the deck at the start of the step.
+    pub was_on_deck: Vec<bool>,
     /// Steps since contact `c`'s last landing (`usize::MAX`: none yet).
     since_landing: Vec<usize>,
     /// Impulses of the last `window` steps, ring buffer, step-major.
@@ -127,6 +131,8 @@ impl Impacts {
             speed: vec![0.0; nc],
             impulse: vec![0.0; nc],
             landing: vec![false; nc],
+            leaving: vec![false; nc],
+            was_on_deck: vec![false; nc],
             since_landing: vec![usize::MAX; nc],
             history,
             free_modal_velocity: vec![0.0; modes],

@@ -352,6 +352,7 @@ pub fn run(
             &wheel_positions,
         );
         impacts.locate(model, &contacts, &geometry.on_deck, &wheel_positions, 0.0);
+        impacts.was_on_deck.copy_from_slice(&geometry.on_deck);
         for (c, contact) in contacts.iter().enumerate() {
             impacts.relative_velocity[c] = impacts.relative(
                 c,
@@ -516,7 +517,13 @@ pub fn run(
                         // surface under it approaches at t = 0 (vehicles
                         // start at rest: a surface sloped under the wheel
                         // moves into it at v·r′, a velocity jump).
-                        let kicked = step == 1 && impacts.relative_velocity[c] < 0.0;
+                        // So is a step in which a wheel in contact rolls on
+                        // or off the deck: the deck's slope under it jumps
+                        // there (v·φ′·q, a kink in the surface), and the
+                        // displacement-level law would hand the jump back as
+                        // a trapezoidal rebound.
+                        let kicked = (step == 1 && impacts.relative_velocity[c] < 0.0)
+                            || on_deck[c] != impacts.was_on_deck[c];
                         if impacts.takes_impacts(c)
                             && (was_apart[c] || kicked)
                             && (free_gap[c] <= 0.0 || was_apart[c])
@@ -561,8 +568,9 @@ pub fn run(
                             };
                         }
                         lcp_vector[ra] = if impacts.landing[a] {
+                            // Newton's law restitutes an approach only.
                             impacts.free_velocity[a]
-                                + impacts.restitution * impacts.relative_velocity[a]
+                                + impacts.restitution * impacts.relative_velocity[a].min(0.0)
                         } else {
                             gap_scale * free_gap[a]
                         };
@@ -803,7 +811,7 @@ pub fn run(
             if let Some(impacts) = impacts.as_ref().filter(|i| i.takes_impacts(c)) {
                 // A landing impulse has done its work within its step.
                 carried[c] = if impacts.landing[c] { 0.0 } else { lambda[c] };
-                was_apart[c] = apart;
+                was_apart[c] = apart || impacts.leaving[c];
                 continue;
             }
             carried[c] = lambda[c];
@@ -921,6 +929,8 @@ fn moreau_jean_finish(
     let modes = model.bridge.mode_count();
     let w = nm.weight();
     let [values, slopes, curvatures] = work;
+    impacts.leaving.fill(false);
+    impacts.was_on_deck.copy_from_slice(&geometry.on_deck);
     for (c, contact) in contacts.iter().enumerate() {
         if !impacts.landing[c] || lambda[c] == 0.0 {
             continue;
@@ -952,6 +962,10 @@ fn moreau_jean_finish(
             + model.time_step * (state.acceleration[contact.dof] - surface_acceleration);
         if separating <= 0.0 {
             state.acceleration[contact.dof] = surface_acceleration;
+        } else {
+            // Leaving the surface after the impact (e > 0): in flight from
+            // the next step on, so a quick return is another impact.
+            impacts.leaving[c] = true;
         }
     }
     for (c, contact) in contacts.iter().enumerate() {
