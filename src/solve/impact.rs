@@ -1,5 +1,12 @@
-//! Moreau–Jean impacts for rigid contact (issue 29): wheels with mass meet
-//! the surface at the velocity level with Newton's impact law, one LCP per
+//! Moreau–Jean impacts for rigid contact (issue 29), used in a HYBRID step:
+//! only at a landing (a wheel separated at the start of the step whose free
+//! gap closes; also the t = 0 kick of a surface sloped under a wheel at rest,
+//! a wheel rolling on or off the deck, and a quick return after a bounce) does
+//! a wheel with mass meet the surface at the velocity level with Newton's
+//! impact law; a wheel in contact at the start of the step keeps the
+//! displacement-level law (gap ≥ 0 ⊥ force ≥ 0 at the end of the step), so a
+//! run without lift-off is the plain rigid contact (= permanent contact). The
+//! description below is of the landing rows. One LCP per
 //! step for the contact impulses (Moreau 1988; Jean 1999; Acary & Brogliato,
 //! *Numerical Methods for Nonsmooth Dynamical Systems*, 2008, §10.1).
 //!
