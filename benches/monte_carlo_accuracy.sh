@@ -48,8 +48,8 @@ def envelopes(run):
     return rows[0][3:], np.array([[float(x) for x in r[3:]] for r in rows[1:]])
 def gaps(run):
     with open(f"{work}/{run}/separation.csv") as f:
-        return [(float(r["probability"]), float(r["expected_max_gap_m"]),
-                 float(r["expected_max_gap_std_error_m"])) for r in csv.DictReader(f)]
+        return [(float(r["probability"]), float(r["expected_max_gap [m]"]),
+                 float(r["expected_max_gap_std_error [m]"])) for r in csv.DictReader(f)]
 names, ref = envelopes("reference")
 ref_gaps = gaps("reference")
 print("reference: expected largest gap per wheel (mm):",

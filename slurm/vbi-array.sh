@@ -15,7 +15,8 @@
 #   -c, --cpus-per-task C    CPUs of each task, used by vbi's threads (env VBI_SLURM_CPUS, 1)
 #       --mem SIZE           memory of each task (env VBI_SLURM_MEM, 2G)
 #       --merge-mem SIZE     memory of the merge (env VBI_SLURM_MERGE_MEM, as --mem);
-#                            it reads every part: about 0.8 x their bytes
+#                            it folds one part at a time: the largest part's
+#                            bytes plus the merged study suffice
 #   -o, --out DIR            results folder, on a file system every node sees
 #                            (default results/<scene stem>): parts in DIR/parts,
 #                            job logs in DIR/logs, the merged study in DIR

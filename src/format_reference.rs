@@ -360,6 +360,17 @@ fn type_text(schema: &Value, items: Option<&Value>) -> String {
         .or_else(|| schema.get("anyOf"))
         .and_then(Value::as_array);
     if let Some(alternatives) = alternatives {
+        // A number or a string with its unit (a length, a speed, …): the
+        // units the string may give.
+        let units = alternatives.iter().find_map(|a| {
+            (a.get("type") == Some(&Value::from("string")) && a.get("pattern").is_some())
+                .then(|| a.get("description").and_then(Value::as_str))
+                .flatten()
+                .and_then(|text| text.strip_prefix("with its unit: "))
+        });
+        if let Some(units) = units {
+            return format!("number or string with its unit ({units})");
+        }
         let kinds: BTreeSet<String> = alternatives
             .iter()
             .map(|a| type_text(a, a.get("items")))

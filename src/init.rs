@@ -107,8 +107,9 @@ pub fn starter(
         scene,
         "# A starter scene written by `vbi init --bridge {} --vehicle {}`.\n\
          # Check it with `vbi check FILE`, run it with `vbi run FILE`; every key is\n\
-         # described in docs/format.md (or `vbi schema --markdown`). Units are SI\n\
-         # (m, kg, s, N) unless a value says otherwise (speeds may carry km/h).",
+         # described in docs/format.md (or `vbi schema --markdown`). A plain number\n\
+         # is SI (m, kg, s, N); any physical value may carry its unit instead\n\
+         # (`25 m`, `40 t`, `170 kN`, `1.6e6 N/m`, `90 km/h`).",
         bridge.key(),
         vehicle.key()
     );

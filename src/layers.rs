@@ -45,16 +45,6 @@ const LAYERS: &[&[&str]] = &[
 /// known debt of issue 25, listed so that any NEW one fails. Remove a line
 /// when its imports are gone (the test fails on a stale line too).
 const KNOWN_UPWARD: &[(&str, &str)] = &[
-    // The scene description still names types defined above it: the
-    // format's shared enums and limits (Quantity, SolverMethod, Grid, …,
-    // `Limits`), the imported model's matrices and DOF directions, the
-    // ground record, the spectra and a plate's moment component. Moving
-    // those definitions down (their physics stays above as inherent impls)
-    // removes these lines.
-    ("scene", "bridge"),
-    ("scene", "ground"),
-    ("scene", "scenario"),
-    ("scene", "surface"),
     // The format builds bridges and solves eigenproblems for automatic
     // choices and budgets (the planning stage is not yet split out), and
     // holds physics types in the resolved scene.

@@ -552,7 +552,9 @@ fn run(
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
-        let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+        // No length until the run reports one: a bar of length 0 reads
+        // 100 % (indicatif), which flashed before every run's first step.
+        let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
         bar.set_style(
             ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {percent}% eta {eta}")
                 .expect("valid template")
@@ -561,10 +563,7 @@ fn run(
         bar.set_message(scenario.name.clone());
         bar
     };
-    let progress = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-    };
+    let progress = |done: usize, total: usize| studies::advance(&bar, done, total);
     let results = match vbi::execute::execute_into(loaded, &out, &progress) {
         Ok(r) => r,
         Err(e) => {
@@ -856,7 +855,7 @@ fn converge(
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
-        let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+        let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
         bar.set_style(
             ProgressStyle::with_template("{spinner} run {pos}/{len} {msg}")
                 .expect("valid template"),
@@ -897,6 +896,22 @@ fn converge(
             study
                 .plot(&out.join("converge.png"))
                 .map_err(|e| e.to_string())
+        })
+        .and_then(|()| {
+            // The answer to paste; none (and no stale one from an earlier
+            // study in the folder) when no run is within tolerance.
+            let path = out.join("cheapest.yaml");
+            match study.cheapest_yaml() {
+                Some(yaml) => {
+                    vbi::report::write_atomic(&path, yaml.as_bytes()).map_err(|e| e.to_string())
+                }
+                None => match std::fs::remove_file(&path) {
+                    Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                        Err(format!("cannot remove {}: {e}", path.display()))
+                    }
+                    _ => Ok(()),
+                },
+            }
         });
     if let Err(e) = written {
         errln!("error: {e}");
@@ -1012,6 +1027,11 @@ fn print_convergence(study: &vbi::study::converge::Convergence) {
             ),
             None => outln!("  {name}: no run within {tolerance} %"),
         }
+    }
+    if let Some(yaml) = study.cheapest_yaml() {
+        // Ready to paste (also written to cheapest.yaml).
+        outln!();
+        out!("{yaml}");
     }
 }
 

@@ -174,7 +174,7 @@ impl Model {
         let lateral_participation = if scenario
             .ground_motion
             .iter()
-            .any(|g| g.direction == crate::ground::Direction::Lateral)
+            .any(|g| g.direction == crate::scene::Direction::Lateral)
         {
             bridge.lateral_participation(&scenario.bridge)
         } else {
@@ -336,10 +336,10 @@ fn ground_excitation(
             .collect()
     };
     Some(crate::ground::GroundExcitation {
-        vertical: records(crate::ground::Direction::Vertical),
+        vertical: records(crate::scene::Direction::Vertical),
         participation: participation.clone(),
         total_mass: *total_mass,
-        lateral: records(crate::ground::Direction::Lateral),
+        lateral: records(crate::scene::Direction::Lateral),
         lateral_participation,
         lateral_mass,
     })

@@ -214,6 +214,7 @@ pub fn write_results_with(
             &out.join("envelopes.csv"),
             report::envelopes::envelope_csv(envelope).as_bytes(),
         )?;
+        report::envelopes::write_envelope_plot(&out.join("envelopes.png"), scenario, envelope)?;
     }
     if outcome.model.bridge.width().is_some() {
         report::write_atomic(

@@ -106,12 +106,28 @@ pub(super) fn write_study(
     verdict
 }
 
+/// Moves one run's bar to `done` of `total`, never back: a study's parallel
+/// workers report their counts out of order (a batch finishing after a later
+/// one reports the smaller count), and a bar that stepped back looked like a
+/// restart. Never further than `total` either.
+pub(super) fn advance(bar: &ProgressBar, done: usize, total: usize) {
+    let total = total as u64;
+    if bar.length() != Some(total) {
+        bar.set_length(total);
+    }
+    let done = (done as u64).min(total);
+    if done > bar.position() {
+        bar.set_position(done);
+    }
+}
+
 fn progress_bar(quiet: bool, message: &str) -> ProgressBar {
     if quiet {
         return ProgressBar::hidden();
     }
-    // indicatif draws nothing when stderr is not a terminal.
-    let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+    // indicatif draws nothing when stderr is not a terminal. No length until
+    // the work reports one (a length of 0 reads 100 %).
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
     bar.set_style(
         ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {pos}/{len} eta {eta}")
             .expect("valid template")
@@ -160,10 +176,7 @@ pub(super) fn run_shard(
             loaded.scenario.name, shard.index, shard.count
         ),
     );
-    let progress = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-    };
+    let progress = |done: usize, total: usize| advance(&bar, done, total);
     let name = file.display().to_string();
     let part = match shard::run_shard(&loaded, &name, &source, options, shard, &progress) {
         Ok(p) => p,
@@ -249,6 +262,23 @@ pub(super) fn run_sample(
     run(Ok(loaded), file, Some(out), quiet, svg, force)
 }
 
+/// The merge reads one part at a time (megabytes of text, then its parsed
+/// nodes) and frees it before the next. glibc serves such blocks with mmap
+/// and returns them on free, but after the first free it raises its mmap
+/// threshold to that size (its dynamic threshold), so the next parts land
+/// in the heap, where fragmentation keeps them resident: measured on the
+/// rail car's 14 MB part, 70 MB peak RSS, 47 MB with the threshold fixed
+/// (BENCHMARKS.md, "Studies on a Slurm cluster"). Setting `M_MMAP_THRESHOLD` fixes it at glibc's initial 128 kB and
+/// turns the adjustment off (mallopt(3)).
+fn keep_large_buffers_out_of_the_heap() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: mallopt only sets an allocator parameter; called before the
+    // merge allocates its parts, on the main thread.
+    unsafe {
+        libc::mallopt(libc::M_MMAP_THRESHOLD, 128 * 1024);
+    }
+}
+
 /// `vbi merge`: the parts' study written as an unsharded run writes it.
 pub(super) fn merge(
     parts: &[PathBuf],
@@ -258,6 +288,7 @@ pub(super) fn merge(
     force: bool,
 ) -> ExitCode {
     use vbi::study::shard::{self, ShardError};
+    keep_large_buffers_out_of_the_heap();
     let mut merged = match shard::merge(parts, options) {
         Ok(m) => m,
         Err(e) => {
@@ -278,4 +309,22 @@ pub(super) fn merge(
     }
     merged.loaded.scenario.source_file = Some(source);
     write_study(out, &merged.loaded.scenario, &merged.results, quiet)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bar_reads_0_until_told_a_length_and_never_steps_back() {
+        let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::hidden());
+        // Not 100 % before the first report (a length of 0 would be).
+        assert_eq!(bar.length(), None);
+        advance(&bar, 6, 10);
+        advance(&bar, 4, 10); // a worker's late report
+        assert_eq!((bar.position(), bar.length()), (6, Some(10)));
+        advance(&bar, 10, 10);
+        advance(&bar, 12, 10);
+        assert_eq!(bar.position(), 10);
+    }
 }

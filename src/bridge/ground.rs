@@ -321,7 +321,7 @@ impl ModalBridge {
             Shapes::Imported(imported) => imported_inertia_participation(
                 imported,
                 &imported.model.lateral_inertia,
-                super::fe_import::Direction::Uy,
+                crate::scene::imported::Direction::Uy,
             ),
             _ => (vec![0.0; self.mode_count()], 0.0),
         }
@@ -335,7 +335,7 @@ impl ModalBridge {
 fn imported_inertia_participation(
     imported: &super::fe_import::modal::ImportedShapes,
     inertia: &[f64],
-    direction: super::fe_import::Direction,
+    direction: crate::scene::imported::Direction,
 ) -> (Vec<f64>, f64) {
     let model = &imported.model;
     let n = model.dofs.len();
@@ -357,7 +357,7 @@ fn imported_inertia_participation(
 /// (none for a lumped mass). Returns Γ and the free vertical mass δᵀ M δ
 /// (kg) that Σ Γ² tends to. Cost O(n · modes).
 fn imported_participation(imported: &super::fe_import::modal::ImportedShapes) -> (Vec<f64>, f64) {
-    use super::fe_import::Direction as Dof;
+    use crate::scene::imported::Direction as Dof;
     let model = &imported.model;
     let n = model.dofs.len();
     let vertical: Vec<f64> = model

@@ -166,7 +166,7 @@ pub enum InfluenceLine {
     Hermite(HermiteField),
     /// An imported model's track, and how a load enters it at its ends
     /// (the load at ξ couples with its entry weight, [`fe_import::entry`]).
-    Track(TrackField, fe_import::entry::RailEntry),
+    Track(TrackField, crate::scene::imported::RailEntry),
 }
 
 impl InfluenceLine {
@@ -590,6 +590,17 @@ impl ModalBridge {
         self.contact_flexibility.is_some()
     }
 
+    /// The full model's static flexibility G(c, d) between two contact
+    /// points, m/N; `None` when the contact correction is off. The residual
+    /// flexibility is G(c, d) − Σᵢ φᵢ(c)φᵢ(d)/ωᵢ² ([`Self::residual_flexibility`]);
+    /// a solver holding many contacts forms the modal sum for all pairs at
+    /// once as one matrix product.
+    pub fn static_flexibility(&self, c: ContactPoint, d: ContactPoint) -> Option<f64> {
+        self.contact_flexibility
+            .as_ref()
+            .map(|flexibility| flexibility.green(c, d))
+    }
+
     /// Residual (static) flexibility between two contact points c and d
     /// (direction, x along and y across the track, m), m/N: the full static
     /// Green's function minus its modal part, R = G(c, d) −
@@ -827,7 +838,7 @@ impl ModalBridge {
     /// The entry weight of a contact at `x` on an imported track with free
     /// rail ends ([`fe_import::entry`]); `None` where loads enter at once.
     #[inline]
-    fn contact_entry(&self) -> Option<&fe_import::entry::RailEntry> {
+    fn contact_entry(&self) -> Option<&crate::scene::imported::RailEntry> {
         match &self.shapes {
             Shapes::Imported(imported) if imported.model.entry.is_active() => {
                 Some(&imported.model.entry)
@@ -925,7 +936,7 @@ impl ModalBridge {
         &self,
         x: f64,
         y: f64,
-        moment: plate::moments::PlateMoment,
+        moment: crate::scene::PlateMoment,
         line_y: &[f64],
     ) -> Result<Option<plate::moments::PlateMomentProbe>, BridgeError> {
         match &self.shapes {
@@ -941,7 +952,7 @@ impl ModalBridge {
     pub fn imported_dof(
         &self,
         node: u64,
-        direction: fe_import::Direction,
+        direction: crate::scene::imported::Direction,
     ) -> Result<Option<usize>, String> {
         match &self.shapes {
             Shapes::Imported(imported) => Ok(imported.model.dof(node, direction)),

@@ -20,7 +20,7 @@
 pub mod at2;
 pub mod table;
 
-use serde::Serialize;
+use crate::scene::{AccelerationUnit, Direction, GroundRecord};
 
 /// Plausible sampling interval of a ground-motion record, s: strong-motion
 /// accelerographs sample at 50–1000 Hz (PEER NGA records: 0.005–0.02 s),
@@ -32,20 +32,6 @@ pub const SAMPLING_INTERVAL: (f64, f64) = (1e-6, 1.0);
 /// Longest plausible record, s (one day, as a vehicle's entry time).
 pub const RECORD_DURATION: f64 = 86_400.0;
 
-/// Direction of a ground-motion component.
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
-)]
-#[serde(rename_all = "snake_case")]
-pub enum Direction {
-    /// Vertical, positive upward.
-    Vertical,
-    /// Lateral (across the track), positive to the left of travel.
-    Lateral,
-    /// Longitudinal (along the track), positive in the direction of travel.
-    Longitudinal,
-}
-
 impl Direction {
     /// The name used in the scenario file.
     pub fn name(self) -> &'static str {
@@ -55,23 +41,6 @@ impl Direction {
             Direction::Longitudinal => "longitudinal",
         }
     }
-}
-
-/// Units a record's accelerations are given in.
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
-)]
-pub enum AccelerationUnit {
-    /// m/s².
-    #[serde(rename = "m/s^2")]
-    MetresPerSecondSquared,
-    /// cm/s² (gal).
-    #[serde(rename = "cm/s^2")]
-    CentimetresPerSecondSquared,
-    /// Standard gravity g = 9.80665 m/s² (ISO 80000-3), the unit of PEER
-    /// records, whatever the scene's own `gravity`.
-    #[serde(rename = "g")]
-    StandardGravity,
 }
 
 /// Standard acceleration of gravity, m/s² (ISO 80000-3; CGPM 1901).
@@ -117,19 +86,6 @@ impl AccelerationUnit {
             _ => None,
         }
     }
-}
-
-/// A ground acceleration record on the run's clock, SI.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GroundRecord {
-    /// Sample times on the run's clock, s, strictly increasing.
-    time: Vec<f64>,
-    /// Ground acceleration at each sample, m/s² (scaled).
-    acceleration: Vec<f64>,
-    /// Ground velocity at each sample, m/s (from rest at the first one).
-    velocity: Vec<f64>,
-    /// Ground displacement at each sample, m (from 0 at the first one).
-    displacement: Vec<f64>,
 }
 
 impl GroundRecord {

@@ -32,6 +32,10 @@ pub struct PositionRef {
     pub vehicle: usize,
     /// Distance behind the front axle, m.
     pub offset: f64,
+    /// The wheel, numbered from 1 in its vehicle, when the record is that
+    /// wheel's own (a contact force or gap); `None` for the vehicle's front
+    /// axle as a reference (bridge and vehicle-body records).
+    pub wheel: Option<usize>,
 }
 
 /// How a column is computed each step.
@@ -466,6 +470,7 @@ impl<'m> Recorder<'m> {
         let lead = PositionRef {
             vehicle: 0,
             offset: 0.0,
+            wheel: None,
         };
         let mut columns = Vec::with_capacity(records.len());
         for record in records {
@@ -478,7 +483,7 @@ impl<'m> Recorder<'m> {
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
-                        && record.direction == Some(crate::bridge::fe_import::Direction::Uy)
+                        && record.direction == Some(crate::scene::imported::Direction::Uy)
                     {
                         model.bridge.mode_values_in(
                             crate::contact::ContactDirection::Lateral,
@@ -581,7 +586,11 @@ impl<'m> Recorder<'m> {
                         .wheel_index(vehicle, wheel)
                         .expect("wheel numbers were validated when resolving");
                     let offset = model.vehicles[vehicle].wheels[wheel].offset;
-                    let position = PositionRef { vehicle, offset };
+                    let position = PositionRef {
+                        vehicle,
+                        offset,
+                        wheel: Some(wheel + 1),
+                    };
                     if record.quantity == Quantity::ContactForce {
                         (Probe::ContactForce { wheel: flat }, "N", position)
                     } else {
@@ -602,6 +611,7 @@ impl<'m> Recorder<'m> {
                     let position = PositionRef {
                         vehicle,
                         offset: 0.0,
+                        wheel: None,
                     };
                     if record.quantity == Quantity::VehicleDisplacement {
                         (Probe::VehicleDisplacement { vehicle, dof }, "m", position)
@@ -915,7 +925,7 @@ fn vertical_ground_terms(
 ) -> Result<(f64, Option<GroundTerm>), BridgeError> {
     let absolute = record.frame == crate::scene::Frame::Absolute;
     let lateral_node =
-        record.node.is_some() && record.direction == Some(crate::bridge::fe_import::Direction::Uy);
+        record.node.is_some() && record.direction == Some(crate::scene::imported::Direction::Uy);
     Ok(match *probe {
         Probe::Lateral { acceleration, .. } => {
             let term = if acceleration {

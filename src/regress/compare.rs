@@ -199,13 +199,22 @@ fn relative_change(old: f64, new: f64, peak: f64) -> Option<f64> {
     (peak > 0.0 && peak.is_finite()).then(|| (new - old).abs() / peak)
 }
 
-/// The header of a history column without its ` max` / ` min` suffix: the
-/// two columns of one record share a peak.
-fn column_base(header: &str) -> &str {
-    header
-        .strip_suffix(" max")
-        .or_else(|| header.strip_suffix(" min"))
-        .unwrap_or(header)
+/// The header of a history column without its `_max` / `_min` suffix
+/// (`midspan_max [m]` → `midspan [m]`): the two columns of one record
+/// share a peak.
+fn column_base(header: &str) -> String {
+    let (name, unit) = match header.split_once(" [") {
+        Some((name, unit)) => (name, Some(unit)),
+        None => (header, None),
+    };
+    let base = name
+        .strip_suffix("_max")
+        .or_else(|| name.strip_suffix("_min"))
+        .unwrap_or(name);
+    match unit {
+        Some(unit) => format!("{base} [{unit}"),
+        None => base.to_string(),
+    }
 }
 
 /// Where row `r` of `table` is: a history bin's time span, else the
@@ -272,11 +281,11 @@ fn compare_table(scene: &str, old: &Table, new: &Table, settings: &Settings, out
     }
     // Peak of each column group (a history record's max and min columns
     // together), over old and new.
-    let peak_of = |base: &str| -> f64 {
+    let peak_of = |base: &String| -> f64 {
         let mut peak: f64 = 0.0;
         for t in [old, new] {
             for (c, h) in t.header.iter().enumerate() {
-                if column_base(h) == base {
+                if column_base(h) == *base {
                     for x in t.column(c).into_iter().flatten() {
                         if x.is_finite() {
                             peak = peak.max(x.abs());
@@ -291,7 +300,7 @@ fn compare_table(scene: &str, old: &Table, new: &Table, settings: &Settings, out
         let Some(nc) = new.header.iter().position(|n| n == h) else {
             continue;
         };
-        let peak = peak_of(column_base(h));
+        let peak = peak_of(&column_base(h));
         let tol = settings.tolerance(scene, h);
         // The worst failing cell: the largest change beyond tolerance.
         let mut worst: Option<(usize, f64)> = None;

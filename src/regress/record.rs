@@ -10,12 +10,12 @@
 //! history_bins  200
 //!
 //! [scalars]
-//! name  value  time_s  position_m
+//! name  value  time [s]  position [m]
 //! quantities.midspan.max.value  5.77186173e-4  1.09968e0  2.627056132e1
 //! run.steps  77325
 //!
 //! [table history]
-//! time_from [s]  time_to [s]  midspan [m] max  midspan [m] min  …
+//! time_from [s]  time_to [s]  midspan_max [m]  midspan_min [m]  …
 //! ```
 //!
 //! - `[scalars]`: every number and text of the run's or study's
@@ -323,8 +323,12 @@ pub fn history_table(history: &History, bins: usize) -> Table {
     let bins = bins.clamp(1, samples.max(1));
     let mut header = vec!["time_from [s]".to_string(), "time_to [s]".to_string()];
     for label in labels.iter().skip(1) {
-        header.push(format!("{label} max"));
-        header.push(format!("{label} min"));
+        // `midspan [m]` → `midspan_max [m]`, `midspan_min [m]`: the one
+        // header style of every file (issue 26.5).
+        let (name, unit) = label.split_once(" [").unwrap_or((label, ""));
+        let unit = unit.strip_suffix(']').unwrap_or(unit);
+        header.push(crate::report::heading(&format!("{name}_max"), unit));
+        header.push(crate::report::heading(&format!("{name}_min"), unit));
     }
     let mut rows = Vec::with_capacity(bins);
     for b in 0..bins {
@@ -433,7 +437,7 @@ impl Record {
         out.push_str(&format!("scene\t{}\n", escape(&self.scene)));
         out.push_str(&format!("scene_hash\t{}\n", self.scene_hash));
         out.push_str(&format!("history_bins\t{}\n", self.history_bins));
-        out.push_str("\n[scalars]\nname\tvalue\ttime_s\tposition_m\n");
+        out.push_str("\n[scalars]\nname\tvalue\ttime [s]\tposition [m]\n");
         for s in &self.scalars {
             let place = |v: Option<f64>| v.map(format_number).unwrap_or_default();
             let line = format!(

@@ -120,8 +120,14 @@ pub fn names(key: &str, name: &str) -> bool {
     if name == key || name.split('.').any(|part| part == key) {
         return true;
     }
+    // A table column `midspan [m]`, or a history bin's `midspan_max [m]`
+    // and `midspan_min [m]`, belongs to the record `midspan`.
     let base = name.split(" [").next().unwrap_or(name);
     base == key
+        || base
+            .strip_suffix("_max")
+            .or_else(|| base.strip_suffix("_min"))
+            == Some(key)
 }
 
 impl Settings {
@@ -288,10 +294,10 @@ mod tests {
             s.tolerance("b", "quantities.midspan.max.value").relative,
             1e-4
         );
-        assert_eq!(s.tolerance("b", "midspan [m] max").relative, 1e-4);
-        let a = s.tolerance("a", "midspan [m] min");
+        assert_eq!(s.tolerance("b", "midspan_max [m]").relative, 1e-4);
+        let a = s.tolerance("a", "midspan_min [m]");
         assert_eq!((a.relative, a.absolute), (0.01, 0.5));
-        assert_eq!(s.tolerance("a", "other [m] min").relative, 1e-6);
+        assert_eq!(s.tolerance("a", "other_min [m]").relative, 1e-6);
     }
 
     #[test]

@@ -187,7 +187,7 @@ pub fn write_history(
     out: &Path,
     history: &History,
     time_step: f64,
-    format: crate::scenario::raw::HistoryFormat,
+    format: crate::scene::HistoryFormat,
 ) -> Result<(), ReportError> {
     let streamed = |name: &str, write: &dyn Fn(&mut dyn Write) -> io::Result<()>| {
         let path = out.join(name);

@@ -1,11 +1,13 @@
 //! `history.png`: every recorded history of a run as a picture, one panel per
-//! kind of quantity (with its unit), the static crossing response in grey
-//! under each bridge displacement, and dashed lines where each vehicle's
-//! front axle enters the bridge and its last axle leaves it.
+//! kind of quantity (with its unit), the static crossing response dashed in
+//! its record's colour under each bridge displacement (`<name> static` in the
+//! legend), each record's peak (largest |value|) marked and labelled with its
+//! value and time, and dashed grey lines where each vehicle's front axle
+//! enters the bridge and its last axle leaves it.
 
 use std::path::Path;
 
-use super::plot::{self, Marker, Panel, PlotError, Series};
+use super::plot::{self, Marker, Panel, PlotError, Reference, Series};
 use crate::record::History;
 use crate::scene::{Quantity, Scenario};
 
@@ -181,30 +183,47 @@ fn draw_history_plot(
             keys.push((c.quantity, c.unit));
         }
     }
+    // Legend entries of the static responses: `<record> static`.
+    let static_labels: Vec<String> = history
+        .columns
+        .iter()
+        .map(|c| format!("{} static", c.name))
+        .collect();
     let panels: Vec<Panel> = keys
         .iter()
         .map(|&(quantity, unit)| {
-            let columns = history
-                .columns
-                .iter()
-                .filter(|c| c.quantity == quantity && c.unit == unit);
+            let columns: Vec<usize> = (0..history.columns.len())
+                .filter(|&i| {
+                    let c = &history.columns[i];
+                    c.quantity == quantity && c.unit == unit
+                })
+                .collect();
             Panel {
                 y_label: format!("{} ({unit})", axis_name(quantity)),
+                unit: unit.to_string(),
                 series: columns
-                    .clone()
-                    .map(|c| Series {
-                        label: &c.name,
+                    .iter()
+                    .map(|&i| Series {
+                        label: &history.columns[i].name,
                         x: &history.time,
-                        y: &c.values,
+                        y: &history.columns[i].values,
                     })
                     .collect(),
                 references: columns
-                    .filter_map(|c| {
-                        c.static_values.as_ref().map(|s| Series {
-                            label: "",
-                            x: &history.time,
-                            y: s,
-                        })
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(of, &i)| {
+                        history.columns[i]
+                            .static_values
+                            .as_ref()
+                            .map(|s| Reference {
+                                of,
+                                line: Series {
+                                    label: &static_labels[i],
+                                    x: &history.time,
+                                    y: s,
+                                },
+                            })
                     })
                     .collect(),
             }
@@ -213,14 +232,13 @@ fn draw_history_plot(
     if panels.is_empty() {
         return Ok(());
     }
-    let title = format!(
-        "{}: recorded histories (grey: static crossing)",
-        scenario.name
-    );
     let title = if panels.iter().all(|p| p.references.is_empty()) {
-        format!("{}: recorded histories", scenario.name)
+        format!("{}: recorded histories (o: peak)", scenario.name)
     } else {
-        title
+        format!(
+            "{}: recorded histories (dashed: static crossing; o: peak)",
+            scenario.name
+        )
     };
     let chart = if svg {
         plot::history_chart_svg

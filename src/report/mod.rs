@@ -50,6 +50,27 @@ pub fn history_csv(history: &History, time_step: f64) -> Vec<u8> {
     out
 }
 
+/// A CSV column heading in the one style of every file vbi writes
+/// (issue 26.5): `name [unit]` with the SI unit in brackets (`speed [m/s]`,
+/// `bridge_moment_max [N*m]`), or the bare name for a dimensionless column
+/// (`unit` empty: `probability`, `daf`).
+pub fn heading(name: &str, unit: &str) -> String {
+    if unit.is_empty() {
+        name.to_string()
+    } else {
+        format!("{name} [{unit}]")
+    }
+}
+
+/// A speed in m/s as km/h for output, with the float noise of the
+/// conversion rounded away (12 significant digits): a speed given as
+/// `359 km/h` is written `359`, not `359.00000000000006` (issue 26.5).
+pub use crate::scenario::resonance_grid::km_h;
+
+/// `x` rounded to 12 significant digits, for output: the float noise of
+/// k·Δt or of a unit conversion removed (`0.018000000000000002` → `0.018`).
+pub use crate::scenario::resonance_grid::clean;
+
 /// Shortest round-trip text of `x`: plain notation for moderate magnitudes,
 /// exponent notation for very small or large ones, and `0` for ±0.
 pub fn number(x: f64) -> String {
@@ -63,18 +84,22 @@ pub fn number(x: f64) -> String {
 }
 
 /// Mode shapes sampled at the mesh nodes and mid-element points as CSV:
-/// `x` then `mode1`, `mode2`, … (mass-normalised, 1/√kg). On a plate deck
-/// the columns are `x`, `y`, modes…, sampled along both edges and the
-/// centre line.
+/// `x [m]` then `mode1 [1/kg^0.5]`, `mode2 [1/kg^0.5]`, … (mass-normalised,
+/// 1/√kg). On a plate deck the columns are `x [m]`, `y [m]`, modes…,
+/// sampled along both edges and the centre line.
 pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
     let modes = bridge.mode_count();
     let lines = match bridge.width() {
         None => vec![None],
         Some(b) => vec![Some(0.0), Some(0.5 * b), Some(b)],
     };
-    let mut out = String::from(if lines[0].is_some() { "x,y" } else { "x" });
+    let mut out = String::from(if lines[0].is_some() {
+        "x [m],y [m]"
+    } else {
+        "x [m]"
+    });
     for i in 1..=modes {
-        out.push_str(&format!(",mode{i}"));
+        out.push_str(&format!(",mode{i} [1/kg^0.5]"));
     }
     out.push('\n');
     let nodes = bridge.node_x();
@@ -105,9 +130,10 @@ pub fn mode_shapes_csv(bridge: &crate::bridge::ModalBridge) -> String {
 }
 
 /// The DAF table of a plate deck as CSV: one row per span and girder line,
-/// `span,girder,x_m,y_m,dynamic_max_abs_m,static_max_abs_m,daf`.
+/// `span,girder,x [m],y [m],dynamic_max_abs [m],static_max_abs [m],daf`.
 pub fn girder_daf_csv(rows: &[crate::record::GirderDaf]) -> String {
-    let mut out = String::from("span,girder,x_m,y_m,dynamic_max_abs_m,static_max_abs_m,daf\n");
+    let mut out =
+        String::from("span,girder,x [m],y [m],dynamic_max_abs [m],static_max_abs [m],daf\n");
     for r in rows {
         out.push_str(&format!(
             "{},{},{},{},{},{},{}\n",

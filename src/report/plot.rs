@@ -67,10 +67,16 @@ const PALETTE: [RGBColor; 10] = [
 
 /// `v` as `m×10ᵉ` with superscript exponent (`10ᵉ` when the mantissa is 1).
 fn pow10(v: f64) -> String {
+    pow10_digits(v, 3)
+}
+
+/// [`pow10`] with `digits` significant digits (trailing zeros dropped).
+fn pow10_digits(v: f64, digits: usize) -> String {
     if !v.is_finite() || v == 0.0 {
         return fixed(v, 0);
     }
-    let s = format!("{v:.2e}");
+    let precision = digits.saturating_sub(1);
+    let s = format!("{v:.precision$e}");
     let Some((m, e)) = s.split_once('e') else {
         return s;
     };
@@ -354,8 +360,31 @@ fn with_title<'a>(root: &Area<'a>, title: &str) -> Result<Area<'a>, PlotError> {
     if title.is_empty() {
         Ok(root.clone().margin(10, 0, 0, 0))
     } else {
-        root.titled(title, font(TITLE_SIZE)).map_err(draw_err)
+        root.titled(title, title_font(root, title))
+            .map_err(draw_err)
     }
+}
+
+/// Smallest title font size, points: below it a title is left to overflow.
+const MIN_TITLE_SIZE: f64 = 11.0;
+
+/// The title's font: [`TITLE_SIZE`], or as much smaller as a long title
+/// needs to fit the image's width with 20 px each side. A centred title
+/// wider than the image is cut at both edges (the Monte Carlo plots' long
+/// titles lost their scene name).
+fn title_font<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    title: &str,
+) -> TextStyle<'static> {
+    let room = f64::from(root.dim_in_pixel().0) - 40.0;
+    let mut size = TITLE_SIZE;
+    while size > MIN_TITLE_SIZE {
+        match root.estimate_text_size(title, &font(size)) {
+            Ok((width, _)) if f64::from(width) > room => size -= 1.0,
+            _ => break,
+        }
+    }
+    font(size)
 }
 
 // ---------------------------------------------------------------------------
@@ -399,11 +428,13 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
 
 mod grid;
 mod history;
+mod ladders;
 mod line;
 mod scale;
 
 use grid::*;
-pub use history::{Marker, Panel, history_chart, history_chart_svg};
+pub use history::{Marker, Panel, Reference, history_chart, history_chart_svg};
+pub use ladders::{LadderPanel, ladder_chart};
 use line::*;
 use scale::*;
 

@@ -28,7 +28,10 @@ pub struct Extremes {
     pub max: Extreme,
     /// Smallest value.
     pub min: Extreme,
-    /// Largest absolute value (signed value reported).
+    /// The value of largest magnitude, signed (|value| is the largest
+    /// absolute value): `largest_magnitude` in summary.json, a name that
+    /// does not promise an absolute value (issue 26.5).
+    #[serde(rename = "largest_magnitude")]
     pub max_abs: Extreme,
 }
 
@@ -47,18 +50,24 @@ pub struct QuantitySummary {
     pub max: Extreme,
     /// Smallest value over the whole record.
     pub min: Extreme,
-    /// Largest absolute value over the whole record (signed value reported).
+    /// The value of largest magnitude over the whole record, signed
+    /// (`largest_magnitude` in summary.json).
+    #[serde(rename = "largest_magnitude")]
     pub max_abs: Extreme,
     /// The same three extremes restricted to the samples at which at least
     /// one axle is on the bridge (absent if none is).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub on_bridge: Option<Extremes>,
-    /// Bridge displacements: largest absolute static crossing response at the
-    /// same point, m.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// Bridge displacements: the static crossing response of largest
+    /// magnitude at the same point, signed, m (`static_largest_magnitude`
+    /// in summary.json).
+    #[serde(
+        rename = "static_largest_magnitude",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub static_max_abs: Option<Extreme>,
     /// Bridge displacements: dynamic amplification factor
-    /// max|w_dynamic| / max|w_static| at this point.
+    /// max|w_dynamic| / max|w_static| at this point (dimensionless).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub daf: Option<f64>,
 }
@@ -242,15 +251,7 @@ impl Summary {
                     .filter(|s| s.value != 0.0)
                     .map(|s| max_abs.value.abs() / s.value.abs());
                 let p = column.position;
-                let position_of = if p.offset == 0.0 {
-                    format!("front axle of vehicle {}", p.vehicle + 1)
-                } else {
-                    format!(
-                        "wheel {:.3} m behind the front axle of vehicle {}",
-                        p.offset,
-                        p.vehicle + 1
-                    )
-                };
+                let position_of = position_of(p);
                 QuantitySummary {
                     name: column.name.clone(),
                     quantity: column.quantity,
@@ -317,5 +318,26 @@ impl Summary {
             },
             embs: None,
         }
+    }
+}
+
+/// What `position` refers to, in words: the recorded wheel itself for a
+/// contact force or gap (`wheel 3 of vehicle 1, 4.300 m behind its front
+/// axle`), else the front axle of the vehicle the position follows.
+fn position_of(p: crate::record::PositionRef) -> String {
+    let vehicle = p.vehicle + 1;
+    match p.wheel {
+        Some(wheel) if p.offset == 0.0 => {
+            format!("wheel {wheel} of vehicle {vehicle}, on its front axle")
+        }
+        Some(wheel) => format!(
+            "wheel {wheel} of vehicle {vehicle}, {:.3} m behind its front axle",
+            p.offset
+        ),
+        None if p.offset == 0.0 => format!("front axle of vehicle {vehicle}"),
+        None => format!(
+            "wheel {:.3} m behind the front axle of vehicle {vehicle}",
+            p.offset
+        ),
     }
 }

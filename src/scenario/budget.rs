@@ -11,11 +11,9 @@
 //! estimate is computed in `f64` or with checked integer arithmetic, so no
 //! user-given size can wrap around.
 
-use serde::Serialize;
-
 use super::raw::{self, LimitsRaw};
 use super::resolve::Checker;
-use crate::scene::{Bridge, Surface};
+use crate::scene::{Bridge, Limits, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where
 /// solved modes are cached.
@@ -38,44 +36,6 @@ pub struct LoadOptions {
     /// Where the files a scene names may be read from: its own folder tree
     /// and the `--data-dir` folders ([`super::data_files`]).
     pub data: super::data_files::DataAccess,
-}
-
-/// The resolved `limits` section: each bound with its default filled in.
-#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
-pub struct Limits {
-    /// Degrees of freedom of the bridge's eigenproblem.
-    pub dofs: f64,
-    /// Bridge modes kept.
-    pub modes: f64,
-    /// DOFs × modes² of a beam's eigen solve (default 2e9: 100 modes of
-    /// the 157,296-DOF generated viaduct, 1.6e9, take 12–22 s with the checks on
-    /// a shared 2-core machine, BENCHMARKS.md; the fuzz input of 4e9 that
-    /// took 18–30 s in `vbi check` stays refused).
-    pub eigen_work: f64,
-    /// Time steps of one run.
-    pub steps: f64,
-    /// Time steps over all runs of a study.
-    pub study_steps: f64,
-    /// Wheels over all vehicles.
-    pub wheels: f64,
-    /// Recorded quantities.
-    pub records: f64,
-    /// Runs of a study.
-    pub study_points: f64,
-    /// Terms of a random road's series.
-    pub road_terms: f64,
-    /// Points of a surface profile: grid nodes of a sampled random track
-    /// or road, rows of a measured profile's file.
-    pub profile_points: f64,
-    /// Multiply-adds of sampling a random profile's series on its grid
-    /// (terms × grid nodes, per rail).
-    pub profile_work: f64,
-    /// Samples of a ground-motion record.
-    pub ground_points: f64,
-    /// Bytes of results written (estimate), bytes.
-    pub output_bytes: f64,
-    /// Matrix entries of an imported bridge's file.
-    pub import_entries: f64,
 }
 
 impl Default for Limits {
@@ -540,11 +500,7 @@ pub fn bridge_dofs(bridge: &Bridge) -> f64 {
 /// one column per record (two for a bridge displacement, which also gets its
 /// static part); in CSV each value at most 24 characters (ryu's longest f64
 /// and a separator), in NPY 8 bytes.
-pub(super) fn history_bytes(
-    rows: f64,
-    columns: f64,
-    format: crate::scenario::raw::HistoryFormat,
-) -> f64 {
+pub(super) fn history_bytes(rows: f64, columns: f64, format: crate::scene::HistoryFormat) -> f64 {
     let per_value = if format.csv() { 24.0 } else { 0.0 } + if format.npy() { 8.0 } else { 0.0 };
     rows * (columns + 1.0) * per_value
 }

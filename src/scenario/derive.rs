@@ -369,7 +369,7 @@ pub(super) fn resolve_iteration(
     })
 }
 
-fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &raw::GridRaw) {
+fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &crate::scene::Grid) {
     ck.positive(&format!("{path}.from"), grid.from, "a grid start");
     ck.positive(&format!("{path}.to"), grid.to, "a grid end");
     if grid.to < grid.from {

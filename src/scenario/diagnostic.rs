@@ -24,6 +24,9 @@ pub struct Diagnostic {
     pub message: String,
     /// The source line `loc.line` (without its line break), if it exists.
     pub source_line: Option<String>,
+    /// A suggestion printed under the excerpt as rustc's `= help:` line
+    /// (`did you mean `stiffness`?`), if one is close enough.
+    pub help: Option<String>,
 }
 
 impl Diagnostic {
@@ -38,8 +41,50 @@ impl Diagnostic {
             loc,
             message: message.into(),
             source_line: excerpt(source_line(source, loc.line).as_deref()),
+            help: None,
         }
     }
+
+    /// The same diagnostic with a `help:` line.
+    pub fn with_help(mut self, help: Option<String>) -> Self {
+        self.help = help;
+        self
+    }
+}
+
+/// The candidate closest to `word` if it is close enough to be a likely
+/// misspelling: at most a third of the word's characters edited (at least
+/// one), by the optimal string alignment distance (a swap of two adjacent
+/// letters counts once, as typists make them), ties to the first listed.
+pub fn closest<'c>(word: &str, candidates: impl IntoIterator<Item = &'c str>) -> Option<&'c str> {
+    let limit = (word.chars().count() / 3).max(1);
+    candidates
+        .into_iter()
+        .filter(|c| *c != word)
+        .map(|c| (strsim::osa_distance(word, c), c))
+        .filter(|&(d, _)| d <= limit)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
+/// rustc's wording of a suggestion.
+pub fn did_you_mean<'c>(
+    word: &str,
+    candidates: impl IntoIterator<Item = &'c str>,
+) -> Option<String> {
+    closest(word, candidates).map(|c| format!("did you mean `{c}`?"))
+}
+
+/// The suggestion for serde's `unknown field `x`, expected …` and `unknown
+/// variant `x`, expected …` messages: the names it lists in backticks.
+pub fn suggest_for_serde(message: &str) -> Option<String> {
+    let rest = message
+        .strip_prefix("unknown field `")
+        .or_else(|| message.strip_prefix("unknown variant `"))?;
+    let (word, listed) = rest.split_once('`')?;
+    let listed = listed.split_once("expected")?.1;
+    let names = listed.split('`').skip(1).step_by(2);
+    did_you_mean(word, names)
 }
 
 /// Where each line of a source text starts, so that many diagnostics cost
@@ -92,6 +137,7 @@ impl<'a> Lines<'a> {
             loc,
             message: message.into(),
             source_line: excerpt(self.line(loc.line)),
+            help: None,
         }
     }
 }
@@ -127,6 +173,9 @@ impl std::fmt::Display for Diagnostic {
         let Location { line, col } = self.loc;
         write!(f, "{}:{line}:{col}: {}", self.file, self.message)?;
         let Some(text) = &self.source_line else {
+            if let Some(help) = &self.help {
+                write!(f, "\n  = help: {help}")?;
+            }
             return Ok(());
         };
         let gutter = " ".repeat(line.to_string().len());
@@ -153,7 +202,11 @@ impl std::fmt::Display for Diagnostic {
         } else {
             writeln!(f, "{line} | {shown}")?;
         }
-        write!(f, "{gutter} | {}^", " ".repeat(caret_pad))
+        write!(f, "{gutter} | {}^", " ".repeat(caret_pad))?;
+        if let Some(help) = &self.help {
+            write!(f, "\n{gutter} = help: {help}")?;
+        }
+        Ok(())
     }
 }
 

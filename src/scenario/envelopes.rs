@@ -1,9 +1,10 @@
 //! Resolving `envelopes:`: the quantities and points checked against the
 //! bridge, every default filled in.
 
-use super::raw::{self, Quantity};
+use super::raw;
 use super::records::{acceleration_cutoff, quantity_name_of};
 use super::resolve::Checker;
+use crate::scene::Quantity;
 use crate::scene::{Bridge, Envelopes};
 
 /// Most envelope points: each keeps two influence lines over the mesh and

@@ -10,9 +10,9 @@ use super::data_files::{self, DataFile};
 use super::raw;
 use super::resolve::Checker;
 use crate::bridge::fe_import::{
-    Direction, ImportedModel, MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market,
-    tables,
+    MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market, tables,
 };
+use crate::scene::imported::{Direction, ImportedModel};
 use crate::scene::*;
 
 /// Fewest bytes a matrix entry line takes (`1 1 1` and a line break is 6;

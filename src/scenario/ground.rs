@@ -11,7 +11,8 @@ use super::budget::Budget;
 use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
 use super::resolve::Checker;
-use crate::ground::{AccelerationUnit, Direction, GroundRecord, at2, table};
+use crate::ground::{at2, table};
+use crate::scene::{AccelerationUnit, Direction, GroundRecord};
 use crate::scene::{Bridge, GroundMotion};
 
 /// A record's samples as read: times (s), accelerations (in the units),
@@ -146,7 +147,7 @@ fn moves_sideways(bridge: Option<&Bridge>) -> bool {
             .model
             .dofs
             .iter()
-            .any(|(_, d)| *d == crate::bridge::fe_import::Direction::Uy),
+            .any(|(_, d)| *d == crate::scene::imported::Direction::Uy),
         _ => false,
     }
 }

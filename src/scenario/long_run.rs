@@ -7,8 +7,10 @@
 //! free vibration that is most of it, a train whose length is most of its
 //! crossing, the file's own time step, else the slowest vehicle's speed.
 
+use super::budget::Budget;
 use super::raw;
-use crate::scene::{GroundMotion, Vehicle};
+use super::resolve::Checker;
+use crate::scene::{GroundMotion, Surface, Vehicle};
 
 /// The run whose steps are budgeted.
 pub(super) struct LongRun<'a> {
@@ -35,6 +37,65 @@ pub(super) struct Cause {
     pub path: String,
     /// Why it makes the run long and a value that fits `limit` steps.
     pub hint: String,
+}
+
+/// The step budget checked before any eigen solve (issue 23.3: the
+/// cheapest checks first), when the run's length is known without the
+/// modes: the file sets `solver.time_step`, there is no study (a study's
+/// speeds and a separation map's slowest point need f₁), and no vehicle is
+/// derived from the bridge's frequencies (`dimensionless`). The refusal is
+/// the one the full check after the solve gives, word for word; `false`
+/// when it refused.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn steps_fit_before_modes(
+    raw: &raw::ScenarioRaw,
+    vehicles: &[Vehicle],
+    ground_motion: &[GroundMotion],
+    surface: &Surface,
+    bridge_length: f64,
+    free_vibration: f64,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> bool {
+    let Some(time_step) = raw.solver.as_ref().and_then(|s| s.time_step) else {
+        return true;
+    };
+    let derived = raw
+        .vehicles
+        .iter()
+        .any(|v| matches!(v, raw::VehicleRaw::Oscillator(o) if o.dimensionless.is_some()));
+    if raw.study.is_some() || derived {
+        return true;
+    }
+    // The vehicles as the full check sees them: placed behind a spectrum's
+    // run-in when the file does not place them.
+    let mut slow = vehicles.to_vec();
+    super::surfaces::place_before_run_in(
+        &mut slow,
+        super::surfaces::placement_run_in(surface, None),
+        ck,
+    );
+    let duration = slow
+        .iter()
+        .map(|v| v.exit_time(bridge_length))
+        .fold(0.0, f64::max)
+        + free_vibration;
+    let steps = duration / time_step;
+    let cause = LongRun {
+        raw,
+        slow: &slow,
+        ground_motion,
+        time_step,
+        step_without_ground: None,
+        duration,
+        free_vibration,
+        bridge_length,
+    }
+    .cause(budget.limit_of("steps"));
+    let what = format!(
+        "time steps of {time_step:.3e} s over the {duration:.4e} s run (the last vehicle's exit plus free vibration)"
+    );
+    budget.check_because(ck, &cause.path, "steps", &what, steps, &cause.hint)
 }
 
 impl LongRun<'_> {

@@ -250,10 +250,38 @@ fn unprintable(source: &str, file: &str) -> Result<(), LoadError> {
 /// Parses a scenario's text into its raw form; `file` labels diagnostics.
 ///
 /// Every type error (unknown key, wrong type, missing field) in the file is
-/// reported, not only the first: after each one the offending entry is
+/// reported, not only the first ([`parse_raw_all`]).
+pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), LoadError> {
+    let parsed = parse_raw_all(source, file)?;
+    match parsed.raw {
+        Some(raw) if parsed.diagnostics.is_empty() => Ok(raw),
+        _ => Err(LoadError::Invalid(parsed.diagnostics)),
+    }
+}
+
+/// A file's type errors and what is left of it without the entries they
+/// are in.
+pub struct Parsed {
+    /// The scenario without the offending entries, and its tree (which
+    /// keeps the source locations), if the rest still makes a scenario
+    /// (`None`: a required part was among them).
+    pub raw: Option<(ScenarioRaw, yaml::Node)>,
+    /// The type errors, located.
+    pub diagnostics: Vec<Diagnostic>,
+    /// The mappings and sequences that lost an entry: a check that finds
+    /// something missing there is a consequence of a type error.
+    pub pruned: Vec<Location>,
+}
+
+/// Parses a scenario's text and reports every type error (unknown key,
+/// wrong type, missing field) in it: after each one the offending entry is
 /// removed from the tree and the deserialisation is repeated, and the
 /// "missing field" that a removal causes in its parent is not reported.
-pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), LoadError> {
+/// What is left, if it still deserialises, is returned for the semantic
+/// checks, so that a file's mistakes of every kind come in one round.
+/// Only an unreadable file (not YAML, empty, control characters) is an
+/// `Err`.
+pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
     let source = source.strip_prefix(BOM).unwrap_or(source);
     unprintable(source, file)?;
     let invalid = |loc: Location, message: String| {
@@ -275,16 +303,23 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
         Err(e) => return Err(invalid(e.loc, format!("YAML syntax error: {}", e.message))),
     };
     let first = match de::from_node::<ScenarioRaw>(&node) {
-        Ok(raw) => return Ok((raw, node)),
+        Ok(raw) => {
+            return Ok(Parsed {
+                raw: Some((raw, node)),
+                diagnostics: Vec::new(),
+                pruned: Vec::new(),
+            });
+        }
         Err(e) => e,
     };
     let lines = diagnostic::Lines::new(source);
     let mut diagnostics: Vec<Diagnostic> = Vec::new();
-    let mut tree = node.clone();
+    let mut tree = node;
     // Mappings and sequences that lost an entry: a missing field there is a
     // consequence of an error already reported.
     let mut pruned: Vec<Location> = Vec::new();
     let mut error = first;
+    let mut rest = None;
     for pass in 1.. {
         let loc = error.loc.unwrap_or(tree.loc);
         let consequence = pruned.contains(&loc)
@@ -295,7 +330,8 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
             .iter()
             .any(|d| d.loc == loc && d.message == message);
         if !consequence && !seen {
-            diagnostics.push(lines.diagnostic(file, loc, message));
+            let help = diagnostic::suggest_for_serde(&message);
+            diagnostics.push(lines.diagnostic(file, loc, message).with_help(help));
         }
         if pass >= MAX_TYPE_PASSES {
             diagnostics.push(lines.diagnostic(
@@ -309,11 +345,18 @@ pub fn parse_raw(source: &str, file: &str) -> Result<(ScenarioRaw, yaml::Node), 
             break;
         }
         match de::from_node::<ScenarioRaw>(&tree) {
-            Ok(_) => break,
+            Ok(raw) => {
+                rest = Some(raw);
+                break;
+            }
             Err(e) => error = e,
         }
     }
-    Err(LoadError::Invalid(diagnostics))
+    Ok(Parsed {
+        raw: rest.map(|raw| (raw, tree)),
+        diagnostics,
+        pruned,
+    })
 }
 
 /// Removes the deepest mapping entry (by its key or value) or sequence item
@@ -387,14 +430,66 @@ pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
 }
 
 /// Parses and resolves a scenario from text; `file` labels diagnostics.
+///
+/// Type errors do not stop the checks: what is left without the entries
+/// they are in is checked too, and the diagnostics of both come together,
+/// in the order of the file. A check that blames a mapping or sequence that
+/// lost an entry to a type error is left out (its complaint, e.g. an empty
+/// list, is a consequence of that error).
 pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Loaded, LoadError> {
-    let (raw, node) = parse_raw(source, file)?;
+    let parsed = parse_raw_all(source, file)?;
     let source = source.strip_prefix(BOM).unwrap_or(source);
+    let Some((raw, node)) = parsed.raw else {
+        return Err(LoadError::Invalid(parsed.diagnostics));
+    };
     let mut checker = resolve::Checker::new(file, source, &node);
-    match resolve::resolve(&raw, &mut checker, options) {
-        Some((scenario, bridge)) if checker.diagnostics.is_empty() => {
-            Ok(Loaded { scenario, bridge })
+    let resolved = resolve::resolve(&raw, &mut checker, options);
+    let mut diagnostics = parsed.diagnostics;
+    let typed = diagnostics.len();
+    // A check may run twice (the records after an earlier error): each
+    // message once. Hashed: a hostile file has thousands.
+    let mut seen: std::collections::HashSet<(usize, usize, String)> = diagnostics
+        .iter()
+        .map(|d| (d.loc.line, d.loc.col, d.message.clone()))
+        .collect();
+    // A vehicle lost to a type error renumbers the ones after it: the
+    // records' vehicle numbers are not checked against that list.
+    let renumbered = node
+        .get("vehicles")
+        .is_some_and(|v| parsed.pruned.contains(&v.loc))
+        .then(|| section_lines(&node, "record"))
+        .flatten();
+    for d in checker.diagnostics {
+        let consequence = parsed.pruned.contains(&d.loc)
+            || renumbered.is_some_and(|(from, to)| (from..to).contains(&d.loc.line));
+        if !consequence && seen.insert((d.loc.line, d.loc.col, d.message.clone())) {
+            diagnostics.push(d);
         }
-        _ => Err(LoadError::Invalid(checker.diagnostics)),
     }
+    match resolved {
+        Some((scenario, bridge)) if diagnostics.is_empty() => Ok(Loaded { scenario, bridge }),
+        _ => {
+            if typed > 0 {
+                // Read top to bottom, as the file is.
+                diagnostics.sort_by_key(|d| (d.loc.line, d.loc.col));
+            }
+            Err(LoadError::Invalid(diagnostics))
+        }
+    }
+}
+
+/// The lines a top-level section spans: from its key to the next top-level
+/// key (or the end of the file).
+fn section_lines(root: &yaml::Node, key: &str) -> Option<(usize, usize)> {
+    let yaml::NodeKind::Mapping(entries) = &root.kind else {
+        return None;
+    };
+    let from = root.key_loc(key)?.line;
+    let to = entries
+        .iter()
+        .map(|(k, _)| k.loc.line)
+        .filter(|&line| line > from)
+        .min()
+        .unwrap_or(usize::MAX);
+    Some((from, to))
 }

@@ -1,8 +1,9 @@
 //! Resolving the `output` section: `every` or `interval` into a whole
 //! number of steps between written samples, and the history's format.
 
-use super::raw::{HistoryFormat, OutputRaw};
+use super::raw::OutputRaw;
 use super::resolve::Checker;
+use crate::scene::HistoryFormat;
 use crate::scene::Output;
 
 /// Most steps between written samples (beyond it a history of a run within

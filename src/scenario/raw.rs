@@ -11,6 +11,8 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
+use crate::scene::{PlateEdges, PlateMoment, Quantity, SolverMethod, Terms};
+
 mod envelopes;
 mod fe_import;
 mod ground;
@@ -23,6 +25,7 @@ mod speed;
 mod study;
 mod surface;
 mod truck;
+pub mod units;
 pub use self::envelopes::*;
 pub use self::fe_import::*;
 pub use self::ground::*;
@@ -48,20 +51,22 @@ pub use self::truck::*;
 #[serde(deny_unknown_fields)]
 pub struct ScenarioRaw {
     /// Short name of the scene, used in reports.
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub name: String,
     /// Free text describing the scene and its source.
     #[serde(default)]
     pub description: Option<String>,
     /// Gravitational acceleration, m/s². Default 9.81.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     #[schemars(extend("default" = super::resolve::DEFAULT_GRAVITY))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub gravity: Option<f64>,
     /// The bridge.
     pub bridge: BridgeRaw,
     /// The vehicles crossing the bridge (at least one).
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub vehicles: Vec<VehicleRaw>,
     /// The road or rail surface profile. Default: smooth.
     #[serde(default)]
@@ -123,22 +128,32 @@ pub enum BridgeRaw {
 #[serde(deny_unknown_fields)]
 pub struct PlateRaw {
     /// Span lengths, m, from the entrance; rigid line supports between spans.
-    #[schemars(transform = crate::scenario::schema::positive_list)]
+    #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub spans: Vec<f64>,
     /// Deck width b, m.
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub width: f64,
     /// Plate thickness h, m. Needed by an isotropic `rigidity` and by `density`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub thickness: Option<f64>,
     /// Mass per unit area ρh, kg/m². Give this or `density`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_area::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass_per_area::schema")]
     pub mass_per_area: Option<f64>,
     /// Density ρ, kg/m³ (with `thickness`). Give this or `mass_per_area`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::density::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::density::schema")]
     pub density: Option<f64>,
     /// Flexural and torsional rigidities.
     pub rigidity: RigidityRaw,
@@ -146,15 +161,15 @@ pub struct PlateRaw {
     /// or `simply_supported`.
     #[serde(default)]
     #[schemars(extend("default" = "free"))]
-    pub edges: Option<PlateEdgesRaw>,
+    pub edges: Option<PlateEdges>,
     /// Size of the Rayleigh–Ritz basis. Default: 6 longitudinal beam
     /// functions per span (at least 12) × 8 transverse functions.
     #[serde(default)]
-    pub terms: Option<TermsRaw>,
+    pub terms: Option<Terms>,
     /// Finite elements per span of the continuous beam whose modes are the
     /// longitudinal beam functions. Default 20.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::elements_per_span)]
+    #[schemars(transform = crate::scene::schema_rules::elements_per_span)]
     #[schemars(extend("default" = super::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic, as for
@@ -170,7 +185,9 @@ pub struct PlateRaw {
     /// the DAF at the middle of every span on each line. Default: the deck's
     /// centre line.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative_list)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub girder_lines: Option<Vec<f64>>,
 }
 
@@ -183,11 +200,13 @@ pub enum RigidityRaw {
     /// Dx = Dy = H = D.
     Isotropic {
         /// Young's modulus E, Pa.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::pressure::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::pressure::schema")]
         youngs_modulus: f64,
         /// Poisson's ratio ν (dimensionless). Default 0.2 (concrete).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::isotropic_poisson)]
+        #[schemars(transform = crate::scene::schema_rules::isotropic_poisson)]
         #[schemars(extend("default" = super::bridges::DEFAULT_ISOTROPIC_POISSON))]
         poisson_ratio: Option<f64>,
     },
@@ -195,48 +214,33 @@ pub enum RigidityRaw {
     /// rigidity Dxy = G h³/12 or the equivalent rigidity H = ν_xy Dy + 2 Dxy.
     Orthotropic {
         /// Flexural rigidity along the bridge Dx, N·m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         flexural_rigidity_x: f64,
         /// Flexural rigidity across the bridge Dy, N·m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         flexural_rigidity_y: f64,
         /// Torsional rigidity Dxy = G h³ / 12, N·m. Give this or `equivalent_rigidity`.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         torsional_rigidity: Option<f64>,
         /// Equivalent rigidity H = ν_xy Dy + 2 Dxy, N·m. Give this or `torsional_rigidity`.
         #[serde(default)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::plate_rigidity::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         equivalent_rigidity: Option<f64>,
         /// Poisson's ratio ν_xy (dimensionless); the coupling rigidity is
         /// D1 = ν_xy Dy. Default 0.3.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::ratio)]
+        #[schemars(transform = crate::scene::schema_rules::ratio)]
         #[schemars(extend("default" = super::bridges::DEFAULT_ORTHOTROPIC_POISSON))]
         poisson_ratio: Option<f64>,
     },
-}
-
-/// Support of the plate's longitudinal edges.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum PlateEdgesRaw {
-    /// Free edges (a bridge deck).
-    Free,
-    /// Simply supported edges (w = 0 along y = 0 and y = width).
-    SimplySupported,
-}
-
-/// Rayleigh–Ritz basis size.
-#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct TermsRaw {
-    /// Longitudinal beam functions (modes of the continuous beam over the same spans).
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
-    pub longitudinal: usize,
-    /// Transverse functions (Legendre polynomials for free edges, sines for
-    /// simply supported edges).
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
-    pub transverse: usize,
 }
 
 /// Euler–Bernoulli beam bridge.
@@ -245,17 +249,23 @@ pub struct TermsRaw {
 pub struct BeamRaw {
     /// Span lengths, m, from the entrance. One span = simply supported; several
     /// = continuous over pinned intermediate supports.
-    #[schemars(transform = crate::scenario::schema::positive_list)]
+    #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub spans: Vec<f64>,
     /// Bending stiffness EI, N·m².
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::bending_stiffness::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::bending_stiffness::schema")]
     pub bending_stiffness: f64,
     /// Mass per unit length m, kg/m.
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass_per_length::schema")]
     pub mass_per_length: f64,
     /// Hermite-cubic finite elements per span. Default 20.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::elements_per_span)]
+    #[schemars(transform = crate::scene::schema_rules::elements_per_span)]
     #[schemars(extend("default" = super::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic — every
@@ -276,21 +286,25 @@ pub struct BeamRaw {
     /// so a `train_3d` follows the rails laterally and a lateral ground
     /// motion shakes the deck.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::bending_stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::bending_stiffness::schema")]
     pub lateral_bending_stiffness: Option<f64>,
     /// Torsional stiffness GJ, N·m²/rad (3D beam).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub torsional_stiffness: Option<f64>,
     /// Polar mass moment of inertia per length I_p, kg·m²/m (3D beam).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub polar_mass: Option<f64>,
     /// Height of the rail heads above the section's shear centre, m (3D
     /// beam): a twist θ moves the rails sideways by −h θ and a rail at y
     /// across the centre line up by y θ. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub rail_height: Option<f64>,
 }
 
@@ -300,13 +314,15 @@ pub struct BeamRaw {
 pub struct ModesRaw {
     /// Keep the lowest `count` modes.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub count: Option<usize>,
     /// Keep every mode whose natural frequency is at most this, Hz (within
     /// a relative 1e-8: a frequency copied as printed keeps its mode). With
     /// `count`: the lowest `count`, none of them above this.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Add the quasi-static share of the modes left out to every recorded
     /// bridge displacement (the mode-acceleration method: the exact static
@@ -324,17 +340,17 @@ pub enum DampingRaw {
     /// The same modal damping ratio ζ for every mode.
     Modal {
         /// Damping ratio ζ (fraction of critical, dimensionless), e.g. 0.02.
-        #[schemars(transform = crate::scenario::schema::ratio)]
+        #[schemars(transform = crate::scene::schema_rules::ratio)]
         ratio: f64,
     },
     /// Rayleigh damping C = a₀M + a₁K with the given ratio at two frequencies;
     /// mode i then has ζᵢ = a₀/(2ωᵢ) + a₁ωᵢ/2.
     Rayleigh {
         /// The two frequencies where the damping ratio is matched, Hz.
-        #[schemars(transform = crate::scenario::schema::positive_items)]
+        #[schemars(transform = crate::scene::schema_rules::positive_items)]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both frequencies (dimensionless).
-        #[schemars(transform = crate::scenario::schema::ratio)]
+        #[schemars(transform = crate::scene::schema_rules::ratio)]
         ratio: f64,
     },
 }
@@ -404,18 +420,24 @@ impl VehicleRaw {
 #[serde(deny_unknown_fields)]
 pub struct MovingForceRaw {
     /// Axle loads, N (downward, positive), front axle first.
-    #[schemars(transform = crate::scenario::schema::positive_list)]
+    #[schemars(transform = crate::scene::schema_rules::positive_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::force::list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::force::list_schema")]
     pub loads: Vec<f64>,
     /// Distances between consecutive axles, m; one fewer than `loads`.
     /// Give this or `axle_positions`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive_items)]
+    #[schemars(transform = crate::scene::schema_rules::positive_items)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub axle_spacings: Option<Vec<f64>>,
     /// Distance of each axle behind the front axle, m: 0 first, then
     /// increasing; one per load (an axle-load train such as an HSLM train).
     /// Give this or `axle_spacings`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative_list)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative_list)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option_list")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::list_schema")]
     pub axle_positions: Option<Vec<f64>>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`).
     pub speed: SpeedRaw,
@@ -424,20 +446,28 @@ pub struct MovingForceRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the loads on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
 }
 
@@ -448,21 +478,29 @@ pub struct MovingForceRaw {
 pub struct OscillatorRaw {
     /// Sprung (body) mass, kg. Required unless `dimensionless` is given.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub sprung_mass: Option<f64>,
     /// Unsprung (wheel) mass, kg. Default 0: a massless wheel.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub unsprung_mass: Option<f64>,
     /// Suspension stiffness, N/m. Required unless `dimensionless` is given.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub stiffness: Option<f64>,
     /// Suspension damping, N·s/m. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub damping: Option<f64>,
     /// Speed at t = 0 (constant unless `acceleration` is given): m/s, or with its unit (`100 km/h`). Required unless
     /// `dimensionless` is given.
@@ -473,20 +511,28 @@ pub struct OscillatorRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the wheel reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the wheel at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the wheel on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Derive masses, stiffness, damping and speed from dimensionless groups
     /// relative to the bridge (its first natural frequency f₁, length L and
@@ -503,23 +549,23 @@ pub struct OscillatorRaw {
 pub struct DimensionlessRaw {
     /// Velocity ratio α = v / (2 f₁ L) (dimensionless; 1 = the critical speed
     /// of the moving-force resonance).
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub velocity_ratio: f64,
     /// Vehicle-to-bridge mass ratio (m_s + m_u) / (m L) (dimensionless).
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub mass_ratio: f64,
     /// Unsprung-to-sprung mass ratio m_u / m_s (dimensionless). Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
     pub unsprung_ratio: Option<f64>,
     /// Bridge-to-vehicle frequency ratio f₁ / f_v with f_v = √(k/m_s) / 2π
     /// (dimensionless).
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub frequency_ratio: f64,
     /// Vehicle damping ratio ζ_v = c / (2√(k m_s)) (dimensionless). Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::ratio)]
+    #[schemars(transform = crate::scene::schema_rules::ratio)]
     #[schemars(extend("default" = 0.0))]
     pub damping_ratio: Option<f64>,
 }
@@ -554,13 +600,15 @@ pub enum ContactRaw {
     Elastic {
         /// Contact spring stiffness per wheel, N/m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
         stiffness: Option<f64>,
         /// Contact-to-suspension stiffness ratio k_c / k_v (dimensionless); the
         /// stiffness is this times the suspension stiffness of the oscillator(s),
         /// which must then all have the same suspension stiffness.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
         stiffness_ratio: Option<f64>,
     },
     /// Hertzian wheel–rail contact: force = C · compression^1.5 when compressed,
@@ -569,14 +617,16 @@ pub enum ContactRaw {
     Hertz {
         /// Hertz coefficient C, N/m^1.5.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
         coefficient: Option<f64>,
         /// Wheel rolling radius, m; C = G^-1.5 with the contact constant
         /// G = 4.57e-8 R^-0.149 m/N^(2/3) for a worn (LM) tread or
         /// G = 3.86e-8 R^-0.115 for a conical tread (Zhai, Vehicle–Track Coupled
         /// Dynamics, 2020, §2.4.1).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         wheel_radius: Option<f64>,
         /// Tread profile for `wheel_radius`: `worn` (default) or `conical`.
         #[serde(default)]
@@ -607,7 +657,9 @@ pub struct SolverRaw {
     /// or frequency excited (see `bridge.modes`), and at most 1/200 of the
     /// shortest crossing.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
     /// acceleration: unconditionally stable, second order, no numerical
@@ -616,19 +668,21 @@ pub struct SolverRaw {
     pub newmark: Option<NewmarkRaw>,
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub free_vibration: Option<f64>,
     /// `method: iterative` only: relative tolerance ε on the contact
     /// displacements between iterations, max|Δw| ≤ ε·max|w| (the plate paper's
     /// Eq. 32; dimensionless). Default 1e-8.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::iteration_tolerance)]
+    #[schemars(transform = crate::scene::schema_rules::iteration_tolerance)]
     pub tolerance: Option<f64>,
     /// `method: iterative` only: most iterations allowed in one time step
     /// before the run stops with an error. Default 100.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::max_iterations)]
+    #[schemars(transform = crate::scene::schema_rules::max_iterations)]
     pub max_iterations: Option<usize>,
     /// `method: embs` only: add the first-order bridge response (the EMBS
     /// paper's Eq. 7) to the zero-order one (Eq. 5). Default true; false
@@ -652,35 +706,6 @@ pub struct SolverRaw {
     pub allow_large_epsilon: Option<bool>,
 }
 
-/// Solution method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum SolverMethod {
-    /// Permanent contact: vehicle and modal bridge equations solved together at
-    /// every step, the wheel DOFs eliminated by the contact kinematics.
-    Coupled,
-    /// Unilateral contact: bridge and vehicles advanced as uncoupled subsystems,
-    /// the contact forces found from a linear complementarity problem per step
-    /// (Lemke's method).
-    Lcp,
-    /// Permanent contact by the uncoupled scheme of the plate-deck paper
-    /// (Section 2.5): in every step the vehicles and the bridge are solved
-    /// separately and the interaction forces iterated (with Aitken
-    /// relaxation) until the contact displacements change by less than
-    /// `tolerance`. Converges to the `coupled` solution; the summary reports
-    /// the iterations per step.
-    Iterative,
-    /// Permanent contact decoupled by the Extended Modified Bridge System
-    /// (EMBS paper, Section 2): the bridge carrying the wheel masses alone
-    /// (zero order, Eq. 5), the vehicle's upper part under the ground
-    /// motion alone (Eq. 6), the first-order bridge loaded by the
-    /// zero-order suspension forces (Eq. 7), then the vehicle driven by the
-    /// summed bridge response through its wheels (Eq. 3). Accurate while
-    /// ε = ω_p/ω_B (primary suspension over first bridge frequency) is
-    /// small; the summary states ε.
-    Embs,
-}
-
 /// Newmark-β parameters, with the Hilber–Hughes–Taylor α for numerical
 /// damping of the highest frequencies.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
@@ -688,18 +713,18 @@ pub enum SolverMethod {
 pub struct NewmarkRaw {
     /// β (dimensionless). Default 0.25, or (1 − α)²/4 when `alpha` is given.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
     pub beta: Option<f64>,
     /// γ (dimensionless). Default 0.5, or 1/2 − α when `alpha` is given.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::newmark_gamma)]
+    #[schemars(transform = crate::scene::schema_rules::newmark_gamma)]
     pub gamma: Option<f64>,
     /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark), except
     /// −0.05 with rigid contact when β and γ are not given. A negative α keeps
     /// second order and unconditional stability and damps the highest modes,
     /// which quiets the ringing of wheels held to the surface (rigid contact).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::hht_alpha)]
+    #[schemars(transform = crate::scene::schema_rules::hht_alpha)]
     pub alpha: Option<f64>,
 }
 
@@ -708,12 +733,14 @@ pub struct NewmarkRaw {
 #[serde(deny_unknown_fields)]
 pub struct RecordRaw {
     /// Column name in the CSV and key in summary.json.
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub name: String,
     /// What is recorded.
     pub quantity: Quantity,
     /// Position along the bridge, m (bridge quantities).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub x: Option<f64>,
     /// Node of an imported (`fe_import`) bridge, instead of `x`: the
     /// quantity at that node's DOF `direction`.
@@ -721,25 +748,27 @@ pub struct RecordRaw {
     pub node: Option<u64>,
     /// Direction of the node's DOF (ux, uy, uz, rx, ry, rz). Default uz.
     #[serde(default)]
-    pub direction: Option<crate::bridge::fe_import::Direction>,
+    pub direction: Option<crate::scene::imported::Direction>,
     /// Position across a plate deck, m (bridge quantities on a plate).
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub y: Option<f64>,
     /// Vehicle number, counted from 1 in the order of `vehicles` (vehicle
     /// quantities and contact forces). Default 1.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub vehicle: Option<usize>,
     /// Wheel number within the vehicle, counted from 1 front to rear
     /// (contact forces); on a train, over the whole train, or within `car`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub wheel: Option<usize>,
     /// Car of a train, counted from 1 front to rear: `wheel` then counts
     /// that car's wheelsets (1–4) and `dof` names that car's DOF.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub car: Option<usize>,
     /// Vehicle degree of freedom by name, e.g. `sprung` or `wheel` for the
     /// oscillator, `body_bounce` or `wheelset3` for a rail car (of a train:
@@ -753,7 +782,9 @@ pub struct RecordRaw {
     /// of 30 Hz, 1.5 f₁ and f₃. The automatic mode choice keeps every mode up
     /// to it.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Under ground motion: `relative` to the moving ground (the default:
     /// deflections, what loads the structure) or `absolute` (adds the
@@ -767,35 +798,5 @@ pub struct RecordRaw {
     /// default), `my` transverse bending, `mxy` twisting.
     #[serde(default)]
     #[schemars(extend("default" = "mx"))]
-    pub component: Option<crate::bridge::plate::moments::PlateMoment>,
-}
-
-/// Recordable quantities.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum Quantity {
-    /// Bridge vertical displacement at `x` (and `y` on a plate), m, positive
-    /// upward. The summary also gives the static crossing response and the
-    /// DAF at that point.
-    BridgeDisplacement,
-    /// Bridge vertical acceleration at `x` (and `y` on a plate), m/s², positive upward.
-    BridgeAcceleration,
-    /// Bending moment of a beam bridge at `x`, N·m, positive sagging; from
-    /// the modes with the mode-acceleration static correction (beams only).
-    BridgeMoment,
-    /// Shear force of a beam bridge at `x`, N: dM/dx, the resultant of the
-    /// upward forces left of the section; its right-hand limit where a wheel
-    /// stands on the section (beams only).
-    BridgeShear,
-    /// Contact force of a wheel, N, positive in compression.
-    ContactForce,
-    /// Gap between a wheel and the surface under it, m: positive when the wheel
-    /// is lifted off (separated); negative is the compression of an elastic or
-    /// Hertz contact; 0 under permanent contact.
-    ContactGap,
-    /// Vehicle DOF displacement from its static equilibrium on the rigid flat
-    /// approach, m (or rad), positive upward.
-    VehicleDisplacement,
-    /// Vehicle DOF acceleration, m/s² (or rad/s²), positive upward.
-    VehicleAcceleration,
+    pub component: Option<PlateMoment>,
 }

@@ -5,7 +5,7 @@ use super::raw;
 use super::resolve::Checker;
 use crate::scene::*;
 
-use crate::bridge::fe_import::Direction;
+use crate::scene::imported::Direction;
 use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
@@ -179,7 +179,7 @@ pub(super) fn resolve_records(
             }
             Some(c) => Some(c),
             None if q == Quantity::BridgeMoment && on_plate => {
-                Some(crate::bridge::plate::moments::PlateMoment::Longitudinal)
+                Some(crate::scene::PlateMoment::Longitudinal)
             }
             None => None,
         };
@@ -434,7 +434,7 @@ pub(super) fn resolve_records(
                     &at,
                     format!("`{quantity_name}` needs `dof`, one of {}", names.join(", ")),
                 ),
-                Some(d) if !names.contains(&d.as_str()) => ck.error(
+                Some(d) if !names.contains(&d.as_str()) => ck.error_with_help(
                     &format!("{at}.dof"),
                     if names.is_empty() {
                         format!(
@@ -447,6 +447,7 @@ pub(super) fn resolve_records(
                             names.join(", ")
                         )
                     },
+                    super::diagnostic::did_you_mean(d, names.iter().copied()),
                 ),
                 _ => {}
             }

@@ -5,7 +5,7 @@
 //! are reported together, like a compiler.
 
 use super::bridges::resolve_bridge;
-use super::budget::{self, Budget, Limits, LoadOptions};
+use super::budget::{self, Budget, LoadOptions};
 use super::content;
 use super::derive::{
     derive_dimensionless, resolve_contact, resolve_embs, resolve_iteration, resolve_method,
@@ -29,11 +29,15 @@ pub const DEFAULT_RIGID_ALPHA: f64 = -0.05;
 /// Collects diagnostics while resolving one file.
 pub(super) struct Checker<'a> {
     file: &'a str,
+    source: &'a str,
     lines: Lines<'a>,
     root: &'a Node,
     /// Where the files the scene names may be read from.
     data: super::data_files::DataAccess,
     pub diagnostics: Vec<Diagnostic>,
+    /// Whether the records were checked: an error that stops the
+    /// resolution before them leaves them to [`cross_checks`].
+    records_checked: bool,
 }
 
 /// Parses "vehicles[0].speed" into path segments.
@@ -57,10 +61,12 @@ impl<'a> Checker<'a> {
     pub(super) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
         Self {
             file,
+            source,
             lines: Lines::new(source),
             root,
             data: Default::default(),
             diagnostics: Vec::new(),
+            records_checked: false,
         }
     }
 
@@ -82,6 +88,21 @@ impl<'a> Checker<'a> {
     pub(super) fn error(&mut self, path: &str, message: impl Into<String>) {
         let loc = self.location(path);
         let diagnostic = self.lines.diagnostic(self.file, loc, message);
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// Records an error at `path` with a `help:` line (a suggestion).
+    pub(super) fn error_with_help(
+        &mut self,
+        path: &str,
+        message: impl Into<String>,
+        help: Option<String>,
+    ) {
+        let loc = self.location(path);
+        let diagnostic = self
+            .lines
+            .diagnostic(self.file, loc, message)
+            .with_help(help);
         self.diagnostics.push(diagnostic);
     }
 
@@ -136,7 +157,48 @@ const GROUND_MASS_SHARE: f64 = 0.9;
 /// Resolves a parsed scenario. Returns the scenario with every default filled
 /// in and the modal bridge built on the way (mode selection and the default
 /// time step depend on the natural frequencies).
+///
+/// An error that stops the resolution before the records (a vehicle or the
+/// surface out of range, a budget) does not hide the records' own errors:
+/// [`cross_checks`] checks them against the bridge and vehicles as written.
 pub(super) fn resolve(
+    raw: &ScenarioRaw,
+    ck: &mut Checker<'_>,
+    options: LoadOptions,
+) -> Option<(Scenario, ModalBridge)> {
+    let resolved = resolve_checked(raw, ck, options.clone());
+    if resolved.is_none() && !ck.records_checked {
+        cross_checks(raw, ck, &options);
+    }
+    resolved
+}
+
+/// The records and envelopes checked against the bridge and the vehicles as
+/// the file writes them, when an earlier error stopped the resolution
+/// before them (so that a file's mistakes come in one round, issue 28.1).
+/// The bridge and vehicles are resolved again into a scratch checker (their
+/// own errors are already reported); without a valid bridge nothing is
+/// checked. Defaults that need the bridge's frequencies are not needed for
+/// checking and get none.
+fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &LoadOptions) {
+    let mut scratch = Checker::new(ck.file, ck.source, ck.root);
+    scratch.set_data_access(options.data.clone());
+    let limits = Limits::resolve(raw.limits.as_ref(), &mut scratch);
+    let budget = Budget::new(limits, options);
+    if !budget.counts(raw, &mut scratch) {
+        return;
+    }
+    let Some(bridge) = resolve_bridge(&raw.bridge, &budget, &mut scratch) else {
+        return;
+    };
+    let vehicles = vehicles_as_written(&raw.vehicles, bridge.width(), &mut scratch);
+    let contact = resolve_contact(raw.contact.as_ref(), &vehicles, &mut scratch);
+    resolve_records(raw.record.as_deref(), &[], &bridge, &vehicles, &contact, ck);
+    super::envelopes::resolve_envelopes(raw.envelopes.as_ref(), &[], &bridge, ck);
+}
+
+/// [`resolve`], stopping at the first stage with errors.
+fn resolve_checked(
     raw: &ScenarioRaw,
     ck: &mut Checker<'_>,
     options: LoadOptions,
@@ -244,6 +306,20 @@ pub(super) fn resolve(
         return None;
     }
     if !budget.model(&bridge, &surface, ck) {
+        return None;
+    }
+    // The cheapest budget before the dearest work: a step count set by the
+    // file is refused before any eigen solve (issue 23.3).
+    if !super::long_run::steps_fit_before_modes(
+        raw,
+        &vehicles,
+        &ground_motion,
+        &surface,
+        bridge.length(),
+        free_vibration,
+        &budget,
+        ck,
+    ) {
         return None;
     }
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
@@ -483,8 +559,8 @@ pub(super) fn resolve(
             let available = ModalBridge::available_of(&bridge);
             let has = |d| ground_motion.iter().any(|g| g.direction == d);
             let (vertical, lateral) = (
-                has(crate::ground::Direction::Vertical),
-                has(crate::ground::Direction::Lateral),
+                has(crate::scene::Direction::Vertical),
+                has(crate::scene::Direction::Lateral),
             );
             loop {
                 let share = |(participation, mass): (Vec<f64>, f64)| {
@@ -674,6 +750,7 @@ pub(super) fn resolve(
     let method = resolve_method(solver_raw.method, &contact, ck);
     let iteration = resolve_iteration(&solver_raw, method, ck);
     let embs = resolve_embs(&solver_raw, method, ck);
+    ck.records_checked = true;
     let record = resolve_records(
         raw.record.as_deref(),
         &modal.frequencies(),
@@ -882,6 +959,18 @@ fn resolve_vehicles(
     ck: &mut Checker<'_>,
 ) -> Option<Vec<Vehicle>> {
     let before = ck.diagnostics.len();
+    let out = vehicles_as_written(raws, width, ck);
+    (ck.diagnostics.len() == before).then_some(out)
+}
+
+/// The vehicles as the file writes them, checked; one per entry even where
+/// an entry has errors (its values then are placeholders), so that records
+/// can still be checked against their kinds, wheels and cars.
+fn vehicles_as_written(
+    raws: &[raw::VehicleRaw],
+    width: Option<f64>,
+    ck: &mut Checker<'_>,
+) -> Vec<Vehicle> {
     if raws.is_empty() {
         ck.error("vehicles", "`vehicles` needs at least one vehicle");
     }
@@ -1031,7 +1120,7 @@ fn resolve_vehicles(
             }
         }
     }
-    (ck.diagnostics.len() == before).then_some(out)
+    out
 }
 
 /// An axle-load train's axle positions behind its front axle (0 first,

@@ -1,11 +1,12 @@
 //! Resolving a resonance check: trains, speeds, deck and filter checked,
 //! every default filled in.
 
-use super::raw::{self, DeckRaw, HslmModel, km_h_to_m_s};
+use super::raw::{self, km_h_to_m_s};
 use super::records::acceleration_cutoff;
 use super::resolve::{Checker, MAX_SPEED};
 use super::resonance_grid::additional_damping_percent;
 use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
+use crate::scene::{Deck, HslmModel};
 
 /// Most speeds per train (a count from the input, checked before the grid
 /// is built).
@@ -124,7 +125,7 @@ pub(super) fn resolve_resonance(
         trains,
         line_speed,
         speeds,
-        deck: raw.deck.unwrap_or(DeckRaw::Ballasted),
+        deck: raw.deck.unwrap_or(Deck::Ballasted),
         max_frequency,
         first_frequency: frequencies.first().copied().unwrap_or(f64::NAN),
         additional_damping,

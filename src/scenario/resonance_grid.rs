@@ -179,8 +179,8 @@ impl ResonanceCheck {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenario::raw::{DeckRaw, HslmModel};
     use crate::scene::ResonanceSpeeds;
+    use crate::scene::{Deck, HslmModel};
 
     /// HSLM-A1 (D = 18 m) at speeds in km/h over a bridge of f₀ Hz.
     fn check(from: f64, to: f64, step: f64, line: f64, f0: f64) -> ResonanceCheck {
@@ -192,7 +192,7 @@ mod tests {
                 to: m_s(to),
                 step: m_s(step),
             },
-            deck: DeckRaw::Ballasted,
+            deck: Deck::Ballasted,
             max_frequency: 30.0,
             first_frequency: f0,
             additional_damping: None,

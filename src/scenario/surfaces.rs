@@ -6,8 +6,9 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
-use super::raw::{self, RailsRaw, RoughnessClassRaw};
+use super::raw;
 use super::resolve::Checker;
+use crate::scene::{Rails, RoughnessClass};
 use crate::scene::{Sampling, Surface, Vehicle};
 use crate::surface::grid_nodes;
 use crate::surface::synth::default_terms;
@@ -20,35 +21,35 @@ pub const DEFAULT_SHORTEST_WAVELENGTH: f64 = 0.5;
 /// Largest number of series terms.
 pub const MAX_TERMS: usize = 1_000_000;
 
-impl RoughnessClassRaw {
+impl RoughnessClass {
     /// A_r of the class, m³/cycle: the geometric mean of its range (the plate
     /// paper's Table 5 after its ref. [31]: very good 2–8, good 8–32, average
     /// 32–128, poor 128–512, very poor 512–2048, all × 1e-6 m³/cycle).
     pub fn coefficient(self) -> f64 {
         match self {
-            RoughnessClassRaw::VeryGood => 4e-6,
-            RoughnessClassRaw::Good => 16e-6,
-            RoughnessClassRaw::Average => 64e-6,
-            RoughnessClassRaw::Poor => 256e-6,
-            RoughnessClassRaw::VeryPoor => 1024e-6,
+            RoughnessClass::VeryGood => 4e-6,
+            RoughnessClass::Good => 16e-6,
+            RoughnessClass::Average => 64e-6,
+            RoughnessClass::Poor => 256e-6,
+            RoughnessClass::VeryPoor => 1024e-6,
         }
     }
 
     /// The class's name as written in the format.
     pub fn name(self) -> &'static str {
         match self {
-            RoughnessClassRaw::VeryGood => "very_good",
-            RoughnessClassRaw::Good => "good",
-            RoughnessClassRaw::Average => "average",
-            RoughnessClassRaw::Poor => "poor",
-            RoughnessClassRaw::VeryPoor => "very_poor",
+            RoughnessClass::VeryGood => "very_good",
+            RoughnessClass::Good => "good",
+            RoughnessClass::Average => "average",
+            RoughnessClass::Poor => "poor",
+            RoughnessClass::VeryPoor => "very_poor",
         }
     }
 }
 
 /// Resolves a random profile over a bridge of length `bridge_length` (m).
 pub(super) fn resolve_random(
-    class: Option<RoughnessClassRaw>,
+    class: Option<RoughnessClass>,
     coefficient: Option<f64>,
     sampling_length: Option<f64>,
     terms: Option<usize>,
@@ -346,7 +347,7 @@ fn resolve_sampling(
     (default_short, default_long): (f64, f64),
     terms: Option<usize>,
     seed: Option<u64>,
-    rails: Option<RailsRaw>,
+    rails: Option<Rails>,
     run_in: Option<f64>,
     ck: &mut Checker<'_>,
 ) -> Sampling {
@@ -401,7 +402,7 @@ fn resolve_sampling(
         longest_wavelength: longest,
         terms,
         seed: seed.unwrap_or(1),
-        rails: rails.unwrap_or(RailsRaw::Identical),
+        rails: rails.unwrap_or(Rails::Identical),
         run_in,
         alignment: false,
     }
@@ -596,7 +597,7 @@ pub(super) fn check_reach(
     if let Some((_, sampling)) = surface.spectrum() {
         // The grid runs from the fade's start (at −run_in at the earliest).
         let nodes = grid_nodes(end + sampling.run_in, sampling.shortest_wavelength);
-        let rails = if sampling.rails == RailsRaw::Independent {
+        let rails = if sampling.rails == Rails::Independent {
             2.0
         } else {
             1.0

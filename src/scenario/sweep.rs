@@ -344,7 +344,7 @@ pub(super) fn resolve(
 
 /// Checks a study's speed grid (m/s): positive, ordered, below the speed
 /// limit, 1 to [`MAX_SPEEDS`] values.
-fn check_speeds(ck: &mut Checker<'_>, grid: &super::raw::GridRaw) {
+fn check_speeds(ck: &mut Checker<'_>, grid: &crate::scene::Grid) {
     if grid.from <= 0.0 {
         ck.error(
             "study.speeds.from",

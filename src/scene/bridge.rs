@@ -1,6 +1,7 @@
 //! The bridge of the scene: beam, plate or imported FE model, its modes and damping.
 
-use serde::Serialize;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
 
 use super::*;
 
@@ -249,4 +250,27 @@ impl Damping {
             }
         }
     }
+}
+
+/// Support of the plate's longitudinal edges.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PlateEdges {
+    /// Free edges (a bridge deck).
+    Free,
+    /// Simply supported edges (w = 0 along y = 0 and y = width).
+    SimplySupported,
+}
+
+/// Rayleigh–Ritz basis size.
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Terms {
+    /// Longitudinal beam functions (modes of the continuous beam over the same spans).
+    #[schemars(transform = super::schema_rules::at_least_one)]
+    pub longitudinal: usize,
+    /// Transverse functions (Legendre polynomials for free edges, sines for
+    /// simply supported edges).
+    #[schemars(transform = super::schema_rules::at_least_one)]
+    pub transverse: usize,
 }

@@ -3,11 +3,11 @@
 
 use std::sync::Arc;
 
-use serde::Serialize;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
 
+use super::imported::{Direction, ImportedModel, RotationSign};
 use super::{Damping, Modes};
-use crate::bridge::fe_import::{ImportedModel, RotationSign};
-pub use crate::scenario::raw::{NodeDofRaw as NodeDof, RailNodeRaw as RailNode};
 
 /// An imported finite-element bridge.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -92,4 +92,24 @@ impl ImportDamping {
             ImportDamping::Matrix { .. } => None,
         }
     }
+}
+
+/// A node's DOF.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NodeDof {
+    /// Node id.
+    pub node: u64,
+    /// Direction.
+    pub direction: Direction,
+}
+
+/// A rail node inline.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct RailNode {
+    /// Node id.
+    pub node: u64,
+    /// Position along the track, m.
+    pub x: f64,
 }

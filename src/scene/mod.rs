@@ -9,22 +9,27 @@ use serde::Serialize;
 mod bridge;
 mod fe_import;
 mod ground;
+pub mod imported;
+mod limits;
+mod output;
 mod rail;
+pub mod schema_rules;
+mod solver;
+mod spectrum;
 mod study;
 mod surface;
 mod vehicle;
 pub use self::bridge::*;
 pub use self::fe_import::*;
 pub use self::ground::*;
+pub use self::limits::*;
+pub use self::output::*;
 pub use self::rail::*;
+pub use self::solver::*;
+pub use self::spectrum::*;
 pub use self::study::*;
 pub use self::surface::*;
 pub use self::vehicle::*;
-pub use crate::scenario::budget::Limits;
-
-pub use crate::scenario::raw::{
-    GridRaw as Grid, PlateEdgesRaw as PlateEdges, Quantity, SolverMethod, TermsRaw as Terms,
-};
 
 /// A validated scene. See [`crate::scenario::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -82,14 +87,14 @@ pub struct Output {
     /// Steps between written samples (1: every step).
     pub every: usize,
     /// File format of the history.
-    pub format: crate::scenario::raw::HistoryFormat,
+    pub format: HistoryFormat,
 }
 
 impl Default for Output {
     fn default() -> Self {
         Self {
             every: 1,
-            format: crate::scenario::raw::HistoryFormat::Csv,
+            format: HistoryFormat::Csv,
         }
     }
 }
@@ -259,7 +264,7 @@ pub struct Record {
     pub node: Option<u64>,
     /// Direction of the node's DOF.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub direction: Option<crate::bridge::fe_import::Direction>,
+    pub direction: Option<imported::Direction>,
     /// Position across a plate deck, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub y: Option<f64>,
@@ -284,5 +289,5 @@ pub struct Record {
     pub frame: Frame,
     /// A plate's moment per unit width (`bridge_moment` on a plate).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub component: Option<crate::bridge::plate::moments::PlateMoment>,
+    pub component: Option<PlateMoment>,
 }

@@ -1,9 +1,7 @@
 //! A resolved study: the `study` section with every default filled in.
 
-use serde::Serialize;
-
-use super::Grid;
-pub use crate::scenario::raw::SweepRoughnessRaw as SweepRoughness;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
 
 /// A study over variants of the scene.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -28,13 +26,13 @@ pub enum Study {
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct ResonanceCheck {
     /// Trains, in run order.
-    pub trains: Vec<crate::scenario::raw::HslmModel>,
+    pub trains: Vec<HslmModel>,
     /// Maximum line speed, m/s.
     pub line_speed: f64,
     /// Speeds, m/s.
     pub speeds: ResonanceSpeeds,
     /// The track on the deck.
-    pub deck: crate::scenario::raw::DeckRaw,
+    pub deck: Deck,
     /// Highest mode frequency of the deck acceleration, Hz.
     pub max_frequency: f64,
     /// The bridge's first natural frequency f₀, Hz: the trains resonate at
@@ -151,4 +149,87 @@ impl SpeedSweep {
             (from.min(to), from.max(to))
         }
     }
+}
+
+/// Evenly spaced values from `from` to `to` inclusive.
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Grid {
+    /// First value.
+    #[schemars(transform = super::schema_rules::positive)]
+    pub from: f64,
+    /// Last value.
+    #[schemars(transform = super::schema_rules::positive)]
+    pub to: f64,
+    /// Number of values (≥ 1; 1 gives `from` only).
+    #[schemars(range(min = 1))]
+    #[schemars(transform = super::schema_rules::grid_count)]
+    pub count: usize,
+}
+
+/// One surface of a speed sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepRoughness {
+    /// Perfectly smooth surface.
+    Smooth,
+    /// Random profile with A_r = 4e-6 m³/cycle.
+    VeryGood,
+    /// Random profile with A_r = 16e-6 m³/cycle.
+    Good,
+    /// Random profile with A_r = 64e-6 m³/cycle.
+    Average,
+    /// Random profile with A_r = 256e-6 m³/cycle.
+    Poor,
+    /// Random profile with A_r = 1024e-6 m³/cycle.
+    VeryPoor,
+    /// FRA track class 1 vertical profile (the scene's rail sampling, or
+    /// the 1–80 m band), as in the LCP paper's Figs. 8–9.
+    Fra1,
+    /// FRA track class 2.
+    Fra2,
+    /// FRA track class 3.
+    Fra3,
+    /// FRA track class 4.
+    Fra4,
+    /// FRA track class 5.
+    Fra5,
+    /// FRA track class 6.
+    Fra6,
+}
+
+/// The ten HSLM-A universal trains (EN 1991-2 Table E.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+pub enum HslmModel {
+    /// N = 18 coaches, D = 18 m, d = 2.0 m, P = 170 kN.
+    A1,
+    /// N = 17, D = 19 m, d = 3.5 m, P = 200 kN.
+    A2,
+    /// N = 16, D = 20 m, d = 2.0 m, P = 180 kN.
+    A3,
+    /// N = 15, D = 21 m, d = 3.0 m, P = 190 kN.
+    A4,
+    /// N = 14, D = 22 m, d = 2.0 m, P = 170 kN.
+    A5,
+    /// N = 13, D = 23 m, d = 2.0 m, P = 180 kN.
+    A6,
+    /// N = 13, D = 24 m, d = 2.0 m, P = 190 kN.
+    A7,
+    /// N = 12, D = 25 m, d = 2.5 m, P = 190 kN.
+    A8,
+    /// N = 11, D = 26 m, d = 2.0 m, P = 210 kN.
+    A9,
+    /// N = 11, D = 27 m, d = 2.0 m, P = 210 kN.
+    A10,
+}
+
+/// The track on the deck, which sets the deck-acceleration limit of
+/// EN 1990 A2.4.4.2.1(1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Deck {
+    /// Ballasted track: 3.5 m/s².
+    Ballasted,
+    /// Direct-fastened track: 5 m/s².
+    DirectFastening,
 }

@@ -2,12 +2,10 @@
 
 use std::sync::Arc;
 
-use serde::Serialize;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
 
-pub use crate::scenario::raw::{
-    RailsRaw as Rails, RoughnessClassRaw as RoughnessClass, TrackDirection,
-};
-use crate::surface::spectrum::Spectrum;
+use super::Spectrum;
 
 /// How a random track or road profile is sampled (the spectral
 /// representation of [`crate::surface::synth`]).
@@ -96,7 +94,7 @@ pub enum Surface {
     /// German high-speed vertical track profile.
     German {
         /// Interference level.
-        interference: crate::surface::spectrum::Interference,
+        interference: super::Interference,
         /// Band, terms, seed, rails.
         #[serde(flatten)]
         sampling: Sampling,
@@ -104,7 +102,7 @@ pub enum Surface {
     /// ISO 8608 road profile.
     Iso8608 {
         /// Road class A–H.
-        class: crate::surface::spectrum::IsoClass,
+        class: super::IsoClass,
         /// Band, terms, seed, rails.
         #[serde(flatten)]
         sampling: Sampling,
@@ -249,4 +247,46 @@ impl Surface {
             _ => None,
         }
     }
+}
+
+/// Road roughness classes (A_r ranges in m³/cycle): very good 2e-6–8e-6,
+/// good 8e-6–32e-6, average 32e-6–128e-6, poor 128e-6–512e-6, very poor
+/// 512e-6–2048e-6.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RoughnessClass {
+    /// A_r = 4e-6.
+    VeryGood,
+    /// A_r = 16e-6.
+    Good,
+    /// A_r = 64e-6.
+    Average,
+    /// A_r = 256e-6.
+    Poor,
+    /// A_r = 1024e-6.
+    VeryPoor,
+}
+
+/// The direction a deterministic profile displaces the rails in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum TrackDirection {
+    /// The rails' elevation (m, positive upward): every vehicle's wheels
+    /// follow it.
+    #[default]
+    Vertical,
+    /// The track's alignment (m, + to the left of travel): both rails
+    /// displaced sideways; a `train_3d`'s wheelsets follow it, no other
+    /// vehicle has a lateral DOF at the rail.
+    Lateral,
+}
+
+/// Whether the two rails (wheel tracks) carry the same random profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Rails {
+    /// The same sample under both.
+    Identical,
+    /// Independent samples (ChaCha8 streams 0 and 1 of the seed).
+    Independent,
 }

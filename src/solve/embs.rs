@@ -424,6 +424,7 @@ pub fn run_orders(
         });
         if step % report_every == 0 || step == model.steps {
             progress(step, model.steps);
+            super::cancel::check()?;
         }
     }
     Ok(())

@@ -188,8 +188,8 @@ pub const DIVERGENT_EPSILON: f64 = 1.0;
 /// DOFs lateral, the rest vertical), a contact quantity by its wheel's
 /// direction. `None` for a quantity of neither.
 pub fn record_direction(model: &Model, record: &crate::scene::Record) -> Option<ContactDirection> {
-    use crate::bridge::fe_import::Direction;
     use crate::scene::Quantity;
+    use crate::scene::imported::Direction;
     match record.quantity {
         Quantity::BridgeDisplacement | Quantity::BridgeAcceleration => {
             match record.direction.unwrap_or_default() {

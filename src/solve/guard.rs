@@ -46,7 +46,7 @@ pub fn ground_energy(model: &Model) -> f64 {
         .iter()
         .map(|v| v.mass.diagonal().iter().sum::<f64>())
         .sum();
-    let direction = |records: &[std::sync::Arc<crate::ground::GroundRecord>],
+    let direction = |records: &[std::sync::Arc<crate::scene::GroundRecord>],
                      participation: &[f64]| {
         if records.is_empty() {
             return 0.0;

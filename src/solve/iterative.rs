@@ -178,6 +178,7 @@ pub fn run(
         ));
         if step % report_every == 0 || step == model.steps {
             progress(step, model.steps);
+            super::cancel::check()?;
         }
     }
     Ok(SolveStats {

@@ -8,6 +8,7 @@
 
 #![allow(clippy::needless_range_loop)] // numeric kernels index several arrays in step
 
+pub mod cancel;
 pub mod coupled;
 pub mod dense;
 pub mod embs;
@@ -76,6 +77,10 @@ pub enum SolveError {
         /// Explanation.
         reason: String,
     },
+    /// The run was stopped from outside ([`cancel`]), e.g. by Ctrl-C in
+    /// the Python package.
+    #[error("the run was cancelled")]
+    Cancelled,
 }
 
 /// Dynamic state of one vehicle.

@@ -25,6 +25,8 @@ use super::{SolveError, VehicleState};
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::WheelKind;
+use faer::linalg::matmul::matmul;
+use faer::{Accum, Mat, Par};
 
 /// A wheel that rides the surface through a vehicle DOF.
 #[derive(Debug, Clone, Copy)]
@@ -104,6 +106,23 @@ pub struct PermanentContacts {
     path: Vec<(f64, f64)>,
     /// Modal correction −DΦᵀλ work vector.
     correction: Vec<f64>,
+    /// This step's contact rows gathered for the contact system's matrix
+    /// products: [φ, P₁, P₂] of every contact, each nc × modes (row c is
+    /// contact c), and Dφ of every contact as the columns of a modes × nc
+    /// matrix. Three products of these replace nc² separate dot products
+    /// (the same sums, blocked and vectorised: on 96 contacts × 148 modes
+    /// the step's contact system costs a fraction of what the dot products
+    /// did).
+    contact_rows: [Mat<f64>; 3],
+    scaled_columns: Mat<f64>,
+    /// [ΦDΦᵀ, P₁DΦᵀ, P₂DΦᵀ] between the contacts this step, nc × nc.
+    contact_products: [Mat<f64>; 3],
+    /// φᵢ/ωᵢ² of every contact as the columns of a modes × nc matrix, and
+    /// the kept modes' flexibility ΦΩ⁻²Φᵀ between the contacts, nc × nc:
+    /// the part of the static flexibility the residual leaves out (empty
+    /// when the contact correction is off).
+    modal_columns: Mat<f64>,
+    modal_flexibility: Mat<f64>,
     /// Residual (static) flexibility between the contacts this step, m/N,
     /// row-major nc × nc ([`crate::bridge::ModalBridge::residual_flexibility`]);
     /// empty when the contact static correction is off.
@@ -173,6 +192,19 @@ impl PermanentContacts {
             surface: vec![(0.0, 0.0, 0.0); nc],
             path: vec![(0.0, 0.0); nc],
             correction: vec![0.0; modes],
+            contact_rows: std::array::from_fn(|_| Mat::zeros(nc, modes)),
+            scaled_columns: Mat::zeros(modes, nc),
+            contact_products: std::array::from_fn(|_| Mat::zeros(nc, nc)),
+            modal_columns: if model.bridge.corrects_contacts() {
+                Mat::zeros(modes, nc)
+            } else {
+                Mat::zeros(0, 0)
+            },
+            modal_flexibility: if model.bridge.corrects_contacts() {
+                Mat::zeros(nc, nc)
+            } else {
+                Mat::zeros(0, 0)
+            },
             residual: if model.bridge.corrects_contacts() {
                 vec![0.0; nc * nc]
             } else {
@@ -256,6 +288,12 @@ impl PermanentContacts {
                     *row += a * slope;
                 }
             }
+            for i in 0..s.values.len() {
+                self.contact_rows[0][(c, i)] = s.values[i];
+                self.contact_rows[1][(c, i)] = s.velocity_row[i];
+                self.contact_rows[2][(c, i)] = s.acceleration_row[i];
+                self.scaled_columns[(i, c)] = s.scaled[i];
+            }
             let (r, dr, ddr) = if self.follow_irregularity {
                 model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x)
             } else {
@@ -284,17 +322,27 @@ impl PermanentContacts {
             // s̈ is negligible).
             let nc = self.contacts.len();
             for c in 0..nc {
+                let values = &self.shapes[c].values;
+                for (i, omega) in bridge.circular_frequencies.iter().enumerate() {
+                    self.modal_columns[(i, c)] = values[i] / (omega * omega);
+                }
+            }
+            matmul(
+                self.modal_flexibility.as_mut(),
+                Accum::Replace,
+                self.contact_rows[0].as_ref(),
+                self.modal_columns.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+            let point = |k: usize| {
+                let contact = &self.contacts[k];
+                (contact.direction, wheel_positions[contact.wheel], contact.y)
+            };
+            for c in 0..nc {
                 for d in 0..=c {
-                    let point = |k: usize| {
-                        let contact = &self.contacts[k];
-                        (contact.direction, wheel_positions[contact.wheel], contact.y)
-                    };
-                    let r = bridge.residual_flexibility(
-                        point(c),
-                        point(d),
-                        &self.shapes[c].values,
-                        &self.shapes[d].values,
-                    );
+                    let green = bridge.static_flexibility(point(c), point(d)).unwrap_or(0.0);
+                    let r = green - self.modal_flexibility[(c, d)];
                     self.residual[c * nc + d] = r;
                     self.residual[d * nc + c] = r;
                 }
@@ -323,33 +371,47 @@ impl PermanentContacts {
     /// residual flexibility when the contact correction is on), written to
     /// `sens`, and each vehicle's wheel rows λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W
     /// close it. Cost O(modes·contacts²) + O(contacts²·wheels per vehicle).
-    pub fn contact_system(&self, sens: &mut [[f64; 3]], system: &mut [f64]) {
+    pub fn contact_system(&mut self, sens: &mut [[f64; 3]], system: &mut [f64]) {
         let nc = self.contacts.len();
-        let shapes = &self.shapes;
+        for (product, rows) in self.contact_products.iter_mut().zip(&self.contact_rows) {
+            matmul(
+                product.as_mut(),
+                Accum::Replace,
+                rows.as_ref(),
+                self.scaled_columns.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+        }
+        let [flexibility, velocity, acceleration] = &self.contact_products;
         for c in 0..nc {
             for d in 0..nc {
-                let (sc, sd) = (&shapes[c], &shapes[d]);
                 let r = self.residual.get(c * nc + d).copied().unwrap_or(0.0);
                 sens[c * nc + d] = [
-                    -dot(&sc.values, &sd.scaled) - r,
-                    -dot(&sc.velocity_row, &sd.scaled),
-                    -dot(&sc.acceleration_row, &sd.scaled),
+                    -flexibility[(c, d)] - r,
+                    -velocity[(c, d)],
+                    -acceleration[(c, d)],
                 ];
             }
         }
+        // Row c of (I − A) for each vehicle's wheel c: A_c· = Σ_b (M̃ S₂ + C̃ S₁
+        // + K̃ S₀)_{cb,·}, accumulated along whole rows so the inner loop runs
+        // over contiguous memory. 0 − x₁ − x₂ … rounds exactly as −(x₁ + x₂ …)
+        // and 1 is added last, as 1 − Σ was: the same bits as the sum per entry.
         for (v, partition) in self.partitions.iter().enumerate() {
             let local = &self.contact_of[v];
             for (a, &c) in local.iter().enumerate() {
-                for d in 0..nc {
-                    let mut a_cd = 0.0;
-                    for (b, &cb) in local.iter().enumerate() {
-                        let s = sens[cb * nc + d];
-                        a_cd += partition.condensed_mass[(a, b)] * s[2]
-                            + partition.condensed_damping[(a, b)] * s[1]
-                            + partition.condensed_stiffness[(a, b)] * s[0];
+                let row = &mut system[c * nc..(c + 1) * nc];
+                row.fill(0.0);
+                for (b, &cb) in local.iter().enumerate() {
+                    let mass = partition.condensed_mass[(a, b)];
+                    let damping = partition.condensed_damping[(a, b)];
+                    let stiffness = partition.condensed_stiffness[(a, b)];
+                    for (entry, s) in row.iter_mut().zip(&sens[cb * nc..(cb + 1) * nc]) {
+                        *entry -= mass * s[2] + damping * s[1] + stiffness * s[0];
                     }
-                    system[c * nc + d] = if c == d { 1.0 - a_cd } else { -a_cd };
                 }
+                row[c] += 1.0;
             }
         }
     }

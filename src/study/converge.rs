@@ -10,7 +10,12 @@
 //! - time-step ladder: steps Δt, 2Δt, 4Δt, … (`levels` runs) at N_ref modes,
 //!   so its errors are those of the time integration alone;
 //! - mode ladder: N, N/2, N/4 modes (at least 1, duplicates and N_ref
-//!   dropped) at Δt, so its errors add modal truncation.
+//!   dropped) at Δt, so its errors add modal truncation;
+//! - combined ladder, run after the other two: every step h > Δt of the
+//!   time-step ladder within tolerance together with every mode count of
+//!   the mode ladder within tolerance (coarsest step and fewest modes
+//!   last). The two errors roughly add, so a pair can fail although both
+//!   halves pass: it is measured, not assumed.
 //!
 //! Every ladder step is an integer multiple k of h_ref (powers of two, exact
 //! in floating point), so sample i of a run lies at the reference's sample
@@ -32,14 +37,15 @@
 //! "cheapest" choice stable for runs of a few milliseconds. Everything but
 //! the wall times is deterministic.
 
-use std::path::Path;
+mod answer;
+mod plot;
+
 use std::time::Instant;
 
 use thiserror::Error;
 
 use crate::bridge::{BridgeError, ModalBridge};
 use crate::record::History;
-use crate::report::plot::{self, PlotError, Series};
 use crate::run::{self, Outcome, RunError};
 use crate::scenario::Loaded;
 use crate::scene::Modes;
@@ -103,6 +109,9 @@ pub enum Ladder {
     TimeStep,
     /// Fewer modes at the scenario's time step.
     Modes,
+    /// A coarser step of the time-step ladder together with fewer modes of
+    /// the mode ladder, both within tolerance on their own ladder.
+    Combined,
 }
 
 /// A time step (s) and a mode count.
@@ -253,6 +262,9 @@ pub struct Convergence {
     /// Per recorded quantity (scenario order): its name and the index into
     /// `runs` of the cheapest run within tolerance on that quantity alone.
     pub cheapest_per_quantity: Vec<(String, Option<usize>)>,
+    /// The scene's `modes.static_correction`, kept by every run (and so by
+    /// the YAML that hands over the cheapest run).
+    pub static_correction: bool,
 }
 
 /// The reference resolution and the ladder runs for a scene with time step
@@ -316,7 +328,7 @@ pub fn converge(
     let total = 1 + ladder.len();
     let label = reference_resolution.label();
     progress(0, total, &label);
-    let reference_loaded = variant(loaded, reference_resolution)?;
+    let reference_loaded = at_resolution(loaded, reference_resolution)?;
     let (outcome, wall_time) =
         timed(&reference_loaded).map_err(|source| ConvergeError::Reference { label, source })?;
     let reference_history = outcome.history;
@@ -339,13 +351,13 @@ pub fn converge(
         )));
     }
     let mut runs = Vec::with_capacity(ladder.len());
-    for (index, &(kind, resolution)) in ladder.iter().enumerate() {
+    let mut measure = |kind: Ladder, resolution: Resolution, index: usize, total: usize| {
         progress(index + 1, total, &resolution.label());
         let stride = (resolution.time_step / reference_resolution.time_step).round() as usize;
-        let result = variant(loaded, resolution)
+        let result = at_resolution(loaded, resolution)
             .map_err(|e| e.to_string())
             .and_then(|l| timed(&l).map_err(|e| e.to_string()));
-        let run = match result {
+        match result {
             Ok((outcome, wall_time)) => report(
                 kind,
                 resolution,
@@ -357,8 +369,23 @@ pub fn converge(
                 )),
             ),
             Err(message) => report(kind, resolution, None, Err(message)),
-        };
-        runs.push(run);
+        }
+    };
+    for (index, &(kind, resolution)) in ladder.iter().enumerate() {
+        runs.push(measure(kind, resolution, index, total));
+    }
+    // The combined ladder, from what the two ladders measured.
+    let combined = combined_plan(
+        &runs,
+        loaded.scenario.solver.time_step,
+        reference_resolution.modes,
+        options.tolerance,
+        &options.exclude,
+    );
+    let total = total + combined.len();
+    for resolution in combined {
+        let index = runs.len();
+        runs.push(measure(Ladder::Combined, resolution, index, total));
     }
     let orders = observed_orders(&runs);
     let median_order = median(orders.iter().map(|o| o.order).collect());
@@ -384,7 +411,46 @@ pub fn converge(
         cheapest,
         excluded: options.exclude.clone(),
         cheapest_per_quantity,
+        static_correction: loaded.scenario.bridge.modes().static_correction,
     })
+}
+
+/// The combined ladder: every time-step-ladder step coarser than
+/// `time_step` (s) whose run is within `tolerance`, paired with every
+/// mode-ladder count below `reference_modes` whose run is within it (the
+/// quantities in `excluded` left out, as for the cheapest run); finest step
+/// first, then most modes first.
+pub fn combined_plan(
+    runs: &[RunReport],
+    time_step: f64,
+    reference_modes: usize,
+    tolerance: f64,
+    excluded: &[String],
+) -> Vec<Resolution> {
+    let within = |r: &&RunReport| {
+        r.worst_max_abs_except(excluded)
+            .is_some_and(|e| e <= tolerance)
+    };
+    let steps: Vec<f64> = runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::TimeStep && r.time_step > time_step)
+        .filter(within)
+        .map(|r| r.time_step)
+        .collect();
+    let counts: Vec<usize> = runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::Modes && r.modes < reference_modes)
+        .filter(within)
+        .map(|r| r.modes)
+        .collect();
+    steps
+        .iter()
+        .flat_map(|&time_step| {
+            counts
+                .iter()
+                .map(move |&modes| Resolution { time_step, modes })
+        })
+        .collect()
 }
 
 /// A run's report; `cost` is (steps, wall time in s) of a successful run.
@@ -407,8 +473,9 @@ fn report(
 
 /// The scene at another resolution: the time step replaced, the lowest
 /// `modes` modes kept (any frequency cut-off dropped), the bridge rebuilt;
-/// a study section is dropped (the base scene is converged).
-fn variant(loaded: &Loaded, resolution: Resolution) -> Result<Loaded, BridgeError> {
+/// a study section is dropped (the base scene is converged). This is the
+/// scene every run of a study integrates.
+pub fn at_resolution(loaded: &Loaded, resolution: Resolution) -> Result<Loaded, BridgeError> {
     let mut scenario = loaded.scenario.clone();
     scenario.study = None;
     scenario.solver.time_step = resolution.time_step;
@@ -592,14 +659,14 @@ impl Convergence {
         }
     }
 
-    /// CSV, one row per ladder run × quantity: `label, time_step` (s),
-    /// `modes, steps, wall_time` (s), `quantity, max_abs_error, rms_error`
+    /// CSV, one row per ladder run × quantity: `label, time_step [s]`,
+    /// `modes, steps, wall_time [s]`, `quantity, max_abs_error, rms_error`
     /// (dimensionless fractions), `failure` (the message of a failed run,
     /// whose other measured fields are empty).
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
-        let header =
-            "label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure";
+        let header = "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,\
+                      rms_error,failure";
         out.write_record(header.split(','))
             .expect("writing to memory");
         let number = crate::report::number;
@@ -622,53 +689,5 @@ impl Convergence {
             }
         }
         out.into_inner().expect("writing to memory")
-    }
-
-    /// Log–log chart of max-abs relative error against wall time (s), one
-    /// series per quantity (the time-step ladder, a break, then the mode
-    /// ladder), and the tolerance as a horizontal line.
-    pub fn plot(&self, path: &Path) -> Result<(), PlotError> {
-        let names = self.quantities();
-        let mut data: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-        // One line per quantity and ladder, labelled with the ladder, so
-        // that the time-step and the mode ladders are told apart.
-        for (ladder, which) in [
-            (Ladder::TimeStep, "Δt ladder"),
-            (Ladder::Modes, "modes ladder"),
-        ] {
-            for (q, name) in names.iter().enumerate() {
-                let (mut x, mut y) = (Vec::new(), Vec::new());
-                for run in self.runs.iter().filter(|r| r.ladder == ladder) {
-                    if let (Some(t), Ok(errors)) = (run.wall_time, &run.errors) {
-                        x.push(t);
-                        y.push(errors[q].max_abs);
-                    }
-                }
-                if !x.is_empty() {
-                    data.push((format!("{name}, {which}"), x, y));
-                }
-            }
-        }
-        let times: Vec<f64> = self.runs.iter().filter_map(|r| r.wall_time).collect();
-        if let (Some(lo), Some(hi)) = (
-            times.iter().copied().reduce(f64::min),
-            times.iter().copied().reduce(f64::max),
-        ) {
-            let label = format!("tolerance {} %", percent(self.tolerance));
-            data.push((label, vec![lo, hi], vec![self.tolerance; 2]));
-        }
-        let series: Vec<Series> = data
-            .iter()
-            .map(|(label, x, y)| Series { label, x, y })
-            .collect();
-        plot::line_chart(
-            path,
-            &format!("{}: error against wall time", self.scenario),
-            "wall time (s)",
-            "max-abs error / max |reference|",
-            &series,
-            true,
-            true,
-        )
     }
 }

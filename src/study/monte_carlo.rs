@@ -18,6 +18,7 @@
 //! (separation, largest gap) are kept per sample and reduced in sample order
 //! when the report is written.
 
+mod fold;
 pub mod report;
 
 use std::collections::HashMap;
@@ -35,6 +36,7 @@ use crate::scenario::sweep;
 use crate::scene::{MonteCarlo, Scenario, SweepRoughness};
 use crate::solve;
 
+pub use self::fold::EnvelopeFold;
 pub use self::report::write;
 
 /// The seed of sample `index` (from 0): the (index + 1)-th output of
@@ -332,7 +334,7 @@ fn failed_sample(
     let (case, index) = (flat / mc.samples, flat % mc.samples);
     let mut label = sweep::label(&base.surface, cases[case].entry);
     if let Some(speed) = cases[case].speed {
-        label += &format!(", {:.1} km/h", speed * speed_sweep::KM_H);
+        label += &format!(", {:.1} km/h", crate::report::km_h(speed));
     }
     RunError::Sample {
         sample: index + 1,
@@ -474,19 +476,23 @@ pub fn run_slice(
     }
     let total = range.len();
     let done = AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     let reduced: Vec<(usize, usize, usize, Reduced)> = {
         use rayon::prelude::*;
         jobs.par_iter()
             .map(|&(case, lo, hi)| {
                 let batch = |ks: Range<usize>| {
                     let count = ks.len();
-                    let r = run_batch(
-                        base,
-                        bridge,
-                        mc,
-                        &cases,
-                        case * s + ks.start..case * s + ks.end,
-                    );
+                    let r = crate::solve::cancel::in_scope(token.as_ref(), || {
+                        crate::solve::cancel::check()?;
+                        run_batch(
+                            base,
+                            bridge,
+                            mc,
+                            &cases,
+                            case * s + ks.start..case * s + ks.end,
+                        )
+                    });
                     progress(done.fetch_add(count, Ordering::Relaxed) + count, total);
                     r
                 };
@@ -581,6 +587,26 @@ impl MonteCarloPart {
                 ));
             }
         }
+        // Exactly the nodes a run of the slice reduces, in order: the merge
+        // folds them as they come (`EnvelopeFold`).
+        let mut expected = Vec::new();
+        if !range.is_empty() {
+            for case in range.start / s..=(range.end - 1) / s {
+                let (a, b) = (range.start.max(case * s), range.end.min((case + 1) * s));
+                let mut nodes = Vec::new();
+                cover(0, s, a - case * s, b - case * s, &mut nodes);
+                expected.extend(nodes.into_iter().map(|(lo, hi)| (case, lo, hi)));
+            }
+        }
+        let given = self.nodes.iter().map(|n| (n.case, n.lo, n.hi));
+        if !given.eq(expected.iter().copied()) {
+            return Err(format!(
+                "its reduction nodes are not the {} whole tree nodes of runs {}..{}",
+                expected.len(),
+                range.start,
+                range.end
+            ));
+        }
         Ok(())
     }
 }
@@ -631,11 +657,32 @@ pub fn assemble(
     let envelopes = (0..cases.len())
         .map(|c| evaluate(c, 0, mc.samples, &mut given))
         .collect::<Result<Vec<_>, _>>()?;
+    Ok(results(
+        base,
+        mc,
+        cases,
+        sample_results,
+        envelopes,
+        wall_time,
+    ))
+}
+
+/// The study's results from its cases, every sample's result and each
+/// case's envelope moments (the batch [`assemble`] and the streaming
+/// [`fold::EnvelopeFold`] end here alike).
+fn results(
+    base: &Scenario,
+    mc: &MonteCarlo,
+    cases: Vec<Case>,
+    sample_results: Vec<SampleResult>,
+    envelopes: Vec<Moments>,
+    wall_time: f64,
+) -> MonteCarloResults {
     let labels = cases
         .iter()
         .map(|c| sweep::label(&base.surface, c.entry))
         .collect();
-    Ok(MonteCarloResults {
+    MonteCarloResults {
         labels,
         own_speed: base.vehicles.first().map(|v| v.speed()),
         cases,
@@ -645,7 +692,7 @@ pub fn assemble(
         sample_results,
         envelopes,
         wall_time,
-    })
+    }
 }
 
 /// Runs the whole study (in parallel) and assembles it.

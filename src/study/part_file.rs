@@ -7,6 +7,8 @@
 use std::io::Read;
 use std::path::Path;
 
+use serde::de::{DeserializeOwned, IgnoredAny};
+
 use super::shard::{PART_FORMAT, Part, ShardError};
 
 /// Largest part file read, bytes, unless `--allow-large`: a part of the
@@ -18,6 +20,17 @@ pub const MAX_PART_BYTES: u64 = 256 * 1024 * 1024;
 /// Reads and parses the part file at `path`; `allow_large` lifts
 /// [`MAX_PART_BYTES`].
 pub fn read_part(path: &Path, allow_large: bool) -> Result<Part, ShardError> {
+    read_as(path, allow_large)
+}
+
+/// Reads the part file at `path` as [`read_part`] does, but everything
+/// except its results (checked to be JSON and skipped, not kept): what the
+/// merge's first pass needs of every part.
+pub fn read_stamp(path: &Path, allow_large: bool) -> Result<Part<IgnoredAny>, ShardError> {
+    read_as(path, allow_large)
+}
+
+fn read_as<T: DeserializeOwned>(path: &Path, allow_large: bool) -> Result<T, ShardError> {
     let not_a_part = |message: String| ShardError::NotAPart {
         path: path.to_path_buf(),
         message,

@@ -174,10 +174,13 @@ pub fn run_slice(
     let bridge = &damped(bridge, check);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     jobs[range]
         .par_iter()
         .map(|&job| {
-            let point = run_point(base, bridge, check, job);
+            let point = crate::solve::cancel::in_scope(token.as_ref(), || {
+                run_point(base, bridge, check, job)
+            });
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point
@@ -206,8 +209,8 @@ pub fn assemble(
         additional_damping: check.additional_damping,
         limit: check.deck.acceleration_limit(),
         deck: match check.deck {
-            crate::scenario::raw::DeckRaw::Ballasted => "ballasted".into(),
-            crate::scenario::raw::DeckRaw::DirectFastening => "direct_fastening".into(),
+            crate::scene::Deck::Ballasted => "ballasted".into(),
+            crate::scene::Deck::DirectFastening => "direct_fastening".into(),
         },
         line_speed: check.line_speed,
         max_frequency: check.max_frequency,

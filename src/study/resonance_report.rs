@@ -21,8 +21,8 @@ impl ResonanceResults {
     /// limit.
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = String::from(
-            "train,speed_m_s,speed_km_h,max_displacement_m,displacement_at_m,\
-             max_acceleration_m/s^2,acceleration_at_m,time_step_s,within_limit\n",
+            "train,speed [m/s],speed [km/h],max_displacement [m],displacement_at [m],\
+             max_acceleration [m/s^2],acceleration_at [m],time_step [s],within_limit\n",
         );
         for p in &self.points {
             let row = [
@@ -46,8 +46,8 @@ impl ResonanceResults {
     /// separated by spaces).
     pub fn trains_csv(&self) -> Vec<u8> {
         let mut out = String::from(
-            "train,coach_length_m,resonance_speeds_km_h,runs,max_acceleration_m/s^2,\
-             speed_km_h,acceleration_at_m,limit_m/s^2,passes\n",
+            "train,coach_length [m],resonance_speeds [km/h],runs,max_acceleration [m/s^2],\
+             speed [km/h],acceleration_at [m],limit [m/s^2],passes\n",
         );
         for v in self.verdicts() {
             let resonances: Vec<String> =

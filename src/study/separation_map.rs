@@ -186,10 +186,12 @@ pub fn run_slice(
     let grid = grid(velocity_ratio, mass_ratio);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     grid[range]
         .par_iter()
         .map(|&(a, m)| {
-            let point = run_point(base, bridge, a, m);
+            let point =
+                crate::solve::cancel::in_scope(token.as_ref(), || run_point(base, bridge, a, m));
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point
@@ -239,17 +241,17 @@ impl SeparationMap {
         out.write_record([
             "velocity_ratio",
             "mass_ratio",
-            "speed",
-            "sprung_mass",
-            "unsprung_mass",
-            "stiffness",
-            "damping",
-            "contact_stiffness",
+            "speed [m/s]",
+            "sprung_mass [kg]",
+            "unsprung_mass [kg]",
+            "stiffness [N/m]",
+            "damping [N*s/m]",
+            "contact_stiffness [N/m]",
             "separated",
             "episodes",
-            "first_loss_position",
-            "max_gap",
-            "min_contact_force",
+            "first_loss_position [m]",
+            "max_gap [m]",
+            "min_contact_force [N]",
         ])
         .expect("writing to memory");
         let number = crate::report::number;

@@ -19,7 +19,6 @@
 //! type and size, K, N and the slice, the wall time and the slice's results
 //! (floats written in shortest round-trip form and read back exactly).
 
-use std::collections::BTreeMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -33,7 +32,10 @@ use super::speed_sweep::{self, SweepPoint};
 use crate::run::RunError;
 use crate::scenario::{self, LoadOptions, Loaded};
 use crate::scene::Study;
-use crate::study::Results;
+
+mod merge;
+
+pub use merge::{Merged, merge};
 
 /// Version tag of the part format.
 pub const PART_FORMAT: &str = "vbi-part-1";
@@ -113,9 +115,10 @@ pub enum PartData {
     },
 }
 
-/// A part file.
+/// A part file; `D` is its results, [`serde::de::IgnoredAny`] when only
+/// the rest is read (the merge's first pass).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Part {
+pub struct Part<D = PartData> {
     /// [`PART_FORMAT`].
     pub format: String,
     /// vbi version that wrote it.
@@ -146,7 +149,28 @@ pub struct Part {
     /// Wall time of the slice, s.
     pub wall_time: f64,
     /// The slice's results.
-    pub data: PartData,
+    pub data: D,
+}
+
+impl<D> Part<D> {
+    /// Whether everything but the results is the same in both (the same
+    /// part file read twice).
+    pub fn same_stamp<E>(&self, other: &Part<E>) -> bool {
+        self.format == other.format
+            && self.vbi_version == other.vbi_version
+            && self.scenario_hash == other.scenario_hash
+            && self.scenario_file == other.scenario_file
+            && self.scenario_source == other.scenario_source
+            && self.allow_large == other.allow_large
+            && self.trust_limits == other.trust_limits
+            && self.study == other.study
+            && self.size == other.size
+            && self.shard == other.shard
+            && self.shards == other.shards
+            && self.first == other.first
+            && self.end == other.end
+            && self.wall_time.to_bits() == other.wall_time.to_bits()
+    }
 }
 
 /// Why a shard cannot run or parts cannot be merged.
@@ -223,7 +247,7 @@ pub fn scenario_hash(loaded: &Loaded) -> String {
 }
 
 /// Study type name and number of runs.
-fn study_size(loaded: &Loaded, study: &Study) -> (&'static str, usize) {
+pub(crate) fn study_size(loaded: &Loaded, study: &Study) -> (&'static str, usize) {
     match study {
         Study::SeparationMap {
             velocity_ratio,
@@ -350,306 +374,6 @@ pub fn part_json(part: &Part) -> String {
 /// Reads a part file ([`super::part_file::read_part`], default caps).
 pub fn read_part(path: &Path) -> Result<Part, ShardError> {
     super::part_file::read_part(path, false)
-}
-
-/// The merged study and the scene it belongs to.
-#[derive(Debug)]
-pub struct Merged {
-    /// The scenario file as the parts name it (as given to `vbi run`).
-    pub scenario_file: String,
-    /// The scene, loaded again from the parts' scenario text.
-    pub loaded: Loaded,
-    /// The study's results, as an unsharded run gives them.
-    pub results: Results,
-}
-
-/// Checks that `parts` (read from `paths`) are the N distinct shards of one
-/// study and assembles them. Nothing in a part is trusted beyond what is
-/// derived again: the scene is loaded from the parts' text under the
-/// caller's `options` (its budgets, its `--allow-large`, its data folders;
-/// the scene's own files are confined to the current folder's tree, since
-/// the part's file name is not trusted to say which folder may be read),
-/// its hash is compared first, then the shard count is budgeted against the
-/// study's run count, and only then are the results assembled.
-pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardError> {
-    let mut parts = Vec::with_capacity(paths.len());
-    let mut unusable = None;
-    for path in paths {
-        match super::part_file::read_part(path, options.allow_large) {
-            Ok(part) => parts.push((path.clone(), part)),
-            Err(e) => {
-                unusable.get_or_insert((path.clone(), e));
-            }
-        }
-    }
-    // A part that cannot be read is named with its shard (from its file
-    // name, the only thing left to trust) and the command that writes it
-    // again; the scene's file is taken from a part that did read.
-    if let Some((path, error)) = unusable {
-        let Some(shard) = Shard::from_file_name(&path) else {
-            return Err(error);
-        };
-        let scene = parts.first().map(|(_, p)| p.scenario_file.as_str());
-        return Err(ShardError::Unusable {
-            error: Box::new(error),
-            shard: shard.index,
-            count: shard.count,
-            command: rerun_command(scene, shard, &path),
-        });
-    }
-    let Some((first_path, first)) = parts.first() else {
-        return Err(ShardError::Mismatch("no part files given".into()));
-    };
-    let shown = |p: &Path| p.display().to_string();
-    for (path, part) in &parts[1..] {
-        if part.scenario_hash != first.scenario_hash
-            || part.scenario_source != first.scenario_source
-            || part.scenario_file != first.scenario_file
-        {
-            return Err(ShardError::Mismatch(format!(
-                "{} is from another scenario than {}",
-                shown(path),
-                shown(first_path),
-            )));
-        }
-        if part.shards != first.shards
-            || part.size != first.size
-            || part.study != first.study
-            || part.allow_large != first.allow_large
-            || part.trust_limits != first.trust_limits
-        {
-            return Err(ShardError::Mismatch(format!(
-                "{} and {} are parts of different splits of the study (shard counts, run counts, \
-                 study types or `--allow-large` differ)",
-                shown(path),
-                shown(first_path),
-            )));
-        }
-    }
-    // A part run with `--allow-large` needs the user's own to merge: the
-    // flag in the file is not trusted to lift the budgets.
-    if first.allow_large && !options.allow_large {
-        return Err(ShardError::Mismatch(format!(
-            "{} was run with `--allow-large`; merge with `--allow-large` too",
-            shown(first_path)
-        )));
-    }
-    // Likewise a part run with `--trust-limits`: the file's own raised
-    // limits apply only where the merging user allows them too.
-    if first.trust_limits && !options.trust_limits {
-        return Err(ShardError::Mismatch(format!(
-            "{} was run with `--trust-limits`; merge with `--trust-limits` too",
-            shown(first_path)
-        )));
-    }
-    // The scene hash first: the scene is loaded again under the caller's
-    // budgets, and its hash must be the parts' before any count in them is
-    // believed.
-    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
-    let options = LoadOptions {
-        modes_cache: None,
-        data: scenario::DataAccess {
-            data_dirs: options.data.data_dirs.clone(),
-            confine_to: Some(cwd),
-        },
-        ..options.clone()
-    };
-    let allow_large = options.allow_large;
-    let first_file = first.scenario_file.clone();
-    let loaded = scenario::load_str_with(&first.scenario_source, &first.scenario_file, options)?;
-    let hash = scenario_hash(&loaded);
-    if hash != first.scenario_hash {
-        return Err(ShardError::Mismatch(format!(
-            "the parts' scenario resolves differently with this vbi {} (hash {hash}); their hash \
-             does not match: merge with the vbi that ran them, or the parts were altered",
-            env!("CARGO_PKG_VERSION"),
-        )));
-    }
-    let study = loaded
-        .scenario
-        .study
-        .clone()
-        .ok_or_else(|| ShardError::NoStudy {
-            file: first.scenario_file.clone(),
-        })?;
-    // Then the counts, against the study as derived again.
-    let (name, size) = study_size(&loaded, &study);
-    let count = first.shards;
-    if first.study != name || first.size != size {
-        return Err(ShardError::Mismatch(format!(
-            "{} claims a {}-run study, the scene's study has {size} runs",
-            shown(first_path),
-            first.size
-        )));
-    }
-    check_count(count, size, &loaded, allow_large)
-        .map_err(|e| ShardError::Mismatch(format!("{}: {e}", shown(first_path))))?;
-    let mut by_index: BTreeMap<usize, (PathBuf, Part)> = BTreeMap::new();
-    for (path, part) in parts {
-        let shard = Shard {
-            index: part.shard,
-            count,
-        };
-        if part.shard == 0 || part.shard > count || shard.range(size) != (part.first..part.end) {
-            return Err(ShardError::Mismatch(format!(
-                "{}: not a shard of {count} of this study (shard {}, runs {}..{})",
-                shown(&path),
-                part.shard,
-                part.first,
-                part.end
-            )));
-        }
-        if let Some((other, _)) = by_index.get(&part.shard) {
-            return Err(ShardError::Mismatch(format!(
-                "shard {} of {count} is given twice: {} and {}",
-                part.shard,
-                shown(other),
-                shown(&path)
-            )));
-        }
-        by_index.insert(part.shard, (path, part));
-    }
-    let missing = count - by_index.len();
-    if missing > 0 {
-        // At most a few named; the count is budgeted above, so the scan is
-        // bounded by the study's run count.
-        const NAMED: usize = 8;
-        let named: Vec<String> = (1..=count)
-            .filter(|k| !by_index.contains_key(k))
-            .take(NAMED)
-            .map(|k| {
-                let r = Shard { index: k, count }.range(size);
-                format!("{k} (runs {}..{})", r.start, r.end)
-            })
-            .collect();
-        let more = if missing > NAMED {
-            format!(" and {} more", missing - NAMED)
-        } else {
-            String::new()
-        };
-        let first_missing = (1..=count).find(|k| !by_index.contains_key(k)).unwrap_or(1);
-        let command = rerun_command(
-            Some(&first_file),
-            Shard {
-                index: first_missing,
-                count,
-            },
-            &paths[0],
-        );
-        return Err(ShardError::Mismatch(format!(
-            "{missing} of {count} shards missing: {}{more}; run each again, e.g. shard \
-             {first_missing}: `{command}`",
-            named.join(", ")
-        )));
-    }
-    let parts: Vec<Part> = by_index.into_values().map(|(_, p)| p).collect();
-    let rerun = |index: usize| rerun_command(Some(&first_file), Shard { index, count }, &paths[0]);
-    let wall_time: f64 = parts
-        .iter()
-        .map(|p| p.wall_time)
-        .filter(|t| t.is_finite() && *t >= 0.0)
-        .sum();
-    let wrong = || ShardError::Mismatch("a part's results do not match its study type".into());
-    let results = match &study {
-        Study::SeparationMap {
-            velocity_ratio,
-            mass_ratio,
-        } => {
-            let mut points = Vec::new();
-            for p in parts {
-                let count = p.end - p.first;
-                let PartData::SeparationMap { points: more } = p.data else {
-                    return Err(wrong());
-                };
-                if more.len() != count {
-                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
-                }
-                points.extend(more);
-            }
-            Results::SeparationMap(separation_map::assemble(
-                velocity_ratio,
-                mass_ratio,
-                points,
-                wall_time,
-            ))
-        }
-        Study::SpeedSweep(sweep) => {
-            // The shape every point must have: its DAF and force columns,
-            // a surface of the sweep.
-            let layout = speed_sweep::assemble(&loaded.scenario, sweep, Vec::new(), 0.0);
-            let fits = |q: &SweepPoint| {
-                q.dafs.len() == layout.daf_sources.len()
-                    && q.max_forces.len() == layout.force_records.len()
-                    && q.max_abs.len() == layout.records.len()
-                    && q.roughness < layout.roughness.len()
-            };
-            let mut points = Vec::new();
-            for p in parts {
-                let count = p.end - p.first;
-                let PartData::SpeedSweep { points: more } = p.data else {
-                    return Err(wrong());
-                };
-                if more.len() != count || !more.iter().all(fits) {
-                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
-                }
-                points.extend(more);
-            }
-            Results::SpeedSweep(speed_sweep::assemble(
-                &loaded.scenario,
-                sweep,
-                points,
-                wall_time,
-            ))
-        }
-        Study::ResonanceCheck(check) => {
-            let mut points = Vec::new();
-            for p in parts {
-                let count = p.end - p.first;
-                let PartData::ResonanceCheck { points: more } = p.data else {
-                    return Err(wrong());
-                };
-                let fits =
-                    |q: &crate::study::resonance::ResonancePoint| q.train < check.trains.len();
-                if more.len() != count || !more.iter().all(fits) {
-                    return Err(short(p.shard, more.len(), count, rerun(p.shard)));
-                }
-                points.extend(more);
-            }
-            Results::ResonanceCheck(crate::study::resonance::assemble(check, points, wall_time))
-        }
-        Study::MonteCarlo(mc) => {
-            let mut slices = Vec::with_capacity(parts.len());
-            for p in parts {
-                let PartData::MonteCarlo(slice) = p.data else {
-                    return Err(wrong());
-                };
-                slice.check(mc, p.first..p.end).map_err(|e| {
-                    ShardError::Mismatch(format!(
-                        "shard {} of {count}: {e}; run it again: `{}`",
-                        p.shard,
-                        rerun(p.shard)
-                    ))
-                })?;
-                slices.push(slice);
-            }
-            Results::MonteCarlo(
-                monte_carlo::assemble(&loaded.scenario, mc, slices, wall_time)
-                    .map_err(|e| ShardError::Mismatch(e.to_string()))?,
-            )
-        }
-    };
-    Ok(Merged {
-        scenario_file: first_file,
-        loaded,
-        results,
-    })
-}
-
-fn short(shard: usize, got: usize, want: usize, command: String) -> ShardError {
-    ShardError::Mismatch(format!(
-        "shard {shard} holds {got} points of another shape or count than the {want} of its slice; \
-         run it again: `{command}`"
-    ))
 }
 
 /// The command that writes shard `shard`'s part again: `vbi run SCENE

@@ -28,9 +28,6 @@ use crate::scenario::sweep;
 use crate::scene::{Bridge, Quantity, Scenario, SpeedSweep, SweepRoughness, Vehicle};
 use crate::solve;
 
-/// km/h per m/s.
-pub const KM_H: f64 = 3.6;
-
 /// Where a DAF column of the sweep is taken.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 #[serde(tag = "at", rename_all = "snake_case")]
@@ -337,10 +334,13 @@ pub fn run_slice(
     let (layout, jobs) = layout(base, study);
     let total = range.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let token = crate::solve::cancel::current();
     jobs[range]
         .par_iter()
         .map(|&job| {
-            let point = run_point(base, bridge, &layout.daf_sources, job);
+            let point = crate::solve::cancel::in_scope(token.as_ref(), || {
+                run_point(base, bridge, &layout.daf_sources, job)
+            });
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             point
@@ -430,20 +430,25 @@ impl SweepResults {
     }
 
     /// The sweep as CSV: one row per (surface, sample, speed) with
-    /// `roughness,sample,seed,speed_m_s,speed_km_h`, a `daf_…` column per
-    /// DAF source, a `max_<record>_N` column per contact force record, and a
-    /// `max_abs_<record>_<unit>` column per record (every quantity).
+    /// `roughness,sample,seed,speed [m/s],speed [km/h]`, a `daf_…` column per
+    /// DAF source, a `max_<record> [N]` column per contact force record, and a
+    /// `max_abs_<record> [unit]` column per record (every quantity).
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
-        let mut header: Vec<String> = ["roughness", "sample", "seed", "speed_m_s", "speed_km_h"]
-            .map(String::from)
-            .to_vec();
+        let mut header: Vec<String> =
+            ["roughness", "sample", "seed", "speed [m/s]", "speed [km/h]"]
+                .map(String::from)
+                .to_vec();
         header.extend(self.daf_columns.iter().cloned());
-        header.extend(self.force_records.iter().map(|n| format!("max_{n}_N")));
+        header.extend(
+            self.force_records
+                .iter()
+                .map(|n| crate::report::heading(&format!("max_{n}"), "N")),
+        );
         header.extend(
             self.records
                 .iter()
-                .map(|(name, unit)| format!("max_abs_{name}_{unit}")),
+                .map(|(name, unit)| crate::report::heading(&format!("max_abs_{name}"), unit)),
         );
         out.write_record(&header).expect("writing to memory");
         let number = crate::report::number;
@@ -453,7 +458,7 @@ impl SweepResults {
                 p.sample.to_string(),
                 p.seed.map(|s| s.to_string()).unwrap_or_default(),
                 number(p.speed),
-                number(p.speed * KM_H),
+                number(crate::report::km_h(p.speed)),
             ];
             row.extend(p.dafs.iter().map(|d| d.map(number).unwrap_or_default()));
             row.extend(p.max_forces.iter().copied().map(number));

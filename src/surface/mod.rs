@@ -30,8 +30,8 @@ use rand_chacha::rand_core::SeedableRng;
 
 use self::interp::{CubicSpline, QuinticGrid, Triple};
 use self::shapes::Shape;
-use self::spectrum::Spectrum;
 use self::synth::{SpectralSeries, uniform};
+use crate::scene::Spectrum;
 use crate::scene::{Rails, Sampling, Surface, TrackDirection};
 
 /// Grid nodes per shortest wavelength of a sampled random profile: quintic

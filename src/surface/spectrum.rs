@@ -7,8 +7,7 @@
 
 use std::f64::consts::PI;
 
-use schemars::JsonSchema;
-use serde::{Deserialize, Serialize};
+use crate::scene::{Interference, IsoClass, Spectrum};
 
 /// One square centimetre in square metres: the FRA tables give A in
 /// cm²·rad/m.
@@ -86,16 +85,6 @@ pub const GERMAN_CUTOFF: f64 = 0.8246;
 /// German high-speed spectra: Ω_r, rad/m.
 pub const GERMAN_ROLL_OFF: f64 = 0.0206;
 
-/// Interference level of the German high-speed spectra.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum Interference {
-    /// Low interference (good track): A_v = 4.032e-7, A_a = 2.119e-7 m·rad.
-    Low,
-    /// High interference: A_v = 1.080e-6, A_a = 6.125e-7 m·rad.
-    High,
-}
-
 impl Interference {
     /// (A_v, A_a), m²·rad/m.
     fn coefficients(self) -> (f64, f64) {
@@ -133,27 +122,6 @@ fn german_shape(a: f64, omega: f64) -> f64 {
 /// Reference spatial frequency of ISO 8608, n₀ = 0.1 cycle/m.
 pub const ISO_REFERENCE_FREQUENCY: f64 = 0.1;
 
-/// ISO 8608 road classes A (best) to H.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-pub enum IsoClass {
-    /// G_d(n₀) = 16e-6 m³.
-    A,
-    /// 64e-6 m³.
-    B,
-    /// 256e-6 m³.
-    C,
-    /// 1024e-6 m³.
-    D,
-    /// 4096e-6 m³.
-    E,
-    /// 16384e-6 m³.
-    F,
-    /// 65536e-6 m³.
-    G,
-    /// 262144e-6 m³.
-    H,
-}
-
 impl IsoClass {
     /// G_d(n₀), m³ (= m²/(cycle/m)): the geometric mean of the class's
     /// range in ISO 8608 Table 1 (class A: < 32e-6, B: 32–128e-6, …, each
@@ -172,37 +140,6 @@ impl IsoClass {
 pub fn iso8608(class: IsoClass, omega: f64) -> f64 {
     let omega0 = 2.0 * PI * ISO_REFERENCE_FREQUENCY;
     class.reference_density() / (2.0 * PI) * (omega / omega0).powi(-2)
-}
-
-/// A spectrum a random track or road profile is sampled from.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "spectrum", rename_all = "snake_case")]
-pub enum Spectrum {
-    /// FRA vertical profile, class 1–6 ([`fra_vertical`]).
-    Fra {
-        /// Track class 1 (worst) to 6 (best).
-        class: u8,
-    },
-    /// German high-speed vertical profile ([`german_vertical`]).
-    German {
-        /// Interference level.
-        interference: Interference,
-    },
-    /// ISO 8608 road class ([`iso8608`]).
-    Iso8608 {
-        /// Road class A–H.
-        class: IsoClass,
-    },
-    /// FRA alignment (lateral), class 1–6 ([`fra_alignment`]).
-    FraAlignment {
-        /// Track class 1 (worst) to 6 (best).
-        class: u8,
-    },
-    /// German high-speed alignment ([`german_alignment`]).
-    GermanAlignment {
-        /// Interference level.
-        interference: Interference,
-    },
 }
 
 impl Spectrum {

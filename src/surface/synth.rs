@@ -21,7 +21,7 @@ use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::{Rng, SeedableRng};
 
 use super::interp::Triple;
-use super::spectrum::Spectrum;
+use crate::scene::Spectrum;
 
 /// Uniform sample in [0, 1) from the top 53 bits of a 64-bit draw.
 pub(super) fn uniform(rng: &mut ChaCha8Rng) -> f64 {

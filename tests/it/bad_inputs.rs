@@ -342,8 +342,13 @@ fn judge(case: &Case, label: &str, shown_path: &str, out: &Output) -> Vec<String
         fail(format!("{errors} diagnostics, want 1"));
     }
     // The excerpt: the offending line with its number in the gutter, and a caret.
+    // A suggestion (`= help: did you mean …?`, rustc's form) may follow the caret.
     let gutter = format!("\n{} |", case.line);
-    if !stderr.contains(&gutter) || !stderr.trim_end().ends_with('^') {
+    let excerpt_end = match stderr.trim_end().rsplit_once('\n') {
+        Some((before, last)) if last.trim_start().starts_with("= help: ") => before,
+        _ => stderr.trim_end(),
+    };
+    if !stderr.contains(&gutter) || !excerpt_end.ends_with('^') {
         fail("no source excerpt with a caret".into());
     }
     if stderr.contains("YAML syntax error: YAML syntax error") {

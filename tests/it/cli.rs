@@ -300,8 +300,8 @@ fn modes_prints_the_yang_yau_frequencies_and_writes_shapes() {
     let csv = std::fs::read_to_string(&shapes).expect("shapes CSV");
     let mut rows = csv.lines();
     let header: Vec<&str> = rows.next().unwrap().split(',').collect();
-    let want: Vec<String> = std::iter::once("x".to_owned())
-        .chain((1..=10).map(|i| format!("mode{i}")))
+    let want: Vec<String> = std::iter::once("x [m]".to_owned())
+        .chain((1..=10).map(|i| format!("mode{i} [1/kg^0.5]")))
         .collect();
     assert_eq!(header, want);
     let values: Vec<Vec<f64>> = rows

@@ -218,6 +218,53 @@ fn cheapest_within_tolerance_is_the_largest_step_that_meets_it() {
     assert_eq!(strict.cheapest, None);
 }
 
+/// With every run within tolerance, the combined ladder pairs each coarser
+/// step with each smaller mode count (finest step, most modes first); runs
+/// outside the tolerance on their own ladder are not combined.
+#[test]
+fn the_combined_ladder_pairs_coarser_steps_with_fewer_modes() {
+    let study = study(&smooth_scene(2.5e-4, ""), 3, 1.0);
+    let combined: Vec<&str> = study
+        .runs
+        .iter()
+        .filter(|r| r.ladder == Ladder::Combined)
+        .map(|r| r.label.as_str())
+        .collect();
+    assert_eq!(
+        combined,
+        [
+            "dt=5e-4 s, 2 modes",
+            "dt=5e-4 s, 1 mode",
+            "dt=1e-3 s, 2 modes",
+            "dt=1e-3 s, 1 mode"
+        ]
+    );
+    // Each combined run is measured against the reference like the others.
+    for run in study.runs.iter().filter(|r| r.ladder == Ladder::Combined) {
+        assert!(run.worst_max_abs().unwrap() > 0.0, "{}", run.label);
+    }
+    // From the measured runs: only the halves within tolerance combine.
+    let at = |ladder, time_step, modes, error| RunReport {
+        ladder,
+        time_step,
+        modes,
+        ..synthetic("", 1.0, error)
+    };
+    let runs = [
+        at(Ladder::TimeStep, 1e-3, 8, 0.001),
+        at(Ladder::TimeStep, 2e-3, 8, 0.005),
+        at(Ladder::TimeStep, 4e-3, 8, 0.05),
+        at(Ladder::Modes, 1e-3, 4, 0.002),
+        at(Ladder::Modes, 1e-3, 2, 0.2),
+    ];
+    let pairs: Vec<(f64, usize)> = converge::combined_plan(&runs, 1e-3, 8, 0.01, &[])
+        .iter()
+        .map(|r| (r.time_step, r.modes))
+        .collect();
+    assert_eq!(pairs, [(2e-3, 4)]);
+    assert!(converge::combined_plan(&runs, 1e-3, 8, 0.0001, &[]).is_empty());
+}
+
 fn synthetic(label: &str, wall_time: f64, error: f64) -> RunReport {
     RunReport {
         label: label.into(),
@@ -343,10 +390,30 @@ fn cli_writes_csv_and_png() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
-        Some("label,time_step,modes,steps,wall_time,quantity,max_abs_error,rms_error,failure")
+        Some(
+            "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,rms_error,failure"
+        )
     );
-    // 3 time-step runs + 2 mode runs (2 and 1 modes), 5 quantities each.
-    assert_eq!(lines.count(), 5 * 5);
+    // 3 time-step runs + 2 mode runs (2 and 1 modes), then the combined
+    // ladder's runs (a coarser step with fewer modes, each half within the
+    // tolerance on its own ladder), 5 quantities each.
+    let rows = csv_rows(&csv);
+    assert_eq!(rows.len() % 5, 0);
+    let labels: Vec<&str> = rows.iter().step_by(5).map(|r| r[0].as_str()).collect();
+    assert_eq!(
+        labels[..5],
+        [
+            "dt=1e-3 s, 4 modes",
+            "dt=2e-3 s, 4 modes",
+            "dt=4e-3 s, 4 modes",
+            "dt=1e-3 s, 2 modes",
+            "dt=1e-3 s, 1 mode"
+        ]
+    );
+    for row in rows.iter().skip(25).step_by(5) {
+        let (step, modes): (f64, usize) = (row[1].parse().unwrap(), row[2].parse().unwrap());
+        assert!(step > 1e-3 && modes < 4, "{row:?}");
+    }
     let png = std::fs::read(dir.join("conv/converge.png")).unwrap();
     assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
     let _ = std::fs::remove_dir_all(&dir);
@@ -416,4 +483,149 @@ fn quantities_are_judged_on_their_own_and_can_be_left_out() {
     };
     let error = converge::converge(&loaded, &unknown, &mut |_, _, _| {}).unwrap_err();
     assert!(error.to_string().contains("no-such-record"), "{error}");
+}
+
+/// The records of converge.csv after its header.
+fn csv_rows(text: &str) -> Vec<Vec<String>> {
+    csv::Reader::from_reader(text.as_bytes())
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .collect()
+}
+
+/// The smooth scene in block style, as a user writes it, with keys a pasted
+/// setting must replace (`time_step` inside `solver:`, `modes` inside
+/// `bridge:`) and keys it must leave alone.
+fn block_scene() -> String {
+    "name: smooth-block
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 3.2423e9
+  mass_per_length: 2000.0
+  modes: {count: 4}
+  damping: {type: modal, ratio: 0.02}
+vehicles:
+  - type: oscillator
+    sprung_mass: 4000.0
+    unsprung_mass: 1000.0
+    stiffness: 4.0e6
+    damping: 2.53e4
+    speed: 25.0
+solver:
+  method: coupled
+  time_step: 2.5e-4
+  free_vibration: 0.2
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 10.0}
+  - {name: sprung_acceleration, quantity: vehicle_acceleration, dof: sprung}
+  - {name: contact_force, quantity: contact_force, wheel: 1}
+"
+    .to_string()
+}
+
+/// Pastes a block of `parent:` / `  key: value` lines into `scene`: each
+/// `key` line replaces the line of the same key directly under the same
+/// top-level `parent` (as a user replaces a setting in an editor).
+fn paste(scene: &str, block: &str) -> String {
+    let mut lines: Vec<String> = scene.lines().map(str::to_string).collect();
+    let mut parent = String::new();
+    for line in block.lines().filter(|l| !l.trim_start().starts_with('#')) {
+        if line.trim().is_empty() {
+            continue;
+        }
+        if !line.starts_with(' ') {
+            parent = line.trim_end_matches(':').trim().to_string();
+            assert!(line.trim_end().ends_with(':'), "a parent line: {line:?}");
+            continue;
+        }
+        let key = line.trim_start().split(':').next().unwrap().to_string();
+        let start = lines
+            .iter()
+            .position(|l| *l == format!("{parent}:"))
+            .unwrap_or_else(|| panic!("no `{parent}:` in the scene"));
+        let end = lines[start + 1..]
+            .iter()
+            .position(|l| !l.starts_with(' '))
+            .map_or(lines.len(), |e| start + 1 + e);
+        let at = (start + 1..end)
+            .find(|&i| lines[i].trim_start().starts_with(&format!("{key}:")))
+            .unwrap_or_else(|| panic!("no `{key}` under `{parent}:`"));
+        lines[at] = line.to_string();
+    }
+    lines.join("\n") + "\n"
+}
+
+/// `vbi converge` hands over its answer: the YAML it prints (and writes to
+/// `cheapest.yaml`), pasted into the scene, runs, and the run is the chosen
+/// run of the study bit for bit (every recorded sample, compared by bits).
+#[test]
+fn printed_yaml_pasted_into_the_scene_reproduces_the_chosen_run() {
+    let dir = scratch("paste");
+    let scene = block_scene();
+    std::fs::write(dir.join("scene.yaml"), &scene).unwrap();
+    let out = vbi(
+        &[
+            "converge",
+            "scene.yaml",
+            "--tolerance",
+            "5%",
+            "--levels",
+            "3",
+            "--out",
+            "conv",
+            "--quiet",
+        ],
+        &dir,
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    let block = std::fs::read_to_string(dir.join("conv/cheapest.yaml"))
+        .expect("converge writes cheapest.yaml");
+    let yaml: String = block
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert!(stdout.contains(&yaml), "stdout lacks\n{yaml}\n{stdout}");
+    assert!(yaml.contains("solver:\n  time_step: "), "{yaml}");
+    assert!(yaml.contains("bridge:\n  modes: {count: "), "{yaml}");
+    // The chosen run, named by the summary line, and its resolution from
+    // converge.csv.
+    let label = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("cheapest within 5 %: "))
+        .expect("a cheapest run")
+        .trim();
+    let csv = std::fs::read_to_string(dir.join("conv/converge.csv")).unwrap();
+    let row = csv_rows(&csv)
+        .into_iter()
+        .find(|r| r[0] == label)
+        .unwrap_or_else(|| panic!("{label} in {csv}"));
+    let resolution = converge::Resolution {
+        time_step: row[1].parse().unwrap(),
+        modes: row[2].parse().unwrap(),
+    };
+    let pasted = paste(&scene, &block);
+    std::fs::write(dir.join("pasted.yaml"), &pasted).unwrap();
+    let run = vbi(&["run", "pasted.yaml", "--out", "run", "--quiet"], &dir);
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let chosen = converge::at_resolution(&load(&scene), resolution).unwrap();
+    let expected = vbi::run::simulate(chosen, &mut |_, _| {}).unwrap().history;
+    let got = vbi::run::simulate(load(&pasted), &mut |_, _| {})
+        .unwrap()
+        .history;
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&got.time), bits(&expected.time), "{pasted}");
+    assert_eq!(got.columns.len(), expected.columns.len());
+    for (g, e) in got.columns.iter().zip(&expected.columns) {
+        assert_eq!(g.name, e.name);
+        assert!(bits(&g.values) == bits(&e.values), "{} differs", g.name);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -15,9 +15,10 @@ use crate::support;
 use std::path::Path;
 
 use support::{Scratch, max_abs};
-use vbi::bridge::fe_import::{Direction, abaqus, harwell_boeing};
+use vbi::bridge::fe_import::{abaqus, harwell_boeing};
 use vbi::run::{Outcome, simulate};
 use vbi::scenario::{Loaded, load_file, load_str};
+use vbi::scene::imported::Direction;
 
 /// A beam scene with `vehicle`, `contact` and `solver` sections.
 fn beam_scene(spans: &str, vehicle: &str, contact: &str, solver: &str, modes: &str) -> String {

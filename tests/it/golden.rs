@@ -206,8 +206,12 @@ fn summary_snapshot(outcome: &Outcome) -> String {
         for (key, extreme, value_exp) in [
             ("max", Some(&typed.max), dynamic),
             ("min", Some(&typed.min), dynamic),
-            ("max_abs", Some(&typed.max_abs), dynamic),
-            ("static_max_abs", typed.static_max_abs.as_ref(), fixed),
+            ("largest_magnitude", Some(&typed.max_abs), dynamic),
+            (
+                "static_largest_magnitude",
+                typed.static_max_abs.as_ref(),
+                fixed,
+            ),
         ] {
             let Some(extreme) = extreme else { continue };
             let value = quantise(extreme.value, value_exp);

@@ -749,8 +749,8 @@ fn a_lateral_record_on_a_plane_beam_is_refused() {
 /// √1.7 × the vertical ones (the stiffened copy), to 1e-9.
 #[test]
 fn an_imported_model_offers_lateral_mode_components() {
-    use vbi::bridge::fe_import::Direction;
     use vbi::contact::ContactDirection;
+    use vbi::scene::imported::Direction;
     let dir = folder("lateral-components");
     harmonic_csv(&dir);
     let beam = "name: quake\n\

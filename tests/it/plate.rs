@@ -599,7 +599,7 @@ fn navier_moments(
 /// basis).
 #[test]
 fn plate_moments_match_navier() {
-    use vbi::bridge::plate::moments::PlateMoment;
+    use vbi::scene::PlateMoment;
     let (a, b, h, e, nu, _) = SS_PLATE;
     let deck = ss_plate((36, 16));
     let mut deck = deck;

@@ -164,7 +164,7 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
     assert!(line.contains(" at t = "), "{line}");
     // Its static share is exactly ∝ 1/EI: new / old = 1/1.001 to the 7
     // digits the report shows (measured 4e-8).
-    let line = report_line(&report, "quantities.midspan.static_max_abs.value")
+    let line = report_line(&report, "quantities.midspan.static_largest_magnitude.value")
         .unwrap_or_else(|| panic!("static deflection not named:\n{report}"));
     let (old, new) = old_new(line);
     assert!(
@@ -175,7 +175,7 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
     // A plot of old against new for the changed history column.
     let plot = plots
         .join("moving-force-slow")
-        .join("history-midspan_m_min.png");
+        .join("history-midspan_min_m.png");
     assert!(plot.is_file(), "no plot {}:\n{report}", plot.display());
     assert!(report.contains("plot: "), "{report}");
 }
@@ -330,9 +330,9 @@ fn study_table_change_is_caught() {
     );
     assert_exit(&out, 1);
     let report = text(&out.stdout);
-    let line = report_line(&report, "study: max_abs_midspan_m")
+    let line = report_line(&report, "study: max_abs_midspan [m]")
         .unwrap_or_else(|| panic!("study column not named:\n{report}"));
-    assert!(line.contains("speed_m_s = "), "{line}");
+    assert!(line.contains("speed [m/s] = "), "{line}");
     let relative = relative_of(line);
     assert!(
         (-1.5e-3..-0.5e-3).contains(&relative),

@@ -5,8 +5,8 @@
 
 use vbi::execute::{Results, execute};
 use vbi::scenario::load_str;
-use vbi::scenario::raw::HslmModel;
 use vbi::scenario::resolved::Vehicle;
+use vbi::scene::HslmModel;
 
 /// HSLM-A1 (N = 18, D = 18 m, d = 2 m, P = 170 kN) by hand from Figure E.2:
 /// power car 0, 3, 14, 17 m; end coach bogie 3.525 m behind: 20.525,

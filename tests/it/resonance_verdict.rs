@@ -52,8 +52,8 @@ fn km_h_column(csv: &str, train: &str) -> Vec<String> {
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
     let at = header
         .iter()
-        .position(|h| *h == "speed_km_h")
-        .expect("speed_km_h column");
+        .position(|h| *h == "speed [km/h]")
+        .expect("speed [km/h] column");
     lines
         .map(|l| l.split(',').collect::<Vec<_>>())
         .filter(|row| row[0] == train)

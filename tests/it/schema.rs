@@ -241,6 +241,75 @@ fn invalid_documents_are_rejected() {
     );
 }
 
+/// Unit strings (issue 28.2): the schema accepts each dimension's units
+/// where `vbi check` does, and refuses a unit of another dimension or none.
+#[test]
+fn the_schema_accepts_units_of_the_right_dimension_only() {
+    let validator = validator();
+    let accepted: &[(&str, &str)] = &[
+        ("spans: [20.0]", "spans: [20 m, 20000 mm, 0.02 km, 2e3 cm]"),
+        ("bending_stiffness: 3.2e9", "bending_stiffness: 3.2 GN*m^2"),
+        ("bending_stiffness: 3.2e9", "bending_stiffness: 3.2 GN·m²"),
+        ("mass_per_length: 2000.0", "mass_per_length: 2 t/m"),
+        ("loads: [100000.0]", "loads: [100 kN]"),
+        ("loads: [100000.0]", "loads: [0.1 MN]"),
+        ("loads: [100000.0]", "loads: [1e5 N]"),
+        ("speed: 20.0", "speed: 72 km/h"),
+        ("x: 10.0", "x: 10 m"),
+        (
+            "    speed: 20.0\n",
+            "    speed: 20.0\n    acceleration: -0.1 g\n    entry_time: 250 ms\n",
+        ),
+        (
+            "  - type: moving_force\n    loads: [100000.0]\n    speed: 20.0\n",
+            "  - {type: oscillator, sprung_mass: 5.75 t, stiffness: 1595 kN/m, \
+             damping: 3.5 kN*s/m, speed: 20.0}\n",
+        ),
+        (
+            "  mass_per_length: 2000.0\n",
+            "  mass_per_length: 2000.0\n  modes: {max_frequency: 30 Hz}\n",
+        ),
+    ];
+    let refused: &[(&str, &str)] = &[
+        ("spans: [20.0]", "spans: [20 s]"),
+        ("spans: [20.0]", "spans: [20 kg]"),
+        ("spans: [20.0]", "spans: [20 furlongs]"),
+        ("bending_stiffness: 3.2e9", "bending_stiffness: 3.2 GN/m"),
+        ("mass_per_length: 2000.0", "mass_per_length: 2 t"),
+        ("loads: [100000.0]", "loads: [100 kN/m]"),
+        ("x: 10.0", "x: '10'"),
+        ("x: 10.0", "x: ten m"),
+    ];
+    let mut wrong = Vec::new();
+    for (valid, cases) in [(true, accepted), (false, refused)] {
+        for (from, to) in cases {
+            assert!(VALID.contains(from), "{from:?} not in VALID");
+            let source = VALID.replacen(from, to, 1);
+            let instance = yaml_to_json(&source, to);
+            if validator.is_valid(&instance) != valid {
+                wrong.push(format!("{to} (want valid: {valid})"));
+            }
+            // `vbi check` agrees (the schema is only as right as this).
+            let checked = vbi::scenario::load_str(&source, "units.yaml").is_ok();
+            if checked != valid {
+                wrong.push(format!("{to}: vbi check says valid = {checked}"));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The schema names itself (issue 28.5): editors and other schemas refer to
+/// it by this `$id` wherever the file is copied.
+#[test]
+fn the_schema_has_an_id() {
+    assert_eq!(
+        schema()["$id"],
+        "https://vbi.dev/schema/vbi.schema.json",
+        "the README's editor set-up states this $id"
+    );
+}
+
 // ---------------------------------------------------------------------------
 // (e) the schema itself: draft 2020-12, resolvable, documented
 // ---------------------------------------------------------------------------

@@ -263,9 +263,11 @@ fn envelopes_csv_is_written() {
     let text = std::fs::read_to_string(scratch.path("envelopes.csv")).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();
-    assert!(header.starts_with("x_m,bridge_displacement_max_m,bridge_displacement_max_time_s"));
-    assert!(header.contains("bridge_moment_max_N*m") && header.contains("bridge_shear_min_N"));
-    assert!(header.contains("bridge_acceleration_max_m/s^2"));
+    assert!(
+        header.starts_with("x [m],bridge_displacement_max [m],bridge_displacement_max_time [s]")
+    );
+    assert!(header.contains("bridge_moment_max [N*m]") && header.contains("bridge_shear_min [N]"));
+    assert!(header.contains("bridge_acceleration_max [m/s^2]"));
     assert_eq!(lines.count(), 21);
 }
 

@@ -305,9 +305,9 @@ fn run_writes_every_output_and_nothing_on_failure() {
     assert_eq!(lines.len(), 1 + (1 + 2) * 4, "{csv}");
     assert_eq!(
         lines[0],
-        "roughness,sample,seed,speed_m_s,speed_km_h,daf_span1_girder1,daf_span2_girder1,\
-         daf_mid1,daf_mid2,daf_quarter,max_rear_N,max_abs_mid1_m,max_abs_mid2_m,\
-         max_abs_quarter_m,max_abs_rear_N"
+        "roughness,sample,seed,speed [m/s],speed [km/h],daf_span1_girder1,daf_span2_girder1,\
+         daf_mid1,daf_mid2,daf_quarter,max_rear [N],max_abs_mid1 [m],max_abs_mid2 [m],\
+         max_abs_quarter [m],max_abs_rear [N]"
     );
     assert!(lines[1].starts_with("smooth,1,,10,36,"), "{}", lines[1]);
     assert!(lines[5].starts_with("good,1,1,10,36,"), "{}", lines[5]);
@@ -402,11 +402,11 @@ fn a_sweep_keeps_every_recorded_quantity() {
     let csv = String::from_utf8(results.to_csv()).unwrap();
     let header = csv.lines().next().unwrap();
     for column in [
-        "max_abs_acc_m/s^2",
-        "max_abs_moment_N*m",
-        "max_abs_shear_N",
-        "max_abs_mid1_m",
-        "max_abs_rear_N",
+        "max_abs_acc [m/s^2]",
+        "max_abs_moment [N*m]",
+        "max_abs_shear [N]",
+        "max_abs_mid1 [m]",
+        "max_abs_rear [N]",
     ] {
         assert!(
             header.split(',').any(|c| c == column),

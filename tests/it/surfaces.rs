@@ -7,9 +7,9 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 use vbi::scenario::resolved::{Rails, Sampling, Surface, TrackDirection};
+use vbi::scene::{Interference, IsoClass, Spectrum};
 use vbi::surface::spectrum::{
-    Interference, IsoClass, Spectrum, fra_alignment, fra_vertical, german_alignment,
-    german_vertical, iso8608,
+    fra_alignment, fra_vertical, german_alignment, german_vertical, iso8608,
 };
 use vbi::surface::synth::SpectralSeries;
 use vbi::surface::{Profile, Rail};

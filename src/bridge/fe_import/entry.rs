@@ -26,20 +26,7 @@
 //! of s·w (product rule). Records at a point of the track are the model's
 //! own displacements (no weight).
 
-/// The entry weights at both ends of a track: x of the first and last rail
-/// node (the deck's ends, m) and the entry length at each (m; 0: the load
-/// enters at once, as on a beam whose end node is held by its support).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct RailEntry {
-    /// x of the track's first node, m.
-    pub start: f64,
-    /// x of the track's last node, m.
-    pub end: f64,
-    /// Entry length at the first node, m (0: none).
-    pub entry: f64,
-    /// Exit length at the last node, m (0: none).
-    pub exit: f64,
-}
+use crate::scene::imported::RailEntry;
 
 /// S(u), S′(u), S″(u) of the quintic smoothstep, u in [0, 1] (clamped).
 #[inline]

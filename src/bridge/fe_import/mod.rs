@@ -22,43 +22,9 @@ pub mod track;
 
 use std::collections::HashMap;
 
-use schemars::JsonSchema;
-use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use self::track::RailDofs;
-
-/// A displacement or rotation direction of a node.
-#[derive(
-    Debug,
-    Clone,
-    Copy,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    PartialOrd,
-    Ord,
-    Serialize,
-    Deserialize,
-    JsonSchema,
-)]
-#[serde(rename_all = "snake_case")]
-pub enum Direction {
-    /// Along the track, m.
-    Ux,
-    /// Lateral, m.
-    Uy,
-    /// Vertical, up, m.
-    #[default]
-    Uz,
-    /// Rotation about x, rad.
-    Rx,
-    /// Rotation about y (lateral axis), rad.
-    Ry,
-    /// Rotation about z, rad.
-    Rz,
-}
+use crate::scene::imported::{Direction, ImportedModel, RailDofs, RailEntry, RotationSign};
 
 impl Direction {
     /// In Abaqus's order, DOF 1 … 6.
@@ -91,32 +57,6 @@ impl Direction {
     pub fn is_rotation(self) -> bool {
         matches!(self, Direction::Rx | Direction::Ry | Direction::Rz)
     }
-}
-
-/// How the file's slope rotations turn into this program's right-handed
-/// ones (∂w/∂x = −ry, ∂v/∂x = +rz): ry here = `ry` × ry in the file, and the
-/// same for rz. A 2D textbook beam's θ = +∂w/∂x written as ry needs
-/// `ry: -1`. The files' K, M and C are read with the sign of every entry
-/// with exactly one such rotation index flipped (θ = −ry is a change of
-/// variable: frequencies unchanged, mode shapes' rotations negated), and a
-/// record of the rotation reports the right-handed value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct RotationSign {
-    /// Sign of the file's ry (−1 or +1; default +1): −1 when the file's ry
-    /// is the slope +∂w/∂x.
-    #[serde(default = "plus_one")]
-    #[schemars(transform = crate::scenario::schema::sign)]
-    pub ry: i64,
-    /// Sign of the file's rz (−1 or +1; default +1): −1 when the file's rz
-    /// is −∂v/∂x.
-    #[serde(default = "plus_one")]
-    #[schemars(transform = crate::scenario::schema::sign)]
-    pub rz: i64,
-}
-
-fn plus_one() -> i64 {
-    1
 }
 
 impl Default for RotationSign {
@@ -268,39 +208,6 @@ fn fail_at<T>(
 /// |Aᵢⱼ − Aⱼᵢ| ≤ tol · max|A| (FE programs print 6–16 digits; 1e-6 admits
 /// the 7 significant digits of a single-precision print).
 pub const SYMMETRY_TOLERANCE: f64 = 1e-6;
-
-/// An imported model on its free DOFs, with its rails.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ImportedModel {
-    /// (node, direction) of each free DOF.
-    pub dofs: Vec<(u64, Direction)>,
-    /// Stiffness, both triangles, on the free DOFs (N/m, N·m/rad).
-    pub stiffness: Vec<(usize, usize, f64)>,
-    /// Mass, both triangles, on the free DOFs (kg, kg·m²).
-    pub mass: Vec<(usize, usize, f64)>,
-    /// Damping, both triangles, on the free DOFs (N·s/m), if given.
-    pub damping: Option<Vec<(usize, usize, f64)>>,
-    /// The rails, x from the deck entrance.
-    pub rails: Vec<RailDofs>,
-    /// Indices of the rails the vehicles run on (their average).
-    pub track: Vec<usize>,
-    /// Deck length: from the first rail node to the last, m.
-    pub length: f64,
-    /// Mass moving with a rigid vertical translation of every node (all
-    /// uz DOFs, constrained ones included), kg.
-    pub vertical_mass: f64,
-    /// M δ on the free DOFs, δ = 1 on every uz DOF (constrained ones
-    /// included: the supports move with the ground), kg: the inertia load
-    /// of a unit vertical ground acceleration ([`crate::ground`]).
-    pub vertical_inertia: Vec<f64>,
-    /// M δ on the free DOFs, δ = 1 on every uy DOF (constrained ones
-    /// included), kg: the inertia load of a unit lateral ground
-    /// acceleration; all zero for a model without lateral DOFs.
-    pub lateral_inertia: Vec<f64>,
-    /// How a wheel's load passes onto the track at its ends ([`entry`]);
-    /// none unless the scene sets it.
-    pub entry: entry::RailEntry,
-}
 
 /// A rail as given: name and (node, x) pairs.
 pub type RailNodes = (String, Vec<(u64, f64)>);
@@ -524,7 +431,7 @@ impl ImportedModel {
             vertical_mass,
             vertical_inertia,
             lateral_inertia,
-            entry: entry::RailEntry {
+            entry: RailEntry {
                 start: 0.0,
                 end: end - origin,
                 entry: 0.0,

@@ -41,8 +41,8 @@
 
 use std::collections::HashMap;
 
-use super::track::RailDofs;
 use super::{AssemblyError, Direction, RotationSign, Source, fail};
+use crate::scene::imported::RailDofs;
 
 /// |σ̂| from which a rail segment counts as evidence: half the exact ±1 of
 /// a mirror-symmetric beam element.

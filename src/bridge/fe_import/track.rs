@@ -19,6 +19,7 @@
 //! field (uy, with rz as its slope: ∂v/∂x = +rz) uses the same code.
 
 use super::super::hermite::{shape_curvatures, shape_functions};
+use crate::scene::imported::RailDofs;
 
 /// Which displacement a rail field follows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,26 +28,6 @@ pub enum RailDirection {
     Vertical,
     /// Lateral: uy, slope +rz (for the 3D train, issue 13).
     Lateral,
-}
-
-/// One rail: its nodes along the track and where their DOFs sit among the
-/// free DOFs of the imported model.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RailDofs {
-    /// Rail name.
-    pub name: String,
-    /// Node ids along the rail.
-    pub nodes: Vec<u64>,
-    /// Node positions from the deck entrance, m, strictly increasing.
-    pub x: Vec<f64>,
-    /// Free DOF of each node's displacement (None: constrained, 0), per direction:
-    /// [vertical, lateral].
-    pub displacement: [Vec<Option<usize>>; 2],
-    /// Free DOF of each node's slope rotation (None: constrained or absent),
-    /// per direction: [ry, rz].
-    pub rotation: [Vec<Option<usize>>; 2],
-    /// Whether every node has the slope rotation (Hermite), per direction.
-    pub hermite: [bool; 2],
 }
 
 impl RailDofs {

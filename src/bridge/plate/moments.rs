@@ -35,22 +35,7 @@
 use super::PlateModes;
 use crate::bridge::BridgeError;
 use crate::bridge::hermite::{HermiteField, shape_curvatures, shape_functions};
-
-/// Which moment per unit width.
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize, schemars::JsonSchema,
-)]
-pub enum PlateMoment {
-    /// m_x: longitudinal bending (about the transverse axis), N·m/m.
-    #[serde(rename = "mx")]
-    Longitudinal,
-    /// m_y: transverse bending, N·m/m.
-    #[serde(rename = "my")]
-    Transverse,
-    /// m_xy: twisting, N·m/m.
-    #[serde(rename = "mxy")]
-    Twisting,
-}
+use crate::scene::PlateMoment;
 
 /// A moment per unit width at one point: its modal moments and, for the
 /// static correction, its influence line along every wheel line.

@@ -14,10 +14,24 @@ const TITLE_BAND: u32 = 45;
 pub struct Panel<'a> {
     /// Vertical axis label with the unit, e.g. `bridge displacement (m)`.
     pub y_label: String,
-    /// The lines (same x for all panels: time).
+    /// The unit of the values, written after each peak's value (`m`, `N`).
+    pub unit: String,
+    /// The lines (same x for all panels: time); each one's peak (largest
+    /// |value|) is marked and labelled with its value and time.
     pub series: Vec<Series<'a>>,
-    /// Lines drawn thin and grey (e.g. the static response), not in the legend.
-    pub references: Vec<Series<'a>>,
+    /// Lines that belong to a series (e.g. its static response), drawn thin
+    /// and dashed in its colour, each with its own legend entry (its label).
+    pub references: Vec<Reference<'a>>,
+}
+
+/// A line drawn with a series of its panel (the static crossing response of
+/// a deflection): `of` is the index of that series in the panel.
+#[derive(Debug, Clone)]
+pub struct Reference<'a> {
+    /// Index of the series in [`Panel::series`] it belongs to.
+    pub of: usize,
+    /// The line (its label is its legend entry).
+    pub line: Series<'a>,
 }
 
 /// A vertical line across every panel at `x`, labelled at the top.
@@ -58,7 +72,7 @@ pub(super) fn render_history(
     }
     for s in panels
         .iter()
-        .flat_map(|p| p.series.iter().chain(&p.references))
+        .flat_map(|p| p.series.iter().chain(p.references.iter().map(|r| &r.line)))
     {
         if s.x.len() != s.y.len() {
             return Err(PlotError::InvalidInput(format!(
@@ -83,7 +97,7 @@ fn x_range_of(panels: &[Panel]) -> Range<f64> {
     let (x_lo, x_hi) = min_max(
         panels
             .iter()
-            .flat_map(|p| p.series.iter().chain(&p.references))
+            .flat_map(|p| p.series.iter().chain(p.references.iter().map(|r| &r.line)))
             .flat_map(|s| s.x.iter().copied())
             .filter(|&v| usable(v)),
     );
@@ -124,12 +138,20 @@ fn draw_history<DB: DrawingBackend>(
     markers: &[Marker],
     x_range: &Range<f64>,
 ) -> Result<(), PlotError> {
-    let body = root.titled(title, font(TITLE_SIZE)).map_err(draw_err)?;
+    let body = root
+        .titled(title, title_font(root, title))
+        .map_err(draw_err)?;
     let rows = body.split_evenly((panels.len(), 1));
+    // The unit of x for the peak labels: `time (s)` → `s`.
+    let x_unit = x_label
+        .rsplit_once('(')
+        .and_then(|(_, u)| u.strip_suffix(')'))
+        .unwrap_or("")
+        .to_string();
     for (k, (panel, area)) in panels.iter().zip(&rows).enumerate() {
         let last = k + 1 == panels.len();
         let x_label = if last { x_label } else { "" };
-        draw_panel(area, panel, x_range, x_label, markers, k == 0)?;
+        draw_panel(area, panel, x_range, x_label, &x_unit, markers, k == 0)?;
     }
     Ok(())
 }
@@ -167,6 +189,7 @@ fn draw_panel<DB: DrawingBackend>(
     panel: &Panel,
     x_range: &Range<f64>,
     x_label: &str,
+    x_unit: &str,
     markers: &[Marker],
     label_markers: bool,
 ) -> Result<(), PlotError> {
@@ -179,7 +202,7 @@ fn draw_panel<DB: DrawingBackend>(
     let references: Vec<Vec<(f64, f64)>> = panel
         .references
         .iter()
-        .map(|s| reduce(s.x, s.y, buckets))
+        .map(|r| reduce(r.line.x, r.line.y, buckets))
         .collect();
     let (y_lo, y_hi) = min_max(lines.iter().chain(&references).flatten().map(|p| p.1));
     let y_range = linear_range(y_lo, y_hi, 0.08);
@@ -246,25 +269,105 @@ fn draw_panel<DB: DrawingBackend>(
             .map_err(draw_err)?;
         }
     }
-    for line in &references {
+    let colour = |k: usize| PALETTE[k % PALETTE.len()];
+    for (r, line) in panel.references.iter().zip(&references) {
+        // A lighter, dashed line in its series' colour: which static
+        // response belongs to which record, when several share a panel.
+        let style = colour(r.of).mix(0.55).stroke_width(2);
         chart
-            .draw_series(LineSeries::new(
-                line.iter().copied(),
-                RGBColor(150, 150, 150).stroke_width(1),
-            ))
+            .draw_series(DashedLineSeries::new(line.iter().copied(), 8, 5, style))
             .map_err(draw_err)?;
+        if !r.line.label.is_empty() {
+            chart
+                .draw_series(LineSeries::new(std::iter::empty(), style))
+                .map_err(draw_err)?
+                .label(r.line.label)
+                .legend(move |(x, y)| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new(vec![(0, 0), (10, 0)], style)
+                        + PathElement::new(vec![(14, 0), (24, 0)], style)
+                });
+        }
     }
     for (k, (s, line)) in panel.series.iter().zip(&lines).enumerate() {
-        let style = PALETTE[k % PALETTE.len()].stroke_width(2);
+        let style = colour(k).stroke_width(2);
         chart
             .draw_series(LineSeries::new(line.iter().copied(), style))
             .map_err(draw_err)?
             .label(s.label)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
     }
-    if panel.series.iter().any(|s| !s.label.is_empty()) {
-        let runs: Vec<Vec<Vec<(f64, f64)>>> = lines.iter().map(|l| vec![l.clone()]).collect();
-        let position = legend_position(&chart, &panel.series, &runs)?;
+    // Peaks over the lines: a ring and `value unit at t` beside it.
+    let base = area.get_base_pixel();
+    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+    let step = (LABEL_SIZE as i32) + 2;
+    // The marker labels take the first line of the first panel.
+    let top = px_y.start + 2 + if label_markers { step } else { 0 };
+    let mut labels = Vec::new();
+    for (k, s) in panel.series.iter().enumerate() {
+        let Some((t, v)) = peak(s.x, s.y) else {
+            continue;
+        };
+        let c = colour(k);
+        chart
+            .draw_series(std::iter::once(Circle::new((t, v), 5, c.stroke_width(2))))
+            .map_err(draw_err)?;
+        let at = chart.backend_coord(&(t, v));
+        // Right of the ring, or left of it in the right third; above a
+        // maximum and below a minimum (away from the line), one line
+        // further per series so that neighbouring peaks' labels do not
+        // sit on each other; inside the plotting area.
+        let right_third = at.0 > px_x.start + 2 * (px_x.end - px_x.start) / 3;
+        let text = peak_label(v, &panel.unit, t, x_unit);
+        let width = area
+            .estimate_text_size(&text, &font(LABEL_SIZE - 1.0))
+            .map_or(200, |(w, _)| w as i32);
+        let left = if right_third {
+            at.0 - 9 - width
+        } else {
+            at.0 + 9
+        };
+        let dy = if v >= 0.0 {
+            -step - step * k as i32
+        } else {
+            4 + step * k as i32
+        };
+        let y = (at.1 + dy).clamp(top, (px_y.end - step).max(top));
+        labels.push((text, k, (left, y), width));
+    }
+    let labelled: Vec<Series> = panel
+        .series
+        .iter()
+        .chain(panel.references.iter().map(|r| &r.line))
+        .copied()
+        .collect();
+    if labelled.iter().any(|s| !s.label.is_empty()) {
+        // The legend avoids the lines and the peak labels (each label's
+        // outline, in data coordinates, counts as a line).
+        let to_data = |(px, py): (i32, i32)| {
+            let fx = f64::from(px - px_x.start) / f64::from((px_x.end - px_x.start).max(1));
+            let fy = f64::from(py - px_y.start) / f64::from((px_y.end - px_y.start).max(1));
+            (
+                x_range.start + fx * (x_range.end - x_range.start),
+                y_range.end - fy * (y_range.end - y_range.start),
+            )
+        };
+        let runs: Vec<Vec<Vec<(f64, f64)>>> = lines
+            .iter()
+            .chain(&references)
+            .map(|l| vec![l.clone()])
+            .chain(labels.iter().map(|(_, _, (x, y), w)| {
+                let corners = [
+                    (*x, *y),
+                    (x + w, *y),
+                    (x + w, y + step),
+                    (*x, y + step),
+                    (*x, *y),
+                ];
+                vec![corners.into_iter().map(to_data).collect()]
+            }))
+            .collect();
+        let position = legend_position(&chart, &labelled, &runs)?;
         chart
             .configure_series_labels()
             .position(position)
@@ -275,5 +378,47 @@ fn draw_panel<DB: DrawingBackend>(
             .draw()
             .map_err(draw_err)?;
     }
+    // Labels last: over the legend box if it could go nowhere else.
+    for (text, k, (x, y), _) in labels {
+        let c = colour(k);
+        let style = font(LABEL_SIZE - 1.0).color(&c);
+        area.draw(&Text::new(text, (x - base.0, y - base.1), style))
+            .map_err(draw_err)?;
+    }
     Ok(())
+}
+
+/// The sample of largest |y| (the first of equals), as (x, y).
+pub(super) fn peak(x: &[f64], y: &[f64]) -> Option<(f64, f64)> {
+    x.iter()
+        .zip(y)
+        .filter(|&(&a, &b)| usable(a) && usable(b))
+        .fold(None, |best: Option<(f64, f64)>, (&a, &b)| match best {
+            Some((_, v)) if v.abs() >= b.abs() => best,
+            _ => Some((a, b)),
+        })
+}
+
+/// A peak's label: the value to 4 significant digits with its unit, and
+/// where, its abscissa to 3 decimals in `x_unit` (`-5.772×10⁻⁴ m at 1.100 s`).
+pub(super) fn peak_label(value: f64, unit: &str, time: f64, x_unit: &str) -> String {
+    let magnitude = value.abs();
+    let value = if magnitude == 0.0 || (1e-2..1e5).contains(&magnitude) {
+        let decimals = (3 - magnitude.log10().floor() as i32).clamp(0, 6) as usize;
+        format!("{value:.decimals$}")
+    } else {
+        pow10_digits(value, 4)
+    };
+    let value = value.replacen('-', "−", 1);
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    let x_unit = if x_unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {x_unit}")
+    };
+    format!("{value}{unit} at {time:.3}{x_unit}")
 }

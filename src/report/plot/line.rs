@@ -44,6 +44,14 @@ pub(super) fn render_line_chart(
             if !cur.is_empty() {
                 runs.push(cur);
             }
+            // A long run (a Monte Carlo envelope at every step) is drawn
+            // as the minimum and maximum of each pixel column: every peak
+            // kept, and no thousands of sub-pixel steep segments, which the
+            // bitmap backend drew as broken dashes (issue 28.7).
+            for run in runs.iter_mut().filter(|r| r.len() > 4 * WIDTH as usize) {
+                let (x, y): (Vec<f64>, Vec<f64>) = run.iter().copied().unzip();
+                *run = super::history::reduce(&x, &y, WIDTH as usize);
+            }
             runs
         })
         .collect();

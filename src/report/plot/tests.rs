@@ -655,6 +655,7 @@ fn history_panels_stack_and_keep_every_peak() {
     let panels = [
         Panel {
             y_label: "a (m)".into(),
+            unit: "m".into(),
             series: vec![Series {
                 label: "a",
                 x: &t,
@@ -664,15 +665,19 @@ fn history_panels_stack_and_keep_every_peak() {
         },
         Panel {
             y_label: "b (N)".into(),
+            unit: "N".into(),
             series: vec![Series {
                 label: "b",
                 x: &t,
                 y: &y,
             }],
-            references: vec![Series {
-                label: "",
-                x: &t,
-                y: &y,
+            references: vec![Reference {
+                of: 0,
+                line: Series {
+                    label: "b static",
+                    x: &t,
+                    y: &y,
+                },
             }],
         },
     ];
@@ -695,4 +700,27 @@ fn check_png_any_size(path: &Path) {
     let bytes = fs::read(path).unwrap();
     assert_eq!(bytes[..8], PNG_SIGNATURE);
     assert!(bytes.len() > 10_000);
+}
+
+#[test]
+fn history_peaks_are_the_largest_magnitude_and_read_value_unit_and_time() {
+    let t = [0.0, 0.5, 1.0, 1.5];
+    // The minimum is the larger in magnitude: the peak is the signed value.
+    assert_eq!(
+        history::peak(&t, &[0.1, 0.3, -0.4, f64::NAN]),
+        Some((1.0, -0.4))
+    );
+    assert_eq!(history::peak(&t, &[f64::NAN; 4]), None);
+    assert_eq!(
+        history::peak_label(-5.7718e-4, "m", 1.09968, "s"),
+        "−5.772×10⁻⁴ m at 1.100 s"
+    );
+    assert_eq!(
+        history::peak_label(123456.0, "N*m", 12.5, "m"),
+        "1.235×10⁵ N*m at 12.500 m"
+    );
+    assert_eq!(
+        history::peak_label(1.2346, "m/s^2", 0.25, "s"),
+        "1.235 m/s^2 at 0.250 s"
+    );
 }

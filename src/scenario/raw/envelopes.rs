@@ -4,7 +4,7 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-use super::Quantity;
+use crate::scene::Quantity;
 
 /// Envelopes along the whole deck (beams): at every mesh node, or at
 /// `points` evenly spaced points, the largest and smallest value of each
@@ -16,17 +16,19 @@ pub struct EnvelopesRaw {
     /// The bridge quantities enveloped: any of `bridge_displacement`,
     /// `bridge_acceleration`, `bridge_moment`, `bridge_shear`. Default: all four.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub quantities: Option<Vec<Quantity>>,
     /// Number of evenly spaced points from the entrance to the exit, both
     /// included (at least 2). Default: every node of the beam's mesh.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_two)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_two)]
     pub points: Option<usize>,
     /// Highest mode frequency the acceleration envelope includes, Hz.
     /// Default as for a `bridge_acceleration` record: the greater of 30 Hz,
     /// 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
 }

@@ -4,7 +4,8 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::ModesRaw;
-use crate::bridge::fe_import::{Direction, RotationSign};
+use crate::scene::imported::RotationSign;
+use crate::scene::{NodeDof, RailNode};
 
 /// A bridge imported from a finite-element program: stiffness and mass
 /// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`
@@ -15,11 +16,11 @@ use crate::bridge::fe_import::{Direction, RotationSign};
 #[serde(deny_unknown_fields)]
 pub struct FeImportRaw {
     /// Stiffness matrix K file (N/m, N·m/rad for rotations).
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub stiffness: String,
     /// Mass matrix M file (kg, kg·m² for rotations). Every free DOF needs a
     /// positive diagonal mass (massless DOFs are refused, not condensed).
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub mass: String,
     /// CSV `dof,node,direction` naming each matrix row (1-based) by node
     /// and direction (ux, uy, uz, rx, ry, rz). Not needed by an Abaqus
@@ -28,7 +29,7 @@ pub struct FeImportRaw {
     pub dof_map: Option<String>,
     /// DOFs the matrices still hold but the supports fix: removed on import.
     #[serde(default)]
-    pub constrained: Option<Vec<NodeDofRaw>>,
+    pub constrained: Option<Vec<NodeDof>>,
     /// Damping: a modal ratio, Rayleigh, or a damping matrix file. Default 0.
     #[serde(default)]
     pub damping: Option<ImportDampingRaw>,
@@ -57,17 +58,9 @@ pub struct FeImportRaw {
     /// the whole load on at once.
     #[serde(default)]
     #[schemars(range(min = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub entry_length: Option<f64>,
-}
-
-/// A node's DOF.
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct NodeDofRaw {
-    /// Node id.
-    pub node: u64,
-    /// Direction.
-    pub direction: Direction,
 }
 
 /// One rail: a CSV `node,x` file or the nodes inline.
@@ -75,24 +68,14 @@ pub struct NodeDofRaw {
 #[serde(deny_unknown_fields)]
 pub struct RailNodesRaw {
     /// Rail name (for `track`).
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub name: String,
     /// CSV file with header `node,x` (x in m, strictly increasing).
     #[serde(default)]
     pub file: Option<String>,
     /// The nodes inline, in order along the rail.
     #[serde(default)]
-    pub nodes: Option<Vec<RailNodeRaw>>,
-}
-
-/// A rail node inline.
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct RailNodeRaw {
-    /// Node id.
-    pub node: u64,
-    /// Position along the track, m.
-    pub x: f64,
+    pub nodes: Option<Vec<RailNode>>,
 }
 
 /// Damping of an imported bridge.
@@ -103,16 +86,16 @@ pub enum ImportDampingRaw {
     /// The same modal damping ratio ζ for every mode.
     Modal {
         /// Damping ratio ζ (fraction of critical, dimensionless).
-        #[schemars(transform = crate::scenario::schema::ratio)]
+        #[schemars(transform = crate::scene::schema_rules::ratio)]
         ratio: f64,
     },
     /// Rayleigh damping matched at two frequencies (Hz) with ratio ζ.
     Rayleigh {
         /// The two frequencies, Hz.
-        #[schemars(transform = crate::scenario::schema::positive_items)]
+        #[schemars(transform = crate::scene::schema_rules::positive_items)]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both (dimensionless).
-        #[schemars(transform = crate::scenario::schema::ratio)]
+        #[schemars(transform = crate::scene::schema_rules::ratio)]
         ratio: f64,
     },
     /// A damping matrix C (N·s/m) in the stiffness file's format and DOF
@@ -120,7 +103,7 @@ pub enum ImportDampingRaw {
     /// the coupling terms φᵢᵀCφⱼ of a non-classical C are left out).
     Matrix {
         /// The damping matrix file.
-        #[schemars(transform = crate::scenario::schema::non_empty_string)]
+        #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
         file: String,
     },
 }

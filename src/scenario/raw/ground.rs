@@ -3,7 +3,7 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-pub use crate::ground::{AccelerationUnit, Direction};
+use crate::scene::{AccelerationUnit, Direction};
 
 /// One component of earthquake ground motion: an acceleration record
 /// applied as a uniform support excitation (every support moves together),
@@ -15,7 +15,7 @@ pub struct GroundMotionRaw {
     /// The record: a PEER NGA `.AT2` file (units from its header, usually
     /// g) or a CSV table `time [s], acceleration [unit]` (evenly spaced or
     /// not); the path is relative to this scenario file.
-    #[schemars(transform = crate::scenario::schema::non_empty_string)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty_string)]
     pub file: String,
     /// Direction of the motion: `vertical` (positive upward), `lateral` or
     /// `longitudinal`. Default vertical.
@@ -31,6 +31,8 @@ pub struct GroundMotionRaw {
     /// run starts part way through the record). Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub start_time: Option<f64>,
     /// Units of a CSV table's accelerations when its header does not state
     /// them (`g`, `m/s^2`, `cm/s^2`); a unit given both ways must agree.

@@ -4,32 +4,8 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::{MovingForceRaw, SpeedRaw};
+use crate::scene::HslmModel;
 use crate::vehicle::hslm::{HSLM_A, HslmTrain};
-
-/// The ten HSLM-A universal trains (EN 1991-2 Table E.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-pub enum HslmModel {
-    /// N = 18 coaches, D = 18 m, d = 2.0 m, P = 170 kN.
-    A1,
-    /// N = 17, D = 19 m, d = 3.5 m, P = 200 kN.
-    A2,
-    /// N = 16, D = 20 m, d = 2.0 m, P = 180 kN.
-    A3,
-    /// N = 15, D = 21 m, d = 3.0 m, P = 190 kN.
-    A4,
-    /// N = 14, D = 22 m, d = 2.0 m, P = 170 kN.
-    A5,
-    /// N = 13, D = 23 m, d = 2.0 m, P = 180 kN.
-    A6,
-    /// N = 13, D = 24 m, d = 2.0 m, P = 190 kN.
-    A7,
-    /// N = 12, D = 25 m, d = 2.5 m, P = 190 kN.
-    A8,
-    /// N = 11, D = 26 m, d = 2.0 m, P = 210 kN.
-    A9,
-    /// N = 11, D = 27 m, d = 2.0 m, P = 210 kN.
-    A10,
-}
 
 impl HslmModel {
     /// All ten, A1 first.
@@ -70,13 +46,19 @@ pub struct HslmRaw {
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     /// Give this or `start_position`, not both.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0: on the approach).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the loads on a plate deck, m. Default: the
     /// deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
 }
 

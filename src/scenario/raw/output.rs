@@ -2,7 +2,9 @@
 //! written.
 
 use schemars::JsonSchema;
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
+
+use crate::scene::HistoryFormat;
 
 /// What the time history files hold. Only what is WRITTEN is thinned: the
 /// extremes, DAFs and separation statistics in summary.json are computed
@@ -20,7 +22,9 @@ pub struct OutputRaw {
     /// of time steps (at least one), which the resolved scenario shows as
     /// `every`. Give this or `every`.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub interval: Option<f64>,
     /// Format of the time history: `csv` (history.csv), `npy` (history.npy,
     /// one float64 array with a row per written step and a column per
@@ -30,20 +34,6 @@ pub struct OutputRaw {
     #[serde(default)]
     #[schemars(extend("default" = "csv"))]
     pub format: Option<HistoryFormat>,
-}
-
-/// File format of the time history.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum HistoryFormat {
-    /// history.csv: a header row with units, then one row per written step.
-    #[default]
-    Csv,
-    /// history.npy (NPY 1.0, little-endian float64, C order) and
-    /// history_columns.txt.
-    Npy,
-    /// Both files.
-    Both,
 }
 
 impl HistoryFormat {

@@ -14,19 +14,27 @@ pub struct RailCarRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the front wheelset reaches the bridge entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Overrides of the preset's parameters; omitted ones keep the preset.
     /// The preset is the LCP separation paper's Table 2 (Section 5.2): body
@@ -44,36 +52,58 @@ pub struct RailCarRaw {
 pub struct RailCarParametersRaw {
     /// Car body mass M_c, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub body_mass: Option<f64>,
     /// Car body pitch moment of inertia J_c, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_pitch_inertia: Option<f64>,
     /// Mass of one bogie frame M_b, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub bogie_mass: Option<f64>,
     /// Pitch moment of inertia of one bogie J_b, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub bogie_pitch_inertia: Option<f64>,
     /// Mass of one wheelset M_w, kg (the contact DOF's mass).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub wheelset_mass: Option<f64>,
     /// Primary suspension stiffness per wheelset (bogie ↔ wheelset) k_p, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub primary_stiffness: Option<f64>,
     /// Primary suspension damping per wheelset c_p, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub primary_damping: Option<f64>,
     /// Secondary suspension stiffness per bogie (body ↔ bogie) k_s, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub secondary_stiffness: Option<f64>,
     /// Secondary suspension damping per bogie c_s, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub secondary_damping: Option<f64>,
     /// Half the distance between the two bogie centres a, m (≥ 0).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub half_bogie_spacing: Option<f64>,
     /// Half the distance between the two wheelsets of a bogie b, m (≥ 0).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub half_wheelbase: Option<f64>,
 }
 
@@ -93,33 +123,43 @@ pub struct TrainRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the first car's front wheelset reaches the bridge
     /// entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the first car's front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Number of identical cars (with `car_spacing`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub count: Option<usize>,
     /// Distance between the front wheelsets of consecutive cars, m (with
     /// `count`); at least a car's wheelset span 2(a + b).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub car_spacing: Option<f64>,
     /// The cars, front first (instead of `count`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub cars: Option<Vec<TrainCarRaw>>,
     /// Overrides of the rail car preset for every car.
     #[serde(default)]
@@ -134,7 +174,9 @@ pub struct TrainCarRaw {
     /// wheelset, m; at least the previous car's wheelset span. Required for
     /// every car but the first (which has none).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub spacing: Option<f64>,
     /// Overrides for this car, on top of the train's `parameters`.
     #[serde(default)]
@@ -157,34 +199,44 @@ pub struct Train3dRaw {
     /// Constant acceleration along the path, m/s² (negative: braking). Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the first car's front wheelset reaches the bridge
     /// entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the first car's front wheelset at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the track's centre line on a plate deck, m.
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Number of identical cars (with `car_spacing` when more than one).
     /// Default 1.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub count: Option<usize>,
     /// Distance between the front wheelsets of consecutive cars, m (with
     /// `count`); more than a car's wheelset span 2(a + b).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub car_spacing: Option<f64>,
     /// The cars, front first (instead of `count`).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub cars: Option<Vec<Train3dCarRaw>>,
     /// Overrides of the AVE-S103 preset for every car. The preset is the
     /// EMBS paper's Table 2: body 47 800 kg, roll 119 328, pitch and yaw
@@ -211,7 +263,9 @@ pub struct Train3dCarRaw {
     /// wheelset, m; more than the previous car's wheelset span. Required
     /// for every car but the first.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub spacing: Option<f64>,
     /// Overrides for this car, on top of the train's `parameters`.
     #[serde(default)]
@@ -226,96 +280,158 @@ pub struct Train3dCarRaw {
 pub struct Train3dParametersRaw {
     /// Car body mass, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub body_mass: Option<f64>,
     /// Car body roll moment of inertia (about the longitudinal axis), kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_roll_inertia: Option<f64>,
     /// Car body pitch moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_pitch_inertia: Option<f64>,
     /// Car body yaw moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_yaw_inertia: Option<f64>,
     /// Mass of one bogie frame, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub bogie_mass: Option<f64>,
     /// Bogie roll moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub bogie_roll_inertia: Option<f64>,
     /// Bogie pitch moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub bogie_pitch_inertia: Option<f64>,
     /// Bogie yaw moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub bogie_yaw_inertia: Option<f64>,
     /// Mass of one wheelset, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub wheelset_mass: Option<f64>,
     /// Wheelset roll moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub wheelset_roll_inertia: Option<f64>,
     /// Primary longitudinal stiffness per axle box, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub primary_longitudinal_stiffness: Option<f64>,
     /// Primary lateral stiffness per axle box, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub primary_lateral_stiffness: Option<f64>,
     /// Primary vertical stiffness per axle box, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub primary_vertical_stiffness: Option<f64>,
     /// Primary longitudinal damping per axle box, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub primary_longitudinal_damping: Option<f64>,
     /// Primary lateral damping per axle box, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub primary_lateral_damping: Option<f64>,
     /// Primary vertical damping per axle box, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub primary_vertical_damping: Option<f64>,
     /// Secondary longitudinal stiffness per side of a bogie, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub secondary_longitudinal_stiffness: Option<f64>,
     /// Secondary lateral stiffness per side of a bogie, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub secondary_lateral_stiffness: Option<f64>,
     /// Secondary vertical stiffness per side of a bogie, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub secondary_vertical_stiffness: Option<f64>,
     /// Secondary longitudinal damping per side of a bogie, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub secondary_longitudinal_damping: Option<f64>,
     /// Secondary lateral damping per side of a bogie, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub secondary_lateral_damping: Option<f64>,
     /// Secondary vertical damping per side of a bogie, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub secondary_vertical_damping: Option<f64>,
     /// Half the distance between the bogie centres a, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub half_bogie_spacing: Option<f64>,
     /// Half the distance between a bogie's two wheelsets b, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub half_wheelbase: Option<f64>,
     /// Half the lateral distance between a wheelset's two axle boxes d₁, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub primary_half_spacing: Option<f64>,
     /// Half the lateral distance between a bogie's two secondary springs d₂, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub secondary_half_spacing: Option<f64>,
     /// Half the lateral distance between a wheelset's two wheel–rail
     /// contact points b₀, m (0.75 on standard gauge).
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub contact_half_spacing: Option<f64>,
     /// Height of the car body's centre of gravity above the rail head, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub body_height: Option<f64>,
     /// Height of a bogie's centre of gravity above the rail head, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub bogie_height: Option<f64>,
     /// Height of the secondary suspension above the rail head, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub secondary_height: Option<f64>,
     /// Nominal rolling radius R₀ (the axle's height above the rail head), m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub wheel_radius: Option<f64>,
 }

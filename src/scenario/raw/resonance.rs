@@ -4,25 +4,15 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-use super::{HslmModel, SpeedRaw};
+use super::SpeedRaw;
+use crate::scene::{Deck, HslmModel};
 
-/// The track on the deck, which sets the deck-acceleration limit of
-/// EN 1990 A2.4.4.2.1(1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum DeckRaw {
-    /// Ballasted track: 3.5 m/s².
-    Ballasted,
-    /// Direct-fastened track: 5 m/s².
-    DirectFastening,
-}
-
-impl DeckRaw {
+impl Deck {
     /// The peak deck-acceleration limit, m/s² (EN 1990 A2.4.4.2.1(1)).
     pub fn acceleration_limit(self) -> f64 {
         match self {
-            DeckRaw::Ballasted => 3.5,
-            DeckRaw::DirectFastening => 5.0,
+            Deck::Ballasted => 3.5,
+            Deck::DirectFastening => 5.0,
         }
     }
 }
@@ -58,7 +48,7 @@ pub struct ResonanceSpeedsRaw {
 pub struct ResonanceCheckRaw {
     /// Trains to run, `A1` … `A10`. Default: all ten.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_empty)]
+    #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub trains: Option<Vec<HslmModel>>,
     /// The maximum line speed, m/s or with its unit (`300 km/h`).
     pub line_speed: SpeedRaw,
@@ -71,11 +61,13 @@ pub struct ResonanceCheckRaw {
     /// The track: `ballasted` (limit 3.5 m/s²) or `direct_fastening`
     /// (5 m/s²). Default `ballasted`.
     #[serde(default)]
-    pub deck: Option<DeckRaw>,
+    pub deck: Option<Deck>,
     /// Highest mode frequency the deck acceleration includes, Hz. Default:
     /// the greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::positive)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::frequency::schema")]
     pub max_frequency: Option<f64>,
     /// Add the damping Δζ of EN 1991-2 6.4.6.3.1(3) for spans below 30 m
     /// (vehicle–bridge interaction): Δζ [%] = (0.0187 L − 0.00064 L²) /

@@ -116,14 +116,14 @@ pub struct SpeedGridRaw {
     /// Last speed: m/s, or with its unit (`420 km/h`).
     pub to: SpeedRaw,
     /// Number of speeds (≥ 1; 1 gives `from` only).
-    #[schemars(transform = crate::scenario::schema::grid_count)]
+    #[schemars(transform = crate::scene::schema_rules::grid_count)]
     pub count: usize,
 }
 
 impl SpeedGridRaw {
     /// The grid in m/s.
-    pub fn in_m_s(&self) -> super::GridRaw {
-        super::GridRaw {
+    pub fn in_m_s(&self) -> crate::scene::Grid {
+        crate::scene::Grid {
             from: self.from.0,
             to: self.to.0,
             count: self.count,

@@ -3,7 +3,7 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-use super::RoughnessClassRaw;
+use crate::scene::{Grid, RoughnessClass, SweepRoughness};
 
 /// A study: many runs derived from the scene.
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
@@ -46,7 +46,7 @@ pub enum StudyRaw {
 pub struct MonteCarloRaw {
     /// Random profiles per case (≥ 1; dimensionless count).
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub samples: usize,
     /// Study seed: sample k (from 1) uses the k-th output of SplitMix64
     /// started from this seed (the same k-th seed on every case, every
@@ -62,7 +62,7 @@ pub struct MonteCarloRaw {
     /// scene's surface as in a speed sweep. Default: the scene's own random
     /// surface. `smooth` is refused: it is not random.
     #[serde(default)]
-    pub roughness: Option<Vec<SweepRoughnessRaw>>,
+    pub roughness: Option<Vec<SweepRoughness>>,
     /// Sample histories drawn in grey behind the envelopes (0 to 20;
     /// dimensionless count). Default 5.
     #[serde(default)]
@@ -76,28 +76,12 @@ pub struct MonteCarloRaw {
 #[serde(deny_unknown_fields)]
 pub struct SeparationMapRaw {
     /// Velocity ratios α = v / (2 f₁ L) to sweep (dimensionless).
-    pub velocity_ratio: GridRaw,
+    pub velocity_ratio: Grid,
     /// Vehicle-to-bridge mass ratios (m_s + m_u) / (m L) to sweep (dimensionless).
-    pub mass_ratio: GridRaw,
+    pub mass_ratio: Grid,
 }
 
-/// Evenly spaced values from `from` to `to` inclusive.
-#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct GridRaw {
-    /// First value.
-    #[schemars(transform = crate::scenario::schema::positive)]
-    pub from: f64,
-    /// Last value.
-    #[schemars(transform = crate::scenario::schema::positive)]
-    pub to: f64,
-    /// Number of values (≥ 1; 1 gives `from` only).
-    #[schemars(range(min = 1))]
-    #[schemars(transform = crate::scenario::schema::grid_count)]
-    pub count: usize,
-}
-
-impl GridRaw {
+impl Grid {
     /// The values.
     pub fn values(&self) -> Vec<f64> {
         if self.count <= 1 {
@@ -124,13 +108,13 @@ pub struct SpeedSweepRaw {
     /// bridge length, one term per 0.5 m of it and seed 1). Default: the
     /// scene's own surface only.
     #[serde(default)]
-    pub roughness: Option<Vec<SweepRoughnessRaw>>,
+    pub roughness: Option<Vec<SweepRoughness>>,
     /// Random profiles per random surface (≥ 1; dimensionless count): sample
     /// k (from 1) uses seed + k − 1. Smooth and harmonic surfaces run once.
     /// Default 1.
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     #[schemars(extend("default" = 1))]
     pub samples: Option<usize>,
     /// Span (counted from 1 at the entrance) at whose middle the plots and
@@ -138,78 +122,47 @@ pub struct SpeedSweepRaw {
     /// equally long ones), e.g. span 2 of the plate paper's 3-span deck.
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     pub span: Option<usize>,
     /// Girder line (counted from 1 in `bridge.girder_lines`) of the
     /// roughness plot, the DAF map and the summary. Default 1 (a beam has
     /// only line 1).
     #[serde(default)]
     #[schemars(range(min = 1))]
-    #[schemars(transform = crate::scenario::schema::at_least_one)]
+    #[schemars(transform = crate::scene::schema_rules::at_least_one)]
     #[schemars(extend("default" = 1))]
     pub girder: Option<usize>,
 }
 
-/// One surface of a speed sweep.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum SweepRoughnessRaw {
-    /// Perfectly smooth surface.
-    Smooth,
-    /// Random profile with A_r = 4e-6 m³/cycle.
-    VeryGood,
-    /// Random profile with A_r = 16e-6 m³/cycle.
-    Good,
-    /// Random profile with A_r = 64e-6 m³/cycle.
-    Average,
-    /// Random profile with A_r = 256e-6 m³/cycle.
-    Poor,
-    /// Random profile with A_r = 1024e-6 m³/cycle.
-    VeryPoor,
-    /// FRA track class 1 vertical profile (the scene's rail sampling, or
-    /// the 1–80 m band), as in the LCP paper's Figs. 8–9.
-    Fra1,
-    /// FRA track class 2.
-    Fra2,
-    /// FRA track class 3.
-    Fra3,
-    /// FRA track class 4.
-    Fra4,
-    /// FRA track class 5.
-    Fra5,
-    /// FRA track class 6.
-    Fra6,
-}
-
-impl SweepRoughnessRaw {
+impl SweepRoughness {
     /// The power-law roughness class of an entry (`None` for `smooth` and
     /// the FRA track classes).
-    pub fn class(self) -> Option<RoughnessClassRaw> {
+    pub fn class(self) -> Option<RoughnessClass> {
         match self {
-            SweepRoughnessRaw::Smooth
-            | SweepRoughnessRaw::Fra1
-            | SweepRoughnessRaw::Fra2
-            | SweepRoughnessRaw::Fra3
-            | SweepRoughnessRaw::Fra4
-            | SweepRoughnessRaw::Fra5
-            | SweepRoughnessRaw::Fra6 => None,
-            SweepRoughnessRaw::VeryGood => Some(RoughnessClassRaw::VeryGood),
-            SweepRoughnessRaw::Good => Some(RoughnessClassRaw::Good),
-            SweepRoughnessRaw::Average => Some(RoughnessClassRaw::Average),
-            SweepRoughnessRaw::Poor => Some(RoughnessClassRaw::Poor),
-            SweepRoughnessRaw::VeryPoor => Some(RoughnessClassRaw::VeryPoor),
+            SweepRoughness::Smooth
+            | SweepRoughness::Fra1
+            | SweepRoughness::Fra2
+            | SweepRoughness::Fra3
+            | SweepRoughness::Fra4
+            | SweepRoughness::Fra5
+            | SweepRoughness::Fra6 => None,
+            SweepRoughness::VeryGood => Some(RoughnessClass::VeryGood),
+            SweepRoughness::Good => Some(RoughnessClass::Good),
+            SweepRoughness::Average => Some(RoughnessClass::Average),
+            SweepRoughness::Poor => Some(RoughnessClass::Poor),
+            SweepRoughness::VeryPoor => Some(RoughnessClass::VeryPoor),
         }
     }
 
     /// The FRA track class (1–6) of an FRA entry.
     pub fn fra_class(self) -> Option<u8> {
         match self {
-            SweepRoughnessRaw::Fra1 => Some(1),
-            SweepRoughnessRaw::Fra2 => Some(2),
-            SweepRoughnessRaw::Fra3 => Some(3),
-            SweepRoughnessRaw::Fra4 => Some(4),
-            SweepRoughnessRaw::Fra5 => Some(5),
-            SweepRoughnessRaw::Fra6 => Some(6),
+            SweepRoughness::Fra1 => Some(1),
+            SweepRoughness::Fra2 => Some(2),
+            SweepRoughness::Fra3 => Some(3),
+            SweepRoughness::Fra4 => Some(4),
+            SweepRoughness::Fra5 => Some(5),
+            SweepRoughness::Fra6 => Some(6),
             _ => None,
         }
     }
@@ -223,7 +176,7 @@ impl SweepRoughnessRaw {
     pub fn name(self) -> &'static str {
         match self.fra_class() {
             Some(c) => ["fra1", "fra2", "fra3", "fra4", "fra5", "fra6"][usize::from(c) - 1],
-            None => self.class().map_or("smooth", RoughnessClassRaw::name),
+            None => self.class().map_or("smooth", RoughnessClass::name),
         }
     }
 }

@@ -3,7 +3,7 @@
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-pub use crate::surface::spectrum::{Interference, IsoClass};
+use crate::scene::{Interference, IsoClass, Rails, RoughnessClass, TrackDirection};
 
 /// Surface profile (roughness) under the wheels. It starts at the bridge
 /// entrance and continues past the exit; the approach is smooth unless a
@@ -17,9 +17,13 @@ pub enum SurfaceRaw {
     /// r(x) = amplitude · sin(2π x / wavelength + phase) for x ≥ 0, positive upward.
     Harmonic {
         /// Amplitude, m.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         amplitude: f64,
         /// Wavelength, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         wavelength: f64,
         /// Phase at the entrance, rad. Default 0.
         #[serde(default)]
@@ -42,13 +46,15 @@ pub enum SurfaceRaw {
         /// Roughness class: `very_good`, `good`, `average`, `poor` or
         /// `very_poor` (A_r the geometric mean of the class's range).
         #[serde(default)]
-        class: Option<RoughnessClassRaw>,
+        class: Option<RoughnessClass>,
         /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::non_negative)]
+        #[schemars(transform = crate::scene::schema_rules::non_negative)]
         coefficient: Option<f64>,
         /// Length L_c the series repeats over, m. Default: twice the bridge length.
         #[serde(default)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         sampling_length: Option<f64>,
         /// Number of terms N of the series. Default: enough for wavelengths
         /// down to 0.5 m (N = L_c / 0.5).
@@ -71,11 +77,15 @@ pub enum SurfaceRaw {
         class: u8,
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -97,7 +107,7 @@ pub enum SurfaceRaw {
         /// `independent`: the left and right ones are independent samples.
         /// Default `identical`.
         #[serde(default)]
-        rails: Option<RailsRaw>,
+        rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
         /// (80 m for the rail band, 100 m for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
@@ -110,7 +120,9 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::non_negative)]
+        #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// Random vertical track profile from the German high-speed spectrum:
@@ -122,11 +134,15 @@ pub enum SurfaceRaw {
         interference: Interference,
         /// Shortest wavelength sampled, m. Default: 1 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 80 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -148,7 +164,7 @@ pub enum SurfaceRaw {
         /// `independent`: the left and right ones are independent samples.
         /// Default `identical`.
         #[serde(default)]
-        rails: Option<RailsRaw>,
+        rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
         /// (80 m for the rail band, 100 m for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
@@ -161,7 +177,9 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::non_negative)]
+        #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// Random road profile of an ISO 8608 class: G_d(n) = G_d(n₀)(n/n₀)⁻²,
@@ -172,11 +190,15 @@ pub enum SurfaceRaw {
         class: IsoClass,
         /// Shortest wavelength sampled, m. Default: 0.5 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
         /// Longest wavelength sampled, m. Default: 100 m.
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
         /// log Ω). Default: 100 per decade of the wavelength band.
@@ -191,7 +213,7 @@ pub enum SurfaceRaw {
         /// `independent`: the left and right ones are independent samples.
         /// Default `identical`.
         #[serde(default)]
-        rails: Option<RailsRaw>,
+        rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
         /// (80 m for the rail band, 100 m for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
@@ -204,7 +226,9 @@ pub enum SurfaceRaw {
         /// profile starts at the entrance, shifted so r(0) = 0, and its
         /// slope jumps there (a kick the wheels feel).
         #[serde(default)]
-        #[schemars(transform = crate::scenario::schema::non_negative)]
+        #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         run_in: Option<f64>,
     },
     /// A measured profile from a CSV file: rows `x, elevation` (one profile
@@ -228,11 +252,17 @@ pub enum SurfaceRaw {
     /// then `height`.
     Ramp {
         /// Where the ramp starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Horizontal length, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Rise, m (negative: a descent).
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -246,8 +276,12 @@ pub enum SurfaceRaw {
     /// level).
     Step {
         /// Where the step is, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         position: f64,
         /// Change of level, m (negative: a step down).
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -261,12 +295,18 @@ pub enum SurfaceRaw {
     /// `length` from `start`, 0 elsewhere.
     Bump {
         /// Where the bump starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Length, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Peak height, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         height: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -280,12 +320,18 @@ pub enum SurfaceRaw {
     /// `length` from `start`, 0 elsewhere.
     Dip {
         /// Where the dip starts, m from the entrance.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         start: f64,
         /// Length, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         length: f64,
         /// Deepest point below the level, m.
-        #[schemars(transform = crate::scenario::schema::positive)]
+        #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         depth: f64,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -311,51 +357,9 @@ pub enum SurfaceRaw {
     },
 }
 
-/// Road roughness classes (A_r ranges in m³/cycle): very good 2e-6–8e-6,
-/// good 8e-6–32e-6, average 32e-6–128e-6, poor 128e-6–512e-6, very poor
-/// 512e-6–2048e-6.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum RoughnessClassRaw {
-    /// A_r = 4e-6.
-    VeryGood,
-    /// A_r = 16e-6.
-    Good,
-    /// A_r = 64e-6.
-    Average,
-    /// A_r = 256e-6.
-    Poor,
-    /// A_r = 1024e-6.
-    VeryPoor,
-}
-
-/// The direction a deterministic profile displaces the rails in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum TrackDirection {
-    /// The rails' elevation (m, positive upward): every vehicle's wheels
-    /// follow it.
-    #[default]
-    Vertical,
-    /// The track's alignment (m, + to the left of travel): both rails
-    /// displaced sideways; a `train_3d`'s wheelsets follow it, no other
-    /// vehicle has a lateral DOF at the rail.
-    Lateral,
-}
-
 impl TrackDirection {
     /// Whether it is the default (vertical): written only when lateral.
     pub fn is_vertical(&self) -> bool {
         *self == TrackDirection::Vertical
     }
-}
-
-/// Whether the two rails (wheel tracks) carry the same random profile.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum RailsRaw {
-    /// The same sample under both.
-    Identical,
-    /// Independent samples (ChaCha8 streams 0 and 1 of the seed).
-    Independent,
 }

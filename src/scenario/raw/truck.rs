@@ -14,19 +14,27 @@ pub struct H20TruckRaw {
     /// vehicle that comes to a stop stays stopped. Default 0.
     #[serde(default)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the front axle reaches the bridge entrance, s. Default 0.
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_negative)]
+    #[schemars(transform = crate::scene::schema_rules::non_negative)]
     #[schemars(extend("default" = 0.0))]
+    #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
     /// Position of the front axle at t = 0, m (≤ 0).
     #[serde(default)]
-    #[schemars(transform = crate::scenario::schema::non_positive)]
+    #[schemars(transform = crate::scene::schema_rules::non_positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub start_position: Option<f64>,
     /// Transverse position y of the truck's centre line on a plate deck, m.
     /// Default: the deck's centre line.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Overrides of the preset's parameters; omitted ones keep the preset.
     /// The preset: axles 4.27 m apart, wheels 1.83 m apart (AASHTO H20-44);
@@ -49,65 +57,107 @@ pub struct H20TruckRaw {
 pub struct H20TruckParametersRaw {
     /// Body (sprung) mass m_v, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub body_mass: Option<f64>,
     /// Body pitch moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_pitch_inertia: Option<f64>,
     /// Body roll moment of inertia, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub body_roll_inertia: Option<f64>,
     /// Front axle mass with its wheels m₁, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub front_axle_mass: Option<f64>,
     /// Rear axle mass with its wheels m₂, kg.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::mass::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::mass::schema")]
     pub rear_axle_mass: Option<f64>,
     /// Front axle roll moment of inertia I₁, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub front_axle_roll_inertia: Option<f64>,
     /// Rear axle roll moment of inertia I₂, kg·m².
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia::schema")]
     pub rear_axle_roll_inertia: Option<f64>,
     /// Distance from the front axle back to the body's centre of gravity a₁, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub front_axle_to_centre: Option<f64>,
     /// Distance from the body's centre of gravity back to the rear axle a₂, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub centre_to_rear_axle: Option<f64>,
     /// Distance between the front tyres s_t1, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub front_track: Option<f64>,
     /// Distance between the rear tyres s_t2, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub rear_track: Option<f64>,
     /// Distance between the front suspensions s₁, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub front_suspension_spacing: Option<f64>,
     /// Distance between the rear suspensions s₂, m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub rear_suspension_spacing: Option<f64>,
     /// Front suspension stiffness per wheel, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub front_suspension_stiffness: Option<f64>,
     /// Rear suspension stiffness per wheel, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub rear_suspension_stiffness: Option<f64>,
     /// Front suspension damping per wheel, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub front_suspension_damping: Option<f64>,
     /// Rear suspension damping per wheel, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub rear_suspension_damping: Option<f64>,
     /// Front tyre stiffness per wheel, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub front_tyre_stiffness: Option<f64>,
     /// Rear tyre stiffness per wheel, N/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::stiffness::schema")]
     pub rear_tyre_stiffness: Option<f64>,
     /// Front tyre damping per wheel, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub front_tyre_damping: Option<f64>,
     /// Rear tyre damping per wheel, N·s/m.
     #[serde(default)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::damping::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::damping::schema")]
     pub rear_tyre_damping: Option<f64>,
 }

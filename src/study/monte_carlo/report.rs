@@ -13,10 +13,9 @@ use serde::Serialize;
 
 use super::MonteCarloResults;
 use crate::report::plot::{Series, line_chart, line_chart_over_samples};
-use crate::report::{number, write_atomic};
+use crate::report::{clean, heading, km_h, number, write_atomic};
 use crate::run::RunError;
 use crate::scene::Scenario;
-use crate::study::speed_sweep::KM_H;
 
 /// Standard normal quantile of a two-sided 95 % interval.
 pub const Z95: f64 = 1.959_963_984_540_054;
@@ -181,21 +180,22 @@ impl MonteCarloResults {
         [
             self.labels[c].clone(),
             speed.map(number).unwrap_or_default(),
-            speed.map(|v| number(v * KM_H)).unwrap_or_default(),
+            speed.map(|v| number(km_h(v))).unwrap_or_default(),
         ]
     }
 
     /// study.csv: one row per sample (flat order) with its seed, and per
-    /// wheel whether it separated and its largest gap (m).
+    /// wheel whether it separated and its largest gap (`max_gap_vV_wW [m]`).
     pub fn samples_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
-        let mut header: Vec<String> = ["roughness", "speed_m_s", "speed_km_h", "sample", "seed"]
-            .map(String::from)
-            .to_vec();
+        let mut header: Vec<String> =
+            ["roughness", "speed [m/s]", "speed [km/h]", "sample", "seed"]
+                .map(String::from)
+                .to_vec();
         if let Some(first) = self.sample_results.first() {
             for w in &first.wheels {
                 header.push(format!("separated_v{}_w{}", w.vehicle, w.wheel));
-                header.push(format!("max_gap_v{}_w{}_m", w.vehicle, w.wheel));
+                header.push(format!("max_gap_v{}_w{} [m]", w.vehicle, w.wheel));
             }
         }
         out.write_record(&header).expect("writing to memory");
@@ -218,8 +218,8 @@ impl MonteCarloResults {
         let mut out = csv::Writer::from_writer(Vec::new());
         out.write_record([
             "roughness",
-            "speed_m_s",
-            "speed_km_h",
+            "speed [m/s]",
+            "speed [km/h]",
             "vehicle",
             "wheel",
             "samples",
@@ -227,10 +227,10 @@ impl MonteCarloResults {
             "probability",
             "probability_low",
             "probability_high",
-            "expected_max_gap_m",
-            "expected_max_gap_std_error_m",
-            "expected_max_gap_low_m",
-            "expected_max_gap_high_m",
+            "expected_max_gap [m]",
+            "expected_max_gap_std_error [m]",
+            "expected_max_gap_low [m]",
+            "expected_max_gap_high [m]",
         ])
         .expect("writing to memory");
         for c in 0..self.cases.len() {
@@ -259,13 +259,13 @@ impl MonteCarloResults {
     /// deviation σ and mean ∓ 3σ (`<record>_mean`, `_std`, `_lower`, `_upper`).
     pub fn envelopes_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
-        let mut header: Vec<String> = ["roughness", "speed_m_s", "speed_km_h", "time_s"]
+        let mut header: Vec<String> = ["roughness", "speed [m/s]", "speed [km/h]", "time [s]"]
             .map(String::from)
             .to_vec();
         if let Some(first) = self.envelopes.first() {
             for (name, unit) in first.names.iter().zip(&first.units) {
                 for what in ["mean", "std", "lower", "upper"] {
-                    header.push(format!("{name}_{what}_{unit}"));
+                    header.push(heading(&format!("{name}_{what}"), unit));
                 }
             }
         }
@@ -275,7 +275,8 @@ impl MonteCarloResults {
             let cells = self.case_cells(c);
             for (i, &t) in m.time.iter().enumerate() {
                 let mut row = cells.to_vec();
-                row.push(number(t));
+                // k·Δt without its float noise (0.018, not 0.018000000000000002).
+                row.push(number(clean(t)));
                 for (mean, s) in m.mean.iter().zip(&std) {
                     let (mu, sigma) = (mean[i], s[i]);
                     row.extend([
@@ -304,7 +305,7 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
         .filter_map(|r| r.histories.as_ref())
         .collect();
     let case = match results.speed(0) {
-        Some(v) => format!("{}, {:.1} km/h", results.labels[0], v * KM_H),
+        Some(v) => format!("{}, {:.1} km/h", results.labels[0], km_h(v)),
         None => results.labels[0].clone(),
     };
     // One chart per record, drawn and compressed in parallel (each file is
@@ -322,10 +323,13 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
             .zip(&std[r])
             .map(|(mu, s)| mu + 3.0 * s)
             .collect();
+        // Every line in the legend: the grey samples under one entry.
+        let samples_label = format!("{} of {} samples", shown.len(), m.count);
         let mut series: Vec<Series> = shown
             .iter()
-            .map(|h| Series {
-                label: "",
+            .enumerate()
+            .map(|(k, h)| Series {
+                label: if k == 0 { &samples_label } else { "" },
                 x: &m.time,
                 y: &h[r],
             })
@@ -382,7 +386,7 @@ fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Re
         let cases: Vec<usize> = (s * n_speeds..(s + 1) * n_speeds).collect();
         let km_h: Vec<f64> = cases
             .iter()
-            .map(|&c| results.speed(c).unwrap_or(f64::NAN) * KM_H)
+            .map(|&c| km_h(results.speed(c).unwrap_or(f64::NAN)))
             .collect();
         for (w, first) in stats[cases[0]].iter().enumerate() {
             labels.push(format!(

@@ -5,7 +5,8 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use super::{DafSource, KM_H, SweepResults};
+use super::{DafSource, SweepResults};
+use crate::report::km_h;
 use crate::report::plot::{Series, category_heat_map, line_chart};
 use crate::report::{self, write_atomic};
 use crate::run::RunError;
@@ -113,7 +114,7 @@ impl SweepSummary {
                 sample: point.sample,
                 seed: point.seed,
                 speed_m_s: point.speed,
-                speed_km_h: point.speed * KM_H,
+                speed_km_h: km_h(point.speed),
             }
         });
         Self {
@@ -123,7 +124,7 @@ impl SweepSummary {
             wall_time: results.wall_time,
             points: results.points.len(),
             speeds_m_s: results.speeds.clone(),
-            speeds_km_h: results.speeds.iter().map(|v| v * KM_H).collect(),
+            speeds_km_h: results.speeds.iter().map(|&v| km_h(v)).collect(),
             roughness: results.roughness.clone(),
             samples: results.samples,
             span: results.span,
@@ -152,7 +153,7 @@ fn plot_daf_speed(
     girder_lines: &[f64],
     results: &SweepResults,
 ) -> Result<(), RunError> {
-    let km_h: Vec<f64> = results.speeds.iter().map(|v| v * KM_H).collect();
+    let km_h: Vec<f64> = results.speeds.iter().map(|&v| km_h(v)).collect();
     let records: Vec<usize> = (0..results.daf_sources.len())
         .filter(|&c| matches!(results.daf_sources[c], DafSource::Record { .. }))
         .collect();
@@ -207,7 +208,7 @@ fn plot_daf_speed(
 /// sweep's span and girder line against speed, per surface (mean over
 /// samples).
 fn plot_roughness(out: &Path, name: &str, results: &SweepResults) -> Result<(), RunError> {
-    let km_h: Vec<f64> = results.speeds.iter().map(|v| v * KM_H).collect();
+    let km_h: Vec<f64> = results.speeds.iter().map(|&v| km_h(v)).collect();
     let column = results.span_column(results.span, results.girder);
     let means: Vec<Vec<f64>> = (0..results.roughness.len())
         .map(|r| results.daf_statistics(r, column).0)

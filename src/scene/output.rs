@@ -1,0 +1,65 @@
+//! What a scene records and how it writes it: the recordable quantities,
+//! the history's file format and a plate's moment component.
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Recordable quantities.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// Bridge vertical displacement at `x` (and `y` on a plate), m, positive
+    /// upward. The summary also gives the static crossing response and the
+    /// DAF at that point.
+    BridgeDisplacement,
+    /// Bridge vertical acceleration at `x` (and `y` on a plate), m/s², positive upward.
+    BridgeAcceleration,
+    /// Bending moment of a beam bridge at `x`, N·m, positive sagging; from
+    /// the modes with the mode-acceleration static correction (beams only).
+    BridgeMoment,
+    /// Shear force of a beam bridge at `x`, N: dM/dx, the resultant of the
+    /// upward forces left of the section; its right-hand limit where a wheel
+    /// stands on the section (beams only).
+    BridgeShear,
+    /// Contact force of a wheel, N, positive in compression.
+    ContactForce,
+    /// Gap between a wheel and the surface under it, m: positive when the wheel
+    /// is lifted off (separated); negative is the compression of an elastic or
+    /// Hertz contact; 0 under permanent contact.
+    ContactGap,
+    /// Vehicle DOF displacement from its static equilibrium on the rigid flat
+    /// approach, m (or rad), positive upward.
+    VehicleDisplacement,
+    /// Vehicle DOF acceleration, m/s² (or rad/s²), positive upward.
+    VehicleAcceleration,
+}
+
+/// File format of the time history.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum HistoryFormat {
+    /// history.csv: a header row with units, then one row per written step.
+    #[default]
+    Csv,
+    /// history.npy (NPY 1.0, little-endian float64, C order) and
+    /// history_columns.txt.
+    Npy,
+    /// Both files.
+    Both,
+}
+
+/// Which moment per unit width.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize, schemars::JsonSchema,
+)]
+pub enum PlateMoment {
+    /// m_x: longitudinal bending (about the transverse axis), N·m/m.
+    #[serde(rename = "mx")]
+    Longitudinal,
+    /// m_y: transverse bending, N·m/m.
+    #[serde(rename = "my")]
+    Transverse,
+    /// m_xy: twisting, N·m/m.
+    #[serde(rename = "mxy")]
+    Twisting,
+}
