@@ -409,9 +409,13 @@ pub struct WheelSeparation {
     pub vehicle: usize,
     /// Wheel number from 1.
     pub wheel: usize,
-    /// Whether the wheel ever lost contact.
+    /// Whether the wheel ever lost contact (at least one episode).
     pub separated: bool,
-    /// Number of contact-loss episodes.
+    /// Number of contact-loss episodes: flights (zero contact force, gap
+    /// above [`SEPARATION_GAP`]) whose gap passes the loss gap — 1 µm for
+    /// rigid contact ([`crate::contact::RIGID_LOSS_GAP`]), [`SEPARATION_GAP`]
+    /// for elastic and Hertz contact. Time separated and the largest gap
+    /// are over these episodes.
     pub episodes: usize,
     /// Time of the first loss of contact, s.
     pub first_loss_time: Option<f64>,
@@ -423,10 +427,31 @@ pub struct WheelSeparation {
     pub max_gap: f64,
     /// Time of the largest gap, s.
     pub max_gap_time: Option<f64>,
+    /// Rigid contact: the gap a flight must pass to count as an episode, m
+    /// ([`crate::contact::RIGID_LOSS_GAP`]; absent for elastic and Hertz
+    /// contact, which count every flight above [`SEPARATION_GAP`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub loss_gap: Option<f64>,
     #[serde(skip)]
     flat: usize,
     #[serde(skip)]
     apart: bool,
+    /// The flight under way (while `apart`): its start (time s, wheel
+    /// position m), time so far (s), largest gap (m, with its time s), and
+    /// whether it has become an episode (its gap passed the loss gap).
+    #[serde(skip)]
+    flight: Flight,
+}
+
+/// A flight of one wheel, counted as an episode once its gap passes the
+/// contact law's loss gap ([`crate::contact::RIGID_LOSS_GAP`] for rigid
+/// contact).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct Flight {
+    start: (f64, f64),
+    time: f64,
+    max_gap: (f64, f64),
+    counted: bool,
 }
 
 /// Samples columns each step; see [`History`].
@@ -661,8 +686,11 @@ impl<'m> Recorder<'m> {
                     time_separated: 0.0,
                     max_gap: 0.0,
                     max_gap_time: None,
+                    loss_gap: matches!(model.contact, crate::model::ContactLaw::Rigid { .. })
+                        .then_some(crate::contact::RIGID_LOSS_GAP),
                     flat,
                     apart: false,
+                    flight: Flight::default(),
                 })
                 .collect()
         } else {
@@ -1014,24 +1042,47 @@ impl Observer for Recorder<'_> {
             .iter()
             .any(|&x| self.model.bridge.is_on(x));
         let dt = self.model.time_step;
+        // A flight (zero force, gap above SEPARATION_GAP) is a contact-loss
+        // episode once its gap passes the loss gap (see RIGID_LOSS_GAP);
+        // then its whole time and largest gap count.
         for wheel in &mut self.history.separation {
+            let loss_gap = wheel.loss_gap.unwrap_or(SEPARATION_GAP);
             let gap = view.contact_gaps[wheel.flat];
-            let apart = view.contact_forces[wheel.flat] <= 0.0 && gap > SEPARATION_GAP;
+            // A rigid wheel with a gap carries no force; its recorded force
+            // is averaged over 1 ms after a landing (a bounce's flight has a
+            // positive average), so the gap alone tells a flight.
+            let apart = gap > SEPARATION_GAP
+                && (wheel.loss_gap.is_some() || view.contact_forces[wheel.flat] <= 0.0);
             if apart {
+                let flight = &mut wheel.flight;
                 if !wheel.apart {
-                    wheel.episodes += 1;
-                    if wheel.first_loss_time.is_none() {
-                        wheel.first_loss_time = Some(view.time);
-                        wheel.first_loss_position = Some(view.wheel_positions[wheel.flat]);
-                    }
+                    *flight = Flight {
+                        start: (view.time, view.wheel_positions[wheel.flat]),
+                        ..Flight::default()
+                    };
                 }
-                wheel.separated = true;
                 if view.step > 0 {
+                    flight.time += dt;
+                }
+                if gap > flight.max_gap.0 {
+                    flight.max_gap = (gap, view.time);
+                }
+                if !flight.counted && gap > loss_gap {
+                    flight.counted = true;
+                    wheel.episodes += 1;
+                    wheel.separated = true;
+                    if wheel.first_loss_time.is_none() {
+                        wheel.first_loss_time = Some(flight.start.0);
+                        wheel.first_loss_position = Some(flight.start.1);
+                    }
+                    // The flight's time so far (this step's included).
+                    wheel.time_separated += flight.time;
+                } else if flight.counted && view.step > 0 {
                     wheel.time_separated += dt;
                 }
-                if gap > wheel.max_gap {
-                    wheel.max_gap = gap;
-                    wheel.max_gap_time = Some(view.time);
+                if flight.counted && flight.max_gap.0 > wheel.max_gap {
+                    wheel.max_gap = flight.max_gap.0;
+                    wheel.max_gap_time = Some(flight.max_gap.1);
                 }
             }
             wheel.apart = apart;
