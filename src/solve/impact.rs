@@ -73,8 +73,6 @@ pub(super) struct Impacts {
     pub speed: Vec<f64>,
     /// The step's impulse per contact, N·s.
     pub impulse: Vec<f64>,
-    /// Each contact wheel's displacement at the start of the step, m.
-    pub start_displacement: Vec<f64>,
     /// Whether contact `c` lands this step (separated at its start, its free
     /// gap closing): Newton's law at the velocity level.
     pub landing: Vec<bool>,
@@ -139,7 +137,6 @@ impl Impacts {
             surface_slope: vec![0.0; nc],
             speed: vec![0.0; nc],
             impulse: vec![0.0; nc],
-            start_displacement: vec![0.0; nc],
             landing: vec![false; nc],
             leaving: vec![false; nc],
             was_on_deck: vec![false; nc],

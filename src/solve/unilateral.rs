@@ -495,10 +495,6 @@ pub fn run(
                 ContactLaw::Rigid { .. } if impacts.is_some() => {
                     let impacts = impacts.as_mut().expect("rigid contact");
                     impacts.locate(model, &contacts, on_deck, &wheel_positions, t);
-                    for (c, contact) in contacts.iter().enumerate() {
-                        impacts.start_displacement[c] =
-                            states[contact.vehicle].displacement[contact.dof];
-                    }
                     for i in 0..modes {
                         impacts.free_modal_velocity[i] =
                             nm.a1 * modal.predictor[i] - modal.damping_history[i];
@@ -972,37 +968,6 @@ fn moreau_jean_finish(
             // the next step on, so a quick return is another impact.
             impacts.leaving[c] = true;
         }
-    }
-    // A wheel with mass held on the surface by the displacement-level law
-    // moves with it. The trapezoidal rule under a position constraint
-    // leaves the wheel an alternating velocity error of h²s‴/12 (the rule's
-    // local error on the surface path s(t)), which the next step turns into
-    // an alternating acceleration error growing by h·s‴/3 a step: a
-    // period-2 oscillation of the contact force whose amplitude grows as
-    // m·s‴·t/3 whatever the step (on the hopping surface, 3 kN per ms), and
-    // which took the force to zero on alternate steps before the real
-    // lift-off (flights of 1–3 steps, 1–10 nm). So every step restarts
-    // from the constraint: the acceleration becomes the surface's s̈ and
-    // the velocity the step's secant, (u_{n+1} − uₙ)/h + (h/2)s̈ (first
-    // order; the secant follows every part of the surface, the residual
-    // static deflection under the wheel included, which s̈ leaves out).
-    for (c, contact) in contacts.iter().enumerate() {
-        if !impacts.takes_impacts(c) || impacts.landing[c] || lambda[c] <= 0.0 {
-            continue;
-        }
-        let (_, surface_acceleration) = surface_motion(
-            model,
-            modal,
-            contact,
-            wheel_positions[contact.wheel],
-            t,
-            [&mut *values, &mut *slopes, &mut *curvatures],
-        );
-        let state = &mut states[contact.vehicle];
-        let secant = (state.displacement[contact.dof] - impacts.start_displacement[c])
-            / model.time_step;
-        state.velocity[contact.dof] = secant + 0.5 * model.time_step * surface_acceleration;
-        state.acceleration[contact.dof] = surface_acceleration;
     }
     for (c, contact) in contacts.iter().enumerate() {
         if impacts.takes_impacts(c) {
