@@ -357,12 +357,12 @@ fn separation_statistics_match_histories() {
                 let (n, largest) = flight.get_or_insert((0, 0.0));
                 *n += usize::from(k > 0);
                 *largest = largest.max(g);
-            } else if let Some((n, largest)) = flight.take() {
-                if largest > loss_gap {
-                    episodes += 1;
-                    steps += n;
-                    max_gap = max_gap.max(largest);
-                }
+            } else if let Some((n, largest)) = flight.take()
+                && largest > loss_gap
+            {
+                episodes += 1;
+                steps += n;
+                max_gap = max_gap.max(largest);
             }
         }
         if let Some((n, largest)) = flight.filter(|f| f.1 > loss_gap) {
