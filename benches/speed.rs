@@ -20,8 +20,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use vbi::execute::Results;
+use vbi::plan::Loaded;
 use vbi::run::Outcome;
-use vbi::scenario::Loaded;
 use vbi::study::separation_map::SeparationMap;
 
 fn main() {
@@ -433,7 +433,7 @@ fn with_contact(text: &str, contact: &str) -> String {
 }
 
 fn load(text: &str, label: &str) -> Loaded {
-    vbi::scenario::load_str(text, label).unwrap_or_else(|e| panic!("{label}: {e}"))
+    vbi::plan::load_str(text, label).unwrap_or_else(|e| panic!("{label}: {e}"))
 }
 
 fn simulate(loaded: &Loaded) -> Outcome {
@@ -543,7 +543,7 @@ fn foundation(budget: f64) {
     let mut run_wall = Vec::new();
     let total = sample(budget, || {
         let start = Instant::now();
-        let loaded = vbi::scenario::load_file(&path).expect("scene loads");
+        let loaded = vbi::plan::load_file(&path).expect("scene loads");
         let scenario = loaded.scenario.clone();
         let outcome = vbi::run::simulate(loaded, &mut |_, _| {}).expect("scene runs");
         vbi::run::write_results(&out, &scenario, &outcome).expect("results written");
@@ -688,7 +688,7 @@ fn plate(budget: f64) {
         let mut iterations = 0.0;
         let loads = sample(budget, || {
             let start = Instant::now();
-            let loaded = vbi::scenario::load_file(&path).expect("scene loads");
+            let loaded = vbi::plan::load_file(&path).expect("scene loads");
             let load_ms = start.elapsed().as_secs_f64() * 1e3;
             let outcome = simulate(&loaded);
             steps = outcome.summary.run.steps;

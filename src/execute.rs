@@ -4,8 +4,8 @@
 
 use std::path::Path;
 
+use crate::plan::Loaded;
 use crate::run::{self, RunError};
-use crate::scenario::Loaded;
 use crate::scene::Study;
 pub use crate::study::Results;
 use crate::study::{monte_carlo, separation_map, speed_sweep};

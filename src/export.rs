@@ -14,7 +14,7 @@ use thiserror::Error;
 
 use crate::bridge::BridgeError;
 use crate::bridge::beam::BeamModel;
-use crate::bridge::fe_import::matrix_market;
+use crate::scenario::fe_import::matrix_market;
 use crate::scene::{Bridge, Damping, Scenario};
 
 /// Why an export failed.

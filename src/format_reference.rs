@@ -216,7 +216,15 @@ impl Writer<'_> {
             .push_str("| key | type | default | range | meaning |\n|---|---|---|---|---|\n");
         for (key, field) in properties {
             let target = self.resolve(field).clone();
-            let items = target.get("items").map(|items| self.resolve(items).clone());
+            let items = target.get("items").map(|items| {
+                // A list of lists (a profile's `[x, r]` points): the inner
+                // items resolved too, so their units show.
+                let mut items = self.resolve(items).clone();
+                if let Some(inner) = items.get("items").map(|inner| self.resolve(inner).clone()) {
+                    items["items"] = inner;
+                }
+                items
+            });
             let nested = if is_section(&target) {
                 Some(target.clone())
             } else {

@@ -3,8 +3,9 @@
 //! A scene flows one way through layers that import only downward
 //! (ARCHITECTURE.md has the map; `src/layers.rs` checks it): [`scene`] (the
 //! resolved scene description, plain data) ← [`scenario`] (the format: YAML →
-//! raw types → scene, every check, the JSON Schema) ← the physics
-//! ([`contact`], [`ground`], [`surface`], [`vehicle`], [`bridge`]) ← [`model`]
+//! raw types → scene, every check that needs no physics, the JSON Schema) ←
+//! the physics ([`contact`], [`ground`], [`surface`], [`vehicle`], [`bridge`])
+//! ← [`plan`] (the modal bridge and every automatic choice) ← [`model`]
 //! (the built system) ← [`solve`] ← [`record`] ← [`report`] (the only code
 //! that writes results) ← [`run`] (one scene) ← [`study`] ← [`execute`]
 //! (scene or study). Units are SI throughout; vertical quantities are
@@ -12,11 +13,12 @@
 //!
 //! # Using vbi as a library
 //!
-//! Load a scene (from a file with [`scenario::load_file`], from text with
-//! [`scenario::load_str`]), run it, and get the results back as data; files
-//! are written only when you hand the results to the report layer. Loading
-//! also makes the automatic choices (modes, time step, budgets): the
-//! planning stage is not yet a step of its own.
+//! Three stages: load (the format reads and checks the scene), plan (the
+//! bridge's modes and every automatic choice: modes, time step, budgets, each
+//! with its reason) and run. [`plan::load_file`] and [`plan::load_str`] do
+//! the first two and return a [`plan::Loaded`]; [`execute::execute`] (or
+//! [`run::simulate`] for a scene) runs it and returns the results as data; files
+//! are written only when you hand the results to the report layer.
 //!
 //! ```
 //! use vbi::execute::{Results, execute};
@@ -29,7 +31,11 @@
 //! solver: {time_step: 1.0e-3}
 //! record: [{name: midspan, quantity: bridge_displacement, x: 12.5}]
 //! ";
-//! let loaded = vbi::scenario::load_str(yaml, "api-example.yaml")?;
+//! // Load and plan: the format's checks, then the modal bridge and the
+//! // automatic choices, each with its reason.
+//! let loaded = vbi::plan::load_str(yaml, "api-example.yaml")?;
+//! assert_eq!(loaded.scenario.solver.time_step_selection, "set in the file");
+//! // Run.
 //! let Results::Scene(outcome) = execute(loaded.clone(), &|_done, _total| {})? else {
 //!     unreachable!("a scene without a study")
 //! };
@@ -57,6 +63,7 @@ pub mod generate;
 pub mod ground;
 pub mod init;
 pub mod model;
+pub mod plan;
 pub mod record;
 pub mod regress;
 pub mod report;

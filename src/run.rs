@@ -8,10 +8,10 @@ use std::time::Instant;
 use thiserror::Error;
 
 use crate::model::{BuildError, Model};
+use crate::plan::Loaded;
 use crate::record::{History, Recorder};
 use crate::report::summary::Summary;
 use crate::report::{self, ReportError};
-use crate::scenario::Loaded;
 use crate::scene::Scenario;
 use crate::solve::{self, Progress, SolveError};
 
@@ -111,30 +111,47 @@ fn run_scene(
         ),
         _ => None,
     };
-    let solve_start = Instant::now();
-    let stats = match zero_order.as_mut() {
-        Some(zero) => solve::embs::run_orders(&model, &mut recorder, Some(zero), progress)
-            .map(|()| solve::SolveStats::default())?,
-        None => solve::run(&model, &mut recorder, progress)?,
-    };
-    let solve_time = solve_start.elapsed().as_secs_f64();
+    // EMBS compared with `coupled`: the same model and records through the
+    // coupled solver as the reference, on a second thread while EMBS runs
+    // (the two runs share nothing but the model; on two cores the pair takes
+    // the time of the slower one).
+    let embs_compared = compare && model.method == crate::scene::SolverMethod::Embs;
+    let (stats, solve_time, reference) = std::thread::scope(|scope| {
+        let coupled = embs_compared.then(|| {
+            let token = solve::cancel::current();
+            let (model, record, every) = (&model, &scenario.record, scenario.output.every);
+            scope.spawn(move || {
+                solve::cancel::in_scope(token.as_ref(), || -> Result<_, RunError> {
+                    let mut coupled = Recorder::new(model, record)
+                        .map_err(BuildError::from)?
+                        .every(every);
+                    let coupled_start = Instant::now();
+                    solve::coupled::run(model, &mut coupled, &mut |_, _| {})?;
+                    Ok((coupled.finish(), coupled_start.elapsed().as_secs_f64()))
+                })
+            })
+        });
+        let solve_start = Instant::now();
+        let stats = match zero_order.as_mut() {
+            Some(zero) => solve::embs::run_orders(&model, &mut recorder, Some(zero), progress)
+                .map(|()| solve::SolveStats::default()),
+            None => solve::run(&model, &mut recorder, progress),
+        };
+        let solve_time = solve_start.elapsed().as_secs_f64();
+        let reference = coupled.map(|handle| {
+            handle
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        });
+        (stats, solve_time, reference)
+    });
+    let stats = stats?;
+    let reference = reference.transpose()?;
     let zero_order = zero_order.map(Recorder::finish);
     let history = recorder.finish_spilled().map_err(io)?;
     let wall_time = start.elapsed().as_secs_f64();
     let mut summary = Summary::new(&scenario.name, &model, &history, &stats, wall_time);
     if model.method == crate::scene::SolverMethod::Embs {
-        // The same model and records through `coupled`, as the reference.
-        let reference = if compare {
-            let mut coupled = Recorder::new(&model, &scenario.record)
-                .map_err(BuildError::from)?
-                .every(scenario.output.every);
-            let coupled_start = Instant::now();
-            solve::coupled::run(&model, &mut coupled, &mut |_, _| {})?;
-            let coupled_time = coupled_start.elapsed().as_secs_f64();
-            Some((coupled.finish(), coupled_time))
-        } else {
-            None
-        };
         summary.embs = Some(report::embs::EmbsSummary::new(
             &model,
             &scenario.record,

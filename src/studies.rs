@@ -6,7 +6,9 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, default_out, emit, load_error, run};
+use super::run_cmd::{default_out, load_error, run};
+use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, emit};
+use vbi::plan;
 use vbi::scenario::{self, LoadError};
 
 /// Writes a study's results into `out` and says what it found.
@@ -139,7 +141,7 @@ fn progress_bar(quiet: bool, message: &str) -> ProgressBar {
 
 /// `vbi run --shard K/N`: the slice's part file in the output folder.
 pub(super) fn run_shard(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     options: &scenario::LoadOptions,
     out: Option<PathBuf>,
@@ -218,7 +220,7 @@ pub(super) fn run_shard(
 
 /// `vbi run --sample K`: sample K of a Monte Carlo study as one scene.
 pub(super) fn run_sample(
-    loaded: Result<scenario::Loaded, LoadError>,
+    loaded: Result<plan::Loaded, LoadError>,
     file: &Path,
     out: Option<PathBuf>,
     quiet: bool,
@@ -254,7 +256,7 @@ pub(super) fn run_sample(
         case,
         (k - 1) as usize,
     );
-    let loaded = scenario::Loaded {
+    let loaded = plan::Loaded {
         scenario,
         bridge: loaded.bridge,
     };

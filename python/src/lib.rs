@@ -19,8 +19,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use vbi::execute::{Results, execute};
+use vbi::plan::{self, Loaded};
 use vbi::run::RunError;
-use vbi::scenario::{self, LoadError, LoadOptions, Loaded};
+use vbi::scenario::{LoadError, LoadOptions};
 use vbi::solve::SolveError;
 use vbi::solve::cancel::CancelToken;
 
@@ -61,8 +62,8 @@ enum Source {
 impl Source {
     fn load(&self) -> Result<Loaded, LoadError> {
         match self {
-            Source::Path(path) => scenario::load_file(path),
-            Source::Text { text, name } => scenario::load_str(text, name),
+            Source::Path(path) => plan::load_file(path),
+            Source::Text { text, name } => plan::load_str(text, name),
         }
     }
 }
@@ -321,10 +322,8 @@ fn modes<'py>(
     let source = source_of(kind, scene, name)?;
     let loaded = py
         .detach(|| match &source {
-            Source::Path(path) => scenario::load_file_for_modes(path, trusted()),
-            Source::Text { text, name } => {
-                scenario::bridge_only::load_for_modes(text, name, trusted())
-            }
+            Source::Path(path) => plan::load_file_for_modes(path, trusted()),
+            Source::Text { text, name } => plan::bridge_only::load_for_modes(text, name, trusted()),
         })
         .map_err(load_error)?;
     let bridge = &loaded.bridge;
@@ -377,7 +376,7 @@ fn modes<'py>(
     Ok(out)
 }
 
-/// The load options of `scenario::load_file`: the file's own `limits` apply.
+/// The load options of `plan::load_file`: the file's own `limits` apply.
 fn trusted() -> LoadOptions {
     LoadOptions {
         trust_limits: true,

@@ -13,7 +13,8 @@
 //! so that the arithmetic is the record's), and each wheel through each
 //! point's static influence lines.
 
-use super::{StaticProbe, corrected_displacement, dot, filtered_shape, static_shape, unit_of};
+use super::probe::{StaticProbe, corrected_displacement, dot, filtered_shape, static_shape};
+use super::unit_of;
 use crate::bridge::BridgeError;
 use crate::bridge::section::{SectionLoads, SectionProbe};
 use crate::model::Model;

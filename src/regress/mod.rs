@@ -70,8 +70,7 @@ pub struct Ran {
 /// Loads and runs the scene `file` into its record.
 pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran, String> {
     let start = Instant::now();
-    let loaded =
-        crate::scenario::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
+    let loaded = crate::plan::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
     let resolved = canonical_scene(&loaded.scenario);
     let results = crate::execute::execute(loaded, &|_, _| {})
         .map_err(|e| format!("{}: {e}", file.display()))?;

@@ -1,8 +1,9 @@
 //! Resolving `bridge`: the beam and the plate deck, with their checks and
 //! defaults.
 
+use super::checker::{Checker, check_ratio};
 use super::raw;
-use super::resolve::{Checker, DEFAULT_ELEMENTS_PER_SPAN, check_ratio};
+use super::resolve::DEFAULT_ELEMENTS_PER_SPAN;
 use crate::scene::*;
 
 /// Default Ritz transverse functions.
@@ -19,7 +20,7 @@ pub const DEFAULT_ORTHOTROPIC_POISSON: f64 = 0.3;
 pub const MAX_RITZ_TERMS: usize = 2_000;
 
 /// Resolves the bridge description; `None` after reporting its problems.
-pub(super) fn resolve_bridge(
+pub(crate) fn resolve_bridge(
     raw: &raw::BridgeRaw,
     budget: &super::budget::Budget,
     ck: &mut Checker<'_>,
@@ -403,7 +404,7 @@ fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     elements_per_span
 }
 
-pub(super) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
+pub(crate) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {
     match raw {
         None => Modes {
             count: None,

@@ -11,8 +11,8 @@
 //! estimate is computed in `f64` or with checked integer arithmetic, so no
 //! user-given size can wrap around.
 
+use super::checker::Checker;
 use super::raw::{self, LimitsRaw};
-use super::resolve::Checker;
 use crate::scene::{Bridge, Limits, Surface};
 
 /// How a scene is loaded: whether its budgets are enforced, and where
@@ -75,7 +75,7 @@ impl Limits {
 
     /// Fills the defaults of the file's `limits` section and checks each
     /// given value is a positive whole number.
-    pub(super) fn resolve(raw: Option<&LimitsRaw>, ck: &mut Checker<'_>) -> Limits {
+    pub(crate) fn resolve(raw: Option<&LimitsRaw>, ck: &mut Checker<'_>) -> Limits {
         let d = Limits::default();
         let Some(raw) = raw else { return d };
         let mut pick = |key: &str, given: Option<f64>, default: f64| match given {
@@ -110,7 +110,7 @@ impl Limits {
 
 /// Compares estimates with the limits and reports at the input that drives
 /// each one.
-pub(super) struct Budget {
+pub(crate) struct Budget {
     /// The limits that apply: the file's where it lowers them (or where the
     /// command line trusts it), else the defaults.
     limits: Limits,
@@ -120,7 +120,7 @@ pub(super) struct Budget {
 }
 
 impl Budget {
-    pub(super) fn new(asked: Limits, options: &LoadOptions) -> Self {
+    pub(crate) fn new(asked: Limits, options: &LoadOptions) -> Self {
         let mut limits = asked;
         if !options.trust_limits {
             let d = Limits::default();
@@ -138,7 +138,7 @@ impl Budget {
     /// Checks `asked` against the limit `key`; `what` names the quantity and
     /// `path` is where the input that drives it is written. Returns whether
     /// it fits.
-    pub(super) fn check(
+    pub(crate) fn check(
         &self,
         ck: &mut Checker<'_>,
         path: &str,
@@ -151,7 +151,7 @@ impl Budget {
 
     /// [`Budget::check`] with `because` (why the input at `path` asks for
     /// so much, and what would fit) added to a refusal.
-    pub(super) fn check_because(
+    pub(crate) fn check_because(
         &self,
         ck: &mut Checker<'_>,
         path: &str,
@@ -175,7 +175,7 @@ impl Budget {
 
     /// Why `asked` of the quantity `what` does not fit the limit `key`, or
     /// `None` if it does.
-    pub(super) fn refusal(&self, key: &str, what: &str, asked: f64) -> Option<String> {
+    pub(crate) fn refusal(&self, key: &str, what: &str, asked: f64) -> Option<String> {
         let limit = self.limit(key);
         let fits = |bound: f64| asked.is_finite() && asked <= bound;
         if self.allow_large {
@@ -219,7 +219,7 @@ impl Budget {
 
     /// The counts read straight from the file: wheels and records. Returns
     /// whether they fit.
-    pub(super) fn counts(&self, raw: &raw::ScenarioRaw, ck: &mut Checker<'_>) -> bool {
+    pub(crate) fn counts(&self, raw: &raw::ScenarioRaw, ck: &mut Checker<'_>) -> bool {
         let wheels_fit = self.check(
             ck,
             "vehicles",
@@ -235,7 +235,7 @@ impl Budget {
     /// What building the model costs: the bridge's eigenproblem, its modes
     /// and a random road's series. Checked before the eigen solve, which is
     /// O(n³). Returns whether they fit.
-    pub(super) fn model(&self, bridge: &Bridge, surface: &Surface, ck: &mut Checker<'_>) -> bool {
+    pub(crate) fn model(&self, bridge: &Bridge, surface: &Surface, ck: &mut Checker<'_>) -> bool {
         let (dofs_path, dofs_what) = match bridge {
             Bridge::Plate(_) if ck.has("bridge.terms") => (
                 "bridge.terms",
@@ -279,68 +279,8 @@ impl Budget {
         fits
     }
 
-    /// Whether a beam's eigen solve for `modes` modes fits
-    /// `limits.eigen_work` (n m², the Lanczos basis's re-orthogonalisation,
-    /// m the vectors the solve needs: [`lanczos_vectors`]); a plate's Ritz
-    /// problem is bounded by `dofs` already. `path` is where the mode count
-    /// comes from.
-    pub(super) fn eigen(
-        &self,
-        ck: &mut Checker<'_>,
-        path: &str,
-        bridge: &Bridge,
-        modes: usize,
-    ) -> bool {
-        if matches!(bridge, Bridge::Plate(_)) {
-            return true;
-        }
-        let dofs = crate::bridge::ModalBridge::available_of(bridge) as f64;
-        let vectors = lanczos_vectors(bridge, modes);
-        let work = dofs * vectors.powi(2);
-        if vectors <= modes as f64 {
-            return self.check(
-                ck,
-                path,
-                "eigen_work",
-                &format!(
-                    "work of the eigen solve for {modes} modes of {dofs} DOFs (DOFs × modes²)"
-                ),
-                work,
-            );
-        }
-        // A many-span beam: the cost is set by its bands, not by the modes.
-        let Bridge::Beam(beam) = bridge else {
-            return true;
-        };
-        let spans = beam.spans.len() as f64;
-        let families = if beam.sway.is_some() { 3.0 } else { 1.0 };
-        // DOFs ≈ (DOFs per span) × spans and vectors ≈ families × spans, so
-        // the work grows as spans³: the most spans that fit.
-        let per_span = dofs / spans;
-        let fitting = (self.limit_of("eigen_work") / (per_span * families * families)).cbrt();
-        self.check_because(
-            ck,
-            "bridge.spans",
-            "eigen_work",
-            &format!(
-                "work of the eigen solve for {modes} modes of {dofs} DOFs: {} spans put {} modes \
-                 in each frequency band (nearly equal frequencies), which the solver resolves \
-                 together, {} Lanczos vectors (DOFs × vectors²)",
-                spans,
-                spans * families,
-                vectors
-            ),
-            work,
-            &format!(
-                "the solve's cost grows as the cube of the span count: at most {} spans of \
-                 this mesh fit",
-                fitting.floor()
-            ),
-        )
-    }
-
     /// The bound `key` enforces (effectively none under `--allow-large`).
-    pub(super) fn limit_of(&self, key: &str) -> f64 {
+    pub(crate) fn limit_of(&self, key: &str) -> f64 {
         if self.allow_large {
             ABSOLUTE
         } else {
@@ -413,7 +353,7 @@ impl Limits {
 /// 3,000, cubic). So m = max(k, S): beyond S modes the bands above are
 /// resolved in turn, and more than a band's worth of modes costs what the
 /// modes cost (limits.modes bounds k). m = k for other bridges.
-pub(super) fn lanczos_vectors(bridge: &Bridge, modes: usize) -> f64 {
+pub(crate) fn lanczos_vectors(bridge: &Bridge, modes: usize) -> f64 {
     let Bridge::Beam(beam) = bridge else {
         return modes as f64;
     };
@@ -442,7 +382,7 @@ fn count(x: f64) -> String {
 
 /// Wheels over the raw vehicles (axle loads, one per oscillator, four per
 /// truck or rail car, four per car of a train), counted before anything is resolved.
-pub(super) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
+pub(crate) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
     vehicles
         .iter()
         .map(|v| match v {
@@ -500,7 +440,7 @@ pub fn bridge_dofs(bridge: &Bridge) -> f64 {
 /// one column per record (two for a bridge displacement, which also gets its
 /// static part); in CSV each value at most 24 characters (ryu's longest f64
 /// and a separator), in NPY 8 bytes.
-pub(super) fn history_bytes(rows: f64, columns: f64, format: crate::scene::HistoryFormat) -> f64 {
+pub(crate) fn history_bytes(rows: f64, columns: f64, format: crate::scene::HistoryFormat) -> f64 {
     let per_value = if format.csv() { 24.0 } else { 0.0 } + if format.npy() { 8.0 } else { 0.0 };
     rows * (columns + 1.0) * per_value
 }

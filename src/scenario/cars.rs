@@ -5,11 +5,11 @@
 //! was given, so the resolved scene (written as a `cars` list) resolves to
 //! the same offsets bit for bit.
 
+use super::checker::Checker;
 use super::rail::MAX_CARS;
-use super::resolve::Checker;
 
 /// How one kind of car is resolved and checked.
-pub(super) struct CarRules<P, R> {
+pub(crate) struct CarRules<P, R> {
     /// Applies the overrides `raw` (blamed at `path`) to the parameters.
     pub apply: fn(&mut P, Option<&R>, &str, &mut Checker<'_>),
     /// Checks one car's parameters as a whole (blamed at `path`), after
@@ -21,7 +21,7 @@ pub(super) struct CarRules<P, R> {
 }
 
 /// One resolved car.
-pub(super) struct Car<P> {
+pub(crate) struct Car<P> {
     /// Distance from the car ahead's front wheelset, m; none for the first.
     pub spacing: Option<f64>,
     /// Distance of the front wheelset behind the train's first, m.
@@ -35,7 +35,7 @@ pub(super) struct Car<P> {
 /// list as (spacing, overrides). Without `count` or a list the train is
 /// one car if `one_by_default`, else an error.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn resolve_cars<P: Copy, R>(
+pub(crate) fn resolve_cars<P: Copy, R>(
     ck: &mut Checker<'_>,
     at: &str,
     rules: &CarRules<P, R>,

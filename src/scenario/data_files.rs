@@ -16,7 +16,7 @@
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use super::resolve::Checker;
+use super::checker::Checker;
 
 /// Where the files a scene names may be read from.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -34,7 +34,7 @@ pub struct DataAccess {
 /// A data file allowed to be read: the path shown in messages and written
 /// in the resolved scene, and its size, bytes.
 #[derive(Debug, Clone)]
-pub(super) struct DataFile {
+pub(crate) struct DataFile {
     /// The absolute path (the scene's folder joined with the name as
     /// written, symlinks not resolved), as diagnostics show it.
     pub shown: String,
@@ -63,7 +63,7 @@ fn scene_folder(file: &str) -> PathBuf {
 /// Resolves `named` (a path as written in the scene) and checks it may be
 /// read; `what` names the file in messages (`the measured profile`, or
 /// empty). The error is the whole message, reported by the caller at its key.
-pub(super) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFile, String> {
+pub(crate) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFile, String> {
     let cannot = |shown: &str, e: &std::io::Error| {
         let what = if what.is_empty() {
             String::new()
@@ -152,7 +152,7 @@ pub(super) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFi
 /// Reads `file` whole as UTF-8 text: opened non-blocking, checked again to
 /// be a regular file on the open handle, at most its size plus one byte
 /// read. The error is the whole message.
-pub(super) fn read_text(file: &DataFile) -> Result<String, String> {
+pub(crate) fn read_text(file: &DataFile) -> Result<String, String> {
     let shown = &file.shown;
     let mut bytes = Vec::new();
     let read = open_regular(&file.real).and_then(|f| {

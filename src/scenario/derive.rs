@@ -1,136 +1,18 @@
-//! The parts of resolving that need the built bridge or the resolved
-//! vehicles: oscillators from dimensionless groups, the contact model (an
-//! elastic stiffness from a ratio, a Hertz coefficient from a wheel radius),
-//! the solver method the contact needs, and studies.
+//! The parts of resolving that need the resolved vehicles but no physics:
+//! the contact model (an elastic stiffness from a ratio, a Hertz coefficient
+//! from a wheel radius), the solver method the contact needs, and studies
+//! (oscillators from dimensionless groups need f₁: `plan::derive`).
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
-use crate::bridge::ModalBridge;
 use crate::scene::*;
 
 /// Relative difference below which a given value agrees with a derived one.
 const AGREEMENT: f64 = 1e-9;
 
-/// Checks that an optional given value agrees with a derived one.
-fn agree(ck: &mut Checker<'_>, path: &str, given: Option<f64>, derived: f64, what: &str) {
-    if let Some(g) = given
-        && (g - derived).abs() > AGREEMENT * derived.abs().max(g.abs())
-    {
-        ck.error(
-            path,
-            format!("{what} {g} disagrees with the {derived} derived from the dimensionless groups; give one or the other"),
-        );
-    }
-}
-
-/// Fills in oscillators given by dimensionless groups, now that the bridge's
-/// first natural frequency f₁ is known (LCP separation paper, Table 1).
-pub(super) fn derive_dimensionless(
-    raws: &[raw::VehicleRaw],
-    vehicles: &mut [Vehicle],
-    bridge: &Bridge,
-    modal: &ModalBridge,
-    ck: &mut Checker<'_>,
-) {
-    let f1 = modal.frequencies()[0];
-    for (i, (raw, vehicle)) in raws.iter().zip(vehicles.iter_mut()).enumerate() {
-        let raw::VehicleRaw::Oscillator(o) = raw else {
-            continue;
-        };
-        let Some(d) = &o.dimensionless else { continue };
-        let at = format!("vehicles[{i}]");
-        let groups = Dimensionless {
-            velocity_ratio: d.velocity_ratio,
-            mass_ratio: d.mass_ratio,
-            unsprung_ratio: d.unsprung_ratio.unwrap_or(0.0),
-            frequency_ratio: d.frequency_ratio,
-            damping_ratio: d.damping_ratio.unwrap_or(0.0),
-        };
-        let dpath = |field: &str| format!("{at}.dimensionless.{field}");
-        ck.positive(
-            &dpath("velocity_ratio"),
-            groups.velocity_ratio,
-            "velocity ratio",
-        );
-        ck.positive(&dpath("mass_ratio"), groups.mass_ratio, "mass ratio");
-        ck.non_negative(
-            &dpath("unsprung_ratio"),
-            groups.unsprung_ratio,
-            "unsprung ratio",
-        );
-        ck.positive(
-            &dpath("frequency_ratio"),
-            groups.frequency_ratio,
-            "frequency ratio",
-        );
-        super::resolve::check_ratio(ck, &dpath("damping_ratio"), groups.damping_ratio);
-        let mut derived = groups.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
-        // The derived speed is blamed on the ratio that gives it.
-        if derived.speed > super::resolve::MAX_SPEED {
-            ck.error(
-                &dpath("velocity_ratio"),
-                format!(
-                    "a velocity ratio of {} gives a speed of {:.4e} m/s (2 × ratio × f1 × L, \
-                     f1 = {f1:.4} Hz, L = {} m), above {} m/s",
-                    groups.velocity_ratio,
-                    derived.speed,
-                    modal.length,
-                    super::resolve::MAX_SPEED
-                ),
-            );
-        }
-        agree(
-            ck,
-            &format!("{at}.sprung_mass"),
-            o.sprung_mass,
-            derived.sprung_mass,
-            "sprung_mass",
-        );
-        agree(
-            ck,
-            &format!("{at}.unsprung_mass"),
-            o.unsprung_mass,
-            derived.unsprung_mass,
-            "unsprung_mass",
-        );
-        agree(
-            ck,
-            &format!("{at}.stiffness"),
-            o.stiffness,
-            derived.stiffness,
-            "stiffness",
-        );
-        agree(
-            ck,
-            &format!("{at}.damping"),
-            o.damping,
-            derived.damping,
-            "damping",
-        );
-        agree(
-            ck,
-            &format!("{at}.speed"),
-            o.speed.map(|s| s.0),
-            derived.speed,
-            "speed",
-        );
-        derived.acceleration = super::resolve::check_acceleration(ck, &at, o.acceleration);
-        derived.entry_time = super::resolve::entry_time(
-            ck,
-            &at,
-            derived.speed,
-            derived.acceleration,
-            o.entry_time,
-            o.start_position,
-        );
-        derived.lateral_position = vehicle.lateral_position();
-        *vehicle = Vehicle::Oscillator(derived);
-    }
-}
-
 /// The contact model; an elastic stiffness from a ratio to the suspension
 /// stiffness, a Hertz coefficient from the wheel radius.
-pub(super) fn resolve_contact(
+pub(crate) fn resolve_contact(
     raw: Option<&raw::ContactRaw>,
     vehicles: &[Vehicle],
     ck: &mut Checker<'_>,
@@ -260,7 +142,7 @@ pub fn hertz_coefficient(radius: f64, profile: raw::TreadProfile) -> f64 {
 }
 
 /// The solution method: by default the one the contact model needs.
-pub(super) fn resolve_method(
+pub(crate) fn resolve_method(
     method: Option<SolverMethod>,
     contact: &Contact,
     ck: &mut Checker<'_>,
@@ -301,7 +183,7 @@ pub(super) fn resolve_method(
 }
 
 /// EMBS settings: only for `method: embs`.
-pub(super) fn resolve_embs(
+pub(crate) fn resolve_embs(
     solver: &raw::SolverRaw,
     method: SolverMethod,
     ck: &mut Checker<'_>,
@@ -329,7 +211,7 @@ pub(super) fn resolve_embs(
 }
 
 /// Convergence settings: only for `method: iterative`.
-pub(super) fn resolve_iteration(
+pub(crate) fn resolve_iteration(
     solver: &raw::SolverRaw,
     method: SolverMethod,
     ck: &mut Checker<'_>,
@@ -387,7 +269,7 @@ fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &crate::scene::Grid) {
 }
 
 /// A study and its requirements on the scene.
-pub(super) fn resolve_study(
+pub(crate) fn resolve_study(
     raw: Option<&raw::StudyRaw>,
     bridge: &Bridge,
     vehicles: &[Vehicle],

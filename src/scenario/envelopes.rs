@@ -1,9 +1,9 @@
 //! Resolving `envelopes:`: the quantities and points checked against the
 //! bridge, every default filled in.
 
+use super::checker::Checker;
 use super::raw;
 use super::records::{acceleration_cutoff, quantity_name_of};
-use super::resolve::Checker;
 use crate::scene::Quantity;
 use crate::scene::{Bridge, Envelopes};
 
@@ -21,7 +21,7 @@ pub const ENVELOPE_QUANTITIES: [Quantity; 4] = [
 
 /// The highest mode frequency the acceleration envelope sums, Hz (`None`
 /// without one): what the automatic mode choice must keep.
-pub(super) fn acceleration_cut(
+pub(crate) fn acceleration_cut(
     raw: Option<&raw::EnvelopesRaw>,
     frequencies: &[f64],
 ) -> Option<f64> {
@@ -35,7 +35,7 @@ pub(super) fn acceleration_cut(
 }
 
 /// `frequencies`: the bridge's lowest natural frequencies, Hz.
-pub(super) fn resolve_envelopes(
+pub(crate) fn resolve_envelopes(
     raw: Option<&raw::EnvelopesRaw>,
     frequencies: &[f64],
     bridge: &Bridge,

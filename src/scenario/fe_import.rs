@@ -6,12 +6,21 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::data_files::{self, DataFile};
 use super::raw;
-use super::resolve::Checker;
-use crate::bridge::fe_import::{
-    MatrixFile, ReadError, Source, abaqus, harwell_boeing, matrix_market, tables,
+pub mod abaqus;
+mod entries;
+pub mod harwell_boeing;
+pub mod matrix_market;
+mod read;
+pub mod rotation;
+pub mod tables;
+
+pub use self::read::{
+    AssemblyError, MatrixFile, RailNodes, ReadError, SYMMETRY_TOLERANCE, SizeCheck, Source,
 };
+pub(crate) use self::read::{fail, fail_at, parse_value};
 use crate::scene::imported::{Direction, ImportedModel};
 use crate::scene::*;
 
@@ -22,14 +31,14 @@ const MIN_ENTRY_BYTES: f64 = 10.0;
 /// Default length over which a wheel's load enters an imported track at a
 /// free rail end, m: a little beyond the distance ahead of a wheel at which
 /// a continuous rail on ballasted track already bends under it (the first
-/// zero of its deflection line, 1.7–2.1 m: [`crate::bridge::fe_import::entry`]),
+/// zero of its deflection line, 1.7–2.1 m: `crate::bridge::fe_import::entry`),
 /// and long enough that the ramp rings no track mode above the automatic
 /// cut-off: measured on scenarios/viaduct-2span (issue 24.4; README,
 /// "Imported FE models").
 pub const DEFAULT_ENTRY_LENGTH: f64 = 3.0;
 
 /// Resolves the `fe_import` bridge; `None` after reporting its problems.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: &raw::FeImportRaw,
     budget: &Budget,
     ck: &mut Checker<'_>,
@@ -47,11 +56,11 @@ pub(super) fn resolve(
     let (damping, damping_file) = match &raw.damping {
         None => (ImportDamping::Modal { ratio: 0.0 }, None),
         Some(raw::ImportDampingRaw::Modal { ratio }) => {
-            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            super::checker::check_ratio(ck, "bridge.damping.ratio", *ratio);
             (ImportDamping::Modal { ratio: *ratio }, None)
         }
         Some(raw::ImportDampingRaw::Rayleigh { frequencies, ratio }) => {
-            super::resolve::check_ratio(ck, "bridge.damping.ratio", *ratio);
+            super::checker::check_ratio(ck, "bridge.damping.ratio", *ratio);
             for (i, &f) in frequencies.iter().enumerate() {
                 ck.positive(
                     &format!("bridge.damping.frequencies[{i}]"),
@@ -139,7 +148,7 @@ pub(super) fn resolve(
                 rail_inputs.push(RailInput {
                     name: rail.name.clone(),
                     file: None,
-                    nodes: Some(nodes.clone()),
+                    nodes: Some(nodes.iter().map(|n| n.resolved()).collect()),
                 });
             }
             _ => ck.error(

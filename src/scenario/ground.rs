@@ -4,16 +4,30 @@
 //! the message); the file's size and its declared sample count are budgeted
 //! (`limits.ground_points`) before anything is allocated per sample.
 
+mod at2;
+mod table;
+
+pub(super) use self::table::not_a_number;
+
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::data_files::DataFile;
 use super::raw::GroundMotionRaw;
-use super::resolve::Checker;
-use crate::ground::{at2, table};
 use crate::scene::{AccelerationUnit, Direction, GroundRecord};
 use crate::scene::{Bridge, GroundMotion};
+
+/// Plausible sampling interval of a ground-motion record, s: strong-motion
+/// accelerographs sample at 50–1000 Hz (PEER NGA records: 0.005–0.02 s),
+/// synthetic records a little finer; 1 µs to 1 s brackets them with room to
+/// spare. A record sampled more coarsely than 1 s does not describe an
+/// earthquake's 0.1–25 Hz shaking, and a 1e300 s interval is a typing slip.
+pub const SAMPLING_INTERVAL: (f64, f64) = (1e-6, 1.0);
+
+/// Longest plausible record, s (one day, as a vehicle's entry time).
+pub const RECORD_DURATION: f64 = 86_400.0;
 
 /// A record's samples as read: times (s), accelerations (in the units),
 /// the units.
@@ -23,7 +37,7 @@ type Samples = Arc<(Vec<f64>, Vec<f64>, AccelerationUnit)>;
 const MIN_SAMPLE_BYTES: f64 = 2.0;
 
 /// Resolves every component; those with errors are reported and left out.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: Option<&[GroundMotionRaw]>,
     bridge: Option<&Bridge>,
     vehicles_move_sideways: bool,
@@ -42,7 +56,9 @@ pub(super) fn resolve(
         let direction = component.direction.unwrap_or(Direction::Vertical);
         match direction {
             Direction::Vertical => {}
-            Direction::Lateral if moves_sideways(bridge) || vehicles_move_sideways => {}
+            // Without a valid bridge its lateral modes are not known.
+            Direction::Lateral
+                if bridge.is_none() || moves_sideways(bridge) || vehicles_move_sideways => {}
             Direction::Lateral => {
                 let kind = match bridge {
                     Some(Bridge::Plate(_)) => "plate",

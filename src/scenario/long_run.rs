@@ -8,12 +8,12 @@
 //! crossing, the file's own time step, else the slowest vehicle's speed.
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::{GroundMotion, Surface, Vehicle};
 
 /// The run whose steps are budgeted.
-pub(super) struct LongRun<'a> {
+pub(crate) struct LongRun<'a> {
     pub raw: &'a raw::ScenarioRaw,
     /// The vehicles of the longest run (a study's slowest point).
     pub slow: &'a [Vehicle],
@@ -32,7 +32,7 @@ pub(super) struct LongRun<'a> {
 }
 
 /// The field blamed and what would fit.
-pub(super) struct Cause {
+pub(crate) struct Cause {
     /// Its path in the file.
     pub path: String,
     /// Why it makes the run long and a value that fits `limit` steps.
@@ -47,7 +47,7 @@ pub(super) struct Cause {
 /// the one the full check after the solve gives, word for word; `false`
 /// when it refused.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn steps_fit_before_modes(
+pub(crate) fn steps_fit_before_modes(
     raw: &raw::ScenarioRaw,
     vehicles: &[Vehicle],
     ground_motion: &[GroundMotion],
@@ -101,7 +101,7 @@ pub(super) fn steps_fit_before_modes(
 impl LongRun<'_> {
     /// The cause of the steps of this run, with a value that fits `limit`
     /// steps.
-    pub(super) fn cause(&self, limit: f64) -> Cause {
+    pub(crate) fn cause(&self, limit: f64) -> Cause {
         let (dt, duration) = (self.time_step, self.duration);
         // The run time `limit` steps of the current step cover, and the
         // excess to remove.

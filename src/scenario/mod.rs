@@ -6,11 +6,10 @@
 //! `type` without losing positions) → [`resolve`] (checks and defaults) →
 //! [`resolved::Scenario`].
 
-pub mod bridge_only;
 pub mod bridges;
 pub mod budget;
-mod cars;
-pub mod content;
+pub(crate) mod cars;
+pub mod checker;
 pub mod data_files;
 #[allow(missing_docs)]
 pub mod de;
@@ -18,16 +17,16 @@ pub mod derive;
 #[allow(missing_docs)]
 pub mod diagnostic;
 pub mod envelopes;
-mod fe_import;
-mod ground;
-mod long_run;
+pub mod fe_import;
+pub(crate) mod ground;
+pub(crate) mod long_run;
 pub mod names;
-mod output;
-mod plausible;
+pub(crate) mod output;
+pub(crate) mod plausible;
 pub mod rail;
 pub mod rail_3d;
 pub mod raw;
-mod records;
+pub(crate) mod records;
 pub mod resolve;
 /// The resolved scene, which the format produces: [`crate::scene`].
 pub use crate::scene as resolved;
@@ -37,6 +36,7 @@ pub mod schema;
 pub mod surfaces;
 pub mod sweep;
 pub mod truck;
+pub mod vehicles;
 #[allow(missing_docs)]
 pub mod yaml;
 
@@ -46,23 +46,13 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub use self::budget::LoadOptions;
+pub(crate) use self::checker::Checker;
 pub use self::data_files::DataAccess;
 pub use self::diagnostic::Diagnostic;
 use self::raw::ScenarioRaw;
 pub use self::records::quantity_name_of;
+pub(crate) use self::resolve::Described;
 use self::yaml::Location;
-use crate::bridge::ModalBridge;
-use crate::scene::Scenario;
-
-/// A scenario that passed every check, with the bridge's modal model built
-/// while resolving.
-#[derive(Debug, Clone)]
-pub struct Loaded {
-    /// The resolved scenario.
-    pub scenario: Scenario,
-    /// The modal bridge.
-    pub bridge: ModalBridge,
-}
 
 /// Why a scenario could not be loaded.
 #[derive(Debug, Error)]
@@ -117,39 +107,18 @@ impl fmt::Display for Diagnostics<'_> {
     }
 }
 
-/// Reads and resolves a scenario file with the default budgets, as raised
-/// or lowered by the file's own `limits` (the caller chose the file).
-pub fn load_file(path: &Path) -> Result<Loaded, LoadError> {
-    load_file_with(path, trusted())
-}
-
-/// The options of [`load_file`] and [`load_str`]: the file's `limits` apply.
-fn trusted() -> LoadOptions {
+/// The options of [`crate::plan::load_file`] and
+/// [`crate::plan::load_str`]: the file's `limits` apply.
+pub fn trusted() -> LoadOptions {
     LoadOptions {
         trust_limits: true,
         ..LoadOptions::default()
     }
 }
 
-/// Reads and resolves a scenario file.
-pub fn load_file_with(path: &Path, options: LoadOptions) -> Result<Loaded, LoadError> {
-    let (source, file) = read_source(path)?;
-    load_str_with(&source, &file, options)
-}
-
-/// Reads a scenario file for `vbi modes`, which needs no vehicles
-/// ([`bridge_only::load_for_modes`]).
-pub fn load_file_for_modes(
-    path: &Path,
-    options: LoadOptions,
-) -> Result<bridge_only::ModesScene, LoadError> {
-    let (source, file) = read_source(path)?;
-    bridge_only::load_for_modes(&source, &file, options)
-}
-
 /// The text of a scenario file and its name for diagnostics; the size is
 /// checked before the file is read whole.
-fn read_source(path: &Path) -> Result<(String, String), LoadError> {
+pub fn read_source(path: &Path) -> Result<(String, String), LoadError> {
     let io = |source| LoadError::Io {
         path: path.to_path_buf(),
         source,
@@ -271,6 +240,10 @@ pub struct Parsed {
     /// The mappings and sequences that lost an entry: a check that finds
     /// something missing there is a consequence of a type error.
     pub pruned: Vec<Location>,
+    /// Whether `bridge`, a required section, did not parse (or is absent):
+    /// a stand-in took its place in `raw` so that the other sections are
+    /// still checked, and it must not be checked itself.
+    pub bridge_unreadable: bool,
 }
 
 /// Parses a scenario's text and reports every type error (unknown key,
@@ -308,6 +281,7 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
                 raw: Some((raw, node)),
                 diagnostics: Vec::new(),
                 pruned: Vec::new(),
+                bridge_unreadable: false,
             });
         }
         Err(e) => e,
@@ -320,6 +294,8 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
     let mut pruned: Vec<Location> = Vec::new();
     let mut error = first;
     let mut rest = None;
+    // Required sections given a stand-in.
+    let mut stood_in: Vec<&'static str> = Vec::new();
     for pass in 1.. {
         let loc = error.loc.unwrap_or(tree.loc);
         let consequence = pruned.contains(&loc)
@@ -341,7 +317,26 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
             ));
             break;
         }
-        if !prune(&mut tree, loc, &mut pruned) {
+        // A required section lost to a type error (or never written) gets
+        // a stand-in, so that the other sections are still checked.
+        let missing = ["name", "bridge", "vehicles"]
+            .into_iter()
+            .find(|s| error.message == format!("missing field `{s}`"));
+        if loc == tree.loc
+            && let Some(section) = missing
+            && !stood_in.contains(&section)
+        {
+            if !stand_in(&mut tree, section) {
+                break;
+            }
+            stood_in.push(section);
+            // What is checked against a stand-in name or vehicle list
+            // (located at the root, where the stand-in is) is a
+            // consequence; a stand-in bridge is not checked at all.
+            if section != "bridge" {
+                pruned.push(tree.loc);
+            }
+        } else if !prune(&mut tree, loc, &mut pruned) {
             break;
         }
         match de::from_node::<ScenarioRaw>(&tree) {
@@ -356,7 +351,48 @@ pub fn parse_raw_all(source: &str, file: &str) -> Result<Parsed, LoadError> {
         raw: rest.map(|raw| (raw, tree)),
         diagnostics,
         pruned,
+        bridge_unreadable: stood_in.contains(&"bridge"),
     })
+}
+
+/// Puts a stand-in for the required `section` into the root mapping
+/// `tree`, every node at the root's location: `name: unnamed`, an empty
+/// `vehicles` list, or a valid beam `bridge` (which the loader marks
+/// unreadable, so it is never resolved or checked). `false` if the root is
+/// not a mapping.
+fn stand_in(tree: &mut yaml::Node, section: &str) -> bool {
+    use self::yaml::{Node, NodeKind};
+    let loc = tree.loc;
+    let NodeKind::Mapping(entries) = &mut tree.kind else {
+        return false;
+    };
+    let scalar = |text: &str| Node {
+        kind: NodeKind::Scalar {
+            text: text.into(),
+            plain: true,
+        },
+        loc,
+    };
+    let entry = |key: &str, value: Node| (scalar(key), value);
+    let list = |items: Vec<Node>| Node {
+        kind: NodeKind::Sequence(items),
+        loc,
+    };
+    let value = match section {
+        "name" => scalar("unnamed"),
+        "vehicles" => list(Vec::new()),
+        _ => Node {
+            kind: NodeKind::Mapping(vec![
+                entry("type", scalar("beam")),
+                entry("spans", list(vec![scalar("1.0")])),
+                entry("bending_stiffness", scalar("1.0")),
+                entry("mass_per_length", scalar("1.0")),
+            ]),
+            loc,
+        },
+    };
+    entries.push(entry(section, value));
+    true
 }
 
 /// Removes the deepest mapping entry (by its key or value) or sequence item
@@ -423,27 +459,30 @@ fn plain_words(message: &str) -> String {
     out
 }
 
-/// Parses and resolves a scenario from text with the default budgets, as
-/// raised or lowered by its own `limits`; `file` labels diagnostics.
-pub fn load_str(source: &str, file: &str) -> Result<Loaded, LoadError> {
-    load_str_with(source, file, trusted())
-}
-
-/// Parses and resolves a scenario from text; `file` labels diagnostics.
+/// Parses and resolves a scenario from text, `plan` (the planning stage,
+/// [`crate::plan`]) finishing what the format describes; `file` labels
+/// diagnostics.
 ///
 /// Type errors do not stop the checks: what is left without the entries
 /// they are in is checked too, and the diagnostics of both come together,
 /// in the order of the file. A check that blames a mapping or sequence that
 /// lost an entry to a type error is left out (its complaint, e.g. an empty
 /// list, is a consequence of that error).
-pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<Loaded, LoadError> {
+pub(crate) fn resolve_with<T>(
+    source: &str,
+    file: &str,
+    options: LoadOptions,
+    plan: impl FnOnce(Described<'_>, &mut Checker<'_>) -> Option<T>,
+) -> Result<T, LoadError> {
     let parsed = parse_raw_all(source, file)?;
     let source = source.strip_prefix(BOM).unwrap_or(source);
     let Some((raw, node)) = parsed.raw else {
         return Err(LoadError::Invalid(parsed.diagnostics));
     };
-    let mut checker = resolve::Checker::new(file, source, &node);
-    let resolved = resolve::resolve(&raw, &mut checker, options);
+    let mut checker = checker::Checker::new(file, source, &node);
+    checker.bridge_unreadable = parsed.bridge_unreadable;
+    checker.bridge_unknown = parsed.bridge_unreadable;
+    let resolved = resolve::resolve(&raw, &mut checker, options, plan);
     let mut diagnostics = parsed.diagnostics;
     let typed = diagnostics.len();
     // A check may run twice (the records after an earlier error): each
@@ -467,7 +506,7 @@ pub fn load_str_with(source: &str, file: &str, options: LoadOptions) -> Result<L
         }
     }
     match resolved {
-        Some((scenario, bridge)) if diagnostics.is_empty() => Ok(Loaded { scenario, bridge }),
+        Some(planned) if diagnostics.is_empty() => Ok(planned),
         _ => {
             if typed > 0 {
                 // Read top to bottom, as the file is.

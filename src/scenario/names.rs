@@ -4,7 +4,7 @@
 //! outside the output folder, nor smuggle control characters into a
 //! terminal or a CSV header.
 
-use super::resolve::Checker;
+use super::checker::Checker;
 
 /// Longest scene or record name accepted, in characters.
 pub const MAX_NAME_CHARS: usize = 200;
@@ -12,7 +12,7 @@ pub const MAX_NAME_CHARS: usize = 200;
 /// Checks the scene's `name`: not empty, no control characters, not
 /// absurdly long. Separators and `..` are allowed in the name itself (it is
 /// also a title); [`folder_name`] makes it safe as a folder.
-pub(super) fn check_name(ck: &mut Checker<'_>, name: &str) {
+pub(crate) fn check_name(ck: &mut Checker<'_>, name: &str) {
     if name.trim().is_empty() {
         ck.error("name", "`name` must not be empty");
     }
@@ -21,7 +21,7 @@ pub(super) fn check_name(ck: &mut Checker<'_>, name: &str) {
 
 /// Checks a record's name: a CSV column header, so the same rule as
 /// `name` (no control characters, bounded length).
-pub(super) fn check_record_name(ck: &mut Checker<'_>, path: &str, name: &str) {
+pub(crate) fn check_record_name(ck: &mut Checker<'_>, path: &str, name: &str) {
     check_text(ck, path, "a record name", name);
 }
 

@@ -1,8 +1,8 @@
 //! Resolving the `output` section: `every` or `interval` into a whole
 //! number of steps between written samples, and the history's format.
 
+use super::checker::Checker;
 use super::raw::OutputRaw;
-use super::resolve::Checker;
 use crate::scene::HistoryFormat;
 use crate::scene::Output;
 
@@ -11,7 +11,7 @@ use crate::scene::Output;
 const MAX_EVERY: u64 = 1 << 40;
 
 /// The resolved `output` for a run at `time_step` (s).
-pub(super) fn resolve_output(
+pub(crate) fn resolve_output(
     raw: Option<&OutputRaw>,
     time_step: f64,
     ck: &mut Checker<'_>,

@@ -38,9 +38,8 @@
 //! | explicit time step | 1e-9 to 1 | s |
 //! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
 
-use super::resolve::Checker;
-use crate::bridge::ModalBridge;
-use crate::scene::{Bridge, Contact, Rigidity, Study, Vehicle};
+use super::checker::Checker;
+use crate::scene::{Bridge, Contact, Rigidity, Vehicle};
 
 /// A mass, kg: a gram up to 10¹⁰ kg (a hundred of the heaviest trains).
 pub const MASS: (f64, f64) = (1e-3, 1e10);
@@ -102,7 +101,7 @@ pub const TIME_STEP: (f64, f64) = (1e-9, 1.0);
 pub const RAYLEIGH_FREQUENCY: (f64, f64) = (1e-3, 1e5);
 
 /// [`within`] with where the range comes from (`source`, said after it).
-pub(super) fn within_because(
+pub(crate) fn within_because(
     ck: &mut Checker<'_>,
     path: &str,
     what: &str,
@@ -126,7 +125,7 @@ pub(super) fn within_because(
 /// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`. A zero
 /// or negative value is left to the sign checks, which say "must be
 /// positive" once, rather than twice.
-pub(super) fn within(
+pub(crate) fn within(
     ck: &mut Checker<'_>,
     path: &str,
     what: &str,
@@ -147,7 +146,7 @@ pub(super) fn within(
 }
 
 /// A value as typed by people: plain while short, else with an exponent.
-fn number(x: f64) -> String {
+pub(crate) fn number(x: f64) -> String {
     if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
         format!("{x}")
     } else {
@@ -158,7 +157,7 @@ fn number(x: f64) -> String {
 /// Checks a resolved (possibly derived) vehicle; `at` is its path.
 /// `entry_field` is `start_position` when the file places the vehicle by
 /// position, so a far-away start is blamed where it is written.
-pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, vehicle: &Vehicle) {
+pub(crate) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, vehicle: &Vehicle) {
     let p = |field: &str| format!("{at}.{field}");
     match vehicle {
         Vehicle::MovingForce(v) => {
@@ -287,7 +286,7 @@ pub(super) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
 }
 
 /// Checks the bridge's stiffness and mass.
-pub(super) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
+pub(crate) fn check_bridge(ck: &mut Checker<'_>, bridge: &Bridge) {
     match bridge {
         // An imported model's matrices are the user's FE program's; its
         // checks (symmetry, masses, stiffness) are made on import.
@@ -381,7 +380,7 @@ fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
 }
 
 /// Checks a contact spring, which may have been derived from a ratio.
-pub(super) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
+pub(crate) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
     match contact {
         Contact::Elastic {
             stiffness,
@@ -410,104 +409,5 @@ pub(super) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
             "N/m^1.5",
         ),
         Contact::Permanent | Contact::Rigid { .. } => {}
-    }
-}
-
-/// Checks every point of a study: a separation map derives the oscillator
-/// (and a contact stiffness given as a ratio) at each grid point, and its
-/// speed, masses and stiffness are monotonic in the two swept ratios, so
-/// the grid's four corners bound every point.
-pub(super) fn check_study(
-    ck: &mut Checker<'_>,
-    study: &Study,
-    vehicles: &[Vehicle],
-    contact: &Contact,
-    modal: &ModalBridge,
-    bridge: &Bridge,
-) {
-    let Study::SeparationMap {
-        velocity_ratio,
-        mass_ratio,
-    } = study
-    else {
-        // A speed sweep's speeds are checked against the speed limit where
-        // the sweep is resolved; its other values are the scene's own.
-        return;
-    };
-    let Some(Vehicle::Oscillator(o)) = vehicles.first() else {
-        return;
-    };
-    let Some(groups) = o.dimensionless else {
-        return;
-    };
-    let Some(&f1) = modal.frequencies().first() else {
-        return;
-    };
-    let (v_lo, v_hi) = (
-        velocity_ratio.from.min(velocity_ratio.to),
-        velocity_ratio.from.max(velocity_ratio.to),
-    );
-    let (m_lo, m_hi) = (
-        mass_ratio.from.min(mass_ratio.to),
-        mass_ratio.from.max(mass_ratio.to),
-    );
-    for (v, m, vpath, mpath) in [
-        (
-            v_lo,
-            m_lo,
-            "study.velocity_ratio.from",
-            "study.mass_ratio.from",
-        ),
-        (v_hi, m_hi, "study.velocity_ratio.to", "study.mass_ratio.to"),
-    ] {
-        let mut point = groups;
-        point.velocity_ratio = v;
-        point.mass_ratio = m;
-        let derived = point.derive(f1, modal.length, bridge.mass_per_length(), 0.0);
-        let speed = derived.speed;
-        if !(speed > 0.0 && speed <= super::resolve::MAX_SPEED) {
-            ck.error(
-                vpath,
-                format!(
-                    "the study's velocity ratio {v} gives a speed of {} m/s (2 × ratio × f1 × L with f1 = {f1:.4} Hz, L = {} m), outside 0 to {} m/s",
-                    number(speed),
-                    modal.length,
-                    super::resolve::MAX_SPEED
-                ),
-            );
-        }
-        let sub = ck.diagnostics.len();
-        within(
-            ck,
-            mpath,
-            "the study's derived sprung mass",
-            derived.sprung_mass,
-            MASS,
-            "kg",
-        );
-        within(
-            ck,
-            mpath,
-            "the study's derived suspension stiffness",
-            derived.stiffness,
-            STIFFNESS,
-            "N/m",
-        );
-        if let Contact::Elastic {
-            stiffness_ratio: Some(ratio),
-            ..
-        } = contact
-        {
-            within(
-                ck,
-                mpath,
-                "the study's derived contact stiffness",
-                ratio * derived.stiffness,
-                STIFFNESS,
-                "N/m",
-            );
-        }
-        // One message per corner is enough.
-        ck.diagnostics.truncate(sub + 1);
     }
 }

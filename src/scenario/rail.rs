@@ -2,11 +2,12 @@
 //! train's expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
+use super::checker::Checker;
 use super::plausible::{DAMPING, MASS, MOMENT_OF_INERTIA, STIFFNESS, VEHICLE_LENGTH, within};
 use super::raw;
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
+use crate::scene::wheelset_span;
 use crate::scene::{RailCar, RailCarParameters, Train, TrainCar, Vehicle};
-use crate::vehicle::rail_car::wheelset_span;
 
 /// The rail car preset: the LCP separation paper's Table 2 (Section 5.2),
 /// whose values are legible in our copy: car body M_c = 31 994 kg and
@@ -111,7 +112,7 @@ fn apply(
 }
 
 /// Resolves one rail car at `at` (e.g. `vehicles[0]`).
-pub(super) fn resolve_rail_car(
+pub(crate) fn resolve_rail_car(
     v: &raw::RailCarRaw,
     at: &str,
     width: Option<f64>,
@@ -142,7 +143,7 @@ pub(super) fn resolve_rail_car(
 /// list, each car's front-wheelset offset behind the first car's summed
 /// from the spacings. A spacing shorter than the car ahead's wheelset span
 /// would put wheels of two cars out of order on the track and is refused.
-pub(super) fn resolve_train(
+pub(crate) fn resolve_train(
     v: &raw::TrainRaw,
     at: &str,
     width: Option<f64>,
@@ -202,7 +203,7 @@ pub(super) fn resolve_train(
 
 /// Plausible masses, springs and dampers of one car's parameters; `at` is
 /// where they are blamed and `car` names the car of a train in messages.
-pub(super) fn check_plausible(
+pub(crate) fn check_plausible(
     ck: &mut Checker<'_>,
     at: &str,
     car: Option<usize>,
@@ -283,7 +284,7 @@ pub(super) fn check_plausible(
 /// wheelset of the front bogie ahead of the front wheelset of the rear
 /// one: a > b). Blamed at the field the file gives, else at the car's
 /// parameters.
-pub(super) fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &RailCarParameters) {
+pub(crate) fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &RailCarParameters) {
     let at = |field: &str| {
         let given = format!("{path}.{field}");
         if ck.has(&given) {

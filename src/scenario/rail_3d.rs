@@ -2,9 +2,10 @@
 //! and the expansion into cars.
 
 use super::cars::{CarRules, resolve_cars};
+use super::checker::Checker;
 use super::plausible::{DAMPING, MASS, STIFFNESS, within};
 use super::raw::{Train3dParametersRaw, Train3dRaw};
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{Train3d, Train3dCar, Train3dParameters, Vehicle};
 
 /// The 3D car preset: the Siemens Velaro AVE-S103 of the EMBS paper's
@@ -270,7 +271,7 @@ fn check_geometry(ck: &mut Checker<'_>, path: &str, p: &Train3dParameters) {
 
 /// Resolves a 3D train at `at`: one car, `count` cars at `car_spacing`, or
 /// the `cars` list.
-pub(super) fn resolve_train_3d(
+pub(crate) fn resolve_train_3d(
     v: &Train3dRaw,
     at: &str,
     width: Option<f64>,
@@ -325,7 +326,7 @@ pub(super) fn resolve_train_3d(
 }
 
 /// Plausible masses, inertias, springs and dampers of car `car` (from 1).
-pub(super) fn check_plausible(ck: &mut Checker<'_>, at: &str, car: usize, p: &Train3dParameters) {
+pub(crate) fn check_plausible(ck: &mut Checker<'_>, at: &str, car: usize, p: &Train3dParameters) {
     // The field named in the message, and blamed where the file gives it
     // (the train's `parameters`; a car's own override, or a preset value,
     // falls back to the nearest node the file has).

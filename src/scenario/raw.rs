@@ -293,10 +293,14 @@ pub struct BeamRaw {
     /// Torsional stiffness GJ, N·m²/rad (3D beam).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::torsional_stiffness::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::torsional_stiffness::schema")]
     pub torsional_stiffness: Option<f64>,
     /// Polar mass moment of inertia per length I_p, kg·m²/m (3D beam).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::inertia_per_length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::inertia_per_length::schema")]
     pub polar_mass: Option<f64>,
     /// Height of the rail heads above the section's shear centre, m (3D
     /// beam): a twist θ moves the rails sideways by −h θ and a rail at y
@@ -348,6 +352,8 @@ pub enum DampingRaw {
     Rayleigh {
         /// The two frequencies where the damping ratio is matched, Hz.
         #[schemars(transform = crate::scene::schema_rules::positive_items)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::frequency::pair")]
+        #[schemars(schema_with = "crate::scenario::raw::units::frequency::pair_schema")]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both frequencies (dimensionless).
         #[schemars(transform = crate::scene::schema_rules::ratio)]
@@ -618,6 +624,8 @@ pub enum ContactRaw {
         /// Hertz coefficient C, N/m^1.5.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::hertz_coefficient::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::hertz_coefficient::schema")]
         coefficient: Option<f64>,
         /// Wheel rolling radius, m; C = G^-1.5 with the contact constant
         /// G = 4.57e-8 R^-0.149 m/N^(2/3) for a worn (LM) tread or

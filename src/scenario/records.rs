@@ -1,20 +1,20 @@
 //! Resolving `record`: each recorded quantity checked against the bridge and
 //! the vehicles, and the default set when the scene gives none.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
 use crate::scene::*;
 
+use crate::scene::dof_names::{rail_car, train_3d};
 use crate::scene::imported::Direction;
-use crate::vehicle::{rail_car, train_3d};
 
 /// DOF names a record may give for a resolved vehicle, as the vehicle module
 /// defines them (for a train: one car's names, picked with `car`).
 fn dof_names(vehicle: &Vehicle) -> &'static [&'static str] {
     match vehicle {
         Vehicle::MovingForce(_) => &[],
-        Vehicle::Oscillator(_) => &crate::vehicle::oscillator::DOF_NAMES,
-        Vehicle::H20Truck(_) => &crate::vehicle::h20_44::DOF_NAMES,
+        Vehicle::Oscillator(_) => &crate::scene::dof_names::oscillator::DOF_NAMES,
+        Vehicle::H20Truck(_) => &crate::scene::dof_names::h20_44::DOF_NAMES,
         Vehicle::RailCar(_) | Vehicle::Train(_) => &rail_car::DOF_NAMES,
         Vehicle::Train3d(_) => &train_3d::DOF_NAMES,
     }
@@ -91,7 +91,7 @@ pub fn acceleration_cutoff(frequencies: &[f64]) -> f64 {
 
 /// The highest mode frequency any bridge acceleration record sums, Hz
 /// (`None` without such records): what the automatic mode choice must keep.
-pub(super) fn highest_acceleration_cutoff(
+pub(crate) fn highest_acceleration_cutoff(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
 ) -> Option<f64> {
@@ -115,19 +115,22 @@ pub fn quantity_name_of(q: Quantity) -> String {
 }
 
 /// `frequencies` are the bridge's lowest natural frequencies, Hz (for the
-/// default acceleration cut-off).
-pub(super) fn resolve_records(
+/// default acceleration cut-off). Without a `bridge` (the file's did not
+/// parse) the checks that need it are left out and the rest made, so that
+/// a file's errors come in one round.
+pub(crate) fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
     frequencies: &[f64],
-    bridge: &Bridge,
+    bridge: Option<&Bridge>,
     vehicles: &[Vehicle],
     contact: &Contact,
     ck: &mut Checker<'_>,
 ) -> Vec<Record> {
     let Some(raws) = raws else {
-        return default_records(bridge, vehicles, contact);
+        return bridge.map_or_else(Vec::new, |b| default_records(b, vehicles, contact));
     };
-    let length = bridge.length();
+    let length = bridge.map(Bridge::length);
+    let width = bridge.and_then(Bridge::width);
     let mut out = Vec::with_capacity(raws.len());
     // Names seen so far: a set keeps duplicate detection linear.
     let mut seen = std::collections::HashSet::new();
@@ -157,7 +160,7 @@ pub(super) fn resolve_records(
                 | Quantity::BridgeMoment
                 | Quantity::BridgeShear
         );
-        if q == Quantity::BridgeShear && matches!(bridge, Bridge::Plate(_)) {
+        if q == Quantity::BridgeShear && matches!(bridge, Some(Bridge::Plate(_))) {
             ck.error(
                 &format!("{at}.quantity"),
                 "`bridge_shear` is computed for beam bridges only: a plate's shear per unit \
@@ -167,9 +170,9 @@ pub(super) fn resolve_records(
                  `bridge_displacement` or `bridge_acceleration` on a plate deck",
             );
         }
-        let on_plate = matches!(bridge, Bridge::Plate(_));
+        let on_plate = matches!(bridge, Some(Bridge::Plate(_)));
         let component = match r.component {
-            Some(_) if !(q == Quantity::BridgeMoment && on_plate) => {
+            Some(_) if !(q == Quantity::BridgeMoment && (on_plate || bridge.is_none())) => {
                 ck.error(
                     &format!("{at}.component"),
                     "`component` chooses a plate deck's moment per unit width: it is used by \
@@ -201,7 +204,8 @@ pub(super) fn resolve_records(
                 ck.error(&format!("{at}.x"), "give `x` or `node`, not both");
             } else {
                 match bridge {
-                    Bridge::FeImport(f) => {
+                    None => {}
+                    Some(Bridge::FeImport(f)) => {
                         if f.model.dof(node, direction).is_none() {
                             ck.error(
                                 &format!("{at}.node"),
@@ -222,9 +226,10 @@ pub(super) fn resolve_records(
             // Along the track: `uy` is the rails' lateral displacement, on
             // a bridge that moves sideways.
             let sideways = match bridge {
-                Bridge::Beam(b) => b.sway.is_some(),
-                Bridge::FeImport(f) => f.model.dofs.iter().any(|(_, d)| *d == Direction::Uy),
-                Bridge::Plate(_) => false,
+                None => true,
+                Some(Bridge::Beam(b)) => b.sway.is_some(),
+                Some(Bridge::FeImport(f)) => f.model.dofs.iter().any(|(_, d)| *d == Direction::Uy),
+                Some(Bridge::Plate(_)) => false,
             };
             let along_track = matches!(
                 q,
@@ -249,16 +254,22 @@ pub(super) fn resolve_records(
                     &at,
                     format!("`{quantity_name}` needs `x`, the position along the bridge in m"),
                 ),
-                Some(x) if !(0.0..=length).contains(&x) => ck.error(
-                    &format!("{at}.x"),
-                    format!("x = {x} m is off the bridge, which runs from 0 to {length} m"),
-                ),
-                _ => {}
+                Some(x) => {
+                    if let Some(length) = length
+                        && !(0.0..=length).contains(&x)
+                    {
+                        ck.error(
+                            &format!("{at}.x"),
+                            format!("x = {x} m is off the bridge, which runs from 0 to {length} m"),
+                        );
+                    }
+                }
             }
             if r.vehicle.is_some() {
                 ck.error(&format!("{at}.vehicle"), unused("vehicle"));
             }
-            match (r.y, bridge.width()) {
+            match (r.y, width) {
+                (Some(_), None) if bridge.is_none() => {}
                 (Some(_), None) => ck.error(
                     &format!("{at}.y"),
                     "`y` is a position across a plate deck; a beam has no width",
@@ -465,7 +476,7 @@ pub(super) fn resolve_records(
             node: r.node,
             direction,
             y: if is_bridge && r.node.is_none() {
-                r.y.or(bridge.width().map(|w| w / 2.0))
+                r.y.or(width.map(|w| w / 2.0))
             } else {
                 None
             },

@@ -1,10 +1,11 @@
 //! Resolving a resonance check: trains, speeds, deck and filter checked,
 //! every default filled in.
 
+use super::checker::Checker;
 use super::raw::{self, km_h_to_m_s};
 use super::records::acceleration_cutoff;
-use super::resolve::{Checker, MAX_SPEED};
 use super::resonance_grid::additional_damping_percent;
+use super::vehicles::MAX_SPEED;
 use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
 use crate::scene::{Deck, HslmModel};
 
@@ -16,7 +17,7 @@ pub const MAX_RESONANCE_SPEEDS: usize = 10_000;
 pub const DEFAULT_LOWEST_SPEED: f64 = 40.0;
 
 /// `frequencies`: the bridge's lowest natural frequencies, Hz.
-pub(super) fn resolve_resonance(
+pub(crate) fn resolve_resonance(
     raw: &raw::ResonanceCheckRaw,
     bridge: &Bridge,
     frequencies: &[f64],

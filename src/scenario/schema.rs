@@ -201,18 +201,18 @@ fn unwrap_paragraphs(text: &str) -> String {
 /// The vehicle DOF names `record: … dof:` accepts (every vehicle type's;
 /// `vbi check` then checks the name against the recorded vehicle's type).
 pub fn dof_name(schema: &mut Schema) {
-    let names: Vec<Value> = crate::vehicle::oscillator::DOF_NAMES
+    let names: Vec<Value> = crate::scene::dof_names::oscillator::DOF_NAMES
         .iter()
-        .chain(crate::vehicle::h20_44::DOF_NAMES.iter())
-        .chain(crate::vehicle::rail_car::DOF_NAMES.iter())
-        .chain(crate::vehicle::train_3d::DOF_NAMES.iter())
+        .chain(crate::scene::dof_names::h20_44::DOF_NAMES.iter())
+        .chain(crate::scene::dof_names::rail_car::DOF_NAMES.iter())
+        .chain(crate::scene::dof_names::train_3d::DOF_NAMES.iter())
         .map(|&n| Value::from(n))
         .collect();
     set(schema, "enum", names);
 }
 
-/// A speed in m/s: > 0 and at most [`crate::scenario::resolve::MAX_SPEED`] (`check_speed`).
+/// A speed in m/s: > 0 and at most [`crate::scenario::vehicles::MAX_SPEED`] (`check_speed`).
 pub fn speed(schema: &mut Schema) {
     crate::scene::schema_rules::positive(schema);
-    set(schema, "maximum", crate::scenario::resolve::MAX_SPEED);
+    set(schema, "maximum", crate::scenario::vehicles::MAX_SPEED);
 }

@@ -6,13 +6,12 @@
 use std::sync::Arc;
 
 use super::budget::Budget;
+use super::checker::Checker;
 use super::raw;
-use super::resolve::Checker;
+use crate::scene::default_terms;
+use crate::scene::grid_nodes;
 use crate::scene::{Rails, RoughnessClass};
 use crate::scene::{Sampling, Surface, Vehicle};
-use crate::surface::grid_nodes;
-use crate::surface::synth::default_terms;
-use crate::vehicle::VehicleModel;
 
 mod measured;
 
@@ -48,7 +47,7 @@ impl RoughnessClass {
 }
 
 /// Resolves a random profile over a bridge of length `bridge_length` (m).
-pub(super) fn resolve_random(
+pub(crate) fn resolve_random(
     class: Option<RoughnessClass>,
     coefficient: Option<f64>,
     sampling_length: Option<f64>,
@@ -86,12 +85,16 @@ pub(super) fn resolve_random(
             0.0
         }
     };
+    // The default needs the bridge's length: not checked without a bridge.
+    if sampling_length.is_some() || !ck.bridge_unknown {
+        let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
+        ck.positive(
+            "surface.sampling_length",
+            sampling_length,
+            "sampling length",
+        );
+    }
     let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
-    ck.positive(
-        "surface.sampling_length",
-        sampling_length,
-        "sampling length",
-    );
     let terms = terms.unwrap_or_else(|| {
         ((sampling_length / DEFAULT_SHORTEST_WAVELENGTH).round() as usize).clamp(1, MAX_TERMS)
     });
@@ -111,7 +114,7 @@ pub(super) fn resolve_random(
 }
 
 /// Resolves the `surface` section (`None`: smooth). `bridge_length` in m.
-pub(super) fn resolve_surface(
+pub(crate) fn resolve_surface(
     raw: Option<&raw::SurfaceRaw>,
     bridge_length: f64,
     budget: &Budget,
@@ -412,7 +415,7 @@ fn resolve_sampling(
 /// or road spectrum, and, when `study` sweeps FRA classes over a scene
 /// without one, the run-in those take (the rail band's default,
 /// [`RAIL_BAND`]'s longest wavelength); 0 if there is none.
-pub(super) fn placement_run_in(surface: &Surface, study: Option<&raw::StudyRaw>) -> f64 {
+pub(crate) fn placement_run_in(surface: &Surface, study: Option<&raw::StudyRaw>) -> f64 {
     let own = surface.spectrum().map_or(0.0, |(_, s)| s.run_in);
     let entries = match study {
         Some(raw::StudyRaw::MonteCarlo(m)) => m.roughness.as_deref(),
@@ -433,7 +436,7 @@ pub(super) fn placement_run_in(surface: &Surface, study: Option<&raw::StudyRaw>)
 /// the fade-in of a track or road spectrum and meets it smoothly. A braking
 /// vehicle that would stop before covering the run-in keeps its place (the
 /// fade then starts under its front axle, [`crate::surface::fade_start`]).
-pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Checker<'_>) {
+pub(crate) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Checker<'_>) {
     if !(run_in > 0.0 && run_in.is_finite()) {
         return;
     }
@@ -443,7 +446,7 @@ pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Ch
             continue;
         }
         if let Some(t) =
-            crate::vehicle::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
+            crate::scene::motion::time_to_cover(vehicle.speed(), vehicle.acceleration(), run_in)
         {
             vehicle.set_entry_time(t);
         }
@@ -457,7 +460,7 @@ pub(super) fn place_before_run_in(vehicles: &mut [Vehicle], run_in: f64, ck: &Ch
 /// a step with a slope of up to height/length at a step inside it, and a
 /// harmonic wave shorter than two steps' travel is seen as a longer alias
 /// (Nyquist). Each is refused at its own key.
-pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: &mut Checker<'_>) {
+pub(crate) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: &mut Checker<'_>) {
     let step_travel = speed * time_step;
     if !(step_travel > 0.0 && step_travel.is_finite()) {
         return;
@@ -528,7 +531,7 @@ pub(super) fn check_features(surface: &Surface, speed: f64, time_step: f64, ck: 
 /// where no vehicle can follow it: only a `train_3d`'s wheelsets have a
 /// lateral DOF at the rail, every other vehicle would run as on straight
 /// track and the shape would be silently ignored.
-pub(super) fn check_lateral_followers(
+pub(crate) fn check_lateral_followers(
     surface: &Surface,
     vehicles: &[Vehicle],
     ck: &mut Checker<'_>,
@@ -550,7 +553,7 @@ pub(super) fn check_lateral_followers(
 /// Where the wheels travel, m from the entrance, as
 /// [`crate::model::Model`] will run it.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Travel {
+pub(crate) struct Travel {
     /// The rearmost wheel at the start.
     pub start: f64,
     /// The farthest front axle at the end of the run (the last exit plus
@@ -558,36 +561,9 @@ pub(super) struct Travel {
     pub end: f64,
 }
 
-/// Where the wheels of `vehicles` travel over a bridge of `length` m.
-pub(super) fn travel(
-    vehicles: &[Vehicle],
-    gravity: f64,
-    length: f64,
-    free_vibration: f64,
-) -> Travel {
-    let models: Vec<VehicleModel> = vehicles
-        .iter()
-        .map(|v| VehicleModel::build(v, gravity))
-        .collect();
-    let end_time = models
-        .iter()
-        .map(|m| m.exit_time(length))
-        .fold(0.0, f64::max)
-        + free_vibration;
-    let start = models
-        .iter()
-        .map(|m| m.front_position(0.0) - m.wheels.iter().map(|w| w.offset).fold(0.0, f64::max))
-        .fold(0.0, f64::min);
-    let end = models
-        .iter()
-        .map(|m| m.front_position(end_time))
-        .fold(0.0, f64::max);
-    Travel { start, end }
-}
-
 /// Checks that the profile serves the wheels' travel `(start, end)` (m):
 /// a sampled grid's size fits the budget, a measured profile covers it.
-pub(super) fn check_reach(
+pub(crate) fn check_reach(
     surface: &Surface,
     travel: Travel,
     budget: &Budget,
@@ -617,7 +593,7 @@ pub(super) fn check_reach(
             &format!(
                 "grid nodes of the sampled profile ({} per shortest wavelength over the {:.1} m \
                  from the run-in's start to where the wheels reach, per rail)",
-                crate::surface::NODES_PER_WAVELENGTH,
+                crate::scene::NODES_PER_WAVELENGTH,
                 end + sampling.run_in
             ),
             nodes * rails,
@@ -636,7 +612,7 @@ pub(super) fn check_reach(
     if let Surface::Random { terms, .. } = *surface {
         // The power-law series is sampled over one period (32 nodes per
         // shortest wavelength), whatever the wheels' travel.
-        let nodes = crate::surface::power_law_grid_nodes(terms) as f64;
+        let nodes = crate::scene::power_law_grid_nodes(terms) as f64;
         let path = if ck.has("surface.terms") {
             "surface.terms"
         } else {

@@ -2,14 +2,14 @@
 //! roughness entry and sample, the checks of the `study` section, and the
 //! excitation the automatic defaults must cover over the whole sweep.
 
-use super::content::{self, Excitation};
+use super::checker::Checker;
 use super::raw::{MonteCarloRaw, SpeedSweepRaw};
-use super::resolve::{Checker, MAX_SPEED};
 use super::surfaces::{DEFAULT_SHORTEST_WAVELENGTH, MAX_TERMS, RAIL_BAND};
+use super::vehicles::MAX_SPEED;
+use crate::scene::default_terms;
 use crate::scene::{
-    Bridge, Contact, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
+    Bridge, MonteCarlo, Sampling, SpeedSweep, Study, Surface, SweepRoughness, Vehicle,
 };
-use crate::surface::synth::default_terms;
 
 /// Most values on the speed grid.
 pub const MAX_SPEEDS: usize = 500;
@@ -33,14 +33,14 @@ pub fn with_speed(vehicles: &[Vehicle], speed: f64) -> Vec<Vehicle> {
                 let start = -*entry_time * *vehicle_speed;
                 *entry_time = -start / speed;
             } else {
-                let start = crate::vehicle::motion::Motion {
+                let start = crate::scene::motion::Motion {
                     speed: *vehicle_speed,
                     acceleration,
                     entry_time: *entry_time,
                 }
                 .position(0.0);
                 if let Some(t) =
-                    crate::vehicle::motion::time_to_cover(speed, acceleration, (-start).max(0.0))
+                    crate::scene::motion::time_to_cover(speed, acceleration, (-start).max(0.0))
                 {
                     *entry_time = t;
                 }
@@ -73,13 +73,13 @@ pub fn stops_before_entry(vehicles: &[Vehicle], speed: f64) -> Option<usize> {
             return false;
         }
         let start = v.motion().position(0.0);
-        crate::vehicle::motion::time_to_cover(speed, a, (-start).max(0.0)).is_none()
+        crate::scene::motion::time_to_cover(speed, a, (-start).max(0.0)).is_none()
     })
 }
 
 /// The vehicles of the sweep's fastest and slowest runs (the scene's own
 /// vehicles twice when `study` is not a speed sweep).
-pub(super) fn extreme_vehicles(
+pub(crate) fn extreme_vehicles(
     study: Option<&Study>,
     vehicles: &[Vehicle],
 ) -> (Vec<Vehicle>, Vec<Vehicle>) {
@@ -176,39 +176,6 @@ pub fn surface(
     }
 }
 
-/// Excitations over the whole study: every vehicle at the top speed (`None`:
-/// the scene's own speeds) on each swept surface (`None` entry: the scene's
-/// own), so that the automatic mode cut-off and time step serve every run.
-pub(super) fn excitations(
-    top: Option<f64>,
-    entries: &[Option<SweepRoughness>],
-    vehicles: &[Vehicle],
-    contact: &Contact,
-    base: &Surface,
-    bridge: &Bridge,
-    gravity: f64,
-) -> Vec<Excitation> {
-    let fast = match top {
-        Some(top) => with_speed(vehicles, top),
-        None => vehicles.to_vec(),
-    };
-    let mut out = Vec::new();
-    for &entry in entries {
-        let surface = surface(base, entry, 0, bridge.length());
-        for mut e in content::excitations(&fast, contact, &surface, bridge.spans(), gravity) {
-            if let Some(top) = top
-                && e.source.contains("(v /")
-            {
-                e.source = format!("{} at the study's top speed, {top} m/s", e.source);
-            }
-            if !out.contains(&e) {
-                out.push(e);
-            }
-        }
-    }
-    out
-}
-
 /// The surfaces of a `roughness` list (`None`: the scene's own only).
 pub fn entries_of(list: Option<&[SweepRoughness]>) -> Vec<Option<SweepRoughness>> {
     match list {
@@ -222,7 +189,7 @@ pub const MAX_SHOWN: usize = 20;
 
 /// Checks the `study` section of a Monte Carlo study and fills its
 /// defaults; refuses a study with nothing random to sample.
-pub(super) fn resolve_monte_carlo(
+pub(crate) fn resolve_monte_carlo(
     raw: &MonteCarloRaw,
     surface: &Surface,
     ck: &mut Checker<'_>,
@@ -272,7 +239,7 @@ pub(super) fn resolve_monte_carlo(
 }
 
 /// Checks the `study` section of a speed sweep and fills its defaults.
-pub(super) fn resolve(
+pub(crate) fn resolve(
     raw: &SpeedSweepRaw,
     bridge: &Bridge,
     surface: &Surface,

@@ -1,7 +1,8 @@
 //! Resolving the H20-44 truck: the preset and the user's overrides.
 
+use super::checker::Checker;
 use super::raw;
-use super::resolve::{Checker, check_acceleration, check_speed, entry_time, lateral};
+use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{H20Truck, H20TruckParameters, Vehicle};
 
 /// The H20-44 preset.
@@ -47,7 +48,7 @@ pub const H20_44_PRESET: H20TruckParameters = H20TruckParameters {
 };
 
 /// Resolves one H20-44 truck at `at` (e.g. `vehicles[0]`).
-pub(super) fn resolve_h20(
+pub(crate) fn resolve_h20(
     v: &raw::H20TruckRaw,
     at: &str,
     width: Option<f64>,

@@ -86,3 +86,108 @@ pub struct GroundRecord {
     /// Ground displacement at each sample, m (from 0 at the first one).
     pub(crate) displacement: Vec<f64>,
 }
+
+impl Direction {
+    /// The name used in the scenario file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::Vertical => "vertical",
+            Direction::Lateral => "lateral",
+            Direction::Longitudinal => "longitudinal",
+        }
+    }
+}
+
+/// Standard acceleration of gravity, m/s² (ISO 80000-3; CGPM 1901).
+pub const STANDARD_GRAVITY: f64 = 9.80665;
+
+impl AccelerationUnit {
+    /// Metres per second squared per unit.
+    pub fn in_si(self) -> f64 {
+        match self {
+            AccelerationUnit::MetresPerSecondSquared => 1.0,
+            AccelerationUnit::CentimetresPerSecondSquared => 0.01,
+            AccelerationUnit::StandardGravity => STANDARD_GRAVITY,
+        }
+    }
+
+    /// The unit as written in files and messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            AccelerationUnit::MetresPerSecondSquared => "m/s^2",
+            AccelerationUnit::CentimetresPerSecondSquared => "cm/s^2",
+            AccelerationUnit::StandardGravity => "g",
+        }
+    }
+
+    /// Recognises a unit written in a file header: `g`, `G`, `m/s^2`,
+    /// `m/s2`, `m/s/s`, `cm/s^2`, `gal`, … (case and spaces ignored).
+    pub fn parse(text: &str) -> Option<Self> {
+        let t: String = text
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .collect::<String>()
+            .to_ascii_lowercase()
+            .replace("sec", "s")
+            .replace('²', "^2");
+        match t.as_str() {
+            "g" | "g's" | "gs" => Some(AccelerationUnit::StandardGravity),
+            "m/s^2" | "m/s2" | "m/s/s" | "ms^-2" | "ms-2" => {
+                Some(AccelerationUnit::MetresPerSecondSquared)
+            }
+            "cm/s^2" | "cm/s2" | "cm/s/s" | "gal" | "cms^-2" | "cms-2" => {
+                Some(AccelerationUnit::CentimetresPerSecondSquared)
+            }
+            _ => None,
+        }
+    }
+}
+
+impl GroundRecord {
+    /// A record from samples (`time` strictly increasing, s, on the file's
+    /// clock; `acceleration` in m/s² before `scale`), shifted so that its
+    /// time 0 falls at `start_time` (s) of the run. The caller has checked
+    /// the samples (finite, increasing, at least two).
+    pub fn new(time: &[f64], acceleration: &[f64], scale: f64, start_time: f64) -> Self {
+        let time: Vec<f64> = time.iter().map(|t| t + start_time).collect();
+        let acceleration: Vec<f64> = acceleration.iter().map(|a| a * scale).collect();
+        let n = time.len();
+        let (mut velocity, mut displacement) = (vec![0.0; n], vec![0.0; n]);
+        for k in 1..n {
+            let h = time[k] - time[k - 1];
+            let (a0, a1) = (acceleration[k - 1], acceleration[k]);
+            // Exact integrals of the linear acceleration over the interval.
+            velocity[k] = velocity[k - 1] + 0.5 * h * (a0 + a1);
+            displacement[k] =
+                displacement[k - 1] + velocity[k - 1] * h + h * h * (a0 / 3.0 + a1 / 6.0);
+        }
+        Self {
+            time,
+            acceleration,
+            velocity,
+            displacement,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn units_are_recognised() {
+        assert_eq!(
+            AccelerationUnit::parse("G"),
+            Some(AccelerationUnit::StandardGravity)
+        );
+        assert_eq!(
+            AccelerationUnit::parse("cm/sec/sec"),
+            Some(AccelerationUnit::CentimetresPerSecondSquared)
+        );
+        assert_eq!(
+            AccelerationUnit::parse(" m/s² "),
+            Some(AccelerationUnit::MetresPerSecondSquared)
+        );
+        assert_eq!(AccelerationUnit::parse("in/s^2"), None);
+    }
+}

@@ -130,3 +130,80 @@ pub struct RailEntry {
     /// Exit length at the last node, m (0: none).
     pub exit: f64,
 }
+
+impl Direction {
+    /// In Abaqus's order, DOF 1 … 6.
+    pub const ALL: [Direction; 6] = [
+        Direction::Ux,
+        Direction::Uy,
+        Direction::Uz,
+        Direction::Rx,
+        Direction::Ry,
+        Direction::Rz,
+    ];
+
+    /// Its name in files.
+    pub fn name(self) -> &'static str {
+        ["ux", "uy", "uz", "rx", "ry", "rz"][self.abaqus() as usize - 1]
+    }
+
+    /// Abaqus's DOF number, 1 … 6.
+    pub fn abaqus(self) -> u8 {
+        Self::ALL.iter().position(|&d| d == self).unwrap_or(0) as u8 + 1
+    }
+
+    /// Parses a name (case-insensitive).
+    pub fn parse(s: &str) -> Option<Self> {
+        let s = s.trim().to_ascii_lowercase();
+        Self::ALL.into_iter().find(|d| d.name() == s)
+    }
+
+    /// Whether it is a rotation.
+    pub fn is_rotation(self) -> bool {
+        matches!(self, Direction::Rx | Direction::Ry | Direction::Rz)
+    }
+}
+
+impl Default for RotationSign {
+    fn default() -> Self {
+        Self { ry: 1, rz: 1 }
+    }
+}
+
+impl RotationSign {
+    /// The sign of `direction` (1 for a translation or rx).
+    pub fn of(&self, direction: Direction) -> i64 {
+        match direction {
+            Direction::Ry => self.ry,
+            Direction::Rz => self.rz,
+            _ => 1,
+        }
+    }
+
+    /// Whether it is the default (nothing flipped).
+    pub fn is_default(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
+impl ImportedModel {
+    /// Whether the track's rail ends are free to move vertically, (first
+    /// node, last node): a rail end on pads and sleepers rather than a deck
+    /// end held by its support (whose constrained uz takes the load as it
+    /// enters, so no entry length is needed there).
+    pub fn free_rail_ends(&self) -> (bool, bool) {
+        let free = |last: bool| {
+            self.track.iter().any(|&r| {
+                let uz = &self.rails[r].displacement[0];
+                let node = if last { uz.last() } else { uz.first() };
+                node.is_some_and(|d| d.is_some())
+            })
+        };
+        (free(false), free(true))
+    }
+
+    /// Free DOF of (node, direction), if any.
+    pub fn dof(&self, node: u64, direction: Direction) -> Option<usize> {
+        self.dofs.iter().position(|&d| d == (node, direction))
+    }
+}

@@ -7,10 +7,13 @@
 use serde::Serialize;
 
 mod bridge;
+pub mod dof_names;
 mod fe_import;
 mod ground;
+pub mod hslm;
 pub mod imported;
 mod limits;
+pub mod motion;
 mod output;
 mod rail;
 pub mod schema_rules;

@@ -7,6 +7,43 @@ use serde::{Deserialize, Serialize};
 
 use super::Spectrum;
 
+// Grid and series sizes of a sampled profile: counts the format budgets
+// before anything is allocated, and the profile builders use.
+
+/// Grid nodes per shortest wavelength of a sampled random profile: quintic
+/// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude
+/// (the quintic Hermite grid of `surface::interp`).
+pub const NODES_PER_WAVELENGTH: f64 = 10.0;
+
+/// Grid nodes per shortest wavelength of the plate paper's power-law series
+/// (one period, so the grid costs 32·N nodes whatever the run's length):
+/// finer than [`NODES_PER_WAVELENGTH`] because the plate paper's results are
+/// reproduced to six digits, curvature included (the wheel's v²r″ term):
+/// the quintic Hermite error of r is (2π/32)⁶/46080 = 1.3e-9 of the shortest
+/// wave's amplitude, of r″ about (2π/32)⁴/384 = 3.9e-6 of its curvature
+/// (`random_grid_follows_the_series` measures both).
+pub const POWER_LAW_NODES_PER_WAVELENGTH: usize = 32;
+
+/// Grid nodes of the power-law series' period grid for `terms` terms:
+/// [`POWER_LAW_NODES_PER_WAVELENGTH`] per shortest wavelength over one
+/// period, plus two (one interval past the period).
+pub fn power_law_grid_nodes(terms: usize) -> usize {
+    POWER_LAW_NODES_PER_WAVELENGTH * terms.max(1) + 2
+}
+
+/// Nodes of the grid a sampled profile needs to reach `reach` (m from the
+/// entrance) with the given shortest wavelength (m); f64 so a hostile size
+/// cannot wrap (budgeted while resolving).
+pub fn grid_nodes(reach: f64, shortest_wavelength: f64) -> f64 {
+    (reach.max(0.0) / (shortest_wavelength / NODES_PER_WAVELENGTH)).ceil() + 2.0
+}
+
+/// Default number of terms over a band: 100 per decade of wavelength (bins
+/// 2.3 % wide in Ω), at least 10.
+pub fn default_terms(shortest: f64, longest: f64) -> usize {
+    ((100.0 * (longest / shortest).log10()).ceil() as usize).max(10)
+}
+
 /// How a random track or road profile is sampled (the spectral
 /// representation of [`crate::surface::synth`]).
 #[derive(Debug, Clone, Copy, Serialize, PartialEq)]

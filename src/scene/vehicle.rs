@@ -1,5 +1,5 @@
 //! The vehicles of the scene: moving forces, oscillators, H20-44 trucks,
-//! rail cars and trains (their kinematics: [`crate::vehicle::motion`]).
+//! rail cars and trains (their kinematics: [`crate::scene::motion`]).
 
 use serde::Serialize;
 

@@ -22,6 +22,7 @@ pub mod modal;
 pub mod newmark;
 pub mod partition;
 pub mod permanent;
+pub mod row_spans;
 pub mod unilateral;
 
 use nalgebra::DVector;

@@ -15,6 +15,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::newmark::Newmark;
+use super::row_spans::{RowSpans, column_spans};
 use crate::vehicle::VehicleModel;
 
 /// Constant condensed matrices of one vehicle, and its step work vectors.
@@ -25,24 +26,31 @@ pub struct Partition {
     /// Free DOF indices.
     pub free_dofs: Vec<usize>,
     /// K̂_FF⁻¹, m/N.
-    effective_flexibility: DMatrix<f64>,
-    mass_ff: DMatrix<f64>,
+    effective_flexibility: RowSpans,
+    mass_ff: RowSpans,
+    /// C_FF by columns (the recovery's loop) and by rows (the products).
     damping_ff: DMatrix<f64>,
+    damping_ff_rows: RowSpans,
+    /// For each column of the F × W blocks (M_FW, C_FW, K_FW together) and of
+    /// C_FF, the span of free rows where it is nonzero: the loops of
+    /// [`Partition::finish_step`] run over it only.
+    wheel_column_spans: Vec<(usize, usize)>,
+    free_column_spans: Vec<(usize, usize)>,
     mass_fw: DMatrix<f64>,
     damping_fw: DMatrix<f64>,
     stiffness_fw: DMatrix<f64>,
-    mass_wf: DMatrix<f64>,
-    damping_wf: DMatrix<f64>,
+    mass_wf: RowSpans,
+    damping_wf: RowSpans,
     /// Rows F (resp. W) of C and K over all DOFs, for the α terms.
-    damping_f_all: DMatrix<f64>,
-    stiffness_f_all: DMatrix<f64>,
-    damping_w_all: DMatrix<f64>,
-    stiffness_w_all: DMatrix<f64>,
+    damping_f_all: RowSpans,
+    stiffness_f_all: RowSpans,
+    damping_w_all: RowSpans,
+    stiffness_w_all: RowSpans,
     /// T = K̂_WF K̂_FF⁻¹.
-    transfer: DMatrix<f64>,
+    transfer: RowSpans,
     /// (M_FF + wγΔt C_FF)⁻¹, for recovering ü_F from the equations of
     /// motion ([`Partition::finish_step`]).
-    recovery: DMatrix<f64>,
+    recovery: RowSpans,
     /// α(C_F·u̇ₙ + K_F·uₙ) of the current step, N.
     alpha_terms: DVector<f64>,
     /// Work vector for the recovery, N.
@@ -104,18 +112,22 @@ impl Partition {
         let condensed_damping = select(&vehicle.damping, w, w) - &transfer * &damping_fw;
         let condensed_stiffness = select(&vehicle.stiffness, w, w) - &transfer * &stiffness_fw;
         let pick = |v: &DVector<f64>, idx: &[usize]| DVector::from_fn(idx.len(), |i, _| v[idx[i]]);
+        let damping_ff = select(&vehicle.damping, f, f);
         Some(Self {
-            mass_ff: select(&vehicle.mass, f, f),
-            damping_ff: select(&vehicle.damping, f, f),
-            mass_wf: select(&vehicle.mass, w, f),
-            damping_wf: select(&vehicle.damping, w, f),
-            damping_f_all: select(&vehicle.damping, f, &all),
-            stiffness_f_all: select(&vehicle.stiffness, f, &all),
-            recovery,
+            mass_ff: RowSpans::new(&select(&vehicle.mass, f, f)),
+            wheel_column_spans: column_spans(&[&mass_fw, &damping_fw, &stiffness_fw]),
+            free_column_spans: column_spans(&[&damping_ff]),
+            damping_ff_rows: RowSpans::new(&damping_ff),
+            damping_ff,
+            mass_wf: RowSpans::new(&select(&vehicle.mass, w, f)),
+            damping_wf: RowSpans::new(&select(&vehicle.damping, w, f)),
+            damping_f_all: RowSpans::new(&select(&vehicle.damping, f, &all)),
+            stiffness_f_all: RowSpans::new(&select(&vehicle.stiffness, f, &all)),
+            recovery: RowSpans::new(&recovery),
             alpha_terms: DVector::zeros(f.len()),
             recovery_load: DVector::zeros(f.len()),
-            damping_w_all: select(&vehicle.damping, w, &all),
-            stiffness_w_all: select(&vehicle.stiffness, w, &all),
+            damping_w_all: RowSpans::new(&select(&vehicle.damping, w, &all)),
+            stiffness_w_all: RowSpans::new(&select(&vehicle.stiffness, w, &all)),
             gravity_f: pick(&vehicle.gravity_load, f),
             gravity_w: pick(&vehicle.gravity_load, w),
             lateral_f: if vehicle.lateral_ground_load.is_empty() {
@@ -138,11 +150,11 @@ impl Partition {
             coupling: DVector::zeros(f.len()),
             base_forces: DVector::zeros(w.len()),
             free_solution: DVector::zeros(f.len()),
-            effective_flexibility,
+            effective_flexibility: RowSpans::new(&effective_flexibility),
             mass_fw,
             damping_fw,
             stiffness_fw,
-            transfer,
+            transfer: RowSpans::new(&transfer),
             condensed_mass,
             condensed_damping,
             condensed_stiffness,
@@ -189,16 +201,16 @@ impl Partition {
         if lateral != 0.0 {
             self.effective_load.axpy(lateral, &self.lateral_f, 1.0);
         }
-        self.effective_load
-            .gemv(1.0, &self.mass_ff, &self.inertia_history, 1.0);
-        self.effective_load
-            .gemv(w, &self.damping_ff, &self.damping_history, 1.0);
+        self.mass_ff
+            .gemv(&mut self.effective_load, 1.0, &self.inertia_history, 1.0);
+        self.damping_ff_rows
+            .gemv(&mut self.effective_load, w, &self.damping_history, 1.0);
         self.alpha_terms.fill(0.0);
         if alpha != 0.0 {
-            self.alpha_terms
-                .gemv(alpha, &self.damping_f_all, velocity, 1.0);
-            self.alpha_terms
-                .gemv(alpha, &self.stiffness_f_all, displacement, 1.0);
+            self.damping_f_all
+                .gemv(&mut self.alpha_terms, alpha, velocity, 1.0);
+            self.stiffness_f_all
+                .gemv(&mut self.alpha_terms, alpha, displacement, 1.0);
             self.effective_load += &self.alpha_terms;
         }
         // λ⁰ = T R̂_F − M_WF hₐ − w C_WF h_v − α(C_W·u̇ₙ + K_W·uₙ) − f_g,W + αλₙ.
@@ -209,17 +221,17 @@ impl Partition {
         if lateral != 0.0 {
             self.base_forces.axpy(lateral, &self.lateral_w, 1.0);
         }
-        self.base_forces
-            .gemv(1.0, &self.transfer, &self.effective_load, -1.0);
-        self.base_forces
-            .gemv(-1.0, &self.mass_wf, &self.inertia_history, 1.0);
-        self.base_forces
-            .gemv(-w, &self.damping_wf, &self.damping_history, 1.0);
+        self.transfer
+            .gemv(&mut self.base_forces, 1.0, &self.effective_load, -1.0);
+        self.mass_wf
+            .gemv(&mut self.base_forces, -1.0, &self.inertia_history, 1.0);
+        self.damping_wf
+            .gemv(&mut self.base_forces, -w, &self.damping_history, 1.0);
         if alpha != 0.0 {
-            self.base_forces
-                .gemv(-alpha, &self.damping_w_all, velocity, 1.0);
-            self.base_forces
-                .gemv(-alpha, &self.stiffness_w_all, displacement, 1.0);
+            self.damping_w_all
+                .gemv(&mut self.base_forces, -alpha, velocity, 1.0);
+            self.stiffness_w_all
+                .gemv(&mut self.base_forces, -alpha, displacement, 1.0);
             for (b, force) in self.base_forces.iter_mut().zip(previous_forces) {
                 *b += alpha * force;
             }
@@ -248,13 +260,14 @@ impl Partition {
         self.coupling.copy_from(&self.effective_load);
         for (j, &d) in self.wheel_dofs.iter().enumerate() {
             let (u, v, a) = (displacement[d], velocity[d], acceleration[d]);
-            for i in 0..self.free_dofs.len() {
+            let (first, end) = self.wheel_column_spans[j];
+            for i in first..end {
                 self.coupling[i] -= self.mass_fw[(i, j)] * a
                     + w * (self.damping_fw[(i, j)] * v + self.stiffness_fw[(i, j)] * u);
             }
         }
-        self.free_solution
-            .gemv(1.0, &self.effective_flexibility, &self.coupling, 0.0);
+        self.effective_flexibility
+            .gemv(&mut self.free_solution, 1.0, &self.coupling, 0.0);
         // Recovery load: every term but the free DOFs' new velocity's
         // unknown part; the wheel DOFs are already at t_{n+1}.
         self.recovery_load.copy_from(&self.gravity_f);
@@ -270,22 +283,24 @@ impl Partition {
         for (k, &d) in self.free_dofs.iter().enumerate() {
             displacement[d] = self.free_solution[k];
         }
-        self.recovery_load
-            .gemv(-w, &self.stiffness_f_all, displacement, 1.0);
+        self.stiffness_f_all
+            .gemv(&mut self.recovery_load, -w, displacement, 1.0);
         for (j, &d) in self.wheel_dofs.iter().enumerate() {
-            for i in 0..self.free_dofs.len() {
+            let (first, end) = self.wheel_column_spans[j];
+            for i in first..end {
                 self.recovery_load[i] -= self.mass_fw[(i, j)] * acceleration[d]
                     + w * self.damping_fw[(i, j)] * velocity[d];
             }
         }
         for (k, &dk) in self.free_dofs.iter().enumerate() {
             let predicted_velocity = velocity[dk] + nm.a6 * acceleration[dk];
-            for i in 0..self.free_dofs.len() {
+            let (first, end) = self.free_column_spans[k];
+            for i in first..end {
                 self.recovery_load[i] -= w * self.damping_ff[(i, k)] * predicted_velocity;
             }
         }
-        self.coupling
-            .gemv(1.0, &self.recovery, &self.recovery_load, 0.0);
+        self.recovery
+            .gemv(&mut self.coupling, 1.0, &self.recovery_load, 0.0);
         for (k, &d) in self.free_dofs.iter().enumerate() {
             let a_new = self.coupling[k];
             velocity[d] = nm.velocity(velocity[d], acceleration[d], a_new);

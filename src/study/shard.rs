@@ -29,8 +29,9 @@ use thiserror::Error;
 use super::monte_carlo::{self, MonteCarloPart};
 use super::separation_map::{self, MapPoint};
 use super::speed_sweep::{self, SweepPoint};
+use crate::plan::Loaded;
 use crate::run::RunError;
-use crate::scenario::{self, LoadOptions, Loaded};
+use crate::scenario::{self, LoadOptions};
 use crate::scene::Study;
 
 mod merge;

@@ -18,6 +18,7 @@
 //! over one period of its exactly periodic series), O(log n) for a measured
 //! profile.
 
+mod build;
 pub mod interp;
 pub mod shapes;
 pub mod spectrum;
@@ -25,35 +26,12 @@ pub mod synth;
 
 use std::f64::consts::PI;
 
-use rand_chacha::ChaCha8Rng;
-use rand_chacha::rand_core::SeedableRng;
-
 use self::interp::{CubicSpline, QuinticGrid, Triple};
 use self::shapes::Shape;
-use self::synth::{SpectralSeries, uniform};
-use crate::scene::Spectrum;
-use crate::scene::{Rails, Sampling, Surface, TrackDirection};
 
-/// Grid nodes per shortest wavelength of a sampled random profile: quintic
-/// Hermite interpolation error 1.3e-6 of the shortest wave's amplitude
-/// ([`QuinticGrid`]).
-pub const NODES_PER_WAVELENGTH: f64 = 10.0;
-
-/// Grid nodes per shortest wavelength of the plate paper's power-law series
-/// (one period, so the grid costs 32·N nodes whatever the run's length):
-/// finer than [`NODES_PER_WAVELENGTH`] because the plate paper's results are
-/// reproduced to six digits, curvature included (the wheel's v²r″ term):
-/// the quintic Hermite error of r is (2π/32)⁶/46080 = 1.3e-9 of the shortest
-/// wave's amplitude, of r″ about (2π/32)⁴/384 = 3.9e-6 of its curvature
-/// (`random_grid_follows_the_series` measures both).
-pub const POWER_LAW_NODES_PER_WAVELENGTH: usize = 32;
-
-/// Grid nodes of the power-law series' period grid for `terms` terms:
-/// [`POWER_LAW_NODES_PER_WAVELENGTH`] per shortest wavelength over one
-/// period, plus two (one interval past the period).
-pub fn power_law_grid_nodes(terms: usize) -> usize {
-    POWER_LAW_NODES_PER_WAVELENGTH * terms.max(1) + 2
-}
+pub use crate::scene::{
+    NODES_PER_WAVELENGTH, POWER_LAW_NODES_PER_WAVELENGTH, grid_nodes, power_law_grid_nodes,
+};
 
 /// Why a profile could not be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -120,13 +98,6 @@ pub fn fade_start(run_in: f64, front_start: f64) -> f64 {
     } else {
         0.0
     }
-}
-
-/// Nodes of the grid a sampled profile needs to reach `reach` (m from the
-/// entrance) with the given shortest wavelength (m); f64 so a hostile size
-/// cannot wrap (budgeted while resolving).
-pub fn grid_nodes(reach: f64, shortest_wavelength: f64) -> f64 {
-    (reach.max(0.0) / (shortest_wavelength / NODES_PER_WAVELENGTH)).ceil() + 2.0
 }
 
 /// Ω₀ of the road PSD S(Ω) = A_r (Ω/Ω₀)⁻², rad/m (the plate paper's Eq. 14:
@@ -201,222 +172,6 @@ pub enum Profile {
 }
 
 impl Profile {
-    /// Builds the profile of a resolved surface for wheels that all start
-    /// at or behind a spectrum's run-in: [`Profile::build_from`] with the
-    /// fade over [−L, 0].
-    pub fn build(surface: &Surface, reach: f64) -> Result<Self, SurfaceError> {
-        Self::build_from(surface, reach, f64::NEG_INFINITY)
-    }
-
-    /// Builds the profile of a resolved surface; a random spectrum is
-    /// sampled from its fade's start ([`fade_start`] of the run-in and
-    /// `front_start`, the front-most wheel's position at t = 0, m) to
-    /// `reach` (m), the farthest any wheel goes during the run (past it r is
-    /// held).
-    pub fn build_from(
-        surface: &Surface,
-        reach: f64,
-        front_start: f64,
-    ) -> Result<Self, SurfaceError> {
-        Ok(match *surface {
-            Surface::Smooth => Profile::Smooth,
-            Surface::Harmonic {
-                amplitude,
-                wavelength,
-                phase,
-                direction,
-            } => Profile::Harmonic {
-                amplitude,
-                wavenumber: 2.0 * PI / wavelength,
-                phase,
-            }
-            .laid(direction),
-            Surface::Random {
-                coefficient,
-                sampling_length,
-                terms,
-                seed,
-                ..
-            } => {
-                let fundamental = 2.0 * PI / sampling_length;
-                let mut rng = ChaCha8Rng::seed_from_u64(seed);
-                let series: Vec<(f64, f64)> = (1..=terms)
-                    .map(|i| {
-                        let wavenumber = i as f64 * fundamental;
-                        let density = coefficient * (wavenumber / REFERENCE_WAVENUMBER).powi(-2);
-                        let amplitude = (4.0 * density * fundamental).sqrt();
-                        let (sin, cos) = (2.0 * PI * uniform(&mut rng)).sin_cos();
-                        (amplitude * cos, amplitude * sin)
-                    })
-                    .collect();
-                let offset = series.iter().map(|t| t.0).sum();
-                let period_grid = Self::period_grid(fundamental, &series, offset, sampling_length)?;
-                Profile::Random {
-                    fundamental,
-                    terms: series,
-                    offset,
-                    period_grid,
-                }
-            }
-            Surface::Measured { ref profile, .. } => Profile::Measured {
-                left: CubicSpline::new(profile.x.clone(), profile.left.clone()),
-                right: profile
-                    .right
-                    .as_ref()
-                    .map(|r| CubicSpline::new(profile.x.clone(), r.clone())),
-                alignment: profile.lateral.as_ref().map(|(left, right)| {
-                    let centre = left.iter().zip(right).map(|(l, r)| 0.5 * (l + r)).collect();
-                    CubicSpline::new(profile.x.clone(), centre)
-                }),
-            },
-            Surface::Ramp {
-                start,
-                length,
-                height,
-                direction,
-            } => Profile::Shape(Shape::Ramp {
-                start,
-                length,
-                height,
-            })
-            .laid(direction),
-            Surface::Step {
-                position,
-                height,
-                direction,
-            } => Profile::Shape(Shape::Step { position, height }).laid(direction),
-            Surface::Bump {
-                start,
-                length,
-                height,
-                direction,
-            } => Profile::Shape(Shape::Bump {
-                start,
-                length,
-                height,
-            })
-            .laid(direction),
-            Surface::PiecewiseLinear {
-                ref points,
-                direction,
-            } => Profile::Shape(Shape::PiecewiseLinear {
-                points: points.iter().map(|p| (p[0], p[1])).collect(),
-            })
-            .laid(direction),
-            Surface::Fra { class, sampling } => {
-                Self::sampled(Spectrum::Fra { class }, sampling, reach, front_start)?
-            }
-            Surface::German {
-                interference,
-                sampling,
-            } => Self::sampled(
-                Spectrum::German { interference },
-                sampling,
-                reach,
-                front_start,
-            )?,
-            Surface::Iso8608 { class, sampling } => {
-                Self::sampled(Spectrum::Iso8608 { class }, sampling, reach, front_start)?
-            }
-        })
-    }
-
-    /// A deterministic profile in `direction`: itself (vertical), or laid
-    /// sideways as the track's alignment ([`Profile::Alignment`]).
-    fn laid(self, direction: TrackDirection) -> Self {
-        match direction {
-            TrackDirection::Vertical => self,
-            TrackDirection::Lateral => Profile::Alignment(Box::new(self)),
-        }
-    }
-
-    /// A random sample of `spectrum` on a grid from its fade's start
-    /// ([`fade_start`]) to `reach` (m). The series is the same function of
-    /// x whatever the fade (same seed, same profile past the fade).
-    fn sampled(
-        spectrum: Spectrum,
-        sampling: Sampling,
-        reach: f64,
-        front_start: f64,
-    ) -> Result<Self, SurfaceError> {
-        let spacing = sampling.shortest_wavelength / NODES_PER_WAVELENGTH;
-        let run_in = sampling.run_in;
-        let start = fade_start(run_in, front_start);
-        let count = grid_nodes(reach - start, sampling.shortest_wavelength) as usize;
-        let grid = |spectrum: &Spectrum, stream| {
-            let series = SpectralSeries::new(
-                spectrum,
-                sampling.shortest_wavelength,
-                sampling.longest_wavelength,
-                sampling.terms,
-                sampling.seed,
-                stream,
-            );
-            let oom = |_| SurfaceError::OutOfMemory { nodes: count };
-            let mut nodes = series.sample(start, spacing, count).map_err(oom)?;
-            if run_in > 0.0 {
-                for (j, n) in nodes.iter_mut().enumerate() {
-                    *n = fade_in(*n, (j as f64 * spacing) / run_in, run_in);
-                }
-            } else {
-                let r0 = nodes[0].0;
-                for n in &mut nodes {
-                    n.0 -= r0;
-                }
-            }
-            QuinticGrid::new(start, spacing, &nodes).map_err(oom)
-        };
-        let alignment = match spectrum.alignment().filter(|_| sampling.alignment) {
-            Some(lateral) => Some((
-                grid(&lateral, 2)?,
-                match sampling.rails {
-                    Rails::Independent => Some(grid(&lateral, 3)?),
-                    Rails::Identical => None,
-                },
-            )),
-            None => None,
-        };
-        Ok(Profile::Sampled {
-            left: grid(&spectrum, 0)?,
-            right: match sampling.rails {
-                Rails::Independent => Some(grid(&spectrum, 1)?),
-                Rails::Identical => None,
-            },
-            alignment,
-        })
-    }
-
-    /// The power-law series sampled over one period [0, L_c] plus one
-    /// interval (so x mod L_c rounded up to L_c still interpolates), with
-    /// the spacing dividing L_c exactly: aᵢ cos(iΩ₁x − θᵢ) − r₀ by the
-    /// rotation sampler of [`SpectralSeries::sample`]. Cost 32 N² multiply-adds
-    /// once (`limits.profile_work` bounds it).
-    fn period_grid(
-        fundamental: f64,
-        terms: &[(f64, f64)],
-        offset: f64,
-        period: f64,
-    ) -> Result<QuinticGrid, SurfaceError> {
-        let count = power_law_grid_nodes(terms.len());
-        let oom = |_| SurfaceError::OutOfMemory { nodes: count };
-        let spacing = period / (count - 2) as f64;
-        let series = SpectralSeries::from_terms(
-            terms
-                .iter()
-                .enumerate()
-                .map(|(i, &(a_cos, a_sin))| {
-                    let amplitude = a_cos.hypot(a_sin);
-                    ((i + 1) as f64 * fundamental, amplitude, -a_sin.atan2(a_cos))
-                })
-                .collect(),
-        );
-        let mut nodes = series.sample(0.0, spacing, count).map_err(oom)?;
-        for node in &mut nodes {
-            node.0 -= offset;
-        }
-        QuinticGrid::new(0.0, spacing, &nodes).map_err(oom)
-    }
-
     /// The power-law profile at x ≥ 0 from its period grid.
     #[inline]
     fn random_from_grid(fundamental: f64, grid: &QuinticGrid, x: f64) -> Triple {
@@ -621,76 +376,4 @@ impl Profile {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The power-law period grid against the series summed exactly
-    /// (`random_at`) at 4000 points over two periods: the largest error of
-    /// r, r′ and r″, each relative to the largest |value| of the series.
-    /// Measured 2026-11-23 (N = 312, L_c = 156 m, the plate paper's
-    /// sampling): r 1.7e-11, r′ 5.6e-9, r″ 3.2e-7; bounds at 6× those.
-    #[test]
-    fn random_grid_follows_the_series() {
-        let surface = Surface::Random {
-            class: None,
-            coefficient: 16e-6,
-            sampling_length: 156.0,
-            terms: 312,
-            seed: 7,
-        };
-        let profile = Profile::build(&surface, 100.0).unwrap();
-        let Profile::Random {
-            fundamental,
-            ref terms,
-            offset,
-            ..
-        } = profile
-        else {
-            panic!("a random profile");
-        };
-        let points: Vec<f64> = (0..4000)
-            .map(|i| 2.0 * 156.0 * (i as f64 + 0.37) / 4000.0)
-            .collect();
-        let exact: Vec<Triple> = points
-            .iter()
-            .map(|&x| Profile::random_at(fundamental, terms, offset, x))
-            .collect();
-        let grid: Vec<Triple> = points
-            .iter()
-            .map(|&x| profile.elevation_slope_curvature(x))
-            .collect();
-        let relative = |pick: fn(&Triple) -> f64| {
-            let scale = exact.iter().map(|t| pick(t).abs()).fold(0.0, f64::max);
-            let error = exact
-                .iter()
-                .zip(&grid)
-                .map(|(e, g)| (pick(e) - pick(g)).abs())
-                .fold(0.0, f64::max);
-            error / scale
-        };
-        let (r, slope, curvature) = (relative(|t| t.0), relative(|t| t.1), relative(|t| t.2));
-        eprintln!("grid errors: r {r:.2e}, r' {slope:.2e}, r'' {curvature:.2e}");
-        assert!(r <= 1e-10, "r {r:e}");
-        assert!(slope <= 3.5e-8, "r' {slope:e}");
-        assert!(curvature <= 2e-6, "r'' {curvature:e}");
-    }
-
-    #[test]
-    fn harmonic_profile_starts_at_entrance() {
-        let p = Profile::build(
-            &Surface::Harmonic {
-                amplitude: 0.003,
-                wavelength: 1.5,
-                phase: 0.5,
-                direction: TrackDirection::Vertical,
-            },
-            10.0,
-        )
-        .unwrap();
-        let p = |x| p.elevation(x);
-        assert_eq!(p(-1.0), 0.0);
-        assert!((p(0.0) - 0.003 * 0.5f64.sin()).abs() < 1e-15);
-        assert!((p(1.5) - p(0.0)).abs() < 1e-15);
-        assert!((p(0.375 - 0.5 / (2.0 * PI) * 1.5) - 0.003).abs() < 1e-12);
-    }
-}
+mod tests;

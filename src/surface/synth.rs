@@ -131,11 +131,7 @@ impl SpectralSeries {
     }
 }
 
-/// Default number of terms over a band: 100 per decade of wavelength (bins
-/// 2.3 % wide in Ω), at least 10.
-pub fn default_terms(shortest: f64, longest: f64) -> usize {
-    ((100.0 * (longest / shortest).log10()).ceil() as usize).max(10)
-}
+pub use crate::scene::default_terms;
 
 #[cfg(test)]
 mod tests {

@@ -25,20 +25,7 @@ use nalgebra::{DMatrix, DVector};
 use super::{VehicleModel, Wheel, WheelKind};
 use crate::scene::{H20Truck, H20TruckParameters};
 
-/// DOF names, as used by `record: … dof:`.
-pub const DOF_NAMES: [&str; 11] = [
-    "body_bounce",
-    "body_pitch",
-    "body_roll",
-    "front_axle_bounce",
-    "front_axle_roll",
-    "rear_axle_bounce",
-    "rear_axle_roll",
-    "wheel1",
-    "wheel2",
-    "wheel3",
-    "wheel4",
-];
+pub use crate::scene::dof_names::h20_44::DOF_NAMES;
 
 /// Number of DOFs.
 const DOFS: usize = 11;

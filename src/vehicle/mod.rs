@@ -6,8 +6,8 @@
 //! degree of freedom, which DOF follows the surface).
 
 pub mod h20_44;
-pub mod hslm;
-pub mod motion;
+pub use crate::scene::hslm;
+pub use crate::scene::motion;
 pub mod moving_force;
 pub mod oscillator;
 pub mod rail_car;

@@ -12,8 +12,7 @@ use nalgebra::{DMatrix, DVector};
 use super::{VehicleModel, Wheel, WheelKind};
 use crate::scene::Oscillator;
 
-/// DOF names, as used by `record: … dof:`.
-pub const DOF_NAMES: [&str; 2] = ["sprung", "wheel"];
+pub use crate::scene::dof_names::oscillator::DOF_NAMES;
 
 /// Builds the 2-DOF model.
 pub fn build(v: &Oscillator, gravity: f64) -> VehicleModel {

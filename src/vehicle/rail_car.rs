@@ -33,24 +33,10 @@ use nalgebra::{DMatrix, DVector};
 use super::{VehicleModel, Wheel, WheelKind};
 use crate::scene::{RailCar, RailCarParameters, Train};
 
-/// DOF names of one car, as used by `record: … dof:`.
-pub const DOF_NAMES: [&str; 10] = [
-    "body_bounce",
-    "body_pitch",
-    "front_bogie_bounce",
-    "front_bogie_pitch",
-    "rear_bogie_bounce",
-    "rear_bogie_pitch",
-    "wheelset1",
-    "wheelset2",
-    "wheelset3",
-    "wheelset4",
-];
+pub use crate::scene::dof_names::rail_car::{DOF_NAMES, WHEELSETS, train_dof_name};
 
 /// DOFs of one car.
 pub const DOFS: usize = 10;
-/// Wheelsets of one car.
-pub const WHEELSETS: usize = 4;
 /// Index of the first wheelset DOF within a car.
 const WHEELSET: usize = 6;
 
@@ -200,11 +186,6 @@ pub fn build(v: &RailCar, gravity: f64) -> VehicleModel {
         v.lateral_position.unwrap_or(0.0),
         gravity,
     )
-}
-
-/// Name of DOF `dof` (a name of [`DOF_NAMES`]) of car `car` (from 1) of a train.
-pub fn train_dof_name(car: usize, dof: &str) -> String {
-    format!("car{car}_{dof}")
 }
 
 /// Builds a train: every car's ten DOFs, car after car, with DOF names

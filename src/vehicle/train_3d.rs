@@ -48,44 +48,8 @@ use super::{VehicleModel, Wheel, WheelKind};
 use crate::contact::ContactDirection;
 use crate::scene::{Train3d, Train3dParameters};
 
-/// DOF names of one car, as used by `record: … dof:` (a train prefixes
-/// `car{k}_`).
-pub const DOF_NAMES: [&str; DOFS] = [
-    "body_lateral",
-    "body_bounce",
-    "body_yaw",
-    "body_roll",
-    "body_pitch",
-    "front_bogie_lateral",
-    "front_bogie_bounce",
-    "front_bogie_yaw",
-    "front_bogie_roll",
-    "front_bogie_pitch",
-    "rear_bogie_lateral",
-    "rear_bogie_bounce",
-    "rear_bogie_yaw",
-    "rear_bogie_roll",
-    "rear_bogie_pitch",
-    "wheelset1_lateral",
-    "wheelset1_left",
-    "wheelset1_right",
-    "wheelset2_lateral",
-    "wheelset2_left",
-    "wheelset2_right",
-    "wheelset3_lateral",
-    "wheelset3_left",
-    "wheelset3_right",
-    "wheelset4_lateral",
-    "wheelset4_left",
-    "wheelset4_right",
-];
+pub use crate::scene::dof_names::train_3d::{CONTACTS_PER_WHEELSET, DOF_NAMES, DOFS, WHEELSETS};
 
-/// DOFs of one car.
-pub const DOFS: usize = 27;
-/// Wheelsets of one car.
-pub const WHEELSETS: usize = 4;
-/// Wheels (contacts) per wheelset: left rail, right rail, lateral.
-pub const CONTACTS_PER_WHEELSET: usize = 3;
 /// Index of the first wheelset DOF within a car.
 const WHEELSET: usize = 15;
 

@@ -385,7 +385,7 @@ fn stopping_before_the_bridge_is_refused() {
          acceleration: -1\n    start_position: -60\n",
         beam_yaml(0.0)
     );
-    let Err(error) = vbi::scenario::load_str(&yaml, "short.yaml") else {
+    let Err(error) = vbi::plan::load_str(&yaml, "short.yaml") else {
         panic!("a vehicle stopping before the bridge was accepted");
     };
     let error = error.to_string();
@@ -410,7 +410,7 @@ fn a_sweep_too_slow_for_a_braking_vehicle_is_refused() {
             beam_yaml(0.0)
         )
     };
-    let Err(error) = vbi::scenario::load_str(&sweep(10.0), "sweep.yaml") else {
+    let Err(error) = vbi::plan::load_str(&sweep(10.0), "sweep.yaml") else {
         panic!("a sweep that stops the vehicle before the bridge was accepted");
     };
     let error = error.to_string();
@@ -418,5 +418,5 @@ fn a_sweep_too_slow_for_a_braking_vehicle_is_refused() {
         error.contains("sweep.yaml:11:") && error.contains("brakes to a stop before"),
         "{error}"
     );
-    assert!(vbi::scenario::load_str(&sweep(12.0), "sweep.yaml").is_ok());
+    assert!(vbi::plan::load_str(&sweep(12.0), "sweep.yaml").is_ok());
 }

@@ -4,8 +4,8 @@
 use crate::support;
 
 use support::reference as exact;
+use vbi::plan::load_str;
 use vbi::run::{Outcome, simulate};
-use vbi::scenario::load_str;
 
 fn run(text: &str) -> Outcome {
     let loaded = load_str(text, "test.yaml").unwrap_or_else(|e| panic!("{e}"));

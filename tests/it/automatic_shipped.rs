@@ -28,6 +28,7 @@
 use std::fs;
 use std::path::Path;
 
+use vbi::plan;
 use vbi::scenario::{self, resolved::Contact, resolved::Quantity};
 use vbi::study::converge::{self, Options};
 
@@ -106,7 +107,7 @@ fn automatic_choices_meet_the_stated_tolerance_on_every_shipped_scene() {
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
         let text = automatic(&text);
         // Loaded from its own path: files it names (records) are relative to it.
-        let loaded = scenario::load_str(&text, &file.to_string_lossy())
+        let loaded = plan::load_str(&text, &file.to_string_lossy())
             .unwrap_or_else(|e| panic!("{name} without its settings: {e}"));
         assert!(
             loaded.bridge.selection.starts_with("automatic"),
@@ -205,7 +206,7 @@ fn every_shipped_resolved_scene_loads_and_resolves_to_itself() {
     assert!(files.len() >= 20);
     for file in &files {
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
-        let loaded = scenario::load_file(file).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let loaded = plan::load_file(file).unwrap_or_else(|e| panic!("{name}: {e}"));
         let resolved = vbi::run::resolved_yaml(&loaded.scenario);
         // A data file's path is absolute in the resolved form, so the text
         // loads from anywhere the scenes' folder is allowed (`--data-dir`).
@@ -216,7 +217,7 @@ fn every_shipped_resolved_scene_loads_and_resolves_to_itself() {
             },
             ..Default::default()
         };
-        let again = scenario::load_str_with(&resolved, &format!("{name} resolved"), options)
+        let again = plan::load_str_with(&resolved, &format!("{name} resolved"), options)
             .unwrap_or_else(|e| panic!("{name}: its resolved form does not load: {e}"));
         assert_eq!(
             resolved,

@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 use support::{column, max_abs, run_yaml};
 use vbi::bridge::ModalBridge;
 use vbi::contact::ContactDirection;
-use vbi::scenario::load_str;
+use vbi::plan::load_str;
 
 const L: f64 = 30.0;
 const EI: f64 = 2.0e10;

@@ -12,7 +12,7 @@ use vbi::solve::cancel::CancelToken;
 
 /// The Yang & Yau beam under a moving force, 0.9 s at Δt = 1e-5 s
 /// (90,000 steps), optionally as a speed sweep.
-fn scene(study: &str) -> vbi::scenario::Loaded {
+fn scene(study: &str) -> vbi::plan::Loaded {
     let yaml = format!(
         "name: cancel
 bridge: {{type: beam, spans: [25.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0,
@@ -22,7 +22,7 @@ solver: {{time_step: 1.0e-5}}
 record: [{{name: midspan, quantity: bridge_displacement, x: 12.5}}]
 {study}"
     );
-    vbi::scenario::load_str(&yaml, "cancel.yaml").expect("valid scene")
+    vbi::plan::load_str(&yaml, "cancel.yaml").expect("valid scene")
 }
 
 fn cancelled(result: &Result<vbi::execute::Results, RunError>) -> bool {

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use vbi::scenario::{self, Loaded};
+use vbi::plan::{self, Loaded};
 use vbi::study::converge::{
     self, Convergence, Ladder, Options, QuantityError, RunReport, cheapest_within, parse_tolerance,
     plan,
@@ -44,7 +44,7 @@ record:
 }
 
 fn load(text: &str) -> Loaded {
-    scenario::load_str(text, "inline.yaml").expect("valid scene")
+    plan::load_str(text, "inline.yaml").expect("valid scene")
 }
 
 fn study(text: &str, levels: usize, tolerance: f64) -> Convergence {

@@ -1,9 +1,9 @@
 //! The EMBS solver (EMBS paper, Section 2) against the coupled solution of
 //! the same scene. Each test states its reference and tolerance.
 
+use vbi::plan::load_str;
 use vbi::report::embs::EmbsSummary;
 use vbi::run::simulate;
-use vbi::scenario::load_str;
 
 /// Runs `yaml` (labelled as a file in `scenarios/`, so record paths
 /// resolve there) and returns its EMBS summary.
@@ -409,8 +409,7 @@ fn the_golden_seismic_scene_shakes_the_bridge_during_the_crossing() {
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/embs-viaduct-ave-s103-quake.yaml"
     );
-    let loaded =
-        vbi::scenario::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
+    let loaded = vbi::plan::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap();
     let ground = model
         .ground
@@ -451,8 +450,7 @@ fn golden_model() -> vbi::model::Model {
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/embs-viaduct-ave-s103-quake.yaml"
     );
-    let loaded =
-        vbi::scenario::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
+    let loaded = vbi::plan::load_file(std::path::Path::new(file)).unwrap_or_else(|e| panic!("{e}"));
     vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap()
 }
 

@@ -15,9 +15,9 @@ use crate::support;
 use std::path::Path;
 
 use support::{Scratch, max_abs};
-use vbi::bridge::fe_import::{abaqus, harwell_boeing};
+use vbi::plan::{Loaded, load_file, load_str};
 use vbi::run::{Outcome, simulate};
-use vbi::scenario::{Loaded, load_file, load_str};
+use vbi::scenario::fe_import::{abaqus, harwell_boeing};
 use vbi::scene::imported::Direction;
 
 /// A beam scene with `vehicle`, `contact` and `solver` sections.

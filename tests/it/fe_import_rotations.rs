@@ -13,7 +13,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-use vbi::bridge::fe_import::{abaqus, harwell_boeing};
+use vbi::scenario::fe_import::{abaqus, harwell_boeing};
 use vbi::scene::imported::Direction;
 
 /// A scratch folder under the system temp dir, unique per process and
@@ -514,7 +514,7 @@ fn a_generated_viaduct_passes_and_its_flipped_rotations_are_refused() {
 /// whose node is fixed does not vote.
 #[test]
 fn the_criterion_holds_for_unequal_timoshenko_elements_on_springs() {
-    use vbi::bridge::fe_import::rotation::rail_evidence;
+    use vbi::scenario::fe_import::rotation::rail_evidence;
     use vbi::scene::imported::RailDofs;
     let lengths = [1.0, 0.3, 2.0, 0.7];
     let shear = [0.0, 0.5, 3.0, 1.2];

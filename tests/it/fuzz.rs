@@ -291,7 +291,7 @@ fn mutated_scenes_never_panic_in_the_loader() {
         }
         let start = Instant::now();
         let result = catch_unwind(AssertUnwindSafe(|| {
-            let loaded = vbi::scenario::load_str(&input, "fuzz.yaml")?;
+            let loaded = vbi::plan::load_str(&input, "fuzz.yaml")?;
             // A short accepted scene is also run: what the loader lets
             // through must not panic in the solvers either.
             if short(&loaded.scenario) {
@@ -491,7 +491,7 @@ fn mutated_data_files_never_panic_or_leak_in_the_loader() {
         fs::write(dir.join(format!("fuzz.{ext}")), &data).unwrap();
         let start = Instant::now();
         let result = catch_unwind(AssertUnwindSafe(|| {
-            vbi::scenario::load_str(&scene, &label).map(|_| ())
+            vbi::plan::load_str(&scene, &label).map(|_| ())
         }));
         let took = start.elapsed();
         runs += 1;

@@ -73,7 +73,7 @@ fn stem(path: &Path) -> String {
 }
 
 fn run(path: &Path) -> Result<Outcome, String> {
-    let loaded = vbi::scenario::load_file(path).map_err(|e| format!("load failed: {e}"))?;
+    let loaded = vbi::plan::load_file(path).map_err(|e| format!("load failed: {e}"))?;
     vbi::run::simulate(loaded, &mut |_, _| {}).map_err(|e| format!("run failed: {e}"))
 }
 
@@ -306,7 +306,7 @@ fn insta_settings() -> insta::Settings {
 /// Runs the study of a scenario that has one (None for plain scenes) and
 /// gives its (summary, table) snapshots.
 fn study(path: &Path) -> Option<Result<(String, String), String>> {
-    let loaded = vbi::scenario::load_file(path).ok()?;
+    let loaded = vbi::plan::load_file(path).ok()?;
     loaded.scenario.study.as_ref()?;
     Some(match catch(|| vbi::execute::execute(loaded, &|_, _| {})) {
         Ok(Ok(Results::SeparationMap(map))) => Ok(study_snapshots(&map)),

@@ -6,8 +6,8 @@
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
+use vbi::plan::load_str;
 use vbi::run::{Outcome, RunError, simulate};
-use vbi::scenario::load_str;
 use vbi::solve::SolveError;
 
 /// A fresh folder for one test's files.

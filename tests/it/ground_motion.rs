@@ -10,8 +10,8 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 use support::column;
+use vbi::plan::load_str;
 use vbi::run::{Outcome, simulate};
-use vbi::scenario::load_str;
 
 /// A fresh folder for one test's files.
 fn folder(name: &str) -> PathBuf {
@@ -538,7 +538,7 @@ fn an_imported_beam_feels_the_same_ground_motion() {
         },
         ..Default::default()
     };
-    let loaded = vbi::scenario::load_str_with(&text, exported.to_str().unwrap(), options)
+    let loaded = vbi::plan::load_str_with(&text, exported.to_str().unwrap(), options)
         .unwrap_or_else(|e| panic!("{e}"));
     let imported = simulate(loaded, &mut |_, _| {}).unwrap();
     let (a, b) = (column(&built, "midspan"), column(&imported, "midspan"));

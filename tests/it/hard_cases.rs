@@ -22,10 +22,10 @@ use support::{column, max_abs};
 use std::f64::consts::PI;
 
 use support::reference as exact;
+use vbi::plan::load_str;
 use vbi::record::SEPARATION_GAP;
 use vbi::report::summary::QuantitySummary;
 use vbi::run::{Outcome, RunError, simulate};
-use vbi::scenario::load_str;
 use vbi::solve::SolveError;
 
 fn try_run(text: &str) -> Result<Outcome, RunError> {

@@ -202,7 +202,7 @@ fn a_measured_lateral_profile_equals_the_same_shape_given_analytically() {
     let run = |surface: &str, records: &str| {
         let path = dir.path("scene.yaml");
         std::fs::write(&path, scene(surface) + records).unwrap();
-        let loaded = vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+        let loaded = vbi::plan::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
         vbi::run::simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"))
     };
     let acc = "  - {name: body_lateral_acc, quantity: vehicle_acceleration, dof: body_lateral}\n";

@@ -12,9 +12,9 @@ use std::process::Command;
 
 use support::{Scratch, on_threads};
 use vbi::execute::{Results, execute};
+use vbi::plan::Loaded;
+use vbi::plan::load_str;
 use vbi::run::simulate;
-use vbi::scenario::Loaded;
-use vbi::scenario::load_str;
 use vbi::scenario::resolved::Study;
 use vbi::study::monte_carlo::{self, MonteCarloResults};
 
@@ -305,7 +305,7 @@ fn sample_flag_runs_one_sample_as_a_scene() {
 fn swept_speeds_keep_the_start_position() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenarios/lcp-fig9-rail-car-fra.yaml");
-    let loaded = vbi::scenario::load_file(&path).expect("shipped scene loads");
+    let loaded = vbi::plan::load_file(&path).expect("shipped scene loads");
     let Some(vbi::scenario::resolved::Study::MonteCarlo(mc)) = &loaded.scenario.study else {
         panic!("a Monte Carlo study");
     };

@@ -296,7 +296,7 @@ fn paper_rigid_cases_converge() {
 fn restitution_outside_zero_to_one_is_refused() {
     for bad in ["1.5", "-0.1"] {
         let text = hopping_scene(1e-4, 0.003, &format!("{{type: rigid, restitution: {bad}}}"));
-        let error = vbi::scenario::load_str(&text, "hop.yaml")
+        let error = vbi::plan::load_str(&text, "hop.yaml")
             .err()
             .unwrap_or_else(|| panic!("restitution {bad} accepted"))
             .to_string();

@@ -49,3 +49,100 @@ fn seven_mistakes_give_seven_located_diagnostics_in_one_check() {
     }
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn a_bridge_that_does_not_parse_hides_no_other_section_s_errors() {
+    // `bridge` is required: when it fails to parse, the vehicles, solver
+    // and records are still checked (without the bridge), so that the
+    // file's every error comes in this one `vbi check`.
+    let file = "tests/multi/bridge-type-error.yaml";
+    let out = vbi(&["check", file], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let mut got = located(&stderr, file);
+    got.sort();
+    // Line and column of each mistake, as the comments in the file say.
+    let want = vec![
+        (8, 22),  // bending_stiffness: stiff (type)
+        (12, 18), // sprung mass −5750 kg (semantic)
+        (17, 21), // time step −0.001 s (semantic)
+        (19, 59), // vehicle 3 of one (cross-field, needs no bridge)
+        (20, 76), // max_frequency on a displacement (semantic)
+    ];
+    assert_eq!(got, want, "{stderr}");
+    for message in [
+        "sprung mass must be positive",
+        "time step must be positive",
+        "vehicle 3 does not exist",
+        "`max_frequency` is not used by `bridge_displacement`",
+    ] {
+        assert!(stderr.contains(message), "no `{message}` in\n{stderr}");
+    }
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+#[test]
+fn a_bridge_with_an_error_of_its_own_still_lets_the_records_be_checked() {
+    // The bridge parses but is invalid (a negative span): the records are
+    // checked against the vehicles alone, in the same round.
+    let scratch = crate::support::Scratch::new("one_round", "bridge-semantic");
+    let path = scratch.path("scene.yaml");
+    std::fs::write(
+        &path,
+        "name: bridge-semantic
+bridge: {type: beam, spans: [-32.0], bending_stiffness: 1.3e10, mass_per_length: 12000.0}
+vehicles: [{type: moving_force, loads: [1.0e5], speed: 20.0}]
+record:
+  - {name: deck, quantity: bridge_displacement, x: 16.0, dof: body_bounce}
+  - {name: body, quantity: vehicle_displacement, vehicle: 2, dof: body_bounce}
+",
+    )
+    .unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let file = path.display().to_string();
+    let mut got = located(&stderr, &file);
+    got.sort();
+    // The span, `dof` on a bridge quantity, vehicle 2 of one.
+    assert_eq!(got, vec![(2, 30), (5, 63), (6, 59)], "{stderr}");
+    for message in [
+        "a span length must be positive, got -32",
+        "`dof` is not used by `bridge_displacement`",
+        "vehicle 2 does not exist; the scene has only vehicle 1",
+    ] {
+        assert!(stderr.contains(message), "no `{message}` in\n{stderr}");
+    }
+}
+
+#[test]
+fn vehicles_that_do_not_parse_hide_no_solver_error() {
+    // `vehicles` written as a mapping, not a list: a type error; the
+    // solver is still checked in the same round (the records, numbered
+    // against a vehicle list that is not there, are not).
+    let scratch = crate::support::Scratch::new("one_round", "vehicles-mapping");
+    let path = scratch.path("scene.yaml");
+    std::fs::write(
+        &path,
+        "name: vehicles-mapping
+bridge: {type: beam, spans: [32.0], bending_stiffness: 1.3e10, mass_per_length: 12000.0}
+vehicles: {type: moving_force, loads: [1.0e5], speed: 20.0}
+solver: {time_step: -1.0}
+",
+    )
+    .unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let mut got = located(&stderr, &path.display().to_string());
+    got.sort();
+    assert_eq!(got, vec![(3, 11), (4, 21)], "{stderr}");
+    assert!(
+        stderr.contains("invalid type: map, expected a sequence"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("time step must be positive, got -1"),
+        "{stderr}"
+    );
+}

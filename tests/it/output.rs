@@ -8,8 +8,8 @@ use crate::support;
 use std::process::Command;
 
 use support::Scratch;
+use vbi::plan::load_str;
 use vbi::run::{Outcome, simulate, write_results};
-use vbi::scenario::load_str;
 
 /// The Yang & Yau sprung mass with a 300 kg wheel on an elastic contact over
 /// a short-wave harmonic track (the wheel hops: 92 Hz at 27.5 m/s), braking,

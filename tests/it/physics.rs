@@ -486,7 +486,7 @@ fn bridge_acceleration_is_filtered_to_the_code_cut_off() {
 
     // Automatic modes: every mode up to the cut-off is kept and resolved.yaml
     // states the cut-off.
-    let loaded = vbi::scenario::load_str(
+    let loaded = vbi::plan::load_str(
         &format!(
             "name: automatic\nbridge: {{type: beam, spans: [{length}], bending_stiffness: {ei}, \
              mass_per_length: {m}}}\n\

@@ -672,7 +672,7 @@ fn recorded_plate_moments_converge_with_modes() {
         )
     };
     let run = |modes: &str| {
-        let loaded = vbi::scenario::load_str(&scene(modes), "plate-moment.yaml")
+        let loaded = vbi::plan::load_str(&scene(modes), "plate-moment.yaml")
             .unwrap_or_else(|e| panic!("{e}"));
         vbi::run::simulate(loaded, &mut |_, _| {}).unwrap()
     };

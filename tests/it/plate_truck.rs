@@ -219,7 +219,7 @@ surface: {type: random, class: average, seed: 1}
 solver: {method: iterative, time_step: 3.12e-3, tolerance: 1.0e-14, max_iterations: 2}
 "#,
     );
-    let loaded = vbi::scenario::load_str(&yaml, "stuck.yaml").expect("valid scene");
+    let loaded = vbi::plan::load_str(&yaml, "stuck.yaml").expect("valid scene");
     let error = vbi::run::simulate(loaded, &mut |_, _| {})
         .expect_err("two iterations cannot reach 1e-14")
         .to_string();

@@ -7,9 +7,9 @@
 //! of contact within a few cm past the entrance is as rare as anywhere else.
 
 use rayon::prelude::*;
+use vbi::plan::{Loaded, load_str};
 use vbi::run::simulate;
 use vbi::scenario::resolved::Study;
-use vbi::scenario::{Loaded, load_str};
 use vbi::study::monte_carlo;
 
 /// The rail car (10-DOF, Table 2 preset of the LCP paper) at
@@ -246,7 +246,7 @@ fn a_measured_profile_finer_than_a_step_warns() {
             small_scene("{type: measured, file: p.csv}", ", start_position: -2.0"),
         )
         .unwrap();
-        let loaded = vbi::scenario::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+        let loaded = vbi::plan::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
         vbi::report::advice::scene_warnings(&loaded.scenario)
     };
     let fine = warnings("-5,0\n10,0\n10.001,0.001\n40,0.001\n");

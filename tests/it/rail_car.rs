@@ -7,8 +7,8 @@ use std::f64::consts::PI;
 
 use nalgebra::{Complex, DMatrix};
 use support::{column, max_abs, run_yaml};
-use vbi::scenario::content::vehicle_frequencies;
-use vbi::scenario::load_str;
+use vbi::plan::content::vehicle_frequencies;
+use vbi::plan::load_str;
 use vbi::scenario::rail::LCP_RAIL_CAR_PRESET;
 use vbi::scenario::resolved::{RailCar, RailCarParameters};
 use vbi::vehicle::VehicleModel;

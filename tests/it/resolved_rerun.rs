@@ -3,8 +3,9 @@
 //! in a form that cannot round away a mode, and a mode cut-off given at a
 //! mode's own printed frequency keeps that mode.
 
+use vbi::plan::{Loaded, load_str_with};
 use vbi::run::{Outcome, resolved_yaml, simulate};
-use vbi::scenario::{DataAccess, LoadOptions, Loaded, load_str_with};
+use vbi::scenario::{DataAccess, LoadOptions};
 
 /// Loads `yaml`; data files may be read from the shipped scenarios' folder
 /// tree (resolved.yaml names them by absolute path, which a scene may read
@@ -141,7 +142,7 @@ fn every_shipped_scene_reruns_bit_for_bit_from_its_resolved_form() {
             modes_cache: Some(cache.clone()),
             ..options()
         };
-        let loaded = vbi::scenario::load_file_with(file, options.clone())
+        let loaded = vbi::plan::load_file_with(file, options.clone())
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         if loaded.scenario.study.is_some() {
             continue;

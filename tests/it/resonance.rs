@@ -4,7 +4,7 @@
 //! and the first resonance of a simply supported span at v = f₁ D.
 
 use vbi::execute::{Results, execute};
-use vbi::scenario::load_str;
+use vbi::plan::load_str;
 use vbi::scenario::resolved::Vehicle;
 use vbi::scene::HslmModel;
 

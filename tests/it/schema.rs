@@ -290,7 +290,7 @@ fn the_schema_accepts_units_of_the_right_dimension_only() {
                 wrong.push(format!("{to} (want valid: {valid})"));
             }
             // `vbi check` agrees (the schema is only as right as this).
-            let checked = vbi::scenario::load_str(&source, "units.yaml").is_ok();
+            let checked = vbi::plan::load_str(&source, "units.yaml").is_ok();
             if checked != valid {
                 wrong.push(format!("{to}: vbi check says valid = {checked}"));
             }
@@ -579,7 +579,7 @@ fn the_schema_limits_are_those_of_vbi_check() {
         for (edit, should_pass) in [(past, false), (inside, true)] {
             let source = VALID.replacen(from, edit, 1);
             let schema_ok = validator.is_valid(&yaml_to_json(&source, what));
-            let check = vbi::scenario::load_str(&source, "case.yaml");
+            let check = vbi::plan::load_str(&source, "case.yaml");
             let check_ok = check.is_ok();
             if schema_ok != should_pass || check_ok != should_pass {
                 disagreements.push(format!(

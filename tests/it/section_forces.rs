@@ -256,7 +256,7 @@ fn moment_envelope_of_a_slow_crossing_is_the_closed_form_curve() {
 #[test]
 fn envelopes_csv_is_written() {
     let scratch = support::Scratch::new("section_forces", "envelopes_csv");
-    let loaded = vbi::scenario::load_str(&envelope_scene(), "test.yaml").unwrap();
+    let loaded = vbi::plan::load_str(&envelope_scene(), "test.yaml").unwrap();
     let scenario = loaded.scenario.clone();
     let outcome = vbi::run::simulate(loaded, &mut |_, _| {}).unwrap();
     vbi::run::write_results(scratch.dir(), &scenario, &outcome).unwrap();
@@ -289,7 +289,7 @@ record:
   - {name: v, quantity: bridge_shear, x: 10.0}
 envelopes: {}
 ";
-    let error = match vbi::scenario::load_str(plate, "plate.yaml") {
+    let error = match vbi::plan::load_str(plate, "plate.yaml") {
         Ok(_) => panic!("a plate accepted a shear record"),
         Err(e) => e.to_string(),
     };

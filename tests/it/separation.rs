@@ -11,8 +11,8 @@ use std::path::Path;
 
 use support::event_reference::{TensionlessCase, extremes};
 use vbi::execute::{Results, execute};
+use vbi::plan::load_file;
 use vbi::run::Outcome;
-use vbi::scenario::load_file;
 use vbi::study::separation_map::SeparationMap;
 
 fn scenario_text(name: &str) -> String {

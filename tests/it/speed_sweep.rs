@@ -11,7 +11,7 @@ use std::process::{Command, Output};
 
 use support::{Scratch, on_threads, run_yaml};
 use vbi::execute::{Results, execute};
-use vbi::scenario::load_str;
+use vbi::plan::load_str;
 use vbi::study::speed_sweep::SweepResults;
 
 /// Runs the sweep of a scene given as YAML text, in a pool of `threads`

@@ -3,9 +3,9 @@
 //! located error, and implausible speeds and records that end before the
 //! response peaks are warned about.
 
+use vbi::plan::load_str;
 use vbi::report::advice::{run_warnings, scene_warnings};
 use vbi::run::{Outcome, simulate};
-use vbi::scenario::load_str;
 
 // (Not `mod support`: its own tests would run again in this binary.)
 fn run_yaml(yaml: &str) -> Outcome {

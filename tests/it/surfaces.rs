@@ -572,7 +572,7 @@ fn load(
 ) -> (
     Scratch,
     String,
-    Result<vbi::scenario::Loaded, vbi::scenario::LoadError>,
+    Result<vbi::plan::Loaded, vbi::scenario::LoadError>,
 ) {
     let dir = Scratch::new(name);
     for (file, text) in files {
@@ -580,7 +580,7 @@ fn load(
     }
     let path = dir.0.join("scene.yaml");
     std::fs::write(&path, scene(surface)).unwrap();
-    let loaded = vbi::scenario::load_file(&path);
+    let loaded = vbi::plan::load_file(&path);
     (dir, path.display().to_string(), loaded)
 }
 
@@ -790,8 +790,8 @@ solver: {{method: lcp, time_step: 1.0e-3}}
 "
         )
     };
-    let loaded = vbi::scenario::load_str(&scene("independent"), "rails.yaml")
-        .unwrap_or_else(|e| panic!("{e}"));
+    let loaded =
+        vbi::plan::load_str(&scene("independent"), "rails.yaml").unwrap_or_else(|e| panic!("{e}"));
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge.clone()).unwrap();
     let left = model
         .wheel_rail
@@ -817,7 +817,7 @@ solver: {{method: lcp, time_step: 1.0e-3}}
     assert_eq!(swapped, rebuilt.profile);
     assert_ne!(swapped, model.profile);
     vbi::run::simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
-    let loaded = vbi::scenario::load_str(&scene("identical"), "rails.yaml").unwrap();
+    let loaded = vbi::plan::load_str(&scene("identical"), "rails.yaml").unwrap();
     let model = vbi::model::Model::build(&loaded.scenario, loaded.bridge).unwrap();
     assert_eq!(
         model.profile.elevation_on(Rail::Left, 10.0),

@@ -525,7 +525,7 @@ fn bad_3d_trains_are_refused_with_a_located_message() {
             "unknown DOF",
         ),
     ] {
-        let error = vbi::scenario::load_str(&edit, "t.yaml")
+        let error = vbi::plan::load_str(&edit, "t.yaml")
             .unwrap_err()
             .to_string();
         assert!(
@@ -551,7 +551,7 @@ fn bad_3d_trains_are_refused_with_a_located_message() {
             .unwrap();
         // At the value.
         let column = text.find("1.0e30").unwrap() + 1;
-        let error = vbi::scenario::load_str(&edit, "t.yaml")
+        let error = vbi::plan::load_str(&edit, "t.yaml")
             .unwrap_err()
             .to_string();
         let place = format!("t.yaml:{}:{column}: car 1: {field}, ", line + 1);

@@ -354,7 +354,7 @@ fn modes_json_has_full_precision_and_the_checks() {
         .expect("vbi runs");
     assert!(output.status.success());
     let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
-    let loaded = vbi::scenario::load_file(&path).unwrap();
+    let loaded = vbi::plan::load_file(&path).unwrap();
     let frequencies = loaded.bridge.frequencies();
     let modes = json["modes"].as_array().unwrap();
     assert_eq!(modes.len(), frequencies.len());
@@ -417,10 +417,10 @@ fn modes_json_lists_vehicle_frequencies_at_full_precision() {
     )
     .unwrap();
     let json = modes_json(&scene);
-    let loaded = vbi::scenario::load_file(&scene).unwrap();
+    let loaded = vbi::plan::load_file(&scene).unwrap();
     let model =
         vbi::vehicle::VehicleModel::build(&loaded.scenario.vehicles[0], loaded.scenario.gravity);
-    let want = vbi::scenario::content::vehicle_frequencies(&model, None);
+    let want = vbi::plan::content::vehicle_frequencies(&model, None);
     let got: Vec<u64> = json["vehicles"][0]["frequencies_hz"]
         .as_array()
         .unwrap()

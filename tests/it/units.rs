@@ -12,8 +12,8 @@ use crate::support::{Scratch, manifest_dir, text, vbi};
 /// with its unit is marked as stated (`speeds_stated`, which silences the
 /// km/h-typed-as-m/s warning), the one intended difference.
 fn same_scene(si: &str, units: &str) {
-    let a = vbi::scenario::load_str(si, "si.yaml").unwrap_or_else(|e| panic!("SI scene: {e}"));
-    let b = vbi::scenario::load_str(units, "units.yaml")
+    let a = vbi::plan::load_str(si, "si.yaml").unwrap_or_else(|e| panic!("SI scene: {e}"));
+    let b = vbi::plan::load_str(units, "units.yaml")
         .unwrap_or_else(|e| panic!("scene with units: {e}"));
     let (a, b) = (format!("{:?}", a.scenario), format!("{:?}", b.scenario));
     assert_eq!(a, b, "the scene with units differs from the SI one");
@@ -239,4 +239,215 @@ fn resolved_yaml_writes_si_numbers() {
     assert_eq!(resolved[0], resolved[1]);
     assert!(!resolved[1].contains(" t/m") && !resolved[1].contains("GN"));
     assert!(resolved[1].contains("2303"), "{}", resolved[1]);
+}
+
+/// The mixed units of issue 28.2's leftovers (GJ in N·m²/rad, I_p in
+/// kg·m²/m, Hertz C in N/m^1.5, Rayleigh frequencies in Hz, a phase in
+/// rad or deg), written with their units, resolve to the SI scene.
+#[test]
+fn torsion_hertz_rayleigh_and_phase_with_units() {
+    let si = "\
+name: units
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 4.0e10
+  mass_per_length: 15000.0
+  lateral_bending_stiffness: 1.0e11
+  torsional_stiffness: 4.0e9
+  polar_mass: 60000.0
+  damping: {type: rayleigh, frequencies: [2.0, 30.0], ratio: 0.02}
+  modes: {count: 6}
+vehicles:
+  - {type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: 25.0}
+surface: {type: harmonic, amplitude: 0.003, wavelength: 1.5, phase: PHASE}
+contact: {type: hertz, coefficient: 1.0e11}
+";
+    let units = si
+        .replace(
+            "torsional_stiffness: 4.0e9",
+            "torsional_stiffness: 4 GN*m^2/rad",
+        )
+        .replace("polar_mass: 60000.0", "polar_mass: 60 t*m^2/m")
+        .replace("frequencies: [2.0, 30.0]", "frequencies: [2 Hz, 0.03 kHz]")
+        .replace("coefficient: 1.0e11", "coefficient: 100 GN/m^1.5");
+    // A phase in mrad is a decimal shift (bit for bit 0.5); in degrees it
+    // is one multiplication by the f64 nearest π/180, the documented rule.
+    same_scene(
+        &si.replace("PHASE", "0.5"),
+        &units.replace("PHASE", "500 mrad"),
+    );
+    let degrees = 30.0 * (std::f64::consts::PI / 180.0);
+    same_scene(
+        &si.replace("PHASE", &format!("{degrees:?}")),
+        &units.replace("PHASE", "30 deg"),
+    );
+    same_scene(
+        &si.replace("PHASE", &format!("{degrees:?}")),
+        &units
+            .replace("PHASE", "30°")
+            .replace("4 GN*m^2/rad", "4e6 kN·m²"),
+    );
+}
+
+/// A road's roughness coefficient A_r (m³/cycle; ISO 8608 tabulates it in
+/// 10⁻⁶ m³ = cm³) and a piecewise-linear profile's `[x, r]` points.
+#[test]
+fn roughness_coefficients_and_profile_points_with_units() {
+    let si = "\
+name: units
+bridge: {type: beam, spans: [30.0], bending_stiffness: 1.2e11, mass_per_length: 18000.0}
+vehicles:
+  - {type: moving_force, loads: [100000.0], speed: 20.0}
+surface: {type: random, coefficient: 1.6e-5, seed: 3}
+";
+    for written in ["16 cm^3", "16 cm³/cycle", "1.6e-5 m^3/cycle", "1.6e-5 m³"] {
+        same_scene(
+            si,
+            &si.replace("coefficient: 1.6e-5", &format!("coefficient: {written}")),
+        );
+    }
+    let points = si.replace(
+        "{type: random, coefficient: 1.6e-5, seed: 3}",
+        "{type: piecewise_linear, points: [[0.0, 0.0], [5.0, 0.02], [5.5, 0.0]]}",
+    );
+    let with_units = points.replace(
+        "[[0.0, 0.0], [5.0, 0.02], [5.5, 0.0]]",
+        "[[0 m, 0 mm], [5 m, 20 mm], [550 cm, 0.0]]",
+    );
+    same_scene(&points, &with_units);
+}
+
+/// An imported model's inline rail nodes (`x`, m) and Rayleigh frequencies
+/// (Hz) with their units: the two-DOF model of tests/it/fe_import.rs.
+#[test]
+fn imported_rail_nodes_and_frequencies_with_units() {
+    let scratch = Scratch::new("units", "fe_import");
+    for (name, text) in [
+        (
+            "K.mtx",
+            "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n1 1 2.0e6\n2 1 -1.0e6\n2 2 2.0e6\n",
+        ),
+        (
+            "M.mtx",
+            "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 100.0\n2 2 100.0\n",
+        ),
+        ("dofs.csv", "dof,node,direction\n1,1,uz\n2,2,uz\n"),
+    ] {
+        std::fs::write(scratch.path(name), text).unwrap();
+    }
+    let si = "\
+name: units
+bridge:
+  type: fe_import
+  stiffness: K.mtx
+  mass: M.mtx
+  dof_map: dofs.csv
+  rails: [{name: rail, nodes: [{node: 1, x: 0.0}, {node: 2, x: 5.0}]}]
+  damping: {type: rayleigh, frequencies: [10.0, 30.0], ratio: 0.02}
+  modes: {count: 2}
+vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e4]}]
+";
+    let units = si
+        .replace("x: 0.0}", "x: 0 m}")
+        .replace("x: 5.0}", "x: 5000 mm}")
+        .replace("[10.0, 30.0]", "[10 Hz, 30 Hz]");
+    let mut resolved = Vec::new();
+    for (name, text) in [("si.yaml", si), ("units.yaml", &units)] {
+        let path = scratch.path(name);
+        std::fs::write(&path, text).unwrap();
+        let loaded = vbi::plan::load_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        resolved.push(format!("{:?}", loaded.scenario));
+    }
+    assert_eq!(resolved[0], resolved[1]);
+    // A rail position is a length.
+    let path = scratch.path("wrong.yaml");
+    std::fs::write(&path, units.replace("x: 5000 mm}", "x: 5 s}")).unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let head = format!("{}:7:64: ", path.display());
+    assert!(
+        stderr.lines().any(|l| l.contains(&head)
+            && l.contains("expected a length (m, mm, cm, km), found a time (`s`) in `5 s`")),
+        "no `{head}…` in\n{stderr}"
+    );
+}
+
+#[test]
+fn the_new_dimensions_refuse_a_wrong_unit_where_it_is_written() {
+    let scratch = Scratch::new("units", "wrong-mixed");
+    let scene = "\
+name: units
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 4.0e10
+  mass_per_length: 15000.0
+  lateral_bending_stiffness: 1.0e11
+  torsional_stiffness: 4 MN*m
+  polar_mass: 60 t
+  damping: {type: rayleigh, frequencies: [2 Hz, 30 s], ratio: 0.02}
+vehicles:
+  - {type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: 25.0}
+surface: {type: harmonic, amplitude: 0.003, wavelength: 1.5, phase: 90 s}
+contact: {type: hertz, coefficient: 1.0e11 N/m}
+";
+    let path = scratch.path("wrong.yaml");
+    std::fs::write(&path, scene).unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let file = path.display().to_string();
+    for (line, col, message) in [
+        (
+            8,
+            24,
+            "expected a torsional stiffness (N*m^2/rad, kN*m^2/rad",
+        ),
+        (8, 24, "found a plate rigidity (`MN*m`) in `4 MN*m`"),
+        (
+            9,
+            15,
+            "expected a moment of inertia per length (kg*m^2/m, t*m^2/m), found a mass (`t`)",
+        ),
+        (
+            10,
+            49,
+            "expected a frequency (Hz, kHz), found a time (`s`) in `30 s`",
+        ),
+        (
+            13,
+            69,
+            "expected an angle (rad, mrad, deg), found a time (`s`) in `90 s`",
+        ),
+        (
+            14,
+            37,
+            "expected a Hertz coefficient (N/m^1.5, kN/m^1.5, MN/m^1.5, GN/m^1.5), found a stiffness (`N/m`)",
+        ),
+    ] {
+        let head = format!("{file}:{line}:{col}: ");
+        let found = stderr
+            .lines()
+            .any(|l| l.contains(&head) && l.contains(message));
+        assert!(found, "no `{head}…{message}` in\n{stderr}");
+    }
+    // A roughness coefficient is not a length.
+    let road = "\
+name: units
+bridge: {type: beam, spans: [30.0], bending_stiffness: 1.2e11, mass_per_length: 18000.0}
+vehicles: [{type: moving_force, loads: [100000.0], speed: 20.0}]
+surface: {type: random, coefficient: 16 cm}
+";
+    std::fs::write(&path, road).unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    let head = format!("{file}:4:38: ");
+    assert!(
+        stderr.lines().any(|l| l.contains(&head)
+            && l.contains("expected a roughness coefficient (m^3/cycle, cm^3/cycle, m^3, cm^3), found a length (`cm`)")),
+        "no `{head}…` in\n{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
 }

@@ -3,7 +3,8 @@
 //! field. Each test loads a small scene through the library and asserts
 //! the diagnostic's place (line:column) and wording.
 
-use vbi::scenario::{LoadError, LoadOptions, load_str, load_str_with};
+use vbi::plan::{load_str, load_str_with};
+use vbi::scenario::{LoadError, LoadOptions};
 
 const BEAM: &str = "bridge:\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  mass_per_length: 2303.0\n";
 

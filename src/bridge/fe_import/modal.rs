@@ -9,9 +9,9 @@ use super::super::BridgeError;
 use super::super::ContactPoint;
 use super::super::eigen::Pencil;
 use super::super::eigen::sparse::{multiply, symmetric_from_entries};
-use super::ImportedModel;
 use super::track::{RailDirection, TrackField};
 use crate::contact::ContactDirection;
+use crate::scene::imported::ImportedModel;
 use crate::scene::imported::RailDofs;
 
 /// The pencil (K, M) of an imported model on its free DOFs.

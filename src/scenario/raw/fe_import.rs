@@ -4,8 +4,8 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::ModesRaw;
+use crate::scene::NodeDof;
 use crate::scene::imported::RotationSign;
-use crate::scene::{NodeDof, RailNode};
 
 /// A bridge imported from a finite-element program: stiffness and mass
 /// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`
@@ -75,7 +75,30 @@ pub struct RailNodesRaw {
     pub file: Option<String>,
     /// The nodes inline, in order along the rail.
     #[serde(default)]
-    pub nodes: Option<Vec<RailNode>>,
+    pub nodes: Option<Vec<RailNodeRaw>>,
+}
+
+/// A rail node inline.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(rename = "RailNode")]
+pub struct RailNodeRaw {
+    /// Node id.
+    pub node: u64,
+    /// Position along the track, m.
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::one")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
+    pub x: f64,
+}
+
+impl RailNodeRaw {
+    /// The node as the resolved scene holds it (x in m).
+    pub fn resolved(self) -> crate::scene::RailNode {
+        crate::scene::RailNode {
+            node: self.node,
+            x: self.x,
+        }
+    }
 }
 
 /// Damping of an imported bridge.
@@ -93,6 +116,8 @@ pub enum ImportDampingRaw {
     Rayleigh {
         /// The two frequencies, Hz.
         #[schemars(transform = crate::scene::schema_rules::positive_items)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::frequency::pair")]
+        #[schemars(schema_with = "crate::scenario::raw::units::frequency::pair_schema")]
         frequencies: [f64; 2],
         /// Damping ratio ζ at both (dimensionless).
         #[schemars(transform = crate::scene::schema_rules::ratio)]

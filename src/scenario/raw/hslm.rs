@@ -5,7 +5,7 @@ use serde::Deserialize;
 
 use super::{MovingForceRaw, SpeedRaw};
 use crate::scene::HslmModel;
-use crate::vehicle::hslm::{HSLM_A, HslmTrain};
+use crate::scene::hslm::{HSLM_A, HslmTrain};
 
 impl HslmModel {
     /// All ten, A1 first.

@@ -93,7 +93,7 @@ impl JsonSchema for SpeedRaw {
                 {
                     "type": "number",
                     "exclusiveMinimum": 0.0,
-                    "maximum": super::super::resolve::MAX_SPEED,
+                    "maximum": super::super::vehicles::MAX_SPEED,
                     "description": "m/s"
                 },
                 {

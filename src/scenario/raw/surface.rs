@@ -28,6 +28,8 @@ pub enum SurfaceRaw {
         /// Phase at the entrance, rad. Default 0.
         #[serde(default)]
         #[schemars(extend("default" = 0.0))]
+        #[serde(deserialize_with = "crate::scenario::raw::units::angle::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::angle::schema")]
         phase: Option<f64>,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced
@@ -50,6 +52,8 @@ pub enum SurfaceRaw {
         /// Roughness coefficient A_r, m³/cycle (e.g. 15e-6 for a road in good condition).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::non_negative)]
+        #[serde(deserialize_with = "crate::scenario::raw::units::roughness_coefficient::option")]
+        #[schemars(schema_with = "crate::scenario::raw::units::roughness_coefficient::schema")]
         coefficient: Option<f64>,
         /// Length L_c the series repeats over, m. Default: twice the bridge length.
         #[serde(default)]
@@ -346,6 +350,8 @@ pub enum SurfaceRaw {
     /// values before the first and after the last point.
     PiecewiseLinear {
         /// At least two `[x, r]` pairs, m.
+        #[serde(deserialize_with = "crate::scenario::raw::units::length::pairs")]
+        #[schemars(schema_with = "crate::scenario::raw::units::length::pairs_schema")]
         points: Vec<[f64; 2]>,
         /// `vertical` (default): the shape is the rails' elevation;
         /// `lateral`: it is the track's alignment, both rails displaced

@@ -26,24 +26,27 @@ use serde::de::{self, DeserializeSeed, Deserializer, SeqAccess, Visitor};
 /// scene may set to a local value: `0.35 g` means the same in every scene.
 pub const STANDARD_GRAVITY: f64 = 9.80665;
 
-/// How a unit turns a written number into SI: × `factor` × 10^`shift`,
-/// both exact decimals, so that the product is computed in decimal and
-/// read with one rounding (`0.35 g` is read as `0.35 × 980665e-5` =
-/// `3.4323275`, bit for bit what that SI number written out gives).
+/// How a unit turns a written number into SI.
 #[derive(Debug, Clone, Copy)]
-struct Scale {
-    factor: u64,
-    shift: i32,
+enum Scale {
+    /// × `factor` × 10^`shift`, both exact decimals, so that the product
+    /// is computed in decimal and read with one rounding (`0.35 g` is read
+    /// as `0.35 × 980665e-5` = `3.4323275`, bit for bit what that SI number
+    /// written out gives).
+    Decimal { factor: u64, shift: i32 },
+    /// × a factor that no decimal writes exactly (`deg` = π/180 rad): one
+    /// floating-point multiplication, correctly rounded for that product.
+    Irrational(f64),
 }
 
 /// × 10^k.
 const fn decimal(shift: i32) -> Scale {
-    Scale { factor: 1, shift }
+    Scale::Decimal { factor: 1, shift }
 }
 
 /// × `factor` × 10^`shift`.
 const fn exact(factor: u64, shift: i32) -> Scale {
-    Scale { factor, shift }
+    Scale::Decimal { factor, shift }
 }
 
 /// One physical dimension of the format: its name in messages, and its
@@ -57,148 +60,8 @@ pub struct Dimension {
     units: &'static [(&'static str, Scale)],
 }
 
-/// A length and its units.
-pub const LENGTH: Dimension = Dimension {
-    name: "a length",
-    si: "m",
-    units: &[
-        ("m", decimal(0)),
-        ("mm", decimal(-3)),
-        ("cm", decimal(-2)),
-        ("km", decimal(3)),
-    ],
-};
-/// A mass and its units.
-pub const MASS: Dimension = Dimension {
-    name: "a mass",
-    si: "kg",
-    units: &[("kg", decimal(0)), ("t", decimal(3))],
-};
-/// A force and its units.
-pub const FORCE: Dimension = Dimension {
-    name: "a force",
-    si: "N",
-    units: &[("N", decimal(0)), ("kN", decimal(3)), ("MN", decimal(6))],
-};
-/// A stiffness and its units.
-pub const STIFFNESS: Dimension = Dimension {
-    name: "a stiffness",
-    si: "N/m",
-    units: &[
-        ("N/m", decimal(0)),
-        ("kN/m", decimal(3)),
-        ("MN/m", decimal(6)),
-        ("N/mm", decimal(3)),
-        ("kN/mm", decimal(6)),
-    ],
-};
-/// A damping coefficient and its units.
-pub const DAMPING: Dimension = Dimension {
-    name: "a damping coefficient",
-    si: "N*s/m",
-    units: &[
-        ("N*s/m", decimal(0)),
-        ("kN*s/m", decimal(3)),
-        ("MN*s/m", decimal(6)),
-    ],
-};
-/// A time and its units.
-pub const TIME: Dimension = Dimension {
-    name: "a time",
-    si: "s",
-    units: &[
-        ("s", decimal(0)),
-        ("ms", decimal(-3)),
-        ("min", exact(60, 0)),
-    ],
-};
-/// A frequency and its units.
-pub const FREQUENCY: Dimension = Dimension {
-    name: "a frequency",
-    si: "Hz",
-    units: &[("Hz", decimal(0)), ("kHz", decimal(3))],
-};
-/// An acceleration and its units.
-pub const ACCELERATION: Dimension = Dimension {
-    name: "an acceleration",
-    si: "m/s^2",
-    units: &[("m/s^2", decimal(0)), ("g", exact(980_665, -5))],
-};
-/// A bending stiffness and its units.
-pub const BENDING_STIFFNESS: Dimension = Dimension {
-    name: "a bending stiffness",
-    si: "N*m^2",
-    units: &[
-        ("N*m^2", decimal(0)),
-        ("kN*m^2", decimal(3)),
-        ("MN*m^2", decimal(6)),
-        ("GN*m^2", decimal(9)),
-    ],
-};
-/// A mass per length and its units.
-pub const MASS_PER_LENGTH: Dimension = Dimension {
-    name: "a mass per length",
-    si: "kg/m",
-    units: &[("kg/m", decimal(0)), ("t/m", decimal(3))],
-};
-/// A mass per area and its units.
-pub const MASS_PER_AREA: Dimension = Dimension {
-    name: "a mass per area",
-    si: "kg/m^2",
-    units: &[("kg/m^2", decimal(0)), ("t/m^2", decimal(3))],
-};
-/// A density and its units.
-pub const DENSITY: Dimension = Dimension {
-    name: "a density",
-    si: "kg/m^3",
-    units: &[("kg/m^3", decimal(0)), ("t/m^3", decimal(3))],
-};
-/// A modulus (pressure) and its units.
-pub const PRESSURE: Dimension = Dimension {
-    name: "a modulus (pressure)",
-    si: "Pa",
-    units: &[
-        ("Pa", decimal(0)),
-        ("kPa", decimal(3)),
-        ("MPa", decimal(6)),
-        ("GPa", decimal(9)),
-    ],
-};
-/// A moment of inertia and its units.
-pub const INERTIA: Dimension = Dimension {
-    name: "a moment of inertia",
-    si: "kg*m^2",
-    units: &[("kg*m^2", decimal(0)), ("t*m^2", decimal(3))],
-};
-/// A plate rigidity and its units.
-pub const PLATE_RIGIDITY: Dimension = Dimension {
-    name: "a plate rigidity",
-    si: "N*m",
-    units: &[
-        ("N*m", decimal(0)),
-        ("kN*m", decimal(3)),
-        ("MN*m", decimal(6)),
-    ],
-};
-
-/// Every dimension, to name the one a misplaced unit belongs to.
-const ALL: [&Dimension; 15] = [
-    &LENGTH,
-    &MASS,
-    &FORCE,
-    &STIFFNESS,
-    &DAMPING,
-    &TIME,
-    &FREQUENCY,
-    &ACCELERATION,
-    &BENDING_STIFFNESS,
-    &MASS_PER_LENGTH,
-    &MASS_PER_AREA,
-    &DENSITY,
-    &PRESSURE,
-    &INERTIA,
-    &PLATE_RIGIDITY,
-];
+mod dimensions;
+pub use dimensions::*;
 
 /// A unit as written, in the spelling of the tables: `·` and `×` as `*`,
 /// `²`/`³` as `^2`/`^3`, `Ns/m` as `N*s/m`, `m/s2` as `m/s^2`, no spaces.
@@ -209,6 +72,7 @@ fn canonical(unit: &str) -> String {
             '·' | '×' | '⋅' => out.push('*'),
             '²' => out.push_str("^2"),
             '³' => out.push_str("^3"),
+            '°' => out.push_str("deg"),
             c if c.is_whitespace() => {}
             c => out.push(c),
         }
@@ -284,13 +148,16 @@ impl Dimension {
                 self.unit_list()
             ));
         };
-        let value = if scale.factor == 1 && scale.shift == 0 {
-            written
-        } else {
+        let value = match scale {
+            Scale::Decimal {
+                factor: 1,
+                shift: 0,
+            } => written,
             // A number too long for exact decimal arithmetic (over 30
             // digits) is scaled in floating point.
-            times_decimal(number, scale)
-                .unwrap_or(written * scale.factor as f64 * 10f64.powi(scale.shift))
+            Scale::Decimal { factor, shift } => times_decimal(number, factor, shift)
+                .unwrap_or(written * factor as f64 * 10f64.powi(shift)),
+            Scale::Irrational(factor) => written * factor,
         };
         if value.is_finite() {
             Ok(value)
@@ -339,7 +206,9 @@ impl Dimension {
             if unit.contains('*') || unit.contains('^') {
                 // `·` for `*`, `²`/`³` for `^2`/`^3`.
                 let pretty = unit.replace('*', "·").replace("^2", "²").replace("^3", "³");
-                out.push(regex_escape(&pretty));
+                if pretty != *unit {
+                    out.push(regex_escape(&pretty));
+                }
             }
             if let Some(force) = unit.strip_suffix("*s/m") {
                 out.push(format!("{force}s/m"));
@@ -347,6 +216,9 @@ impl Dimension {
         }
         if self.si == "m/s^2" {
             out.push("m/s2".into());
+        }
+        if self.si == "rad" {
+            out.push("°".into());
         }
         out
     }
@@ -363,11 +235,11 @@ fn regex_escape(unit: &str) -> String {
     out
 }
 
-/// `number` × `scale` in decimal, read with one rounding: the digits of
+/// `number` × `factor` × 10^`shift` in decimal, read with one rounding: the digits of
 /// the written number (at most 30) times the integer factor, with the
 /// decimal exponents summed (`250` mm → `250e-3`). `None` if the text is
 /// not a plain decimal number or too long.
-fn times_decimal(number: &str, scale: Scale) -> Option<f64> {
+fn times_decimal(number: &str, factor: u64, shift: i32) -> Option<f64> {
     let (sign, unsigned) = match number.strip_prefix('-') {
         Some(rest) => ("-", rest),
         None => ("", number.strip_prefix('+').unwrap_or(number)),
@@ -390,9 +262,9 @@ fn times_decimal(number: &str, scale: Scale) -> Option<f64> {
     } else {
         digits.parse().ok()?
     };
-    let product = value.checked_mul(u128::from(scale.factor))?;
+    let product = value.checked_mul(u128::from(factor))?;
     let places = i32::try_from(fraction.len()).ok()?;
-    let exponent = exponent.checked_sub(places)?.checked_add(scale.shift)?;
+    let exponent = exponent.checked_sub(places)?.checked_add(shift)?;
     format!("{sign}{product}e{exponent}").parse().ok()
 }
 
@@ -463,6 +335,54 @@ impl<'de> Visitor<'de> for QuantityList<'_> {
     }
 }
 
+/// Two values of one dimension, `[a, b]` (a Rayleigh pair of frequencies,
+/// a profile point `[x, r]`).
+#[derive(Clone, Copy)]
+struct QuantityPair<'d>(&'d Dimension);
+
+impl<'de> Visitor<'de> for QuantityPair<'_> {
+    type Value = [f64; 2];
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "a list of two {} values", self.0.si)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<[f64; 2], A::Error> {
+        let mut out = [0.0; 2];
+        for (i, v) in out.iter_mut().enumerate() {
+            *v = seq
+                .next_element_seed(Quantity(self.0))?
+                .ok_or_else(|| de::Error::invalid_length(i, &self))?;
+        }
+        Ok(out)
+    }
+}
+
+impl<'de> DeserializeSeed<'de> for QuantityPair<'_> {
+    type Value = [f64; 2];
+    fn deserialize<D: Deserializer<'de>>(self, deserializer: D) -> Result<[f64; 2], D::Error> {
+        deserializer.deserialize_tuple(2, self)
+    }
+}
+
+/// A list of pairs of one dimension.
+struct QuantityPairs<'d>(&'d Dimension);
+
+impl<'de> Visitor<'de> for QuantityPairs<'_> {
+    type Value = Vec<[f64; 2]>;
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "a list of pairs of {} values", self.0.si)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<[f64; 2]>, A::Error> {
+        // No capacity from the input: the tree's own length bounds it.
+        let mut out = Vec::new();
+        while let Some(v) = seq.next_element_seed(QuantityPair(self.0))? {
+            out.push(v);
+        }
+        Ok(out)
+    }
+}
+
 /// Deserialises one value of `dimension`.
 pub fn one<'de, D: Deserializer<'de>>(d: D, dimension: &Dimension) -> Result<f64, D::Error> {
     d.deserialize_any(Quantity(dimension))
@@ -473,10 +393,24 @@ pub fn list<'de, D: Deserializer<'de>>(d: D, dimension: &Dimension) -> Result<Ve
     d.deserialize_seq(QuantityList(dimension))
 }
 
+/// Deserialises a pair of values of `dimension`.
+pub fn pair<'de, D: Deserializer<'de>>(d: D, dimension: &Dimension) -> Result<[f64; 2], D::Error> {
+    QuantityPair(dimension).deserialize(d)
+}
+
+/// Deserialises a list of pairs of values of `dimension`.
+pub fn pairs<'de, D: Deserializer<'de>>(
+    d: D,
+    dimension: &Dimension,
+) -> Result<Vec<[f64; 2]>, D::Error> {
+    d.deserialize_seq(QuantityPairs(dimension))
+}
+
 /// The field functions of one dimension, for `deserialize_with` and
 /// `schema_with`: `one` (f64), `option` (Option<f64>, with
 /// `#[serde(default)]`), `list` (Vec<f64>), `option_list`
-/// (Option<Vec<f64>>), and their schemas, which refer to the dimension's
+/// (Option<Vec<f64>>), `pair` ([f64; 2]), `pairs` (Vec<[f64; 2]>), and
+/// their schemas, which refer to the dimension's
 /// one definition in the schema's `$defs` (`#/$defs/Length`) instead of
 /// repeating it at every field.
 macro_rules! field_functions {
@@ -528,6 +462,24 @@ macro_rules! field_functions {
                 let items = generator.subschema_for::<Definition>();
                 json_schema!({"type": "array", "items": items})
             }
+            /// A pair `[a, b]`.
+            pub fn pair<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 2], D::Error> {
+                super::pair(d, &super::$dimension)
+            }
+            /// A list of pairs.
+            pub fn pairs<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<[f64; 2]>, D::Error> {
+                super::pairs(d, &super::$dimension)
+            }
+            /// The schema of a pair.
+            pub fn pair_schema(generator: &mut SchemaGenerator) -> Schema {
+                let items = generator.subschema_for::<Definition>();
+                json_schema!({"type": "array", "items": items, "minItems": 2, "maxItems": 2})
+            }
+            /// The schema of a list of pairs.
+            pub fn pairs_schema(generator: &mut SchemaGenerator) -> Schema {
+                let pair = pair_schema(generator);
+                json_schema!({"type": "array", "items": pair})
+            }
         }
     )*};
 }
@@ -548,71 +500,12 @@ field_functions! {
     pressure => PRESSURE as "Modulus",
     inertia => INERTIA as "MomentOfInertia",
     plate_rigidity => PLATE_RIGIDITY as "PlateRigidity",
+    torsional_stiffness => TORSIONAL_STIFFNESS as "TorsionalStiffness",
+    inertia_per_length => INERTIA_PER_LENGTH as "MomentOfInertiaPerLength",
+    hertz_coefficient => HERTZ_COEFFICIENT as "HertzCoefficient",
+    roughness_coefficient => ROUGHNESS_COEFFICIENT as "RoughnessCoefficient",
+    angle => ANGLE as "Angle",
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn decimal_prefixes_read_as_the_si_number_bit_for_bit() {
-        let cases = [
-            (&LENGTH, "250 mm", "0.25"),
-            (&LENGTH, "1.1 mm", "0.0011"),
-            (&LENGTH, "0.025 km", "25"),
-            (&LENGTH, "25m", "25"),
-            (&LENGTH, "3.3 cm", "0.033"),
-            (&MASS, "40 t", "40000"),
-            (&MASS, "5.75 t", "5750"),
-            (&STIFFNESS, "1.595e3 kN/m", "1.595e6"),
-            (&STIFFNESS, "1.6 MN/m", "1.6e6"),
-            (&FORCE, "170 kN", "170000"),
-            (&FORCE, "0.1 MN", "100000"),
-            (&TIME, "2.5 ms", "0.0025"),
-            (&FREQUENCY, "30 Hz", "30"),
-            (&BENDING_STIFFNESS, "8.323 GN*m^2", "8.323e9"),
-            (&BENDING_STIFFNESS, "8.323 GN·m²", "8.323e9"),
-            (&MASS_PER_LENGTH, "2.303 t/m", "2303"),
-            (&DAMPING, "3.5 kN*s/m", "3500"),
-            (&DAMPING, "3.5 kNs/m", "3500"),
-            (&PRESSURE, "210 GPa", "2.1e11"),
-            (&INERTIA, "1.7e3 t*m^2", "1.7e6"),
-        ];
-        for (dimension, text, si) in cases {
-            let want: f64 = si.parse().unwrap();
-            let got = dimension.parse(text).unwrap();
-            assert_eq!(got.to_bits(), want.to_bits(), "{text}: {got} vs {want}");
-        }
-        // g is standard gravity, 9.80665 m/s² exactly: the product is
-        // computed in decimal, 0.35 g = 3.4323275 m/s² (one multiplication
-        // in floating point would give 3.4323274999999995).
-        assert_eq!(ACCELERATION.parse("0.35 g").unwrap(), 3.4323275);
-        assert_eq!(ACCELERATION.parse("1 g").unwrap(), STANDARD_GRAVITY);
-        assert_eq!(TIME.parse("1.5 min").unwrap(), 90.0);
-        assert_eq!(ACCELERATION.parse("3.5 m/s^2").unwrap(), 3.5);
-        assert_eq!(ACCELERATION.parse("3.5 m/s²").unwrap(), 3.5);
-    }
-
-    #[test]
-    fn a_unit_of_another_dimension_is_named() {
-        let e = LENGTH.parse("25 s").unwrap_err();
-        assert!(
-            e.contains("expected a length (m, mm, cm, km), found a time (`s`)"),
-            "{e}"
-        );
-        let e = MASS.parse("40 tonnes").unwrap_err();
-        assert!(e.contains("unknown unit `tonnes`"), "{e}");
-        assert!(LENGTH.parse("25").unwrap_err().contains("no unit"));
-        assert!(LENGTH.parse("1e999 m").unwrap_err().contains("finite"));
-    }
-
-    #[test]
-    fn the_schema_pattern_matches_what_parse_accepts() {
-        // The pattern is a JSON Schema (ECMA 262) regex; these spellings
-        // are plain enough that the shapes agree: checked by the schema
-        // tests through jsonschema (tests/it/schema.rs).
-        let schema = STIFFNESS.schema().to_value();
-        let pattern = schema["anyOf"][1]["pattern"].as_str().unwrap();
-        assert!(pattern.contains(r"kN\/m"), "{pattern}");
-    }
-}
+mod tests;

@@ -8,9 +8,9 @@
 //! row.
 
 use super::super::budget::Budget;
+use super::super::checker::Checker;
 use super::super::data_files::{self, DataFile};
-use super::super::resolve::Checker;
-use crate::ground::table::not_a_number;
+use crate::scenario::ground::not_a_number;
 use crate::scene::MeasuredProfile;
 
 /// Fewest bytes a data row takes (`0,0` and a line break).

@@ -22,7 +22,8 @@ use super::super::part_file::{read_part, read_stamp};
 use super::{
     Part, PartData, Shard, ShardError, check_count, rerun_command, scenario_hash, study_size,
 };
-use crate::scenario::{self, LoadOptions, Loaded};
+use crate::plan::Loaded;
+use crate::scenario::{self, LoadOptions};
 use crate::scene::{MonteCarlo, Study};
 use crate::study::Results;
 use crate::study::monte_carlo::EnvelopeFold;
@@ -155,7 +156,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
     };
     let allow_large = options.allow_large;
     let first_file = first.scenario_file.clone();
-    let loaded = scenario::load_str_with(&first.scenario_source, &first.scenario_file, options)?;
+    let loaded = crate::plan::load_str_with(&first.scenario_source, &first.scenario_file, options)?;
     let hash = scenario_hash(&loaded);
     if hash != first.scenario_hash {
         return Err(ShardError::Mismatch(format!(

@@ -12,8 +12,8 @@ pub mod vehicle_reference;
 
 use std::path::{Path, PathBuf};
 
+use vbi::plan::load_str;
 use vbi::run::{Outcome, simulate};
-use vbi::scenario::load_str;
 
 /// The repository root (where Cargo.toml is).
 pub fn manifest_dir() -> &'static Path {

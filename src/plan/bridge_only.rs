@@ -6,11 +6,13 @@
 
 use serde::Deserialize;
 
-use super::budget::{Budget, LoadOptions};
-use super::raw::{BridgeRaw, LimitsRaw};
-use super::resolve::Checker;
-use super::{LoadError, bridges, content, de, parse_raw};
+use super::budget::eigen_fits;
+use super::content;
 use crate::bridge::{ModalBridge, ModeRequest};
+use crate::scenario::budget::{Budget, LoadOptions};
+use crate::scenario::checker::Checker;
+use crate::scenario::raw::{BridgeRaw, LimitsRaw};
+use crate::scenario::{LoadError, bridges, de, parse_raw};
 use crate::scene::Scenario;
 
 /// The scene as `vbi modes` sees it.
@@ -44,7 +46,7 @@ pub fn load_for_modes(
     file: &str,
     options: LoadOptions,
 ) -> Result<ModesScene, LoadError> {
-    let has_vehicles = super::yaml::parse(source)
+    let has_vehicles = crate::scenario::yaml::parse(source)
         .ok()
         .flatten()
         .is_none_or(|node| node.get("vehicles").is_some());
@@ -62,7 +64,7 @@ pub fn load_for_modes(
         Err(LoadError::Invalid(d))
             if d.len() == 1 && d[0].to_string().contains("missing field `vehicles`") =>
         {
-            super::yaml::parse(source)
+            crate::scenario::yaml::parse(source)
                 .ok()
                 .flatten()
                 .ok_or(LoadError::Invalid(d))?
@@ -70,7 +72,7 @@ pub fn load_for_modes(
         Err(e) => return Err(e),
     };
     let raw: BridgeSceneRaw = de::from_node(&node).map_err(|e| {
-        LoadError::Invalid(vec![super::Diagnostic::new(
+        LoadError::Invalid(vec![crate::scenario::Diagnostic::new(
             file,
             source,
             e.loc.unwrap_or(node.loc),
@@ -103,7 +105,7 @@ pub fn load_for_modes(
             "bridge modes kept",
             asked as f64,
         )
-        && budget.eigen(&mut ck, asked_path, &bridge, asked);
+        && eigen_fits(&budget, &mut ck, asked_path, &bridge, asked);
     if !fits {
         return Err(LoadError::Invalid(ck.diagnostics));
     }

@@ -3,7 +3,7 @@
 //!
 //! This program reads ry as a right-handed rotation about +y, so the
 //! vertical slope is ∂w/∂x = −ry, and rz as one about +z, ∂v/∂x = +rz
-//! ([`super::track`]). A 2D textbook beam writes θ = +∂w/∂x instead; labelled
+//! (`crate::bridge::fe_import::track`). A 2D textbook beam writes θ = +∂w/∂x instead; labelled
 //! ry, its Hermite interpolation then bends every element the wrong way
 //! (issue 22: the same beam's deck acceleration 2.3 times too large), while
 //! modes and static deflections barely change. The files do not say which
@@ -41,8 +41,9 @@
 
 use std::collections::HashMap;
 
-use super::{AssemblyError, Direction, RotationSign, Source, fail};
+use super::{AssemblyError, Source, fail};
 use crate::scene::imported::RailDofs;
+use crate::scene::imported::{Direction, RotationSign};
 
 /// |σ̂| from which a rail segment counts as evidence: half the exact ±1 of
 /// a mirror-symmetric beam element.

@@ -4,7 +4,7 @@
 //! evenly spaced). A header row names the unit in brackets,
 //! `time [s], acceleration [g]` (or `[m/s^2]`, `[cm/s^2]`).
 
-use super::AccelerationUnit;
+use crate::scene::AccelerationUnit;
 
 /// A parsed table.
 #[derive(Debug, Clone, PartialEq)]
@@ -134,7 +134,12 @@ pub fn parse(text: &str) -> Result<Table, TableError> {
 
 /// "column K: `field` is not a number", quoting the field only once a row
 /// has parsed (the file identified as a table, issue 23).
-pub(crate) fn not_a_number(k: usize, field: &str, identified: bool, kind: &str) -> String {
+pub(in crate::scenario) fn not_a_number(
+    k: usize,
+    field: &str,
+    identified: bool,
+    kind: &str,
+) -> String {
     if identified {
         format!(
             "column {}: `{}` is not a {kind}number",

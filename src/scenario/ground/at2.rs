@@ -9,7 +9,7 @@
 //! NPTS is checked against the caller's limit before anything is allocated
 //! per sample.
 
-use super::AccelerationUnit;
+use crate::scene::AccelerationUnit;
 
 /// A parsed `.AT2` record: samples at k·`interval`, in `unit`.
 #[derive(Debug, Clone, PartialEq)]
@@ -27,6 +27,7 @@ pub type At2Error = (usize, String);
 
 /// The sample count a header declares, for a budget check before
 /// [`parse`] allocates: `Ok(NPTS)`.
+#[allow(dead_code)] // Public before the move; only its test calls it now.
 pub fn declared_points(text: &str) -> Result<usize, At2Error> {
     let line = text
         .lines()

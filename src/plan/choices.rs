@@ -1,0 +1,570 @@
+//! The planning stage's choices: the bridge's modal model built and every
+//! automatic choice that needs its frequencies or the vehicles' (the modes
+//! kept and why, the default time step and why, the budgets that need a
+//! mode count), with the format's remaining sections (contact, study,
+//! records, envelopes, output) resolved against them. Error messages and
+//! their locations are the format's: the checks report through its
+//! [`Checker`].
+
+use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
+use crate::scenario::budget;
+use crate::scenario::checker::Checker;
+use crate::scenario::derive::{
+    resolve_contact, resolve_embs, resolve_iteration, resolve_method, resolve_study,
+};
+use crate::scenario::plausible;
+use crate::scenario::records::resolve_records;
+use crate::scenario::resolve::Described;
+use crate::scene::*;
+
+use super::budget::eigen_fits;
+use super::content;
+use super::derive::derive_dimensionless;
+
+/// Share of the bridge's mass the automatic modes carry under ground
+/// motion (EN 1998-1 4.3.3.3.1(3)).
+const GROUND_MASS_SHARE: f64 = 0.9;
+
+/// Builds the bridge's modal model and makes the automatic choices of a
+/// scene the format described; `None` once an error is reported.
+pub(crate) fn plan(
+    described: Described<'_>,
+    ck: &mut Checker<'_>,
+) -> Option<(Scenario, ModalBridge)> {
+    let Described {
+        raw,
+        options,
+        limits,
+        budget,
+        gravity,
+        mut bridge,
+        mut vehicles,
+        surface,
+        ground_motion,
+        solver_raw,
+        newmark,
+        free_vibration,
+    } = described;
+    let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
+    let minimum = content::minimum_modes(&bridge);
+    // The modes the solve will at least compute, before it starts.
+    let (asked, asked_path) = match bridge.modes().count {
+        Some(count) => (count, "bridge.modes.count"),
+        None => (minimum, "bridge.spans"),
+    };
+    if (automatic || bridge.modes().count.is_some())
+        && !(budget.check(ck, asked_path, "modes", "bridge modes kept", asked as f64)
+            && eigen_fits(&budget, ck, asked_path, &bridge, asked))
+    {
+        return None;
+    }
+    // A frequency cut-off alone: count what it keeps before solving for it.
+    let cut_off = match (bridge.modes().count, bridge.modes().max_frequency) {
+        (None, Some(cut)) => ModalBridge::count_up_to(&bridge, cut).ok().flatten(),
+        _ => None,
+    };
+    if let Some(kept) = cut_off
+        && !(budget.check(
+            ck,
+            "bridge.modes",
+            "modes",
+            "bridge modes kept",
+            kept as f64,
+        ) && eigen_fits(&budget, ck, "bridge.modes", &bridge, kept))
+    {
+        return None;
+    }
+
+    let cache = options.modes_cache.as_deref();
+    let build = |request| {
+        ModalBridge::build_cached(&bridge, request, cache).map_err(|e| {
+            let path = match e {
+                BridgeError::TooManyModes { .. } => "bridge.modes.count",
+                BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",
+                _ => "bridge",
+            };
+            (path, e.to_string())
+        })
+    };
+    let mut modal = match build(ModeRequest::of(
+        bridge.modes(),
+        ModeRequest::Lowest(minimum),
+    )) {
+        Ok(m) => m,
+        Err((path, message)) => {
+            ck.error(path, message);
+            return None;
+        }
+    };
+    derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
+    let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
+    if contact.is_unilateral()
+        && let Some(i) = vehicles
+            .iter()
+            .position(|v| matches!(v, Vehicle::Train3d(_)))
+    {
+        ck.error(
+            "contact",
+            format!(
+                "vehicle {} is a `train_3d`, whose wheelsets follow their rails vertically and \
+                 laterally at all times (the EMBS paper's wheel–rail coupling: no creep forces, \
+                 no flange contact, no wheel lift); use `contact: {{type: permanent}}`",
+                i + 1
+            ),
+        );
+    }
+    // Derived values too: dimensionless oscillators, ratio-given contacts.
+    for (i, vehicle) in vehicles.iter().enumerate() {
+        let at = format!("vehicles[{i}]");
+        let entry_field = if ck.has(&format!("{at}.start_position")) {
+            "start_position"
+        } else {
+            "entry_time"
+        };
+        plausible::check_vehicle(ck, &at, entry_field, vehicle);
+    }
+    plausible::check_contact(ck, &contact);
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    // Vehicles the file does not place start behind a spectrum's run-in.
+    crate::scenario::surfaces::place_before_run_in(
+        &mut vehicles,
+        crate::scenario::surfaces::placement_run_in(&surface, raw.study.as_ref()),
+        ck,
+    );
+    let travel = super::travel::travel(&vehicles, gravity, bridge.length(), free_vibration);
+    if !crate::scenario::surfaces::check_reach(&surface, travel, &budget, ck) {
+        return None;
+    }
+    let study = resolve_study(
+        raw.study.as_ref(),
+        &bridge,
+        &vehicles,
+        &contact,
+        &surface,
+        &modal.frequencies(),
+        ck,
+    );
+    let points = study
+        .as_ref()
+        .map_or(1.0, |s| crate::scenario::sweep::study_points(s, &surface));
+    if study.is_some() && !budget.check(ck, "study", "study_points", "runs of the study", points) {
+        return None;
+    }
+    if let Some(study) = &study {
+        super::plausible::check_study(ck, study, &vehicles, &contact, &modal, &bridge);
+    }
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    // A speed sweep runs the scene at every speed of its grid: the automatic
+    // choices must serve its fastest run.
+    let excitations = match &study {
+        Some(Study::SpeedSweep(sweep)) => super::sweep::excitations(
+            Some(sweep.speed_range().1),
+            &crate::scenario::sweep::entries_of(sweep.roughness.as_deref()),
+            &vehicles,
+            &contact,
+            &surface,
+            &bridge,
+            gravity,
+        ),
+        Some(Study::MonteCarlo(mc)) => super::sweep::excitations(
+            mc.speed_range().map(|r| r.1),
+            &crate::scenario::sweep::entries_of(mc.roughness.as_deref()),
+            &vehicles,
+            &contact,
+            &surface,
+            &bridge,
+            gravity,
+        ),
+        // Every train of a resonance check at its top speed.
+        Some(Study::ResonanceCheck(check)) => {
+            let trains: Vec<Vehicle> = check
+                .trains
+                .iter()
+                .map(|&t| crate::scenario::resonance::train_vehicle(t, check.top_speed()))
+                .collect();
+            content::excitations(&trains, &contact, &surface, bridge.spans(), gravity)
+        }
+        _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
+    };
+    // The highest mode frequency any deck acceleration sums (it needs only
+    // f₁ and f₃, which the minimum modes already give).
+    let record_cutoff = crate::scenario::records::highest_acceleration_cutoff(
+        raw.record.as_deref(),
+        &modal.frequencies(),
+    );
+    let record_cutoff = match (
+        record_cutoff,
+        crate::scenario::envelopes::acceleration_cut(raw.envelopes.as_ref(), &modal.frequencies()),
+    ) {
+        (Some(a), Some(b)) => Some(a.max(b)),
+        (a, b) => a.or(b),
+    };
+    if automatic {
+        // Automatic: keep the modes this scene excites; write the cut-off back
+        // so the resolved scenario reproduces the choice.
+        let (mut cutoff, mut dynamic, top) = content::mode_cutoff(&modal, &excitations);
+        // Deck accelerations sum every mode up to their own cut-off (30 Hz
+        // or more, EN 1990 A2.4.4.2.1(4)): keep all of them, so that the
+        // filtered acceleration is complete and converges with the step.
+        let acceleration_cut = record_cutoff.filter(|&cut| cut > cutoff);
+        if let Some(cut) = acceleration_cut {
+            cutoff = cut;
+            dynamic = true;
+        }
+        // Heavy wheels feel the bridge's acceleration under them, which a
+        // few modes resolve poorly: keep twice the minimum.
+        let heavy = content::heavy_wheels(&vehicles, &bridge, gravity);
+        let floor = if heavy {
+            (2 * minimum).min(ModalBridge::available_of(&bridge))
+        } else {
+            minimum
+        };
+        dynamic |= heavy;
+        if dynamic {
+            // The cut-off the excitation asks for may keep more modes than the
+            // budget allows (a very long or very flexible span): count them
+            // with one factorisation before solving for them.
+            let kept = ModalBridge::count_up_to(&bridge, cutoff)
+                .ok()
+                .flatten()
+                .map_or(floor, |n| n.max(floor));
+            if !budget.check(
+                ck,
+                "bridge.spans",
+                "modes",
+                &format!("bridge modes up to the {cutoff:.4} Hz the vehicles excite"),
+                kept as f64,
+            ) || !eigen_fits(&budget, ck, "bridge.spans", &bridge, kept)
+            {
+                return None;
+            }
+            modal = match build(ModeRequest::AtLeastUpTo(floor, cutoff)) {
+                Ok(m) => m,
+                Err((path, message)) => {
+                    ck.error(path, message);
+                    return None;
+                }
+            };
+        }
+        // The cut-off written back must reproduce the modes kept.
+        cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
+        modal.selection = match acceleration_cut {
+            _ if heavy => format!(
+                "automatic: {} modes up to {cutoff:.2} Hz, at least twice the {minimum} of the \
+                 minimum because a wheel's mass exceeds {} of a span's (its contact force \
+                 follows the deck's acceleration under it)",
+                modal.mode_count(),
+                content::HEAVY_WHEEL_RATIO
+            ),
+            Some(cut) => format!(
+                "automatic: {} modes, every one up to {cut:.2} Hz that the deck accelerations \
+                 sum (EN 1990 A2.4.4.2.1: max(30 Hz, 1.5 f₁, f₃) unless the record sets \
+                 `max_frequency`)",
+                modal.mode_count()
+            ),
+            None => content::mode_reason(
+                modal.mode_count(),
+                cutoff,
+                dynamic,
+                &top,
+                content::modes_per_span(&bridge),
+            ),
+        };
+        // Ground motion: keep modes until they carry 90 % of the bridge's
+        // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
+        // vertical record excites the symmetric modes, each less than the
+        // last, so a few suffice.
+        // A lateral record asks the same of the lateral modes (a bridge in
+        // the vertical plane has no lateral mass to carry: skipped).
+        if !ground_motion.is_empty() {
+            let available = ModalBridge::available_of(&bridge);
+            let has = |d| ground_motion.iter().any(|g| g.direction == d);
+            let (vertical, lateral) = (
+                has(crate::scene::Direction::Vertical),
+                has(crate::scene::Direction::Lateral),
+            );
+            loop {
+                let share = |(participation, mass): (Vec<f64>, f64)| {
+                    if mass > 0.0 {
+                        participation.iter().map(|g| g * g).sum::<f64>() / mass
+                    } else {
+                        1.0
+                    }
+                };
+                let mut ratio = 1.0f64;
+                if vertical {
+                    ratio = ratio.min(share(modal.vertical_participation(&bridge)));
+                }
+                if lateral {
+                    ratio = ratio.min(share(modal.lateral_participation(&bridge)));
+                }
+                let count = modal.mode_count();
+                if ratio >= GROUND_MASS_SHARE || count >= available {
+                    if ratio >= GROUND_MASS_SHARE {
+                        modal.selection.push_str(&format!(
+                            "; for the ground motion they carry {:.1} % of the bridge's mass (EN 1998-1 4.3.3.3.1: at least {:.0} %)",
+                            100.0 * ratio,
+                            100.0 * GROUND_MASS_SHARE
+                        ));
+                    }
+                    break;
+                }
+                let more = (2 * count).min(available);
+                if !budget.check(
+                    ck,
+                    "ground_motion",
+                    "modes",
+                    "bridge modes for 90 % of the mass under ground motion",
+                    more as f64,
+                ) || !eigen_fits(&budget, ck, "ground_motion", &bridge, more)
+                {
+                    return None;
+                }
+                modal = match build(ModeRequest::Lowest(more)) {
+                    Ok(m) => m,
+                    Err((path, message)) => {
+                        ck.error(path, message);
+                        return None;
+                    }
+                };
+            }
+            let top = modal.frequencies().last().copied().unwrap_or(0.0);
+            cutoff = cutoff.max(top);
+        }
+        // Written back as the count kept and the cut-off (at least the
+        // last kept mode's own frequency): the count cannot round a mode
+        // away, the cut-off says why ([`ModalBridge::build_cached`]).
+        bridge.modes_mut().count = Some(modal.mode_count());
+        bridge.modes_mut().max_frequency = Some(cutoff);
+    }
+    // The modes kept, however chosen (a high `max_frequency` keeps many).
+    let modes_path = if ck.has("bridge.modes") {
+        "bridge.modes"
+    } else {
+        "bridge"
+    };
+    let kept = modal.mode_count() as f64;
+    if !budget.check(ck, modes_path, "modes", "bridge modes kept", kept) {
+        return None;
+    }
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    // A braking vehicle started slower may stop before the bridge.
+    let slowest = match &study {
+        Some(Study::SpeedSweep(sweep)) => Some(sweep.speed_range().0),
+        Some(Study::MonteCarlo(mc)) => mc.speed_range().map(|r| r.0),
+        _ => None,
+    };
+    if let Some(speed) = slowest
+        && let Some(i) = crate::scenario::sweep::stops_before_entry(&vehicles, speed)
+    {
+        ck.error(
+            "study.speeds",
+            format!(
+                "at the study's slowest speed, {speed} m/s, vehicle {} brakes to a stop before \
+                 the bridge (acceleration {} m/s²): start it closer or sweep faster speeds",
+                i + 1,
+                vehicles[i].acceleration()
+            ),
+        );
+        return None;
+    }
+
+    // Default step: resolve the highest frequency kept or excited. A speed
+    // sweep's step serves its fastest run; its slowest run is the longest.
+    let (fast, slow) = crate::scenario::sweep::extreme_vehicles(study.as_ref(), &vehicles);
+    let highest = modal.frequencies().last().copied().unwrap_or(1.0);
+    let length = modal.length;
+    let shortest_crossing = fast
+        .iter()
+        .map(|v| v.exit_time(length) - v.entry_time())
+        .fold(f64::INFINITY, f64::min);
+    let duration = |vehicles: &[Vehicle]| {
+        let last_exit = vehicles
+            .iter()
+            .map(|v| v.exit_time(length))
+            .fold(0.0, f64::max);
+        last_exit + free_vibration
+    };
+    let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
+    // A separation map's slowest point (its smallest velocity ratio) runs
+    // longest: v = 2 α f₁ L.
+    if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
+        (&study, modal.frequencies().first(), vehicles.as_slice())
+    {
+        let slowest = 2.0 * velocity_ratio.from.min(velocity_ratio.to) * f1 * length;
+        if slowest > 0.0 {
+            longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
+        }
+    }
+    // Deck accelerations: their highest mode keeps its phase over the run.
+    let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
+    let step_without_ground = solver_raw.time_step.is_none().then(|| {
+        content::time_step(highest, &excitations, shortest_crossing)
+            .min(content::phase_time_step(acceleration_top, longest_run))
+    });
+    // A ground-motion record is linear between its samples: a step no
+    // longer than its shortest interval sees every peak.
+    let time_step = solver_raw.time_step.unwrap_or_else(|| {
+        ground_motion
+            .iter()
+            .map(|g| g.record.shortest_interval())
+            .fold(step_without_ground.unwrap_or(f64::INFINITY), f64::min)
+    });
+    let time_step_selection = if solver_raw.time_step.is_some() {
+        "set in the file".to_owned()
+    } else {
+        format!(
+            "automatic: {} steps per period of the highest frequency kept or excited, at \
+             least 200 steps over the shortest crossing, and for deck accelerations a phase \
+             drift of their highest mode below {} rad over the run",
+            content::STEPS_PER_PERIOD,
+            content::PHASE_BUDGET
+        )
+    };
+    let steps = shortest_run / time_step;
+    if steps < 10.0 {
+        ck.error(
+            "solver.time_step",
+            format!(
+                "a time step of {time_step} s gives only {} step(s) over the {shortest_run:.4} s run; use at most a tenth of it",
+                steps.ceil(),
+            ),
+        );
+    }
+    // The fastest any wheel goes over the study (an accelerating vehicle at
+    // its exit): surface features shorter than its travel per step are
+    // refused.
+    let top_speed = fast
+        .iter()
+        .map(|v| v.speed().max(v.motion().speed_at(v.exit_time(length))))
+        .fold(0.0, f64::max);
+    crate::scenario::surfaces::check_features(&surface, top_speed, time_step, ck);
+    crate::scenario::surfaces::check_lateral_followers(&surface, &vehicles, ck);
+    let steps = longest_run / time_step;
+    let cause = crate::scenario::long_run::LongRun {
+        raw,
+        slow: &slow,
+        ground_motion: &ground_motion,
+        time_step,
+        step_without_ground,
+        duration: longest_run,
+        free_vibration,
+        bridge_length: length,
+    }
+    .cause(budget.limit_of("steps"));
+    let steps_path = cause.path;
+    let what = format!(
+        "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
+    );
+    if budget.check_because(ck, &steps_path, "steps", &what, steps, &cause.hint) && points > 1.0 {
+        budget.check(
+            ck,
+            "study",
+            "study_steps",
+            &format!("time steps over the study's {points} runs"),
+            steps * points,
+        );
+    }
+
+    let method = resolve_method(solver_raw.method, &contact, ck);
+    let iteration = resolve_iteration(&solver_raw, method, ck);
+    let embs = resolve_embs(&solver_raw, method, ck);
+    ck.records_checked = true;
+    let record = resolve_records(
+        raw.record.as_deref(),
+        &modal.frequencies(),
+        Some(&bridge),
+        &vehicles,
+        &contact,
+        ck,
+    );
+    let envelopes = crate::scenario::envelopes::resolve_envelopes(
+        raw.envelopes.as_ref(),
+        &modal.frequencies(),
+        &bridge,
+        ck,
+    );
+    if !ck.diagnostics.is_empty() {
+        return None;
+    }
+    // The records as resolved, defaults included (a contact force per
+    // wheel), so that `resolved.yaml` passes the same budget.
+    if raw.record.is_none() {
+        budget.check(
+            ck,
+            "vehicles",
+            "records",
+            "recorded quantities (the default: each span's middle and each wheel's contact force)",
+            record.len() as f64,
+        );
+    }
+    let output = crate::scenario::output::resolve_output(raw.output.as_ref(), time_step, ck);
+    if study.is_none() {
+        let columns: f64 = record
+            .iter()
+            .map(|r| {
+                if r.quantity == Quantity::BridgeDisplacement {
+                    2.0
+                } else {
+                    1.0
+                }
+            })
+            .sum();
+        let path = if raw.output.is_some() {
+            "output"
+        } else if raw.record.is_some() {
+            "record"
+        } else {
+            steps_path.as_str()
+        };
+        // The rows written: t = 0 and every `every`-th step after it.
+        let rows = (steps / output.every as f64).floor() + 1.0;
+        budget.check(
+            ck,
+            path,
+            "output_bytes",
+            "bytes of the history files (estimated; thin them with `output: {every: N}`)",
+            budget::history_bytes(rows, columns, output.format),
+        );
+        if !ck.diagnostics.is_empty() {
+            return None;
+        }
+    }
+    let scenario = Scenario {
+        source_file: None,
+        name: raw.name.clone(),
+        description: raw.description.clone(),
+        gravity,
+        bridge,
+        vehicles,
+        surface,
+        contact,
+        solver: Solver {
+            method,
+            time_step,
+            newmark,
+            free_vibration,
+            iteration,
+            embs,
+            time_step_selection,
+        },
+        record,
+        ground_motion,
+        envelopes,
+        output,
+        study,
+        limits,
+        speeds_stated: raw
+            .vehicles
+            .iter()
+            .map(|v| v.speed().is_none_or(|s| s.unit_written()))
+            .collect(),
+    };
+    Some((scenario, modal))
+}

@@ -1,0 +1,321 @@
+//! The recorder's step: every column's value, the running extremes, the
+//! girder DAFs, envelopes and wheel separation, and the written samples.
+
+use super::ground::GroundTerm;
+use super::probe::{Probe, StaticProbe, dot, truncated_static_share};
+use super::{Flight, Recorder, SEPARATION_GAP};
+use crate::bridge::section::SectionLoads;
+use crate::solve::{Observer, StepView};
+
+impl Observer for Recorder<'_> {
+    fn observe(&mut self, view: &StepView<'_>) {
+        let sampled = self.keep && view.step.is_multiple_of(self.history.every);
+        if sampled {
+            self.history.time.push(view.time);
+        }
+        // Whether at least one axle is on the deck (the summary's `on_bridge`).
+        let any_on_deck = view
+            .wheel_positions
+            .iter()
+            .any(|&x| self.model.bridge.is_on(x));
+        let dt = self.model.time_step;
+        // A flight (zero force, gap above SEPARATION_GAP) is a contact-loss
+        // episode once its gap passes the loss gap (see RIGID_LOSS_GAP);
+        // then its whole time and largest gap count.
+        for wheel in &mut self.history.separation {
+            let loss_gap = wheel.loss_gap.unwrap_or(SEPARATION_GAP);
+            let gap = view.contact_gaps[wheel.flat];
+            // A rigid wheel with a gap carries no force; its recorded force
+            // is averaged over 1 ms after a landing (a bounce's flight has a
+            // positive average), so the gap alone tells a flight.
+            let apart = gap > SEPARATION_GAP
+                && (wheel.loss_gap.is_some() || view.contact_forces[wheel.flat] <= 0.0);
+            if apart {
+                let flight = &mut wheel.flight;
+                if !wheel.apart {
+                    *flight = Flight {
+                        start: (view.time, view.wheel_positions[wheel.flat]),
+                        ..Flight::default()
+                    };
+                }
+                if view.step > 0 {
+                    flight.time += dt;
+                }
+                if gap > flight.max_gap.0 {
+                    flight.max_gap = (gap, view.time);
+                }
+                if !flight.counted && gap > loss_gap {
+                    flight.counted = true;
+                    wheel.episodes += 1;
+                    wheel.separated = true;
+                    if wheel.first_loss_time.is_none() {
+                        wheel.first_loss_time = Some(flight.start.0);
+                        wheel.first_loss_position = Some(flight.start.1);
+                    }
+                    // The flight's time so far (this step's included).
+                    wheel.time_separated += flight.time;
+                } else if flight.counted && view.step > 0 {
+                    wheel.time_separated += dt;
+                }
+                if flight.counted && flight.max_gap.0 > wheel.max_gap {
+                    wheel.max_gap = flight.max_gap.0;
+                    wheel.max_gap_time = Some(flight.max_gap.1);
+                }
+            }
+            wheel.apart = apart;
+        }
+        let model = self.model;
+        // Mode-acceleration (static) correction of recorded displacements:
+        // the modes left out respond quasi-statically, so their share is the
+        // exact static deflection under the current wheel forces minus its
+        // modal part, w_c = Σ_w F_w [G(x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²]
+        // (Williams 1945; Cornwell, Craig & Johnson 1983; F_w downward).
+        let modes = model.bridge.mode_count();
+        self.on_deck.clear();
+        self.on_deck.extend(
+            (0..view.wheel_positions.len())
+                .filter(|&w| model.bridge.is_on(view.wheel_positions[w])),
+        );
+        let on_deck = &self.on_deck;
+        if !self.wheel_modes.is_empty() {
+            for &w in on_deck {
+                let values = &mut self.wheel_modes[w * modes..(w + 1) * modes];
+                match view.wheel_modes {
+                    Some(given) => values.copy_from_slice(&given[w * modes..(w + 1) * modes]),
+                    None => model.bridge.contact_mode_values(
+                        view.wheel_positions[w],
+                        model.wheel_y[w],
+                        values,
+                    ),
+                }
+            }
+        }
+        if let Some(envelope) = &mut self.envelope {
+            envelope.observe(model, view, &self.wheel_modes, on_deck);
+        }
+        for probe in &mut self.daf_probes {
+            let mut dynamic = dot(&probe.shape, view.modal_displacement);
+            if !self.wheel_modes.is_empty() {
+                dynamic += truncated_static_share(
+                    &probe.statics,
+                    &probe.static_shape,
+                    &self.wheel_modes,
+                    view,
+                    on_deck,
+                );
+            }
+            let statics =
+                probe
+                    .statics
+                    .deflection(view.wheel_positions, &model.static_wheel_loads, on_deck);
+            let r = &mut probe.result;
+            r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
+            r.static_max_abs = r.static_max_abs.max(statics.abs());
+        }
+        // The ground's motion this step (0 without ground motion), once for
+        // every column: acceleration, and displacement only if a record
+        // asks for it.
+        let (ground_acceleration, ground_displacement) = match &model.ground {
+            None => (0.0, 0.0),
+            Some(ground) => (
+                ground.vertical_acceleration(view.time),
+                if self.absolute_displacement {
+                    ground.vertical_motion(view.time).1
+                } else {
+                    0.0
+                },
+            ),
+        };
+        // Laterally: the acceleration for the lateral static share and
+        // absolute records, the displacement only for absolute ones.
+        let (lateral_acceleration, lateral_displacement) = match &model.ground {
+            Some(ground) if !ground.lateral.is_empty() => (
+                ground.lateral_acceleration(view.time),
+                if self.absolute_lateral {
+                    ground.lateral_motion(view.time).1
+                } else {
+                    0.0
+                },
+            ),
+            _ => (0.0, 0.0),
+        };
+        let reuse = self
+            .shared
+            .as_ref()
+            .is_some_and(|shared| shared.borrow().step == Some(view.step));
+        if reuse && let Some(shared) = &self.shared {
+            self.statics.clone_from(&shared.borrow().columns);
+        }
+        for (index, (column, extremes)) in self
+            .history
+            .columns
+            .iter_mut()
+            .zip(&mut self.history.extremes)
+            .enumerate()
+        {
+            let value = match &column.probe {
+                Probe::BridgeDisplacement {
+                    shape,
+                    statics,
+                    static_shape,
+                } => {
+                    // What does not depend on the run's state: the influence
+                    // values at the wheels (for the static crossing — each
+                    // wheel's static load at its current position through
+                    // the influence line of its lane, full stiffness, no
+                    // modal truncation — and for the correction's full
+                    // deflection) and the modal shares φ_s·φ_w of the
+                    // correction; from the batch's shared copy when another
+                    // recorder of a lockstep batch already made them.
+                    let part = &mut self.statics[index];
+                    if !reuse {
+                        statics.values_at_wheels(
+                            view.wheel_positions,
+                            on_deck,
+                            &mut part.influence,
+                        );
+                        part.static_w = StaticProbe::deflection_from(
+                            &part.influence,
+                            &model.static_wheel_loads,
+                            on_deck,
+                        );
+                        part.wheel_dots.clear();
+                        if !self.wheel_modes.is_empty() {
+                            part.wheel_dots.extend(on_deck.iter().map(|&w| {
+                                dot(static_shape, &self.wheel_modes[w * modes..(w + 1) * modes])
+                            }));
+                        }
+                    }
+                    let static_w = part.static_w;
+                    extremes.statics.push(view.step, view.time, static_w);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
+                        s.push(static_w);
+                    }
+                    let modal = dot(shape, view.modal_displacement);
+                    if self.wheel_modes.is_empty() {
+                        modal
+                    } else {
+                        // Σ_w F_w [G(x, x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²], as
+                        // `truncated_static_share`, term by term.
+                        let full = StaticProbe::deflection_from(
+                            &part.influence,
+                            view.contact_forces,
+                            on_deck,
+                        );
+                        let modal_share: f64 = on_deck
+                            .iter()
+                            .zip(&part.wheel_dots)
+                            .map(|(&w, d)| -view.contact_forces[w] * d)
+                            .sum();
+                        modal + (full - modal_share)
+                    }
+                }
+                Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::Lateral {
+                    shape,
+                    acceleration,
+                } => dot(
+                    shape,
+                    if *acceleration {
+                        view.modal_acceleration
+                    } else {
+                        view.modal_displacement
+                    },
+                ),
+                Probe::PlateMoment { probe, line_of } => probe.moment(
+                    view.modal_displacement,
+                    model.bridge.static_correction,
+                    view.wheel_positions,
+                    view.contact_forces,
+                    line_of,
+                    &self.wheel_modes,
+                    on_deck,
+                ),
+                Probe::Section { section, shear } => {
+                    let loads = SectionLoads {
+                        modal: view.modal_displacement,
+                        positions: view.wheel_positions,
+                        forces: view.contact_forces,
+                        wheel_modes: &self.wheel_modes,
+                        on_deck,
+                    };
+                    let forces = section.forces(&loads, model.bridge.static_correction);
+                    if *shear { forces.shear } else { forces.moment }
+                }
+                Probe::ContactForce { wheel } => view.contact_forces[*wheel],
+                Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
+                Probe::VehicleDisplacement { vehicle, dof } => {
+                    let state = &view.vehicles[*vehicle];
+                    state.displacement[*dof] - state.static_displacement[*dof]
+                }
+                Probe::VehicleAcceleration { vehicle, dof } => {
+                    view.vehicles[*vehicle].acceleration[*dof]
+                }
+            };
+            let value = match column.absolute {
+                _ if model.ground.is_none() => value,
+                None if column.lateral_static != 0.0 && column.ground_static == 0.0 => {
+                    value + column.lateral_static * lateral_acceleration
+                }
+                // Both shares: a node of an imported model under records
+                // in both directions, or coupled directions.
+                None if column.lateral_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
+                }
+                None => value + column.ground_static * ground_acceleration,
+                Some(GroundTerm::Acceleration) => {
+                    value + column.ground_static * ground_acceleration + ground_acceleration
+                }
+                Some(GroundTerm::Displacement) if column.lateral_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
+                        + ground_displacement
+                }
+                Some(GroundTerm::Displacement) => {
+                    value + column.ground_static * ground_acceleration + ground_displacement
+                }
+                Some(GroundTerm::LateralAcceleration) => value + lateral_acceleration,
+                Some(GroundTerm::LateralDisplacement) if column.ground_static != 0.0 => {
+                    value
+                        + column.ground_static * ground_acceleration
+                        + column.lateral_static * lateral_acceleration
+                        + lateral_displacement
+                }
+                Some(GroundTerm::LateralDisplacement) => {
+                    value + column.lateral_static * lateral_acceleration + lateral_displacement
+                }
+            };
+            extremes.all.push(view.step, view.time, value);
+            if any_on_deck {
+                extremes.on_bridge.push(view.step, view.time, value);
+            }
+            if sampled {
+                column.values.push(value);
+            }
+        }
+        if !reuse && let Some(shared) = &self.shared {
+            let mut shared = shared.borrow_mut();
+            shared.step = Some(view.step);
+            shared.columns.clone_from(&self.statics);
+        }
+        // Streaming: the row just sampled goes to the file, the vectors
+        // stay empty.
+        if sampled && let Some(spill) = &mut self.spill {
+            let history = &mut self.history;
+            let time = history.time.pop();
+            let values = history.columns.iter_mut().flat_map(|c| {
+                let value = c.values.pop();
+                let statics = c.static_values.as_mut().map(|s| s.pop());
+                std::iter::once(value).chain(statics)
+            });
+            spill.push(
+                std::iter::once(time)
+                    .chain(values)
+                    .map(|v| v.expect("one sample per column this step")),
+            );
+        }
+    }
+}

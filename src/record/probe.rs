@@ -1,0 +1,267 @@
+//! How each recorded column is computed each step: the probes (mode
+//! values at a point, a section, a wheel, a vehicle DOF), the static
+//! influence lines of the DAF reference, and the static share of the modes
+//! left out (the static correction).
+
+use super::GirderDaf;
+use crate::bridge::BridgeError;
+use crate::bridge::InfluenceLine;
+use crate::bridge::section::SectionProbe;
+use crate::model::Model;
+use crate::solve::StepView;
+
+/// How a column is computed each step.
+#[derive(Debug, Clone)]
+pub(super) enum Probe {
+    /// φᵢ(x, y) at the point; w = Σ φᵢ qᵢ. With the static influence
+    /// lines of the point for loads along each wheel's line (one per
+    /// distinct wheel y) and, per flattened wheel, which one it uses.
+    BridgeDisplacement {
+        shape: Vec<f64>,
+        statics: StaticProbe,
+        /// φᵢ(x, y)/ωᵢ² (static correction), m per unit modal force.
+        static_shape: Vec<f64>,
+    },
+    /// ẅ = Σ φᵢ q̈ᵢ.
+    BridgeAcceleration { shape: Vec<f64> },
+    /// The rails' lateral displacement v = Σ φᵢ qᵢ (φ the modes' lateral
+    /// components at the point), or with `acceleration` v̈: a modal sum,
+    /// plus under a lateral record the lateral static share of the modes
+    /// left out (`Column::lateral_static`; the static crossing is vertical).
+    Lateral { shape: Vec<f64>, acceleration: bool },
+    /// A plate deck's moment per unit width at a point; `line_of[w]` is
+    /// the probe's influence line of flattened wheel w.
+    PlateMoment {
+        probe: Box<crate::bridge::plate::moments::PlateMomentProbe>,
+        line_of: Vec<usize>,
+    },
+    /// Bending moment (or, with `shear`, shear force) of a beam section.
+    Section {
+        section: Box<SectionProbe>,
+        shear: bool,
+    },
+    /// Flattened wheel index.
+    ContactForce { wheel: usize },
+    /// Flattened wheel index.
+    ContactGap { wheel: usize },
+    /// Vehicle and DOF; displacement from static equilibrium.
+    VehicleDisplacement { vehicle: usize, dof: usize },
+    /// Vehicle and DOF.
+    VehicleAcceleration { vehicle: usize, dof: usize },
+}
+/// The distinct transverse positions y of the wheels (m), in order of
+/// first appearance, and the index of each flattened wheel's among them:
+/// one static influence line per such line serves every wheel on it.
+pub(super) fn wheel_lines(model: &Model) -> (Vec<f64>, Vec<usize>) {
+    let mut lines: Vec<f64> = Vec::new();
+    let line_of = model
+        .wheel_y
+        .iter()
+        .map(|&wheel_y| match lines.iter().position(|&l| l == wheel_y) {
+            Some(index) => index,
+            None => {
+                lines.push(wheel_y);
+                lines.len() - 1
+            }
+        })
+        .collect();
+    (lines, line_of)
+}
+
+/// The static influence lines of one bridge point for the loads of every
+/// wheel: one line per distinct wheel y, and which one each flattened wheel uses.
+#[derive(Debug, Clone)]
+pub(super) struct StaticProbe {
+    pub(super) influences: Vec<InfluenceLine>,
+    pub(super) wheel_influence: Vec<usize>,
+}
+
+impl StaticProbe {
+    /// The probe of the point (x, y), m.
+    pub(super) fn new(model: &Model, x: f64, y: f64) -> Result<Self, BridgeError> {
+        let (lines, wheel_influence) = wheel_lines(model);
+        let influences = lines
+            .iter()
+            .map(|&line| model.bridge.influence_line(x, y, line))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self {
+            influences,
+            wheel_influence,
+        })
+    }
+
+    /// The probe of free DOF `dof` of an imported model: one influence line
+    /// along its track, which every wheel uses.
+    pub(super) fn of_dof(model: &Model, dof: usize) -> Result<Self, BridgeError> {
+        Ok(Self {
+            influences: vec![model.bridge.dof_influence_line(dof)?],
+            wheel_influence: vec![0; model.wheel_y.len()],
+        })
+    }
+
+    /// Static deflection at the point, m (upward positive), with every wheel
+    /// carrying its static load at `positions`.
+    /// Only the wheels `on_deck` (indices) are summed: the influence
+    /// lines vanish off the deck.
+    pub(super) fn deflection(&self, positions: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
+        on_deck
+            .iter()
+            .map(|&w| -loads[w] * self.influences[self.wheel_influence[w]].value_at(positions[w]))
+            .sum()
+    }
+
+    /// The influence line's value at each wheel `on_deck` (in that order),
+    /// m/N, into `values`: [`Self::deflection`]'s factors, for several
+    /// load sets at one step.
+    pub(super) fn values_at_wheels(
+        &self,
+        positions: &[f64],
+        on_deck: &[usize],
+        values: &mut Vec<f64>,
+    ) {
+        values.clear();
+        values.extend(
+            on_deck
+                .iter()
+                .map(|&w| self.influences[self.wheel_influence[w]].value_at(positions[w])),
+        );
+    }
+
+    /// [`Self::deflection`] from the values of [`Self::values_at_wheels`].
+    pub(super) fn deflection_from(values: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
+        on_deck
+            .iter()
+            .zip(values)
+            .map(|(&w, value)| -loads[w] * value)
+            .sum()
+    }
+}
+
+/// One column's per-step values that do not depend on the run's state
+/// (bridge displacements; empty for other columns).
+#[derive(Debug, Default)]
+pub(super) struct ColumnStatics {
+    /// The influence line at each wheel on the deck, m/N.
+    pub(super) influence: Vec<f64>,
+    /// The static crossing's deflection, m.
+    pub(super) static_w: f64,
+    /// φ_s·φ_w (the column's static shape, each wheel's mode values) per
+    /// wheel on the deck, m/N.
+    pub(super) wheel_dots: Vec<f64>,
+}
+
+impl Clone for ColumnStatics {
+    fn clone(&self) -> Self {
+        Self {
+            influence: self.influence.clone(),
+            static_w: self.static_w,
+            wheel_dots: self.wheel_dots.clone(),
+        }
+    }
+
+    /// In place, keeping the buffers: copied every step of every sample.
+    fn clone_from(&mut self, source: &Self) {
+        self.influence.clone_from(&source.influence);
+        self.static_w = source.static_w;
+        self.wheel_dots.clone_from(&source.wheel_dots);
+    }
+}
+
+/// The per-step values the recorders of one lockstep batch share
+/// ([`super::Recorder::sharing_statics`]).
+#[derive(Debug, Default)]
+pub struct SharedStatics {
+    /// The step they belong to.
+    pub(super) step: Option<usize>,
+    pub(super) columns: Vec<ColumnStatics>,
+}
+/// Tracks one [`GirderDaf`] during the run.
+#[derive(Debug, Clone)]
+pub(super) struct DafProbe {
+    pub(super) result: GirderDaf,
+    pub(super) shape: Vec<f64>,
+    pub(super) statics: StaticProbe,
+    pub(super) static_shape: Vec<f64>,
+}
+
+/// φᵢ/ωᵢ² of a point's mode values `shape` (the modal static flexibility).
+pub(super) fn static_shape(model: &Model, shape: &[f64]) -> Vec<f64> {
+    shape
+        .iter()
+        .zip(&model.bridge.circular_frequencies)
+        .map(|(phi, w)| phi / (w * w))
+        .collect()
+}
+
+/// The static share of the modes left out at a point (m, upward
+/// positive): the full static deflection under the current wheel forces
+/// minus its modal part, Σ_w F_w [Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ² − G(x, x_w)]
+/// (mode-acceleration method; Williams 1945; Cornwell, Craig & Johnson
+/// 1983). `wheel_modes` holds the mode values at each wheel (wheel-major).
+pub(super) fn truncated_static_share(
+    statics: &StaticProbe,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+    on_deck: &[usize],
+) -> f64 {
+    let full = statics.deflection(view.wheel_positions, view.contact_forces, on_deck);
+    static_share_beyond(full, static_shape, wheel_modes, view, on_deck)
+}
+
+/// [`truncated_static_share`] with the full static deflection under the
+/// current wheel forces, `full` (m), given.
+pub(super) fn static_share_beyond(
+    full: f64,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+    on_deck: &[usize],
+) -> f64 {
+    let modes = static_shape.len();
+    let modal: f64 = on_deck
+        .iter()
+        .map(|&w| {
+            let values = &wheel_modes[w * modes..(w + 1) * modes];
+            -view.contact_forces[w] * dot(static_shape, values)
+        })
+        .sum();
+    full - modal
+}
+/// The deck-acceleration filter: the mode values `shape` with the modes
+/// above the cut-off `max_frequency` (Hz) zeroed (a sharp modal low-pass,
+/// EN 1990 A2.4.4.2.1(4)).
+pub(super) fn filtered_shape(model: &Model, shape: &[f64], max_frequency: Option<f64>) -> Vec<f64> {
+    let mut shape = shape.to_vec();
+    if let Some(cut) = max_frequency {
+        let limit = 2.0 * std::f64::consts::PI * cut * (1.0 + 1e-12);
+        for (value, omega) in shape.iter_mut().zip(&model.bridge.circular_frequencies) {
+            if *omega > limit {
+                *value = 0.0;
+            }
+        }
+    }
+    shape
+}
+
+/// A recorded bridge displacement (m, upward): the modal sum, plus the
+/// static share of the modes left out when `wheel_modes` is filled (the
+/// static correction is on).
+pub(super) fn corrected_displacement(
+    shape: &[f64],
+    statics: &StaticProbe,
+    static_shape: &[f64],
+    wheel_modes: &[f64],
+    view: &StepView<'_>,
+    on_deck: &[usize],
+) -> f64 {
+    let modal = dot(shape, view.modal_displacement);
+    if wheel_modes.is_empty() {
+        modal
+    } else {
+        modal + truncated_static_share(statics, static_shape, wheel_modes, view, on_deck)
+    }
+}
+pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}

@@ -1,0 +1,148 @@
+//! The diagnostics collector every section's checks report through: a
+//! problem at a key's path becomes a located diagnostic (file, line,
+//! column), and the checks every section shares.
+
+use super::diagnostic::{Diagnostic, Lines};
+use super::yaml::{Location, Node, PathSeg};
+
+/// Collects diagnostics while resolving one file.
+pub(crate) struct Checker<'a> {
+    pub(crate) file: &'a str,
+    pub(crate) source: &'a str,
+    lines: Lines<'a>,
+    pub(crate) root: &'a Node,
+    /// Where the files the scene names may be read from.
+    data: super::data_files::DataAccess,
+    pub diagnostics: Vec<Diagnostic>,
+    /// Whether the records were checked: an error that stops the
+    /// resolution before them leaves them to `resolve::cross_checks`.
+    pub(crate) records_checked: bool,
+    /// No valid bridge to check the other sections against: the file's
+    /// `bridge` did not parse (a stand-in took its place, set by the
+    /// loader) or has errors of its own. Checks that need the bridge's
+    /// length or width are then left out, not failed.
+    pub bridge_unknown: bool,
+    /// The file's `bridge` did not parse: it is not resolved at all.
+    pub bridge_unreadable: bool,
+}
+
+/// Parses "vehicles[0].speed" into path segments.
+fn parse_path(path: &str) -> Vec<PathSeg<'_>> {
+    let mut segs = Vec::new();
+    for part in path.split('.') {
+        let (key, rest) = part.split_once('[').unwrap_or((part, ""));
+        if !key.is_empty() {
+            segs.push(PathSeg::Key(key));
+        }
+        for idx in rest.split('[') {
+            if let Ok(i) = idx.trim_end_matches(']').parse() {
+                segs.push(PathSeg::Index(i));
+            }
+        }
+    }
+    segs
+}
+
+impl<'a> Checker<'a> {
+    pub(crate) fn new(file: &'a str, source: &'a str, root: &'a Node) -> Self {
+        Self {
+            file,
+            source,
+            lines: Lines::new(source),
+            root,
+            data: Default::default(),
+            diagnostics: Vec::new(),
+            records_checked: false,
+            bridge_unknown: false,
+            bridge_unreadable: false,
+        }
+    }
+
+    /// Sets where the files the scene names may be read from.
+    pub(crate) fn set_data_access(&mut self, data: super::data_files::DataAccess) {
+        self.data = data;
+    }
+
+    /// Where the files the scene names may be read from.
+    pub(crate) fn data_access(&self) -> &super::data_files::DataAccess {
+        &self.data
+    }
+
+    fn location(&self, path: &str) -> Location {
+        self.root.locate(&parse_path(path))
+    }
+
+    /// Records an error at `path`.
+    pub(crate) fn error(&mut self, path: &str, message: impl Into<String>) {
+        let loc = self.location(path);
+        let diagnostic = self.lines.diagnostic(self.file, loc, message);
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// Records an error at `path` with a `help:` line (a suggestion).
+    pub(crate) fn error_with_help(
+        &mut self,
+        path: &str,
+        message: impl Into<String>,
+        help: Option<String>,
+    ) {
+        let loc = self.location(path);
+        let diagnostic = self
+            .lines
+            .diagnostic(self.file, loc, message)
+            .with_help(help);
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// The scenario file's name as given (relative paths in the scene are
+    /// relative to its folder).
+    pub(crate) fn file(&self) -> &str {
+        self.file
+    }
+
+    pub(crate) fn positive(&mut self, path: &str, value: f64, what: &str) {
+        if value <= 0.0 {
+            self.error(path, format!("{what} must be positive, got {value}"));
+        }
+    }
+
+    /// Whether the file writes the key at `path` (defaults are blamed on the
+    /// section that could set them instead).
+    pub(crate) fn has(&self, path: &str) -> bool {
+        let segs = parse_path(path);
+        let (last, parent) = match segs.split_last() {
+            Some((PathSeg::Key(k), parent)) => (*k, parent),
+            _ => return false,
+        };
+        let mut node = self.root;
+        for seg in parent {
+            let next = match seg {
+                PathSeg::Key(k) => node.get(k),
+                PathSeg::Index(i) => match &node.kind {
+                    super::yaml::NodeKind::Sequence(items) => items.get(*i),
+                    _ => None,
+                },
+            };
+            match next {
+                Some(n) => node = n,
+                None => return false,
+            }
+        }
+        node.get(last).is_some()
+    }
+
+    pub(crate) fn non_negative(&mut self, path: &str, value: f64, what: &str) {
+        if value < 0.0 {
+            self.error(path, format!("{what} must not be negative, got {value}"));
+        }
+    }
+}
+
+pub(crate) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
+    if !(0.0..1.0).contains(&ratio) {
+        ck.error(
+            path,
+            format!("a damping ratio must be in [0, 1), got {ratio}"),
+        );
+    }
+}

@@ -1,0 +1,371 @@
+//! What the readers return and the assembly of an imported model from the
+//! matrices, DOF map and rails they read: sizes, symmetry, masses,
+//! constraints and rail nodes checked against each other, the free DOFs kept.
+
+use std::collections::HashMap;
+
+use thiserror::Error;
+
+use crate::scene::imported::{Direction, ImportedModel, RailDofs, RailEntry, RotationSign};
+
+use super::{entries, matrix_market, rotation};
+
+/// A problem at a line (and column) of one file.
+#[derive(Debug, Clone, Error, PartialEq)]
+#[error("{}: {message}", match column { Some(c) => format!("line {line}, column {c}"), None => format!("line {line}") })]
+pub struct ReadError {
+    /// Line from 1.
+    pub line: usize,
+    /// Column from 1, where meaningful.
+    pub column: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl ReadError {
+    /// An error at `line` (and `column`).
+    pub fn new(line: usize, column: Option<usize>, message: impl Into<String>) -> Self {
+        Self {
+            line,
+            column,
+            message: message.into(),
+        }
+    }
+}
+
+/// Called with a header's declared (rows, entries) before anything is
+/// allocated for them; an error message refuses them.
+pub type SizeCheck<'a> = &'a mut dyn FnMut(u64, u64) -> Result<(), String>;
+
+/// A matrix as read: order, whether one triangle stands for both, the
+/// entries (row, column, value) from 0, and the DOF map the format implies
+/// (Abaqus), if any.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MatrixFile {
+    /// Rows = columns.
+    pub order: usize,
+    /// One triangle stored, mirrored on assembly.
+    pub symmetric: bool,
+    /// (row, column, value), 0-based.
+    pub entries: Vec<(usize, usize, f64)>,
+    /// (line, column) of each entry in its file, from 1: where a duplicate
+    /// or an asymmetric entry is reported.
+    pub places: Vec<(usize, usize)>,
+    /// (node, direction) of each row, when the format names them.
+    pub dofs: Option<Vec<(u64, Direction)>>,
+}
+
+/// Reads a finite real number of an entry line.
+pub(crate) fn parse_value(field: &str, line: &str, n: usize) -> Result<f64, ReadError> {
+    let column = Some(matrix_market::column_of(line, field));
+    // Fortran writes exponents as D (1.0D+03).
+    let v: f64 = field.replace(['D', 'd'], "e").parse().map_err(|_| {
+        ReadError::new(
+            n,
+            column,
+            format!("`{}` is not a number", crate::text_table::quoted(field)),
+        )
+    })?;
+    if !v.is_finite() {
+        return Err(ReadError::new(
+            n,
+            column,
+            format!(
+                "`{}` is not a finite number",
+                crate::text_table::quoted(field)
+            ),
+        ));
+    }
+    Ok(v)
+}
+
+/// Which input a problem of [`ImportedModel::assemble`] comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    /// The stiffness file.
+    Stiffness,
+    /// The mass file.
+    Mass,
+    /// The damping file.
+    Damping,
+    /// The DOF map.
+    DofMap,
+    /// `constrained[i]`.
+    Constrained(usize),
+    /// Rail i.
+    Rail(usize),
+    /// `track`.
+    Track,
+    /// `rotation_sign` of this rotation (or where it belongs).
+    RotationSign(Direction),
+}
+
+/// A problem found while assembling an imported model.
+#[derive(Debug, Clone, Error, PartialEq)]
+#[error("{message}")]
+pub struct AssemblyError {
+    /// Where it comes from.
+    pub source_input: Source,
+    /// (line, column) in that input's file, from 1, when one entry is to blame.
+    pub place: Option<(usize, usize)>,
+    /// What is wrong.
+    pub message: String,
+}
+
+pub(crate) fn fail<T>(source: Source, message: impl Into<String>) -> Result<T, AssemblyError> {
+    Err(AssemblyError {
+        source_input: source,
+        place: None,
+        message: message.into(),
+    })
+}
+
+/// [`fail`] at an entry's (line, column) of the source's file.
+pub(crate) fn fail_at<T>(
+    source: Source,
+    place: (usize, usize),
+    message: impl Into<String>,
+) -> Result<T, AssemblyError> {
+    Err(AssemblyError {
+        source_input: source,
+        place: Some(place),
+        message: message.into(),
+    })
+}
+
+/// Relative tolerance of the symmetry check of a `general` matrix:
+/// |Aᵢⱼ − Aⱼᵢ| ≤ tol · max|A| (FE programs print 6–16 digits; 1e-6 admits
+/// the 7 significant digits of a single-precision print).
+pub const SYMMETRY_TOLERANCE: f64 = 1e-6;
+
+/// A rail as given: name and (node, x) pairs.
+pub type RailNodes = (String, Vec<(u64, f64)>);
+
+impl ImportedModel {
+    /// Checks the read matrices, map, constraints and rails against each
+    /// other and keeps the free DOFs. `map` is required unless the
+    /// stiffness file names its DOFs (Abaqus). `rotation_sign` flips the files'
+    /// slope rotations into this program's convention, which each rail's
+    /// stiffness must then confirm ([`rotation`]); `sign_declared` says
+    /// the scene wrote `rotation_sign` (then a rail whose stiffness cannot
+    /// tell the sign is taken at the scene's word).
+    #[allow(clippy::too_many_arguments)]
+    pub fn assemble(
+        stiffness: MatrixFile,
+        mass: MatrixFile,
+        damping: Option<MatrixFile>,
+        map: Option<Vec<(u64, Direction)>>,
+        constrained: &[(u64, Direction)],
+        rails: &[RailNodes],
+        track: &[usize],
+        rotation_sign: RotationSign,
+        sign_declared: bool,
+    ) -> Result<Self, AssemblyError> {
+        let map = match (map, &stiffness.dofs) {
+            (Some(map), _) => map,
+            (None, Some(dofs)) => dofs.clone(),
+            (None, None) => {
+                return fail(
+                    Source::DofMap,
+                    "a `dof_map` is needed: the stiffness file does not name its DOFs",
+                );
+            }
+        };
+        let n = stiffness.order;
+        if map.len() != n {
+            return fail(
+                Source::DofMap,
+                format!(
+                    "the DOF map has {} rows but the stiffness matrix has {n}",
+                    map.len()
+                ),
+            );
+        }
+        let position: HashMap<(u64, Direction), usize> =
+            map.iter().enumerate().map(|(i, &k)| (k, i)).collect();
+        let k = entries::both_triangles(stiffness, &map, &position, Source::Stiffness)?;
+        let m = entries::both_triangles(mass, &map, &position, Source::Mass)?;
+        let c = match damping {
+            Some(c) => Some(entries::both_triangles(
+                c,
+                &map,
+                &position,
+                Source::Damping,
+            )?),
+            None => None,
+        };
+        // θ_here = sign · θ_file: D K D with D = diag(sign), exact.
+        let (k, m, c) = if rotation_sign.is_default() {
+            (k, m, c)
+        } else {
+            let sign = |i: usize| rotation_sign.of(map[i].1) as f64;
+            let flip = |entries: Vec<(usize, usize, f64)>| -> Vec<(usize, usize, f64)> {
+                entries
+                    .into_iter()
+                    .map(|(r, c, v)| (r, c, sign(r) * sign(c) * v))
+                    .collect()
+            };
+            (flip(k), flip(m), c.map(flip))
+        };
+        let mut free = vec![true; n];
+        for (i, &(node, direction)) in constrained.iter().enumerate() {
+            match position.get(&(node, direction)) {
+                Some(&dof) => free[dof] = false,
+                None => {
+                    return fail(
+                        Source::Constrained(i),
+                        format!(
+                            "node {node} {} is not in the DOF map (a DOF removed from the \
+                             matrices already must not be listed)",
+                            direction.name()
+                        ),
+                    );
+                }
+            }
+        }
+        let vertical_mass = m
+            .iter()
+            .filter(|&&(r, c, _)| map[r].1 == Direction::Uz && map[c].1 == Direction::Uz)
+            .map(|e| e.2)
+            .sum();
+        let mut index = vec![None; n];
+        let mut dofs = Vec::new();
+        for dof in 0..n {
+            if free[dof] {
+                index[dof] = Some(dofs.len());
+                dofs.push(map[dof]);
+            }
+        }
+        if dofs.is_empty() {
+            return fail(Source::Constrained(0), "every DOF is constrained");
+        }
+        let restrict = |entries: Vec<(usize, usize, f64)>| -> Vec<(usize, usize, f64)> {
+            entries
+                .into_iter()
+                .filter_map(|(r, c, v)| Some((index[r]?, index[c]?, v)))
+                .collect()
+        };
+        // The supports move with the ground too: M δ over the full matrix,
+        // then kept on the free rows.
+        let mut vertical_inertia = vec![0.0; dofs.len()];
+        let mut lateral_inertia = vec![0.0; dofs.len()];
+        for &(r, c, v) in &m {
+            match (index[r], map[c].1) {
+                (Some(row), Direction::Uz) => vertical_inertia[row] += v,
+                (Some(row), Direction::Uy) => lateral_inertia[row] += v,
+                _ => {}
+            }
+        }
+        let (k, m) = (restrict(k), restrict(m));
+        let c = c.map(restrict);
+        // Diagonals: a free DOF needs stiffness and mass of its own.
+        let diagonal = |entries: &[(usize, usize, f64)]| {
+            let mut d = vec![0.0; dofs.len()];
+            for &(r, c, v) in entries {
+                if r == c {
+                    d[r] += v;
+                }
+            }
+            d
+        };
+        for (i, (kd, md)) in diagonal(&k).into_iter().zip(diagonal(&m)).enumerate() {
+            let (node, direction) = dofs[i];
+            let name = format!("node {node} {}", direction.name());
+            if md < 0.0 {
+                return fail(
+                    Source::Mass,
+                    format!("{name} has a negative diagonal mass {md}"),
+                );
+            }
+            if md == 0.0 {
+                return fail(
+                    Source::Mass,
+                    format!(
+                        "{name} carries no mass (diagonal 0): massless DOFs are refused rather than \
+                         condensed; export a consistent mass matrix (with rotary inertia), or list \
+                         the DOF under `constrained` if it is really fixed"
+                    ),
+                );
+            }
+            if kd <= 0.0 {
+                return fail(
+                    Source::Stiffness,
+                    format!(
+                        "{name} has a diagonal stiffness {kd}, not positive (is it held by anything?)"
+                    ),
+                );
+            }
+        }
+        if let Some(short) = rails.iter().position(|r| r.1.len() < 2) {
+            return fail(Source::Rail(short), "a rail needs at least two nodes");
+        }
+        // Rails: every node in the map with uz; deck coordinates from the
+        // first node of any rail.
+        let origin = rails.iter().map(|r| r.1[0].1).fold(f64::INFINITY, f64::min);
+        let end = rails
+            .iter()
+            .map(|r| r.1[r.1.len() - 1].1)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut rail_dofs = Vec::with_capacity(rails.len());
+        for (ri, (name, nodes)) in rails.iter().enumerate() {
+            let find = |node: u64, d: Direction| position.get(&(node, d)).copied();
+            for &(node, _) in nodes {
+                if !map.iter().any(|&(mn, _)| mn == node) {
+                    return fail(
+                        Source::Rail(ri),
+                        format!("rail `{name}`: node {node} is not in the DOF map"),
+                    );
+                }
+                if find(node, Direction::Uz).is_none() {
+                    return fail(
+                        Source::Rail(ri),
+                        format!("rail `{name}`: node {node} has no uz DOF in the map"),
+                    );
+                }
+            }
+            let column = |d: Direction| -> Vec<Option<usize>> {
+                nodes
+                    .iter()
+                    .map(|&(node, _)| find(node, d).and_then(|g| index[g]))
+                    .collect()
+            };
+            let has_all = |d: Direction| nodes.iter().all(|&(node, _)| find(node, d).is_some());
+            rail_dofs.push(RailDofs {
+                name: name.clone(),
+                nodes: nodes.iter().map(|p| p.0).collect(),
+                x: nodes.iter().map(|p| p.1 - origin).collect(),
+                displacement: [column(Direction::Uz), column(Direction::Uy)],
+                rotation: [column(Direction::Ry), column(Direction::Rz)],
+                hermite: [has_all(Direction::Ry), has_all(Direction::Rz)],
+            });
+        }
+        if track.is_empty() || track.iter().any(|&t| t >= rails.len()) {
+            return fail(Source::Track, "the track names no rail");
+        }
+        for rail in &rail_dofs {
+            for plane in 0..2 {
+                if rail.hermite[plane] {
+                    rotation::check(&k, rail, plane, rotation_sign, sign_declared)?;
+                }
+            }
+        }
+        Ok(Self {
+            dofs,
+            stiffness: k,
+            mass: m,
+            damping: c,
+            rails: rail_dofs,
+            track: track.to_vec(),
+            length: end - origin,
+            vertical_mass,
+            vertical_inertia,
+            lateral_inertia,
+            entry: RailEntry {
+                start: 0.0,
+                end: end - origin,
+                entry: 0.0,
+                exit: 0.0,
+            },
+        })
+    }
+}
