@@ -80,6 +80,11 @@ pub(super) struct Impacts {
     pub leaving: Vec<bool>,
     /// Whether contact `c` was on the deck at the start of the step.
     pub was_on_deck: Vec<bool>,
+    /// Per contact at the start of the step (the end of the previous one):
+    /// the wheel's velocity (m/s) and acceleration (m/s²) and the surface's
+    /// under it, u̇ and ü (see `unilateral::surface_motion`), for the
+    /// period-2 filter of a held wheel (`unilateral::smooth_held_wheel`).
+    pub held_start: Vec<[f64; 4]>,
     /// Steps since contact `c`'s last landing (`usize::MAX`: none yet).
     since_landing: Vec<usize>,
     /// Impulses of the last `window` steps, ring buffer, step-major.
@@ -140,6 +145,7 @@ impl Impacts {
             landing: vec![false; nc],
             leaving: vec![false; nc],
             was_on_deck: vec![false; nc],
+            held_start: vec![[0.0; 4]; nc],
             since_landing: vec![usize::MAX; nc],
             history,
             free_modal_velocity: vec![0.0; modes],

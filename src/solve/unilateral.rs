@@ -354,6 +354,25 @@ pub fn run(
         impacts.locate(model, &contacts, &geometry.on_deck, &wheel_positions, 0.0);
         impacts.was_on_deck.copy_from_slice(&geometry.on_deck);
         for (c, contact) in contacts.iter().enumerate() {
+            let (surface_velocity, surface_acceleration) = surface_motion(
+                model,
+                &modal,
+                contact,
+                wheel_positions[contact.wheel],
+                0.0,
+                [
+                    &mut landing_values,
+                    &mut landing_slopes,
+                    &mut landing_curvatures,
+                ],
+            );
+            let state = &states[contact.vehicle];
+            impacts.held_start[c] = [
+                state.velocity[contact.dof],
+                state.acceleration[contact.dof],
+                surface_velocity,
+                surface_acceleration,
+            ];
             impacts.relative_velocity[c] = impacts.relative(
                 c,
                 modes,
@@ -794,7 +813,7 @@ pub fn run(
                 impacts,
                 &contacts,
                 &geometry,
-                &lambda,
+                (&lambda, &was_apart),
                 (&wheel_positions, t),
                 &mut modal,
                 &mut states,
@@ -920,7 +939,7 @@ fn moreau_jean_finish(
     impacts: &mut Impacts,
     contacts: &[ContactWheel],
     geometry: &ContactGeometry,
-    lambda: &[f64],
+    (lambda, was_apart): (&[f64], &[bool]),
     (wheel_positions, t): (&[f64], f64),
     modal: &mut ModalStep,
     states: &mut [VehicleState],
@@ -970,6 +989,43 @@ fn moreau_jean_finish(
         }
     }
     for (c, contact) in contacts.iter().enumerate() {
+        if !impacts.takes_impacts(c) {
+            continue;
+        }
+        let (surface_velocity, surface_acceleration) = surface_motion(
+            model,
+            modal,
+            contact,
+            wheel_positions[contact.wheel],
+            t,
+            [&mut *values, &mut *slopes, &mut *curvatures],
+        );
+        let state = &mut states[contact.vehicle];
+        let k = contact.dof;
+        if !was_apart[c] && !impacts.landing[c] && lambda[c] > 0.0 {
+            // Held through the step by the displacement-level law: the
+            // period-2 part of its velocity and acceleration is removed
+            // (see `smoothed_held_motion`).
+            let [velocity, acceleration] = smoothed_held_motion(
+                impacts.held_start[c],
+                [
+                    state.velocity[k],
+                    state.acceleration[k],
+                    surface_velocity,
+                    surface_acceleration,
+                ],
+            );
+            state.velocity[k] = velocity;
+            state.acceleration[k] = acceleration;
+        }
+        impacts.held_start[c] = [
+            state.velocity[k],
+            state.acceleration[k],
+            surface_velocity,
+            surface_acceleration,
+        ];
+    }
+    for (c, contact) in contacts.iter().enumerate() {
         if impacts.takes_impacts(c) {
             impacts.relative_velocity[c] = impacts.relative(
                 c,
@@ -981,6 +1037,37 @@ fn moreau_jean_finish(
             );
         }
     }
+}
+
+/// The velocity and acceleration (m/s, m/s²) a wheel held on the surface
+/// through a step by the displacement-level law keeps at its end, from
+/// `start` and `end` = [wheel velocity, wheel acceleration, surface velocity,
+/// surface acceleration] at the step's start and end: the wheel's errors
+/// against the surface's motion averaged over the two instants,
+/// u̇ := s′ + ½[(u̇ − s′)ₙ₊₁ + (u̇ − s′)ₙ], likewise ü with s″.
+///
+/// Why: under a position constraint u = s the trapezoidal rule's velocity
+/// error eₙ = u̇ₙ − s′ₙ obeys eₙ + eₙ₊₁ = −h²s‴/6, whose solutions are the
+/// smooth −h²s‴/12 plus an undamped alternating part ±δ set by how the
+/// contact started (a landing's velocity is the surface's exactly, so
+/// δ = h²s‴/12). That part makes the acceleration error εₙ (the contact
+/// force's, times the wheel mass) obey εₙ + εₙ₊₁ = ∓4δ/h, an alternating
+/// force growing as m·s‴·t/3, which touched zero on alternate steps before
+/// real lift-offs (spurious flights of 1–3 steps and 1–10 nm, issue 29).
+/// The average of two consecutive errors keeps the smooth part (to
+/// O(h³) a step) and cancels the alternating one; for the acceleration
+/// likewise (εₙ + εₙ₊₁ = −h·s‴/3 − 4eₙ/h, 0 once eₙ is the smooth
+/// error). Unlike a restart from the surface's motion (velocity s′,
+/// acceleration s″, which biased the force by m·h·s‴/3 a step), the
+/// smooth trapezoidal solution is a fixed point: its position is exact
+/// and its contact force second order.
+fn smoothed_held_motion(start: [f64; 4], end: [f64; 4]) -> [f64; 2] {
+    let [v0, a0, s0, sa0] = start;
+    let [v1, a1, s1, sa1] = end;
+    [
+        s1 + 0.5 * ((v1 - s1) + (v0 - s0)),
+        sa1 + 0.5 * ((a1 - sa1) + (a0 - sa0)),
+    ]
 }
 
 /// y += a · A x over the diagonal blocks `blocks` of A (zero outside them:

@@ -44,14 +44,13 @@ fn statistics(outcome: &Outcome) -> (usize, f64, f64, f64) {
     (wheel.episodes, wheel.time_separated, wheel.max_gap, daf)
 }
 
-/// Separation statistics converge (issue 29, point 3; the 4.5 mm, e = 0
-/// case FAILS with the step as it is: the spurious flights of
-/// `no_spurious_flights_before_lift_offs` shift the lift-offs, 0.23695,
-/// 0.237325 and 0.236275 s separated and largest gaps 0.40743, 0.40778,
-/// 0.40945 mm at Δt = 5e-5, 2.5e-5 and 1.25e-5 s; that case is
-/// `hopping_statistics_converge_on_the_higher_surface`, ignored until
-/// point 4 is fixed — the restart described there gave 0.23485, 0.23530,
-/// 0.23549 s).
+/// Separation statistics converge (issue 29, point 3). On the 4.5 mm
+/// surface with e = 0 (`hopping_statistics_converge_on_the_higher_surface`)
+/// the spurious flights of `no_spurious_flights_before_lift_offs` shifted the
+/// lift-offs before the held wheel's period-2 filter (0.23695, 0.237325 and
+/// 0.236275 s separated at Δt = 5e-5, 2.5e-5 and 1.25e-5 s); with it: 16
+/// episodes at every step, 0.23550, 0.23597 and 0.23585 s separated,
+/// largest gap 0.4074, 0.4078 and 0.4079 mm, DAF 1.14157, 1.14199, 1.14301.
 /// (An episode: a flight whose gap passes
 /// 1 µm, `RIGID_LOSS_GAP`; the sub-micrometre flights at the end of an
 /// accumulation of bounces grow in number as the step resolves more of
@@ -76,7 +75,6 @@ fn hopping_statistics_converge() {
 
 /// The 4.5 mm, e = 0 case of [`hopping_statistics_converge`] (see its doc).
 #[test]
-#[ignore = "issue 29 point 3: the 4.5 mm, e = 0 case does not converge until point 4 is fixed"]
 fn hopping_statistics_converge_on_the_higher_surface() {
     hopping_cases_converge(&[(0.0045, 0.0)]);
 }
@@ -342,25 +340,18 @@ fn flights(gap: &[f64]) -> Vec<(usize, usize, f64)> {
     out
 }
 
-/// No spurious flights before a lift-off (issue 29, point 4; NOT FIXED,
-/// ignored so the suite stays green — run with `--ignored`): the wheel
-/// held by the displacement-level law takes an alternating (period-2)
-/// contact force whose amplitude grows as m·s‴·t/3 (the trapezoidal rule's
-/// alternating velocity error h²s‴/12 under a position constraint, turned
-/// into an acceleration error growing by h·s‴/3 a step; measured 3 kN per
-/// ms on the 4.5 mm surface, as predicted), which touches zero on
-/// alternate steps before each real lift-off: flights of 1–3 steps and
-/// 1–10 nm, 44–54 flights on the 4.5 mm surface (32–42 of them below
-/// 1 µm) against the reference's 12 lift-offs. Restarting a wheel in
-/// contact from the surface's motion every step (acceleration s̈, velocity
-/// the step's secant + h/2·s̈) removed them (12 flights at every step from
-/// 1e-4 to 1.25e-5 s, none below 1 µm) but put an O(h) bias into the
-/// contact force (the pin amplifies any velocity error by 4/h) and broke
-/// four accuracy tests (rigid against coupled 1.48e-4, the elastic limit's
-/// deflection no longer converging, several vehicles 1.47e-5, the impact
-/// reference's body 1.55e-3 against 1.5e-3), so it is not in.
+/// No spurious flights before a lift-off (issue 29, point 4): every flight
+/// of the wheel (gap above 1 nm) on the 4.5 mm surface with e = 0 is one of
+/// the event-driven reference's lift-offs, 12 of them, at Δt = 1e-4, 5e-5,
+/// 2.5e-5 and 1.25e-5 s, none below 1 µm, and the summary counts them all.
+/// Before the held wheel's period-2 filter (`smoothed_held_motion` in
+/// src/solve/unilateral.rs) the wheel held by the displacement-level law
+/// took an alternating contact force growing as m·s‴·t/3 (the trapezoidal
+/// rule's alternating velocity error under a position constraint; measured
+/// 3 kN per ms here), which touched zero on alternate steps before each
+/// real lift-off: 44–54 flights of 1–3 steps and 1–10 nm (32–42 of them
+/// below 1 µm).
 #[test]
-#[ignore = "issue 29 point 4 not fixed: 44–54 flights against the reference's 12 (see the doc)"]
 fn no_spurious_flights_before_lift_offs() {
     let t_end = SPAN / 30.0;
     let reference = rigid_reference(&reference_case(0.0045, 0.0), t_end, 2.5e-5, 10);
