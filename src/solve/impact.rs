@@ -82,8 +82,8 @@ pub(super) struct Impacts {
     pub was_on_deck: Vec<bool>,
     /// Per contact at the start of the step (the end of the previous one):
     /// the wheel's velocity (m/s) and acceleration (m/s²) and the surface's
-    /// under it, u̇ and ü (see `unilateral::surface_motion`), for the
-    /// period-2 filter of a held wheel (`unilateral::smooth_held_wheel`).
+    /// under it, u̇ and ü (see `unilateral::landing::surface_motion`), for the
+    /// period-2 filter of a held wheel (`unilateral::landing::smoothed_held_motion`).
     pub held_start: Vec<[f64; 4]>,
     /// Steps since contact `c`'s last landing (`usize::MAX`: none yet).
     since_landing: Vec<usize>,

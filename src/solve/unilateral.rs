@@ -25,7 +25,15 @@
 //! landing, and being undamped it returns the energy (restitution 1). Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) plus
 //! the LCP (Lemke, O(wheels²) per pivot); nothing is allocated in the loop.
 
+mod geometry;
+mod landing;
+mod vehicle_step;
+
 use nalgebra::{DMatrix, DVector};
+
+pub(super) use geometry::{ContactGeometry, ContactWheel, contact_wheels, vehicle_step_matrices};
+use landing::{moreau_jean_finish, surface_motion};
+use vehicle_step::VehicleStep;
 
 use super::GroundStep;
 use super::guard::Guard;
@@ -34,232 +42,13 @@ use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
-use crate::contact::ContactDirection;
 use crate::contact::SEPARATION_GAP;
 use crate::model::{ContactLaw, Model};
-use crate::vehicle::WheelKind;
 
 /// Newton iterations allowed per step for the Hertz law.
 pub const HERTZ_MAX_ITERATIONS: usize = 50;
 /// Relative change of the contact forces that ends the Hertz iterations.
 pub const HERTZ_TOLERANCE: f64 = 1e-10;
-
-/// A wheel whose vertical DOF meets the surface through the contact law.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct ContactWheel {
-    /// Flattened wheel index.
-    pub wheel: usize,
-    /// Its vehicle.
-    pub vehicle: usize,
-    /// Its DOF in the vehicle.
-    pub dof: usize,
-    /// Column of this wheel in its vehicle's H.
-    pub column: usize,
-    /// The vehicle's diagonal block that holds `dof`: first DOF and size.
-    pub block: (usize, usize),
-}
-
-/// The contact wheels of `model` in flattened order, the moving loads
-/// (flattened index, N), and each vehicle's count of contact wheels (the
-/// columns of its H).
-pub(super) fn contact_wheels(model: &Model) -> (Vec<ContactWheel>, Vec<(usize, f64)>, Vec<usize>) {
-    let mut contacts: Vec<ContactWheel> = Vec::new();
-    let mut load_wheels = Vec::new();
-    let mut columns = vec![0usize; model.vehicles.len()];
-    for (flat, r) in model.wheels.iter().enumerate() {
-        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
-            WheelKind::Dof(dof) => {
-                let vehicle = &model.vehicles[r.vehicle];
-                let block = vehicle
-                    .blocks
-                    .iter()
-                    .find(|b| b.contains(&dof))
-                    .map_or((0, vehicle.dofs()), |b| (b.start, b.len()));
-                contacts.push(ContactWheel {
-                    wheel: flat,
-                    vehicle: r.vehicle,
-                    dof,
-                    column: columns[r.vehicle],
-                    block,
-                });
-                columns[r.vehicle] += 1;
-            }
-            WheelKind::Load(load) => load_wheels.push((flat, load)),
-        }
-    }
-    (contacts, load_wheels, columns)
-}
-
-/// Vehicle `v`'s effective flexibility K̂⁻¹, K̂ = a₀M + (1+α)(a₁C + K)
-/// (inverted block by block: a train's cars), and its contact response
-/// H = (1+α)K̂⁻¹E, one column per contact wheel of the vehicle (m/N).
-pub(super) fn vehicle_step_matrices(
-    model: &Model,
-    nm: &Newmark,
-    v: usize,
-    contacts: &[ContactWheel],
-    columns: &[usize],
-) -> Result<(DMatrix<f64>, DMatrix<f64>), SolveError> {
-    let vehicle = &model.vehicles[v];
-    let effective =
-        &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
-    let effective_flexibility =
-        block_inverse(&effective, &vehicle.blocks).ok_or_else(|| SolveError::SingularContact {
-            time: 0.0,
-            reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-        })?;
-    let mut contact_response = DMatrix::zeros(vehicle.dofs(), columns[v]);
-    for c in contacts.iter().filter(|c| c.vehicle == v) {
-        contact_response.set_column(
-            c.column,
-            &(effective_flexibility.column(c.dof) * nm.weight()),
-        );
-    }
-    Ok((effective_flexibility, contact_response))
-}
-
-/// What the contact problem of a step owes to where the wheels are, not to
-/// the state: the same for every sample of a scene at a given step.
-#[derive(Debug, Clone)]
-pub(super) struct ContactGeometry {
-    /// Whether each contact wheel is on the deck.
-    pub on_deck: Vec<bool>,
-    /// Mode values φ_c at each contact (0 off the deck), contact-major.
-    pub shapes: Vec<f64>,
-    /// φ_c scaled by the modal contact flexibility, (1+α)φ_c/k̂.
-    pub scaled: Vec<f64>,
-    /// The contact compliance W = EᵀH + ΦDΦᵀ + residual flexibility, m/N,
-    /// row-major nc × nc.
-    pub compliance: Vec<f64>,
-    /// Its residual (static-correction) part R, m/N, row-major nc × nc.
-    pub residual: Vec<f64>,
-}
-
-impl ContactGeometry {
-    /// Storage for `contacts` wheels and `modes` modes.
-    pub fn new(contacts: usize, modes: usize) -> Self {
-        Self {
-            on_deck: vec![false; contacts],
-            shapes: vec![0.0; contacts * modes],
-            scaled: vec![0.0; contacts * modes],
-            compliance: vec![0.0; contacts * contacts],
-            residual: vec![0.0; contacts * contacts],
-        }
-    }
-
-    /// Mode values of every contact at `wheel_positions` (m).
-    pub fn locate(
-        &mut self,
-        model: &Model,
-        contact_flexibility: &[f64],
-        contacts: &[ContactWheel],
-        wheel_positions: &[f64],
-    ) {
-        let bridge = &model.bridge;
-        let modes = bridge.mode_count();
-        for (c, contact) in contacts.iter().enumerate() {
-            let x = wheel_positions[contact.wheel];
-            self.on_deck[c] = bridge.is_on(x);
-            let phi = &mut self.shapes[c * modes..(c + 1) * modes];
-            let scaled_c = &mut self.scaled[c * modes..(c + 1) * modes];
-            // Off the deck every mode value is 0: no lookup needed.
-            if self.on_deck[c] {
-                bridge.contact_mode_values(x, model.wheel_y[contact.wheel], phi);
-                for i in 0..modes {
-                    scaled_c[i] = phi[i] * contact_flexibility[i];
-                }
-            } else {
-                phi.fill(0.0);
-                scaled_c.fill(0.0);
-            }
-        }
-    }
-
-    /// The contact compliance W after [`Self::locate`]; `contact_response`
-    /// gives each vehicle's H.
-    pub fn assemble<'a>(
-        &mut self,
-        model: &Model,
-        contacts: &[ContactWheel],
-        wheel_positions: &[f64],
-        contact_response: impl Fn(usize) -> &'a DMatrix<f64>,
-    ) {
-        let (bridge, nc) = (&model.bridge, contacts.len());
-        let modes = bridge.mode_count();
-        let (on_deck, shapes, scaled) = (&self.on_deck, &self.shapes, &self.scaled);
-        let (compliance, residual) = (&mut self.compliance, &mut self.residual);
-        for a in 0..nc {
-            for b in 0..=a {
-                let (ca, cb) = (contacts[a], contacts[b]);
-                // A wheel off the deck has no mode values and no residual
-                // flexibility (both exactly 0): skip the O(modes) work, which
-                // dominates long trains with most wheels off the bridge.
-                let mut w = 0.0;
-                let mut r = 0.0;
-                if on_deck[a] && on_deck[b] {
-                    let pa = &shapes[a * modes..(a + 1) * modes];
-                    let sb = &scaled[b * modes..(b + 1) * modes];
-                    w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
-                    // The modes left out add their static flexibility between the
-                    // two contacts (contact static correction; 0 when off).
-                    // Unilateral contacts are vertical.
-                    r = bridge.residual_flexibility(
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[ca.wheel],
-                            model.wheel_y[ca.wheel],
-                        ),
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[cb.wheel],
-                            model.wheel_y[cb.wheel],
-                        ),
-                        pa,
-                        &shapes[b * modes..(b + 1) * modes],
-                    );
-                    w += r;
-                } else if ca.vehicle != cb.vehicle {
-                    compliance[a * nc + b] = 0.0;
-                    compliance[b * nc + a] = 0.0;
-                    residual[a * nc + b] = 0.0;
-                    residual[b * nc + a] = 0.0;
-                    continue;
-                }
-                residual[a * nc + b] = r;
-                residual[b * nc + a] = r;
-                if ca.vehicle == cb.vehicle {
-                    w += contact_response(ca.vehicle)[(ca.dof, cb.column)];
-                }
-                compliance[a * nc + b] = w;
-                compliance[b * nc + a] = w;
-            }
-        }
-    }
-}
-
-#[derive(Debug, Clone)]
-struct VehicleStep {
-    effective_flexibility: DMatrix<f64>,
-    contact_response: DMatrix<f64>,
-    effective_load: DVector<f64>,
-    inertia_history: DVector<f64>,
-    damping_history: DVector<f64>,
-    predictor: DVector<f64>,
-    /// (M + wγΔt C)⁻¹ where it exists (no massless undamped DOF): the
-    /// accelerations then come from the equations of motion (see the step's
-    /// end), else from Newmark's displacement difference.
-    recovery: Option<DMatrix<f64>>,
-    /// External force of the step, f_g + wEλ_{n+1} − αEλₙ, N; then the
-    /// recovery load.
-    recovery_load: DVector<f64>,
-    /// Previous state, for the α terms of the recovery.
-    previous_velocity: DVector<f64>,
-    previous_acceleration: DVector<f64>,
-    previous_displacement: DVector<f64>,
-    /// u̇ₙ + (1−γ)Δt üₙ, m/s, and the recovered ü_{n+1}, m/s².
-    predicted_velocity: DVector<f64>,
-    recovered_acceleration: DVector<f64>,
-}
 
 /// Integrates the model with unilateral contact.
 pub fn run(
@@ -280,28 +69,15 @@ pub fn run(
     let mut states = Vec::with_capacity(model.vehicles.len());
     let mut steps = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
-        let n = vehicle.dofs();
         let (effective_flexibility, contact_response) =
             vehicle_step_matrices(model, &nm, v, &contacts, &columns)?;
         states.push(VehicleState::at_rest(model, v));
-        steps.push(VehicleStep {
+        steps.push(VehicleStep::new(
+            vehicle,
+            &nm,
             effective_flexibility,
             contact_response,
-            effective_load: DVector::zeros(n),
-            inertia_history: DVector::zeros(n),
-            damping_history: DVector::zeros(n),
-            predictor: DVector::zeros(n),
-            recovery: block_inverse(
-                &(&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)),
-                &vehicle.blocks,
-            ),
-            recovery_load: DVector::zeros(n),
-            previous_velocity: DVector::zeros(n),
-            previous_acceleration: DVector::zeros(n),
-            previous_displacement: DVector::zeros(n),
-            predicted_velocity: DVector::zeros(n),
-            recovered_acceleration: DVector::zeros(n),
-        });
+        ));
     }
 
     // Work arrays.
@@ -411,55 +187,7 @@ pub fn run(
         // Vehicle predictors u* = K̂⁻¹R̂ with
         // R̂ = f_g − αEλₙ + M hₐ + (1+α)C h_v + α(C u̇ₙ + K uₙ).
         for ((vehicle, state), vs) in model.vehicles.iter().zip(&states).zip(steps.iter_mut()) {
-            for k in 0..vehicle.dofs() {
-                let (u, v, a) = (
-                    state.displacement[k],
-                    state.velocity[k],
-                    state.acceleration[k],
-                );
-                vs.inertia_history[k] = nm.inertia_history(u, v, a);
-                vs.damping_history[k] = nm.damping_history(u, v, a);
-            }
-            let blocks = &vehicle.blocks;
-            vs.effective_load.copy_from(&vehicle.gravity_load);
-            if gravity_ratio != 0.0 {
-                vs.effective_load
-                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
-            }
-            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
-                vs.effective_load
-                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
-            }
-            block_gemv(
-                &mut vs.effective_load,
-                1.0,
-                &vehicle.mass,
-                &vs.inertia_history,
-                blocks,
-            );
-            block_gemv(
-                &mut vs.effective_load,
-                nm.weight(),
-                &vehicle.damping,
-                &vs.damping_history,
-                blocks,
-            );
-            if nm.alpha != 0.0 {
-                block_gemv(
-                    &mut vs.effective_load,
-                    nm.alpha,
-                    &vehicle.damping,
-                    &state.velocity,
-                    blocks,
-                );
-                block_gemv(
-                    &mut vs.effective_load,
-                    nm.alpha,
-                    &vehicle.stiffness,
-                    &state.displacement,
-                    blocks,
-                );
-            }
+            vs.load(vehicle, state, &nm, gravity_ratio, ground.lateral_load);
         }
         if nm.alpha != 0.0 {
             for (c, contact) in contacts.iter().enumerate() {
@@ -467,14 +195,7 @@ pub fn run(
             }
         }
         for (vs, vehicle) in steps.iter_mut().zip(&model.vehicles) {
-            vs.predictor.fill(0.0);
-            block_gemv(
-                &mut vs.predictor,
-                1.0,
-                &vs.effective_flexibility,
-                &vs.effective_load,
-                &vehicle.blocks,
-            );
+            vs.predict(vehicle);
         }
 
         // Free gaps g* and the contact compliance W.
@@ -721,82 +442,7 @@ pub fn run(
                 nm.weight() * lambda[c] - nm.alpha * carried[c];
         }
         for ((state, vs), vehicle) in states.iter_mut().zip(steps.iter_mut()).zip(&model.vehicles) {
-            let Some(recovery) = &vs.recovery else {
-                for k in 0..state.displacement.len() {
-                    let u_new = vs.predictor[k];
-                    let a_new = nm.a0 * u_new - vs.inertia_history[k];
-                    state.velocity[k] = nm.a1 * u_new - vs.damping_history[k];
-                    state.acceleration[k] = a_new;
-                    state.displacement[k] = u_new;
-                }
-                continue;
-            };
-            // (M + wγΔt C) ü_{n+1} = f_g + wEλ_{n+1} − αEλₙ − w[C(u̇ₙ + (1−γ)Δt üₙ)
-            // + K u_{n+1}] + α(C u̇ₙ + K uₙ): the HHT equations of motion, free
-            // of the ε|u|/Δt² round-off of a₀(u_{n+1} − uₙ) − … (u includes
-            // the static sag). The same scheme in exact arithmetic.
-            let w = nm.weight();
-            vs.previous_velocity.copy_from(&state.velocity);
-            vs.previous_acceleration.copy_from(&state.acceleration);
-            vs.previous_displacement.copy_from(&state.displacement);
-            let blocks = &vehicle.blocks;
-            vs.recovery_load += &vehicle.gravity_load;
-            if gravity_ratio != 0.0 {
-                vs.recovery_load
-                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
-            }
-            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
-                vs.recovery_load
-                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
-            }
-            block_gemv(
-                &mut vs.recovery_load,
-                -w,
-                &vehicle.stiffness,
-                &vs.predictor,
-                blocks,
-            );
-            vs.predicted_velocity.copy_from(&vs.previous_velocity);
-            vs.predicted_velocity
-                .axpy(nm.a6, &vs.previous_acceleration, 1.0);
-            block_gemv(
-                &mut vs.recovery_load,
-                -w,
-                &vehicle.damping,
-                &vs.predicted_velocity,
-                blocks,
-            );
-            if nm.alpha != 0.0 {
-                block_gemv(
-                    &mut vs.recovery_load,
-                    nm.alpha,
-                    &vehicle.damping,
-                    &vs.previous_velocity,
-                    blocks,
-                );
-                block_gemv(
-                    &mut vs.recovery_load,
-                    nm.alpha,
-                    &vehicle.stiffness,
-                    &vs.previous_displacement,
-                    blocks,
-                );
-            }
-            vs.recovered_acceleration.fill(0.0);
-            block_gemv(
-                &mut vs.recovered_acceleration,
-                1.0,
-                recovery,
-                &vs.recovery_load,
-                blocks,
-            );
-            for k in 0..state.displacement.len() {
-                let a_new = vs.recovered_acceleration[k];
-                state.velocity[k] =
-                    nm.velocity(vs.previous_velocity[k], vs.previous_acceleration[k], a_new);
-                state.acceleration[k] = a_new;
-                state.displacement[k] = vs.predictor[k];
-            }
+            vs.finish(vehicle, state, &nm, gravity_ratio, ground.lateral_load);
         }
         // Rigid landing is perfectly inelastic: a wheel that was off the
         // surface and carries force again leaves the step moving with the
@@ -876,206 +522,12 @@ pub fn run(
     Ok(())
 }
 
-/// The surface's velocity and acceleration under contact wheel `contact`
-/// at `x` (m) and time `t` (s): u̇ = φ·q̇ + v(φ′·q + r′),
-/// ü = φ·q̈ + 2vφ′·q̇ + v²(φ″·q + r″) (+ a(φ′·q + r′) for a vehicle
-/// accelerating along its path, see `permanent`); m/s and m/s².
-/// `work` holds the mode values, slopes and curvatures.
-fn surface_motion(
-    model: &Model,
-    modal: &ModalStep,
-    contact: &ContactWheel,
-    x: f64,
-    t: f64,
-    work: [&mut [f64]; 3],
-) -> (f64, f64) {
-    let [values, slopes, curvatures] = work;
-    model.bridge.contact_mode_values_slopes_curvatures(
-        x,
-        model.wheel_y[contact.wheel],
-        values,
-        slopes,
-        curvatures,
-    );
-    let vehicle = &model.vehicles[contact.vehicle];
-    let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
-    let (_, dr, ddr) = model
-        .profile
-        .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
-    let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
-    if a != 0.0 {
-        acceleration += a * dr;
-    }
-    for i in 0..values.len() {
-        let (q, qd, qdd) = (
-            modal.displacement[i],
-            modal.velocity[i],
-            modal.acceleration[i],
-        );
-        velocity += values[i] * qd + v * slopes[i] * q;
-        acceleration += values[i] * qdd + 2.0 * v * slopes[i] * qd + v * v * curvatures[i] * q;
-        if a != 0.0 {
-            acceleration += a * slopes[i] * q;
-        }
-    }
-    (velocity, acceleration)
-}
-
-/// The end of a hybrid Moreau–Jean step ([`super::impact`]). A wheel that
-/// landed with an impulse: its stored accelerations (vehicle and bridge)
-/// become the smooth ones (the step's contact force stripped: it acted as
-/// an impulse), nothing is carried into the next step's HHT term, and the
-/// wheel is put back on the surface (gap 0). If it stays there — its
-/// relative velocity after the impact plus a step of its smooth relative
-/// acceleration does not open the gap — its acceleration becomes the
-/// surface's, the one the constraint imposes from the next step on (a smooth
-/// acceleration there would re-enter the trapezoidal velocity update and
-/// make the next contact forces alternate). Then the relative velocities
-/// U_{n+1} of every wheel with mass are taken (Uₙ of a landing's law).
-#[allow(clippy::too_many_arguments)]
-fn moreau_jean_finish(
-    model: &Model,
-    nm: &Newmark,
-    impacts: &mut Impacts,
-    contacts: &[ContactWheel],
-    geometry: &ContactGeometry,
-    (lambda, was_apart): (&[f64], &[bool]),
-    (wheel_positions, t): (&[f64], f64),
-    modal: &mut ModalStep,
-    states: &mut [VehicleState],
-    contact_gaps: &mut [f64],
-    work: [&mut [f64]; 3],
-) {
-    let modes = model.bridge.mode_count();
-    let w = nm.weight();
-    let [values, slopes, curvatures] = work;
-    impacts.leaving.fill(false);
-    impacts.was_on_deck.copy_from_slice(&geometry.on_deck);
-    for (c, contact) in contacts.iter().enumerate() {
-        if !impacts.landing[c] || lambda[c] == 0.0 {
-            continue;
-        }
-        let Some(column) = &impacts.inverse_mass[c] else {
-            continue;
-        };
-        let shape = &geometry.shapes[c * modes..(c + 1) * modes];
-        let state = &mut states[contact.vehicle];
-        state.acceleration.axpy(-w * lambda[c], column, 1.0);
-        if geometry.on_deck[c] {
-            for (a, phi) in modal.acceleration.iter_mut().zip(shape) {
-                *a += w * phi * lambda[c];
-            }
-            modal.forget_contact(shape, lambda[c]);
-        }
-        state.displacement[contact.dof] -= contact_gaps[contact.wheel];
-        contact_gaps[contact.wheel] = 0.0;
-        let (surface_velocity, surface_acceleration) = surface_motion(
-            model,
-            modal,
-            contact,
-            wheel_positions[contact.wheel],
-            t,
-            [&mut *values, &mut *slopes, &mut *curvatures],
-        );
-        let state = &mut states[contact.vehicle];
-        let separating = state.velocity[contact.dof] - surface_velocity
-            + model.time_step * (state.acceleration[contact.dof] - surface_acceleration);
-        if separating <= 0.0 {
-            state.acceleration[contact.dof] = surface_acceleration;
-        } else {
-            // Leaving the surface after the impact (e > 0): in flight from
-            // the next step on, so a quick return is another impact.
-            impacts.leaving[c] = true;
-        }
-    }
-    for (c, contact) in contacts.iter().enumerate() {
-        if !impacts.takes_impacts(c) {
-            continue;
-        }
-        let (surface_velocity, surface_acceleration) = surface_motion(
-            model,
-            modal,
-            contact,
-            wheel_positions[contact.wheel],
-            t,
-            [&mut *values, &mut *slopes, &mut *curvatures],
-        );
-        let state = &mut states[contact.vehicle];
-        let k = contact.dof;
-        if !was_apart[c] && !impacts.landing[c] && lambda[c] > 0.0 {
-            // Held through the step by the displacement-level law: the
-            // period-2 part of its velocity and acceleration is removed
-            // (see `smoothed_held_motion`).
-            let [velocity, acceleration] = smoothed_held_motion(
-                impacts.held_start[c],
-                [
-                    state.velocity[k],
-                    state.acceleration[k],
-                    surface_velocity,
-                    surface_acceleration,
-                ],
-            );
-            state.velocity[k] = velocity;
-            state.acceleration[k] = acceleration;
-        }
-        impacts.held_start[c] = [
-            state.velocity[k],
-            state.acceleration[k],
-            surface_velocity,
-            surface_acceleration,
-        ];
-    }
-    for (c, contact) in contacts.iter().enumerate() {
-        if impacts.takes_impacts(c) {
-            impacts.relative_velocity[c] = impacts.relative(
-                c,
-                modes,
-                states[contact.vehicle].velocity[contact.dof],
-                &geometry.shapes[c * modes..(c + 1) * modes],
-                &modal.displacement,
-                &modal.velocity,
-            );
-        }
-    }
-}
-
-/// The velocity and acceleration (m/s, m/s²) a wheel held on the surface
-/// through a step by the displacement-level law keeps at its end, from
-/// `start` and `end` = [wheel velocity, wheel acceleration, surface velocity,
-/// surface acceleration] at the step's start and end: the wheel's errors
-/// against the surface's motion averaged over the two instants,
-/// u̇ := s′ + ½[(u̇ − s′)ₙ₊₁ + (u̇ − s′)ₙ], likewise ü with s″.
-///
-/// Why: under a position constraint u = s the trapezoidal rule's velocity
-/// error eₙ = u̇ₙ − s′ₙ obeys eₙ + eₙ₊₁ = −h²s‴/6, whose solutions are the
-/// smooth −h²s‴/12 plus an undamped alternating part ±δ set by how the
-/// contact started (a landing's velocity is the surface's exactly, so
-/// δ = h²s‴/12). That part makes the acceleration error εₙ (the contact
-/// force's, times the wheel mass) obey εₙ + εₙ₊₁ = ∓4δ/h, an alternating
-/// force growing as m·s‴·t/3, which touched zero on alternate steps before
-/// real lift-offs (spurious flights of 1–3 steps and 1–10 nm, issue 29).
-/// The average of two consecutive errors keeps the smooth part (to
-/// O(h³) a step) and cancels the alternating one; for the acceleration
-/// likewise (εₙ + εₙ₊₁ = −h·s‴/3 − 4eₙ/h, 0 once eₙ is the smooth
-/// error). Unlike a restart from the surface's motion (velocity s′,
-/// acceleration s″, which biased the force by m·h·s‴/3 a step), the
-/// smooth trapezoidal solution is a fixed point: its position is exact
-/// and its contact force second order.
-fn smoothed_held_motion(start: [f64; 4], end: [f64; 4]) -> [f64; 2] {
-    let [v0, a0, s0, sa0] = start;
-    let [v1, a1, s1, sa1] = end;
-    [
-        s1 + 0.5 * ((v1 - s1) + (v0 - s0)),
-        sa1 + 0.5 * ((a1 - sa1) + (a0 - sa0)),
-    ]
-}
-
 /// y += a · A x over the diagonal blocks `blocks` of A (zero outside them:
 /// a train's cars), so a train of N cars costs N small products instead
 /// of one N²-times larger dense one: column by column on the column-major
 /// storage, y += (a xⱼ) A[:, j]. One block covering every DOF (every
 /// vehicle but a train) keeps nalgebra's dense product.
-pub(super) fn block_gemv(
+pub(in crate::solve) fn block_gemv(
     y: &mut DVector<f64>,
     a: f64,
     matrix: &DMatrix<f64>,
@@ -1106,7 +558,7 @@ pub(super) fn block_gemv(
 /// block by block (so the inverse is exactly zero outside them too); the
 /// plain inverse for one block covering every DOF. `None` if a block is
 /// singular.
-pub(super) fn block_inverse(
+pub(in crate::solve) fn block_inverse(
     matrix: &DMatrix<f64>,
     blocks: &[std::ops::Range<usize>],
 ) -> Option<DMatrix<f64>> {

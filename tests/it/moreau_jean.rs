@@ -349,7 +349,7 @@ fn flights(gap: &[f64]) -> Vec<(usize, usize, f64)> {
 /// the event-driven reference's lift-offs, 12 of them, at Δt = 1e-4, 5e-5,
 /// 2.5e-5 and 1.25e-5 s, none below 1 µm, and the summary counts them all.
 /// Before the held wheel's period-2 filter (`smoothed_held_motion` in
-/// src/solve/unilateral.rs) the wheel held by the displacement-level law
+/// src/solve/unilateral/landing.rs) the wheel held by the displacement-level law
 /// took an alternating contact force growing as m·s‴·t/3 (the trapezoidal
 /// rule's alternating velocity error under a position constraint; measured
 /// 3 kN per ms here), which touched zero on alternate steps before each
