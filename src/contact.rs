@@ -10,6 +10,21 @@
 /// Rigid LCP contact leaves round-off gaps of ~1e-15 m at touching wheels.
 pub const SEPARATION_GAP: f64 = 1e-9;
 
+/// Gap a rigid-contact flight must exceed to count as a contact-loss
+/// episode, m (its time and largest gap count from its start, when the gap
+/// first passed [`SEPARATION_GAP`]). Rigid contact idealises a wheel whose
+/// real (Hertz) compression under its static load is tens of micrometres
+/// (50 kN on a steel wheel and rail: ≈ 60 µm); a flight that never opens
+/// 1 µm is within 2 % of that compression, so an elastic wheel would have
+/// stayed loaded. Without this floor the count has no limit as Δt → 0: with
+/// restitution e > 0 a bouncing wheel's flights shrink geometrically (an
+/// accumulation of impacts, infinitely many flights in a finite time), each
+/// step resolving a few more of them, and a contact force that just touches
+/// zero opens nanometre gaps for a step or two. Elastic and Hertz contact
+/// count every flight above [`SEPARATION_GAP`]: their compression is the
+/// model's own, and their counts converge.
+pub const RIGID_LOSS_GAP: f64 = 1e-6;
+
 /// The direction in which a contact point follows the bridge (and the
 /// track irregularity of its rail).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]

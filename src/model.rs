@@ -38,8 +38,12 @@ pub struct WheelRef {
 pub enum ContactLaw {
     /// Wheels held to the surface (bilateral).
     Permanent,
-    /// Unilateral, rigid: gap ≥ 0, force ≥ 0, gap·force = 0.
-    Rigid,
+    /// Unilateral, rigid: gap ≥ 0, force ≥ 0, gap·force = 0, with Newton's
+    /// impact law at landings.
+    Rigid {
+        /// Coefficient of restitution e, 0 to 1 (dimensionless).
+        restitution: f64,
+    },
     /// Unilateral, force = k δ for compression δ > 0.
     Elastic {
         /// k, N/m.
@@ -56,7 +60,7 @@ impl ContactLaw {
     /// Compression δ (m) that carries a force `force` (N ≥ 0).
     pub fn compression(&self, force: f64) -> f64 {
         match *self {
-            ContactLaw::Permanent | ContactLaw::Rigid => 0.0,
+            ContactLaw::Permanent | ContactLaw::Rigid { .. } => 0.0,
             ContactLaw::Elastic { stiffness } => force / stiffness,
             ContactLaw::Hertz { coefficient } => (force.max(0.0) / coefficient).powf(2.0 / 3.0),
         }
@@ -132,7 +136,7 @@ impl Model {
             .collect();
         let contact = match scenario.contact {
             Contact::Permanent => ContactLaw::Permanent,
-            Contact::Rigid => ContactLaw::Rigid,
+            Contact::Rigid { restitution } => ContactLaw::Rigid { restitution },
             Contact::Elastic { stiffness, .. } => ContactLaw::Elastic { stiffness },
             Contact::Hertz { coefficient } => ContactLaw::Hertz { coefficient },
         };

@@ -167,7 +167,7 @@ pub fn excitations(
             });
         }
         let wheel_stiffness = match *contact {
-            Contact::Permanent | Contact::Rigid => None,
+            Contact::Permanent | Contact::Rigid { .. } => None,
             Contact::Elastic { stiffness, .. } => Some(stiffness),
             Contact::Hertz { coefficient } => {
                 // Tangent stiffness at the static wheel load P: dF/dδ = 1.5 C^(2/3) P^(1/3).

@@ -154,9 +154,13 @@ pub struct WheelSeparation {
     pub vehicle: usize,
     /// Wheel number from 1.
     pub wheel: usize,
-    /// Whether the wheel ever lost contact.
+    /// Whether the wheel ever lost contact (at least one episode).
     pub separated: bool,
-    /// Number of contact-loss episodes.
+    /// Number of contact-loss episodes: flights (zero contact force, gap
+    /// above [`SEPARATION_GAP`]) whose gap passes the loss gap — 1 µm for
+    /// rigid contact ([`crate::contact::RIGID_LOSS_GAP`]), [`SEPARATION_GAP`]
+    /// for elastic and Hertz contact. Time separated and the largest gap
+    /// are over these episodes.
     pub episodes: usize,
     /// Time of the first loss of contact, s.
     pub first_loss_time: Option<f64>,
@@ -168,10 +172,31 @@ pub struct WheelSeparation {
     pub max_gap: f64,
     /// Time of the largest gap, s.
     pub max_gap_time: Option<f64>,
+    /// Rigid contact: the gap a flight must pass to count as an episode, m
+    /// ([`crate::contact::RIGID_LOSS_GAP`]; absent for elastic and Hertz
+    /// contact, which count every flight above [`SEPARATION_GAP`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub loss_gap: Option<f64>,
     #[serde(skip)]
     flat: usize,
     #[serde(skip)]
     apart: bool,
+    /// The flight under way (while `apart`): its start (time s, wheel
+    /// position m), time so far (s), largest gap (m, with its time s), and
+    /// whether it has become an episode (its gap passed the loss gap).
+    #[serde(skip)]
+    flight: Flight,
+}
+
+/// A flight of one wheel, counted as an episode once its gap passes the
+/// contact law's loss gap ([`crate::contact::RIGID_LOSS_GAP`] for rigid
+/// contact).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct Flight {
+    start: (f64, f64),
+    time: f64,
+    max_gap: (f64, f64),
+    counted: bool,
 }
 
 /// Samples columns each step; see [`History`].

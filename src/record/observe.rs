@@ -3,7 +3,7 @@
 
 use super::ground::GroundTerm;
 use super::probe::{Probe, StaticProbe, dot, truncated_static_share};
-use super::{Recorder, SEPARATION_GAP};
+use super::{Flight, Recorder, SEPARATION_GAP};
 use crate::bridge::section::SectionLoads;
 use crate::solve::{Observer, StepView};
 
@@ -19,24 +19,47 @@ impl Observer for Recorder<'_> {
             .iter()
             .any(|&x| self.model.bridge.is_on(x));
         let dt = self.model.time_step;
+        // A flight (zero force, gap above SEPARATION_GAP) is a contact-loss
+        // episode once its gap passes the loss gap (see RIGID_LOSS_GAP);
+        // then its whole time and largest gap count.
         for wheel in &mut self.history.separation {
+            let loss_gap = wheel.loss_gap.unwrap_or(SEPARATION_GAP);
             let gap = view.contact_gaps[wheel.flat];
-            let apart = view.contact_forces[wheel.flat] <= 0.0 && gap > SEPARATION_GAP;
+            // A rigid wheel with a gap carries no force; its recorded force
+            // is averaged over 1 ms after a landing (a bounce's flight has a
+            // positive average), so the gap alone tells a flight.
+            let apart = gap > SEPARATION_GAP
+                && (wheel.loss_gap.is_some() || view.contact_forces[wheel.flat] <= 0.0);
             if apart {
+                let flight = &mut wheel.flight;
                 if !wheel.apart {
-                    wheel.episodes += 1;
-                    if wheel.first_loss_time.is_none() {
-                        wheel.first_loss_time = Some(view.time);
-                        wheel.first_loss_position = Some(view.wheel_positions[wheel.flat]);
-                    }
+                    *flight = Flight {
+                        start: (view.time, view.wheel_positions[wheel.flat]),
+                        ..Flight::default()
+                    };
                 }
-                wheel.separated = true;
                 if view.step > 0 {
+                    flight.time += dt;
+                }
+                if gap > flight.max_gap.0 {
+                    flight.max_gap = (gap, view.time);
+                }
+                if !flight.counted && gap > loss_gap {
+                    flight.counted = true;
+                    wheel.episodes += 1;
+                    wheel.separated = true;
+                    if wheel.first_loss_time.is_none() {
+                        wheel.first_loss_time = Some(flight.start.0);
+                        wheel.first_loss_position = Some(flight.start.1);
+                    }
+                    // The flight's time so far (this step's included).
+                    wheel.time_separated += flight.time;
+                } else if flight.counted && view.step > 0 {
                     wheel.time_separated += dt;
                 }
-                if gap > wheel.max_gap {
-                    wheel.max_gap = gap;
-                    wheel.max_gap_time = Some(view.time);
+                if flight.counted && flight.max_gap.0 > wheel.max_gap {
+                    wheel.max_gap = flight.max_gap.0;
+                    wheel.max_gap_time = Some(flight.max_gap.1);
                 }
             }
             wheel.apart = apart;

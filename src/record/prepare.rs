@@ -7,7 +7,7 @@ use super::ground::ground_terms;
 use super::probe::{
     ColumnStatics, DafProbe, Probe, StaticProbe, filtered_shape, static_shape, wheel_lines,
 };
-use super::{Column, GirderDaf, History, PositionRef, Recorder, WheelSeparation};
+use super::{Column, Flight, GirderDaf, History, PositionRef, Recorder, WheelSeparation};
 use crate::bridge::BridgeError;
 use crate::model::Model;
 use crate::scene::{Quantity, Record};
@@ -215,8 +215,11 @@ impl<'m> Recorder<'m> {
                     time_separated: 0.0,
                     max_gap: 0.0,
                     max_gap_time: None,
+                    loss_gap: matches!(model.contact, crate::model::ContactLaw::Rigid { .. })
+                        .then_some(crate::contact::RIGID_LOSS_GAP),
                     flat,
                     apart: false,
+                    flight: Flight::default(),
                 })
                 .collect()
         } else {

@@ -114,7 +114,7 @@ pub struct RunInfo {
     /// `iterative` solver: vehicle–bridge iterations per time step.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub iterations: Option<IterationStats>,
-    /// Rigid contact: which separation statistics depend on the time step.
+    /// After a loss of contact: which results depend on the time step.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub step_dependent: Option<&'static str>,
 }
@@ -129,20 +129,6 @@ grid (no event location), so contact forces, gaps and the accelerations a landin
 only as the step shrinks (FRA class 5 at 300 km/h, Δt = 6.1e-5 s against Δt/4: contact force 3.3 %, \
 vehicle acceleration 2.2 %, deck acceleration 1.0 % of their peaks; displacements within 0.03 %); \
 refine solver.time_step until they stop changing";
-
-/// What `run.step_dependent` says under rigid contact. Landings are found on
-/// the step grid (no event location) and made perfectly inelastic; on a
-/// marginal surface whether the wheel lifts again right after a landing
-/// then depends on the step. Measured on the hopping scene of
-/// tests/hard_cases.rs (`rigid_hopping_statistics_are_bounded`) at Δt =
-/// 1e-4, 5e-5, 2.5e-5 and 1.25e-5 s.
-pub const RIGID_STEP_DEPENDENCE: &str = "separation.episodes, separation.time_separated and the \
-DAF depend on the time step once a wheel lands again (landings are taken on the step grid, without \
-event location): on a surface that can just lift the wheel, Δt = 1e-4 to 1.25e-5 s gave 6 to 14 \
-episodes, 0.070 to 0.096 s separated and DAFs 1.568 to 1.594 (expect up to a factor 3, a \
-factor 1.5 and 2.5 % between a step and an eighth of it); first_loss_time, first_loss_position \
-and the first flight's max_gap converge with the step (first order); confirm the others with a \
-run at a quarter of the step";
 
 /// The whole summary.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -292,7 +278,7 @@ impl Summary {
                 },
                 contact: match model.contact {
                     crate::model::ContactLaw::Permanent => "permanent",
-                    crate::model::ContactLaw::Rigid => "rigid",
+                    crate::model::ContactLaw::Rigid { .. } => "rigid",
                     crate::model::ContactLaw::Elastic { .. } => "elastic",
                     crate::model::ContactLaw::Hertz { .. } => "hertz",
                 },
@@ -314,9 +300,9 @@ impl Summary {
                     STATIC_REFERENCE
                 },
                 iterations: stats.iterations,
-                step_dependent: if model.contact == crate::model::ContactLaw::Rigid {
-                    Some(RIGID_STEP_DEPENDENCE)
-                } else if history.separation.iter().any(|w| w.separated) {
+                // Rigid contact steps impacts by Moreau–Jean (first order through
+                // landings, tests/it/moreau_jean.rs): no carve-out.
+                step_dependent: if history.separation.iter().any(|w| w.separated) {
                     Some(LANDING_STEP_DEPENDENCE)
                 } else {
                     None

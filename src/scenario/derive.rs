@@ -19,7 +19,20 @@ pub(crate) fn resolve_contact(
 ) -> Contact {
     match raw {
         None | Some(raw::ContactRaw::Permanent) => Contact::Permanent,
-        Some(raw::ContactRaw::Rigid) => Contact::Rigid,
+        Some(raw::ContactRaw::Rigid { restitution }) => {
+            let restitution = restitution.unwrap_or(0.0);
+            if !(0.0..=1.0).contains(&restitution) {
+                ck.error(
+                    "contact.restitution",
+                    format!(
+                        "the coefficient of restitution must be between 0 and 1 \
+                         (0: the wheel stays on the surface, 1: it bounces back with its \
+                         approach speed), got {restitution}"
+                    ),
+                );
+            }
+            Contact::Rigid { restitution }
+        }
         Some(raw::ContactRaw::Elastic {
             stiffness,
             stiffness_ratio,

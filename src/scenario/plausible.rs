@@ -408,6 +408,6 @@ pub(crate) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
             HERTZ,
             "N/m^1.5",
         ),
-        Contact::Permanent | Contact::Rigid => {}
+        Contact::Permanent | Contact::Rigid { .. } => {}
     }
 }

@@ -116,12 +116,20 @@ pub enum ContactRaw {
     /// Solved by `method: coupled`.
     Permanent,
     /// Rigid unilateral contact: at every wheel gap ≥ 0, force ≥ 0 and
-    /// gap · force = 0, solved as a linear complementarity problem per step
-    /// (`method: lcp`; the LCP separation paper, Section 3). Reattachment: a
-    /// wheel that lands again gets the force the LCP gives, constant over that
-    /// step (no impact model), and leaves the step with the surface's vertical
-    /// velocity (perfectly inelastic landing). Defaults to HHT α = −0.05.
-    Rigid,
+    /// gap · force = 0 (`method: lcp`; the LCP separation paper, Section 3),
+    /// stepped by Moreau–Jean: one linear complementarity problem per step for
+    /// the contact impulses, with Newton's impact law at every landing.
+    Rigid {
+        /// Newton's coefficient of restitution e (dimensionless, 0 to 1): a
+        /// landing wheel leaves with −e times its approach velocity relative
+        /// to the surface. 0 (default): perfectly inelastic, the wheel stays
+        /// on the surface (a steel wheel on a rail or a tyre on a deck, whose
+        /// local compression is far stiffer and shorter than anything the
+        /// vehicle and bridge resolve, dissipates nearly all of it); 1: an
+        /// elastic bounce that keeps the energy.
+        #[serde(default)]
+        restitution: Option<f64>,
+    },
     /// Elastic unilateral contact: a linear tensionless spring under each wheel,
     /// force = stiffness · compression when compressed, else 0 (the LCP paper's
     /// Section 4 relaxation form; `method: lcp`). Give `stiffness` or `stiffness_ratio`.

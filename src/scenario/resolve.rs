@@ -148,7 +148,7 @@ pub(crate) fn describe(
     // average-acceleration Newmark leaves ringing (a persistent alternating
     // error in the wheel acceleration and force); a little HHT damping
     // removes it at second order. Every other model defaults to α = 0.
-    let rigid = matches!(raw.contact, Some(raw::ContactRaw::Rigid));
+    let rigid = matches!(raw.contact, Some(raw::ContactRaw::Rigid { .. }));
     let default_alpha = if rigid && newmark_raw.beta.is_none() && newmark_raw.gamma.is_none() {
         DEFAULT_RIGID_ALPHA
     } else {

@@ -147,8 +147,11 @@ impl Dimensionless {
 pub enum Contact {
     /// Wheels always follow the surface.
     Permanent,
-    /// Rigid unilateral contact.
-    Rigid,
+    /// Rigid unilateral contact (Moreau–Jean impacts).
+    Rigid {
+        /// Newton's coefficient of restitution, 0 to 1 (dimensionless).
+        restitution: f64,
+    },
     /// Tensionless linear spring per wheel.
     Elastic {
         /// N/m.

@@ -14,6 +14,7 @@ pub mod dense;
 pub mod embs;
 pub mod embs_scale;
 pub mod guard;
+mod impact;
 pub mod iterative;
 pub mod lcp;
 pub mod lockstep;

@@ -25,231 +25,30 @@
 //! landing, and being undamped it returns the energy (restitution 1). Cost per step: O(modes·wheels²) + O(Σ dofᵥ²) plus
 //! the LCP (Lemke, O(wheels²) per pivot); nothing is allocated in the loop.
 
+mod geometry;
+mod landing;
+mod vehicle_step;
+
 use nalgebra::{DMatrix, DVector};
+
+pub(super) use geometry::{ContactGeometry, ContactWheel, contact_wheels, vehicle_step_matrices};
+use landing::{moreau_jean_finish, surface_motion};
+use vehicle_step::VehicleStep;
 
 use super::GroundStep;
 use super::guard::Guard;
+use super::impact::Impacts;
 use super::lcp::{LcpWorkspace, solve_warm};
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::{Observer, Progress, SolveError, StepView, VehicleState, describe_positions};
-use crate::contact::ContactDirection;
 use crate::contact::SEPARATION_GAP;
 use crate::model::{ContactLaw, Model};
-use crate::vehicle::WheelKind;
 
 /// Newton iterations allowed per step for the Hertz law.
 pub const HERTZ_MAX_ITERATIONS: usize = 50;
 /// Relative change of the contact forces that ends the Hertz iterations.
 pub const HERTZ_TOLERANCE: f64 = 1e-10;
-
-/// A wheel whose vertical DOF meets the surface through the contact law.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct ContactWheel {
-    /// Flattened wheel index.
-    pub wheel: usize,
-    /// Its vehicle.
-    pub vehicle: usize,
-    /// Its DOF in the vehicle.
-    pub dof: usize,
-    /// Column of this wheel in its vehicle's H.
-    pub column: usize,
-    /// The vehicle's diagonal block that holds `dof`: first DOF and size.
-    pub block: (usize, usize),
-}
-
-/// The contact wheels of `model` in flattened order, the moving loads
-/// (flattened index, N), and each vehicle's count of contact wheels (the
-/// columns of its H).
-pub(super) fn contact_wheels(model: &Model) -> (Vec<ContactWheel>, Vec<(usize, f64)>, Vec<usize>) {
-    let mut contacts: Vec<ContactWheel> = Vec::new();
-    let mut load_wheels = Vec::new();
-    let mut columns = vec![0usize; model.vehicles.len()];
-    for (flat, r) in model.wheels.iter().enumerate() {
-        match model.vehicles[r.vehicle].wheels[r.wheel].kind {
-            WheelKind::Dof(dof) => {
-                let vehicle = &model.vehicles[r.vehicle];
-                let block = vehicle
-                    .blocks
-                    .iter()
-                    .find(|b| b.contains(&dof))
-                    .map_or((0, vehicle.dofs()), |b| (b.start, b.len()));
-                contacts.push(ContactWheel {
-                    wheel: flat,
-                    vehicle: r.vehicle,
-                    dof,
-                    column: columns[r.vehicle],
-                    block,
-                });
-                columns[r.vehicle] += 1;
-            }
-            WheelKind::Load(load) => load_wheels.push((flat, load)),
-        }
-    }
-    (contacts, load_wheels, columns)
-}
-
-/// Vehicle `v`'s effective flexibility K̂⁻¹, K̂ = a₀M + (1+α)(a₁C + K)
-/// (inverted block by block: a train's cars), and its contact response
-/// H = (1+α)K̂⁻¹E, one column per contact wheel of the vehicle (m/N).
-pub(super) fn vehicle_step_matrices(
-    model: &Model,
-    nm: &Newmark,
-    v: usize,
-    contacts: &[ContactWheel],
-    columns: &[usize],
-) -> Result<(DMatrix<f64>, DMatrix<f64>), SolveError> {
-    let vehicle = &model.vehicles[v];
-    let effective =
-        &vehicle.mass * nm.a0 + (&vehicle.damping * nm.a1 + &vehicle.stiffness) * nm.weight();
-    let effective_flexibility =
-        block_inverse(&effective, &vehicle.blocks).ok_or_else(|| SolveError::SingularContact {
-            time: 0.0,
-            reason: format!("vehicle {} has a singular effective stiffness", v + 1),
-        })?;
-    let mut contact_response = DMatrix::zeros(vehicle.dofs(), columns[v]);
-    for c in contacts.iter().filter(|c| c.vehicle == v) {
-        contact_response.set_column(
-            c.column,
-            &(effective_flexibility.column(c.dof) * nm.weight()),
-        );
-    }
-    Ok((effective_flexibility, contact_response))
-}
-
-/// What the contact problem of a step owes to where the wheels are, not to
-/// the state: the same for every sample of a scene at a given step.
-#[derive(Debug, Clone)]
-pub(super) struct ContactGeometry {
-    /// Whether each contact wheel is on the deck.
-    pub on_deck: Vec<bool>,
-    /// Mode values φ_c at each contact (0 off the deck), contact-major.
-    pub shapes: Vec<f64>,
-    /// φ_c scaled by the modal contact flexibility, (1+α)φ_c/k̂.
-    pub scaled: Vec<f64>,
-    /// The contact compliance W = EᵀH + ΦDΦᵀ + residual flexibility, m/N,
-    /// row-major nc × nc.
-    pub compliance: Vec<f64>,
-}
-
-impl ContactGeometry {
-    /// Storage for `contacts` wheels and `modes` modes.
-    pub fn new(contacts: usize, modes: usize) -> Self {
-        Self {
-            on_deck: vec![false; contacts],
-            shapes: vec![0.0; contacts * modes],
-            scaled: vec![0.0; contacts * modes],
-            compliance: vec![0.0; contacts * contacts],
-        }
-    }
-
-    /// Mode values of every contact at `wheel_positions` (m).
-    pub fn locate(
-        &mut self,
-        model: &Model,
-        contact_flexibility: &[f64],
-        contacts: &[ContactWheel],
-        wheel_positions: &[f64],
-    ) {
-        let bridge = &model.bridge;
-        let modes = bridge.mode_count();
-        for (c, contact) in contacts.iter().enumerate() {
-            let x = wheel_positions[contact.wheel];
-            self.on_deck[c] = bridge.is_on(x);
-            let phi = &mut self.shapes[c * modes..(c + 1) * modes];
-            let scaled_c = &mut self.scaled[c * modes..(c + 1) * modes];
-            // Off the deck every mode value is 0: no lookup needed.
-            if self.on_deck[c] {
-                bridge.contact_mode_values(x, model.wheel_y[contact.wheel], phi);
-                for i in 0..modes {
-                    scaled_c[i] = phi[i] * contact_flexibility[i];
-                }
-            } else {
-                phi.fill(0.0);
-                scaled_c.fill(0.0);
-            }
-        }
-    }
-
-    /// The contact compliance W after [`Self::locate`]; `contact_response`
-    /// gives each vehicle's H.
-    pub fn assemble<'a>(
-        &mut self,
-        model: &Model,
-        contacts: &[ContactWheel],
-        wheel_positions: &[f64],
-        contact_response: impl Fn(usize) -> &'a DMatrix<f64>,
-    ) {
-        let (bridge, nc) = (&model.bridge, contacts.len());
-        let modes = bridge.mode_count();
-        let (on_deck, shapes, scaled) = (&self.on_deck, &self.shapes, &self.scaled);
-        let compliance = &mut self.compliance;
-        for a in 0..nc {
-            for b in 0..=a {
-                let (ca, cb) = (contacts[a], contacts[b]);
-                // A wheel off the deck has no mode values and no residual
-                // flexibility (both exactly 0): skip the O(modes) work, which
-                // dominates long trains with most wheels off the bridge.
-                let mut w = 0.0;
-                if on_deck[a] && on_deck[b] {
-                    let pa = &shapes[a * modes..(a + 1) * modes];
-                    let sb = &scaled[b * modes..(b + 1) * modes];
-                    w = pa.iter().zip(sb).map(|(p, s)| p * s).sum();
-                    // The modes left out add their static flexibility between the
-                    // two contacts (contact static correction; 0 when off).
-                    // Unilateral contacts are vertical.
-                    w += bridge.residual_flexibility(
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[ca.wheel],
-                            model.wheel_y[ca.wheel],
-                        ),
-                        (
-                            ContactDirection::Vertical,
-                            wheel_positions[cb.wheel],
-                            model.wheel_y[cb.wheel],
-                        ),
-                        pa,
-                        &shapes[b * modes..(b + 1) * modes],
-                    );
-                } else if ca.vehicle != cb.vehicle {
-                    compliance[a * nc + b] = 0.0;
-                    compliance[b * nc + a] = 0.0;
-                    continue;
-                }
-                if ca.vehicle == cb.vehicle {
-                    w += contact_response(ca.vehicle)[(ca.dof, cb.column)];
-                }
-                compliance[a * nc + b] = w;
-                compliance[b * nc + a] = w;
-            }
-        }
-    }
-}
-
-#[derive(Debug, Clone)]
-struct VehicleStep {
-    effective_flexibility: DMatrix<f64>,
-    contact_response: DMatrix<f64>,
-    effective_load: DVector<f64>,
-    inertia_history: DVector<f64>,
-    damping_history: DVector<f64>,
-    predictor: DVector<f64>,
-    /// (M + wγΔt C)⁻¹ where it exists (no massless undamped DOF): the
-    /// accelerations then come from the equations of motion (see the step's
-    /// end), else from Newmark's displacement difference.
-    recovery: Option<DMatrix<f64>>,
-    /// External force of the step, f_g + wEλ_{n+1} − αEλₙ, N; then the
-    /// recovery load.
-    recovery_load: DVector<f64>,
-    /// Previous state, for the α terms of the recovery.
-    previous_velocity: DVector<f64>,
-    previous_acceleration: DVector<f64>,
-    previous_displacement: DVector<f64>,
-    /// u̇ₙ + (1−γ)Δt üₙ, m/s, and the recovered ü_{n+1}, m/s².
-    predicted_velocity: DVector<f64>,
-    recovered_acceleration: DVector<f64>,
-}
 
 /// Integrates the model with unilateral contact.
 pub fn run(
@@ -270,28 +69,15 @@ pub fn run(
     let mut states = Vec::with_capacity(model.vehicles.len());
     let mut steps = Vec::with_capacity(model.vehicles.len());
     for (v, vehicle) in model.vehicles.iter().enumerate() {
-        let n = vehicle.dofs();
         let (effective_flexibility, contact_response) =
             vehicle_step_matrices(model, &nm, v, &contacts, &columns)?;
         states.push(VehicleState::at_rest(model, v));
-        steps.push(VehicleStep {
+        steps.push(VehicleStep::new(
+            vehicle,
+            &nm,
             effective_flexibility,
             contact_response,
-            effective_load: DVector::zeros(n),
-            inertia_history: DVector::zeros(n),
-            damping_history: DVector::zeros(n),
-            predictor: DVector::zeros(n),
-            recovery: block_inverse(
-                &(&vehicle.mass + &vehicle.damping * (nm.weight() * nm.a7)),
-                &vehicle.blocks,
-            ),
-            recovery_load: DVector::zeros(n),
-            previous_velocity: DVector::zeros(n),
-            previous_acceleration: DVector::zeros(n),
-            previous_displacement: DVector::zeros(n),
-            predicted_velocity: DVector::zeros(n),
-            recovered_acceleration: DVector::zeros(n),
-        });
+        ));
     }
 
     // Work arrays.
@@ -307,6 +93,10 @@ pub fn run(
         .iter()
         .map(|c| model.static_wheel_loads[c.wheel])
         .collect();
+    // Moreau–Jean impacts for rigid contact (wheels with mass).
+    let mut impacts = Impacts::new(model, &contacts, &carried);
+    let mut rows: Vec<usize> = Vec::with_capacity(nc);
+    let mut row_lambda = vec![0.0; nc];
     // Whether each contact wheel was off the surface after the previous step.
     let mut was_apart = vec![false; nc];
     let mut free_gap = vec![0.0; nc];
@@ -328,6 +118,47 @@ pub fn run(
     }
     let mut wheel_positions = vec![0.0; nw];
     model.wheel_positions(0.0, &mut wheel_positions);
+    if let Some(impacts) = &mut impacts {
+        // The starting relative velocities: vehicles at rest, the bridge at
+        // rest, the surface moving under the wheels.
+        geometry.locate(
+            model,
+            &modal.contact_flexibility,
+            &contacts,
+            &wheel_positions,
+        );
+        impacts.locate(model, &contacts, &geometry.on_deck, &wheel_positions, 0.0);
+        impacts.was_on_deck.copy_from_slice(&geometry.on_deck);
+        for (c, contact) in contacts.iter().enumerate() {
+            let (surface_velocity, surface_acceleration) = surface_motion(
+                model,
+                &modal,
+                contact,
+                wheel_positions[contact.wheel],
+                0.0,
+                [
+                    &mut landing_values,
+                    &mut landing_slopes,
+                    &mut landing_curvatures,
+                ],
+            );
+            let state = &states[contact.vehicle];
+            impacts.held_start[c] = [
+                state.velocity[contact.dof],
+                state.acceleration[contact.dof],
+                surface_velocity,
+                surface_acceleration,
+            ];
+            impacts.relative_velocity[c] = impacts.relative(
+                c,
+                modes,
+                states[contact.vehicle].velocity[contact.dof],
+                &geometry.shapes[c * modes..(c + 1) * modes],
+                &modal.displacement,
+                &modal.velocity,
+            );
+        }
+    }
 
     observer.observe(&StepView::of(
         0,
@@ -356,55 +187,7 @@ pub fn run(
         // Vehicle predictors u* = K̂⁻¹R̂ with
         // R̂ = f_g − αEλₙ + M hₐ + (1+α)C h_v + α(C u̇ₙ + K uₙ).
         for ((vehicle, state), vs) in model.vehicles.iter().zip(&states).zip(steps.iter_mut()) {
-            for k in 0..vehicle.dofs() {
-                let (u, v, a) = (
-                    state.displacement[k],
-                    state.velocity[k],
-                    state.acceleration[k],
-                );
-                vs.inertia_history[k] = nm.inertia_history(u, v, a);
-                vs.damping_history[k] = nm.damping_history(u, v, a);
-            }
-            let blocks = &vehicle.blocks;
-            vs.effective_load.copy_from(&vehicle.gravity_load);
-            if gravity_ratio != 0.0 {
-                vs.effective_load
-                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
-            }
-            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
-                vs.effective_load
-                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
-            }
-            block_gemv(
-                &mut vs.effective_load,
-                1.0,
-                &vehicle.mass,
-                &vs.inertia_history,
-                blocks,
-            );
-            block_gemv(
-                &mut vs.effective_load,
-                nm.weight(),
-                &vehicle.damping,
-                &vs.damping_history,
-                blocks,
-            );
-            if nm.alpha != 0.0 {
-                block_gemv(
-                    &mut vs.effective_load,
-                    nm.alpha,
-                    &vehicle.damping,
-                    &state.velocity,
-                    blocks,
-                );
-                block_gemv(
-                    &mut vs.effective_load,
-                    nm.alpha,
-                    &vehicle.stiffness,
-                    &state.displacement,
-                    blocks,
-                );
-            }
+            vs.load(vehicle, state, &nm, gravity_ratio, ground.lateral_load);
         }
         if nm.alpha != 0.0 {
             for (c, contact) in contacts.iter().enumerate() {
@@ -412,14 +195,7 @@ pub fn run(
             }
         }
         for (vs, vehicle) in steps.iter_mut().zip(&model.vehicles) {
-            vs.predictor.fill(0.0);
-            block_gemv(
-                &mut vs.predictor,
-                1.0,
-                &vs.effective_flexibility,
-                &vs.effective_load,
-                &vehicle.blocks,
-            );
+            vs.predict(vehicle);
         }
 
         // Free gaps g* and the contact compliance W.
@@ -456,7 +232,104 @@ pub fn run(
                 reason,
             };
             match model.contact {
-                ContactLaw::Rigid | ContactLaw::Elastic { .. } => {
+                ContactLaw::Rigid { .. } if impacts.is_some() => {
+                    let impacts = impacts.as_mut().expect("rigid contact");
+                    impacts.locate(model, &contacts, on_deck, &wheel_positions, t);
+                    for i in 0..modes {
+                        impacts.free_modal_velocity[i] =
+                            nm.a1 * modal.predictor[i] - modal.damping_history[i];
+                    }
+                    // The step's contact problem (a hybrid Moreau–Jean step):
+                    // a wheel with mass that was off the surface at the start
+                    // of the step and whose free end-of-step gap closes LANDS:
+                    // Newton's law at the velocity level, U_{n+1} + eUₙ ≥ 0 ⊥
+                    // P ≥ 0. Every other wheel in contact at the start keeps
+                    // the displacement-level law, g_{n+1} ≥ 0 ⊥ λ ≥ 0, so a
+                    // run without lift-off is the plain rigid contact (=
+                    // permanent contact) and lift-offs are located by the
+                    // gap as before. A separated wheel whose free gap stays
+                    // open takes no force.
+                    rows.clear();
+                    let mut any_landing = false;
+                    for (c, contact) in contacts.iter().enumerate() {
+                        impacts.landing[c] = false;
+                        // The first step is an impact too for a wheel the
+                        // surface under it approaches at t = 0 (vehicles
+                        // start at rest: a surface sloped under the wheel
+                        // moves into it at v·r′, a velocity jump).
+                        // So is a step in which a wheel in contact rolls on
+                        // or off the deck: the deck's slope under it jumps
+                        // there (v·φ′·q, a kink in the surface), and the
+                        // displacement-level law would hand the jump back as
+                        // a trapezoidal rebound.
+                        let kicked = (step == 1 && impacts.relative_velocity[c] < 0.0)
+                            || on_deck[c] != impacts.was_on_deck[c];
+                        if impacts.takes_impacts(c)
+                            && (was_apart[c] || kicked)
+                            && (free_gap[c] <= 0.0 || was_apart[c])
+                        {
+                            if free_gap[c] > 0.0 {
+                                continue;
+                            }
+                            let vs = &steps[contact.vehicle];
+                            let wheel =
+                                nm.a1 * vs.predictor[contact.dof] - vs.damping_history[contact.dof];
+                            impacts.free_velocity[c] = impacts.relative(
+                                c,
+                                modes,
+                                wheel,
+                                &shapes[c * modes..(c + 1) * modes],
+                                &modal.predictor,
+                                &impacts.free_modal_velocity,
+                            );
+                            impacts.landing[c] = true;
+                            any_landing = true;
+                        }
+                        rows.push(c);
+                    }
+                    // With a landing in the problem, the gap rows are scaled
+                    // by a₁ (1/s) to the velocity rows' size: the same LCP
+                    // solution, a better-scaled tableau.
+                    let gap_scale = if any_landing { nm.a1 } else { 1.0 };
+                    let m = rows.len();
+                    for (ra, &a) in rows.iter().enumerate() {
+                        for (rb, &b) in rows.iter().enumerate() {
+                            let w = compliance[a * nc + b];
+                            lcp_matrix[ra * m + rb] = if impacts.landing[a] {
+                                impacts.velocity_row_entry(
+                                    &nm,
+                                    a,
+                                    modes,
+                                    w - geometry.residual[a * nc + b],
+                                    &geometry.scaled[b * modes..(b + 1) * modes],
+                                )
+                            } else {
+                                gap_scale * w
+                            };
+                        }
+                        lcp_vector[ra] = if impacts.landing[a] {
+                            // Newton's law restitutes an approach only.
+                            impacts.free_velocity[a]
+                                + impacts.restitution * impacts.relative_velocity[a].min(0.0)
+                        } else {
+                            gap_scale * free_gap[a]
+                        };
+                        previous[ra] = lambda[a];
+                    }
+                    solve_warm(
+                        &lcp_matrix[..m * m],
+                        &lcp_vector[..m],
+                        &mut row_lambda[..m],
+                        &mut workspace,
+                        &previous[..m],
+                    )
+                    .map_err(|e| fail(e.to_string()))?;
+                    lambda.fill(0.0);
+                    for (ra, &a) in rows.iter().enumerate() {
+                        lambda[a] = row_lambda[ra];
+                    }
+                }
+                ContactLaw::Rigid { .. } | ContactLaw::Elastic { .. } => {
                     lcp_matrix.copy_from_slice(compliance);
                     if let ContactLaw::Elastic { stiffness } = model.contact {
                         for c in 0..nc {
@@ -524,11 +397,29 @@ pub fn run(
         }
 
         // Gaps with the forces, then both subsystems finish the step.
+        if let Some(impacts) = &mut impacts {
+            impacts.record(&nm, &lambda, model.time_step);
+        }
         for (c, contact) in contacts.iter().enumerate() {
             let row = &compliance[c * nc..(c + 1) * nc];
             contact_gaps[contact.wheel] =
                 free_gap[c] + row.iter().zip(&lambda).map(|(w, l)| w * l).sum::<f64>();
-            contact_forces[contact.wheel] = lambda[c];
+            if let Some(impacts) = &impacts {
+                // A landing's multiplier is an impulse over the step, not a
+                // force: the residual (quasi-static) flexibility does not
+                // deflect under it (its velocity is neglected in Newton's law
+                // too), so its part comes out of every gap.
+                let residual = &geometry.residual[c * nc..(c + 1) * nc];
+                for d in 0..nc {
+                    if impacts.landing[d] {
+                        contact_gaps[contact.wheel] -= residual[d] * lambda[d];
+                    }
+                }
+            }
+            contact_forces[contact.wheel] = match &impacts {
+                Some(impacts) => impacts.reported_force(c, lambda[c], model.time_step),
+                None => lambda[c],
+            };
             if on_deck[c] {
                 modal.apply_contact(&shapes[c * modes..(c + 1) * modes], lambda[c]);
             }
@@ -551,82 +442,7 @@ pub fn run(
                 nm.weight() * lambda[c] - nm.alpha * carried[c];
         }
         for ((state, vs), vehicle) in states.iter_mut().zip(steps.iter_mut()).zip(&model.vehicles) {
-            let Some(recovery) = &vs.recovery else {
-                for k in 0..state.displacement.len() {
-                    let u_new = vs.predictor[k];
-                    let a_new = nm.a0 * u_new - vs.inertia_history[k];
-                    state.velocity[k] = nm.a1 * u_new - vs.damping_history[k];
-                    state.acceleration[k] = a_new;
-                    state.displacement[k] = u_new;
-                }
-                continue;
-            };
-            // (M + wγΔt C) ü_{n+1} = f_g + wEλ_{n+1} − αEλₙ − w[C(u̇ₙ + (1−γ)Δt üₙ)
-            // + K u_{n+1}] + α(C u̇ₙ + K uₙ): the HHT equations of motion, free
-            // of the ε|u|/Δt² round-off of a₀(u_{n+1} − uₙ) − … (u includes
-            // the static sag). The same scheme in exact arithmetic.
-            let w = nm.weight();
-            vs.previous_velocity.copy_from(&state.velocity);
-            vs.previous_acceleration.copy_from(&state.acceleration);
-            vs.previous_displacement.copy_from(&state.displacement);
-            let blocks = &vehicle.blocks;
-            vs.recovery_load += &vehicle.gravity_load;
-            if gravity_ratio != 0.0 {
-                vs.recovery_load
-                    .axpy(gravity_ratio, &vehicle.gravity_load, 1.0);
-            }
-            if ground.lateral_load != 0.0 && !vehicle.lateral_ground_load.is_empty() {
-                vs.recovery_load
-                    .axpy(ground.lateral_load, &vehicle.lateral_ground_load, 1.0);
-            }
-            block_gemv(
-                &mut vs.recovery_load,
-                -w,
-                &vehicle.stiffness,
-                &vs.predictor,
-                blocks,
-            );
-            vs.predicted_velocity.copy_from(&vs.previous_velocity);
-            vs.predicted_velocity
-                .axpy(nm.a6, &vs.previous_acceleration, 1.0);
-            block_gemv(
-                &mut vs.recovery_load,
-                -w,
-                &vehicle.damping,
-                &vs.predicted_velocity,
-                blocks,
-            );
-            if nm.alpha != 0.0 {
-                block_gemv(
-                    &mut vs.recovery_load,
-                    nm.alpha,
-                    &vehicle.damping,
-                    &vs.previous_velocity,
-                    blocks,
-                );
-                block_gemv(
-                    &mut vs.recovery_load,
-                    nm.alpha,
-                    &vehicle.stiffness,
-                    &vs.previous_displacement,
-                    blocks,
-                );
-            }
-            vs.recovered_acceleration.fill(0.0);
-            block_gemv(
-                &mut vs.recovered_acceleration,
-                1.0,
-                recovery,
-                &vs.recovery_load,
-                blocks,
-            );
-            for k in 0..state.displacement.len() {
-                let a_new = vs.recovered_acceleration[k];
-                state.velocity[k] =
-                    nm.velocity(vs.previous_velocity[k], vs.previous_acceleration[k], a_new);
-                state.acceleration[k] = a_new;
-                state.displacement[k] = vs.predictor[k];
-            }
+            vs.finish(vehicle, state, &nm, gravity_ratio, ground.lateral_load);
         }
         // Rigid landing is perfectly inelastic: a wheel that was off the
         // surface and carries force again leaves the step moving with the
@@ -636,43 +452,48 @@ pub fn run(
         // trapezoidal rule hand the landing velocity back as a rebound (and
         // the landing step's acceleration spike re-enters the next velocity
         // update), so a wheel chatters for ever after one kink in the profile.
-        for (c, contact) in contacts.iter().enumerate() {
-            let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
-            carried[c] = lambda[c];
-            if model.contact == ContactLaw::Rigid && was_apart[c] && lambda[c] > 0.0 {
-                let x = wheel_positions[contact.wheel];
-                bridge.contact_mode_values_slopes_curvatures(
-                    x,
-                    model.wheel_y[contact.wheel],
+        if let Some(impacts) = &mut impacts {
+            moreau_jean_finish(
+                model,
+                &nm,
+                impacts,
+                &contacts,
+                &geometry,
+                (&lambda, &was_apart),
+                (&wheel_positions, t),
+                &mut modal,
+                &mut states,
+                &mut contact_gaps,
+                [
                     &mut landing_values,
                     &mut landing_slopes,
                     &mut landing_curvatures,
+                ],
+            );
+        }
+        for (c, contact) in contacts.iter().enumerate() {
+            let apart = lambda[c] <= 0.0 && contact_gaps[contact.wheel] > SEPARATION_GAP;
+            if let Some(impacts) = impacts.as_ref().filter(|i| i.takes_impacts(c)) {
+                // A landing impulse has done its work within its step.
+                carried[c] = if impacts.landing[c] { 0.0 } else { lambda[c] };
+                was_apart[c] = apart || impacts.leaving[c];
+                continue;
+            }
+            carried[c] = lambda[c];
+            if matches!(model.contact, ContactLaw::Rigid { .. }) && was_apart[c] && lambda[c] > 0.0
+            {
+                let (velocity, acceleration) = surface_motion(
+                    model,
+                    &modal,
+                    contact,
+                    wheel_positions[contact.wheel],
+                    t,
+                    [
+                        &mut landing_values,
+                        &mut landing_slopes,
+                        &mut landing_curvatures,
+                    ],
                 );
-                // v and a along the path at t_{n+1}; the a-terms are those
-                // of an accelerating vehicle (see `permanent`).
-                let vehicle = &model.vehicles[contact.vehicle];
-                let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
-                let (_, dr, ddr) = model
-                    .profile
-                    .elevation_slope_curvature_on(model.wheel_rail[contact.wheel], x);
-                let (mut velocity, mut acceleration) = (v * dr, v * v * ddr);
-                if a != 0.0 {
-                    acceleration += a * dr;
-                }
-                for i in 0..modes {
-                    let (q, qd, qdd) = (
-                        modal.displacement[i],
-                        modal.velocity[i],
-                        modal.acceleration[i],
-                    );
-                    velocity += landing_values[i] * qd + v * landing_slopes[i] * q;
-                    acceleration += landing_values[i] * qdd
-                        + 2.0 * v * landing_slopes[i] * qd
-                        + v * v * landing_curvatures[i] * q;
-                    if a != 0.0 {
-                        acceleration += a * landing_slopes[i] * q;
-                    }
-                }
                 let state = &mut states[contact.vehicle];
                 state.velocity[contact.dof] = velocity;
                 state.acceleration[contact.dof] = acceleration;
@@ -706,7 +527,7 @@ pub fn run(
 /// of one N²-times larger dense one: column by column on the column-major
 /// storage, y += (a xⱼ) A[:, j]. One block covering every DOF (every
 /// vehicle but a train) keeps nalgebra's dense product.
-pub(super) fn block_gemv(
+pub(in crate::solve) fn block_gemv(
     y: &mut DVector<f64>,
     a: f64,
     matrix: &DMatrix<f64>,
@@ -737,7 +558,7 @@ pub(super) fn block_gemv(
 /// block by block (so the inverse is exactly zero outside them too); the
 /// plain inverse for one block covering every DOF. `None` if a block is
 /// singular.
-pub(super) fn block_inverse(
+pub(in crate::solve) fn block_inverse(
     matrix: &DMatrix<f64>,
     blocks: &[std::ops::Range<usize>],
 ) -> Option<DMatrix<f64>> {

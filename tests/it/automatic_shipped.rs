@@ -5,10 +5,13 @@
 //! time step removed, so the planning stage chooses them, and measured with
 //! `vbi converge` (reference Δt/4 and 2N modes). Every recorded quantity of
 //! the automatic run must be within 0.5 % (max-abs error over the history,
-//! relative to its peak) of the reference. The one stated exception: under
-//! rigid contact, contact forces and gaps after a landing are impulses on
-//! the step grid (`run.step_dependent` in the summary says so), measured
-//! 138–14,000 % apart between Δt and Δt/4; and likewise under elastic or
+//! relative to its peak) of the reference. The stated exceptions: under
+//! rigid contact, contact forces and gaps (the force is the 1 ms average
+//! of the impulses after an impact, the t = 0 kick included, and the gap
+//! of a wheel that stays down is round-off: not yet measured against the
+//! 0.5 % tolerance under the Moreau–Jean step of issue 29, whose separation
+//! statistics converge at first order, tests/it/moreau_jean.rs; before it,
+//! 138–14,000 % apart between Δt and Δt/4); and under elastic or
 //! Hertz contact once a wheel loses contact (rail-fra5-oscillator: contact
 //! force 3.3 %, vehicle acceleration 2.2 %, deck acceleration 1.0 %), where
 //! only displacements are held to the tolerance and the summary must say so.
@@ -111,7 +114,7 @@ fn automatic_choices_meet_the_stated_tolerance_on_every_shipped_scene() {
             "{name}: modes not automatic: {}",
             loaded.bridge.selection
         );
-        let rigid = loaded.scenario.contact == Contact::Rigid;
+        let rigid = matches!(loaded.scenario.contact, Contact::Rigid { .. });
         let quantities: Vec<(String, Quantity)> = loaded
             .scenario
             .record

@@ -43,6 +43,7 @@ mod many_modes;
 mod merge_memory;
 mod modes_cache;
 mod monte_carlo;
+mod moreau_jean;
 mod multi_wheel;
 mod multi_wheel_lift;
 mod one_round;

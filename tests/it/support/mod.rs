@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each test module uses its own subset
 
 pub mod event_reference;
+pub mod impact_reference;
 pub mod multi_reference;
 pub mod plate_fe;
 pub mod reference;
