@@ -23,11 +23,11 @@ struct SetFactor {
     factors: Vec<f64>,
 }
 
-/// The warm start of [`solve_warm`] for many right-hand sides `q` with one
-/// matrix `M` (the lanes of [`super::lockstep`]): the elimination of M_AA
+/// The warm start of [`super::solve_warm`] for many right-hand sides `q` with one
+/// matrix `M` (the lanes of [`crate::solve::lockstep`]): the elimination of M_AA
 /// for a contact set A is done once per set and replayed on each `q`, with
-/// exactly the operations [`gauss_solve`] performs on its right-hand side,
-/// so the result is bit-identical to [`solve_warm`]'s. Up to
+/// exactly the operations [`super::dense::gauss_solve`] performs on its right-hand side,
+/// so the result is bit-identical to [`super::solve_warm`]'s. Up to
 /// [`SHARED_SETS`] sets are kept (lanes that separate differ in their
 /// sets). Call [`Self::reset`] whenever `M` changes.
 #[derive(Debug, Clone)]
@@ -76,7 +76,7 @@ impl SharedWarmStart {
         self.next = 0;
     }
 
-    /// [`solve_warm`] with the elimination of each contact set shared
+    /// [`super::solve_warm`] with the elimination of each contact set shared
     /// between calls of the same `m`.
     pub fn solve(
         &mut self,
@@ -150,7 +150,7 @@ impl SharedWarmStart {
 }
 
 impl SetFactor {
-    /// Eliminates M_AA as [`gauss_solve`] does, keeping the multipliers
+    /// Eliminates M_AA as [`super::dense::gauss_solve`] does, keeping the multipliers
     /// and the row exchanges.
     fn eliminate(&mut self, m: &[f64], n: usize) {
         let k = self.active.len();

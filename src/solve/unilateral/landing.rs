@@ -55,7 +55,7 @@ pub(super) fn surface_motion(
     (velocity, acceleration)
 }
 
-/// The end of a hybrid Moreau–Jean step ([`super::impact`]). A wheel that
+/// The end of a hybrid Moreau–Jean step ([`crate::solve::impact`]). A wheel that
 /// landed with an impulse: its stored accelerations (vehicle and bridge)
 /// become the smooth ones (the step's contact force stripped: it acted as
 /// an impulse), nothing is carried into the next step's HHT term, and the
