@@ -167,7 +167,8 @@ impl PermanentContacts {
         let bridge = &model.bridge;
         let nc = self.contacts.len();
         for c in 0..nc {
-            let start = if self.off_model(c) {
+            let off_model = self.off_model(c);
+            let start = if off_model {
                 ResidualStart::Running
             } else {
                 match self.off_model_before[c] {
@@ -193,10 +194,10 @@ impl PermanentContacts {
                 self.top_omega,
             );
             self.residual_rates[c] = ResidualRates::new(nm, start, coupling);
-            if self.off_model(c) {
+            if off_model {
                 self.residual_motion[c] = [0.0; 3];
             }
-            self.off_model_before[c] = Some(self.off_model(c));
+            self.off_model_before[c] = Some(off_model);
             let [velocity, acceleration] = self.residual_rates[c].history(self.residual_motion[c]);
             self.base[c][1] += velocity;
             self.base[c][2] += acceleration;

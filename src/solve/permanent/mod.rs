@@ -139,7 +139,8 @@ pub struct PermanentContacts {
     /// acceleration this step: ṡₙ₊₁ and the wheel's s̈ are affine in
     /// sₙ₊₁ = −Σ_d R_cd λ_d.
     residual_rates: Vec<ResidualRates>,
-    /// Whether each contact was off the model ([`Self::off_model`]) at tₙ;
+    /// Whether each contact is off the model ([`Self::off_model`]) at the
+    /// step begun last (at tₙ when the next one begins, which compares);
     /// `None` before the first step.
     off_model_before: Vec<Option<bool>>,
     /// Each contact wheel's condensed mass on its contact DOF (kg): the
@@ -510,8 +511,10 @@ impl PermanentContacts {
             let (r, dr, ddr) = self.surface[c];
             let (w, wx, wxx) = (dot(&s.values, q), dot(&s.slopes, q), dot(&s.curvatures, q));
             let residual = self.residual_deflection(c, forces);
-            // s's rates (see `begin_step`).
-            let (motion, [residual_velocity, residual_acceleration]) = if self.off_model(c) {
+            // s's rates (see `begin_step`, which told whether the wheel is
+            // off the model this step).
+            let off_model = self.residual.is_empty() || self.off_model_before[c] == Some(true);
+            let (motion, [residual_velocity, residual_acceleration]) = if off_model {
                 ([0.0; 3], [0.0; 2])
             } else {
                 self.residual_rates[c].advance(self.residual_motion[c], residual)
