@@ -284,6 +284,11 @@ impl ModalBridge {
         Ok(())
     }
 
+    /// Whether the modes are an imported finite-element model's.
+    pub fn is_imported(&self) -> bool {
+        matches!(self.shapes, Shapes::Imported(_))
+    }
+
     /// Whether contact points get the static correction.
     pub fn corrects_contacts(&self) -> bool {
         self.contact_flexibility.is_some()

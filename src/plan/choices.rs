@@ -21,6 +21,7 @@ use crate::scene::*;
 use super::budget::eigen_fits;
 use super::content;
 use super::derive::derive_dimensionless;
+use super::track_flexibility;
 
 /// Share of the bridge's mass the automatic modes carry under ground
 /// motion (EN 1998-1 4.3.3.3.1(3)).
@@ -275,6 +276,21 @@ pub(crate) fn plan(
                 content::modes_per_span(&bridge),
             ),
         };
+        // An imported track under wheels with mass: keep modes until they
+        // carry the rails' static flexibility under a wheel (the static
+        // correction's spring has no inertia; [`track_flexibility`]).
+        let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
+        if modal.is_imported() && modal.static_correction && (vertical_mass || lateral_mass) {
+            modal = track_flexibility::keep_rails_flexibility(
+                modal,
+                &bridge,
+                lateral_mass,
+                &budget,
+                ck,
+                &build,
+            )?;
+            cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
+        }
         // Ground motion: keep modes until they carry 90 % of the bridge's
         // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
         // vertical record excites the symmetric modes, each less than the

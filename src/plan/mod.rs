@@ -28,6 +28,7 @@ pub mod content;
 mod derive;
 mod plausible;
 mod sweep;
+pub mod track_flexibility;
 mod travel;
 
 use std::path::Path;
