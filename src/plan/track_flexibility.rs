@@ -70,6 +70,12 @@ pub fn wheels_with_mass(vehicles: &[Vehicle], gravity: f64) -> (bool, bool) {
     (vertical, lateral)
 }
 
+/// The words of a mode selection whose kept modes carry less of the rails'
+/// flexibility than [`TRACK_RESIDUAL_SHARE`] asks, the limits having
+/// stopped the growth: the run warns on them
+/// ([`crate::report::advice::run_warnings`]).
+pub const SHORT_OF_TARGET: &str = "short of the";
+
 /// The contact points the rule samples: every rail node of the track, on
 /// each rail vertically (`rails` of them: y = +1 m is the first rail, −1 m
 /// the second, [`crate::bridge::fe_import::modal::track_weights_at`]), and
@@ -219,7 +225,19 @@ pub(super) fn keep_rails_flexibility(
     checked.selection = modal_selection;
     modal = checked;
     if let Some((share, met)) = share {
-        if grown {
+        if limited {
+            modal.selection = format!(
+                "automatic: {} modes up to {:.2} Hz, as many as the limits allow (`limits.modes`, \
+                 `limits.eigen_work`); they carry {:.1} % of the rails' static flexibility under \
+                 a wheel, {SHORT_OF_TARGET} {:.1} % the automatic choice aims at (the modes left \
+                 out ride the wheels' mass as a massless spring): the contact forces and the rail \
+                 and deck accelerations are not converged",
+                modal.mode_count(),
+                modal.frequencies().last().copied().unwrap_or(0.0),
+                100.0 * (1.0 - share),
+                100.0 * (1.0 - TRACK_RESIDUAL_SHARE)
+            );
+        } else if grown {
             modal.selection = format!(
                 "automatic: {} modes up to {:.2} Hz, so that they carry {:.1} % of the \
                  rails' static flexibility under a wheel (at least {:.1} %: the modes \
@@ -235,15 +253,7 @@ pub(super) fn keep_rails_flexibility(
                 100.0 * (1.0 - share)
             ));
         }
-        if limited {
-            modal.selection.push_str(&format!(
-                " — short of the {:.1} % the automatic choice aims at: more modes \
-                 exceed the limits on modes or on the eigen solve's work (`limits`); \
-                 the contact forces and the rail and deck accelerations are not \
-                 converged",
-                100.0 * (1.0 - TRACK_RESIDUAL_SHARE)
-            ));
-        } else if !met {
+        if !met && !limited {
             modal.selection.push_str(" (every mode of the model)");
         }
     }

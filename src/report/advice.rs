@@ -203,6 +203,20 @@ pub fn run_warnings(scenario: &Scenario, summary: &Summary) -> Vec<String> {
             );
         }
     }
+    // The limits stopped the automatic modes short of the rails'
+    // flexibility under a wheel (crate::plan::track_flexibility).
+    if run.modes_selection.starts_with("automatic")
+        && run
+            .modes_selection
+            .contains(crate::plan::track_flexibility::SHORT_OF_TARGET)
+    {
+        out.push(format!(
+            "the automatic modes stop at the limits: {}; raise `limits.modes` and \
+             `limits.eigen_work` in the file and run with `--trust-limits` (or run with \
+             `--allow-large`), or set `bridge.modes` and check the run with `vbi converge`",
+            run.modes_selection.trim_start_matches("automatic: ")
+        ));
+    }
     out.extend(ground_motion_after_the_run(scenario, summary));
     out.extend(entrance_kick(scenario, summary));
     out.extend(summary

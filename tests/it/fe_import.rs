@@ -730,3 +730,88 @@ fn a_lateral_dof_under_vertical_static_loads_gets_no_daf() {
     );
     assert_eq!(lateral.daf, None, "lateral DOF: {:?}", lateral.daf);
 }
+
+/// The automatic modes on an imported track under a wheel with mass keep
+/// the rails' static flexibility (src/plan/track_flexibility.rs): a rail
+/// car's wheelsets held on the shipped two-span viaduct. With the file's
+/// `limits.modes` at 400 the growth stops there, the selection says how
+/// much the modes carry and the run warns (a wrong answer must not pass in
+/// silence); the share itself is recomputed here from the kept modes and
+/// the model's K⁻¹ at every rail node (R = G − Σφ²/ω², max R / max G) and
+/// must equal the printed one. Moving forces on the same track are not
+/// grown (their quasi-static share is exact under the correction).
+#[test]
+fn automatic_modes_keep_the_rails_flexibility_under_wheels_with_mass() {
+    use vbi::plan::track_flexibility::{
+        SHORT_OF_TARGET, TRACK_RESIDUAL_SHARE, residual_shares, sample_points,
+    };
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let scene = |vehicle: &str, limits: &str| {
+        format!(
+            "name: rails\nbridge:\n  type: fe_import\n  stiffness: viaduct-2span/K.mtx\n  \
+             mass: viaduct-2span/M.mtx\n  dof_map: viaduct-2span/dof_map.csv\n  \
+             rails: [{{name: left, file: viaduct-2span/rail_left.csv}}, \
+             {{name: right, file: viaduct-2span/rail_right.csv}}]\n  \
+             damping: {{type: modal, ratio: 0.02}}\n\
+             vehicles: [{vehicle}]\ncontact: {{type: permanent}}\n{limits}\
+             solver: {{free_vibration: 0.0}}\n\
+             record: [{{name: force1, quantity: contact_force, wheel: 1}}]\n"
+        )
+    };
+    let path = dir.join("rails.yaml");
+    let path = path.to_string_lossy();
+    let loaded = load_str(
+        &scene(
+            "{type: rail_car, speed: 200 km/h}",
+            "limits: {modes: 400}\n",
+        ),
+        &path,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let mut bridge = loaded.bridge.clone();
+    assert_eq!(bridge.mode_count(), 400, "{}", bridge.selection);
+    assert!(
+        bridge.selection.contains(SHORT_OF_TARGET),
+        "{}",
+        bridge.selection
+    );
+    bridge.prepare_contact_correction().unwrap();
+    let shares = residual_shares(&bridge, &sample_points(&bridge, 2, false)).unwrap();
+    let share = shares[399];
+    assert!(share > TRACK_RESIDUAL_SHARE, "{share}");
+    // The shares fall with every mode added (each adds φ²/ω² ≥ 0).
+    assert!(shares.windows(2).all(|w| w[1] <= w[0] + 1e-15));
+    let printed = format!("{:.1} %", 100.0 * (1.0 - share));
+    assert!(
+        bridge.selection.contains(&printed),
+        "{printed}: {}",
+        bridge.selection
+    );
+    let scenario = loaded.scenario.clone();
+    let outcome = run(loaded);
+    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains("stop at the limits") && w.contains(&printed)),
+        "{warnings:?}"
+    );
+    // Moving forces: the excitation rule alone, no share in the selection.
+    let forces = load_str(
+        &scene(
+            "{type: moving_force, loads: [170.0e3, 170.0e3], axle_spacings: [2.5], speed: 200 km/h}",
+            "",
+        ),
+        &path,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        !forces
+            .bridge
+            .selection
+            .contains("rails' static flexibility"),
+        "{}",
+        forces.bridge.selection
+    );
+    assert!(forces.bridge.mode_count() < 400);
+}
