@@ -312,6 +312,8 @@ impl ModalBridge {
             static_correction: bridge.modes().static_correction,
             modes_from_cache: from_cache,
             modes_cache_rejected: cache_rejected,
+            rails_flexibility: None,
+            acceleration_filter: None,
             contact_flexibility: None,
             shapes,
         })

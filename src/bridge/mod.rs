@@ -124,11 +124,58 @@ pub struct ModalBridge {
     /// check: [`eigen::cache::Pencil::recheck`]); the modes were solved
     /// afresh and the file rewritten.
     pub modes_cache_rejected: Option<&'static str>,
+    /// On an imported track under wheels with mass: what the kept modes
+    /// leave out of the rails' static flexibility under a wheel
+    /// ([`crate::plan::track_flexibility`]); `None` where the plan did not
+    /// measure it.
+    pub rails_flexibility: Option<RailsFlexibility>,
+    /// Where a deck acceleration's filter reaches above the kept modes and
+    /// the bridge has modes there: the filter and how many modes lie up to
+    /// it (a Sturm count; [`crate::report::advice`] warns).
+    pub acceleration_filter: Option<AccelerationFilter>,
     /// The static flexibility between contact points, for the contact
     /// static correction ([`ModalBridge::prepare_contact_correction`]).
     contact_flexibility: Option<std::sync::Arc<Flexibility>>,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
+}
+
+/// What the kept modes of an imported track leave out of the rails' static
+/// flexibility under a wheel, ρ = max_c R(c, c) / max_c G(c, c) over rail
+/// points c in each direction the wheels hold, R = G − Σᵢ φᵢ(c)²/ωᵢ²
+/// ([`crate::plan::track_flexibility`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct RailsFlexibility {
+    /// The largest share left out, ρ (dimensionless, 0–1).
+    pub left_out: f64,
+    /// The share left out at a typical rail point: the median over the
+    /// points of R(c, c) / G(c, c) (dimensionless, 0–1). ρ is set by the
+    /// track's most flexible point (a free rail end, whose flexibility no
+    /// low mode carries); this one says what a wheel over the deck meets.
+    pub typical_left_out: f64,
+    /// Rail points measured.
+    pub points: usize,
+    /// Whether every rail node was measured; `false`: a sample of them, so
+    /// `left_out` is a lower bound of the largest share.
+    pub every_node: bool,
+    /// Whether the contacts carry the share left out as the static
+    /// correction's massless spring; `false`: the rails' deflection under a
+    /// wheel misses it (a model of over [`CONTACT_CORRECTION_DOFS`] DOFs,
+    /// or `modes.static_correction: false`).
+    pub static_correction: bool,
+    /// Whether the limits on modes stopped the automatic choice short of
+    /// its target.
+    pub limited: bool,
+}
+
+/// A deck acceleration's filter above the kept modes: EN 1990 A2.4.4.2.1(4)
+/// sums every mode up to it.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct AccelerationFilter {
+    /// The highest filter of the deck accelerations recorded, Hz.
+    pub max_frequency: f64,
+    /// The bridge's modes up to it (an inertia count), more than are kept.
+    pub modes: usize,
 }
 
 /// The static flexibility between contact points of a beam or an imported model.
@@ -282,6 +329,20 @@ impl ModalBridge {
             Shapes::Plate { .. } => {}
         }
         Ok(())
+    }
+
+    /// The full model's static flexibility G(c, c) at each of an imported
+    /// model's track points, m/N, by sparse solves with K's factor (any
+    /// size: [`fe_import::modal::ImportedShapes::static_flexibility_at`]); `None`
+    /// for other bridges.
+    pub fn track_flexibility_at(
+        &self,
+        points: &[ContactPoint],
+    ) -> Option<Result<Vec<f64>, BridgeError>> {
+        match &self.shapes {
+            Shapes::Imported(imported) => Some(imported.static_flexibility_at(points)),
+            _ => None,
+        }
     }
 
     /// Whether the modes are an imported finite-element model's.

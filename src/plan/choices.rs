@@ -371,6 +371,34 @@ pub(crate) fn plan(
     if !ck.diagnostics.is_empty() {
         return None;
     }
+    // An imported track whose contacts get no static correction, under
+    // wheels with mass: the share of the rails' flexibility the modes
+    // leave out is missing, not a spring; measure it, however the modes
+    // were chosen, so the run can say so ([`track_flexibility`]).
+    let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
+    if modal.is_imported()
+        && (vertical_mass || lateral_mass)
+        && (!modal.static_correction
+            || ModalBridge::available_of(&bridge) > crate::bridge::CONTACT_CORRECTION_DOFS)
+        && let Err(e) =
+            track_flexibility::measure_without_correction(&mut modal, &bridge, lateral_mass)
+    {
+        ck.error("bridge", e.to_string());
+        return None;
+    }
+    // Deck accelerations sum every mode up to their filter: where the kept
+    // modes stop below it, count the bridge's modes there (one
+    // factorisation) so the run can say what the sum misses.
+    if let (Some(cut), Some(&top)) = (record_cutoff, modal.frequencies().last())
+        && cut > top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE)
+        && let Ok(Some(count)) = ModalBridge::count_up_to(&bridge, cut)
+        && count > modal.mode_count()
+    {
+        modal.acceleration_filter = Some(crate::bridge::AccelerationFilter {
+            max_frequency: cut,
+            modes: count,
+        });
+    }
     // A braking vehicle started slower may stop before the bridge.
     let slowest = match &study {
         Some(Study::SpeedSweep(sweep)) => Some(sweep.speed_range().0),

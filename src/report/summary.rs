@@ -105,6 +105,16 @@ pub struct RunInfo {
     pub modes_cache_rejected: Option<String>,
     /// How the modes were chosen and why.
     pub modes_selection: String,
+    /// On an imported track under wheels with mass, where the plan measured
+    /// it: the largest share of the rails' static flexibility under a wheel
+    /// the kept modes leave out, and how it is carried
+    /// ([`crate::plan::track_flexibility`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rails_flexibility: Option<crate::bridge::RailsFlexibility>,
+    /// Where a deck acceleration's filter reaches above the kept modes: the
+    /// filter, Hz, and how many of the bridge's modes lie up to it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub modes_to_acceleration_filter: Option<crate::bridge::AccelerationFilter>,
     /// How the time step was chosen.
     pub time_step_selection: String,
     /// The accuracy the choices of modes and time step aim at.
@@ -314,6 +324,8 @@ impl Summary {
                 modes_cache_rejected: model.bridge.modes_cache_rejected.map(String::from),
                 modes_available: model.bridge.available_modes,
                 modes_selection: model.bridge.selection.clone(),
+                rails_flexibility: model.bridge.rails_flexibility,
+                modes_to_acceleration_filter: model.bridge.acceleration_filter,
                 time_step_selection: model.time_step_selection.clone(),
                 accuracy_target: accuracy_target(model),
                 frequencies: model.bridge.frequencies(),

@@ -114,3 +114,61 @@ fn explicit_choices_override_the_automatic_ones() {
     assert_eq!(outcome.summary.run.time_step, 2.0e-4);
     assert!(outcome.summary.run.modes_selection.starts_with("requested"));
 }
+
+/// A deck acceleration sums every mode up to its filter (EN 1990
+/// A2.4.4.2.1, here 30 Hz); `bridge.modes` set below it leaves the modes
+/// between out of the sum, and the run says so. Three 25 m spans of the
+/// Yang & Yau beam (f₁ = 4.78 Hz; the first bending group ends near 9 Hz,
+/// the second starts at 19 Hz): the lowest three modes against every mode
+/// to 30 Hz, two axles at 200 km/h.
+#[test]
+fn a_deck_acceleration_filter_above_the_modes_kept_is_named() {
+    let scene = |modes: &str| {
+        format!(
+            "name: filter\nbridge: {{type: beam, spans: [25.0, 25.0, 25.0], bending_stiffness: 8.323e9, \
+             mass_per_length: 2303.0, modes: {modes}}}\n\
+             vehicles: [{{type: moving_force, loads: [170.0e3, 170.0e3], axle_spacings: [3.0], speed: 200 km/h}}]\n\
+             solver: {{free_vibration: 0.2}}\n\
+             record:\n\
+             - {{name: acc, quantity: bridge_acceleration, x: 6.25, max_frequency: 30.0}}\n"
+        )
+    };
+    let warned = |modes: &str| {
+        let loaded = load_str(&scene(modes), "test.yaml").unwrap_or_else(|e| panic!("{e}"));
+        let scenario = loaded.scenario.clone();
+        let outcome = simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
+        let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+        let named: Vec<String> = warnings
+            .into_iter()
+            .filter(|w| w.contains("`acc` (30 Hz)") && w.contains("missing from it"))
+            .collect();
+        (
+            peak(&outcome, "acc"),
+            outcome.summary.run.frequencies.clone(),
+            named,
+        )
+    };
+    let (few, few_frequencies, few_named) = warned("{count: 3}");
+    let (all, all_frequencies, all_named) = warned("{max_frequency: 30.0}");
+    assert_eq!(few_named.len(), 1, "{few_named:?}");
+    assert!(
+        few_named[0].contains(&format!("up to {:.2} Hz", few_frequencies[2])),
+        "{few_named:?}"
+    );
+    assert!(
+        few_named[0].contains(&format!(
+            "of the {} it has up to 30 Hz",
+            all_frequencies.len()
+        )),
+        "{few_named:?}"
+    );
+    assert!(all_named.is_empty(), "{all_named:?}");
+    assert!(all_frequencies.len() > 3 && *all_frequencies.last().unwrap() <= 30.0);
+    // What the warning is about: the modes left out move the peak.
+    let moved = (few - all).abs() / all;
+    eprintln!(
+        "3 modes {few:.4} m/s², {} modes {all:.4} m/s²: {moved:.3}",
+        all_frequencies.len()
+    );
+    assert!(moved > 0.05, "{moved}");
+}
