@@ -1005,3 +1005,40 @@ fn a_model_too_large_for_the_static_correction_is_measured_on_a_sample() {
         loaded.bridge.selection
     );
 }
+
+#[test]
+fn a_contact_force_peak_on_a_rail_end_ramp_is_named() {
+    // The golden EMBS viaduct (39 m of track, free rail ends, the default
+    // 3 m entry length): the wheelset's lateral force peaks at x = 38.6 m,
+    // on the exit ramp; the wheel's vertical force at 31.8 m, over span 2.
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/embs-viaduct-ave-s103-quake.yaml");
+    let loaded = load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+    let scenario = loaded.scenario.clone();
+    let outcome = run(loaded);
+    let position = |name: &str| {
+        outcome
+            .summary
+            .quantities
+            .iter()
+            .find(|q| q.name == name)
+            .map(|q| q.max_abs.position)
+            .unwrap()
+    };
+    let (lateral, vertical) = (
+        position("wheelset1_lateral_force"),
+        position("wheel1_force"),
+    );
+    assert!((36.0..=39.0).contains(&lateral), "{lateral}");
+    assert!((3.0..36.0).contains(&vertical), "{vertical}");
+    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    let ramps: Vec<&String> = warnings
+        .iter()
+        .filter(|w| w.contains("ramp (x ="))
+        .collect();
+    assert_eq!(ramps.len(), 1, "{warnings:?}");
+    assert!(
+        ramps[0].starts_with("`wheelset1_lateral_force` is largest on the track's exit ramp"),
+        "{ramps:?}"
+    );
+}
