@@ -135,9 +135,10 @@ pub fn sampled_points(
 /// no static correction leave out of the rails' static flexibility under
 /// a wheel (G by sparse solves at [`sampled_points`]) into
 /// `modal.rails_flexibility`, and says it in the selection. There the
-/// share left out is not a massless spring but missing: the rails'
-/// deflection under a wheel lacks it, and the wheels' bounce on the track
-/// that it stands for is not modelled. Measured on the 30-span viaduct
+/// share left out is not a massless spring but missing: the wheels ride on
+/// rails stiffer than the model's by it (recorded displacements still get
+/// their static share, [`crate::record`], when `modes.static_correction` is
+/// on), and the wheels' bounce on the track it stands for is not modelled. Measured on the 30-span viaduct
 /// (scenarios/full-scale, 148 modes to 15 Hz): against modes to 30 Hz at
 /// half the step the deck displacements are within 0.8 %, the rail's
 /// vertical displacement 17 % and the deck accelerations 21–36 % off
@@ -183,8 +184,8 @@ pub(super) fn measure_without_correction(
     modal.selection.push_str(&format!(
         "; at a typical rail point they carry {:.1} % of the rails' static flexibility under \
          a wheel (the automatic rule's ρ, the largest share left out against the most \
-         flexible point: {}{:.1} %; {} rail points{}), and {why}: the rails' deflection under \
-         a wheel misses the share left out",
+         flexible point: {}{:.1} %; {} rail points{}), and {why}: the wheels ride on rails \
+         stiffer than the model's by the share left out",
         100.0 * (1.0 - typical_left_out),
         if every_node { "" } else { "at least " },
         100.0 * left_out,
