@@ -291,8 +291,24 @@ fn draw_panel<DB: DrawingBackend>(
     }
     for (k, (s, line)) in panel.series.iter().zip(&lines).enumerate() {
         let style = colour(k).stroke_width(2);
+        // Each segment on its own: a 2-pixel polyline through a dense
+        // record's min–max zigzag (one up-and-down a pixel column) gets
+        // mitre joins at its acute corners, spikes far past the data (a
+        // ±96 kN lateral contact force drawn reaching past ±190 kN, into the
+        // neighbouring panels). Separate segments have no joins.
         chart
-            .draw_series(LineSeries::new(line.iter().copied(), style))
+            .draw_series(
+                line.windows(2)
+                    .map(|pair| PathElement::new(vec![pair[0], pair[1]], style)),
+            )
+            .map_err(draw_err)?;
+        if let [single] = line.as_slice() {
+            chart
+                .draw_series(std::iter::once(Circle::new(*single, 1, style.filled())))
+                .map_err(draw_err)?;
+        }
+        chart
+            .draw_series(LineSeries::new(std::iter::empty(), style))
             .map_err(draw_err)?
             .label(s.label)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));

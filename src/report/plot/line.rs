@@ -229,8 +229,13 @@ where
                     .draw_series(std::iter::once(Circle::new(p0, 3, colour.filled())))
                     .map_err(draw_err)?;
             } else {
+                // Segment by segment: a thick polyline's mitre joins spike
+                // past the data at a dense run's acute corners (history.rs).
                 chart
-                    .draw_series(LineSeries::new(run.iter().copied(), style))
+                    .draw_series(
+                        run.windows(2)
+                            .map(|pair| PathElement::new(vec![pair[0], pair[1]], style)),
+                    )
                     .map_err(draw_err)?;
             }
         }

@@ -476,3 +476,41 @@ fn history_peaks_are_the_largest_magnitude_and_read_value_unit_and_time() {
         "1.235 m/s^2 at 0.250 s"
     );
 }
+
+#[test]
+fn a_dense_record_stays_inside_its_panel() {
+    // Full-scale contact forces: a record that swings through most of its
+    // range within every pixel column. Drawn as one thick polyline, the
+    // min–max zigzag's mitre joins spiked far past the data, into the
+    // title and the neighbouring panels; every pixel of the series must lie
+    // between the rows of its own panel.
+    let t: Vec<f64> = (0..50_000).map(|i| i as f64 * 1e-4).collect();
+    let y: Vec<f64> = t
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let swing = 0.6 + 0.4 * (37.0 * t).sin().abs();
+            if i % 2 == 0 { swing } else { -swing }
+        })
+        .collect();
+    let panels = [Panel {
+        y_label: "f (N)".into(),
+        unit: "N".into(),
+        series: vec![Series {
+            label: "f",
+            x: &t,
+            y: &y,
+        }],
+        references: vec![],
+    }];
+    let (rgb, height) = history::render_history("h", "time (s)", &panels, &[]).unwrap();
+    let blue_rows: Vec<u32> = (0..height)
+        .filter(|&row| (0..WIDTH).any(|col| pixel(&rgb, col as i32, row as i32) == (31, 119, 180)))
+        .collect();
+    let (top, bottom) = (blue_rows[0], *blue_rows.last().unwrap());
+    // The title takes the first 45 rows, the x axis the last 40 and more.
+    assert!(
+        top >= 45 && bottom < height - 40,
+        "blue rows {top}..{bottom} of {height}"
+    );
+}
