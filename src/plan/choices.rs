@@ -205,6 +205,9 @@ pub(crate) fn plan(
         (Some(a), Some(b)) => Some(a.max(b)),
         (a, b) => a.or(b),
     };
+    // Which contacts wheels with a mass of their own hold: what the rails'
+    // flexibility under a wheel matters for ([`track_flexibility`]).
+    let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
     if automatic {
         // Automatic: keep the modes this scene excites; write the cut-off back
         // so the resolved scenario reproduces the choice.
@@ -279,7 +282,6 @@ pub(crate) fn plan(
         // An imported track under wheels with mass: keep modes until they
         // carry the rails' static flexibility under a wheel (the static
         // correction's spring has no inertia; [`track_flexibility`]).
-        let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
         if modal.is_imported() && modal.static_correction && (vertical_mass || lateral_mass) {
             modal = track_flexibility::keep_rails_flexibility(
                 modal,
@@ -375,7 +377,6 @@ pub(crate) fn plan(
     // wheels with mass: the share of the rails' flexibility the modes
     // leave out is missing, not a spring; measure it, however the modes
     // were chosen, so the run can say so ([`track_flexibility`]).
-    let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
     if modal.is_imported()
         && (vertical_mass || lateral_mass)
         && (!modal.static_correction

@@ -80,9 +80,15 @@ pub fn wheels_with_mass(vehicles: &[Vehicle], gravity: f64) -> (bool, bool) {
 /// the second, [`crate::bridge::fe_import::modal::track_weights_at`]), and
 /// laterally when `lateral`.
 pub fn sample_points(modal: &ModalBridge, rails: usize, lateral: bool) -> Vec<ContactPoint> {
+    points_at(modal.node_x().iter().copied(), rails, lateral)
+}
+
+/// The contact points at the rail positions `xs` (m): on each of the
+/// `rails` vertically, and laterally (the rails' average) when `lateral`.
+fn points_at(xs: impl Iterator<Item = f64>, rails: usize, lateral: bool) -> Vec<ContactPoint> {
     let ys: &[f64] = if rails == 2 { &[1.0, -1.0] } else { &[0.0] };
     let mut points = Vec::new();
-    for &x in modal.node_x() {
+    for x in xs {
         for &y in ys {
             points.push((ContactDirection::Vertical, x, y));
         }
@@ -91,6 +97,14 @@ pub fn sample_points(modal: &ModalBridge, rails: usize, lateral: bool) -> Vec<Co
         }
     }
     points
+}
+
+/// The rails of the track (one or two; a beam's line is one).
+fn rails_of(bridge: &Bridge) -> usize {
+    match bridge {
+        Bridge::FeImport(fe) => fe.track.len(),
+        _ => 1,
+    }
 }
 
 /// Rail nodes sampled per rail and direction where the contacts carry no
@@ -114,21 +128,10 @@ pub fn sampled_points(
     let xs = modal.node_x();
     let stride = xs.len().div_ceil(SAMPLED_NODES).max(1);
     let last = xs.len().saturating_sub(1);
-    let kept: Vec<usize> = (0..xs.len())
-        .filter(|&i| i % stride == 0 || i < END_NODES || last - i < END_NODES)
-        .collect();
-    let every = kept.len() == xs.len();
-    let ys: &[f64] = if rails == 2 { &[1.0, -1.0] } else { &[0.0] };
-    let mut points = Vec::new();
-    for &i in &kept {
-        for &y in ys {
-            points.push((ContactDirection::Vertical, xs[i], y));
-        }
-        if lateral {
-            points.push((ContactDirection::Lateral, xs[i], 0.0));
-        }
-    }
-    (points, every)
+    let kept = |i: &usize| i.is_multiple_of(stride) || *i < END_NODES || last - i < END_NODES;
+    let every = (0..xs.len()).all(|i| kept(&i));
+    let sampled = (0..xs.len()).filter(kept).map(|i| xs[i]);
+    (points_at(sampled, rails, lateral), every)
 }
 
 /// Measures what the kept modes of an imported track whose contacts carry
@@ -138,8 +141,9 @@ pub fn sampled_points(
 /// share left out is not a massless spring but missing: the wheels ride on
 /// rails stiffer than the model's by it (recorded displacements still get
 /// their static share, [`crate::record`], when `modes.static_correction` is
-/// on), and the wheels' bounce on the track it stands for is not modelled. Measured on the 30-span viaduct
-/// (scenarios/full-scale, 148 modes to 15 Hz): against modes to 30 Hz at
+/// on), and the wheels' bounce on the track it stands for is not modelled.
+/// Measured on the 30-span viaduct (scenarios/full-scale, 148 modes to
+/// 15 Hz): against modes to 30 Hz at
 /// half the step the deck displacements are within 0.8 %, the rail's
 /// vertical displacement 17 % and the deck accelerations 21–36 % off
 /// (BENCHMARKS.md). The automatic choice does not grow the modes here: at
@@ -151,11 +155,7 @@ pub(super) fn measure_without_correction(
     bridge: &Bridge,
     lateral_mass: bool,
 ) -> Result<(), crate::bridge::BridgeError> {
-    let rails = match bridge {
-        Bridge::FeImport(fe) => fe.track.len(),
-        _ => 1,
-    };
-    let (points, every_node) = sampled_points(modal, rails, lateral_mass);
+    let (points, every_node) = sampled_points(modal, rails_of(bridge), lateral_mass);
     let Some(flexibility) = modal.track_flexibility_at(&points) else {
         return Ok(());
     };
@@ -290,11 +290,7 @@ pub(super) fn keep_rails_flexibility(
     ck: &mut Checker<'_>,
     build: &dyn Fn(ModeRequest) -> Result<ModalBridge, (&'static str, String)>,
 ) -> Option<ModalBridge> {
-    let rails = match bridge {
-        Bridge::FeImport(fe) => fe.track.len(),
-        _ => 1,
-    };
-    let points = sample_points(&modal, rails, lateral_mass);
+    let points = sample_points(&modal, rails_of(bridge), lateral_mass);
     let available = ModalBridge::available_of(bridge);
     let modal_floor = modal.mode_count();
     let modal_selection = modal.selection.clone();
@@ -363,7 +359,6 @@ pub(super) fn keep_rails_flexibility(
             }
         };
     }
-    let corrected = checked.corrects_contacts();
     let grown = checked.mode_count() > modal_floor;
     checked.selection = modal_selection;
     modal = checked;
@@ -409,9 +404,6 @@ pub(super) fn keep_rails_flexibility(
             ));
         }
     }
-    // Without the correction (too many DOFs) the plan measures the share
-    // on a sample instead ([`measure_without_correction`]).
-    debug_assert!(corrected || share.is_none());
     Some(modal)
 }
 
