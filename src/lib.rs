@@ -58,6 +58,7 @@
 
 #![warn(missing_docs)]
 
+pub mod advice;
 pub mod atomic_file;
 pub mod bridge;
 pub mod contact;

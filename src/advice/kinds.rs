@@ -1,0 +1,219 @@
+//! Every advice id vbi makes, with its documentation: `docs/advice.md` is
+//! generated from [`KINDS`]. An id is never renamed (scenes' `allow` lists
+//! and users' tools name it); a new one is added here and to [`KINDS`].
+
+use super::{Kind, Severity};
+
+/// A bare-number speed faster than any wheeled vehicle in service.
+pub const IMPLAUSIBLE_SPEED: Kind = Kind {
+    id: "implausible-speed",
+    severity: Severity::Warning,
+    meaning: "a speed written as a bare number is faster than any wheeled vehicle in service \
+              (130 m/s, 468 km/h)",
+    why: "speeds are in m/s; a km/h value typed without its unit runs the vehicle 3.6 times \
+          too fast, and the run looks valid",
+    fix: "write the unit: `speed: 250 km/h`, or `speed: 238.9 m/s` if that speed is meant (a \
+          speed with its unit is taken as meant and draws no warning)",
+    example: "`vehicles: [{type: moving_force, loads: [100 kN], speed: 250}]`",
+};
+
+/// An acceleration along the path above what a vehicle on wheels reaches.
+pub const IMPLAUSIBLE_ACCELERATION: Kind = Kind {
+    id: "implausible-acceleration",
+    severity: Severity::Warning,
+    meaning: "a vehicle's acceleration along its path is above 10 m/s² (about 1 g of braking)",
+    why: "no vehicle on wheels brakes or accelerates that hard; the value is probably in the \
+          wrong unit",
+    fix: "give `acceleration` in m/s² (trains brake at 1–2.5 m/s², cars at up to about 9 m/s²)",
+    example: "`acceleration: -25` on a rail car",
+};
+
+/// An FRA track class run faster than it is maintained for.
+pub const FRA_CLASS_TOO_SLOW: Kind = Kind {
+    id: "fra-class-too-slow",
+    severity: Severity::Warning,
+    meaning: "a vehicle runs faster than the FRA track class's maximum speed (49 CFR 213.9(a), \
+              213.307(a))",
+    why: "the spectrum is that of a rougher line than such a train runs on: the response is \
+          that of a line that would not be kept for the speed",
+    fix: "take the class the speed needs (class 6 allows 110 mph), or the German low- and \
+          high-interference spectra (`type: german`) for high-speed lines",
+    example: "`surface: {type: fra, class: 4}` under a train at 200 km/h",
+};
+
+/// A spectrum's run-in fade that reaches onto the bridge.
+pub const RUN_IN_ON_BRIDGE: Kind = Kind {
+    id: "run-in-on-bridge",
+    severity: Severity::Warning,
+    meaning: "a vehicle starts inside the surface's run-in, so the roughness fades in on the \
+              bridge",
+    why: "the bridge's first metres carry less than the full roughness: the response is \
+          below the spectrum's",
+    fix: "start every vehicle at or before x = −run_in (leave `start_position` and \
+          `entry_time` out to have it placed there)",
+    example: "`start_position: 0` with `surface: {type: iso8608, class: B}`",
+};
+
+/// A measured profile with points closer than a wheel travels in one step.
+pub const MEASURED_PROFILE_FINER_THAN_STEP: Kind = Kind {
+    id: "measured-profile-finer-than-step",
+    severity: Severity::Warning,
+    meaning: "a measured profile's points are closer than a wheel travels in one time step",
+    why: "the wheels see the profile only at the steps and miss the features between them",
+    fix: "set `solver.time_step` to at most the spacing divided by the speed",
+    example: "a profile sampled every 1 mm under a vehicle at 30 m/s with Δt = 1e-4 s",
+};
+
+/// A modes cache file that was not used.
+pub const MODES_CACHE_REJECTED: Kind = Kind {
+    id: "modes-cache-rejected",
+    severity: Severity::Note,
+    meaning: "the model's modes cache file was not used and the modes were solved afresh",
+    why: "the result is right (the modes were solved again); the run only took longer",
+    fix: "nothing to do: the cache was rewritten; if this repeats, the cache folder is shared \
+          by models that differ",
+    example: "a cache file edited by hand",
+};
+
+/// The EMBS small parameter ε is not small.
+pub const EMBS_EPSILON_NOT_SMALL: Kind = Kind {
+    id: "embs-epsilon-not-small",
+    severity: Severity::Warning,
+    meaning: "the EMBS expansion's small parameter ε = ω_p/ω_B is above 0.5 in a direction",
+    why: "the decoupled answer's error grows like ε² (first order) or ε (zero order): it may \
+          be far from the coupled one",
+    fix: "check with `solver.compare: true`, or use `method: coupled`",
+    example: "a light bridge under a heavy train with `method: embs`",
+};
+
+/// The EMBS a-posteriori check finds a large first-order part.
+pub const EMBS_FIRST_ORDER_LARGE: Kind = Kind {
+    id: "embs-first-order-large",
+    severity: Severity::Warning,
+    meaning: "the EMBS first-order part is large against the zero order's dynamics for some \
+              quantities",
+    why: "the measured error against `coupled` grows with that ratio η; above 1 the expansion \
+          does not converge",
+    fix: "check with `solver.compare: true`, or use `method: coupled`",
+    example: "`method: embs` where ε is near 1",
+};
+
+/// The automatic mode choice is not verified with a zero entry length.
+pub const AUTOMATIC_MODES_UNVERIFIED: Kind = Kind {
+    id: "automatic-modes-unverified",
+    severity: Severity::Warning,
+    meaning: "the automatic mode choice is not verified against its 0.5 % target with \
+              `bridge.entry_length: 0`",
+    why: "each axle puts its whole load on a free rail end in one instant, which rings track \
+          modes above the cut (rail displacement 3.7 % off on the shipped \
+          viaduct-2span-axle-loads)",
+    fix: "check the run with `vbi converge`, set `bridge.modes`, or let the load enter over \
+          `bridge.entry_length` (default 3 m)",
+    example: "an imported viaduct with `entry_length: 0`",
+};
+
+/// The automatic modes stopped at the limits.
+pub const AUTOMATIC_MODES_AT_LIMITS: Kind = Kind {
+    id: "automatic-modes-at-limits",
+    severity: Severity::Warning,
+    meaning: "the automatic modes stop at `limits.modes` or `limits.eigen_work` before they \
+              carry the rails' flexibility under the wheels",
+    why: "the contact forces, rail records and accelerations are not converged at the kept \
+          modes",
+    fix: "raise `limits.modes` and `limits.eigen_work` and run with `--trust-limits` (or \
+          `--allow-large`), or set `bridge.modes` and check with `vbi converge`",
+    example: "`vbi generate viaduct --spans 2` under a `rail_car` with nothing else set",
+};
+
+/// The kept modes leave out the rails' flexibility and nothing corrects it.
+pub const RAILS_FLEXIBILITY_LEFT_OUT: Kind = Kind {
+    id: "rails-flexibility-left-out",
+    severity: Severity::Warning,
+    meaning: "the bridge modes leave out a share of the rails' static flexibility under a \
+              wheel, and the contacts carry no static correction for it",
+    why: "the wheels ride on rails stiffer than the model's: contact forces, rail records and \
+          accelerations are not converged",
+    fix: "keep more modes (`bridge.modes`) and check with `vbi converge`",
+    example: "scenarios/full-scale/embs-viaduct-30span-ave-s103-train.yaml (modes to 15 Hz)",
+};
+
+/// A deck-acceleration filter above the kept modes.
+pub const ACCELERATION_FILTER_ABOVE_MODES: Kind = Kind {
+    id: "acceleration-filter-above-modes",
+    severity: Severity::Warning,
+    meaning: "a deck-acceleration record sums every mode up to its cut-off (EN 1990 \
+              A2.4.4.2.1), but the bridge keeps fewer modes than it has below the cut-off",
+    why: "the modes between the kept top and the filter are missing from the sum: the peak \
+          acceleration is too low (11 % on HSLM-A1 over a 15 m span with one mode kept)",
+    fix: "keep the modes up to the filter (`bridge.modes: {max_frequency: F}` with F the \
+          filter, or leave `bridge.modes` out), or lower the record's `max_frequency` if a \
+          lower filter is meant",
+    example: "`modes: {max_frequency: 30}` on a bridge whose third mode is at 69 Hz, with a \
+              `bridge_acceleration` record",
+};
+
+/// Ground motion that still shakes when the run ends.
+pub const GROUND_MOTION_AFTER_RUN: Kind = Kind {
+    id: "ground-motion-after-run",
+    severity: Severity::Warning,
+    meaning: "a ground-motion record still shakes when the run ends",
+    why: "the bridge's response to it, and every absolute acceleration, may peak after the run",
+    fix: "set `solver.free_vibration` so the run lasts to the record's end",
+    example: "examples/seismic-crossing.yaml",
+};
+
+/// A contact force that peaks at a harmonic surface's entrance kick.
+pub const HARMONIC_ENTRANCE_KICK: Kind = Kind {
+    id: "harmonic-entrance-kick",
+    severity: Severity::Warning,
+    meaning: "a contact force is largest at the entrance of a harmonic surface that starts \
+              with a step in elevation or slope",
+    why: "that kick, not the crossing, is the peak",
+    fix: "start the surface level and flat (phase 0 or 180° starts it level; a step in slope \
+          remains), or read the peak past the entrance",
+    example: "`surface: {type: harmonic, amplitude: 4 mm, wavelength: 1.5, phase: 90 deg}`",
+};
+
+/// A contact force that peaks on an imported track's entry or exit ramp.
+pub const CONTACT_PEAK_ON_RAIL_END: Kind = Kind {
+    id: "contact-peak-on-rail-end",
+    severity: Severity::Warning,
+    meaning: "a contact force is largest on an imported track's entry or exit ramp, within \
+              `bridge.entry_length` of the model's free rail end",
+    why: "the free rail end is the model's, not the line's: the peak is an artefact of the \
+          model's end",
+    fix: "read the peak away from the track's ends (history.csv), or extend the model's \
+          approach track",
+    example: "tests/golden: embs-viaduct-ave-s103-quake (lateral force at x = 38.6 m of 39 m)",
+};
+
+/// A bridge response largest at the very end of its record.
+pub const RUN_ENDS_AT_PEAK: Kind = Kind {
+    id: "run-ends-at-peak",
+    severity: Severity::Warning,
+    meaning: "a bridge response is largest at the very end of the record",
+    why: "it was still growing when the record ended, so its peak comes later (above the \
+          critical speed the largest deflection comes in free vibration)",
+    fix: "record longer with `solver.free_vibration`",
+    example: "a moving force above a beam's critical speed with `free_vibration: 0`",
+};
+
+/// Every kind, in the order of the pipeline (scene, plan, run).
+pub const KINDS: &[Kind] = &[
+    IMPLAUSIBLE_SPEED,
+    IMPLAUSIBLE_ACCELERATION,
+    FRA_CLASS_TOO_SLOW,
+    RUN_IN_ON_BRIDGE,
+    MEASURED_PROFILE_FINER_THAN_STEP,
+    MODES_CACHE_REJECTED,
+    EMBS_EPSILON_NOT_SMALL,
+    EMBS_FIRST_ORDER_LARGE,
+    AUTOMATIC_MODES_UNVERIFIED,
+    AUTOMATIC_MODES_AT_LIMITS,
+    RAILS_FLEXIBILITY_LEFT_OUT,
+    ACCELERATION_FILTER_ABOVE_MODES,
+    GROUND_MOTION_AFTER_RUN,
+    HARMONIC_ENTRANCE_KICK,
+    CONTACT_PEAK_ON_RAIL_END,
+    RUN_ENDS_AT_PEAK,
+];
