@@ -83,6 +83,11 @@ pub struct Advice {
     /// set, the advice no longer counts as a warning.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowed: Option<String>,
+    /// In a study's advice: the points (runs) it was made at, in study
+    /// order, labelled as the study table labels them; the message and
+    /// figures are those of the first. Empty for a single run.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub points: Vec<String>,
 }
 
 impl Advice {
@@ -96,6 +101,7 @@ impl Advice {
             help: None,
             figures: BTreeMap::new(),
             allowed: None,
+            points: Vec::new(),
         }
     }
 
@@ -133,6 +139,15 @@ impl Advice {
             text.push_str("; ");
             text.push_str(help);
         }
+        match self.points.as_slice() {
+            [] => {}
+            [one] => text.push_str(&format!(" (at {one})")),
+            [first, rest @ ..] => text.push_str(&format!(
+                " (at {first} and {} more point{}: summary.json lists them)",
+                rest.len(),
+                if rest.len() == 1 { "" } else { "s" }
+            )),
+        }
         text
     }
 }
@@ -164,6 +179,36 @@ pub fn kind(id: &str) -> Option<&'static Kind> {
 /// ([`Advice::is_denied_warning`]).
 pub fn denied_warnings(advice: &[Advice]) -> usize {
     advice.iter().filter(|a| a.is_denied_warning()).count()
+}
+
+/// A study's advice from its points' (label, advice) in study order, after
+/// the study's own (`scene`, made once for the whole study): one entry per
+/// id, the first point's message and figures, every point it was made at
+/// in [`Advice::points`].
+pub fn gather<'a>(
+    scene: Vec<Advice>,
+    points: impl IntoIterator<Item = (String, &'a [Advice])>,
+) -> Vec<Advice> {
+    let mut out = scene;
+    let own = out.len();
+    for (label, advice) in points {
+        for a in advice {
+            match out[own..].iter_mut().find(|o| o.id == a.id) {
+                Some(o) => o.points.push(label.clone()),
+                None => {
+                    let mut first = a.clone();
+                    first.points = vec![label.clone()];
+                    out.push(first);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Each piece of `advice` as the command line prints it ([`Advice::text`]).
+pub fn texts(advice: &[Advice]) -> Vec<String> {
+    advice.iter().map(Advice::text).collect()
 }
 
 /// `docs/advice.md`: every advice id with its meaning, why it matters, how

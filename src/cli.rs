@@ -34,6 +34,11 @@ pub(super) struct Cli {
     /// and no absolute path.
     #[arg(long, global = true, value_name = "DIR")]
     pub(super) data_dir: Vec<PathBuf>,
+    /// Fail with exit code 4 when the scene or its run draws a warning the
+    /// scene does not allow (`allow: [{id, reason}]`; the ids are in
+    /// docs/advice.md). The results are written all the same.
+    #[arg(long, global = true)]
+    pub(super) deny_warnings: bool,
 }
 
 #[derive(Debug, Subcommand)]
@@ -93,6 +98,15 @@ pub(super) enum Command {
         /// runs than N, or N exceeds `limits.study_points`.
         #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
         shards: Option<u64>,
+    },
+    /// Explain an advice id (a warning or note vbi makes), or list them all
+    /// (with --markdown: the reference, docs/advice.md).
+    Advice {
+        /// The id, e.g. `run-ends-at-peak`. Without it: every id.
+        id: Option<String>,
+        /// Print the whole reference (Markdown).
+        #[arg(long, conflicts_with = "id")]
+        markdown: bool,
     },
     /// Print the JSON Schema of the scenario format (with --markdown: the
     /// key reference, docs/format.md, generated from it).

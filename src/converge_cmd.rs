@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::run_cmd::{default_out, load_error};
-use super::{EXIT_FAILED, EXIT_INVALID, emit};
+use super::{EXIT_FAILED, EXIT_INVALID, deny_warnings, emit, print_advice_located};
 use vbi::plan;
 use vbi::scenario::LoadError;
 
@@ -105,10 +105,23 @@ pub(super) fn converge(
         errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }
+    // The reference's advice and the cheapest run's: what the answer rests on.
+    let mut advice = study.reference.advice.clone();
+    if let Some(cheapest) = study.cheapest_run() {
+        advice.extend(
+            cheapest
+                .advice
+                .iter()
+                .filter(|a| !advice.contains(a))
+                .cloned()
+                .collect::<Vec<_>>(),
+        );
+    }
+    print_advice_located(file, &advice);
     if !quiet {
         errln!("results in {}", out.display());
     }
-    ExitCode::SUCCESS
+    deny_warnings(&advice, ExitCode::SUCCESS)
 }
 
 /// The study as a table on stdout: one row per run, then the observed
@@ -155,6 +168,15 @@ pub(super) fn print_convergence(study: &vbi::study::converge::Convergence) {
         match &run.errors {
             Err(message) => outln!("  failed: {message}"),
             Ok(_) => outln!(),
+        }
+        let warned: Vec<&str> = run
+            .advice
+            .iter()
+            .filter(|a| a.is_denied_warning())
+            .map(|a| a.id.as_str())
+            .collect();
+        if !warned.is_empty() {
+            outln!("{:<width$}   warns: {}", "", warned.join(", "));
         }
     }
     let names = study.quantities();

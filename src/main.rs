@@ -61,11 +61,124 @@ macro_rules! errln {
     ($($arg:tt)*) => { emit(true, format_args!("{}\n", format_args!($($arg)*))) };
 }
 
+/// Set once from `--deny-warnings`: every command that makes advice fails
+/// with [`EXIT_WARNINGS`] on a warning the scene does not allow.
+static DENY_WARNINGS: AtomicBool = AtomicBool::new(false);
+
+/// Prints each piece of `advice` about `file` on stderr, rustc-style: the
+/// id in brackets, where (key path) the cause is, the message and its help;
+/// advice the scene allows in one line with its reason.
+fn print_advice(file: &str, advice: &[vbi::advice::Advice]) {
+    print_advice_in(file, None, advice);
+}
+
+/// [`print_advice`] with each key path also shown as `file:line:col` in
+/// the scene file `path` (read again, a regular file only, size-checked).
+fn print_advice_located(path: &Path, advice: &[vbi::advice::Advice]) {
+    let source = if advice.is_empty() || !path.is_file() {
+        None
+    } else {
+        vbi::scenario::read_source(path).ok().map(|(text, _)| text)
+    };
+    print_advice_in(&path.display().to_string(), source.as_deref(), advice);
+}
+
+fn print_advice_in(file: &str, source: Option<&str>, advice: &[vbi::advice::Advice]) {
+    for a in advice {
+        let word = a.severity.word();
+        let at = a
+            .location
+            .as_deref()
+            .map(|l| {
+                let place = source
+                    .and_then(|text| vbi::scenario::checker::locate_in(text, l))
+                    .map(|loc| format!(":{loc}"))
+                    .unwrap_or_default();
+                format!("{place} ({l})")
+            })
+            .unwrap_or_default();
+        if let Some(reason) = &a.allowed {
+            errln!(
+                "note[{}]: {file}{at}: allowed by the scene: {}",
+                a.id,
+                vbi::scenario::diagnostic::escaped(reason)
+            );
+            continue;
+        }
+        let mut text = a.message.clone();
+        match a.points.as_slice() {
+            [] => {}
+            [one] => text.push_str(&format!(" (at {one})")),
+            [first, rest @ ..] => text.push_str(&format!(
+                " (at {first} and {} more: summary.json lists them)",
+                rest.len()
+            )),
+        }
+        errln!("{word}[{}]: {file}{at}: {text}", a.id);
+        if let Some(help) = &a.help {
+            errln!("  = help: {help}");
+        }
+    }
+}
+
+/// `code`, or [`EXIT_WARNINGS`] where `code` is success, `--deny-warnings`
+/// is set and `advice` holds a warning the scene does not allow.
+fn deny_warnings(advice: &[vbi::advice::Advice], code: ExitCode) -> ExitCode {
+    let denied = vbi::advice::denied_warnings(advice);
+    if code != ExitCode::SUCCESS || denied == 0 || !DENY_WARNINGS.load(Ordering::Relaxed) {
+        return code;
+    }
+    errln!(
+        "error: {denied} warning{} denied by `--deny-warnings` (allow one in the scene with \
+         `allow: [{{id: ID, reason: \"...\"}}]`)",
+        if denied == 1 { "" } else { "s" }
+    );
+    ExitCode::from(EXIT_WARNINGS)
+}
+
+/// `vbi advice [ID] [--markdown]`: one id explained, every id listed, or
+/// the whole reference.
+fn advice_cmd(id: Option<&str>, markdown: bool) -> ExitCode {
+    use vbi::advice::{KINDS, kind, reference_markdown};
+    if markdown {
+        out!("{}", reference_markdown());
+        return ExitCode::SUCCESS;
+    }
+    let Some(id) = id else {
+        for k in KINDS {
+            outln!("{:<34} {:<8} {}", k.id, k.severity.word(), k.meaning);
+        }
+        return ExitCode::SUCCESS;
+    };
+    match kind(id) {
+        Some(k) => {
+            outln!("{} ({})\n\n{}\n", k.id, k.severity.word(), k.meaning);
+            outln!("why it matters: {}\n", k.why);
+            outln!("how to fix it: {}\n", k.fix);
+            outln!("example: {}", k.example);
+            ExitCode::SUCCESS
+        }
+        None => {
+            errln!(
+                "error: `{}` is not an advice id",
+                vbi::scenario::diagnostic::escaped(id)
+            );
+            let help = vbi::scenario::diagnostic::did_you_mean(id, KINDS.iter().map(|k| k.id))
+                .unwrap_or_else(|| "`vbi advice` lists every id".to_string());
+            errln!("  = help: {help}");
+            ExitCode::from(EXIT_INVALID)
+        }
+    }
+}
+
 const EXIT_FAILED: u8 = 1;
 const EXIT_INVALID: u8 = 2;
 /// A check ran and its verdict is "fails" (an HSLM resonance check above
 /// the deck-acceleration limit): distinct from a failed run and bad input.
 const EXIT_CHECK_FAILED: u8 = 3;
+/// The run or check succeeded, but `--deny-warnings` was given and it made
+/// a warning the scene does not allow (docs/advice.md).
+const EXIT_WARNINGS: u8 = 4;
 
 // After the macros, which they use.
 mod cli;
@@ -86,6 +199,7 @@ use studies::{merge, run_sample, run_shard};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    DENY_WARNINGS.store(cli.deny_warnings, Ordering::Relaxed);
     // The modes cache: the one given, else `.vbi-cache` in the output
     // folder of a command that has one (nothing is written outside it).
     let cache_in = |out: Option<&Path>| -> Option<PathBuf> {
@@ -137,6 +251,7 @@ fn main() -> ExitCode {
             force,
         } => merge(&parts, &out, &options, quiet, force),
         Command::Check { files, shards } => check(&files, &load, shards, cli.allow_large),
+        Command::Advice { id, markdown } => advice_cmd(id.as_deref(), markdown),
         Command::Schema { markdown } => {
             let schema = vbi::schema::schema_json();
             if markdown {

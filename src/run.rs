@@ -162,6 +162,7 @@ fn run_scene(
                 .map(|(h, coupled_time)| (h, *coupled_time, solve_time)),
         ));
     }
+    summary.advice = report::advice::advice_of(&scenario, &summary);
     Ok(Outcome {
         model,
         history,

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::studies::{self, write_study};
-use super::{EXIT_FAILED, EXIT_INVALID, emit};
+use super::{EXIT_FAILED, EXIT_INVALID, deny_warnings, emit, print_advice_located};
 use vbi::plan;
 use vbi::scenario::LoadError;
 
@@ -52,9 +52,10 @@ pub(super) fn run(
     }
     loaded.scenario.source_file = Some(source);
     let scenario = loaded.scenario.clone();
-    for warning in vbi::report::advice::scene_warnings(&scenario) {
-        errln!("warning: {}: {warning}", file.display());
-    }
+    // The scene's own advice before the work, so that a long run's
+    // warning is read before it ends; the run's after it.
+    let before = vbi::plan::advice::scene_advice(&scenario);
+    print_advice_located(file, &before);
     let bar = if quiet {
         ProgressBar::hidden()
     } else {
@@ -81,15 +82,24 @@ pub(super) fn run(
     bar.finish_and_clear();
     let outcome = match results {
         vbi::execute::Results::Scene(outcome) => outcome,
-        study => return write_study(&out, &scenario, &study, quiet),
+        study => {
+            let code = write_study(&out, &scenario, &study, quiet);
+            let advice = study.advice(&scenario);
+            print_advice_located(file, &advice[before.len().min(advice.len())..]);
+            return deny_warnings(&advice, code);
+        }
     };
     if let Err(e) = vbi::run::write_results_with(&out, &scenario, &outcome, svg) {
         errln!("error: {e}");
         return ExitCode::from(EXIT_FAILED);
     }
-    for warning in vbi::report::advice::run_warnings(&scenario, &outcome.summary) {
-        errln!("warning: {}: {warning}", file.display());
-    }
+    let advice = &outcome.summary.advice;
+    let after: Vec<_> = advice
+        .iter()
+        .filter(|a| !before.contains(a))
+        .cloned()
+        .collect();
+    print_advice_located(file, &after);
     if !quiet {
         let s = &outcome.summary;
         errln!(
@@ -112,7 +122,7 @@ pub(super) fn run(
         }
         errln!("results in {}", out.display());
     }
-    ExitCode::SUCCESS
+    deny_warnings(advice, ExitCode::SUCCESS)
 }
 
 pub(super) fn check(
@@ -122,6 +132,7 @@ pub(super) fn check(
     allow_large: bool,
 ) -> ExitCode {
     let mut invalid = false;
+    let mut advice = Vec::new();
     for file in files {
         match load(file) {
             Ok(loaded) => {
@@ -140,9 +151,9 @@ pub(super) fn check(
                     continue;
                 }
                 outln!("{}: ok", file.display());
-                for warning in vbi::report::advice::scene_warnings(&loaded.scenario) {
-                    errln!("warning: {}: {warning}", file.display());
-                }
+                let own = vbi::plan::advice::scene_advice(&loaded.scenario);
+                print_advice_located(file, &own);
+                advice.extend(own);
             }
             Err(e) => {
                 invalid = true;
@@ -153,6 +164,6 @@ pub(super) fn check(
     if invalid {
         ExitCode::from(EXIT_INVALID)
     } else {
-        ExitCode::SUCCESS
+        deny_warnings(&advice, ExitCode::SUCCESS)
     }
 }

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::run_cmd::{default_out, load_error, run};
-use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, emit};
+use super::{EXIT_CHECK_FAILED, EXIT_FAILED, EXIT_INVALID, deny_warnings, emit, print_advice};
 use vbi::plan;
 use vbi::scenario::{self, LoadError};
 
@@ -36,7 +36,8 @@ pub(super) fn write_study(
         Results::ResonanceCheck(check) if !check.passes() => ExitCode::from(EXIT_CHECK_FAILED),
         _ => ExitCode::SUCCESS,
     };
-    if quiet {
+    // `--quiet` hides progress and chatter, never a verdict.
+    if quiet && !matches!(results, Results::ResonanceCheck(_)) {
         return verdict;
     }
     match results {
@@ -64,6 +65,9 @@ pub(super) fn write_study(
                 check.wall_time
             );
             errln!("{}", check.verdict_table().trim_end());
+            if quiet {
+                return verdict;
+            }
         }
         Results::SeparationMap(map) => errln!(
             "{}: separation map of {} points, {} separated, {:.2} s",
@@ -310,7 +314,10 @@ pub(super) fn merge(
         return ExitCode::from(EXIT_INVALID);
     }
     merged.loaded.scenario.source_file = Some(source);
-    write_study(out, &merged.loaded.scenario, &merged.results, quiet)
+    let code = write_study(out, &merged.loaded.scenario, &merged.results, quiet);
+    let advice = merged.results.advice(&merged.loaded.scenario);
+    print_advice(&merged.scenario_file, &advice);
+    deny_warnings(&advice, code)
 }
 
 #[cfg(test)]

@@ -196,6 +196,10 @@ fn run<'py>(
     };
     let out = PyDict::new(py);
     out.set_item("resolved", vbi::run::resolved_yaml(&scenario))?;
+    out.set_item(
+        "advice",
+        serde_json::to_string(&results.advice(&scenario)).expect("advice serialises"),
+    )?;
     match results {
         Results::Scene(outcome) => {
             out.set_item("kind", "scene")?;

@@ -101,7 +101,12 @@ def test_python_runs_while_a_scene_computes():
 def test_keyboard_interrupt_stops_a_study():
     """Ctrl-C also stops a study, whose runs go on worker threads: the
     caller's thread checks for it and cancels every run in flight."""
-    scene = (SCENARIOS / "lcp-fig6-smooth.yaml").read_text()  # 400 runs
+    # The shipped 400-run map takes 0.6 s on our machine and finished before
+    # the 0.5 s timer on CI's faster one: 1,600 runs at a 5x finer step
+    # (about 12 s uninterrupted) leave no such race.
+    scene = (SCENARIOS / "lcp-fig6-smooth.yaml").read_text()
+    scene = scene.replace("count: 20", "count: 40").replace("time_step: 1.0e-4", "time_step: 2.0e-5")
+    assert scene.count("count: 40") == 2 and "time_step: 2.0e-5" in scene
     timer = threading.Timer(0.5, _thread.interrupt_main)
     start = time.perf_counter()
     timer.start()

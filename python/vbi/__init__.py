@@ -15,7 +15,11 @@ as ``vbi run`` on the command line:
 Units are SI throughout; a DataFrame's units are in ``df.attrs["units"]``.
 A scene that fails its checks raises :class:`ScenarioError` with every
 diagnostic. Runs release the GIL (threads run scenes in parallel) and stop
-on Ctrl-C with ``KeyboardInterrupt``. Nothing is printed.
+on Ctrl-C with ``KeyboardInterrupt``. Nothing is printed: what vbi knows
+about a result (its warnings and notes, docs/advice.md) is in
+``result.advice`` and each warning is raised through :func:`warnings.warn`
+as a :class:`VbiWarning` (so ``pytest -W error`` and notebooks show it);
+``run(scene, strict=True)`` raises :class:`VbiWarningError` instead.
 """
 
 from __future__ import annotations
@@ -24,6 +28,7 @@ import io
 import json
 import os
 import tempfile
+import warnings
 from dataclasses import dataclass, field
 from html import escape
 from pathlib import Path
@@ -36,11 +41,14 @@ from . import _vbi
 from ._dict_yaml import path_at, to_yaml
 
 __all__ = [
+    "Advice",
     "Diagnostic",
     "Modes",
     "Result",
     "ScenarioError",
     "StudyResult",
+    "VbiWarning",
+    "VbiWarningError",
     "check",
     "modes",
     "run",
@@ -169,6 +177,77 @@ def _summary_table(summary: Mapping[str, Any]) -> str:
     return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
 
 
+class VbiWarning(UserWarning):
+    """A warning vbi made about a scene or its result (docs/advice.md)."""
+
+
+@dataclass(frozen=True)
+class Advice:
+    """One piece of what vbi knows about a scene or a result.
+
+    Attributes:
+        id: the stable id (docs/advice.md), e.g. ``run-ends-at-peak``.
+        severity: ``"warning"`` or ``"note"``.
+        location: the key path of the cause (``record.midspan``), or ``None``.
+        message: what vbi found.
+        help: what to change, or ``None``.
+        figures: the measured figures the message quotes, by name (SI).
+        allowed: the scene's reason for allowing it (``allow:``), or ``None``.
+        points: in a study, the points it was made at.
+    """
+
+    id: str
+    severity: str
+    message: str
+    location: Optional[str] = None
+    help: Optional[str] = None
+    figures: Dict[str, float] = field(default_factory=dict)
+    allowed: Optional[str] = None
+    points: List[str] = field(default_factory=list)
+
+    @classmethod
+    def _from_json(cls, raw: Mapping[str, Any]) -> "Advice":
+        return cls(
+            id=raw["id"],
+            severity=raw["severity"],
+            message=raw["message"],
+            location=raw.get("location"),
+            help=raw.get("help"),
+            figures=dict(raw.get("figures", {})),
+            allowed=raw.get("allowed"),
+            points=list(raw.get("points", [])),
+        )
+
+    @property
+    def counts(self) -> bool:
+        """A warning the scene does not allow (what ``strict=True`` refuses)."""
+        return self.severity == "warning" and self.allowed is None
+
+    def __str__(self) -> str:
+        text = f"[{self.id}] {self.message}"
+        if self.help:
+            text += f"; help: {self.help}"
+        if self.points:
+            text += f" (at {self.points[0]}"
+            text += f" and {len(self.points) - 1} more)" if len(self.points) > 1 else ")"
+        return text
+
+
+class VbiWarningError(RuntimeError):
+    """``run(..., strict=True)`` made warnings the scene does not allow.
+
+    Attributes:
+        advice: those warnings.
+        result: the complete result, computed all the same.
+    """
+
+    def __init__(self, advice: List[Advice], result: Any):
+        self.advice = advice
+        self.result = result
+        lines = "\n".join(f"  {a}" for a in advice)
+        super().__init__(f"{len(advice)} warning(s) (strict=True):\n{lines}")
+
+
 @dataclass
 class Result:
     """A single scene's results.
@@ -186,6 +265,8 @@ class Result:
             scene asks for them, else ``None``.
         daf_table: the DAF per span and girder line (``daf_table.csv``) on a
             plate deck, else ``None``.
+        advice: what vbi knows about the scene and its result (warnings and
+            notes, :class:`Advice`), as ``summary["advice"]`` holds it.
     """
 
     name: str
@@ -195,6 +276,7 @@ class Result:
     separation: Optional[pd.DataFrame] = None
     envelopes: Optional[pd.DataFrame] = None
     daf_table: Optional[pd.DataFrame] = None
+    advice: List[Advice] = field(default_factory=list)
 
     @property
     def units(self) -> Dict[str, str]:
@@ -232,6 +314,8 @@ class StudyResult:
         tables: every CSV table of the study by file stem (``study``,
             ``envelopes``, ``separation``, ``resonance``,
             ``resonance_trains``), each equal to the file ``vbi run`` writes.
+        advice: the study's advice (its scene's, then its points' by id, each
+            with the points it was made at in ``Advice.points``).
     """
 
     name: str
@@ -239,6 +323,7 @@ class StudyResult:
     summary: Dict[str, Any]
     resolved: str
     tables: Dict[str, pd.DataFrame] = field(default_factory=dict)
+    advice: List[Advice] = field(default_factory=list)
 
     @property
     def table(self) -> pd.DataFrame:
@@ -309,7 +394,9 @@ def _history(raw: Mapping[str, Any]) -> pd.DataFrame:
     return frame
 
 
-def run(scene: Scene, *, progress: Optional[Progress] = None) -> Union[Result, StudyResult]:
+def run(
+    scene: Scene, *, progress: Optional[Progress] = None, strict: bool = False
+) -> Union[Result, StudyResult]:
     """Runs ``scene`` (a path, YAML text or a dict) and returns its results:
     a :class:`Result` for a single scene, a :class:`StudyResult` for a
     study.
@@ -320,7 +407,22 @@ def run(scene: Scene, *, progress: Optional[Progress] = None) -> Union[Result, S
     ``KeyboardInterrupt``. Raises :class:`ScenarioError` for an invalid
     scene, ``OSError`` for an unreadable file and ``RuntimeError`` when the
     run fails (e.g. the solution diverged).
+
+    Every warning in ``result.advice`` that the scene does not allow is
+    raised through :func:`warnings.warn` as a :class:`VbiWarning`; with
+    ``strict=True`` the run raises :class:`VbiWarningError` (holding the
+    result) instead, as ``vbi run --deny-warnings`` exits with code 4.
     """
+    result = _run(scene, progress)
+    denied = [a for a in result.advice if a.counts]
+    if strict and denied:
+        raise VbiWarningError(denied, result)
+    for a in denied:
+        warnings.warn(str(a), VbiWarning, stacklevel=2)
+    return result
+
+
+def _run(scene: Scene, progress: Optional[Progress]) -> Union[Result, StudyResult]:
     source = _source(scene)
     with tempfile.TemporaryDirectory(prefix="vbi-") as workdir:
         try:
@@ -329,6 +431,7 @@ def run(scene: Scene, *, progress: Optional[Progress] = None) -> Union[Result, S
             _raise_invalid(e, source)
             raise  # unreachable
         resolved = raw["resolved"]
+        advice = [Advice._from_json(a) for a in json.loads(raw["advice"])]
         if raw["kind"] == "study":
             folder = Path(workdir)
             summary = json.loads((folder / "summary.json").read_text())
@@ -339,6 +442,7 @@ def run(scene: Scene, *, progress: Optional[Progress] = None) -> Union[Result, S
                 summary=summary,
                 resolved=resolved,
                 tables=tables,
+                advice=advice,
             )
     summary = json.loads(raw["summary"])
     separation = json.loads(raw["separation"])
@@ -350,6 +454,7 @@ def run(scene: Scene, *, progress: Optional[Progress] = None) -> Union[Result, S
         separation=pd.DataFrame(separation) if separation else None,
         envelopes=_read_csv(raw["envelopes_csv"]) if "envelopes_csv" in raw else None,
         daf_table=_read_csv(raw["daf_table_csv"]) if "daf_table_csv" in raw else None,
+        advice=advice,
     )
 
 

@@ -42,6 +42,33 @@ class ScenarioError(ValueError):
     diagnostics: List[Diagnostic]
     def __init__(self, diagnostics: List[Diagnostic]) -> None: ...
 
+class VbiWarning(UserWarning):
+    """A warning vbi made about a scene or its result (docs/advice.md)."""
+
+class Advice:
+    """One piece of what vbi knows about a scene or a result."""
+
+    id: str
+    """Stable id (docs/advice.md)."""
+    severity: str
+    """"warning" or "note"."""
+    message: str
+    location: Optional[str]
+    help: Optional[str]
+    figures: Dict[str, float]
+    allowed: Optional[str]
+    """The scene's reason for allowing it, or None."""
+    points: List[str]
+    """In a study: the points it was made at."""
+    @property
+    def counts(self) -> bool: ...
+
+class VbiWarningError(RuntimeError):
+    """`run(..., strict=True)` made warnings the scene does not allow."""
+
+    advice: List[Advice]
+    result: Union["Result", "StudyResult"]
+
 class Result:
     """A single scene's results."""
 
@@ -55,6 +82,8 @@ class Result:
     separation: Optional[pd.DataFrame]
     envelopes: Optional[pd.DataFrame]
     daf_table: Optional[pd.DataFrame]
+    advice: List[Advice]
+    """Warnings and notes about the scene and its result."""
     @property
     def units(self) -> Dict[str, str]: ...
     def _repr_html_(self) -> str: ...
@@ -67,6 +96,8 @@ class StudyResult:
     summary: Dict[str, Any]
     resolved: str
     tables: Dict[str, pd.DataFrame]
+    advice: List[Advice]
+    """The study's advice, each with the points it was made at."""
     @property
     def table(self) -> pd.DataFrame: ...
     @property
@@ -105,8 +136,11 @@ class Modes:
 def check(scene: Scene) -> str:
     """Checks a scene and returns its resolved YAML; raises ScenarioError."""
 
-def run(scene: Scene, *, progress: Optional[Progress] = ...) -> Union[Result, StudyResult]:
-    """Runs a scene (GIL released, Ctrl-C raises KeyboardInterrupt)."""
+def run(
+    scene: Scene, *, progress: Optional[Progress] = ..., strict: bool = ...
+) -> Union[Result, StudyResult]:
+    """Runs a scene (GIL released, Ctrl-C raises KeyboardInterrupt); each
+    warning is raised as a VbiWarning, or with strict=True as VbiWarningError."""
 
 def modes(scene: Scene) -> Modes:
     """The bridge's natural frequencies and mode shapes."""

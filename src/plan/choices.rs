@@ -46,6 +46,7 @@ pub(crate) fn plan(
         solver_raw,
         newmark,
         free_vibration,
+        allow,
     } = described;
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let minimum = content::minimum_modes(&bridge);
@@ -586,6 +587,7 @@ pub(crate) fn plan(
         source_file: None,
         name: raw.name.clone(),
         description: raw.description.clone(),
+        allow,
         gravity,
         bridge,
         vehicles,

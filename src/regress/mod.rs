@@ -72,9 +72,11 @@ pub fn run_scene(file: &Path, options: &LoadOptions, bins: usize) -> Result<Ran,
     let start = Instant::now();
     let loaded = crate::plan::load_file_with(file, options.clone()).map_err(|e| e.to_string())?;
     let resolved = canonical_scene(&loaded.scenario);
+    let scenario = loaded.scenario.clone();
     let results = crate::execute::execute(loaded, &|_, _| {})
         .map_err(|e| format!("{}: {e}", file.display()))?;
-    let record = Record::new(&scene_key(file), &resolved, &results, bins);
+    let advice = results.advice(&scenario);
+    let record = Record::new(&scene_key(file), &resolved, &results, &advice, bins);
     Ok(Ran {
         resolved,
         record,

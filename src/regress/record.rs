@@ -157,8 +157,18 @@ pub fn strip_comments(resolved: &str) -> String {
 }
 
 impl Record {
-    /// The record of `results`, the scene's resolved YAML being `resolved`.
-    pub fn new(scene: &str, resolved: &str, results: &Results, history_bins: usize) -> Self {
+    /// The record of `results`, the scene's resolved YAML being `resolved`
+    /// and its advice `advice` ([`Results::advice`]): one scalar
+    /// `advice.<id>` per id, its severity (or `allowed: <reason>`) compared
+    /// exactly, so that advice that appears or disappears is a change; the
+    /// messages, whose figures move with the results, are not kept.
+    pub fn new(
+        scene: &str,
+        resolved: &str,
+        results: &Results,
+        advice: &[crate::advice::Advice],
+        history_bins: usize,
+    ) -> Self {
         let (summary, tables) = match results {
             Results::Scene(outcome) => {
                 let mut tables = vec![history_table(&outcome.history, history_bins)];
@@ -197,8 +207,30 @@ impl Record {
                 ],
             ),
         };
+        let mut summary = summary.unwrap_or(Value::Null);
+        if let Some(object) = summary.as_object_mut() {
+            object.remove("advice");
+        }
         let mut scalars = Vec::new();
-        flatten(&summary.unwrap_or(Value::Null), String::new(), &mut scalars);
+        flatten(&summary, String::new(), &mut scalars);
+        let mut ids: Vec<(&str, String)> = advice
+            .iter()
+            .map(|a| {
+                let state = match &a.allowed {
+                    Some(reason) => format!("allowed: {reason}"),
+                    None => a.severity.word().to_string(),
+                };
+                (a.id.as_str(), state)
+            })
+            .collect();
+        ids.sort();
+        ids.dedup_by(|a, b| a.0 == b.0);
+        scalars.extend(ids.into_iter().map(|(id, state)| Scalar {
+            name: format!("advice.{id}"),
+            value: Cell::Exact(state),
+            time: None,
+            position: None,
+        }));
         Record {
             vbi_version: env!("CARGO_PKG_VERSION").into(),
             scene: scene.into(),

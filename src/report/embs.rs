@@ -4,6 +4,7 @@
 
 use serde::Serialize;
 
+use crate::advice::{self, Advice};
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::record::History;
@@ -261,64 +262,93 @@ impl EmbsSummary {
     /// One warning naming the quantities whose first-order ratio η is
     /// above [`FIRST_ORDER_RATIO_WARNING`] (`divergent`: false) or above
     /// [`FIRST_ORDER_RATIO_DIVERGENT`] (true), with their η.
-    fn order_warning(&self, divergent: bool) -> Option<String> {
-        let flagged: Vec<String> = self
+    fn order_advice(&self, divergent: bool) -> Option<Advice> {
+        let flagged: Vec<&OrderCheck> = self
             .orders
             .iter()
             .filter(|o| {
                 let over = o.first_order_ratio > FIRST_ORDER_RATIO_DIVERGENT;
                 o.first_order_ratio > FIRST_ORDER_RATIO_WARNING && over == divergent
             })
-            .map(|o| format!("`{}` {:.2}", o.name, o.first_order_ratio))
             .collect();
         if flagged.is_empty() {
             return None;
         }
-        let list = flagged.join(", ");
-        Some(if divergent {
-            format!(
-                "EMBS a-posteriori check: the first-order part is larger than the zero \
-                 order's dynamics (η > {FIRST_ORDER_RATIO_DIVERGENT}) for {list}: the expansion \
-                 is not converging there and EMBS gives no answer for these quantities; use \
-                 `method: coupled`"
+        let list = flagged
+            .iter()
+            .map(|o| format!("`{}` {:.2}", o.name, o.first_order_ratio))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let largest = flagged
+            .iter()
+            .map(|o| o.first_order_ratio)
+            .fold(0.0, f64::max);
+        let advice = if divergent {
+            Advice::new(
+                &advice::EMBS_FIRST_ORDER_LARGE,
+                format!(
+                    "EMBS a-posteriori check: the first-order part is larger than the zero \
+                     order's dynamics (η > {FIRST_ORDER_RATIO_DIVERGENT}) for {list}: the \
+                     expansion is not converging there and EMBS gives no answer for these \
+                     quantities"
+                ),
             )
+            .help("use `method: coupled`")
         } else {
-            format!(
-                "EMBS a-posteriori check: the first-order part against the zero order's \
-                 dynamics η = max|q⁽¹⁾| / max|q⁽⁰⁾ − q_static| is above \
-                 {FIRST_ORDER_RATIO_WARNING} for {list}; where ε < 1 in every direction the \
-                 measured error against `coupled` reached {ERROR_PER_RATIO} η, where ε ≥ 1 η \
-                 says nothing; check with `solver.compare: true` or use `method: coupled`"
+            Advice::new(
+                &advice::EMBS_FIRST_ORDER_LARGE,
+                format!(
+                    "EMBS a-posteriori check: the first-order part against the zero order's \
+                     dynamics η = max|q⁽¹⁾| / max|q⁽⁰⁾ − q_static| is above \
+                     {FIRST_ORDER_RATIO_WARNING} for {list}; where ε < 1 in every direction the \
+                     measured error against `coupled` reached {ERROR_PER_RATIO} η, where ε ≥ 1 η \
+                     says nothing"
+                ),
             )
-        })
+            .help("check with `solver.compare: true` or use `method: coupled`")
+        };
+        Some(
+            advice
+                .at("solver.method")
+                .figure("largest_first_order_ratio", largest),
+        )
     }
 
-    /// A warning where ε is not small in a direction (the expansion's
-    /// error grows like ε² with the first order, ε without it), naming the
-    /// frequencies it is made of.
-    pub fn warnings(&self) -> Vec<String> {
+    /// Advice where ε is not small in a direction (the expansion's error
+    /// grows like ε² with the first order, ε without it), naming the
+    /// frequencies it is made of, and where the a-posteriori check finds a
+    /// large first order.
+    pub fn advice(&self) -> Vec<Advice> {
         self.scales
             .iter()
             .filter(|s| s.epsilon > SMALL_EPSILON)
             .map(|s| {
-                format!(
-                    "the EMBS {} small parameter ε = ω_p/ω_B = {:.3} is not small (> {SMALL_EPSILON}): \
-                     wheelset on its primary suspension {:.2} Hz (sprung mass per wheel {:.2} Hz) \
-                     against bridge mode {} at {:.2} Hz, the lowest carrying ≥ {:.0} % of the \
-                     contacts' {} static flexibility; the decoupled answer may be far from the \
-                     coupled one: check with `solver.compare: true` or use `method: coupled`",
-                    s.direction,
-                    s.epsilon,
-                    s.wheelset_frequency,
-                    s.sprung_frequency,
-                    s.bridge_mode,
-                    s.bridge_frequency,
-                    100.0 * s.flexibility_threshold,
-                    s.direction,
+                Advice::new(
+                    &advice::EMBS_EPSILON_NOT_SMALL,
+                    format!(
+                        "the EMBS {} small parameter ε = ω_p/ω_B = {:.3} is not small (> \
+                         {SMALL_EPSILON}): wheelset on its primary suspension {:.2} Hz (sprung \
+                         mass per wheel {:.2} Hz) against bridge mode {} at {:.2} Hz, the lowest \
+                         carrying ≥ {:.0} % of the contacts' {} static flexibility; the \
+                         decoupled answer may be far from the coupled one",
+                        s.direction,
+                        s.epsilon,
+                        s.wheelset_frequency,
+                        s.sprung_frequency,
+                        s.bridge_mode,
+                        s.bridge_frequency,
+                        100.0 * s.flexibility_threshold,
+                        s.direction,
+                    ),
                 )
+                .at("solver.method")
+                .help("check with `solver.compare: true` or use `method: coupled`")
+                .figure("epsilon", s.epsilon)
+                .figure("wheelset_frequency_hz", s.wheelset_frequency)
+                .figure("bridge_frequency_hz", s.bridge_frequency)
             })
-            .chain(self.order_warning(false))
-            .chain(self.order_warning(true))
+            .chain(self.order_advice(false))
+            .chain(self.order_advice(true))
             .collect()
     }
 }

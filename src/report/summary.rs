@@ -164,6 +164,10 @@ pub struct Summary {
     /// `solver.compare`, the errors against `coupled` and the speed-up.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub embs: Option<super::embs::EmbsSummary>,
+    /// What vbi knows about this scene and its result: every warning and
+    /// note of the plan and the run ([`crate::advice`], docs/advice.md),
+    /// those the scene allows marked with its reason.
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// The smallest static peak, as a share of the dynamic one, for which a
@@ -352,6 +356,7 @@ impl Summary {
                 Vec::new()
             },
             embs: None,
+            advice: Vec::new(),
         }
     }
 }

@@ -146,3 +146,12 @@ pub(crate) fn check_ratio(ck: &mut Checker<'_>, path: &str, ratio: f64) {
         );
     }
 }
+
+/// Where the key path `path` (the format's syntax: `vehicles[0].speed`)
+/// stands in the scenario text `source`: the deepest node of the path the
+/// text has, or `None` when the text does not parse. For the front ends to
+/// show an advice's location as `file:line:col`.
+pub fn locate_in(source: &str, path: &str) -> Option<super::yaml::Location> {
+    let root = super::yaml::parse(source).ok()??;
+    Some(root.locate(&parse_path(path)))
+}

@@ -242,3 +242,25 @@ impl std::error::Error for Diagnostic {}
 
 #[cfg(test)]
 mod tests;
+
+/// `text` with its control characters (C0, DEL, C1, and U+FFFE/U+FFFF) shown
+/// escaped as rustc shows them (`\u{1b}`, `\n`), so that text from a file
+/// can neither repaint the reader's terminal nor break a line.
+pub fn escaped(text: &str) -> String {
+    if !text.chars().any(needs_escape) {
+        return text.to_string();
+    }
+    text.chars()
+        .map(|c| {
+            if needs_escape(c) {
+                c.escape_debug().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
+fn needs_escape(c: char) -> bool {
+    c.is_control() || c == '\u{fffe}' || c == '\u{ffff}'
+}

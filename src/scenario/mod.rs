@@ -9,6 +9,7 @@
 //! [`load_value`]), which the planning stage ([`crate::plan::plan`])
 //! finishes into a [`resolved::Scenario`].
 
+pub(crate) mod allow;
 pub mod bridges;
 pub mod budget;
 pub(crate) mod cars;

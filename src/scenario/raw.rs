@@ -104,6 +104,22 @@ pub struct ScenarioRaw {
     /// size). Defaults suit a workstation; raise one here when a scene needs it.
     #[serde(default)]
     pub limits: Option<LimitsRaw>,
+    /// Advice ids this scene leaves unheeded, each with the reason
+    /// (docs/advice.md lists the ids): the advice is still made and kept in
+    /// the outputs with the reason, and no longer counts as a warning
+    /// (`--deny-warnings`). Default: none.
+    #[serde(default)]
+    pub allow: Option<Vec<AllowRaw>>,
+}
+
+/// One advice id the scene leaves unheeded.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AllowRaw {
+    /// The advice id (docs/advice.md), e.g. `run-ends-at-peak`.
+    pub id: String,
+    /// Why the advice does not apply to this scene; kept in the outputs.
+    pub reason: String,
 }
 
 /// Wheel–bridge contact model.

@@ -85,6 +85,8 @@ pub(crate) struct Sections {
     pub newmark: Newmark,
     /// Free-vibration time after the last exit, s.
     pub free_vibration: f64,
+    /// The advice ids the scene leaves unheeded, with reasons.
+    pub allow: Vec<crate::advice::Allow>,
 }
 
 /// The format's part of a scene's resolution: every check that needs no
@@ -97,6 +99,7 @@ pub(crate) fn describe(
 ) -> Option<Sections> {
     ck.set_data_access(options.data.clone());
     super::names::check_name(ck, &raw.name);
+    let allow = super::allow::resolve(raw.allow.as_deref(), ck);
     let limits = Limits::resolve(raw.limits.as_ref(), ck);
     let budget = Budget::new(limits, &options);
     // Counts read straight from the file come first: a file with 10⁵ axles
@@ -231,5 +234,6 @@ pub(crate) fn describe(
         solver_raw,
         newmark,
         free_vibration,
+        allow,
     })
 }

@@ -48,6 +48,10 @@ pub struct Scenario {
     /// Free text describing the scene.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
+    /// Advice ids the scene leaves unheeded, with the reasons
+    /// ([`crate::advice::Allow`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub allow: Vec<crate::advice::Allow>,
     /// Gravitational acceleration, m/s².
     pub gravity: f64,
     /// The bridge.

@@ -187,6 +187,9 @@ pub struct RunReport {
     pub wall_time: Option<f64>,
     /// Errors per recorded quantity in scenario order, or why the run failed.
     pub errors: Result<Vec<QuantityError>, String>,
+    /// The run's advice (its summary's, [`crate::advice`]): a run that
+    /// warns is no reference for the cheapest choice without a look.
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 impl RunReport {
@@ -339,6 +342,7 @@ pub fn converge(
         reference_resolution,
         Some((outcome.model.steps, wall_time)),
         Ok(relative_errors(&reference_history, &reference_history, 1)),
+        outcome.summary.advice,
     );
 
     let names: Vec<String> = reference_history
@@ -369,8 +373,9 @@ pub fn converge(
                     &outcome.history,
                     stride,
                 )),
+                outcome.summary.advice,
             ),
-            Err(message) => report(kind, resolution, None, Err(message)),
+            Err(message) => report(kind, resolution, None, Err(message), Vec::new()),
         }
     };
     for (index, &(kind, resolution)) in ladder.iter().enumerate() {
@@ -461,8 +466,10 @@ fn report(
     resolution: Resolution,
     cost: Option<(usize, f64)>,
     errors: Result<Vec<QuantityError>, String>,
+    advice: Vec<crate::advice::Advice>,
 ) -> RunReport {
     RunReport {
+        advice,
         label: resolution.label(),
         ladder,
         time_step: resolution.time_step,
@@ -551,11 +558,12 @@ impl Convergence {
     /// CSV, one row per ladder run × quantity: `label, time_step [s]`,
     /// `modes, steps, wall_time [s]`, `quantity, max_abs_error, rms_error`
     /// (dimensionless fractions), `failure` (the message of a failed run,
-    /// whose other measured fields are empty).
+    /// whose other measured fields are empty), `advice` (the ids of the run's
+    /// warnings, space-separated).
     pub fn to_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
         let header = "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,\
-                      rms_error,failure";
+                      rms_error,failure,advice";
         out.write_record(header.split(','))
             .expect("writing to memory");
         let number = crate::report::number;
@@ -567,12 +575,20 @@ impl Convergence {
                 run.steps.map(|s| s.to_string()).unwrap_or_default(),
                 run.wall_time.map(number).unwrap_or_default(),
             ];
+            // The ids of the run's warnings, space-separated.
+            let warned = run
+                .advice
+                .iter()
+                .filter(|a| a.is_denied_warning())
+                .map(|a| a.id.as_str())
+                .collect::<Vec<_>>()
+                .join(" ");
             for (q, name) in self.quantities().into_iter().enumerate() {
                 let (max_abs, rms, failure) = match &run.errors {
                     Ok(errors) => (number(errors[q].max_abs), number(errors[q].rms), ""),
                     Err(message) => (String::new(), String::new(), message.as_str()),
                 };
-                let tail = [name, &max_abs, &rms, failure];
+                let tail = [name, &max_abs, &rms, failure, &warned];
                 out.write_record(head.iter().map(String::as_str).chain(tail))
                     .expect("writing to memory");
             }

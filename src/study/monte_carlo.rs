@@ -140,6 +140,9 @@ pub struct SampleResult {
     /// (drawn in grey behind the envelopes).
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub histories: Option<Vec<Vec<f64>>>,
+    /// What vbi knows about this point's run ([`crate::advice`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// Running moments of every recorded history over a set of samples.

@@ -50,6 +50,9 @@ pub struct ResonancePoint {
     pub acceleration_at: f64,
     /// Time step of the run, s.
     pub time_step: f64,
+    /// What vbi knows about this point's run ([`crate::advice`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// The whole check.
@@ -124,6 +127,7 @@ fn run_point(
         .map_err(crate::model::BuildError::from)?;
     solve::run(&model, &mut recorder, &mut |_, _| {})?;
     let history = recorder.finish();
+    let advice = super::point_advice(&scenario, &model, &history);
     let envelope = history
         .envelope
         .as_ref()
@@ -138,6 +142,7 @@ fn run_point(
         max_acceleration,
         acceleration_at,
         time_step: model.time_step,
+        advice,
     })
 }
 

@@ -209,7 +209,7 @@ pub fn write(out: &Path, scenario: &Scenario, results: &ResonanceResults) -> Res
         crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
     let summary = results.summary(&scenario.name);
-    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
+    let text = crate::study::summary_json(&summary, results.advice(scenario));
     write_atomic(&out.join("summary.json"), text.as_bytes())?;
     Ok(())
 }

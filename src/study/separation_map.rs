@@ -50,6 +50,9 @@ pub struct MapPoint {
     pub max_gap: f64,
     /// Smallest contact force, N.
     pub min_contact_force: f64,
+    /// What vbi knows about this point's run ([`crate::advice`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// The whole map.
@@ -129,6 +132,7 @@ fn run_point(
         .without_samples();
     solve::run(&model, &mut recorder, &mut |_, _| {})?;
     let history = recorder.finish();
+    let advice = super::point_advice(&scenario, &model, &history);
     let Vehicle::Oscillator(o) = &scenario.vehicles[0] else {
         unreachable!("a separation map has one oscillator")
     };
@@ -154,6 +158,7 @@ fn run_point(
             .all
             .min
             .map_or(f64::INFINITY, |m| m.value),
+        advice,
     })
 }
 
@@ -334,7 +339,7 @@ pub fn write(out: &Path, scenario: &Scenario, map: &SeparationMap) -> Result<(),
         &out.join("resolved.yaml"),
         report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
-    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
+    let text = crate::study::summary_json(&summary, map.advice(scenario));
     report::write_atomic(&out.join("summary.json"), text.as_bytes())?;
     Ok(())
 }

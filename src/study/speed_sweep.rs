@@ -89,6 +89,9 @@ pub struct SweepPoint {
     /// accelerations filtered at the record's `max_frequency`).
     #[serde(default)]
     pub max_abs: Vec<f64>,
+    /// What vbi knows about this point's run ([`crate::advice`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// The whole sweep.
@@ -215,6 +218,7 @@ fn run_point(
         dafs,
         max_forces,
         max_abs,
+        advice: crate::report::advice::run_advice(&scenario, &summary),
     })
 }
 

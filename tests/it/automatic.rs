@@ -135,9 +135,8 @@ fn a_deck_acceleration_filter_above_the_modes_kept_is_named() {
     };
     let warned = |modes: &str| {
         let loaded = load_str(&scene(modes), "test.yaml").unwrap_or_else(|e| panic!("{e}"));
-        let scenario = loaded.scenario.clone();
         let outcome = simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
-        let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+        let warnings = vbi::advice::texts(&outcome.summary.advice);
         let named: Vec<String> = warnings
             .into_iter()
             .filter(|w| w.contains("`acc` (30 Hz)") && w.contains("missing from it"))

@@ -273,6 +273,7 @@ fn synthetic(label: &str, wall_time: f64, error: f64) -> RunReport {
         modes: 1,
         steps: Some(10),
         wall_time: Some(wall_time),
+        advice: Vec::new(),
         errors: Ok(vec![QuantityError {
             name: "q".into(),
             unit: "m",
@@ -391,7 +392,7 @@ fn cli_writes_csv_and_png() {
     assert_eq!(
         lines.next(),
         Some(
-            "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,rms_error,failure"
+            "label,time_step [s],modes,steps,wall_time [s],quantity,max_abs_error,rms_error,failure,advice"
         )
     );
     // 3 time-step runs + 2 mode runs (2 and 1 modes), then the combined

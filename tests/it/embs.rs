@@ -156,9 +156,11 @@ fn the_3d_beam_under_a_lateral_record_against_coupled() {
     let eps = (summary.epsilon.unwrap(), summary.epsilon_lateral.unwrap());
     eprintln!("ε = {:.3}, lateral {:.3}", eps.0, eps.1);
     let epsilon_warnings = summary
-        .warnings()
+        .advice()
         .iter()
-        .filter(|w| w.contains("small parameter"))
+        .filter(|a| {
+            a.id == vbi::advice::EMBS_EPSILON_NOT_SMALL.id && a.text().contains("small parameter")
+        })
         .count();
     assert_eq!(epsilon_warnings, 2);
     let measured = [
@@ -638,9 +640,9 @@ fn embs_is_refused_where_epsilon_reaches_one_in_a_recorded_direction() {
     let summary = allowed.summary.embs.expect("an EMBS summary");
     assert!(
         summary
-            .warnings()
+            .advice()
             .iter()
-            .any(|w| w.contains("lateral small parameter"))
+            .any(|a| a.text().contains("lateral small parameter"))
     );
     // Only vertical records: runs, ε_v = 0.41 < 1.
     let vertical_only: String = suspension_scene(0.1, false, "")

@@ -469,9 +469,8 @@ RSA                        2             2             3             0
 fn automatic_modes_on_an_imported_track_are_flagged() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
     let flagged = |loaded: Loaded| {
-        let scenario = loaded.scenario.clone();
         let outcome = run(loaded);
-        vbi::report::advice::run_warnings(&scenario, &outcome.summary)
+        vbi::advice::texts(&outcome.summary.advice)
             .iter()
             .any(|w| w.contains("vbi converge"))
     };
@@ -793,9 +792,8 @@ fn automatic_modes_keep_the_rails_flexibility_under_wheels_with_mass() {
         "{printed}: {}",
         bridge.selection
     );
-    let scenario = loaded.scenario.clone();
     let outcome = run(loaded);
-    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    let warnings = vbi::advice::texts(&outcome.summary.advice);
     assert!(
         warnings
             .iter()
@@ -938,10 +936,9 @@ fn a_track_without_static_correction_says_what_its_modes_leave_out() {
     );
     // The run warns, naming the typical share; the corrected one does not.
     for (loaded, warned) in [(uncorrected, true), (corrected, false)] {
-        let scenario = loaded.scenario.clone();
         let outcome = run(loaded);
         assert_eq!(outcome.summary.run.rails_flexibility.is_some(), warned);
-        let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+        let warnings = vbi::advice::texts(&outcome.summary.advice);
         let says = warnings.iter().any(|w| {
             w.contains(&format!(
                 "leave out {:.0} % of the rails' static flexibility under a wheel",
@@ -1014,7 +1011,6 @@ fn a_contact_force_peak_on_a_rail_end_ramp_is_named() {
     let path =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/embs-viaduct-ave-s103-quake.yaml");
     let loaded = load_file(&path).unwrap_or_else(|e| panic!("{e}"));
-    let scenario = loaded.scenario.clone();
     let outcome = run(loaded);
     let position = |name: &str| {
         outcome
@@ -1031,7 +1027,7 @@ fn a_contact_force_peak_on_a_rail_end_ramp_is_named() {
     );
     assert!((36.0..=39.0).contains(&lateral), "{lateral}");
     assert!((3.0..36.0).contains(&vertical), "{vertical}");
-    let warnings = vbi::report::advice::run_warnings(&scenario, &outcome.summary);
+    let warnings = vbi::advice::texts(&outcome.summary.advice);
     let ramps: Vec<&String> = warnings
         .iter()
         .filter(|w| w.contains("ramp (x ="))

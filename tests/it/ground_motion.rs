@@ -925,9 +925,8 @@ fn a_record_that_outlasts_the_run_is_named() {
     let text = std::fs::read_to_string(&example).unwrap();
     let warnings_of = |yaml: &str| {
         let loaded = load_str(yaml, example.to_str().unwrap()).unwrap_or_else(|e| panic!("{e}"));
-        let scenario = loaded.scenario.clone();
         let outcome = simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
-        vbi::report::advice::run_warnings(&scenario, &outcome.summary)
+        vbi::advice::texts(&outcome.summary.advice)
     };
     let short = warnings_of(&text);
     let shakes: Vec<_> = short

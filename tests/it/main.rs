@@ -14,6 +14,7 @@
 mod support;
 
 mod accelerating;
+mod advice;
 mod automatic;
 mod automatic_shipped;
 mod bad_inputs;

@@ -188,7 +188,7 @@ fn a_vehicle_placed_inside_the_run_in_moves_the_fade() {
         assert_eq!(model.profile.elevation_slope_curvature(x), (0.0, 0.0, 0.0));
     }
     assert_ne!(model.profile.elevation(-5.0), 0.0);
-    let warnings = vbi::report::advice::scene_warnings(&loaded.scenario);
+    let warnings = vbi::advice::texts(&vbi::plan::advice::scene_advice(&loaded.scenario));
     assert!(
         warnings
             .iter()
@@ -197,7 +197,7 @@ fn a_vehicle_placed_inside_the_run_in_moves_the_fade() {
     );
     // Placed at the run-in's start: no such warning.
     let placed = load_str(&small_scene("{type: fra, class: 5}", ""), "fade.yaml").unwrap();
-    let warnings = vbi::report::advice::scene_warnings(&placed.scenario);
+    let warnings = vbi::advice::texts(&vbi::plan::advice::scene_advice(&placed.scenario));
     assert!(
         !warnings.iter().any(|w| w.contains("fades in")),
         "{warnings:?}"
@@ -213,7 +213,7 @@ fn a_speed_above_the_track_class_warns() {
         let text = small_scene(&format!("{{type: fra, class: {class}}}"), "")
             .replace("speed: 25.0", &format!("speed: {speed}"));
         let loaded = load_str(&text, "fra.yaml").unwrap_or_else(|e| panic!("{e}"));
-        vbi::report::advice::scene_warnings(&loaded.scenario)
+        vbi::advice::texts(&vbi::plan::advice::scene_advice(&loaded.scenario))
             .iter()
             .any(|w| {
                 w.contains(&format!(
@@ -247,7 +247,7 @@ fn a_measured_profile_finer_than_a_step_warns() {
         )
         .unwrap();
         let loaded = vbi::plan::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
-        vbi::report::advice::scene_warnings(&loaded.scenario)
+        vbi::advice::texts(&vbi::plan::advice::scene_advice(&loaded.scenario))
     };
     let fine = warnings("-5,0\n10,0\n10.001,0.001\n40,0.001\n");
     assert!(

@@ -3,8 +3,13 @@
 //! located error, and implausible speeds and records that end before the
 //! response peaks are warned about.
 
+use vbi::advice::texts;
+use vbi::plan::advice::scene_advice;
 use vbi::plan::load_str;
-use vbi::report::advice::{run_warnings, scene_warnings};
+
+fn scene_warnings(scenario: &vbi::scene::Scenario) -> Vec<String> {
+    texts(&scene_advice(scenario))
+}
 use vbi::run::{Outcome, simulate};
 
 // (Not `mod support`: its own tests would run again in this binary.)
@@ -156,7 +161,10 @@ fn a_record_that_ends_before_the_peak_is_warned_about() {
     let short = force_only(0.0);
     let outcome = run_yaml(&short);
     let loaded = load_str(&short, "units.yaml").unwrap();
-    let warnings = run_warnings(&loaded.scenario, &outcome.summary);
+    let warnings = texts(&vbi::report::advice::run_advice(
+        &loaded.scenario,
+        &outcome.summary,
+    ));
     assert_eq!(warnings.len(), 1, "{warnings:?}");
     assert!(
         warnings[0].starts_with("`midspan` is largest at the very end"),
@@ -165,7 +173,7 @@ fn a_record_that_ends_before_the_peak_is_warned_about() {
     let long = force_only(0.25);
     let outcome = run_yaml(&long);
     let loaded = load_str(&long, "units.yaml").unwrap();
-    assert!(run_warnings(&loaded.scenario, &outcome.summary).is_empty());
+    assert!(vbi::report::advice::run_advice(&loaded.scenario, &outcome.summary).is_empty());
 }
 
 #[test]

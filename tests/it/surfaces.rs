@@ -847,9 +847,8 @@ record: [{{name: force, quantity: contact_force}}]
     };
     let warnings_of = |yaml: &str| {
         let loaded = vbi::plan::load_str(yaml, "hop.yaml").unwrap_or_else(|e| panic!("{e}"));
-        let scenario = loaded.scenario.clone();
         let outcome = vbi::run::simulate(loaded, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e}"));
-        vbi::report::advice::run_warnings(&scenario, &outcome.summary)
+        vbi::advice::texts(&outcome.summary.advice)
     };
     let kicks = |warnings: &[String]| {
         warnings

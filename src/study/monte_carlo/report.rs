@@ -464,9 +464,8 @@ pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Re
         &out.join("resolved.yaml"),
         crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
-    let text = serde_json::to_string_pretty(&results.summary(&scenario.name))
-        .expect("summary serialises")
-        + "\n";
+    let text =
+        crate::study::summary_json(&results.summary(&scenario.name), results.advice(scenario));
     write_atomic(&out.join("summary.json"), text.as_bytes())?;
     Ok(())
 }

@@ -72,8 +72,13 @@ pub(super) fn run_batch(
     }
     Ok(recorders
         .into_iter()
+        .zip(models.iter().zip(&scenarios))
         .zip(flats)
-        .map(|(recorder, flat)| outcome(recorder, mc, flat / mc.samples, flat % mc.samples))
+        .map(|((recorder, (model, scenario)), flat)| {
+            let history = recorder.finish();
+            let advice = super::super::point_advice(scenario, model, &history);
+            outcome(history, advice, mc, flat / mc.samples, flat % mc.samples)
+        })
         .collect())
 }
 
@@ -105,12 +110,12 @@ pub(super) fn failed_sample(
 
 /// One finished sample's moments (count 1) and scalar results.
 pub(super) fn outcome(
-    recorder: Recorder<'_>,
+    history: crate::record::History,
+    advice: Vec<crate::advice::Advice>,
     mc: &MonteCarlo,
     case: usize,
     index: usize,
 ) -> (Moments, SampleResult) {
-    let history = recorder.finish();
     let wheels = history
         .separation
         .iter()
@@ -141,6 +146,7 @@ pub(super) fn outcome(
             seed,
             wheels,
             histories,
+            advice,
         },
     )
 }

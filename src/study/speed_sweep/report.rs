@@ -272,7 +272,7 @@ pub fn write(out: &Path, scenario: &Scenario, results: &SweepResults) -> Result<
         crate::report::folder::resolved_yaml(scenario).as_bytes(),
     )?;
     let summary = SweepSummary::new(&scenario.name, results);
-    let text = serde_json::to_string_pretty(&summary).expect("summary serialises") + "\n";
+    let text = crate::study::summary_json(&summary, results.advice(scenario));
     report::write_atomic(&out.join("summary.json"), text.as_bytes())?;
     Ok(())
 }
