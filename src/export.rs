@@ -92,9 +92,10 @@ pub fn beam_files(scenario: &Scenario) -> Result<Vec<(String, String)>, ExportEr
         "modes": serde_json::to_value(&beam.modes).expect("modes serialise"),
     });
     let yaml = format!(
-        "# Exported by vbi {} from `{}`: the same crossing on the beam's exported matrices.\n{}",
+        "# Exported by vbi {} from `{}`: the same crossing on the beam's exported matrices.\n{}{}",
         env!("CARGO_PKG_VERSION"),
         scenario.name,
+        crate::report::folder::read_pins(scenario),
         crate::report::yaml::to_yaml(&value)
     );
     Ok(vec![

@@ -47,6 +47,7 @@ pub(crate) fn plan(
         newmark,
         free_vibration,
         allow,
+        data_read,
     } = described;
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
     let minimum = content::minimum_modes(&bridge);
@@ -585,6 +586,18 @@ pub(crate) fn plan(
     }
     let scenario = Scenario {
         source_file: None,
+        data_read: data_read
+            .into_iter()
+            .chain(ck.data_read())
+            .fold(Vec::new(), |mut all, r| {
+                if !all
+                    .iter()
+                    .any(|a: &crate::scene::DataRead| a.path == r.path)
+                {
+                    all.push(r);
+                }
+                all
+            }),
         name: raw.name.clone(),
         description: raw.description.clone(),
         allow,

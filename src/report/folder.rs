@@ -38,11 +38,47 @@ pub fn resolved_yaml(scenario: &Scenario) -> String {
         let f: String = f.chars().filter(|c| !c.is_control()).collect();
         format!("{FROM}{f}\n")
     });
+    // One pin per data file read, so that the file reruns from any folder
+    // reading only these bytes ([`crate::scenario::data_files::READ`]). A
+    // path that would not fit on one line is left unpinned.
+    let read: String = scenario
+        .data_read
+        .iter()
+        .filter(|r| !r.path.chars().any(char::is_control))
+        .map(|r| {
+            format!(
+                "{}{} {}\n",
+                crate::scenario::data_files::READ,
+                r.sha256,
+                r.path
+            )
+        })
+        .collect();
     format!(
-        "# Resolved by vbi {}: the scene as run, every default filled in.\n{from}{}",
+        "# Resolved by vbi {}: the scene as run, every default filled in.\n{from}{read}{}",
         env!("CARGO_PKG_VERSION"),
         super::yaml::to_yaml(&resolved)
     )
+}
+
+/// The header lines that pin the data files `scenario` read, one each, so
+/// that a scene written with them reruns from any folder reading only these
+/// bytes ([`crate::scenario::data_files::READ`]). A path that would not fit
+/// on one line is left unpinned.
+pub fn read_pins(scenario: &Scenario) -> String {
+    scenario
+        .data_read
+        .iter()
+        .filter(|r| !r.path.chars().any(char::is_control))
+        .map(|r| {
+            format!(
+                "{}{} {}\n",
+                crate::scenario::data_files::READ,
+                r.sha256,
+                r.path
+            )
+        })
+        .collect()
 }
 
 /// The start of `resolved.yaml`'s line that names the scene file whose
@@ -59,18 +95,21 @@ pub const OWNER_FILE: &str = ".vbi-owner";
 /// is none or it names none. Only each file's first 8 kB are read (the
 /// header is its first lines).
 pub fn folder_owner(out: &Path) -> Option<String> {
+    named_in(out, "resolved.yaml").or_else(|| named_in(out, OWNER_FILE))
+}
+
+/// The scene file the file `name` in `folder` names in its first three
+/// lines ([`FROM`]), reading at most its first 8 kB.
+fn named_in(folder: &Path, name: &str) -> Option<String> {
     use std::io::Read;
-    let named_in = |name: &str| -> Option<String> {
-        let file = crate::scenario::data_files::open_regular(&out.join(name)).ok()?;
-        let mut head = Vec::new();
-        file.take(8192).read_to_end(&mut head).ok()?;
-        let head = String::from_utf8_lossy(&head);
-        head.lines()
-            .take(3)
-            .find_map(|l| l.strip_prefix(FROM))
-            .map(str::to_string)
-    };
-    named_in("resolved.yaml").or_else(|| named_in(OWNER_FILE))
+    let file = crate::scenario::data_files::open_regular(&folder.join(name)).ok()?;
+    let mut head = Vec::new();
+    file.take(8192).read_to_end(&mut head).ok()?;
+    let head = String::from_utf8_lossy(&head);
+    head.lines()
+        .take(3)
+        .find_map(|l| l.strip_prefix(FROM))
+        .map(str::to_string)
 }
 
 /// Writes the [`OWNER_FILE`] naming `source` (canonical) into `out` (made
@@ -102,8 +141,23 @@ pub fn claim_folder(out: &Path, source: &str, force: bool) -> Result<(), String>
 }
 
 /// The name a scene file is known by in `resolved.yaml`: its canonical
-/// path (symlinks resolved), or its absolute path when that fails.
+/// path (symlinks resolved), or its absolute path when that fails. A
+/// `resolved.yaml` rerun is known by the scene file it names ([`FROM`]), so
+/// that it may rerun into the folder that holds its results.
 pub fn source_name(file: &Path) -> String {
+    if file.file_name() == Some(std::ffi::OsStr::new("resolved.yaml"))
+        && let Some(parent) = file.parent()
+        && let Some(original) = named_in(
+            if parent.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                parent
+            },
+            "resolved.yaml",
+        )
+    {
+        return original;
+    }
     std::fs::canonicalize(file)
         .or_else(|_| std::path::absolute(file))
         .unwrap_or_else(|_| file.to_path_buf())

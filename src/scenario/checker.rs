@@ -13,6 +13,9 @@ pub(crate) struct Checker<'a> {
     pub(crate) root: &'a Node,
     /// Where the files the scene names may be read from.
     data: super::data_files::DataAccess,
+    /// The data files read so far, with their content hashes (in the order
+    /// read, each once).
+    read: std::cell::RefCell<Vec<crate::scene::DataRead>>,
     pub diagnostics: Vec<Diagnostic>,
     /// Whether the records were checked: an error that stops the
     /// resolution before them leaves them to `resolve::cross_checks`.
@@ -51,6 +54,7 @@ impl<'a> Checker<'a> {
             lines: Lines::new(source),
             root,
             data: Default::default(),
+            read: Default::default(),
             diagnostics: Vec::new(),
             records_checked: false,
             bridge_unknown: false,
@@ -66,6 +70,22 @@ impl<'a> Checker<'a> {
     /// Where the files the scene names may be read from.
     pub(crate) fn data_access(&self) -> &super::data_files::DataAccess {
         &self.data
+    }
+
+    /// Notes that the data file `path` was read with content hash `sha256`.
+    pub(crate) fn note_read(&self, path: &str, sha256: String) {
+        let mut read = self.read.borrow_mut();
+        if !read.iter().any(|r| r.path == path) {
+            read.push(crate::scene::DataRead {
+                path: path.to_string(),
+                sha256,
+            });
+        }
+    }
+
+    /// The data files read so far ([`Self::note_read`]).
+    pub(crate) fn data_read(&self) -> Vec<crate::scene::DataRead> {
+        self.read.borrow().clone()
     }
 
     fn location(&self, path: &str) -> Location {

@@ -12,6 +12,15 @@
 //! checked again on the open handle (a file swapped for a FIFO in between
 //! cannot hang the read). A refusal names the path and the option, never a
 //! byte of the file.
+//!
+//! A `resolved.yaml` reruns from anywhere (issue 38.7): it names each data
+//! file by its absolute path, and its header lists the files the original
+//! run read with the SHA-256 of their bytes ([`READ`]). Such a pinned path is
+//! read wherever it is (inside the scene's folder too), but its bytes are used only when their hash equals
+//! the pinned one; otherwise the file is refused without a word of its
+//! content, and whether it exists is not told either. A stranger's file can
+//! thus pin only bytes its author already knows: nothing is disclosed, and
+//! no other path is let through.
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -42,6 +51,43 @@ pub(crate) struct DataFile {
     pub real: PathBuf,
     /// Size from the file's metadata, bytes.
     pub size: u64,
+    /// The SHA-256 (lower-case hex) its bytes must have: the scene's header
+    /// pins it ([`READ`]) and it lies outside the folders otherwise allowed.
+    pub pinned: Option<String>,
+}
+
+/// The start of a scene header's line that pins a data file: `# Read:
+/// sha256:<64 hex digits> <absolute path>`, as `resolved.yaml` writes one
+/// per file its run read.
+pub const READ: &str = "# Read: sha256:";
+
+/// The SHA-256 of `bytes`, lower-case hex.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::Digest;
+    sha2::Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// The hash `source`'s header pins for the path `named`, if any: only the
+/// comment lines before the first other line count, and only well-formed
+/// ones (64 hex digits, an absolute path).
+fn pinned_hash(source: &str, named: &str) -> Option<String> {
+    source
+        .lines()
+        .take_while(|l| l.trim().is_empty() || l.starts_with('#'))
+        .filter_map(|l| l.strip_prefix(READ))
+        .filter_map(|rest| rest.split_once(' '))
+        .find(|(hash, path)| {
+            *path == named
+                && Path::new(path).is_absolute()
+                && hash.len() == 64
+                && hash
+                    .bytes()
+                    .all(|b| b.is_ascii_hexdigit() && !b.is_ascii_uppercase())
+        })
+        .map(|(hash, _)| hash.to_string())
 }
 
 impl DataFile {
@@ -81,6 +127,10 @@ pub(crate) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFi
         .display()
         .to_string();
     let option = "run with `--data-dir DIR` naming a folder that holds it";
+    // A pinned file is read wherever it is, and only as the bytes pinned.
+    if let Some(pinned) = pinned_hash(ck.source, named) {
+        return Ok(pinned_file(named, pinned));
+    }
     if written.is_absolute() && access.data_dirs.is_empty() {
         return Err(format!(
             "`{named}` is an absolute path; a scene reads files only inside its own folder \
@@ -146,13 +196,34 @@ pub(crate) fn locate(named: &str, what: &str, ck: &Checker<'_>) -> Result<DataFi
         shown,
         real,
         size: meta.len(),
+        pinned: None,
     })
+}
+
+/// A file the header pins ([`READ`]): whatever it is, [`read_text`] opens it
+/// as a regular file and uses its bytes only if their hash is `pinned`. Its
+/// size is taken at the open (a missing file reads as empty here, so that
+/// the budget checks before the read tell nothing of it either).
+fn pinned_file(named: &str, pinned: String) -> DataFile {
+    let real = PathBuf::from(named);
+    let size = std::fs::metadata(&real)
+        .ok()
+        .filter(|m| m.is_file())
+        .map_or(0, |m| m.len());
+    DataFile {
+        shown: named.to_string(),
+        real,
+        size,
+        pinned: Some(pinned),
+    }
 }
 
 /// Reads `file` whole as UTF-8 text: opened non-blocking, checked again to
 /// be a regular file on the open handle, at most its size plus one byte
-/// read. The error is the whole message.
-pub(crate) fn read_text(file: &DataFile) -> Result<String, String> {
+/// read; the bytes' hash is noted in `ck` (for `resolved.yaml`'s header)
+/// and, for a pinned file, must equal the pin. The error is the whole
+/// message.
+pub(crate) fn read_text(file: &DataFile, ck: &Checker<'_>) -> Result<String, String> {
     let shown = &file.shown;
     let mut bytes = Vec::new();
     let read = open_regular(&file.real).and_then(|f| {
@@ -160,8 +231,22 @@ pub(crate) fn read_text(file: &DataFile) -> Result<String, String> {
             .read_to_end(&mut bytes)
             .map(|_| ())
     });
+    let hash = read.is_ok().then(|| sha256_hex(&bytes));
+    if let Some(pinned) = &file.pinned
+        && hash.as_ref() != Some(pinned)
+    {
+        // Missing, unreadable or changed: one message, no content.
+        return Err(format!(
+            "{shown} is not the file this scene's run read: it is missing or its bytes do not \
+             have the SHA-256 its `# Read:` header line pins; rerun the original scene, or put \
+             the file back as it was"
+        ));
+    }
     if let Err(e) = read {
         return Err(format!("cannot read {shown}: {}", io_reason(&e)));
+    }
+    if let Some(hash) = hash {
+        ck.note_read(shown, hash);
     }
     String::from_utf8(bytes).map_err(|e| {
         format!(

@@ -363,7 +363,7 @@ fn read_text(file: &DataFile, at: &str, budget: &Budget, ck: &mut Checker<'_>) -
     ) {
         return None;
     }
-    match data_files::read_text(file) {
+    match data_files::read_text(file, ck) {
         Ok(text) => Some(text),
         Err(message) => {
             ck.error(at, message);

@@ -188,7 +188,7 @@ fn read(
     ) {
         return None;
     }
-    let text = match super::data_files::read_text(data) {
+    let text = match super::data_files::read_text(data, ck) {
         Ok(text) => text,
         Err(message) => {
             ck.error(&field, message);

@@ -87,6 +87,8 @@ pub(crate) struct Sections {
     pub free_vibration: f64,
     /// The advice ids the scene leaves unheeded, with reasons.
     pub allow: Vec<crate::advice::Allow>,
+    /// The data files read, with their content hashes.
+    pub data_read: Vec<crate::scene::DataRead>,
 }
 
 /// The format's part of a scene's resolution: every check that needs no
@@ -235,5 +237,6 @@ pub(crate) fn describe(
         newmark,
         free_vibration,
         allow,
+        data_read: ck.data_read(),
     })
 }

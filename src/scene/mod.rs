@@ -34,6 +34,16 @@ pub use self::study::*;
 pub use self::surface::*;
 pub use self::vehicle::*;
 
+/// One data file a scene read: the path as the resolved scene names it
+/// (absolute) and the SHA-256 of its bytes, lower-case hex.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DataRead {
+    /// The absolute path, as the resolved scene writes it.
+    pub path: String,
+    /// SHA-256 of the file's bytes as read, 64 lower-case hex digits.
+    pub sha256: String,
+}
+
 /// A validated scene. See [`crate::scenario::raw::ScenarioRaw`] for the meaning of each field.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Scenario {
@@ -43,6 +53,13 @@ pub struct Scenario {
     /// ([`crate::run::folder_owner`]).
     #[serde(skip)]
     pub source_file: Option<String>,
+    /// The data files the scene read (FE matrices, DOF maps, rail lists,
+    /// ground-motion records, measured profiles), each with the SHA-256 of
+    /// the bytes read: not part of the resolved form, but written in
+    /// `resolved.yaml`'s header so that the file reruns from any folder
+    /// reading exactly these files ([`DataRead`]).
+    #[serde(skip)]
+    pub data_read: Vec<DataRead>,
     /// Short name of the scene.
     pub name: String,
     /// Free text describing the scene.

@@ -57,6 +57,7 @@ mod plots;
 mod profile_entrance;
 mod rail_car;
 mod regress;
+mod resolved_anywhere;
 mod resolved_rerun;
 mod resonance;
 mod resonance_verdict;

@@ -37,7 +37,7 @@ pub(super) fn read(
     ) {
         return None;
     }
-    let text = match data_files::read_text(data) {
+    let text = match data_files::read_text(data, ck) {
         Ok(text) => text,
         Err(message) => {
             ck.error(AT, message);
