@@ -291,11 +291,13 @@ impl ImportedModel {
             .into_iter()
             .enumerate()
         {
+            // + 0.0: an empty sum is −0.0, shown as such in summary.json.
             translational_mass[axis] = m
                 .iter()
                 .filter(|&&(r, c, _)| map[r].1 == direction && map[c].1 == direction)
                 .map(|e| e.2)
-                .sum();
+                .sum::<f64>()
+                + 0.0;
         }
         let mut index = vec![None; n];
         let mut dofs = Vec::new();
