@@ -399,7 +399,11 @@ fn a_plain_export_in_dense_text_runs_as_the_beam() {
         let difference = peak_difference(&beam, &imported);
         eprintln!(
             "plain (dense, {}): mid-span peak {:.6e} m, beam {:.6e} m, peaks within {difference:.2e}",
-            if six_digits { "6 digits" } else { "every digit" },
+            if six_digits {
+                "6 digits"
+            } else {
+                "every digit"
+            },
             midspan_peak(&imported),
             midspan_peak(&beam)
         );

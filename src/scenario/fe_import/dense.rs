@@ -20,11 +20,15 @@ pub const FORMATS_HELP: &str = "vbi reads Matrix Market coordinate files (`%%Mat
                                 models\")";
 
 /// Whether `text` is a dense text matrix: its first three lines that are
-/// not blank or comments (all of them, if fewer) hold numbers only. A
+/// not blank or comments (all of them, if fewer) hold numbers only, and
+/// it does not start with a Matrix Market banner (`%%`). A
 /// Harwell–Boeing file's third header line starts with its type (`RSA`),
 /// a Matrix Market file with its banner, an Abaqus file's lines hold
 /// commas.
 pub fn looks_dense(text: &str) -> bool {
+    if text.trim_start().starts_with("%%") {
+        return false;
+    }
     let mut rows = data_lines(text).take(3).peekable();
     rows.peek().is_some()
         && rows.all(|(n, line)| {
@@ -139,7 +143,7 @@ mod tests {
             file.entries,
             vec![(0, 0, 2e6), (0, 1, -1e6), (1, 0, -1e6), (1, 1, 2e6)]
         );
-        assert_eq!(file.places[1], (2, 8));
+        assert_eq!(file.places[1], (2, 7));
         assert!(looks_dense("\n2e+06 -1e+06 \n-1e+06 2e+06 \n"));
     }
 
