@@ -19,13 +19,17 @@ pub(super) fn modes(
         name,
         bridge,
         scenario,
+        imported,
     } = match plan::load_file_for_modes(file, options) {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };
     let plate = bridge.width().is_some();
     if json {
-        outln!("{}", modes_json(&name, &bridge, scenario.as_ref()));
+        outln!(
+            "{}",
+            modes_json(&name, &bridge, scenario.as_ref(), imported.as_ref())
+        );
         return ExitCode::SUCCESS;
     }
     out!(
@@ -63,6 +67,11 @@ pub(super) fn modes(
     if let Some(scenario) = &scenario {
         print_vehicle_frequencies(scenario);
     }
+    if let Some(totals) = &imported {
+        print_imported_totals(totals);
+        let advice = vbi::plan::advice::imported_model_advice(totals);
+        super::print_advice_located(file, &advice);
+    }
     if let Some(path) = shapes {
         let text = vbi::report::mode_shapes_csv(&bridge);
         if path == Path::new("-") {
@@ -88,6 +97,7 @@ pub(super) fn modes_json(
     name: &str,
     bridge: &vbi::bridge::ModalBridge,
     scenario: Option<&vbi::scenario::resolved::Scenario>,
+    imported: Option<&vbi::scene::imported::ImportedTotals>,
 ) -> String {
     let check = bridge.check;
     let two_pi = 2.0 * std::f64::consts::PI;
@@ -128,6 +138,10 @@ pub(super) fn modes_json(
         "modes": modes,
         "vehicles": scenario.map_or_else(Vec::new, vehicle_frequencies_json),
     });
+    let mut value = value;
+    if let Some(totals) = imported {
+        value["imported_model"] = serde_json::to_value(totals).expect("numbers");
+    }
     serde_json::to_string_pretty(&value).expect("JSON of numbers and strings")
 }
 
@@ -152,6 +166,34 @@ pub(super) fn vehicle_frequencies_json(
             })
         })
         .collect()
+}
+
+/// An imported model's mass and static deflection, what an engineer
+/// checks before its modes.
+fn print_imported_totals(totals: &vbi::scene::imported::ImportedTotals) {
+    let m = totals.mass;
+    outln!(
+        "imported model: mass {:.6e} kg vertically (x {:.6e} kg, y {:.6e} kg), {:.6e} kg/m \
+         over the {:.6} m track",
+        m.z,
+        m.x,
+        m.y,
+        totals.mass_per_length,
+        totals.length
+    );
+    match (
+        totals.static_deflection,
+        totals.static_load,
+        totals.static_load_x,
+    ) {
+        (Some(w), Some(load), Some(x)) => outln!(
+            "imported model: static deflection {w:.6e} m (1/{:.0} of the track) under the \
+             vehicles' total weight, {load:.6e} N, at x = {x:.6} m (the track's most flexible \
+             point)",
+            totals.length / w
+        ),
+        _ => outln!("imported model: static deflection not measured (no vehicles)"),
+    }
 }
 
 /// Each vehicle's own natural frequencies with its wheels held on rigid

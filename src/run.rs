@@ -162,6 +162,9 @@ fn run_scene(
                 .map(|(h, coupled_time)| (h, *coupled_time, solve_time)),
         ));
     }
+    if let crate::scene::Bridge::FeImport(fe) = &scenario.bridge {
+        summary.imported_model = fe.totals;
+    }
     summary.advice = report::advice::advice_of(&scenario, &summary);
     Ok(Outcome {
         model,

@@ -64,6 +64,34 @@ pub const MEASURED_PROFILE_FINER_THAN_STEP: Kind = Kind {
     example: "a profile sampled every 1 mm under a vehicle at 30 m/s with Δt = 1e-4 s",
 };
 
+/// An imported model lighter per metre than any bridge deck.
+pub const IMPORT_MASS_PER_LENGTH_LOW: Kind = Kind {
+    id: "import-mass-per-length-low",
+    severity: Severity::Warning,
+    meaning: "an imported model's vertical mass per metre of track is below 100 kg/m",
+    why: "no bridge deck is so light (a steel footbridge carries some 500 kg/m, a railway \
+          deck 10–30 t/m): the files are probably not in N, kg and m. A model in kN and t \
+          reads 1000 times too light (its frequencies are right, its static deflections 1000 \
+          times too large), one in N, mm and t 10⁶ times (its track 1000 times too long)",
+    fix: "export the model in N, kg and m (kN and t: multiply K and M by 1000; mm: export \
+          again in m); if the mass is meant, allow the id with the reason",
+    example: "a girder exported from OpenSees in kN and t: 36 kg over its 20 m track",
+};
+
+/// An imported model that deflects more than a bridge does under its traffic.
+pub const IMPORT_STATIC_DEFLECTION_LARGE: Kind = Kind {
+    id: "import-static-deflection-large",
+    severity: Severity::Warning,
+    meaning: "an imported model's static deflection under the vehicles' total weight (at the \
+              track's most flexible point) is more than 1/100 of the track's length",
+    why: "a bridge deflects some span/500 to span/2000 under its traffic: a stiffness in kN/m \
+          (kN·m/rad) read as N/m deflects 1000 times too much, and the vehicles ride a \
+          model that is not the bridge",
+    fix: "export K in N/m and N·m/rad and M in kg (a model in kN and t: multiply both by \
+          1000); if the deflection is meant, allow the id with the reason",
+    example: "a 20 m girder in kN and t under a 200 kN moving force: 10.3 m at mid-span",
+};
+
 /// A modes cache file that was not used.
 pub const MODES_CACHE_REJECTED: Kind = Kind {
     id: "modes-cache-rejected",
@@ -205,6 +233,8 @@ pub const KINDS: &[Kind] = &[
     FRA_CLASS_TOO_SLOW,
     RUN_IN_ON_BRIDGE,
     MEASURED_PROFILE_FINER_THAN_STEP,
+    IMPORT_MASS_PER_LENGTH_LOW,
+    IMPORT_STATIC_DEFLECTION_LARGE,
     MODES_CACHE_REJECTED,
     EMBS_EPSILON_NOT_SMALL,
     EMBS_FIRST_ORDER_LARGE,

@@ -4,6 +4,7 @@
 
 use crate::advice::{self, Advice};
 use crate::scenario::raw::{KM_H, km_h_to_m_s};
+use crate::scene::imported::ImportedTotals;
 use crate::scene::{Scenario, Study, Surface};
 use crate::surface::fade_start;
 use crate::surface::spectrum::{FRA_MAX_SPEED_MPH, fra_max_speed};
@@ -65,7 +66,91 @@ pub fn scene_advice(scenario: &Scenario) -> Vec<Advice> {
     out.extend(track_class_too_slow(scenario));
     out.extend(fade_on_the_bridge(scenario));
     out.extend(measured_finer_than_a_step(scenario));
+    if let crate::scene::Bridge::FeImport(fe) = &scenario.bridge
+        && let Some(totals) = &fe.totals
+    {
+        out.extend(imported_model_advice(totals));
+    }
     advice::apply_allow(&mut out, &scenario.allow);
+    out
+}
+
+/// Lightest plausible vertical mass per metre of a bridge's track, kg/m: a
+/// light steel footbridge carries some 500 kg/m, a railway deck 10–30 t/m;
+/// a model in kN and t reads 1000 times below its own, one in N, mm and t
+/// 10⁶ times.
+pub const IMPORT_MASS_PER_LENGTH_MIN: f64 = 100.0;
+
+/// Largest plausible static deflection under the vehicles' total weight,
+/// as a share of the track's length: bridges deflect some span/500 to
+/// span/2000 under their traffic (EN 1990 A2.4.4.3 limits a railway
+/// deck's to span/600 and less); a stiffness in kN/m read as N/m makes it
+/// 1000 times that.
+pub const IMPORT_DEFLECTION_SHARE_MAX: f64 = 0.01;
+
+/// An imported model whose mass or static deflection no bridge has: the
+/// files are probably in kN and t, or in mm ([`crate::plan::imported_check`]).
+pub fn imported_model_advice(totals: &ImportedTotals) -> Vec<Advice> {
+    let mut out = Vec::new();
+    let per_metre = totals.mass_per_length;
+    if per_metre < IMPORT_MASS_PER_LENGTH_MIN {
+        // 10⁻³: kN and t; 10⁻⁶: N, mm and t (mass 10⁻³, length 10³).
+        let guess = if per_metre < 1e-1 {
+            "as a model in N, mm and t reads (its mass 1000 times small, its track 1000 times \
+             long)"
+        } else {
+            "as a model in kN and t reads (its mass 1000 times small)"
+        };
+        out.push(
+            Advice::new(
+                &advice::IMPORT_MASS_PER_LENGTH_LOW,
+                format!(
+                    "the imported model's vertical mass is {:.4} kg over its {:.4} m track, \
+                     {per_metre:.4} kg/m: lighter than any bridge deck (a footbridge's is some \
+                     500 kg/m, a railway deck's 10–30 t/m), {guess}",
+                    totals.mass.z, totals.length
+                ),
+            )
+            .at("bridge.mass")
+            .help(
+                "export the model in N, kg and m (from kN and t: multiply K and M by 1000); if \
+                 the mass is meant, allow `import-mass-per-length-low` with the reason",
+            )
+            .figure("mass_per_length_kg_m", per_metre)
+            .figure("vertical_mass_kg", totals.mass.z)
+            .figure("length_m", totals.length),
+        );
+    }
+    if let (Some(w), Some(load), Some(x)) = (
+        totals.static_deflection,
+        totals.static_load,
+        totals.static_load_x,
+    ) && w > IMPORT_DEFLECTION_SHARE_MAX * totals.length
+    {
+        out.push(
+            Advice::new(
+                &advice::IMPORT_STATIC_DEFLECTION_LARGE,
+                format!(
+                    "the imported model deflects {w:.4} m under the vehicles' total weight \
+                     ({:.4} kN at x = {x:.4} m, the track's most flexible point), 1/{:.0} of \
+                     its {:.4} m track: no bridge deflects so under its traffic (span/500 to \
+                     span/2000); a stiffness in kN/m read as N/m deflects 1000 times too much",
+                    load / 1e3,
+                    totals.length / w,
+                    totals.length
+                ),
+            )
+            .at("bridge.stiffness")
+            .help(
+                "export K in N/m (N·m/rad) and M in kg (from kN and t: multiply both by 1000); \
+                 if the deflection is meant, allow `import-static-deflection-large` with the \
+                 reason",
+            )
+            .figure("static_deflection_m", w)
+            .figure("static_load_n", load)
+            .figure("length_m", totals.length),
+        );
+    }
     out
 }
 

@@ -25,6 +25,9 @@ pub struct ModesScene {
     pub bridge: ModalBridge,
     /// The whole resolved scene, when the file has vehicles.
     pub scenario: Option<Scenario>,
+    /// An imported model's mass and, with vehicles, its static deflection
+    /// under their weight ([`super::imported_check`]).
+    pub imported: Option<crate::scene::imported::ImportedTotals>,
 }
 
 /// Only the keys a bridge needs; the others are not looked at.
@@ -54,6 +57,10 @@ pub fn load_for_modes(
         return super::load_str_with(source, file, options).map(|loaded| ModesScene {
             name: loaded.scenario.name.clone(),
             bridge: loaded.bridge,
+            imported: match &loaded.scenario.bridge {
+                crate::scene::Bridge::FeImport(fe) => fe.totals,
+                _ => None,
+            },
             scenario: Some(loaded.scenario),
         });
     }
@@ -127,5 +134,9 @@ pub fn load_for_modes(
         name: raw.name,
         bridge: modal,
         scenario: None,
+        imported: match &bridge {
+            crate::scene::Bridge::FeImport(fe) => fe.totals,
+            _ => None,
+        },
     })
 }

@@ -584,6 +584,18 @@ pub(crate) fn plan(
             return None;
         }
     }
+    // An imported model's mass and static deflection under the vehicles'
+    // weight: what an engineer checks first ([`super::imported_check`]).
+    if let Bridge::FeImport(fe) = &mut bridge {
+        let weight = super::imported_check::static_weight(&vehicles, gravity);
+        match super::imported_check::totals(&fe.model, &modal, weight) {
+            Ok(totals) => fe.totals = Some(totals),
+            Err(e) => {
+                ck.error("bridge", e.to_string());
+                return None;
+            }
+        }
+    }
     let scenario = Scenario {
         source_file: None,
         data_read: data_read

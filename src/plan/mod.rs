@@ -27,6 +27,7 @@ mod budget;
 mod choices;
 pub mod content;
 mod derive;
+pub mod imported_check;
 mod plausible;
 mod sweep;
 pub mod track_flexibility;

@@ -164,6 +164,11 @@ pub struct Summary {
     /// `solver.compare`, the errors against `coupled` and the speed-up.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub embs: Option<super::embs::EmbsSummary>,
+    /// On an imported model: its translational mass per direction and its
+    /// static deflection under the vehicles' total weight, what an
+    /// engineer checks first ([`crate::scene::imported::ImportedTotals`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub imported_model: Option<crate::scene::imported::ImportedTotals>,
     /// What vbi knows about this scene and its result: every warning and
     /// note of the plan and the run ([`crate::advice`], docs/advice.md),
     /// those the scene allows marked with its reason.
@@ -356,6 +361,7 @@ impl Summary {
                 Vec::new()
             },
             embs: None,
+            imported_model: None,
             advice: Vec::new(),
         }
     }

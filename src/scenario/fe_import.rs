@@ -10,9 +10,11 @@ use super::checker::Checker;
 use super::data_files::{self, DataFile};
 use super::raw;
 pub mod abaqus;
+pub mod dense;
 mod entries;
 pub mod harwell_boeing;
 pub mod matrix_market;
+mod penalty;
 mod read;
 pub mod rotation;
 pub mod tables;
@@ -185,6 +187,7 @@ pub(crate) fn resolve(
     }
     let constrained: Vec<NodeDof> = raw.constrained.clone().unwrap_or_default();
     let rotation_sign = raw.rotation_sign.unwrap_or_default();
+    let axes = raw.axes.unwrap_or_default();
     for (name, sign) in [("ry", rotation_sign.ry), ("rz", rotation_sign.rz)] {
         if sign != 1 && sign != -1 {
             ck.error(
@@ -233,6 +236,7 @@ pub(crate) fn resolve(
         &track_index,
         rotation_sign,
         raw.rotation_sign.is_some(),
+        axes,
     ) {
         Ok(model) => model,
         Err(e) => {
@@ -263,7 +267,7 @@ pub(crate) fn resolve(
                 (Some(f), None) => format!("{f}: {}", e.message),
                 (None, _) => e.message,
             };
-            ck.error(&path, message);
+            ck.error_with_help(&path, message, e.help);
             return None;
         }
     };
@@ -310,8 +314,10 @@ pub(crate) fn resolve(
         track,
         modes,
         rotation_sign,
+        axes,
         entry_length,
         spans: vec![model.length],
+        totals: Some(model.totals()),
         model: Arc::new(model),
     })
 }
@@ -330,7 +336,7 @@ fn located<T>(
                 Some(c) => format!("{shown}:{}:{c}", e.line),
                 None => format!("{shown}:{}", e.line),
             };
-            ck.error(at, format!("{place}: {}", e.message));
+            ck.error_with_help(at, format!("{place}: {}", e.message), e.help);
             None
         }
     }
@@ -373,7 +379,9 @@ fn read_text(file: &DataFile, at: &str, budget: &Budget, ck: &mut Checker<'_>) -
 }
 
 /// Reads a matrix file: Matrix Market by its banner, Abaqus by its comma
-/// separated entry lines, Harwell–Boeing otherwise.
+/// separated entry lines, a dense text matrix by its lines of numbers,
+/// Harwell–Boeing by its header's type; any other is refused with the
+/// formats vbi reads.
 fn read_matrix(
     file: &DataFile,
     at: &str,
@@ -409,6 +417,19 @@ fn read_matrix(
         matrix_market::parse(&text, &mut sizes)
     } else if looks_like_abaqus(&text) {
         abaqus::parse(&text)
+    } else if dense::looks_dense(&text) {
+        let mut sizes = |rows: u64, _: u64| -> Result<(), String> {
+            if rows as f64 > dofs_limit {
+                return Err(format!(
+                    "its first row has {rows} numbers, more than the {dofs_limit} DOFs \
+                     `limits.dofs` allows an imported model (50 DOFs a unit)"
+                ));
+            }
+            Ok(())
+        };
+        dense::parse(&text, &mut sizes)
+    } else if let Some(e) = not_harwell_boeing(&text) {
+        Err(e)
     } else {
         let mut sizes = |rows: u64, entries: u64| -> Result<(), String> {
             // Harwell–Boeing writes an index and a value per entry, 2 bytes at least.
@@ -446,6 +467,42 @@ fn looks_like_abaqus(text: &str) -> bool {
         .map(str::trim)
         .find(|l| !l.is_empty() && !l.starts_with('*'))
         .is_some_and(|l| l.split(',').count() == 5)
+}
+
+/// The error for a file that is none of the formats, when it is not a
+/// Harwell–Boeing file either: its third line does not start with a
+/// Harwell–Boeing type (three letters: real, complex or pattern; symmetric,
+/// unsymmetric, Hermitian, skew or rectangular; assembled or elemental).
+fn not_harwell_boeing(text: &str) -> Option<ReadError> {
+    let third = text.lines().nth(2);
+    let kind: Vec<char> = third.unwrap_or("").chars().take(3).collect();
+    let typed = kind.len() == 3
+        && "RCP".contains(kind[0].to_ascii_uppercase())
+        && "SUHZR".contains(kind[1].to_ascii_uppercase())
+        && "AE".contains(kind[2].to_ascii_uppercase());
+    if typed {
+        return None;
+    }
+    let shown: String = third.unwrap_or("").chars().take(40).collect();
+    let third = match third {
+        Some(_) => format!(
+            "its third line `{}` does not start with a Harwell–Boeing type (RSA, RUA)",
+            crate::scenario::diagnostic::escaped(&shown)
+        ),
+        None => "it is shorter than a Harwell–Boeing header (4 lines)".to_string(),
+    };
+    Some(
+        ReadError::new(
+            1,
+            None,
+            format!(
+                "this is not a matrix file vbi reads: it has no `%%MatrixMarket` banner, no \
+                 Abaqus `node, dof, node, dof, value` lines, its lines are not all numbers (a \
+                 dense text matrix), and {third}"
+            ),
+        )
+        .with_help(Some(dense::FORMATS_HELP.to_string())),
+    )
 }
 
 /// The most DOFs of an imported model the budget allows.

@@ -65,7 +65,7 @@ impl Bridge {
             Bridge::Plate(plate) => plate.mass_per_area * plate.width,
             // The mass a rigid vertical translation moves, per deck length
             // (piers and all, when the model has them).
-            Bridge::FeImport(f) => f.model.vertical_mass / f.model.length,
+            Bridge::FeImport(f) => f.model.vertical_mass() / f.model.length,
         }
     }
 

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::imported::{Direction, ImportedModel, RotationSign};
+use super::imported::{Axes, Direction, ImportedModel, RotationSign};
 use super::{Damping, Modes};
 
 /// An imported finite-element bridge.
@@ -33,6 +33,9 @@ pub struct FeImport {
     /// Signs of the files' slope rotations (ry here = sign × ry in the files).
     #[serde(skip_serializing_if = "RotationSign::is_default")]
     pub rotation_sign: RotationSign,
+    /// The files' axes (y up: read turned into vbi's, z up).
+    #[serde(skip_serializing_if = "Axes::is_default")]
+    pub axes: Axes,
     /// Length over which a wheel's load enters the model at each free rail
     /// end, m (0: at once; [`crate::bridge::fe_import::entry`]).
     pub entry_length: f64,
@@ -43,6 +46,10 @@ pub struct FeImport {
     /// The model read from the files.
     #[serde(skip)]
     pub model: Arc<ImportedModel>,
+    /// Its mass and its static deflection under the vehicles, as the plan
+    /// measured them (`None` before the plan).
+    #[serde(skip)]
+    pub totals: Option<super::imported::ImportedTotals>,
 }
 
 /// A rail as given.

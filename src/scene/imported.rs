@@ -59,6 +59,64 @@ pub struct RotationSign {
     pub rz: i64,
 }
 
+/// The files' axes: which of their directions is vbi's vertical. vbi's
+/// own are x along the track, y lateral (to the left of travel) and z up.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Axes {
+    /// x along the track, y lateral, z up (vbi's own): the files' names are
+    /// read as they are.
+    #[default]
+    ZUp,
+    /// x along the track, y up, z = x × y (to the right of travel), as an
+    /// OpenSees 2D frame writes its DOFs (ndm 2, ndf 3: ux, uy, rz) or a 3D
+    /// model built with y up: read as vbi's axes turned about x, the files'
+    /// uy as uz, their uz as −uy, their ry as rz and their rz as −ry
+    /// (OpenSees' rz = +∂v/∂x is vbi's ry = −∂w/∂x). The scene's own
+    /// directions (`constrained`, records) are vbi's.
+    YUp,
+}
+
+impl Axes {
+    /// vbi's direction of the files' `direction`, and the sign that turns
+    /// the files' value into vbi's.
+    pub fn read(self, direction: Direction) -> (Direction, f64) {
+        use Direction::*;
+        match self {
+            Axes::ZUp => (direction, 1.0),
+            Axes::YUp => match direction {
+                Ux => (Ux, 1.0),
+                Uy => (Uz, 1.0),
+                Uz => (Uy, -1.0),
+                Rx => (Rx, 1.0),
+                Ry => (Rz, 1.0),
+                Rz => (Ry, -1.0),
+            },
+        }
+    }
+
+    /// The files' direction that is read as vbi's `direction`.
+    pub fn written(self, direction: Direction) -> Direction {
+        Direction::ALL
+            .into_iter()
+            .find(|&d| self.read(d).0 == direction)
+            .unwrap_or(direction)
+    }
+
+    /// Its name in the scene.
+    pub fn name(self) -> &'static str {
+        match self {
+            Axes::ZUp => "z_up",
+            Axes::YUp => "y_up",
+        }
+    }
+
+    /// Whether it is the default (vbi's axes).
+    pub fn is_default(&self) -> bool {
+        *self == Self::ZUp
+    }
+}
+
 fn plus_one() -> i64 {
     1
 }
@@ -80,9 +138,11 @@ pub struct ImportedModel {
     pub track: Vec<usize>,
     /// Deck length: from the first rail node to the last, m.
     pub length: f64,
-    /// Mass moving with a rigid vertical translation of every node (all
-    /// uz DOFs, constrained ones included), kg.
-    pub vertical_mass: f64,
+    /// Mass moving with a rigid translation of every node in x, y and z:
+    /// δᵀMδ with δ = 1 on every DOF of the map in that direction
+    /// (constrained ones included; DOFs the export dropped are not in the
+    /// files), kg.
+    pub translational_mass: [f64; 3],
     /// M δ on the free DOFs, δ = 1 on every uz DOF (constrained ones
     /// included: the supports move with the ground), kg: the inertia load
     /// of a unit vertical ground acceleration ([`crate::ground`]).
@@ -202,8 +262,72 @@ impl ImportedModel {
         (free(false), free(true))
     }
 
+    /// Mass moving with a rigid vertical translation of every node (all
+    /// uz DOFs of the map, constrained ones included), kg.
+    pub fn vertical_mass(&self) -> f64 {
+        self.translational_mass[2]
+    }
+
     /// Free DOF of (node, direction), if any.
     pub fn dof(&self, node: u64, direction: Direction) -> Option<usize> {
         self.dofs.iter().position(|&d| d == (node, direction))
+    }
+}
+
+/// What an engineer checks first on an imported model, before its modes:
+/// how heavy it is and how far it deflects under the traffic
+/// (`summary.json`'s `imported_model`, `vbi modes`; the plan's advice
+/// warns where a bridge could not be so: a model in kN and t, or in mm).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ImportedTotals {
+    /// The track's length, from the first rail node to the last, m.
+    pub length: f64,
+    /// Mass moving with a rigid translation of the whole model in x (along
+    /// the track), y (lateral) and z (up): δᵀMδ with δ = 1 on every DOF
+    /// of the map in that direction, constrained ones included; DOFs the
+    /// export dropped are not in the files, so a girder whose supports'
+    /// DOFs were dropped reports a little less than its mass (a consistent
+    /// mass of n elements: about 1.26/n of it less), kg.
+    pub mass: TranslationalMass,
+    /// The vertical mass per metre of track, `mass.z / length`, kg/m.
+    pub mass_per_length: f64,
+    /// The vehicles' total static weight, the sum of their static wheel
+    /// loads, N; absent without vehicles.
+    pub static_load: Option<f64>,
+    /// Where on the track that weight stands for `static_deflection`: the
+    /// most flexible of 101 points evenly along the track's centre line
+    /// (its ends included: the middle of a single span), m from its start.
+    pub static_load_x: Option<f64>,
+    /// The static deflection there under the whole weight, W · G(x, x)
+    /// with G the model's exact static flexibility (K⁻¹), downward
+    /// positive, m: the plausibility figure (a bridge under its traffic
+    /// deflects some span/500 to span/2000; a model in kN read as N, 1000
+    /// times that).
+    pub static_deflection: Option<f64>,
+}
+
+/// Translational mass per direction, kg.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TranslationalMass {
+    /// Along the track, kg.
+    pub x: f64,
+    /// Lateral, kg.
+    pub y: f64,
+    /// Vertical, kg.
+    pub z: f64,
+}
+
+impl ImportedModel {
+    /// The model's [`ImportedTotals`] without the vehicles' static load.
+    pub fn totals(&self) -> ImportedTotals {
+        let [x, y, z] = self.translational_mass;
+        ImportedTotals {
+            length: self.length,
+            mass: TranslationalMass { x, y, z },
+            mass_per_length: z / self.length,
+            static_load: None,
+            static_load_x: None,
+            static_deflection: None,
+        }
     }
 }

@@ -28,6 +28,7 @@ mod embs;
 mod event_reference_oracle;
 mod fe_import;
 mod fe_import_entries;
+mod fe_import_opensees;
 mod fe_import_rotations;
 mod fuzz;
 mod generate;

@@ -7,6 +7,30 @@ use std::collections::HashMap;
 
 use super::{AssemblyError, Direction, MatrixFile, SYMMETRY_TOLERANCE, Source, fail, fail_at};
 
+/// (line, column) of each map row's diagonal entry in `file`, where it has
+/// one (the first, if repeated: [`both_triangles`] refuses the repeat).
+pub(super) fn diagonal_places(
+    file: &MatrixFile,
+    position: &HashMap<(u64, Direction), usize>,
+) -> Vec<Option<(usize, usize)>> {
+    let mut out = vec![None; position.len()];
+    for (e, &(r, c, _)) in file.entries.iter().enumerate() {
+        if r != c {
+            continue;
+        }
+        let row = match &file.dofs {
+            Some(dofs) => dofs.get(r).and_then(|d| position.get(d)).copied(),
+            None => Some(r),
+        };
+        if let Some(slot) = row.and_then(|row| out.get_mut(row))
+            && slot.is_none()
+        {
+            *slot = file.places.get(e).copied();
+        }
+    }
+    out
+}
+
 /// Both triangles of a read matrix on the map's DOFs: a symmetric file's
 /// triangle mirrored (refused if it holds entries of both triangles), a
 /// general file checked for symmetry within [`SYMMETRY_TOLERANCE`] and

@@ -6,9 +6,9 @@ use std::collections::HashMap;
 
 use thiserror::Error;
 
-use crate::scene::imported::{Direction, ImportedModel, RailDofs, RailEntry, RotationSign};
+use crate::scene::imported::{Axes, Direction, ImportedModel, RailDofs, RailEntry, RotationSign};
 
-use super::{entries, matrix_market, rotation};
+use super::{entries, matrix_market, penalty, rotation};
 
 /// A problem at a line (and column) of one file.
 #[derive(Debug, Clone, Error, PartialEq)]
@@ -20,6 +20,8 @@ pub struct ReadError {
     pub column: Option<usize>,
     /// What is wrong.
     pub message: String,
+    /// What to do about it, if there is more to say than the message.
+    pub help: Option<String>,
 }
 
 impl ReadError {
@@ -29,7 +31,14 @@ impl ReadError {
             line,
             column,
             message: message.into(),
+            help: None,
         }
+    }
+
+    /// The same error with a `help:` line.
+    pub fn with_help(mut self, help: Option<String>) -> Self {
+        self.help = help;
+        self
     }
 }
 
@@ -110,6 +119,16 @@ pub struct AssemblyError {
     pub place: Option<(usize, usize)>,
     /// What is wrong.
     pub message: String,
+    /// What to do about it, if there is more to say than the message.
+    pub help: Option<String>,
+}
+
+impl AssemblyError {
+    /// The same error with a `help:` line.
+    pub fn with_help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
 }
 
 pub(crate) fn fail<T>(source: Source, message: impl Into<String>) -> Result<T, AssemblyError> {
@@ -117,6 +136,7 @@ pub(crate) fn fail<T>(source: Source, message: impl Into<String>) -> Result<T, A
         source_input: source,
         place: None,
         message: message.into(),
+        help: None,
     })
 }
 
@@ -130,6 +150,7 @@ pub(crate) fn fail_at<T>(
         source_input: source,
         place: Some(place),
         message: message.into(),
+        help: None,
     })
 }
 
@@ -148,19 +169,39 @@ impl ImportedModel {
     /// slope rotations into this program's convention, which each rail's
     /// stiffness must then confirm ([`rotation`]); `sign_declared` says
     /// the scene wrote `rotation_sign` (then a rail whose stiffness cannot
-    /// tell the sign is taken at the scene's word).
+    /// tell the sign is taken at the scene's word). `axes` names the files'
+    /// vertical: their directions are read as vbi's ([`Axes::read`]) before
+    /// anything else, so `constrained`, `rotation_sign` and every message
+    /// speak vbi's axes.
     #[allow(clippy::too_many_arguments)]
     pub fn assemble(
-        stiffness: MatrixFile,
-        mass: MatrixFile,
-        damping: Option<MatrixFile>,
+        mut stiffness: MatrixFile,
+        mut mass: MatrixFile,
+        mut damping: Option<MatrixFile>,
         map: Option<Vec<(u64, Direction)>>,
         constrained: &[(u64, Direction)],
         rails: &[RailNodes],
         track: &[usize],
         rotation_sign: RotationSign,
         sign_declared: bool,
+        axes: Axes,
     ) -> Result<Self, AssemblyError> {
+        // The files' directions in vbi's axes (an Abaqus file names its own).
+        for file in [Some(&mut stiffness), Some(&mut mass), damping.as_mut()]
+            .into_iter()
+            .flatten()
+        {
+            if let Some(dofs) = &mut file.dofs {
+                for dof in dofs.iter_mut() {
+                    dof.1 = axes.read(dof.1).0;
+                }
+            }
+        }
+        let map = map.map(|map| {
+            map.into_iter()
+                .map(|(node, d)| (node, axes.read(d).0))
+                .collect()
+        });
         let map = match (map, &stiffness.dofs) {
             (Some(map), _) => map,
             (None, Some(dofs)) => dofs.clone(),
@@ -181,8 +222,15 @@ impl ImportedModel {
                 ),
             );
         }
+        // The map's names first: a y-up model's are refused before anything
+        // read in them is reported.
+        if !map.iter().any(|d| d.1 == Direction::Uz) {
+            return Err(no_vertical(&map, axes));
+        }
         let position: HashMap<(u64, Direction), usize> =
             map.iter().enumerate().map(|(i, &k)| (k, i)).collect();
+        let stiffness_diagonal = entries::diagonal_places(&stiffness, &position);
+        let mass_diagonal = entries::diagonal_places(&mass, &position);
         let k = entries::both_triangles(stiffness, &map, &position, Source::Stiffness)?;
         let m = entries::both_triangles(mass, &map, &position, Source::Mass)?;
         let c = match damping {
@@ -194,11 +242,15 @@ impl ImportedModel {
             )?),
             None => None,
         };
-        // θ_here = sign · θ_file: D K D with D = diag(sign), exact.
-        let (k, m, c) = if rotation_sign.is_default() {
+        // θ_here = sign · θ_file: D K D with D = diag(sign), exact; the
+        // axes' turn likewise (vbi's ry = −rz of a y-up file).
+        let (k, m, c) = if rotation_sign.is_default() && axes.is_default() {
             (k, m, c)
         } else {
-            let sign = |i: usize| rotation_sign.of(map[i].1) as f64;
+            let sign = |i: usize| {
+                let (_, turned) = axes.read(axes.written(map[i].1));
+                turned * rotation_sign.of(map[i].1) as f64
+            };
             let flip = |entries: Vec<(usize, usize, f64)>| -> Vec<(usize, usize, f64)> {
                 entries
                     .into_iter()
@@ -212,22 +264,41 @@ impl ImportedModel {
             match position.get(&(node, direction)) {
                 Some(&dof) => free[dof] = false,
                 None => {
+                    let turned = if axes.is_default() {
+                        String::new()
+                    } else {
+                        format!(
+                            "; with `axes: {}` the scene names vbi's directions (z up): the \
+                             files' {} is {} here",
+                            axes.name(),
+                            axes.written(direction).name(),
+                            direction.name()
+                        )
+                    };
                     return fail(
                         Source::Constrained(i),
                         format!(
                             "node {node} {} is not in the DOF map (a DOF removed from the \
-                             matrices already must not be listed)",
+                             matrices already must not be listed){turned}",
                             direction.name()
                         ),
                     );
                 }
             }
         }
-        let vertical_mass = m
-            .iter()
-            .filter(|&&(r, c, _)| map[r].1 == Direction::Uz && map[c].1 == Direction::Uz)
-            .map(|e| e.2)
-            .sum();
+        let mut translational_mass = [0.0; 3];
+        for (axis, direction) in [Direction::Ux, Direction::Uy, Direction::Uz]
+            .into_iter()
+            .enumerate()
+        {
+            // + 0.0: an empty sum is −0.0, shown as such in summary.json.
+            translational_mass[axis] = m
+                .iter()
+                .filter(|&&(r, c, _)| map[r].1 == direction && map[c].1 == direction)
+                .map(|e| e.2)
+                .sum::<f64>()
+                + 0.0;
+        }
         let mut index = vec![None; n];
         let mut dofs = Vec::new();
         for dof in 0..n {
@@ -296,32 +367,65 @@ impl ImportedModel {
                 );
             }
         }
+        let free_places = |places: &[Option<(usize, usize)>]| -> Vec<Option<(usize, usize)>> {
+            (0..n).filter(|&g| free[g]).map(|g| places[g]).collect()
+        };
+        penalty::check(
+            &k,
+            &dofs,
+            &free_places(&stiffness_diagonal),
+            Source::Stiffness,
+        )?;
+        penalty::check(&m, &dofs, &free_places(&mass_diagonal), Source::Mass)?;
         if let Some(short) = rails.iter().position(|r| r.1.len() < 2) {
             return fail(Source::Rail(short), "a rail needs at least two nodes");
         }
-        // Rails: every node in the map with uz; deck coordinates from the
+        // Rails: every node in the map; one without uz is a support (the
+        // export dropped its fixed DOFs), unless no node of the rail has
+        // one (the map has uz: checked above). Deck coordinates from the
         // first node of any rail.
         let origin = rails.iter().map(|r| r.1[0].1).fold(f64::INFINITY, f64::min);
         let end = rails
             .iter()
             .map(|r| r.1[r.1.len() - 1].1)
             .fold(f64::NEG_INFINITY, f64::max);
+        let nodes_in_map: std::collections::HashSet<u64> = map.iter().map(|d| d.0).collect();
         let mut rail_dofs = Vec::with_capacity(rails.len());
         for (ri, (name, nodes)) in rails.iter().enumerate() {
             let find = |node: u64, d: Direction| position.get(&(node, d)).copied();
+            let name_shown = crate::scenario::diagnostic::escaped(name);
             for &(node, _) in nodes {
-                if !map.iter().any(|&(mn, _)| mn == node) {
-                    return fail(
-                        Source::Rail(ri),
-                        format!("rail `{name}`: node {node} is not in the DOF map"),
-                    );
+                if !nodes_in_map.contains(&node) {
+                    return Err(AssemblyError {
+                        source_input: Source::Rail(ri),
+                        place: None,
+                        message: format!(
+                            "rail `{name_shown}`: node {node} is not in the DOF map (no DOF of \
+                             it is): a rail node without its vertical DOF is taken as a support \
+                             only when the map holds another DOF of it, so that a mistyped id is \
+                             not read as a support"
+                        ),
+                        help: Some(
+                            "check the node id; a node fixed in every direction, which the \
+                             export dropped, must be exported with its DOFs and these listed \
+                             under `bridge.constrained`"
+                                .into(),
+                        ),
+                    });
                 }
-                if find(node, Direction::Uz).is_none() {
-                    return fail(
-                        Source::Rail(ri),
-                        format!("rail `{name}`: node {node} has no uz DOF in the map"),
-                    );
-                }
+            }
+            if nodes
+                .iter()
+                .all(|&(node, _)| find(node, Direction::Uz).is_none())
+            {
+                return fail(
+                    Source::Rail(ri),
+                    format!(
+                        "rail `{name_shown}`: none of its nodes has a uz DOF in the map (vbi's \
+                         vertical is z): a rail every node of which is held vertically carries \
+                         nothing"
+                    ),
+                );
             }
             let column = |d: Direction| -> Vec<Option<usize>> {
                 nodes
@@ -357,7 +461,7 @@ impl ImportedModel {
             rails: rail_dofs,
             track: track.to_vec(),
             length: end - origin,
-            vertical_mass,
+            translational_mass,
             vertical_inertia,
             lateral_inertia,
             entry: RailEntry {
@@ -367,5 +471,39 @@ impl ImportedModel {
                 exit: 0.0,
             },
         })
+    }
+}
+
+/// The DOF map has no vertical DOF: what it has, and how a y-up model is
+/// read.
+fn no_vertical(map: &[(u64, Direction)], axes: Axes) -> AssemblyError {
+    let mut names: Vec<Direction> = map.iter().map(|d| axes.written(d.1)).collect();
+    names.sort_unstable();
+    names.dedup();
+    let names: Vec<&str> = names.into_iter().map(Direction::name).collect();
+    let (message, help) = match axes {
+        Axes::ZUp => (
+            format!(
+                "the DOF map has no uz DOF: vbi's vertical is z (x along the track, y lateral, z \
+                 up), and the map's directions are {}",
+                names.join(", ")
+            ),
+            "a model with y up (an OpenSees 2D frame, ndm 2 ndf 3: ux, uy, rz) is read with \
+             `axes: y_up` under `bridge` (its uy as vbi's uz, its rz as ry = −rz); otherwise \
+             name the vertical DOFs uz in the map",
+        ),
+        Axes::YUp => (
+            format!(
+                "the DOF map has no uy DOF, the vertical of `axes: y_up`; its directions are {}",
+                names.join(", ")
+            ),
+            "leave `axes` out if the files' vertical is z",
+        ),
+    };
+    AssemblyError {
+        source_input: Source::DofMap,
+        place: None,
+        message,
+        help: Some(help.into()),
     }
 }

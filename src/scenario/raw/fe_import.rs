@@ -5,13 +5,14 @@ use serde::Deserialize;
 
 use super::ModesRaw;
 use crate::scene::NodeDof;
-use crate::scene::imported::RotationSign;
+use crate::scene::imported::{Axes, RotationSign};
 
 /// A bridge imported from a finite-element program: stiffness and mass
-/// matrices (Matrix Market coordinate or Abaqus `*MATRIX GENERATE`
-/// coordinate output, told apart by their content), the DOF map and the
-/// rails the wheels run on. Paths are relative to the scenario file.
-/// Coordinates: x along the track, y lateral, z vertical up; SI units.
+/// matrices (Matrix Market coordinate, Harwell–Boeing, Abaqus `*MATRIX
+/// GENERATE` coordinate output or dense text, told apart by their content),
+/// the DOF map and the rails the wheels run on. Paths are relative to the
+/// scenario file. Coordinates: x along the track, y lateral, z vertical up
+/// (`axes: y_up` reads a model with y up); SI units (N, kg, m).
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FeImportRaw {
@@ -48,6 +49,14 @@ pub struct FeImportRaw {
     /// a sign the stiffness contradicts along a rail is refused.
     #[serde(default)]
     pub rotation_sign: Option<RotationSign>,
+    /// The files' axes: `z_up` (default; x along the track, y lateral, z
+    /// up, vbi's own) or `y_up` (x along the track, y up, as an OpenSees 2D
+    /// frame's `ux, uy, rz`): a y-up model's uy is read as uz, its uz as
+    /// −uy, its ry as rz and its rz as −ry (the axes turned about x, so a
+    /// right-handed rotation stays right-handed). The scene's own
+    /// directions (`constrained`, records, `rotation_sign`) are vbi's.
+    #[serde(default)]
+    pub axes: Option<Axes>,
     /// Length over which a wheel's load passes from the rigid approach onto
     /// the model at a free rail end (and off it at the far end), m: the
     /// wheel couples to the rail with a weight rising from 0 at the rail
