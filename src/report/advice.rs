@@ -126,6 +126,18 @@ fn rails_left_out(summary: &Summary) -> Option<Advice> {
     })
 }
 
+/// Whether `quantity` is a response of the bridge (displacement,
+/// acceleration, moment or shear), which goes on after the vehicles leave.
+fn is_bridge_quantity(quantity: Quantity) -> bool {
+    matches!(
+        quantity,
+        Quantity::BridgeDisplacement
+            | Quantity::BridgeAcceleration
+            | Quantity::BridgeMoment
+            | Quantity::BridgeShear
+    )
+}
+
 /// A bridge response whose largest value is its last recorded one.
 fn peaks_at_the_end(scenario: &Scenario, summary: &Summary) -> Vec<Advice> {
     let run = &summary.run;
@@ -135,14 +147,7 @@ fn peaks_at_the_end(scenario: &Scenario, summary: &Summary) -> Vec<Advice> {
         .quantities
         .iter()
         .filter(|q| {
-            matches!(
-                q.quantity,
-                Quantity::BridgeDisplacement
-                    | Quantity::BridgeAcceleration
-                    | Quantity::BridgeMoment
-                    | Quantity::BridgeShear
-            ) && q.max_abs.time >= last
-                && q.max_abs.value != 0.0
+            is_bridge_quantity(q.quantity) && q.max_abs.time >= last && q.max_abs.value != 0.0
         })
         .map(|q| {
             let a = Advice::new(
@@ -298,15 +303,10 @@ fn accelerations_above_the_modes(scenario: &Scenario, summary: &Summary) -> Opti
 /// largest 4 ms before the end).
 fn ground_motion_after_the_run(scenario: &Scenario, summary: &Summary) -> Vec<Advice> {
     let end = summary.run.end_time;
-    let bridge_recorded = summary.quantities.iter().any(|q| {
-        matches!(
-            q.quantity,
-            Quantity::BridgeDisplacement
-                | Quantity::BridgeAcceleration
-                | Quantity::BridgeMoment
-                | Quantity::BridgeShear
-        )
-    });
+    let bridge_recorded = summary
+        .quantities
+        .iter()
+        .any(|q| is_bridge_quantity(q.quantity));
     if !bridge_recorded {
         return Vec::new();
     }

@@ -38,22 +38,7 @@ pub fn resolved_yaml(scenario: &Scenario) -> String {
         let f: String = f.chars().filter(|c| !c.is_control()).collect();
         format!("{FROM}{f}\n")
     });
-    // One pin per data file read, so that the file reruns from any folder
-    // reading only these bytes ([`crate::scenario::data_files::READ`]). A
-    // path that would not fit on one line is left unpinned.
-    let read: String = scenario
-        .data_read
-        .iter()
-        .filter(|r| !r.path.chars().any(char::is_control))
-        .map(|r| {
-            format!(
-                "{}{} {}\n",
-                crate::scenario::data_files::READ,
-                r.sha256,
-                r.path
-            )
-        })
-        .collect();
+    let read = read_pins(scenario);
     format!(
         "# Resolved by vbi {}: the scene as run, every default filled in.\n{from}{read}{}",
         env!("CARGO_PKG_VERSION"),
