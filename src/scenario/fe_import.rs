@@ -483,10 +483,12 @@ fn not_harwell_boeing(text: &str) -> Option<ReadError> {
     if typed {
         return None;
     }
-    let shown: String = third.unwrap_or("").chars().take(40).collect();
+    // Only the three characters where the type belongs are shown: the
+    // line is the stranger's text (issue 39: no file content in messages).
+    let shown: String = kind.iter().collect();
     let third = match third {
         Some(_) => format!(
-            "its third line `{}` does not start with a Harwell–Boeing type (RSA, RUA)",
+            "its third line starts with `{}`, not with a Harwell–Boeing type (RSA, RUA)",
             crate::scenario::diagnostic::escaped(&shown)
         ),
         None => "it is shorter than a Harwell–Boeing header (4 lines)".to_string(),
