@@ -163,7 +163,10 @@ fn bridge_block(bridge: StarterBridge, vehicle: StarterVehicle) -> &'static str 
              # (EN 1991-2 Table 6.6 for L >= 20 m).\n\
              bridge:\n  type: beam\n  spans: [20.0]                    # m\n  \
              bending_stiffness: 2.43e10       # EI, N·m²\n  mass_per_length: 15000.0         # kg/m\n  \
-             modes: {max_frequency: 30.0}     # Hz, EN 1991-2 6.4.6.5(3)\n  \
+             # Every mode up to the deck-acceleration filter, the greater of 30 Hz,\n  \
+             # 1.5 f1 and f3 (EN 1991-2 6.4.6.5(3), EN 1990 A2.4.4.2.1(4); here\n  \
+             # f3 = 9 f1 = 45 Hz); a cap below it warns.\n  \
+             modes: {max_frequency: 50.0}     # Hz\n  \
              damping: {type: modal, ratio: 0.01}\n"
         }
         (StarterBridge::Beam, v) if v.is_railway() => {

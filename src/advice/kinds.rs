@@ -169,10 +169,13 @@ pub const RAILS_FLEXIBILITY_LEFT_OUT: Kind = Kind {
 pub const ACCELERATION_FILTER_ABOVE_MODES: Kind = Kind {
     id: "acceleration-filter-above-modes",
     severity: Severity::Warning,
-    meaning: "a deck-acceleration record sums every mode up to its cut-off (EN 1990 \
-              A2.4.4.2.1), but the bridge keeps fewer modes than it has below the cut-off",
+    meaning: "a deck acceleration (a record, the envelope, a resonance check's) sums every \
+              mode up to its cut-off (EN 1990 A2.4.4.2.1(4): unless set, the greater of 30 Hz, \
+              1.5 f₁ and f₃ of the bridge itself), but `bridge.modes` keeps fewer modes than \
+              the bridge has below the cut-off",
     why: "the modes between the kept top and the filter are missing from the sum: the peak \
-          acceleration is too low (11 % on HSLM-A1 over a 15 m span with one mode kept)",
+          acceleration is too low (10.9 % on HSLM-A1 over a 15 m span with one mode kept \
+          and the filter at its f₃ = 68.8 Hz)",
     fix: "keep the modes up to the filter (`bridge.modes: {max_frequency: F}` with F the \
           filter, or leave `bridge.modes` out), or lower the record's `max_frequency` if a \
           lower filter is meant",

@@ -100,6 +100,17 @@ pub(crate) fn plan(
             return None;
         }
     };
+    // The deck-acceleration filter of EN 1990 A2.4.4.2.1(4) is the
+    // bridge's own max(30 Hz, 1.5 f₁, f₃), whatever `bridge.modes` keeps
+    // (a cap that keeps one mode must not lower it to the kept top).
+    let lowest = match super::acceleration::lowest_three(&bridge, &modal, cache) {
+        Ok(f) => f,
+        Err(e) => {
+            ck.error("bridge", e.to_string());
+            return None;
+        }
+    };
+    let default_filter = super::acceleration::default_filter(&lowest);
     derive_dimensionless(&raw.vehicles, &mut vehicles, &bridge, &modal, ck);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, ck);
     if contact.is_unilateral()
@@ -147,7 +158,8 @@ pub(crate) fn plan(
         &vehicles,
         &contact,
         &surface,
-        &modal.frequencies(),
+        lowest.first().copied().unwrap_or(f64::NAN),
+        default_filter,
         ck,
     );
     let points = study
@@ -194,19 +206,29 @@ pub(crate) fn plan(
         }
         _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
     };
-    // The highest mode frequency any deck acceleration sums (it needs only
-    // f₁ and f₃, which the minimum modes already give).
-    let record_cutoff = crate::scenario::records::highest_acceleration_cutoff(
-        raw.record.as_deref(),
-        &modal.frequencies(),
-    );
-    let record_cutoff = match (
-        record_cutoff,
-        crate::scenario::envelopes::acceleration_cut(raw.envelopes.as_ref(), &modal.frequencies()),
-    ) {
-        (Some(a), Some(b)) => Some(a.max(b)),
-        (a, b) => a.or(b),
+    // The highest mode frequency any deck acceleration the runs record
+    // sums: the records' and the envelope's; a resonance check's runs
+    // record neither (they envelope the deck themselves, peaks only).
+    let resonance_filter = match &study {
+        Some(Study::ResonanceCheck(check)) => Some(check.max_frequency),
+        _ => None,
     };
+    let history_cutoff = match resonance_filter {
+        Some(_) => None,
+        None => [
+            crate::scenario::records::highest_acceleration_cutoff(
+                raw.record.as_deref(),
+                default_filter,
+            ),
+            crate::scenario::envelopes::acceleration_cut(raw.envelopes.as_ref(), default_filter),
+        ]
+        .into_iter()
+        .flatten()
+        .reduce(f64::max),
+    };
+    // The modes they need, or a resonance check's, whose verdict reads the
+    // deck acceleration.
+    let record_cutoff = resonance_filter.or(history_cutoff);
     // Which contacts wheels with a mass of their own hold: what the rails'
     // flexibility under a wheel matters for ([`track_flexibility`]).
     let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
@@ -390,11 +412,12 @@ pub(crate) fn plan(
         return None;
     }
     // Deck accelerations sum every mode up to their filter: where the kept
-    // modes stop below it, count the bridge's modes there (one
-    // factorisation) so the run can say what the sum misses.
+    // modes stop below it (a `bridge.modes` the file sets), count the
+    // bridge's modes there (one factorisation) so the run can say what the
+    // sum misses.
     if let (Some(cut), Some(&top)) = (record_cutoff, modal.frequencies().last())
         && cut > top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE)
-        && let Ok(Some(count)) = ModalBridge::count_up_to(&bridge, cut)
+        && let Ok(count) = super::acceleration::modes_up_to(&bridge, cut, cache)
         && count > modal.mode_count()
     {
         modal.acceleration_filter = Some(crate::bridge::AccelerationFilter {
@@ -450,8 +473,9 @@ pub(crate) fn plan(
             longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
         }
     }
-    // Deck accelerations: their highest mode keeps its phase over the run.
-    let acceleration_top = record_cutoff.map_or(0.0, |cut| cut.min(highest));
+    // Recorded deck accelerations: their highest mode keeps its phase over
+    // the run (a history; a resonance check keeps only peaks).
+    let acceleration_top = history_cutoff.map_or(0.0, |cut| cut.min(highest));
     let step_without_ground = solver_raw.time_step.is_none().then(|| {
         content::time_step(highest, &excitations, shortest_crossing)
             .min(content::phase_time_step(acceleration_top, longest_run))
@@ -526,7 +550,7 @@ pub(crate) fn plan(
     ck.records_checked = true;
     let record = resolve_records(
         raw.record.as_deref(),
-        &modal.frequencies(),
+        Some(default_filter),
         Some(&bridge),
         &vehicles,
         &contact,
@@ -534,7 +558,7 @@ pub(crate) fn plan(
     );
     let envelopes = crate::scenario::envelopes::resolve_envelopes(
         raw.envelopes.as_ref(),
-        &modal.frequencies(),
+        Some(default_filter),
         &bridge,
         ck,
     );

@@ -21,6 +21,7 @@
 //! format's own, and come in one round with the type errors the format
 //! went on past.
 
+pub mod acceleration;
 pub mod advice;
 pub mod bridge_only;
 mod budget;

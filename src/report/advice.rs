@@ -230,6 +230,13 @@ fn peaks_on_a_rail_end_ramp(scenario: &Scenario, summary: &Summary) -> Vec<Advic
         .collect()
 }
 
+/// A frequency in Hz to 0.01 Hz, without trailing zeros (`30`, `68.83`):
+/// a filter the file gives reads as written, a computed f₃ stays short.
+fn hz(f: f64) -> String {
+    let text = format!("{f:.2}");
+    text.trim_end_matches('0').trim_end_matches('.').to_owned()
+}
+
 /// Deck accelerations whose filter reaches above the modes kept, on a bridge
 /// that has modes there: EN 1990 A2.4.4.2.1(4) sums every mode up to
 /// max(30 Hz, 1.5 f₁, f₃), and the modes between the kept top and the
@@ -251,41 +258,44 @@ fn accelerations_above_the_modes(scenario: &Scenario, summary: &Summary) -> Opti
         .filter_map(|r| {
             r.max_frequency
                 .filter(|&cut| above(cut))
-                .map(|cut| format!("`{}` ({cut} Hz)", r.name))
+                .map(|cut| format!("`{}` ({} Hz)", r.name, hz(cut)))
         })
         .collect();
     if let Some(envelopes) = &scenario.envelopes
         && envelopes.quantities.contains(&Quantity::BridgeAcceleration)
         && let Some(cut) = envelopes.max_frequency.filter(|&cut| above(cut))
     {
-        names.push(format!("the acceleration envelope ({cut} Hz)"));
+        names.push(format!("the acceleration envelope ({} Hz)", hz(cut)));
     }
     if names.is_empty() {
         return None;
     }
     let one = names.len() == 1;
+    // A cap that keeps the filter's modes, rounded up to 0.1 Hz (the
+    // default filter is a computed f₃).
+    let cap = (filter.max_frequency * 10.0).ceil() / 10.0;
     Some(
         Advice::new(
             &advice::ACCELERATION_FILTER_ABOVE_MODES,
             format!(
                 "{} {} every mode up to {} (the deck-acceleration filter, EN 1990 \
-                 A2.4.4.2.1), but the bridge keeps {} modes, up to {top:.2} Hz, of the {} it \
+                 A2.4.4.2.1(4): by default the greater of 30 Hz, 1.5 f₁ and f₃ of the \
+                 bridge), but `bridge.modes` keeps {} modes, up to {top:.2} Hz, of the {} it \
                  has up to {} Hz: the modes between are missing from {}",
                 names.join(", "),
                 if one { "sums" } else { "sum" },
                 if one { "its cut-off" } else { "their cut-offs" },
                 run.modes_used,
                 filter.modes,
-                filter.max_frequency,
+                hz(filter.max_frequency),
                 if one { "it" } else { "them" },
             ),
         )
         .at("bridge.modes")
         .help(format!(
-            "keep the modes up to the filter (`bridge.modes: {{max_frequency: {}}}`, or leave \
-             `bridge.modes` out and the automatic choice keeps them), or lower the record's \
-             `max_frequency` if a lower filter is meant",
-            filter.max_frequency,
+            "keep the modes up to the filter (`bridge.modes: {{max_frequency: {cap}}}`, or \
+             leave `bridge.modes` out and the automatic choice keeps them), or lower the \
+             record's `max_frequency` if a lower filter is meant",
         ))
         .figure("filter_hz", filter.max_frequency)
         .figure("modes_to_filter", filter.modes as f64)

@@ -268,19 +268,23 @@ fn check_grid(ck: &mut Checker<'_>, path: &str, grid: &crate::scene::Grid) {
     }
 }
 
-/// A study and its requirements on the scene.
+/// A study and its requirements on the scene. `first_frequency` is the
+/// bridge's f₁ (Hz), `default_filter` the planning stage's deck-acceleration
+/// cut-off (Hz) for a study that gives none.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn resolve_study(
     raw: Option<&raw::StudyRaw>,
     bridge: &Bridge,
     vehicles: &[Vehicle],
     contact: &Contact,
     surface: &Surface,
-    frequencies: &[f64],
+    first_frequency: f64,
+    default_filter: f64,
     ck: &mut Checker<'_>,
 ) -> Option<Study> {
     match raw? {
         raw::StudyRaw::ResonanceCheck(check) => Some(Study::ResonanceCheck(
-            super::resonance::resolve_resonance(check, bridge, frequencies, ck),
+            super::resonance::resolve_resonance(check, bridge, first_frequency, default_filter, ck),
         )),
         raw::StudyRaw::SpeedSweep(sweep) => Some(Study::SpeedSweep(super::sweep::resolve(
             sweep, bridge, surface, ck,

@@ -3,7 +3,7 @@
 
 use super::checker::Checker;
 use super::raw;
-use super::records::{acceleration_cutoff, quantity_name_of};
+use super::records::quantity_name_of;
 use crate::scene::Quantity;
 use crate::scene::{Bridge, Envelopes};
 
@@ -20,24 +20,26 @@ pub const ENVELOPE_QUANTITIES: [Quantity; 4] = [
 ];
 
 /// The highest mode frequency the acceleration envelope sums, Hz (`None`
-/// without one): what the automatic mode choice must keep.
+/// without one): its own `max_frequency`, else `default_filter` (the
+/// planning stage's); what the automatic mode choice must keep.
 pub(crate) fn acceleration_cut(
     raw: Option<&raw::EnvelopesRaw>,
-    frequencies: &[f64],
+    default_filter: f64,
 ) -> Option<f64> {
     let raw = raw?;
     let quantities = raw.quantities.as_deref().unwrap_or(&ENVELOPE_QUANTITIES);
     quantities.contains(&Quantity::BridgeAcceleration).then(|| {
         raw.max_frequency
             .filter(|f| f.is_finite() && *f > 0.0)
-            .unwrap_or_else(|| acceleration_cutoff(frequencies))
+            .unwrap_or(default_filter)
     })
 }
 
-/// `frequencies`: the bridge's lowest natural frequencies, Hz.
+/// `default_filter`: the acceleration envelope's cut-off, Hz, where it
+/// gives none (as for [`super::records::resolve_records`]).
 pub(crate) fn resolve_envelopes(
     raw: Option<&raw::EnvelopesRaw>,
-    frequencies: &[f64],
+    default_filter: Option<f64>,
     bridge: &Bridge,
     ck: &mut Checker<'_>,
 ) -> Option<Envelopes> {
@@ -110,7 +112,7 @@ pub(crate) fn resolve_envelopes(
                 None
             }
             Some(f) => Some(f),
-            None => Some(acceleration_cutoff(frequencies)),
+            None => default_filter,
         }
     } else {
         if raw.max_frequency.is_some() {

@@ -333,8 +333,10 @@ pub struct RecordRaw {
     /// Highest mode frequency a bridge acceleration includes, Hz
     /// (`bridge_acceleration` only). Default, as EN 1990 A2.4.4.2.1(4) and
     /// EN 1991-2 6.4.6.5(3) ask for the deck-acceleration check: the greater
-    /// of 30 Hz, 1.5 f₁ and f₃. The automatic mode choice keeps every mode up
-    /// to it.
+    /// of 30 Hz, 1.5 f₁ and f₃, the bridge's own first and third natural
+    /// frequencies whatever `bridge.modes` keeps. The automatic mode choice
+    /// keeps every mode up to it; a `bridge.modes` that keeps fewer draws
+    /// the warning `acceleration-filter-above-modes`.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]

@@ -75,25 +75,13 @@ fn wheel_count(vehicle: &Vehicle) -> usize {
     }
 }
 
-/// The default highest mode frequency of a bridge acceleration, Hz: the
-/// greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4); EN 1991-2
-/// 6.4.6.5(3)), from the bridge's lowest frequencies `frequencies` (Hz,
-/// ascending; the highest one stands in for f₃ when fewer than three exist).
-pub fn acceleration_cutoff(frequencies: &[f64]) -> f64 {
-    let first = frequencies.first().copied().unwrap_or(0.0);
-    let third = frequencies
-        .get(2)
-        .or(frequencies.last())
-        .copied()
-        .unwrap_or(0.0);
-    30.0_f64.max(1.5 * first).max(third)
-}
-
 /// The highest mode frequency any bridge acceleration record sums, Hz
-/// (`None` without such records): what the automatic mode choice must keep.
+/// (`None` without such records): its own `max_frequency`, else
+/// `default_filter` (the planning stage's, from the bridge's own modes:
+/// [`crate::plan`]); what the automatic mode choice must keep.
 pub(crate) fn highest_acceleration_cutoff(
     raws: Option<&[raw::RecordRaw]>,
-    frequencies: &[f64],
+    default_filter: f64,
 ) -> Option<f64> {
     raws?
         .iter()
@@ -101,7 +89,7 @@ pub(crate) fn highest_acceleration_cutoff(
         .map(|r| {
             r.max_frequency
                 .filter(|f| f.is_finite() && *f > 0.0)
-                .unwrap_or_else(|| acceleration_cutoff(frequencies))
+                .unwrap_or(default_filter)
         })
         .reduce(f64::max)
 }
@@ -114,13 +102,14 @@ pub fn quantity_name_of(q: Quantity) -> String {
         .unwrap_or_default()
 }
 
-/// `frequencies` are the bridge's lowest natural frequencies, Hz (for the
-/// default acceleration cut-off). Without a `bridge` (the file's did not
-/// parse) the checks that need it are left out and the rest made, so that
-/// a file's errors come in one round.
+/// `default_filter` is a bridge acceleration's cut-off, Hz, where the record
+/// gives none (the planning stage's EN 1990 filter; `None` where the
+/// bridge's modes are not known, in the format's checks alone). Without a
+/// `bridge` (the file's did not parse) the checks that need it are left
+/// out and the rest made, so that a file's errors come in one round.
 pub(crate) fn resolve_records(
     raws: Option<&[raw::RecordRaw]>,
-    frequencies: &[f64],
+    default_filter: Option<f64>,
     bridge: Option<&Bridge>,
     vehicles: &[Vehicle],
     contact: &Contact,
@@ -312,7 +301,7 @@ pub(crate) fn resolve_records(
                     None
                 }
                 Some(f) => Some(f),
-                None => Some(acceleration_cutoff(frequencies)),
+                None => default_filter,
             }
         } else {
             if r.max_frequency.is_some() {

@@ -51,9 +51,9 @@ pub(crate) fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &Lo
     let vehicles = vehicles_as_written(&raw.vehicles, width, &mut scratch);
     let contact = resolve_contact(raw.contact.as_ref(), &vehicles, &mut scratch);
     let records = raw.record.as_deref();
-    resolve_records(records, &[], bridge.as_ref(), &vehicles, &contact, ck);
+    resolve_records(records, None, bridge.as_ref(), &vehicles, &contact, ck);
     if let Some(bridge) = &bridge {
-        super::envelopes::resolve_envelopes(raw.envelopes.as_ref(), &[], bridge, ck);
+        super::envelopes::resolve_envelopes(raw.envelopes.as_ref(), None, bridge, ck);
     }
 }
 

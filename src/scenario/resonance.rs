@@ -3,7 +3,6 @@
 
 use super::checker::Checker;
 use super::raw::{self, km_h_to_m_s};
-use super::records::acceleration_cutoff;
 use super::resonance_grid::additional_damping_percent;
 use super::vehicles::MAX_SPEED;
 use crate::scene::{AdditionalDamping, Bridge, ResonanceCheck, ResonanceSpeeds, Vehicle};
@@ -16,11 +15,14 @@ pub const MAX_RESONANCE_SPEEDS: usize = 10_000;
 /// EN 1991-2 6.4.6.2(1): speeds from 40 m/s.
 pub const DEFAULT_LOWEST_SPEED: f64 = 40.0;
 
-/// `frequencies`: the bridge's lowest natural frequencies, Hz.
+/// `first_frequency`: the bridge's f₁, Hz; `default_filter`: the deck
+/// acceleration's cut-off, Hz, where the check gives none (the planning
+/// stage's EN 1990 filter, from the bridge's own modes).
 pub(crate) fn resolve_resonance(
     raw: &raw::ResonanceCheckRaw,
     bridge: &Bridge,
-    frequencies: &[f64],
+    first_frequency: f64,
+    default_filter: f64,
     ck: &mut Checker<'_>,
 ) -> ResonanceCheck {
     if matches!(bridge, Bridge::Plate(_)) {
@@ -99,7 +101,7 @@ pub(crate) fn resolve_resonance(
             f64::NAN
         }
         Some(f) => f,
-        None => acceleration_cutoff(frequencies),
+        None => default_filter,
     };
     let additional_damping = if raw.additional_damping == Some(true) {
         match bridge.spans() {
@@ -128,7 +130,7 @@ pub(crate) fn resolve_resonance(
         speeds,
         deck: raw.deck.unwrap_or(Deck::Ballasted),
         max_frequency,
-        first_frequency: frequencies.first().copied().unwrap_or(f64::NAN),
+        first_frequency,
         additional_damping,
     };
     if line_fine && fine && to >= from && (to - from) / step < MAX_RESONANCE_SPEEDS as f64 {

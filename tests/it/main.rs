@@ -67,6 +67,7 @@ mod section_forces;
 mod separation;
 mod shard;
 mod shipped_clean;
+mod shipped_converged;
 mod slurm;
 mod speed_sweep;
 mod speed_units;

@@ -25,7 +25,7 @@ pub struct EnvelopesRaw {
     pub points: Option<usize>,
     /// Highest mode frequency the acceleration envelope includes, Hz.
     /// Default as for a `bridge_acceleration` record: the greater of 30 Hz,
-    /// 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
+    /// 1.5 f₁ and f₃ of the bridge (EN 1990 A2.4.4.2.1(4)).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]

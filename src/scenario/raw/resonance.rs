@@ -63,7 +63,10 @@ pub struct ResonanceCheckRaw {
     #[serde(default)]
     pub deck: Option<Deck>,
     /// Highest mode frequency the deck acceleration includes, Hz. Default:
-    /// the greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)).
+    /// the greater of 30 Hz, 1.5 f₁ and f₃ of the bridge (EN 1990
+    /// A2.4.4.2.1(4)); the bridge's modes up to it are summed only if
+    /// `bridge.modes` keeps them (leave it out and the automatic choice
+    /// does).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]
