@@ -27,6 +27,14 @@ pub(crate) struct Checker<'a> {
     pub bridge_unknown: bool,
     /// The file's `bridge` did not parse: it is not resolved at all.
     pub bridge_unreadable: bool,
+    /// Placeholders stand for required values with type errors (see
+    /// [`super::yaml::NodeKind::Placeholder`]): the sections are checked,
+    /// what depends on a placeholder's value is not, and the scene is not
+    /// planned (its physics would be that of the placeholders).
+    pub placeheld: bool,
+    /// The sequences and mappings that lost an entry to a type error, and
+    /// the placeholders (set by the loader).
+    pub(crate) pruned: Vec<Location>,
 }
 
 /// Parses "vehicles[0].speed" into path segments.
@@ -59,6 +67,59 @@ impl<'a> Checker<'a> {
             records_checked: false,
             bridge_unknown: false,
             bridge_unreadable: false,
+            placeheld: false,
+            pruned: Vec::new(),
+        }
+    }
+
+    /// Whether the value at `path` is a placeholder for a value with a type
+    /// error (already reported): a check of it or against it is not made.
+    pub(crate) fn is_placeholder(&self, path: &str) -> bool {
+        self.root
+            .at(&parse_path(path))
+            .is_some_and(|n| matches!(n.kind, super::yaml::NodeKind::Placeholder))
+    }
+
+    /// Whether the section at `path` is not as the file wrote it: it holds
+    /// a placeholder, or a list that lost an item to a type error. Its own
+    /// checks are made, but it is no reference for the checks of another
+    /// section (a bridge that lost a span has no known length, a vehicle
+    /// that lost an axle no known wheel count).
+    pub(crate) fn uncertain(&self, path: &str) -> bool {
+        self.lost_at(path).is_some()
+    }
+
+    /// Where the section at `path` is not as the file wrote it (see
+    /// [`Checker::uncertain`]): the first placeholder or list that lost an
+    /// item in it.
+    fn lost_at(&self, path: &str) -> Option<Location> {
+        fn lost(node: &Node, pruned: &[Location]) -> Option<Location> {
+            use super::yaml::NodeKind;
+            match &node.kind {
+                NodeKind::Placeholder => Some(node.loc),
+                NodeKind::Sequence(_) if pruned.contains(&node.loc) => Some(node.loc),
+                NodeKind::Sequence(items) => items.iter().find_map(|n| lost(n, pruned)),
+                NodeKind::Mapping(entries) => entries.iter().find_map(|(_, v)| lost(v, pruned)),
+                NodeKind::Null | NodeKind::Scalar { .. } => None,
+            }
+        }
+        self.root
+            .at(&parse_path(path))
+            .and_then(|n| lost(n, &self.pruned))
+    }
+
+    /// A check of the section at `path` that fails because a type error
+    /// (already reported) changed it: an error where that error is, which
+    /// the loader leaves out as its consequence, but which stops the
+    /// resolution like any error (a vehicle one axle short is not planned).
+    /// At `path` itself if the section is as written.
+    pub(crate) fn consequence(&mut self, path: &str, message: impl Into<String>) {
+        match self.lost_at(path) {
+            Some(loc) => {
+                let diagnostic = self.lines.diagnostic(self.file, loc, message);
+                self.diagnostics.push(diagnostic);
+            }
+            None => self.error(path, message),
         }
     }
 

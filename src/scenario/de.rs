@@ -11,7 +11,11 @@
 //!   the mapping's `type` key and hands the *same* mapping, minus that entry,
 //!   to the variant. Unlike `#[serde(tag = "type")]` this never buffers the
 //!   content, so positions survive, and `type` may appear anywhere in the
-//!   mapping.
+//!   mapping. A variant whose fields all have defaults may be written as its
+//!   bare name (`contact: rigid` for `contact: {type: rigid}`).
+//! * **Placeholders.** A [`NodeKind::Placeholder`] (put by the type checker
+//!   where a required field's value had a type error) reads as the simplest
+//!   value of the type asked for, so that the rest of its mapping is read.
 
 use super::yaml::{Location, Node, NodeKind, Resolved, resolve_plain};
 use serde::de::{
@@ -24,13 +28,22 @@ use serde::de::{
 pub struct DeError {
     pub loc: Option<Location>,
     pub message: String,
+    /// What to write instead, as a `help:` line: the part of a custom
+    /// message after `\nhelp: ` (a value's reader says it there).
+    pub help: Option<String>,
 }
 
 impl de::Error for DeError {
     fn custom<T: std::fmt::Display>(msg: T) -> Self {
+        let text = msg.to_string();
+        let (message, help) = match text.split_once("\nhelp: ") {
+            Some((message, help)) => (message.to_owned(), Some(help.to_owned())),
+            None => (text, None),
+        };
         DeError {
             loc: None,
-            message: msg.to_string(),
+            message,
+            help,
         }
     }
 }
@@ -46,6 +59,7 @@ impl DeError {
         DeError {
             loc: Some(loc),
             message: message.into(),
+            help: None,
         }
     }
 }
@@ -84,7 +98,12 @@ impl<'de> NodeDeserializer<'de> {
             },
             NodeKind::Sequence(_) => Unexpected::Seq,
             NodeKind::Mapping(_) => Unexpected::Map,
+            NodeKind::Placeholder => Unexpected::Other("a placeholder"),
         }
+    }
+
+    fn is_placeholder(&self) -> bool {
+        matches!(self.node.kind, NodeKind::Placeholder)
     }
 
     fn invalid_type(&self, exp: &dyn Expected) -> DeError {
@@ -93,12 +112,16 @@ impl<'de> NodeDeserializer<'de> {
 
     /// Text of any scalar, plain or quoted.
     fn text(&self, exp: &dyn Expected) -> Result<&'de str, DeError> {
+        if self.is_placeholder() {
+            return Ok("");
+        }
         self.node.as_str().ok_or_else(|| self.invalid_type(exp))
     }
 
     /// A plain scalar with integer syntax, as an `i128`.
     fn integer(&self, exp: &dyn Expected) -> Result<i128, DeError> {
         match &self.node.kind {
+            NodeKind::Placeholder => Ok(1),
             NodeKind::Scalar { text, plain: true } => match resolve_plain(text) {
                 Resolved::Int(i) => Ok(i),
                 Resolved::IntOverflow => Err(de::Error::custom(format_args!(
@@ -112,6 +135,9 @@ impl<'de> NodeDeserializer<'de> {
 
     /// A plain scalar with int or float syntax that evaluates to a finite f64.
     fn float(&self, exp: &dyn Expected) -> Result<f64, DeError> {
+        if self.is_placeholder() {
+            return Ok(1.0);
+        }
         let NodeKind::Scalar { text, plain: true } = &self.node.kind else {
             return Err(self.invalid_type(exp));
         };
@@ -121,13 +147,8 @@ impl<'de> NodeDeserializer<'de> {
             Resolved::Float(f) => f,
             _ => return Err(self.invalid_type(exp)),
         };
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(de::Error::custom(format_args!(
-                "`{text}` is not a finite number"
-            )))
-        }
+        let nonzero = super::raw::units::nonzero_digits(text);
+        super::raw::units::normal(text, value, nonzero, "").map_err(de::Error::custom)
     }
 
     fn entries(&self) -> Option<MapDeserializer<'de>> {
@@ -190,12 +211,14 @@ impl<'de> de::Deserializer<'de> for NodeDeserializer<'de> {
             },
             NodeKind::Sequence(_) => return self.deserialize_seq(visitor),
             NodeKind::Mapping(_) => return self.deserialize_map(visitor),
+            NodeKind::Placeholder => visitor.visit_u64(1),
         };
         r.map_err(|e| e.at(self.node.loc))
     }
 
     fn deserialize_bool<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, DeError> {
         let r = match &self.node.kind {
+            NodeKind::Placeholder => visitor.visit_bool(false),
             NodeKind::Scalar { text, plain: true } => match resolve_plain(text) {
                 Resolved::Bool(b) => visitor.visit_bool(b),
                 _ => Err(self.invalid_type(&visitor)),
@@ -268,7 +291,7 @@ impl<'de> de::Deserializer<'de> for NodeDeserializer<'de> {
 
     fn deserialize_unit<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, DeError> {
         let r = match self.node.kind {
-            NodeKind::Null => visitor.visit_unit(),
+            NodeKind::Null | NodeKind::Placeholder => visitor.visit_unit(),
             _ => Err(self.invalid_type(&visitor)),
         };
         r.map_err(|e| e.at(self.node.loc))
@@ -352,6 +375,11 @@ impl<'de> de::Deserializer<'de> for NodeDeserializer<'de> {
     ) -> Result<V::Value, DeError> {
         let node = self.node;
         let r = match &node.kind {
+            // The first variant; one with fields makes the placeholder fail
+            // (the type checker then drops it, and its mapping).
+            NodeKind::Placeholder => visitor.visit_enum(PlaceholderVariant {
+                name: variants.first().copied().unwrap_or_default(),
+            }),
             NodeKind::Scalar { .. } => visitor.visit_enum(EnumDeserializer {
                 tag: node,
                 map: None,
@@ -530,17 +558,97 @@ impl<'de> EnumDeserializer<'de> {
         self.tag.as_str().unwrap_or_default()
     }
 
-    /// The variant's content; a bare scalar has none.
-    fn content(&self, kind: &str) -> Result<NodeDeserializer<'de>, DeError> {
-        self.map.ok_or_else(|| {
+    /// A bare tag read as the variant with no fields given: fine if they
+    /// all have defaults, else the message says to write the mapping.
+    fn bare<T>(&self, kind: &str, read: Result<T, DeError>) -> Result<T, DeError> {
+        read.map_err(|e| {
             let name = self.name();
-            DeError::located(
-                self.tag.loc,
-                format!(
-                    "`{name}` is a {kind}: write it as a mapping with `type: {name}` and its fields"
-                ),
-            )
+            if e.message.starts_with("missing field") || e.message.starts_with("missing `type`") {
+                DeError::located(
+                    self.tag.loc,
+                    format!(
+                        "`{name}` is a {kind}: write it as a mapping with `type: {name}` and its \
+                         fields"
+                    ),
+                )
+            } else {
+                e.at(self.tag.loc)
+            }
         })
+    }
+}
+
+/// A mapping with no entries, at `loc`: the content of a variant written as
+/// its bare tag.
+struct EmptyMapping {
+    loc: super::yaml::Location,
+}
+
+impl<'de> de::Deserializer<'de> for EmptyMapping {
+    type Error = DeError;
+
+    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, DeError> {
+        let mut map = MapDeserializer::new(&[], None);
+        visitor.visit_map(&mut map).map_err(|e| e.at(self.loc))
+    }
+
+    fn deserialize_enum<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        variants: &'static [&'static str],
+        _visitor: V,
+    ) -> Result<V::Value, DeError> {
+        Err(DeError::located(
+            self.loc,
+            format!("missing `type`; expected one of {}", one_of(variants)),
+        ))
+    }
+
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string
+        bytes byte_buf option unit unit_struct newtype_struct seq tuple
+        tuple_struct map struct identifier ignored_any
+    }
+}
+
+/// The variant a placeholder reads as: `name`, with no content.
+struct PlaceholderVariant {
+    name: &'static str,
+}
+
+impl<'de> EnumAccess<'de> for PlaceholderVariant {
+    type Error = DeError;
+    type Variant = Self;
+
+    fn variant_seed<V: DeserializeSeed<'de>>(self, seed: V) -> Result<(V::Value, Self), DeError> {
+        let name: de::value::StrDeserializer<'_, DeError> =
+            de::IntoDeserializer::into_deserializer(self.name);
+        let v = seed.deserialize(name)?;
+        Ok((v, self))
+    }
+}
+
+impl<'de> VariantAccess<'de> for PlaceholderVariant {
+    type Error = DeError;
+
+    fn unit_variant(self) -> Result<(), DeError> {
+        Ok(())
+    }
+
+    fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, _seed: T) -> Result<T::Value, DeError> {
+        Err(de::Error::custom("a placeholder has no fields"))
+    }
+
+    fn tuple_variant<V: Visitor<'de>>(self, _len: usize, _visitor: V) -> Result<V::Value, DeError> {
+        Err(de::Error::custom("a placeholder has no fields"))
+    }
+
+    fn struct_variant<V: Visitor<'de>>(
+        self,
+        _fields: &'static [&'static str],
+        _visitor: V,
+    ) -> Result<V::Value, DeError> {
+        Err(de::Error::custom("a placeholder has no fields"))
     }
 }
 
@@ -563,8 +671,13 @@ impl<'de> VariantAccess<'de> for EnumDeserializer<'de> {
     }
 
     fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value, DeError> {
-        let map = self.content("variant with parameters")?;
-        seed.deserialize(map)
+        match self.map {
+            Some(map) => seed.deserialize(map),
+            None => {
+                let read = seed.deserialize(EmptyMapping { loc: self.tag.loc });
+                self.bare("variant with parameters", read)
+            }
+        }
     }
 
     fn tuple_variant<V: Visitor<'de>>(self, _len: usize, _visitor: V) -> Result<V::Value, DeError> {
@@ -583,8 +696,14 @@ impl<'de> VariantAccess<'de> for EnumDeserializer<'de> {
         _fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, DeError> {
-        let map = self.content("variant with fields")?;
-        de::Deserializer::deserialize_map(map, visitor)
+        match self.map {
+            Some(map) => de::Deserializer::deserialize_map(map, visitor),
+            None => {
+                let read =
+                    de::Deserializer::deserialize_map(EmptyMapping { loc: self.tag.loc }, visitor);
+                self.bare("variant with fields", read)
+            }
+        }
     }
 }
 

@@ -46,7 +46,8 @@ pub struct Described {
     raw: ScenarioRaw,
     /// Type errors found, located.
     typed: Vec<Diagnostic>,
-    /// Mappings and sequences that lost an entry to a type error.
+    /// Mappings and sequences that lost an entry to a type error, and the
+    /// placeholders for required values with one.
     pruned: Vec<Location>,
     /// The sections checked without physics, with the budgets.
     sections: Sections,
@@ -119,6 +120,7 @@ impl Described {
         let options = sections.options.clone();
         let mut ck = Checker::new(&file, &source, &root);
         ck.set_data_access(options.data.clone());
+        ck.pruned = pruned.clone();
         ck.diagnostics = checked;
         let planned = plan(sections, &raw, &mut ck);
         if planned.is_none() && !ck.records_checked {
@@ -225,14 +227,24 @@ fn described(
     let mut ck = Checker::new(file, source, &root);
     ck.bridge_unreadable = parsed.bridge_unreadable;
     ck.bridge_unknown = parsed.bridge_unreadable;
+    ck.placeheld = !parsed.placeholders.is_empty();
+    ck.pruned = parsed
+        .pruned
+        .iter()
+        .chain(&parsed.placeholders)
+        .copied()
+        .collect();
     let sections = describe(&raw, &mut ck, options.clone());
     if sections.is_none() && !ck.records_checked {
         cross_checks(&raw, &mut ck, &options);
     }
     let checked = std::mem::take(&mut ck.diagnostics);
     drop(ck);
+    // What blames a placeholder is about a value already reported.
+    let mut pruned = parsed.pruned;
+    pruned.extend(parsed.placeholders);
     let Some(sections) = sections else {
-        let failed = finish::<()>(None, parsed.diagnostics, &parsed.pruned, &root, checked);
+        let failed = finish::<()>(None, parsed.diagnostics, &pruned, &root, checked);
         return Err(relocated(failed.unwrap_err(), paths.as_ref()));
     };
     Ok(Described {
@@ -241,7 +253,7 @@ fn described(
         root,
         raw,
         typed: parsed.diagnostics,
-        pruned: parsed.pruned,
+        pruned,
         sections,
         checked,
         paths,

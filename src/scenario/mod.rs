@@ -94,9 +94,12 @@ struct Diagnostics<'a>(&'a [Diagnostic]);
 
 impl fmt::Display for Diagnostics<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Front ends print the whole as `error: {this}`: every diagnostic
+        // after the first gets its own `error: `, as cargo prints them.
         for (i, d) in self.0.iter().take(MAX_SHOWN).enumerate() {
             if i > 0 {
                 writeln!(f)?;
+                write!(f, "error: ")?;
             }
             write!(f, "{d}")?;
         }
@@ -251,12 +254,22 @@ pub struct Parsed {
     /// a stand-in took its place in `raw` so that the other sections are
     /// still checked, and it must not be checked itself.
     pub bridge_unreadable: bool,
+    /// Where a placeholder stands for a required field's value that has a
+    /// type error ([`yaml::NodeKind::Placeholder`]): the rest of its mapping
+    /// is read and checked, no check may blame the placeholder itself, and
+    /// no check that needs the physics of the scene (the plan) is made.
+    pub placeholders: Vec<Location>,
 }
 
 /// Parses a scenario's text and reports every type error (unknown key,
 /// wrong type, missing field) in it: after each one the offending entry is
 /// removed from the tree and the deserialisation is repeated, and the
-/// "missing field" that a removal causes in its parent is not reported.
+/// "missing field" that a removal causes in its parent is not reported:
+/// the removed value is given back as a placeholder
+/// ([`yaml::NodeKind::Placeholder`]), so that a bad required field does
+/// not take the rest of its mapping with it (a vehicle's other fields, a
+/// record's position); a placeholder that does not fit (a mapping or list
+/// was asked for) goes, and its parent with it.
 /// What is left, if it still deserialises, is returned for the semantic
 /// checks, so that a file's mistakes of every kind come in one round.
 /// Only an unreadable file (not YAML, empty, control characters) is an
@@ -296,6 +309,7 @@ fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
                 diagnostics: Vec::new(),
                 pruned: Vec::new(),
                 bridge_unreadable: false,
+                placeholders: Vec::new(),
             };
         }
         Err(e) => e,
@@ -310,17 +324,29 @@ fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
     let mut rest = None;
     // Required sections given a stand-in.
     let mut stood_in: Vec<&'static str> = Vec::new();
+    // Mapping entries removed, and where placeholders stand.
+    let mut removed: Vec<Removed> = Vec::new();
+    let mut placeholders: Vec<Location> = Vec::new();
     for pass in 1.. {
         let loc = error.loc.unwrap_or(tree.loc);
-        let consequence = pruned.contains(&loc)
-            && (error.message.starts_with("missing field")
-                || error.message.starts_with("missing `type`"));
+        // A placeholder that does not fit its place: not the file's error.
+        let misfit = placeholders.contains(&loc);
+        let missing = error
+            .message
+            .strip_prefix("missing field `")
+            .and_then(|rest| rest.strip_suffix('`'));
+        let consequence = misfit
+            || pruned.contains(&loc)
+                && (missing.is_some() || error.message.starts_with("missing `type`"));
         let message = plain_words(&error.message);
         let seen = diagnostics
             .iter()
             .any(|d| d.loc == loc && d.message == message);
         if !consequence && !seen {
-            let help = diagnostic::suggest_for_serde(&message);
+            let help = error
+                .help
+                .clone()
+                .or_else(|| diagnostic::suggest_for_serde(&message));
             diagnostics.push(lines.diagnostic(file, loc, message).with_help(help));
         }
         if pass >= MAX_TYPE_PASSES {
@@ -331,13 +357,37 @@ fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
             ));
             break;
         }
+        // A required field lost to a type error: a placeholder in its
+        // place (once; if it does not fit, the mapping goes instead).
+        let refill = match missing {
+            Some(field) if consequence && !misfit => removed
+                .iter_mut()
+                .find(|r| r.parent == loc && r.key.as_str() == Some(field) && !r.refilled),
+            _ => None,
+        };
         // A required section lost to a type error (or never written) gets
         // a stand-in, so that the other sections are still checked.
-        let missing = ["name", "bridge", "vehicles"]
+        let section = ["name", "bridge", "vehicles"]
             .into_iter()
-            .find(|s| error.message == format!("missing field `{s}`"));
-        if loc == tree.loc
-            && let Some(section) = missing
+            .find(|s| missing == Some(*s));
+        if let Some(entry) = refill {
+            entry.refilled = true;
+            if !refill_at(&mut tree, entry) {
+                break;
+            }
+            placeholders.push(entry.value);
+            // The mapping has the field again.
+            if let Some(i) = pruned.iter().position(|p| *p == loc) {
+                pruned.remove(i);
+            }
+        } else if misfit {
+            placeholders.retain(|p| *p != loc);
+            match prune(&mut tree, loc, &mut pruned) {
+                Some(_) => {}
+                None => break,
+            }
+        } else if loc == tree.loc
+            && let Some(section) = section
             && !stood_in.contains(&section)
         {
             if !stand_in(&mut tree, section) {
@@ -350,8 +400,12 @@ fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
             if section != "bridge" {
                 pruned.push(tree.loc);
             }
-        } else if !prune(&mut tree, loc, &mut pruned) {
-            break;
+        } else {
+            match prune(&mut tree, loc, &mut pruned) {
+                Some(Some(entry)) => removed.push(entry),
+                Some(None) => {}
+                None => break,
+            }
         }
         match de::from_node::<ScenarioRaw>(&tree) {
             Ok(raw) => {
@@ -366,6 +420,42 @@ fn check_types(node: yaml::Node, file: &str, source: &str) -> Parsed {
         diagnostics,
         pruned,
         bridge_unreadable: stood_in.contains(&"bridge"),
+        placeholders,
+    }
+}
+
+/// A mapping entry the type checker removed: the mapping (its location),
+/// the key, and where the value was written (where a placeholder goes if
+/// the mapping cannot do without it).
+struct Removed {
+    parent: Location,
+    key: yaml::Node,
+    value: Location,
+    /// A placeholder was put back for it.
+    refilled: bool,
+}
+
+/// Puts a placeholder for the entry `removed` back into its mapping (the
+/// deepest mapping at its parent's location); `false` if there is none.
+fn refill_at(node: &mut yaml::Node, removed: &Removed) -> bool {
+    use self::yaml::{Node, NodeKind};
+    let here = node.loc == removed.parent;
+    match &mut node.kind {
+        NodeKind::Mapping(entries) => {
+            if entries.iter_mut().any(|(_, v)| refill_at(v, removed)) {
+                return true;
+            }
+            if here {
+                let placeholder = Node {
+                    kind: NodeKind::Placeholder,
+                    loc: removed.value,
+                };
+                entries.push((removed.key.clone(), placeholder));
+            }
+            here
+        }
+        NodeKind::Sequence(items) => items.iter_mut().any(|v| refill_at(v, removed)),
+        NodeKind::Null | NodeKind::Scalar { .. } | NodeKind::Placeholder => false,
     }
 }
 
@@ -410,39 +500,49 @@ fn stand_in(tree: &mut yaml::Node, section: &str) -> bool {
 }
 
 /// Removes the deepest mapping entry (by its key or value) or sequence item
-/// written at `loc`, noting its parent in `pruned`. `false` if only the root
-/// is there (nothing left to remove).
-fn prune(node: &mut yaml::Node, loc: Location, pruned: &mut Vec<Location>) -> bool {
+/// written at `loc`, noting its parent in `pruned`: `Some` with the entry
+/// removed (`None` for a sequence item), `None` if only the root is there
+/// (nothing left to remove).
+fn prune(
+    node: &mut yaml::Node,
+    loc: Location,
+    pruned: &mut Vec<Location>,
+) -> Option<Option<Removed>> {
     use self::yaml::NodeKind;
     let parent = node.loc;
     match &mut node.kind {
         NodeKind::Mapping(entries) => {
             for i in 0..entries.len() {
-                if prune(&mut entries[i].1, loc, pruned) {
-                    return true;
+                if let Some(inner) = prune(&mut entries[i].1, loc, pruned) {
+                    return Some(inner);
                 }
                 if entries[i].0.loc == loc || entries[i].1.loc == loc {
-                    entries.remove(i);
+                    let (key, value) = entries.remove(i);
                     pruned.push(parent);
-                    return true;
+                    return Some(Some(Removed {
+                        parent,
+                        key,
+                        value: value.loc,
+                        refilled: false,
+                    }));
                 }
             }
-            false
+            None
         }
         NodeKind::Sequence(items) => {
             for i in 0..items.len() {
-                if prune(&mut items[i], loc, pruned) {
-                    return true;
+                if let Some(inner) = prune(&mut items[i], loc, pruned) {
+                    return Some(inner);
                 }
                 if items[i].loc == loc {
                     items.remove(i);
                     pruned.push(parent);
-                    return true;
+                    return Some(None);
                 }
             }
-            false
+            None
         }
-        NodeKind::Null | NodeKind::Scalar { .. } => false,
+        NodeKind::Null | NodeKind::Scalar { .. } | NodeKind::Placeholder => None,
     }
 }
 

@@ -102,6 +102,47 @@ pub fn quantity_name_of(q: Quantity) -> String {
         .unwrap_or_default()
 }
 
+/// The checks of a record whose `quantity` has a type error (a
+/// placeholder stands for it): those that do not depend on the quantity, a
+/// position on the bridge or deck and a vehicle number that exist.
+fn unknown_quantity(
+    r: &raw::RecordRaw,
+    at: &str,
+    length: Option<f64>,
+    width: Option<f64>,
+    vehicles: usize,
+    ck: &mut Checker<'_>,
+) {
+    if let (Some(x), Some(length)) = (r.x, length)
+        && !(0.0..=length).contains(&x)
+    {
+        ck.error(
+            &format!("{at}.x"),
+            format!("x = {x} m is off the bridge, which runs from 0 to {length} m"),
+        );
+    }
+    if let (Some(y), Some(width)) = (r.y, width)
+        && !(0.0..=width).contains(&y)
+    {
+        ck.error(
+            &format!("{at}.y"),
+            format!("y = {y} m is off the deck, which spans 0 to {width} m"),
+        );
+    }
+    if let Some(v) = r.vehicle
+        && (v == 0 || v > vehicles)
+    {
+        let numbered = match vehicles {
+            1 => "the scene has only vehicle 1".to_owned(),
+            n => format!("vehicles are numbered 1 to {n}"),
+        };
+        ck.error(
+            &format!("{at}.vehicle"),
+            format!("vehicle {v} does not exist; {numbered}"),
+        );
+    }
+}
+
 /// `default_filter` is a bridge acceleration's cut-off, Hz, where the record
 /// gives none (the planning stage's EN 1990 filter; `None` where the
 /// bridge's modes are not known, in the format's checks alone). Without a
@@ -140,6 +181,10 @@ pub(crate) fn resolve_records(
                 &format!("{at}.name"),
                 format!("duplicate record name `{}`", r.name),
             );
+        }
+        if ck.is_placeholder(&format!("{at}.quantity")) {
+            unknown_quantity(r, &at, length, width, vehicles.len(), ck);
+            continue;
         }
         let q = r.quantity;
         let is_bridge = matches!(
@@ -325,6 +370,9 @@ pub(crate) fn resolve_records(
                 vehicle = Some(v);
             }
         }
+        // A vehicle that lost an axle or car to a type error: its wheels
+        // and cars are not counted against.
+        let counted = vehicle.is_none_or(|v| !ck.uncertain(&format!("vehicles[{}]", v - 1)));
         // A train's car: wheels and DOFs are then the car's own.
         let mut car = None;
         if let Some(k) = r.car {
@@ -333,6 +381,10 @@ pub(crate) fn resolve_records(
                     ck.error(&format!("{at}.car"), unused("car"));
                 }
                 Some(t) if car_count(t).is_some_and(|n| k >= 1 && k <= n) => car = Some(k),
+                Some(t) if car_count(t).is_some() && !counted => ck.consequence(
+                    &format!("vehicles[{}]", vehicle.unwrap_or(1) - 1),
+                    format!("car {k} does not exist"),
+                ),
                 Some(t) if car_count(t).is_some() => ck.error(
                     &format!("{at}.car"),
                     format!(
@@ -403,12 +455,15 @@ pub(crate) fn resolve_records(
                         n => format!("wheels 1 to {n}"),
                     };
                     let car_of = car.map_or(String::new(), |k| format!(" car {k}"));
-                    ck.error(
-                        &format!("{at}.wheel"),
-                        format!(
-                            "wheel {w} does not exist; vehicle {v} ({kind}){car_of} has {wheels}"
-                        ),
+                    let message = format!(
+                        "wheel {w} does not exist; vehicle {v} ({kind}){car_of} has {wheels}"
                     );
+                    if counted {
+                        ck.error(&format!("{at}.wheel"), message);
+                    } else {
+                        // The vehicle lost a wheel to a type error.
+                        ck.consequence(&format!("vehicles[{}]", v - 1), message);
+                    }
                 }
             }
             // Stored counted over the whole train.

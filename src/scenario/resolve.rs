@@ -45,7 +45,8 @@ pub(crate) fn cross_checks(raw: &ScenarioRaw, ck: &mut Checker<'_>, options: &Lo
         None
     } else {
         resolve_bridge(&raw.bridge, &budget, &mut scratch)
-    };
+    }
+    .filter(|_| !ck.uncertain("bridge"));
     scratch.bridge_unknown = bridge.is_none();
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = vehicles_as_written(&raw.vehicles, width, &mut scratch);
@@ -128,6 +129,10 @@ pub(crate) fn describe(
     if let Some(bridge) = &bridge {
         plausible::check_bridge(ck, bridge);
     }
+    // A bridge with a placeholder or a lost span is checked, but is no
+    // reference for the other sections (its length or width may not be
+    // the file's).
+    let bridge = bridge.filter(|_| !ck.uncertain("bridge"));
     ck.bridge_unknown = bridge.is_none();
     let width = bridge.as_ref().and_then(Bridge::width);
     let vehicles = resolve_vehicles(&raw.vehicles, width, ck);
@@ -204,7 +209,8 @@ pub(crate) fn describe(
     // The bridge is built only from a valid description, and only if its
     // eigenproblem fits the budget: the dense solve is O(n³).
     let (bridge, vehicles) = (bridge?, vehicles?);
-    if !ck.diagnostics.is_empty() {
+    // Placeholders' physics is not the scene's: no plan.
+    if !ck.diagnostics.is_empty() || ck.placeheld {
         return None;
     }
     if !budget.model(&bridge, &surface, ck) {

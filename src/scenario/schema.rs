@@ -33,6 +33,7 @@ pub fn schema_json() -> String {
     tidy_optional(&mut value);
     type_unions(&mut value);
     describe_tags(&mut value);
+    bare_tags(&mut value);
     unwrap_descriptions(&mut value);
     drop_raw_suffix(&mut value);
     serde_json::to_string_pretty(&value).expect("schema serialises") + "\n"
@@ -162,6 +163,46 @@ fn describe_tags(value: &mut Value) {
             map.values_mut().for_each(describe_tags);
         }
         Value::Array(items) => items.iter_mut().for_each(describe_tags),
+        _ => {}
+    }
+}
+
+/// A variant of a tagged union whose fields all have defaults may be
+/// written as its bare tag (`contact: rigid` for `contact: {type: rigid}`,
+/// as the loader reads it): each such variant gets a string alternative,
+/// and a union typed `object` (for editors, [`type_unions`]) is typed
+/// `object` or `string`.
+fn bare_tags(value: &mut Value) {
+    match value {
+        Value::Object(map) => {
+            map.values_mut().for_each(bare_tags);
+            let Some(Value::Array(alternatives)) = map.get_mut("oneOf") else {
+                return;
+            };
+            let bare: Vec<Value> = alternatives
+                .iter()
+                .filter(|a| a.get("required") == Some(&serde_json::json!(["type"])))
+                .filter_map(|a| {
+                    let variant = a.pointer("/properties/type/const")?.as_str()?;
+                    Some(serde_json::json!({
+                        "type": "string",
+                        "const": variant,
+                        "description": format!(
+                            "`{variant}` alone: the same as `{{type: {variant}}}`, every field \
+                             at its default."
+                        ),
+                    }))
+                })
+                .collect();
+            if bare.is_empty() {
+                return;
+            }
+            alternatives.extend(bare);
+            if map.get("type") == Some(&Value::from("object")) {
+                map.insert("type".into(), serde_json::json!(["object", "string"]));
+            }
+        }
+        Value::Array(items) => items.iter_mut().for_each(bare_tags),
         _ => {}
     }
 }

@@ -24,6 +24,10 @@ pub(crate) fn entry_time(
         entry_time: 0.0,
     }
     .stop_time();
+    // A speed with a type error (a placeholder stands for it): where the
+    // vehicle would stop is not known.
+    let speed_known = !ck.is_placeholder(&format!("{at}.speed"));
+    let stop = stop.filter(|_| speed_known);
     match (entry_time, start_position) {
         (Some(_), Some(_)) => {
             ck.error(
@@ -52,7 +56,7 @@ pub(crate) fn entry_time(
                     format!("the vehicle must start on the approach (start_position ≤ 0), got {x}"),
                 );
             }
-            if speed <= 0.0 || !acceleration.is_finite() {
+            if speed <= 0.0 || !acceleration.is_finite() || !speed_known {
                 return 0.0;
             }
             match crate::scene::motion::time_to_cover(speed, acceleration, (-x).max(0.0)) {
@@ -169,15 +173,18 @@ pub(crate) fn vehicles_as_written(
                     } else {
                         at.clone()
                     };
-                    ck.error(
-                        &path,
-                        format!(
-                            "{} axle loads need {} axle spacings, found {}",
-                            v.loads.len(),
-                            v.loads.len().saturating_sub(1),
-                            spacings.len()
-                        ),
+                    let message = format!(
+                        "{} axle loads need {} axle spacings, found {}",
+                        v.loads.len(),
+                        v.loads.len().saturating_sub(1),
+                        spacings.len()
                     );
+                    // A consequence of the type error that lost an axle.
+                    if lost_axle(ck, &at) {
+                        ck.consequence(&at, message);
+                    } else {
+                        ck.error(&path, message);
+                    }
                 }
                 for (k, &s) in spacings.iter().enumerate() {
                     ck.positive(&format!("{at}.axle_spacings[{k}]"), s, "an axle spacing");
@@ -279,6 +286,14 @@ pub(crate) fn vehicles_as_written(
 /// An axle-load train's axle positions behind its front axle (0 first,
 /// strictly increasing, one per load) as the spacings between consecutive
 /// axles, m; errors at `{at}.axle_positions`.
+/// Whether the axle lists of the vehicle at `at` lost an item to a type
+/// error (already reported): their lengths are then not compared.
+fn lost_axle(ck: &Checker<'_>, at: &str) -> bool {
+    ["loads", "axle_spacings", "axle_positions"]
+        .iter()
+        .any(|list| ck.uncertain(&format!("{at}.{list}")))
+}
+
 fn axle_positions_to_spacings(
     ck: &mut Checker<'_>,
     at: &str,
@@ -287,13 +302,16 @@ fn axle_positions_to_spacings(
 ) -> Vec<f64> {
     let path = format!("{at}.axle_positions");
     if positions.len() != loads {
-        ck.error(
-            &path,
-            format!(
-                "{loads} axle loads need {loads} axle positions, found {}",
-                positions.len()
-            ),
+        let message = format!(
+            "{loads} axle loads need {loads} axle positions, found {}",
+            positions.len()
         );
+        // A consequence of the type error that lost an axle.
+        if lost_axle(ck, at) {
+            ck.consequence(at, message);
+        } else {
+            ck.error(&path, message);
+        }
         return Vec::new();
     }
     if let Some(&first) = positions.first()

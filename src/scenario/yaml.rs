@@ -56,6 +56,13 @@ pub enum NodeKind {
     Sequence(Vec<Node>),
     /// (key node, value node) pairs in source order.
     Mapping(Vec<(Node, Node)>),
+    /// Never parsed from text: stands, at the place of a value that has a
+    /// type error, for a required field's value (the type checker puts it
+    /// there, `super::check_types`), so that the rest of its mapping is
+    /// still read and checked. It deserialises as the simplest value of
+    /// whatever type is asked for (1, `false`, an empty string, an enum's
+    /// first variant); no check may blame it.
+    Placeholder,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -117,6 +124,29 @@ impl Node {
         }
     }
 
+    /// The node at `path`, if the tree has it.
+    pub fn at(&self, path: &[PathSeg]) -> Option<&Node> {
+        let mut node = self;
+        for seg in path {
+            node = match (seg, &node.kind) {
+                (PathSeg::Key(k), NodeKind::Mapping(_)) => node.get(k)?,
+                (PathSeg::Index(i), NodeKind::Sequence(items)) => items.get(*i)?,
+                _ => return None,
+            };
+        }
+        Some(node)
+    }
+
+    /// Whether a [`NodeKind::Placeholder`] is this node or inside it.
+    pub fn holds_placeholder(&self) -> bool {
+        match &self.kind {
+            NodeKind::Placeholder => true,
+            NodeKind::Sequence(items) => items.iter().any(Node::holds_placeholder),
+            NodeKind::Mapping(entries) => entries.iter().any(|(_, v)| v.holds_placeholder()),
+            NodeKind::Null | NodeKind::Scalar { .. } => false,
+        }
+    }
+
     /// Location of the deepest existing node along `path`.
     ///
     /// Semantic checks that run after deserialization know *which* field is
@@ -146,7 +176,7 @@ impl Node {
     pub fn to_json(&self) -> serde_json::Value {
         use serde_json::Value;
         match &self.kind {
-            NodeKind::Null => Value::Null,
+            NodeKind::Null | NodeKind::Placeholder => Value::Null,
             NodeKind::Scalar { text, plain: false } => Value::String(text.clone()),
             NodeKind::Scalar { text, plain: true } => match resolve_plain(text) {
                 Resolved::Null => Value::Null,

@@ -18,6 +18,7 @@ mod advice;
 mod automatic;
 mod automatic_shipped;
 mod bad_inputs;
+mod bare_tags;
 mod beam_3d;
 mod cancel;
 mod cli;

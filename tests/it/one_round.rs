@@ -21,6 +21,117 @@ fn located(stderr: &str, file: &str) -> Vec<(usize, usize)> {
         .collect()
 }
 
+/// One diagnostic a `tests/multi/NAME.expected` file asks for.
+struct Expected {
+    at: (usize, usize),
+    /// A part of the message.
+    message: String,
+    /// Parts of its `help:` lines.
+    helps: Vec<String>,
+}
+
+/// The diagnostics a `tests/multi/NAME.expected` file asks of its
+/// `NAME.yaml`: `LINE:COL: part of the message` per diagnostic, each
+/// followed by `  help: part of a help line` for each help it must give
+/// (`#` comments).
+fn expected(path: &std::path::Path) -> Vec<Expected> {
+    let mut out: Vec<Expected> = Vec::new();
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    for l in text
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
+    {
+        if let Some(help) = l.trim_start().strip_prefix("help: ") {
+            let last = out
+                .last_mut()
+                .unwrap_or_else(|| panic!("{}: a help before any diagnostic", path.display()));
+            last.helps.push(help.to_owned());
+            continue;
+        }
+        let mut parts = l.splitn(3, ':');
+        let mut number = || -> usize {
+            parts
+                .next()
+                .and_then(|p| p.trim().parse().ok())
+                .unwrap_or_else(|| panic!("{}: not `LINE:COL: message`: {l}", path.display()))
+        };
+        let at = (number(), number());
+        let message = parts.next().unwrap_or_default().trim().to_owned();
+        out.push(Expected {
+            at,
+            message,
+            helps: Vec::new(),
+        });
+    }
+    out
+}
+
+#[test]
+fn every_multi_fixture_gives_its_every_diagnostic_in_one_check() {
+    // Each `tests/multi/NAME.yaml` has several mistakes, and its
+    // `NAME.expected` lists every one: one `vbi check` must report exactly
+    // those (no mistake hidden by another, none repeated or invented), each
+    // as `error: FILE:LINE:COL: message` with the help asked for, exit code
+    // 2, no panic.
+    let folder = manifest_dir().join("tests/multi");
+    let mut fixtures: Vec<_> = std::fs::read_dir(&folder)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "yaml"))
+        .collect();
+    fixtures.sort();
+    assert!(fixtures.len() >= 7, "{fixtures:?}");
+    let mut failures = Vec::new();
+    for yaml in &fixtures {
+        let want = expected(&yaml.with_extension("expected"));
+        let file = format!(
+            "tests/multi/{}",
+            yaml.file_name().unwrap().to_str().unwrap()
+        );
+        let out = vbi(&["check", &file], manifest_dir());
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{file}:\n{stderr}");
+        assert!(!stderr.contains("panicked"), "{file}:\n{stderr}");
+        let mut got = located(&stderr, &file);
+        got.sort();
+        let mut at: Vec<_> = want.iter().map(|w| w.at).collect();
+        at.sort();
+        if got != at {
+            failures.push(format!(
+                "{file}: located {got:?}, expected {at:?}\n{stderr}"
+            ));
+            continue;
+        }
+        // Each diagnostic's block: its head line to the next `error: `.
+        let lines: Vec<&str> = stderr.lines().collect();
+        for w in &want {
+            let head = format!("error: {file}:{}:{}: ", w.at.0, w.at.1);
+            let Some(start) = lines
+                .iter()
+                .position(|l| l.starts_with(&head) && l.contains(w.message.as_str()))
+            else {
+                failures.push(format!("{file}: no `{head}…{}…` in\n{stderr}", w.message));
+                continue;
+            };
+            let end = lines[start + 1..]
+                .iter()
+                .position(|l| l.starts_with("error: "))
+                .map_or(lines.len(), |i| start + 1 + i);
+            for help in &w.helps {
+                let given = lines[start..end]
+                    .iter()
+                    .any(|l| l.trim_start().starts_with("= help: ") && l.contains(help.as_str()));
+                if !given {
+                    failures.push(format!(
+                        "{file}: `{head}` has no help `{help}` in\n{stderr}"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
 #[test]
 fn seven_mistakes_give_seven_located_diagnostics_in_one_check() {
     let file = "tests/multi/seven-mistakes.yaml";

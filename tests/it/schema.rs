@@ -269,6 +269,14 @@ fn the_schema_accepts_units_of_the_right_dimension_only() {
             "  mass_per_length: 2000.0\n",
             "  mass_per_length: 2000.0\n  modes: {max_frequency: 30 Hz}\n",
         ),
+        // Any SI prefix on every dimension (issue 38.8).
+        ("bending_stiffness: 3.2e9", "bending_stiffness: 3200 MN*m^2"),
+        ("mass_per_length: 2000.0", "mass_per_length: 2 Mg/m"),
+        ("spans: [20.0]", "spans: [20000000 µm]"),
+        ("loads: [100000.0]", "loads: [1e-4 GN]"),
+        // A variant whose fields all default, as its bare tag.
+        ("name: minimal\n", "name: minimal\ncontact: rigid\n"),
+        ("name: minimal\n", "name: minimal\ncontact: permanent\n"),
     ];
     let refused: &[(&str, &str)] = &[
         ("spans: [20.0]", "spans: [20 s]"),
@@ -279,6 +287,16 @@ fn the_schema_accepts_units_of_the_right_dimension_only() {
         ("loads: [100000.0]", "loads: [100 kN/m]"),
         ("x: 10.0", "x: '10'"),
         ("x: 10.0", "x: ten m"),
+        // Strict units (issue 38.8): no space inside a unit, no NaN, the
+        // gram only with a prefix (a bare `g` is standard gravity).
+        ("spans: [20.0]", "spans: [20 m m]"),
+        ("spans: [20.0]", "spans: [20 k m]"),
+        ("x: 10.0", "x: NaN m"),
+        ("speed: 20.0", "speed: NaN km/h"),
+        ("speed: 20.0", "speed: 72 km / h"),
+        ("mass_per_length: 2000.0", "mass_per_length: 2000000 g/m"),
+        ("name: minimal\n", "name: minimal\ncontact: rigdi\n"),
+        ("name: minimal\n", "name: minimal\nsurface: harmonic\n"),
     ];
     let mut wrong = Vec::new();
     for (valid, cases) in [(true, accepted), (false, refused)] {
@@ -610,9 +628,48 @@ fn optional_fields_have_no_null_default_and_unions_are_objects() {
     for name in [
         "Bridge", "Vehicle", "Surface", "Contact", "Damping", "Rigidity", "Study",
     ] {
+        let union = &schema["$defs"][name];
+        let alternatives = union["oneOf"].as_array().expect("a union");
+        // A variant whose fields all default may also be its bare tag
+        // (`contact: rigid`, issue 38.8): a string alternative for each,
+        // and the union typed object first (editors still insert `key:`
+        // and a new line, lsp::every_top_level_key_is_completed).
+        let bare: Vec<&Value> = alternatives
+            .iter()
+            .filter(|a| a["type"] == "string")
+            .collect();
+        for tag in &bare {
+            let variant = tag["const"].as_str().expect("a bare tag names its variant");
+            assert!(
+                alternatives.iter().any(|a| a["type"] == "object"
+                    && a["properties"]["type"]["const"] == variant
+                    && a["required"] == serde_json::json!(["type"])),
+                "{name}: the bare tag `{variant}` is not a variant whose fields all default"
+            );
+        }
+        let want = if bare.is_empty() {
+            serde_json::json!("object")
+        } else {
+            serde_json::json!(["object", "string"])
+        };
         assert_eq!(
-            schema["$defs"][name]["type"], "object",
+            union["type"], want,
             "the tagged union {name} needs \"type\": \"object\" for editors to insert `key:`"
+        );
+    }
+    // Those that have variants written as bare tags.
+    for (name, tag) in [
+        ("Contact", "rigid"),
+        ("Contact", "permanent"),
+        ("Surface", "smooth"),
+    ] {
+        assert!(
+            schema["$defs"][name]["oneOf"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|a| a["type"] == "string" && a["const"] == tag),
+            "{name} has no bare `{tag}`"
         );
     }
     assert_eq!(schema["properties"]["gravity"]["default"], 9.81);

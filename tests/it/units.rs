@@ -451,3 +451,78 @@ surface: {type: random, coefficient: 16 cm}
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn any_si_prefix_on_any_dimension_resolves_to_the_si_scene_bit_for_bit() {
+    // Issue 38.8: `GN/m` was refused although `GN*m^2` was accepted; every
+    // symbol that takes a prefix now takes any SI prefix.
+    let with_prefixes = BEAM_OSCILLATOR_SI
+        .replace("spans: [25.0, 0.25]", "spans: [25000 mm, 250000 µm]")
+        .replace(
+            "bending_stiffness: 8.323e9",
+            "bending_stiffness: 8323 MN*m^2",
+        )
+        .replace("mass_per_length: 2303.0", "mass_per_length: 2.303 Mg/m")
+        .replace("max_frequency: 3000.0", "max_frequency: 0.003 MHz")
+        .replace("sprung_mass: 5750.0", "sprung_mass: 5.75 Mg")
+        .replace("stiffness: 1.595e6", "stiffness: 1.595 kN/mm")
+        .replace("damping: 3500.0", "damping: 0.0035 MN*s/m")
+        .replace("start_position: -0.0011", "start_position: -1100 µm")
+        .replace("stiffness: 1.0e9", "stiffness: 1 GN/m")
+        .replace("time_step: 0.0025", "time_step: 2500 µs")
+        .replace("x: 12.5}", "x: 125 dm}");
+    assert!(with_prefixes.contains("1 GN/m") && with_prefixes.contains("125 dm"));
+    same_scene(BEAM_OSCILLATOR_SI, &with_prefixes);
+}
+
+#[test]
+fn strict_units_are_refused_where_they_are_written() {
+    // Issue 38.8: `25 m m` was read as 25 mm; a `NaN km/h` or `1e-320
+    // km/h` speed passed the speed check and was refused only later, at
+    // the time step.
+    let scratch = Scratch::new("units", "strict");
+    let scene = BEAM_OSCILLATOR_SI
+        .replace("spans: [25.0, 0.25]", "spans: [25 m m, 0.25]")
+        .replace("speed: 27.5", "speed: NaN km/h")
+        .replace("x: 12.5}", "x: 1e-320 m}");
+    let path = scratch.path("strict.yaml");
+    std::fs::write(&path, &scene).unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let file = path.display().to_string();
+    for (line, col, message) in [
+        (5, 11, "`25 m m` has a space inside its unit `m m`"),
+        (15, 12, "`NaN` in `NaN km/h` is not a finite number"),
+        (21, 55, "`1e-320 m` is 1e-320 m, a subnormal number"),
+    ] {
+        let head = format!("error: {file}:{line}:{col}: ");
+        let found = stderr
+            .lines()
+            .any(|l| l.starts_with(&head) && l.contains(message));
+        assert!(found, "no `{head}…{message}` in\n{stderr}");
+    }
+    assert!(!stderr.contains("time step"), "{stderr}");
+    assert!(
+        stderr.contains("= help: write the unit without spaces: `mm`"),
+        "{stderr}"
+    );
+    // A subnormal speed, alone: refused at the speed, not at the time step.
+    let scene = BEAM_OSCILLATOR_SI.replace("speed: 27.5", "speed: 1e-320 km/h");
+    std::fs::write(&path, &scene).unwrap();
+    let out = vbi(&["check".as_ref(), path.as_os_str()], manifest_dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let errors: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.starts_with("error: "))
+        .collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(
+        errors[0].starts_with(&format!(
+            "error: {file}:15:12: `1e-320 km/h` is 2.777e-321 m/s, a subnormal number"
+        )),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

@@ -469,3 +469,137 @@ fn root_errors_and_note() {
     assert_eq!(loc, at(3, 1));
     assert!(msg.starts_with("unknown field `extra`"), "{msg}");
 }
+
+/// A variant whose fields all have defaults.
+#[derive(Deserialize, Debug, PartialEq)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+enum Contact {
+    Permanent,
+    Rigid {
+        #[serde(default)]
+        restitution: Option<f64>,
+    },
+    Spring {
+        k: f64,
+        #[serde(default)]
+        c: Option<f64>,
+    },
+    Wrapped(Defaults),
+    Needs(Plate),
+}
+
+#[derive(Deserialize, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+struct Defaults {
+    #[serde(default)]
+    width: Option<f64>,
+}
+
+#[test]
+fn a_variant_whose_fields_all_default_may_be_its_bare_tag() {
+    // `contact: rigid` was refused once `rigid` gained a field.
+    assert_eq!(
+        load::<Contact>("rigid").unwrap(),
+        Contact::Rigid { restitution: None }
+    );
+    assert_eq!(
+        load::<Contact>("rigid").unwrap(),
+        load::<Contact>("{type: rigid}").unwrap()
+    );
+    assert_eq!(
+        load::<Contact>("wrapped").unwrap(),
+        Contact::Wrapped(Defaults { width: None })
+    );
+    assert_eq!(load::<Contact>("permanent").unwrap(), Contact::Permanent);
+    // A required field: the mapping is needed, and the message says so.
+    let (loc, msg) = fail::<Contact>("spring");
+    assert_eq!(
+        (loc, msg.as_str()),
+        (
+            at(1, 1),
+            "`spring` is a variant with fields: write it as a mapping with `type: spring` and its fields"
+        )
+    );
+    let (loc, msg) = fail::<Vec<Contact>>("- rigid\n- needs");
+    assert_eq!(
+        (loc, msg.as_str()),
+        (
+            at(2, 3),
+            "`needs` is a variant with parameters: write it as a mapping with `type: needs` and its fields"
+        )
+    );
+    // A misspelt bare tag is still an unknown variant.
+    let (loc, msg) = fail::<Contact>("rigdi");
+    assert_eq!(loc, at(1, 1));
+    assert!(msg.starts_with("unknown variant `rigdi`"), "{msg}");
+}
+
+#[derive(Deserialize, Debug, PartialEq)]
+struct Required {
+    speed: f64,
+    count: usize,
+    name: String,
+    flag: bool,
+    kind: Support,
+}
+
+#[test]
+fn a_placeholder_reads_as_the_simplest_value_of_any_type() {
+    use super::super::yaml::{Node, NodeKind};
+    let placeholder = Node {
+        kind: NodeKind::Placeholder,
+        loc: Location { line: 3, col: 7 },
+    };
+    let key = |text: &str| Node {
+        kind: NodeKind::Scalar {
+            text: text.into(),
+            plain: true,
+        },
+        loc: Location { line: 1, col: 1 },
+    };
+    let entries = ["speed", "count", "name", "flag", "kind"]
+        .into_iter()
+        .map(|k| (key(k), placeholder.clone()))
+        .collect();
+    let mapping = Node {
+        kind: NodeKind::Mapping(entries),
+        loc: Location { line: 1, col: 1 },
+    };
+    assert_eq!(
+        from_node::<Required>(&mapping).unwrap(),
+        Required {
+            speed: 1.0,
+            count: 1,
+            name: String::new(),
+            flag: false,
+            kind: Support::Pinned,
+        }
+    );
+    // A collection or a variant with fields is asked for: an error at the
+    // placeholder (the type checker then drops it).
+    let e = from_node::<Vec<f64>>(&placeholder).unwrap_err();
+    assert_eq!(e.loc, at(3, 7));
+    let e = from_node::<Plate>(&placeholder).unwrap_err();
+    assert_eq!(e.loc, at(3, 7));
+    let e = from_node::<Contact>(&Node {
+        kind: NodeKind::Placeholder,
+        loc: Location { line: 3, col: 7 },
+    });
+    assert_eq!(e.unwrap(), Contact::Permanent);
+}
+
+#[test]
+fn subnormal_numbers_are_refused_with_help() {
+    let e = load::<f64>("1e-320").unwrap_err();
+    assert!(e.message.contains("subnormal"), "{}", e.message);
+    assert_eq!(e.help.as_deref(), Some("write 0, or check the exponent"));
+    let e = load::<f64>("-4.9e-324").unwrap_err();
+    assert!(e.message.contains("subnormal"), "{}", e.message);
+    let e = load::<f64>("1e-400").unwrap_err();
+    assert!(e.message.contains("would be read as 0"), "{}", e.message);
+    assert_eq!(load::<f64>("0.0e-400").unwrap(), 0.0);
+    assert_eq!(
+        load::<f64>("2.2250738585072014e-308").unwrap(),
+        f64::MIN_POSITIVE
+    );
+}

@@ -34,23 +34,53 @@ impl SpeedRaw {
     }
 }
 
-/// Reads `"<number> km/h"` or `"<number> m/s"` (space optional) into m/s.
+/// Reads `"<number> km/h"` or `"<number> m/s"` (space optional) into m/s;
+/// NaN, infinities, subnormal numbers and spaces inside the unit are
+/// refused, each with what to write (a `help:` line after a line break).
 pub fn parse_speed(text: &str) -> Result<f64, String> {
+    use super::units::{non_finite_word, nonzero_digits, normal, spaced_unit, split_number};
     let text = text.trim();
-    let (number, convert): (&str, fn(f64) -> f64) = if let Some(n) = text.strip_suffix("km/h") {
-        (n, km_h_to_m_s)
-    } else if let Some(n) = text.strip_suffix("m/s") {
-        (n, |v| v)
-    } else {
-        return Err(format!(
-            "a speed is a number in m/s or a string with its unit, e.g. `100 km/h` or `27.8 m/s`; got `{text}`"
-        ));
+    let shown = crate::scenario::diagnostic::escaped(text);
+    let general = || {
+        format!(
+            "a speed is a number in m/s or a string with its unit, e.g. `100 km/h` or `27.8 m/s`; got `{shown}`"
+        )
     };
-    let value: f64 = number
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{}` in `{text}` is not a number", number.trim()))?;
-    Ok(convert(value))
+    if let Some(word) = non_finite_word(text) {
+        return Err(format!(
+            "`{}` in `{shown}` is not a finite number\nhelp: write a speed as a number in m/s \
+             or with its unit, e.g. `100 km/h` or `27.8 m/s`",
+            crate::scenario::diagnostic::escaped(word),
+        ));
+    }
+    let (number, unit) = split_number(text);
+    if unit.contains(char::is_whitespace) && !number.is_empty() {
+        let words: Vec<&str> = unit.split_whitespace().collect();
+        let candidates: Vec<String> = [words.concat()]
+            .into_iter()
+            .filter(|u| u == "km/h" || u == "m/s")
+            .collect();
+        return Err(spaced_unit(text, unit, &candidates));
+    }
+    let convert: fn(f64) -> f64 = match unit {
+        "km/h" => km_h_to_m_s,
+        "m/s" => |v| v,
+        _ if number.is_empty() && (text.ends_with("km/h") || text.ends_with("m/s")) => {
+            let word = text.trim_end_matches("km/h").trim_end_matches("m/s").trim();
+            return Err(format!(
+                "`{}` in `{shown}` is not a number",
+                crate::scenario::diagnostic::escaped(word)
+            ));
+        }
+        _ => return Err(general()),
+    };
+    let value: f64 = number.parse().map_err(|_| {
+        format!(
+            "`{}` in `{shown}` is not a number",
+            crate::scenario::diagnostic::escaped(number)
+        )
+    })?;
+    normal(text, convert(value), nonzero_digits(number), "m/s")
 }
 
 impl<'de> Deserialize<'de> for SpeedRaw {
@@ -147,6 +177,47 @@ mod tests {
             parse_speed("fast km/h")
                 .unwrap_err()
                 .contains("not a number")
+        );
+    }
+
+    #[test]
+    fn nan_infinite_and_subnormal_speeds_are_refused() {
+        for text in [
+            "NaN km/h",
+            "nan m/s",
+            "inf km/h",
+            "-infinity m/s",
+            "1e999 km/h",
+        ] {
+            let e = parse_speed(text).unwrap_err();
+            assert!(e.contains("is not a finite number"), "{text}: {e}");
+        }
+        // 1e-320 is subnormal, and so is it in m/s; 1e-400 underflows to 0.
+        let e = parse_speed("1e-320 km/h").unwrap_err();
+        assert!(e.contains("subnormal"), "{e}");
+        let e = parse_speed("1e-400 m/s").unwrap_err();
+        assert!(e.contains("would be read as 0"), "{e}");
+        // The smallest normal speed is still one.
+        assert_eq!(parse_speed("2.3e-308 m/s").unwrap(), 2.3e-308);
+        assert_eq!(parse_speed("0 km/h").unwrap(), 0.0);
+    }
+
+    #[test]
+    fn a_space_inside_the_unit_is_refused() {
+        let e = parse_speed("80 km / h").unwrap_err();
+        assert!(e.contains("has a space inside its unit `km / h`"), "{e}");
+        assert!(
+            e.contains("help: write the unit without spaces: `km/h`"),
+            "{e}"
+        );
+        let e = parse_speed("80 k m/h").unwrap_err();
+        assert!(e.contains("has a space inside its unit"), "{e}");
+        // Between the number and its unit a space is the usual spelling.
+        assert_eq!(parse_speed("72 km/h").unwrap(), 20.0);
+        assert!(
+            parse_speed("80 km")
+                .unwrap_err()
+                .contains("a speed is a number in m/s")
         );
     }
 }

@@ -49,22 +49,112 @@ const fn exact(factor: u64, shift: i32) -> Scale {
     Scale::Decimal { factor, shift }
 }
 
-/// One physical dimension of the format: its name in messages, and its
-/// units (the SI one first).
+/// Whether a unit symbol takes an SI prefix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Prefixes {
+    /// Never (`t`, `min`, `deg`, `cycle`).
+    No,
+    /// With or without one (`m`, `mm`, `km`; `N`, `kN`, `GN`).
+    Optional,
+    /// Always: the gram, whose bare `g` is standard gravity in this format
+    /// (`kg`, `mg`, `Mg`, never `g`).
+    Required,
+}
+
+/// A unit symbol the dimensions' forms are written in, and its size in SI.
+struct Symbol {
+    name: &'static str,
+    scale: Scale,
+    prefixes: Prefixes,
+}
+
+const fn symbol(name: &'static str, scale: Scale, prefixes: Prefixes) -> Symbol {
+    Symbol {
+        name,
+        scale,
+        prefixes,
+    }
+}
+
+/// π/180: radians per degree (the f64 nearest to it).
+const RADIANS_PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
+
+/// Every symbol of the forms.
+const SYMBOLS: &[Symbol] = &[
+    symbol("m", decimal(0), Prefixes::Optional),
+    symbol("g", decimal(-3), Prefixes::Required),
+    symbol("s", decimal(0), Prefixes::Optional),
+    symbol("N", decimal(0), Prefixes::Optional),
+    symbol("Pa", decimal(0), Prefixes::Optional),
+    symbol("Hz", decimal(0), Prefixes::Optional),
+    symbol("rad", decimal(0), Prefixes::Optional),
+    symbol("t", decimal(3), Prefixes::No),
+    symbol("min", exact(60, 0), Prefixes::No),
+    symbol("deg", Scale::Irrational(RADIANS_PER_DEGREE), Prefixes::No),
+    symbol("cycle", decimal(0), Prefixes::No),
+];
+
+/// The SI prefixes (BIPM, SI Brochure 2019, and the 2022 additions), as
+/// powers of ten; `da` before `d`, so that the longest one is tried first.
+/// Micro may be written `µ` (U+00B5), `μ` (U+03BC) or `u`.
+const PREFIXES: &[(&str, i32)] = &[
+    ("Q", 30),
+    ("R", 27),
+    ("Y", 24),
+    ("Z", 21),
+    ("E", 18),
+    ("P", 15),
+    ("T", 12),
+    ("G", 9),
+    ("M", 6),
+    ("k", 3),
+    ("h", 2),
+    ("da", 1),
+    ("d", -1),
+    ("c", -2),
+    ("m", -3),
+    ("µ", -6),
+    ("μ", -6),
+    ("u", -6),
+    ("n", -9),
+    ("p", -12),
+    ("f", -15),
+    ("a", -18),
+    ("z", -21),
+    ("y", -24),
+    ("r", -27),
+    ("q", -30),
+];
+
+/// What the schema says of prefixes.
+const PREFIXED: &str = "any SI prefix on m, g, s, N, Pa, Hz, rad";
+
+/// One physical dimension of the format: its name in messages, the units
+/// a message lists (the SI one first), and the forms it is written in:
+/// products and quotients of [`SYMBOLS`] with exponents (`N*m^2/rad`), each
+/// symbol with any SI prefix it takes (`kN/mm`, `GN/m`, `MN*m^2`, `µm`),
+/// and whole-unit aliases (`g`, standard gravity, for an acceleration).
 #[derive(Debug)]
 pub struct Dimension {
     /// "a length", "a mass", … (messages).
     pub name: &'static str,
     /// The SI unit, as the JSON Schema describes a plain number.
     pub si: &'static str,
-    units: &'static [(&'static str, Scale)],
+    /// The units messages list (the common ones; every prefix works).
+    listed: &'static [&'static str],
+    /// The forms, in [`SYMBOLS`] without prefixes.
+    forms: &'static [&'static str],
+    /// Whole units outside the forms, with their scale.
+    aliases: &'static [(&'static str, Scale)],
 }
 
 mod dimensions;
 pub use dimensions::*;
 
-/// A unit as written, in the spelling of the tables: `·` and `×` as `*`,
-/// `²`/`³` as `^2`/`^3`, `Ns/m` as `N*s/m`, `m/s2` as `m/s^2`, no spaces.
+/// A unit as written, in the spelling of the forms: `·`, `×` and `⋅` as
+/// `*`, `²`/`³` as `^2`/`^3`, `°` as `deg`, a prefixed `Ns/m` as `N*s/m`,
+/// `m/s2` as `m/s^2`. White space is not allowed inside a unit (refused
+/// before this).
 fn canonical(unit: &str) -> String {
     let mut out = String::with_capacity(unit.len() + 2);
     for c in unit.chars() {
@@ -73,14 +163,13 @@ fn canonical(unit: &str) -> String {
             '²' => out.push_str("^2"),
             '³' => out.push_str("^3"),
             '°' => out.push_str("deg"),
-            c if c.is_whitespace() => {}
             c => out.push(c),
         }
     }
-    if let Some(rest) = out.strip_suffix("s/m")
-        && matches!(rest, "N" | "kN" | "MN")
+    if let Some(rest) = out.strip_suffix("Ns/m")
+        && (rest.is_empty() || PREFIXES.iter().any(|(p, _)| *p == rest))
     {
-        out = format!("{rest}*s/m");
+        out = format!("{rest}N*s/m");
     }
     if out == "m/s2" {
         out = "m/s^2".into();
@@ -88,38 +177,227 @@ fn canonical(unit: &str) -> String {
     out
 }
 
+/// A unit split into its factors: (divides, base, exponent as written).
+fn factors(unit: &str) -> Option<Vec<(bool, &str, &str)>> {
+    let mut out = Vec::new();
+    let mut divides = false;
+    let mut rest = unit;
+    loop {
+        let end = rest.find(['*', '/']).unwrap_or(rest.len());
+        let piece = &rest[..end];
+        let (base, exponent) = piece.split_once('^').unwrap_or((piece, "1"));
+        if base.is_empty() || exponent.is_empty() {
+            return None;
+        }
+        out.push((divides, base, exponent));
+        if end == rest.len() {
+            return Some(out);
+        }
+        divides = rest.as_bytes()[end] == b'/';
+        rest = &rest[end + 1..];
+    }
+}
+
+/// The power of ten of the prefix `prefix` of `symbol` (0 for none), if
+/// the symbol takes it.
+fn prefix_of(symbol: &Symbol, prefix: &str) -> Option<i32> {
+    match (prefix.is_empty(), symbol.prefixes) {
+        (true, Prefixes::Required) | (false, Prefixes::No) => None,
+        (true, _) => Some(0),
+        (false, _) => PREFIXES.iter().find(|(p, _)| *p == prefix).map(|p| p.1),
+    }
+}
+
+/// The scale of `unit` (canonical) in `form`, if it is written in it.
+fn scale_in(form: &str, unit: &str) -> Option<Scale> {
+    let (form, unit) = (factors(form)?, factors(unit)?);
+    if form.len() != unit.len() {
+        return None;
+    }
+    // The power of ten, in halves (an exponent may be 1.5), the exact
+    // integer factor, and what no decimal writes.
+    let (mut halves, mut factor, mut other) = (0i64, 1u64, 1.0f64);
+    for (&(divides, base, exponent), &(written_divides, written, written_exponent)) in
+        form.iter().zip(&unit)
+    {
+        if divides != written_divides || exponent != written_exponent {
+            return None;
+        }
+        let symbol = SYMBOLS.iter().find(|s| s.name == base)?;
+        let prefix = written.strip_suffix(symbol.name)?;
+        let power = i64::from(prefix_of(symbol, prefix)?);
+        let e: f64 = exponent.parse().ok()?;
+        let e2 = (2.0 * e).round();
+        if e2 != 2.0 * e || e2.abs() > 16.0 {
+            return None;
+        }
+        let e2 = if divides { -e2 as i64 } else { e2 as i64 };
+        halves += power * e2;
+        match symbol.scale {
+            Scale::Decimal { factor: f, shift } => {
+                halves += i64::from(shift) * e2;
+                if f != 1 {
+                    match (e2 > 0 && e2 % 2 == 0)
+                        .then(|| f.checked_pow(u32::try_from(e2 / 2).ok()?))
+                        .flatten()
+                        .and_then(|p| factor.checked_mul(p))
+                    {
+                        Some(product) => factor = product,
+                        None => other *= (f as f64).powf(e2 as f64 / 2.0),
+                    }
+                }
+            }
+            Scale::Irrational(x) => other *= if e2 == 2 { x } else { x.powf(e2 as f64 / 2.0) },
+        }
+    }
+    if halves % 2 != 0 {
+        other *= 10f64.sqrt();
+        halves -= 1;
+    }
+    let shift = i32::try_from(halves / 2).ok()?;
+    Some(if other == 1.0 {
+        Scale::Decimal { factor, shift }
+    } else {
+        Scale::Irrational(other * factor as f64 * 10f64.powi(shift))
+    })
+}
+
+/// The number a value's text starts with and the rest (the unit), both
+/// trimmed: everything up to the first character that cannot continue a
+/// number (a unit never starts with a digit, `.`, `+`, `-`; an `e`
+/// continues the number only if a digit or sign follows).
+pub(crate) fn split_number(text: &str) -> (&str, &str) {
+    let text = text.trim();
+    let bytes = text.as_bytes();
+    let mut end = 0;
+    while end < bytes.len() {
+        let b = bytes[end];
+        let exponent = matches!(b, b'e' | b'E')
+            && end > 0
+            && bytes
+                .get(end + 1)
+                .is_some_and(|n| n.is_ascii_digit() || matches!(n, b'+' | b'-'));
+        if b.is_ascii_digit() || matches!(b, b'.' | b'+' | b'-') || exponent {
+            end += 1 + usize::from(exponent && matches!(bytes[end + 1], b'+' | b'-'));
+        } else {
+            break;
+        }
+    }
+    (text[..end].trim(), text[end..].trim())
+}
+
+/// The first word of `text` if it reads as a number that is not finite
+/// (`NaN`, `inf`, `-infinity`: what Rust's number parser takes and no
+/// scene means).
+pub(crate) fn non_finite_word(text: &str) -> Option<&str> {
+    let word = text.split_whitespace().next()?;
+    word.parse::<f64>()
+        .is_ok_and(|v| !v.is_finite())
+        .then_some(word)
+}
+
+/// The message for a unit with white space inside (`25 m m`): `mm` and
+/// `m*m` differ, so neither is guessed.
+pub(crate) fn spaced_unit(text: &str, unit: &str, units: &[String]) -> String {
+    let words: Vec<&str> = unit.split_whitespace().collect();
+    let joined = words.concat();
+    let product = words.join("*");
+    let fits: Vec<&String> = units
+        .iter()
+        .filter(|u| **u == joined || **u == product)
+        .collect();
+    let shown = super::super::diagnostic::escaped(text);
+    let unit = super::super::diagnostic::escaped(unit);
+    let help = match fits.as_slice() {
+        [one] => format!("write the unit without spaces: `{one}`"),
+        _ => format!(
+            "write the unit without spaces (`{}` and `{}` are different units)",
+            super::super::diagnostic::escaped(&joined),
+            super::super::diagnostic::escaped(&product)
+        ),
+    };
+    format!(
+        "`{shown}` has a space inside its unit `{unit}`; a unit is written without spaces\nhelp: {help}"
+    )
+}
+
+/// `value` (in `si`, read from `text`; `si` empty for a plain number) if
+/// it is a normal number or zero: NaN, infinities, subnormal numbers
+/// (nonzero, below f64::MIN_POSITIVE ≈ 2.2e-308 in magnitude, which lose
+/// precision and overflow when divided by) and a nonzero number that
+/// underflows to 0 are refused.
+pub(crate) fn normal(
+    text: &str,
+    value: f64,
+    written_nonzero: bool,
+    si: &str,
+) -> Result<f64, String> {
+    let shown = super::super::diagnostic::escaped(text);
+    if !value.is_finite() {
+        return Err(format!("`{shown}` is not a finite number"));
+    }
+    if value != 0.0 && value.abs() < f64::MIN_POSITIVE {
+        let is = if si.is_empty() {
+            " is".to_owned()
+        } else {
+            format!(" is {value:e} {si},")
+        };
+        return Err(format!(
+            "`{shown}`{is} a subnormal number (nonzero, below {:e} in magnitude): too small \
+             to compute with\nhelp: write 0, or check the exponent",
+            f64::MIN_POSITIVE
+        ));
+    }
+    if value == 0.0 && written_nonzero {
+        return Err(format!(
+            "`{shown}` is too small to be represented: it would be read as 0\nhelp: write 0, \
+             or check the exponent"
+        ));
+    }
+    Ok(value)
+}
+
+/// Whether the mantissa of a number as written has a nonzero digit.
+pub(crate) fn nonzero_digits(number: &str) -> bool {
+    number
+        .split(['e', 'E'])
+        .next()
+        .is_some_and(|m| m.bytes().any(|b| (b'1'..=b'9').contains(&b)))
+}
+
 impl Dimension {
     /// The units as a message lists them: `m, mm, cm, km`.
     fn unit_list(&self) -> String {
-        let names: Vec<&str> = self.units.iter().map(|u| u.0).collect();
-        names.join(", ")
+        self.listed.join(", ")
     }
 
-    /// Reads `"<number> <unit>"` into SI, or says why not.
+    /// The scale of `unit` (canonical) if it is a unit of this dimension.
+    fn scale(&self, unit: &str) -> Option<Scale> {
+        if let Some(&(_, scale)) = self.aliases.iter().find(|a| a.0 == unit) {
+            return Some(scale);
+        }
+        self.forms.iter().find_map(|form| scale_in(form, unit))
+    }
+
+    /// Reads `"<number> <unit>"` into SI, or says why not (a `help:` line
+    /// after a line break, if there is one).
     pub fn parse(&self, text: &str) -> Result<f64, String> {
         let text = text.trim();
-        // The number: everything up to the first character that cannot
-        // continue one (a unit never starts with a digit, `.`, `+`, `-`; an
-        // `e` continues the number only if a digit or sign follows).
-        let bytes = text.as_bytes();
-        let mut end = 0;
-        while end < bytes.len() {
-            let b = bytes[end];
-            let exponent = matches!(b, b'e' | b'E')
-                && end > 0
-                && bytes
-                    .get(end + 1)
-                    .is_some_and(|n| n.is_ascii_digit() || matches!(n, b'+' | b'-'));
-            if b.is_ascii_digit() || matches!(b, b'.' | b'+' | b'-') || exponent {
-                end += 1 + usize::from(exponent && matches!(bytes[end + 1], b'+' | b'-'));
-            } else {
-                break;
-            }
+        let shown = super::super::diagnostic::escaped(text);
+        if let Some(word) = non_finite_word(text) {
+            return Err(format!(
+                "`{}` in `{shown}` is not a finite number\nhelp: write {} as a number in {} or \
+                 with its unit ({})",
+                super::super::diagnostic::escaped(word),
+                self.name,
+                self.si,
+                self.unit_list()
+            ));
         }
-        let (number, unit) = (text[..end].trim(), text[end..].trim());
+        let (number, unit) = split_number(text);
         let written: f64 = number.parse().map_err(|_| {
             format!(
-                "`{text}` is not {}: write a number in {} or one with its unit ({})",
+                "`{shown}` is not {}: write a number in {} or one with its unit ({})",
                 self.name,
                 self.si,
                 self.unit_list()
@@ -127,23 +405,37 @@ impl Dimension {
         })?;
         if unit.is_empty() {
             return Err(format!(
-                "`{text}` has no unit; write {} as a plain number ({}) or with one of {}",
+                "`{shown}` has no unit; write {} as a plain number ({}) or with one of {}",
                 self.name,
                 self.si,
                 self.unit_list()
             ));
         }
+        if unit.contains(char::is_whitespace) {
+            let words: Vec<&str> = unit.split_whitespace().collect();
+            let candidates: Vec<String> = [words.concat(), words.join("*")]
+                .into_iter()
+                .filter(|u| self.scale(&canonical(u)).is_some())
+                .collect();
+            return Err(spaced_unit(text, unit, &candidates));
+        }
         let unit = canonical(unit);
-        let Some(&(_, scale)) = self.units.iter().find(|u| u.0 == unit) else {
-            let found = ALL
-                .iter()
-                .find(|d| d.units.iter().any(|u| u.0 == unit))
-                .map_or_else(
-                    || format!("the unknown unit `{unit}`"),
-                    |d| format!("{} (`{unit}`)", d.name),
-                );
+        let Some(scale) = self.scale(&unit) else {
+            let escaped_unit = super::super::diagnostic::escaped(&unit);
+            let found = ALL.iter().find(|d| d.scale(&unit).is_some()).map_or_else(
+                || format!("the unknown unit `{escaped_unit}`"),
+                |d| format!("{} (`{escaped_unit}`)", d.name),
+            );
+            // A bare `g` as a gram: say why it is not one.
+            let gram = factors(&unit).is_some_and(|f| f.iter().any(|&(_, base, _)| base == "g"));
+            let help = if gram {
+                "\nhelp: write the gram with a prefix (`kg`, `mg`): a bare `g` is standard \
+                 gravity, 9.80665 m/s²"
+            } else {
+                ""
+            };
             return Err(format!(
-                "expected {} ({}), found {found} in `{text}`",
+                "expected {} ({}), found {found} in `{shown}`{help}",
                 self.name,
                 self.unit_list()
             ));
@@ -159,30 +451,35 @@ impl Dimension {
                 .unwrap_or(written * factor as f64 * 10f64.powi(shift)),
             Scale::Irrational(factor) => written * factor,
         };
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(format!("`{text}` is not a finite number"))
-        }
+        normal(text, value, nonzero_digits(number), self.si)
     }
 
     /// The JSON Schema of a value of this dimension: a number (SI) or a
     /// string with one of its units.
     pub fn schema(&self) -> Schema {
-        let alternatives: Vec<String> = self
-            .units
+        // The units listed first, as written (readable), then every
+        // spelling the forms take.
+        let mut alternatives: Vec<String> = Vec::new();
+        for alternative in self
+            .listed
             .iter()
-            .map(|u| regex_escape(u.0))
+            .map(|u| regex_escape(u))
+            .chain(self.aliases.iter().map(|a| regex_escape(a.0)))
+            .chain(self.forms.iter().map(|f| form_pattern(f)))
             .chain(self.spellings())
-            .collect();
+        {
+            if !alternatives.contains(&alternative) {
+                alternatives.push(alternative);
+            }
+        }
         let pattern = format!(
             r"^\s*[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?\s*({})\s*$",
             alternatives.join("|")
         );
-        let example = self.units.get(1).unwrap_or(&self.units[0]).0;
+        let example = self.listed.get(1).unwrap_or(&self.listed[0]);
         json_schema!({
             "description": format!(
-                "{}: a number in {} or a string with its unit ({})",
+                "{}: a number in {} or a string with its unit ({}; {PREFIXED})",
                 self.name,
                 self.si,
                 self.unit_list()
@@ -192,36 +489,60 @@ impl Dimension {
                 {
                     "type": "string",
                     "pattern": pattern,
-                    "description": format!("with its unit: {}", self.unit_list())
+                    "description": format!("with its unit: {} ({PREFIXED})", self.unit_list())
                 }
             ],
             "examples": [format!("1 {example}")]
         })
     }
 
-    /// Other spellings [`canonical`] accepts, as regular expressions.
+    /// Spellings [`canonical`] accepts beyond the forms, as regular
+    /// expressions: `Ns/m` for `N*s/m`, `m/s2`, `°`.
     fn spellings(&self) -> Vec<String> {
         let mut out = Vec::new();
-        for (unit, _) in self.units {
-            if unit.contains('*') || unit.contains('^') {
-                // `·` for `*`, `²`/`³` for `^2`/`^3`.
-                let pretty = unit.replace('*', "·").replace("^2", "²").replace("^3", "³");
-                if pretty != *unit {
-                    out.push(regex_escape(&pretty));
-                }
-            }
-            if let Some(force) = unit.strip_suffix("*s/m") {
-                out.push(format!("{force}s/m"));
-            }
+        if self.forms.contains(&"N*s/m") {
+            out.push(format!("{}?Ns\\/m", prefix_pattern()));
         }
-        if self.si == "m/s^2" {
-            out.push("m/s2".into());
+        if self.forms.contains(&"m/s^2") {
+            out.push("m\\/s2".into());
         }
-        if self.si == "rad" {
+        if self.forms.contains(&"deg") {
             out.push("°".into());
         }
         out
     }
+}
+
+/// The SI prefixes as a regular expression group.
+fn prefix_pattern() -> String {
+    let names: Vec<&str> = PREFIXES.iter().map(|p| p.0).collect();
+    format!("({})", names.join("|"))
+}
+
+/// A form as a regular expression: each symbol with its prefixes, `*` in
+/// any of its spellings, `^2`/`^3` also as `²`/`³`.
+fn form_pattern(form: &str) -> String {
+    let mut out = String::new();
+    for (i, (divides, base, exponent)) in factors(form).unwrap_or_default().into_iter().enumerate()
+    {
+        if i > 0 {
+            out.push_str(if divides { "\\/" } else { "(\\*|·|×|⋅)" });
+        }
+        let symbol = SYMBOLS.iter().find(|s| s.name == base);
+        match symbol.map(|s| s.prefixes) {
+            Some(Prefixes::Optional) => out.push_str(&format!("{}?", prefix_pattern())),
+            Some(Prefixes::Required) => out.push_str(&prefix_pattern()),
+            _ => {}
+        }
+        out.push_str(&regex_escape(base));
+        match exponent {
+            "1" => {}
+            "2" => out.push_str("(\\^2|²)"),
+            "3" => out.push_str("(\\^3|³)"),
+            e => out.push_str(&format!("\\^{}", regex_escape(e))),
+        }
+    }
+    out
 }
 
 fn regex_escape(unit: &str) -> String {
@@ -297,6 +618,9 @@ impl<'de> Visitor<'de> for Quantity<'_> {
         Ok(v as f64)
     }
     fn visit_str<E: de::Error>(self, v: &str) -> Result<f64, E> {
+        if non_finite_word(v).is_some() {
+            return self.0.parse(v).map_err(E::custom);
+        }
         // Text that does not even start like a number is a wrong type, as
         // serde words it for any number (`"fast"` for a length).
         let starts_numeric = v

@@ -149,7 +149,7 @@ impl Builder<'_> {
                             }
                             text.as_str()
                         }
-                        NodeKind::Sequence(_) | NodeKind::Mapping(_) => {
+                        NodeKind::Sequence(_) | NodeKind::Mapping(_) | NodeKind::Placeholder => {
                             return Err(err(
                                 k.loc,
                                 "mapping keys must be scalars, not sequences or mappings",

@@ -1,193 +1,154 @@
-//! The dimensions of the format and their units (the SI one first).
+//! The dimensions of the format: the units a message lists (the SI one
+//! first) and the forms they are written in, each symbol with any SI prefix
+//! it takes ([`super::SYMBOLS`]).
 
-use super::{Dimension, Scale, decimal, exact};
+use super::{Dimension, exact};
+
+/// A dimension written in `forms` (and `aliases`), listing `listed`.
+const fn dimension(
+    name: &'static str,
+    si: &'static str,
+    listed: &'static [&'static str],
+    forms: &'static [&'static str],
+) -> Dimension {
+    Dimension {
+        name,
+        si,
+        listed,
+        forms,
+        aliases: &[],
+    }
+}
 
 /// A length and its units.
-pub const LENGTH: Dimension = Dimension {
-    name: "a length",
-    si: "m",
-    units: &[
-        ("m", decimal(0)),
-        ("mm", decimal(-3)),
-        ("cm", decimal(-2)),
-        ("km", decimal(3)),
-    ],
-};
-/// A mass and its units.
-pub const MASS: Dimension = Dimension {
-    name: "a mass",
-    si: "kg",
-    units: &[("kg", decimal(0)), ("t", decimal(3))],
-};
+pub const LENGTH: Dimension = dimension("a length", "m", &["m", "mm", "cm", "km"], &["m"]);
+/// A mass and its units (the gram always with a prefix: a bare `g` is
+/// standard gravity).
+pub const MASS: Dimension = dimension("a mass", "kg", &["kg", "t"], &["g", "t"]);
 /// A force and its units.
-pub const FORCE: Dimension = Dimension {
-    name: "a force",
-    si: "N",
-    units: &[("N", decimal(0)), ("kN", decimal(3)), ("MN", decimal(6))],
-};
+pub const FORCE: Dimension = dimension("a force", "N", &["N", "kN", "MN"], &["N"]);
 /// A stiffness and its units.
-pub const STIFFNESS: Dimension = Dimension {
-    name: "a stiffness",
-    si: "N/m",
-    units: &[
-        ("N/m", decimal(0)),
-        ("kN/m", decimal(3)),
-        ("MN/m", decimal(6)),
-        ("N/mm", decimal(3)),
-        ("kN/mm", decimal(6)),
-    ],
-};
+pub const STIFFNESS: Dimension = dimension(
+    "a stiffness",
+    "N/m",
+    &["N/m", "kN/m", "MN/m", "GN/m", "N/mm", "kN/mm"],
+    &["N/m"],
+);
 /// A damping coefficient and its units.
-pub const DAMPING: Dimension = Dimension {
-    name: "a damping coefficient",
-    si: "N*s/m",
-    units: &[
-        ("N*s/m", decimal(0)),
-        ("kN*s/m", decimal(3)),
-        ("MN*s/m", decimal(6)),
-    ],
-};
+pub const DAMPING: Dimension = dimension(
+    "a damping coefficient",
+    "N*s/m",
+    &["N*s/m", "kN*s/m", "MN*s/m"],
+    &["N*s/m"],
+);
 /// A time and its units.
-pub const TIME: Dimension = Dimension {
-    name: "a time",
-    si: "s",
-    units: &[
-        ("s", decimal(0)),
-        ("ms", decimal(-3)),
-        ("min", exact(60, 0)),
-    ],
-};
+pub const TIME: Dimension = dimension("a time", "s", &["s", "ms", "min"], &["s", "min"]);
 /// A frequency and its units.
-pub const FREQUENCY: Dimension = Dimension {
-    name: "a frequency",
-    si: "Hz",
-    units: &[("Hz", decimal(0)), ("kHz", decimal(3))],
-};
-/// An acceleration and its units.
+pub const FREQUENCY: Dimension = dimension("a frequency", "Hz", &["Hz", "kHz"], &["Hz"]);
+/// An acceleration and its units: `g` is standard gravity, 9.80665 m/s².
 pub const ACCELERATION: Dimension = Dimension {
     name: "an acceleration",
     si: "m/s^2",
-    units: &[("m/s^2", decimal(0)), ("g", exact(980_665, -5))],
+    listed: &["m/s^2", "g"],
+    forms: &["m/s^2"],
+    aliases: &[("g", exact(980_665, -5))],
 };
 /// A bending stiffness and its units.
-pub const BENDING_STIFFNESS: Dimension = Dimension {
-    name: "a bending stiffness",
-    si: "N*m^2",
-    units: &[
-        ("N*m^2", decimal(0)),
-        ("kN*m^2", decimal(3)),
-        ("MN*m^2", decimal(6)),
-        ("GN*m^2", decimal(9)),
-    ],
-};
+pub const BENDING_STIFFNESS: Dimension = dimension(
+    "a bending stiffness",
+    "N*m^2",
+    &["N*m^2", "kN*m^2", "MN*m^2", "GN*m^2"],
+    &["N*m^2"],
+);
 /// A mass per length and its units.
-pub const MASS_PER_LENGTH: Dimension = Dimension {
-    name: "a mass per length",
-    si: "kg/m",
-    units: &[("kg/m", decimal(0)), ("t/m", decimal(3))],
-};
+pub const MASS_PER_LENGTH: Dimension = dimension(
+    "a mass per length",
+    "kg/m",
+    &["kg/m", "t/m"],
+    &["g/m", "t/m"],
+);
 /// A mass per area and its units.
-pub const MASS_PER_AREA: Dimension = Dimension {
-    name: "a mass per area",
-    si: "kg/m^2",
-    units: &[("kg/m^2", decimal(0)), ("t/m^2", decimal(3))],
-};
+pub const MASS_PER_AREA: Dimension = dimension(
+    "a mass per area",
+    "kg/m^2",
+    &["kg/m^2", "t/m^2"],
+    &["g/m^2", "t/m^2"],
+);
 /// A density and its units.
-pub const DENSITY: Dimension = Dimension {
-    name: "a density",
-    si: "kg/m^3",
-    units: &[("kg/m^3", decimal(0)), ("t/m^3", decimal(3))],
-};
+pub const DENSITY: Dimension = dimension(
+    "a density",
+    "kg/m^3",
+    &["kg/m^3", "t/m^3"],
+    &["g/m^3", "t/m^3"],
+);
 /// A modulus (pressure) and its units.
-pub const PRESSURE: Dimension = Dimension {
-    name: "a modulus (pressure)",
-    si: "Pa",
-    units: &[
-        ("Pa", decimal(0)),
-        ("kPa", decimal(3)),
-        ("MPa", decimal(6)),
-        ("GPa", decimal(9)),
-    ],
-};
+pub const PRESSURE: Dimension = dimension(
+    "a modulus (pressure)",
+    "Pa",
+    &["Pa", "kPa", "MPa", "GPa", "N/mm^2"],
+    &["Pa", "N/m^2"],
+);
 /// A moment of inertia and its units.
-pub const INERTIA: Dimension = Dimension {
-    name: "a moment of inertia",
-    si: "kg*m^2",
-    units: &[("kg*m^2", decimal(0)), ("t*m^2", decimal(3))],
-};
+pub const INERTIA: Dimension = dimension(
+    "a moment of inertia",
+    "kg*m^2",
+    &["kg*m^2", "t*m^2"],
+    &["g*m^2", "t*m^2"],
+);
 /// A plate rigidity and its units.
-pub const PLATE_RIGIDITY: Dimension = Dimension {
-    name: "a plate rigidity",
-    si: "N*m",
-    units: &[
-        ("N*m", decimal(0)),
-        ("kN*m", decimal(3)),
-        ("MN*m", decimal(6)),
-    ],
-};
+pub const PLATE_RIGIDITY: Dimension = dimension(
+    "a plate rigidity",
+    "N*m",
+    &["N*m", "kN*m", "MN*m"],
+    &["N*m"],
+);
 
 /// A torsional stiffness GJ (torque per twist per length, N·m/(rad/m))
 /// and its units; the radian, a ratio, may be left out (`2 GN*m^2`).
-pub const TORSIONAL_STIFFNESS: Dimension = Dimension {
-    name: "a torsional stiffness",
-    si: "N*m^2/rad",
-    units: &[
-        ("N*m^2/rad", decimal(0)),
-        ("kN*m^2/rad", decimal(3)),
-        ("MN*m^2/rad", decimal(6)),
-        ("GN*m^2/rad", decimal(9)),
-        ("N*m^2", decimal(0)),
-        ("kN*m^2", decimal(3)),
-        ("MN*m^2", decimal(6)),
-        ("GN*m^2", decimal(9)),
+pub const TORSIONAL_STIFFNESS: Dimension = dimension(
+    "a torsional stiffness",
+    "N*m^2/rad",
+    &[
+        "N*m^2/rad",
+        "kN*m^2/rad",
+        "MN*m^2/rad",
+        "GN*m^2/rad",
+        "N*m^2",
+        "kN*m^2",
+        "MN*m^2",
+        "GN*m^2",
     ],
-};
+    &["N*m^2/rad", "N*m^2"],
+);
 /// A polar mass moment of inertia per length (a 3D beam's I_p) and its
 /// units.
-pub const INERTIA_PER_LENGTH: Dimension = Dimension {
-    name: "a moment of inertia per length",
-    si: "kg*m^2/m",
-    units: &[("kg*m^2/m", decimal(0)), ("t*m^2/m", decimal(3))],
-};
+pub const INERTIA_PER_LENGTH: Dimension = dimension(
+    "a moment of inertia per length",
+    "kg*m^2/m",
+    &["kg*m^2/m", "t*m^2/m"],
+    &["g*m^2/m", "t*m^2/m"],
+);
 /// The coefficient C of a Hertz contact, F = C δ^1.5 (N/m^1.5), and its
 /// units.
-pub const HERTZ_COEFFICIENT: Dimension = Dimension {
-    name: "a Hertz coefficient",
-    si: "N/m^1.5",
-    units: &[
-        ("N/m^1.5", decimal(0)),
-        ("kN/m^1.5", decimal(3)),
-        ("MN/m^1.5", decimal(6)),
-        ("GN/m^1.5", decimal(9)),
-    ],
-};
+pub const HERTZ_COEFFICIENT: Dimension = dimension(
+    "a Hertz coefficient",
+    "N/m^1.5",
+    &["N/m^1.5", "kN/m^1.5", "MN/m^1.5", "GN/m^1.5"],
+    &["N/m^1.5"],
+);
 /// A road roughness coefficient A_r, the displacement PSD at Ω₀ = 1/2π
 /// cycle/m: m²/(cycle/m) = m³/cycle (the cycle, a count, may be left out,
 /// as ISO 8608 writes G_d(n₀) in m³); `cm^3` is the 10⁻⁶ m³ the classes
 /// are tabulated in.
-pub const ROUGHNESS_COEFFICIENT: Dimension = Dimension {
-    name: "a roughness coefficient",
-    si: "m^3/cycle",
-    units: &[
-        ("m^3/cycle", decimal(0)),
-        ("cm^3/cycle", decimal(-6)),
-        ("m^3", decimal(0)),
-        ("cm^3", decimal(-6)),
-    ],
-};
-/// π/180: radians per degree (the f64 nearest to it).
-const RADIANS_PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
+pub const ROUGHNESS_COEFFICIENT: Dimension = dimension(
+    "a roughness coefficient",
+    "m^3/cycle",
+    &["m^3/cycle", "cm^3/cycle", "m^3", "cm^3"],
+    &["m^3/cycle", "m^3"],
+);
 /// An angle and its units (`deg` in floating point: π/180 has no decimal
 /// form).
-pub const ANGLE: Dimension = Dimension {
-    name: "an angle",
-    si: "rad",
-    units: &[
-        ("rad", decimal(0)),
-        ("mrad", decimal(-3)),
-        ("deg", Scale::Irrational(RADIANS_PER_DEGREE)),
-    ],
-};
+pub const ANGLE: Dimension = dimension("an angle", "rad", &["rad", "mrad", "deg"], &["rad", "deg"]);
 
 /// Every dimension, to name the one a misplaced unit belongs to.
 pub(super) const ALL: [&Dimension; 20] = [
