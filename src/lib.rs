@@ -67,6 +67,7 @@ pub mod export;
 pub mod format_reference;
 pub mod generate;
 pub mod ground;
+pub mod guarded_file;
 pub mod init;
 pub mod model;
 pub mod plan;

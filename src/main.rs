@@ -35,12 +35,23 @@ fn emit(to_stderr: bool, args: fmt::Arguments<'_>) {
     if !open.load(Ordering::Relaxed) {
         return;
     }
+    // Messages carry names and text from files that may be someone
+    // else's: no control character (ESC, NUL, CR) reaches the terminal
+    // raw, whatever path built the message (issue 39.3).
+    let text = match args.as_str() {
+        Some(s) => vbi::guarded_file::escape_controls(s),
+        None => vbi::guarded_file::escape_controls(&args.to_string()),
+    };
     let written = if to_stderr {
         let mut stream = std::io::stderr().lock();
-        stream.write_fmt(args).and_then(|()| stream.flush())
+        stream
+            .write_all(text.as_bytes())
+            .and_then(|()| stream.flush())
     } else {
         let mut stream = std::io::stdout().lock();
-        stream.write_fmt(args).and_then(|()| stream.flush())
+        stream
+            .write_all(text.as_bytes())
+            .and_then(|()| stream.flush())
     };
     if written.is_err() {
         open.store(false, Ordering::Relaxed);

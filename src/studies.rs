@@ -168,10 +168,10 @@ pub(super) fn run_shard(
     }
     // The text as loaded goes into the part, so that the merge needs no
     // access to the file; a file changed since is caught by the hash.
-    let source = match std::fs::read_to_string(file) {
+    let source = match vbi::guarded_file::read_text_bounded(file, vbi::scenario::MAX_FILE_BYTES) {
         Ok(s) => s,
         Err(e) => {
-            errln!("error: {}: cannot read: {e}", file.display());
+            errln!("error: cannot read the scene again: {e}");
             return ExitCode::from(EXIT_INVALID);
         }
     };

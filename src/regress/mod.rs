@@ -38,6 +38,19 @@ pub enum RegressError {
     /// `regress.yaml` is unreadable or invalid.
     #[error("{0}")]
     Settings(String),
+    /// A scene file's stem cannot name a folder of the store.
+    #[error(
+        "{file}: its name gives the store key `{key}`, which cannot name a folder of the \
+         store ({why})\n  = help: rename the scene file (e.g. `scene.yaml`)"
+    )]
+    BadKey {
+        /// The scene file, escaped.
+        file: String,
+        /// The key, escaped.
+        key: String,
+        /// Why not.
+        why: &'static str,
+    },
     /// Two scene files would share one store folder.
     #[error("{first} and {second} share the name `{key}` in the store: give one another file name")]
     SameKey {
@@ -113,15 +126,31 @@ pub fn canonical_scene(scenario: &crate::scenario::resolved::Scenario) -> String
     crate::report::yaml::to_yaml(&value)
 }
 
+/// The largest `record.tsv` or approved `resolved.yaml` read from a store,
+/// bytes: a record of the maximum 100,000 history bins of a few dozen
+/// columns is some 50 MB; a link to `/dev/zero` or a 3 GB sparse file is
+/// refused before it is read.
+pub const MAX_RECORD_BYTES: u64 = 256 << 20;
+
+/// Each scene's store key is a plain folder name (never `.`, `..` or a
+/// path: a scene file `...yaml` has the stem `..`, which would put its
+/// record in the store's parent), and no two scenes share one.
 fn check_keys(files: &[PathBuf]) -> Result<(), RegressError> {
     let mut seen: Vec<(String, &PathBuf)> = Vec::new();
     for f in files {
         let key = scene_key(f);
+        if let Some(why) = crate::guarded_file::plain_name_fault(&key) {
+            return Err(RegressError::BadKey {
+                file: crate::guarded_file::shown(f),
+                key: crate::guarded_file::escape_controls(&key),
+                why,
+            });
+        }
         if let Some((_, first)) = seen.iter().find(|(k, _)| *k == key) {
             return Err(RegressError::SameKey {
-                key,
-                first: first.display().to_string(),
-                second: f.display().to_string(),
+                key: crate::guarded_file::escape_controls(&key),
+                first: crate::guarded_file::shown(first),
+                second: crate::guarded_file::shown(f),
             });
         }
         seen.push((key, f));
@@ -150,6 +179,15 @@ pub fn approve(
 ) -> Result<Vec<Approved>, RegressError> {
     check_keys(files)?;
     let settings = Settings::load(store).map_err(RegressError::Settings)?;
+    crate::guarded_file::no_link(store)
+        .and_then(|()| {
+            std::fs::create_dir_all(store).map_err(|e| crate::guarded_file::GuardError::Io {
+                path: crate::guarded_file::shown(store),
+                reason: e.to_string(),
+                kind: e.kind(),
+            })
+        })
+        .map_err(|e| RegressError::Settings(e.to_string()))?;
     let runs: Vec<Result<Ran, String>> = files
         .par_iter()
         .map(|f| run_scene(f, options, settings.history_bins))
@@ -166,15 +204,26 @@ pub fn approve(
         .collect())
 }
 
+/// Writes a scene's record into its own folder of the store: a real
+/// folder (a link there is refused, not written through), whose files are
+/// replaced atomically (a link in a file's place is replaced, not
+/// followed).
 fn write_record(store: &Path, key: &str, ran: &Ran) -> Result<Approved, String> {
-    let folder = store.join(key);
+    use crate::guarded_file as guarded;
+    let folder = guarded::own_folder(store, key).map_err(|e| e.to_string())?;
     let path = folder.join(RECORD_FILE);
     let text = ran.record.to_text();
-    let before = std::fs::read_to_string(&path).ok();
+    let before = match guarded::no_link(&path)
+        .and_then(|()| guarded::read_text_bounded(&path, MAX_RECORD_BYTES))
+    {
+        Ok(before) => Some(before),
+        Err(e) if e.is_not_found() => None,
+        // A record that cannot be read (a pipe, a huge file) is replaced.
+        Err(_) => Some(String::new()),
+    };
     if before.as_deref() == Some(text.as_str()) {
         return Ok(Approved::Unchanged);
     }
-    std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
     crate::report::write_atomic(&folder.join(RESOLVED_FILE), ran.resolved.as_bytes())
         .map_err(|e| e.to_string())?;
     crate::report::write_atomic(&path, text.as_bytes()).map_err(|e| e.to_string())?;
@@ -243,12 +292,14 @@ fn check_one(file: &Path, store: &Path, options: &LoadOptions, settings: &Settin
     };
     let folder = store.join(&key);
     let record_path = folder.join(RECORD_FILE);
-    let old = match std::fs::read_to_string(&record_path) {
-        Ok(text) => Record::from_text(&text).map_err(|e| format!("{}: {e}", record_path.display())),
-        Err(e) => Err(format!(
-            "no golden record {} ({e}): approve the scene first with `vbi regress approve`",
-            record_path.display()
+    let old = match crate::guarded_file::read_own_text(&folder, RECORD_FILE, MAX_RECORD_BYTES) {
+        Ok(text) => Record::from_text(&text)
+            .map_err(|e| format!("{}: {e}", crate::guarded_file::shown(&record_path))),
+        Err(e) if e.is_not_found() => Err(format!(
+            "no golden record {}: approve the scene first with `vbi regress approve`",
+            crate::guarded_file::shown(&record_path)
         )),
+        Err(e) => Err(format!("the golden record cannot be read: {e}")),
     };
     let old = match old {
         Ok(r) => r,
@@ -268,7 +319,8 @@ fn check_one(file: &Path, store: &Path, options: &LoadOptions, settings: &Settin
     result.seconds = ran.seconds;
     let comparison = compare::compare(&key, &old, &ran.record, settings);
     if comparison.scene_changed {
-        let approved = std::fs::read_to_string(folder.join(RESOLVED_FILE)).unwrap_or_default();
+        let approved = crate::guarded_file::read_own_text(&folder, RESOLVED_FILE, MAX_RECORD_BYTES)
+            .unwrap_or_default();
         result.scene_diff = compare::line_diff(&approved, &ran.resolved, 200);
     }
     if comparison.scene_changed || !comparison.results_pass() {

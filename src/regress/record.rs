@@ -455,6 +455,17 @@ fn read_cell(text: &str) -> Cell {
     }
 }
 
+/// A field of a record file as shown in a message: escaped, at most 40
+/// characters (the file may be forged).
+fn shown_field(text: &str) -> String {
+    let short: String = text.chars().take(40).collect();
+    let more = if short.len() < text.len() { "…" } else { "" };
+    format!(
+        "{}{more}",
+        crate::guarded_file::escape_controls(&short).replace('\n', "\\n")
+    )
+}
+
 /// The header line of every record file.
 const MAGIC: &str = "# vbi regress golden record";
 
@@ -552,20 +563,49 @@ impl Record {
                         "scene" => record.scene = unescape(value),
                         "scene_hash" => record.scene_hash = value.into(),
                         "history_bins" => {
-                            record.history_bins =
-                                value.parse().map_err(|_| at("history_bins: not a count"))?;
+                            record.history_bins = value
+                                .parse()
+                                .ok()
+                                .filter(|b| (2..=100_000).contains(b))
+                                .ok_or_else(|| {
+                                    at("history_bins: not a whole number from 2 to 100000")
+                                })?;
                         }
-                        other => return Err(at(&format!("unknown header key `{other}`"))),
+                        other => {
+                            return Err(at(&format!(
+                                "unknown header key `{}`",
+                                shown_field(other)
+                            )));
+                        }
                     }
                 }
                 Section::Scalars if expect_header => expect_header = false,
                 Section::Scalars => {
-                    let place = |k: usize| fields.get(k).and_then(|f| f.parse::<f64>().ok());
+                    // A summary scalar is a JSON number, always finite: a
+                    // stored `inf` or `NaN` is forged, and would widen the
+                    // tolerance into a pass (issue 39.2).
+                    let value = read_cell(fields.get(1).copied().unwrap_or_default());
+                    if value.number().is_some_and(|x| !x.is_finite()) {
+                        return Err(at(&format!(
+                            "the value of `{}` is not a finite number; vbi writes none \
+                             other (approve the scene again)",
+                            shown_field(&unescape(fields[0]))
+                        )));
+                    }
+                    let place = |k: usize| -> Result<Option<f64>, String> {
+                        match fields.get(k).filter(|f| !f.is_empty()) {
+                            None => Ok(None),
+                            Some(f) => match f.parse::<f64>() {
+                                Ok(x) if x.is_finite() => Ok(Some(x)),
+                                _ => Err(at("a time or position that is not a finite number")),
+                            },
+                        }
+                    };
                     record.scalars.push(Scalar {
                         name: unescape(fields[0]),
-                        value: read_cell(fields.get(1).copied().unwrap_or_default()),
-                        time: place(2),
-                        position: place(3),
+                        value,
+                        time: place(2)?,
+                        position: place(3)?,
                     });
                 }
                 Section::Table => {
@@ -578,7 +618,7 @@ impl Record {
                             return Err(at(&format!(
                                 "{} cells in a row of table `{}` of {} columns",
                                 fields.len(),
-                                table.name,
+                                shown_field(&table.name),
                                 table.header.len()
                             )));
                         }

@@ -139,12 +139,14 @@ pub fn text(checks: &[SceneCheck], plots: &[(String, PathBuf)]) -> String {
         t.changed,
         t.could_not_run
     );
-    out
+    // Names and values come from scene files and stored records, which may
+    // be someone else's: no control character reaches the terminal.
+    crate::guarded_file::escape_controls(&out)
 }
 
 /// Text safe inside an XML attribute or element: the five entities
-/// escaped, control characters other than tab and line break dropped
-/// (XML 1.0 forbids them).
+/// escaped, control characters other than tab and line break and the
+/// non-characters U+FFFE/U+FFFF written as escapes (XML 1.0 forbids them).
 pub fn xml_escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
@@ -155,7 +157,12 @@ pub fn xml_escape(text: &str) -> String {
             '"' => out.push_str("&quot;"),
             '\'' => out.push_str("&apos;"),
             '\t' | '\n' => out.push(c),
-            c if c.is_control() => {}
+            // Shown as Rust writes them (`\u{1b}`): XML 1.0 forbids the C0
+            // controls and U+FFFE/U+FFFF, and the others repaint a terminal
+            // that shows the log.
+            c if c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}') => {
+                out.extend(c.escape_debug());
+            }
             c => out.push(c),
         }
     }

@@ -64,6 +64,12 @@ impl Tolerance {
         if old == new {
             return true;
         }
+        // An infinite value matches only itself: its tolerance, relative to
+        // an infinite peak, would pass anything (issue 39: a forged `inf`
+        // golden scalar passed every new value).
+        if !old.is_finite() || !new.is_finite() || !peak.is_finite() {
+            return false;
+        }
         (new - old).abs() <= (self.relative * peak).max(self.absolute)
     }
 }
@@ -130,6 +136,21 @@ pub fn names(key: &str, name: &str) -> bool {
             == Some(key)
 }
 
+/// The largest `regress.yaml` read, bytes (a settings file is a few
+/// hundred; a link to `/dev/zero` or a huge file is refused unread).
+pub const MAX_SETTINGS_BYTES: u64 = 1 << 20;
+
+/// A key of the file as shown in a message: escaped, at most 40 characters
+/// (the file may be someone else's).
+fn shown_key(key: &str) -> String {
+    let short: String = key.chars().take(40).collect();
+    let more = if short.len() < key.len() { "…" } else { "" };
+    format!(
+        "{}{more}",
+        crate::guarded_file::escape_controls(&short).replace('\n', "\\n")
+    )
+}
+
 impl Settings {
     /// The tolerance of the item `name` of scene `scene`.
     pub fn tolerance(&self, scene: &str, name: &str) -> Tolerance {
@@ -152,13 +173,16 @@ impl Settings {
     /// Reads `regress.yaml` from the store `store`; the defaults when the
     /// file does not exist.
     pub fn load(store: &Path) -> Result<Self, String> {
+        use crate::guarded_file as guarded;
         let path = store.join(FILE_NAME);
-        let text = match std::fs::read_to_string(&path) {
+        let text = match guarded::no_link(&path)
+            .and_then(|()| guarded::read_text_bounded(&path, MAX_SETTINGS_BYTES))
+        {
             Ok(t) => t,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Settings::default()),
-            Err(e) => return Err(format!("{}: {e}", path.display())),
+            Err(e) if e.is_not_found() => return Ok(Settings::default()),
+            Err(e) => return Err(e.to_string()),
         };
-        Self::parse(&text).map_err(|(loc, m)| format!("{}:{loc}: {m}", path.display()))
+        Self::parse(&text).map_err(|(loc, m)| format!("{}:{loc}: {m}", guarded::shown(&path)))
     }
 
     /// Parses the text of a `regress.yaml`; the error carries line:column.
@@ -189,8 +213,9 @@ impl Settings {
                     return Err((
                         at,
                         format!(
-                            "unknown key `{other}` (expected relative, absolute, history_bins, \
-                             quantities, scenes)"
+                            "unknown key `{}` (expected relative, absolute, history_bins, \
+                             quantities, scenes)",
+                            shown_key(other)
                         ),
                     ));
                 }
@@ -258,7 +283,10 @@ fn partial_key(
         other => {
             return Err((
                 at,
-                format!("unknown key `{other}` (expected relative, absolute)"),
+                format!(
+                    "unknown key `{}` (expected relative, absolute)",
+                    shown_key(other)
+                ),
             ));
         }
     }

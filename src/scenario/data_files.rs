@@ -256,24 +256,10 @@ pub(crate) fn read_text(file: &DataFile, ck: &Checker<'_>) -> Result<String, Str
     })
 }
 
-/// Opens `path` for reading without blocking (a FIFO put in a regular
-/// file's place would otherwise wait for a writer) and refuses anything
-/// but a regular file by the open handle's own metadata.
+/// Opens `path` for reading: a regular file only, without blocking
+/// ([`crate::guarded_file::open_regular`], the one place this is done).
 pub fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
-    let mut options = std::fs::OpenOptions::new();
-    options.read(true);
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::OpenOptionsExt;
-        options.custom_flags(libc::O_NONBLOCK);
-    }
-    let file = options.open(path)?;
-    if !file.metadata()?.is_file() {
-        return Err(std::io::Error::other(
-            "not a regular file (a folder, a device or a pipe)",
-        ));
-    }
-    Ok(file)
+    crate::guarded_file::open_regular(path)
 }
 
 /// `path` with `.` and `..` removed by their names alone (no symlink is

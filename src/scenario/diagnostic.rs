@@ -194,14 +194,20 @@ fn source_line(source: &str, line: usize) -> Option<String> {
 impl std::fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let Location { line, col } = self.loc;
+        // The message and help quote keys, units, names and file names of
+        // the scene, which may hold any character a YAML escape can write
+        // (`"\e[2J"`): shown escaped, never raw (issue 39.3).
+        let safe = crate::guarded_file::escape_controls;
+        let (file, message) = (safe(&self.file), safe(&self.message));
+        let help = self.help.as_deref().map(safe);
         match self.path.as_deref() {
             // A scene given as data: its place is a key path.
-            Some("") => write!(f, "{}: {}", self.file, self.message)?,
-            Some(path) => write!(f, "{}: {path}: {}", self.file, self.message)?,
-            None => write!(f, "{}:{line}:{col}: {}", self.file, self.message)?,
+            Some("") => write!(f, "{file}: {message}")?,
+            Some(path) => write!(f, "{file}: {}: {message}", safe(path))?,
+            None => write!(f, "{file}:{line}:{col}: {message}")?,
         }
         let Some(text) = &self.source_line else {
-            if let Some(help) = &self.help {
+            if let Some(help) = &help {
                 write!(f, "\n  = help: {help}")?;
             }
             return Ok(());
@@ -231,7 +237,7 @@ impl std::fmt::Display for Diagnostic {
             writeln!(f, "{line} | {shown}")?;
         }
         write!(f, "{gutter} | {}^", " ".repeat(caret_pad))?;
-        if let Some(help) = &self.help {
+        if let Some(help) = &help {
             write!(f, "\n{gutter} = help: {help}")?;
         }
         Ok(())

@@ -135,7 +135,14 @@ pub fn read_source(path: &Path) -> Result<(String, String), LoadError> {
     };
     let file = path.display().to_string();
     // The size is checked before the file is read whole.
-    let size = std::fs::metadata(path).map_err(io)?.len();
+    let meta = std::fs::metadata(path).map_err(io)?;
+    if meta.is_dir() {
+        return Err(io(std::io::Error::new(
+            std::io::ErrorKind::IsADirectory,
+            "it is a folder, not a scene file",
+        )));
+    }
+    let size = meta.len();
     if size > MAX_FILE_BYTES {
         return Err(LoadError::Invalid(vec![Diagnostic::new(
             &file,
@@ -146,14 +153,28 @@ pub fn read_source(path: &Path) -> Result<(String, String), LoadError> {
             ),
         )]));
     }
-    // Read at most one byte past the limit: a device or a pipe (`/dev/zero`)
-    // reports no size but never ends.
+    // A regular file only (a FIFO would wait for a writer forever, a
+    // device such as `/dev/zero` never ends), read at most one byte past
+    // the limit (a file that grows while read).
+    let file_handle = crate::guarded_file::open_regular(path).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::Other {
+            LoadError::Invalid(vec![Diagnostic::new(
+                &file,
+                "",
+                Location { line: 1, col: 1 },
+                "this is not a regular file (a folder, a device or a pipe); a scene is a YAML \
+                 file",
+            )])
+        } else {
+            io(e)
+        }
+    })?;
     let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| {
-            std::io::Read::read_to_end(&mut std::io::Read::take(f, MAX_FILE_BYTES + 1), &mut bytes)
-        })
-        .map_err(io)?;
+    std::io::Read::read_to_end(
+        &mut std::io::Read::take(file_handle, MAX_FILE_BYTES + 1),
+        &mut bytes,
+    )
+    .map_err(io)?;
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(LoadError::Invalid(vec![Diagnostic::new(
             &file,

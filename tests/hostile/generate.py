@@ -813,6 +813,26 @@ def locate(text):
     return text[:at] + text[at + 2:], line, col
 
 
+# --- issue 39.3: control characters a YAML escape writes into a unit, a
+# variant, a key, a DOF name or a data-file name are shown escaped
+# (`\u{1b}`), never raw: every case's output is also checked for raw
+# control characters by tests/it/hostile.rs.
+case("esc-unit", "rejected", "ESC inside a unit is shown escaped",
+     scene(bridge=BEAM.replace("mass_per_length: 2303.0", 'mass_per_length: @@"2303 kg/m\\e[31mRED"')),
+     "\\u{1b}[31mRED")
+case("esc-variant", "rejected", "ESC inside a variant name is shown escaped",
+     scene(bridge=BEAM.replace("type: beam", 'type: @@"be\\e[2Jam"')), "\\u{1b}[2J")
+case("esc-key", "rejected", "NUL and ESC inside an unknown key are shown escaped",
+     scene(bridge=BEAM + '  @@"sp\\0an\\e[2J": 1\n'), "\\0an\\u{1b}[2J")
+case("esc-dof", "rejected", "ESC inside a DOF name is shown escaped",
+     scene(extra='record:\n  - {name: d, quantity: vehicle_displacement, vehicle: 1, dof: @@"spr\\e[2Jung"}\n'),
+     "\\u{1b}[2J")
+case("esc-data-file", "rejected", "ESC inside a data-file name is shown escaped",
+     scene(extra='surface: {type: measured, file: @@"p\\e[2J.csv"}\n'), "\\u{1b}[2J")
+case("esc-bell-name", "rejected", "BEL and CR inside a record name are refused where written",
+     scene(extra='record:\n  - {name: @@"a\\a\\rb", quantity: bridge_displacemnt, x: 12.5}\n'),
+     "control character U+0007")
+
 def main():
     if os.path.isdir(CASES):
         shutil.rmtree(CASES)

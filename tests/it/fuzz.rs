@@ -534,3 +534,120 @@ fn mutated_data_files_never_panic_or_leak_in_the_loader() {
     assert!(runs > 100, "only {runs} inputs were tried");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Issue 39.2: a regression store's golden record is data from someone
+/// else. Records (and `regress.yaml` settings) mutated like the scenes
+/// above: reading them never panics, and a mutated record that the
+/// comparison passes against the true one holds no value far from it —
+/// a forged value (`inf`, `1e308`, a NaN) is refused or fails, never
+/// widened into a pass.
+#[test]
+fn mutated_golden_records_never_panic_or_pass_a_forged_value() {
+    use vbi::regress::{compare, record::Record, settings::Settings};
+    let timed: Option<u64> = std::env::var("VBI_FUZZ_SECONDS")
+        .ok()
+        .and_then(|v| v.parse().ok());
+    let (seconds, inputs) = match timed {
+        Some(seconds) => (seconds, u64::MAX),
+        None => (DEFAULT_CAP_SECONDS, 3_000),
+    };
+    let seed = std::env::var("VBI_FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x0D47_A5EE_D039_u64);
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/moving-force-slow.yaml");
+    let truth = vbi::regress::run_scene(&scene, &vbi::scenario::LoadOptions::default(), 200)
+        .expect("the quick scene runs")
+        .record;
+    let base = truth.to_text();
+    let settings_seeds = [
+        "relative: 1e-5\nabsolute: 1e-12\nhistory_bins: 400\n".to_string(),
+        "quantities:\n  midspan: {relative: 1e-3}\nscenes:\n  moving-force-slow:\n    \
+         relative: 1e-4\n    quantities:\n      history.midspan: {absolute: 1e-9}\n"
+            .to_string(),
+    ];
+    let texts = vec![
+        base.clone(),
+        settings_seeds[0].clone(),
+        settings_seeds[1].clone(),
+    ];
+    let peak = truth
+        .scalars
+        .iter()
+        .filter_map(|s| s.value.number())
+        .filter(|x| x.is_finite())
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    let settings = Settings::default();
+    let mut rng = Rng(seed | 1);
+    let deadline = Instant::now() + Duration::from_secs(seconds);
+    let (mut runs, mut read, mut passed) = (0u64, 0u64, 0u64);
+    let mut failures = Vec::new();
+    while runs < inputs && Instant::now() < deadline && failures.len() < 10 {
+        runs += 1;
+        if rng.below(5) == 0 {
+            let seed_text = rng.pick(&settings_seeds[..]).clone();
+            let text = mutate(&seed_text, &texts, &mut rng);
+            if catch_unwind(AssertUnwindSafe(|| Settings::parse(&text).map(|_| ()))).is_err() {
+                failures.push(format!("Settings::parse panicked on {text:?}"));
+            }
+            continue;
+        }
+        let mut text = mutate(&base, &texts, &mut rng);
+        // Half the time, one scalar's value forged to a value no run gives.
+        if rng.below(2) == 0 {
+            let lines: Vec<&str> = text.lines().collect();
+            let scalars: Vec<usize> = (0..lines.len())
+                .filter(|&i| lines[i].split('\t').nth(1).is_some_and(|v| v.contains('e')))
+                .collect();
+            if !scalars.is_empty() {
+                let i = *rng.pick(&scalars);
+                let forged = *rng.pick(&["inf", "-inf", "NaN", "1e308", "-1e308", "1e-320"]);
+                let mut fields: Vec<String> = lines[i].split('\t').map(str::to_owned).collect();
+                fields[1] = forged.to_owned();
+                let mut out: Vec<String> = lines.iter().map(|l| (*l).to_owned()).collect();
+                out[i] = fields.join("\t");
+                text = out.join("\n");
+            }
+        }
+        let outcome = catch_unwind(AssertUnwindSafe(|| {
+            let old = Record::from_text(&text).ok()?;
+            let comparison = compare::compare("moving-force-slow", &old, &truth, &settings);
+            Some((old, comparison.results_pass()))
+        }));
+        let Ok(outcome) = outcome else {
+            failures.push(format!("panicked on a record:\n{text}"));
+            continue;
+        };
+        let Some((old, pass)) = outcome else { continue };
+        read += 1;
+        if !pass {
+            continue;
+        }
+        passed += 1;
+        for s in &old.scalars {
+            let (Some(a), Some(b)) = (
+                s.value.number(),
+                truth
+                    .scalars
+                    .iter()
+                    .find(|t| t.name == s.name)
+                    .and_then(|t| t.value.number()),
+            ) else {
+                continue;
+            };
+            let close = (a.is_nan() && b.is_nan()) || (a - b).abs() <= 1e-3 * peak + 1e-9;
+            if !close {
+                failures.push(format!(
+                    "a record with {} = {a} passed against the true {b}",
+                    s.name
+                ));
+            }
+        }
+    }
+    eprintln!(
+        "record fuzz: {runs} inputs (seed {seed}), {read} records read, {passed} passed, {} failures",
+        failures.len()
+    );
+    assert!(runs > 100, "only {runs} inputs were tried");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

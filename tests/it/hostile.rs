@@ -203,6 +203,17 @@ fn every_hostile_file_gets_its_classified_answer_within_caps() {
             fail("the canary file's content appears in the output".into());
             continue;
         }
+        // Issue 39.3: nothing from the file repaints the terminal.
+        if let Some(c) = run
+            .stderr
+            .chars()
+            .find(|&c| c.is_control() && !matches!(c, '\n' | '\t'))
+        {
+            fail(format!(
+                "a raw control character {c:?} reached the terminal"
+            ));
+            continue;
+        }
         if run.wall > SLOW {
             fail(format!("took {:?}", run.wall));
         }

@@ -39,6 +39,7 @@ mod ground_motion;
 mod hard_cases;
 mod hertz;
 mod hostile;
+mod hostile_store;
 mod lateral_geometry;
 mod library_api;
 mod lsp;

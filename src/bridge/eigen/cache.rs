@@ -154,7 +154,8 @@ impl ModesCache {
         if metadata.len() != expected as u64 {
             return Read::Invalid("its length is not that of the request");
         }
-        let Ok(bytes) = std::fs::read(&path) else {
+        // A regular file of exactly that length, read no further.
+        let Ok(bytes) = crate::guarded_file::read_bounded(&path, expected as u64) else {
             return Read::Invalid("it cannot be read");
         };
         match decode(&bytes, key, order, count) {
