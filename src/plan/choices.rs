@@ -528,6 +528,9 @@ pub(crate) fn plan(
         duration: longest_run,
         free_vibration,
         bridge_length: length,
+        acceleration_record: step_without_ground
+            .and(history_cutoff)
+            .and_then(|cut| raised_acceleration_record(raw, cut, default_filter)),
     }
     .cause(budget.limit_of("steps"));
     let steps_path = cause.path;
@@ -664,4 +667,23 @@ pub(crate) fn plan(
             .collect(),
     };
     Some((scenario, modal))
+}
+
+/// The deck-acceleration record whose own `max_frequency`, above the
+/// EN 1990 filter `default_filter` (Hz), is the highest cut-off `cut` (Hz)
+/// the automatic modes were kept to: its path in the file, the cut-off and
+/// the filter (the cause named where the step budget is hit, issue 38).
+fn raised_acceleration_record(
+    raw: &ScenarioRaw,
+    cut: f64,
+    default_filter: f64,
+) -> Option<(String, f64, f64)> {
+    let records = raw.record.as_deref()?;
+    records.iter().enumerate().find_map(|(i, r)| {
+        let own = r.max_frequency.filter(|f| f.is_finite())?;
+        (r.quantity == crate::scene::Quantity::BridgeAcceleration
+            && own == cut
+            && own > default_filter * 1.5)
+            .then(|| (format!("record[{i}].max_frequency"), own, default_filter))
+    })
 }

@@ -29,6 +29,10 @@ pub(crate) struct LongRun<'a> {
     pub free_vibration: f64,
     /// The bridge's length, m.
     pub bridge_length: f64,
+    /// A deck-acceleration record whose own `max_frequency` (above the
+    /// EN 1990 filter) made the automatic choice keep the modes that set the
+    /// step: its path in the file, its cut-off and the default filter, Hz.
+    pub acceleration_record: Option<(String, f64, f64)>,
 }
 
 /// The field blamed and what would fit.
@@ -90,6 +94,7 @@ pub(crate) fn steps_fit_before_modes(
         duration,
         free_vibration,
         bridge_length,
+        acceleration_record: None,
     }
     .cause(budget.limit_of("steps"));
     let what = format!(
@@ -109,6 +114,22 @@ impl LongRun<'_> {
         let excess = duration - fits;
         if let Some(cause) = self.ground_cause(limit) {
             return cause;
+        }
+        if let Some((path, cut, default)) = &self.acceleration_record {
+            // The step scales as the inverse of the highest kept frequency
+            // (30 steps per period), so the steps as the cut-off.
+            let fitting = cut * limit * dt / duration;
+            return Cause {
+                path: path.clone(),
+                hint: format!(
+                    "this deck-acceleration record sums the modes up to {} Hz, far above the \
+                     EN 1990 filter of {} Hz, and its highest mode sets the time step; a \
+                     `max_frequency` up to about {} Hz fits (or leave it out for the default)",
+                    short(*cut),
+                    short(*default),
+                    down(fitting)
+                ),
+            };
         }
         let latest = self
             .slow

@@ -521,3 +521,27 @@ fn missing_file_is_invalid_input_with_a_clear_message() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).starts_with("error: tests/bad: cannot read: "));
 }
+
+/// Issue 38: a deck-acceleration record whose own `max_frequency` (1e5 Hz)
+/// sets the automatic step is named as the cause where the step budget is
+/// hit, with a cut-off that fits; the speed was blamed before ("a speed of
+/// at least 73 m/s fits").
+#[test]
+fn a_raised_acceleration_cut_off_is_blamed_for_the_steps() {
+    let scratch = crate::support::Scratch::new("bad_inputs", "raised-cut-off");
+    let scene = scratch.path("acc.yaml");
+    std::fs::write(
+        &scene,
+        "name: acc\nbridge:\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  \
+         mass_per_length: 2303.0\nvehicles:\n  - type: moving_force\n    loads: [100 kN]\n    \
+         speed: 27.7\nrecord:\n  - {name: a, quantity: bridge_acceleration, x: 12.5, \
+         max_frequency: 1e5}\n",
+    )
+    .unwrap();
+    let out = vbi(&["check".as_ref(), scene.as_os_str()], scratch.dir());
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("acc.yaml:12:70: time steps"), "{stderr}");
+    assert!(stderr.contains("a `max_frequency` up to about"), "{stderr}");
+    assert!(!stderr.contains("a speed of at least"), "{stderr}");
+}
