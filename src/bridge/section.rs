@@ -3,8 +3,9 @@
 //!
 //! Sign conventions: the moment M is positive sagging (N·m), the shear
 //! V = dM/dx (N) is the resultant of the upward forces left of the section.
-//! Where a point load sits exactly on the section V jumps; the right-hand
-//! limit V(x⁺) is reported.
+//! Where a point load or a support sits exactly on the section V jumps;
+//! the right-hand limit V(x⁺) is reported, or the left-hand one V(x⁻) for
+//! [`Side::Left`].
 //!
 //! The effect E (M or V) at x is split as in the mode-acceleration method
 //! (Williams 1945; Clough & Penzien, *Dynamics of Structures*, 2nd ed.,
@@ -28,15 +29,31 @@
 //! of that element (the load between clamped ends: M_A = −P a b²/h²,
 //! R_A = P b²(3a + b)/h³; Roark's Formulas, Table 8.1 case 1d).
 //!
-//! The modal curvature of a Hermite element is linear and its third
-//! derivative constant per element, both jumping at nodes; they are
-//! recovered by nodal averaging (the mean of the two elements meeting at a
-//! node, the end element's value at the ends) and interpolated linearly
-//! within the element, which is second-order accurate for the smooth mode
-//! shapes (Zienkiewicz & Zhu 1992, superconvergent patch recovery in 1-D).
+//! The modal part Eⱼ(x) is the section force of the static problem whose
+//! solution is the mode itself: Kφⱼ = ωⱼ²Mφⱼ, i.e. the beam under the
+//! distributed load ωⱼ² m φⱼ(x) (the consistent inertia of the mode). In
+//! the section's element the exact solution is the Hermite cubic of the
+//! nodal values plus the clamped–clamped particular solution of that load
+//! (as for a point load above), so
+//!
+//! Eⱼ(x) = EI φⱼ″(x) − ωⱼ² m ∫₀ʰ φⱼ(a) G(x; a) da,
+//!
+//! G the clamped–clamped moment (shear) under a unit load at a, integrated
+//! by Gauss–Legendre on each side of x (exact: the integrand is a
+//! polynomial of degree 6 on each side). At the element's ends this is the
+//! element end force (Kₑ − ωⱼ²Mₑ)φₑ, so the shears of the two elements at
+//! an interior support differ by the support's modal reaction: the
+//! reaction (the shear jump) carries the beam's inertia, and Σ reactions =
+//! Σ loads + the deck's inertia and modal damping forces to round-off
+//! (issue 40: nodal averaging of φ‴ had made the jump static only, off by
+//! 30 % of the load). A section at a node belongs to the element on its
+//! right (`Side::Right`, the right-hand limit) or on its left
+//! (`Side::Left`, the left-hand limit, without a load exactly there).
 
-use super::hermite::{HermiteField, shape_curvatures};
+use super::hermite::{HermiteField, shape_curvatures, shape_functions};
+
 use super::{BridgeError, ModalBridge, Shapes};
+pub use crate::scene::Side;
 
 /// The moment and shear of one beam section.
 #[derive(Debug, Clone)]
@@ -47,6 +64,9 @@ pub struct SectionProbe {
     element_start: f64,
     /// Length of the section's element, m.
     element_length: f64,
+    /// The left-hand limit at a node (the element on the left; a load
+    /// exactly at the section is not yet passed).
+    left: bool,
     /// M at x under a unit downward load at ξ from the finite-element
     /// displacements (N·m/N), exact for ξ outside the element.
     moment_line: HermiteField,
@@ -92,15 +112,21 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 }
 
 impl ModalBridge {
-    /// The section probe at `x` (m), `None` on a plate deck (moments and
-    /// shears are beam quantities here). Two sparse solves.
-    pub fn section_probe(&self, x: f64) -> Result<Option<SectionProbe>, BridgeError> {
+    /// The section probe at `x` (m) on `side` of it, `None` on a plate deck
+    /// (moments and shears are beam quantities here). Two sparse solves.
+    pub fn section_probe(&self, x: f64, side: Side) -> Result<Option<SectionProbe>, BridgeError> {
         let Shapes::Beam { shapes, model, .. } = &self.shapes else {
             return Ok(None);
         };
         let nodes = &model.node_x;
+        let left = side == Side::Left;
         let right = nodes.partition_point(|&nx| nx <= x);
-        let element = right.clamp(1, nodes.len() - 1) - 1;
+        let mut element = right.clamp(1, nodes.len() - 1) - 1;
+        // The left-hand limit at a node (an interior one: at the entrance
+        // there is no element on the left).
+        if left && element > 0 && x <= nodes[element] {
+            element -= 1;
+        }
         let start = nodes[element];
         let h = nodes[element + 1] - start;
         let xi = ((x - start) / h).clamp(0.0, 1.0);
@@ -117,9 +143,14 @@ impl ModalBridge {
         ];
         let moment_line = model.kink_line(element, curvature.map(|b| -ei * b))?;
         let shear_line = model.kink_line(element, third.map(|b| -ei * b))?;
-        let (curvatures, thirds) = recovered_derivatives(shapes, element, xi);
-        let modal_moment: Vec<f64> = curvatures.iter().map(|c| ei * c).collect();
-        let modal_shear: Vec<f64> = thirds.iter().map(|t| ei * t).collect();
+        let (modal_moment, modal_shear) = consistent_modal_forces(
+            shapes,
+            &self.circular_frequencies,
+            element,
+            xi,
+            ei,
+            model.mass_per_length,
+        );
         let per_stiffness = |values: &[f64]| -> Vec<f64> {
             values
                 .iter()
@@ -131,6 +162,7 @@ impl ModalBridge {
             x,
             element_start: start,
             element_length: h,
+            left,
             static_modal_moment: per_stiffness(&modal_moment),
             static_modal_shear: per_stiffness(&modal_shear),
             moment_line,
@@ -141,43 +173,87 @@ impl ModalBridge {
     }
 }
 
-/// Nodally averaged φ″ and φ‴ of every component of `shapes` at local
-/// coordinate `xi` of `element` (see the module doc).
-fn recovered_derivatives(shapes: &HermiteField, element: usize, xi: f64) -> (Vec<f64>, Vec<f64>) {
+/// The clamped–clamped moment (sagging positive, N·m) and shear (N) at `s`
+/// of an element of length `h` under a unit downward load at `a` (Roark's
+/// Formulas, Table 8.1 case 1d); `left` puts a load exactly at `s` on the
+/// far side of the section.
+fn clamped_unit_load(s: f64, a: f64, h: f64, left: bool) -> (f64, f64) {
+    let b = h - a;
+    let end_moment = -a * b * b / (h * h);
+    let reaction = b * b * (3.0 * a + b) / (h * h * h);
+    let beyond = if left { s > a } else { s >= a };
+    let moment = end_moment + reaction * s - if beyond { s - a } else { 0.0 };
+    let shear = reaction - if beyond { 1.0 } else { 0.0 };
+    (moment, shear)
+}
+
+/// Gauss–Legendre points and weights on [0, 1], 4 points (exact to degree 7).
+const GAUSS4: [(f64, f64); 4] = [
+    (0.069_431_844_202_973_71, 0.173_927_422_568_726_93),
+    (0.330_009_478_207_571_87, 0.326_072_577_431_273_07),
+    (0.669_990_521_792_428_1, 0.326_072_577_431_273_07),
+    (0.930_568_155_797_026_3, 0.173_927_422_568_726_93),
+];
+
+/// Eⱼ for the moment (N·m) and shear (N) of a unit modal coordinate of
+/// every mode at local coordinate `xi` of `element` (module doc): the
+/// element's cubic EI φ″, EI φ‴ plus the clamped–clamped solution of the
+/// mode's inertia load ωⱼ² m φⱼ. Cost O(modes).
+fn consistent_modal_forces(
+    shapes: &HermiteField,
+    circular_frequencies: &[f64],
+    element: usize,
+    xi: f64,
+    ei: f64,
+    mass_per_length: f64,
+) -> (Vec<f64>, Vec<f64>) {
     let nodes = shapes.node_x();
-    let modes = shapes.components();
-    // End curvatures (at ξ = 0 and 1) and the constant third derivative of
-    // element e, component c.
-    let element_values = |e: usize, c: usize| -> (f64, f64, f64) {
-        let h = nodes[e + 1] - nodes[e];
-        let (wa, ta) = shapes.nodal(e, c);
-        let (wb, tb) = shapes.nodal(e + 1, c);
-        let dofs = [wa, ta, wb, tb];
-        let at = |xi: f64| dot(&shape_curvatures(xi, h), &dofs);
-        let (ka, kb) = (at(0.0), at(1.0));
-        (ka, kb, (kb - ka) / h)
-    };
-    let last = nodes.len() - 2;
-    let mut curvatures = vec![0.0; modes];
-    let mut thirds = vec![0.0; modes];
-    for c in 0..modes {
-        let (ka, kb, t) = element_values(element, c);
-        let (left_k, left_t) = if element > 0 {
-            let (_, kb_left, t_left) = element_values(element - 1, c);
-            (0.5 * (kb_left + ka), 0.5 * (t_left + t))
-        } else {
-            (ka, t)
-        };
-        let (right_k, right_t) = if element < last {
-            let (ka_right, _, t_right) = element_values(element + 1, c);
-            (0.5 * (kb + ka_right), 0.5 * (t + t_right))
-        } else {
-            (kb, t)
-        };
-        curvatures[c] = (1.0 - xi) * left_k + xi * right_k;
-        thirds[c] = (1.0 - xi) * left_t + xi * right_t;
+    let h = nodes[element + 1] - nodes[element];
+    let s = xi * h;
+    let curvature = shape_curvatures(xi, h);
+    let third = [
+        12.0 / (h * h * h),
+        6.0 / (h * h),
+        -12.0 / (h * h * h),
+        6.0 / (h * h),
+    ];
+    // Quadrature points on [0, s] and [s, h] (the kernel kinks at a = s),
+    // with their weights and shape functions, shared by every mode.
+    let mut points: Vec<(f64, f64, [f64; 4])> = Vec::with_capacity(8);
+    for (from, to) in [(0.0, s), (s, h)] {
+        let length = to - from;
+        if length <= 0.0 {
+            continue;
+        }
+        for (g, w) in GAUSS4 {
+            let a = from + g * length;
+            let (n, _) = shape_functions(a / h, h);
+            points.push((a, w * length, n));
+        }
     }
-    (curvatures, thirds)
+    let left_side = xi >= 1.0;
+    let kernels: Vec<(f64, f64)> = points
+        .iter()
+        .map(|&(a, _, _)| clamped_unit_load(s, a, h, left_side))
+        .collect();
+    let modes = shapes.components();
+    let mut moments = vec![0.0; modes];
+    let mut shears = vec![0.0; modes];
+    for c in 0..modes {
+        let (wa, ta) = shapes.nodal(element, c);
+        let (wb, tb) = shapes.nodal(element + 1, c);
+        let dofs = [wa, ta, wb, tb];
+        let (mut moment_load, mut shear_load) = (0.0, 0.0);
+        for (&(_, weight, n), &(gm, gv)) in points.iter().zip(&kernels) {
+            let phi = dot(&n, &dofs);
+            moment_load += weight * phi * gm;
+            shear_load += weight * phi * gv;
+        }
+        let load = circular_frequencies.get(c).map_or(0.0, |w| w * w) * mass_per_length;
+        moments[c] = ei * dot(&curvature, &dofs) - load * moment_load;
+        shears[c] = ei * dot(&third, &dofs) - load * shear_load;
+    }
+    (moments, shears)
 }
 
 impl super::beam::BeamModel {
@@ -223,12 +299,9 @@ impl SectionProbe {
             let a = at - self.element_start;
             if (0.0..=h).contains(&a) {
                 // The load between the element's clamped ends (module doc).
-                let b = h - a;
-                let end_moment = -p * a * b * b / (h * h);
-                let reaction = p * b * b * (3.0 * a + b) / (h * h * h);
-                let beyond = s >= a;
-                moment += end_moment + reaction * s - if beyond { p * (s - a) } else { 0.0 };
-                shear += reaction - if beyond { p } else { 0.0 };
+                let (m, v) = clamped_unit_load(s, a, h, self.left);
+                moment += p * m;
+                shear += p * v;
             }
         }
         SectionForces { moment, shear }

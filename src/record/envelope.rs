@@ -120,7 +120,7 @@ impl EnvelopeTracker {
             let mut shape = vec![0.0; modes];
             model.bridge.mode_values(at, 0.0, &mut shape);
             let section = if sections {
-                model.bridge.section_probe(at)?
+                model.bridge.section_probe(at, crate::scene::Side::Right)?
             } else {
                 None
             };

@@ -150,6 +150,31 @@ pub(super) fn vertical_ground_terms(
             };
             (share, None)
         }
+        Probe::Reaction {
+            ref left,
+            ref right,
+            ..
+        } => {
+            // The shear jump of the ground's inertia share, as for shears.
+            let share = if model.bridge.static_correction {
+                let of = |p: &Option<Box<crate::bridge::section::SectionProbe>>| {
+                    p.as_deref().map_or(0.0, |section| {
+                        model
+                            .bridge
+                            .ground_section_share(
+                                section,
+                                ground.total_mass / model.bridge.length,
+                                &ground.participation,
+                            )
+                            .shear
+                    })
+                };
+                of(right) - of(left)
+            } else {
+                0.0
+            };
+            (share, None)
+        }
         Probe::ContactForce { .. } | Probe::ContactGap { .. } => (0.0, None),
     })
 }

@@ -69,7 +69,7 @@ pub fn unit_of(quantity: Quantity) -> &'static str {
         Quantity::BridgeDisplacement | Quantity::ContactGap | Quantity::VehicleDisplacement => "m",
         Quantity::BridgeAcceleration | Quantity::VehicleAcceleration => "m/s^2",
         Quantity::BridgeMoment => "N*m",
-        Quantity::BridgeShear | Quantity::ContactForce => "N",
+        Quantity::BridgeShear | Quantity::BridgeReaction | Quantity::ContactForce => "N",
     }
 }
 

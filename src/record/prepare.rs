@@ -124,7 +124,7 @@ impl<'m> Recorder<'m> {
                     let x = record.x.unwrap_or(0.0);
                     let section = model
                         .bridge
-                        .section_probe(x)?
+                        .section_probe(x, record.side.unwrap_or_default())?
                         .expect("moments and shears on a plate were refused when resolving");
                     let shear = record.quantity == Quantity::BridgeShear;
                     let unit = if shear { "N" } else { "N*m" };
@@ -133,6 +133,27 @@ impl<'m> Recorder<'m> {
                         shear,
                     };
                     (probe, unit, lead)
+                }
+                Quantity::BridgeReaction => {
+                    let x = record.x.unwrap_or(0.0);
+                    let length = model.bridge.length;
+                    let probe_on = |side| -> Result<
+                        Option<Box<crate::bridge::section::SectionProbe>>,
+                        crate::bridge::BridgeError,
+                    > {
+                        Ok(model.bridge.section_probe(x, side)?.map(Box::new))
+                    };
+                    let right = if x < length * (1.0 - 1e-12) {
+                        probe_on(crate::scene::Side::Right)?
+                    } else {
+                        None
+                    };
+                    let left = if x > length * 1e-12 {
+                        probe_on(crate::scene::Side::Left)?
+                    } else {
+                        None
+                    };
+                    (Probe::Reaction { left, right, x }, "N", lead)
                 }
                 Quantity::ContactForce | Quantity::ContactGap => {
                     let wheel = record.wheel.map_or(0, |w| w - 1);
@@ -254,6 +275,7 @@ impl<'m> Recorder<'m> {
                         c.probe,
                         Probe::BridgeDisplacement { .. }
                             | Probe::Section { .. }
+                            | Probe::Reaction { .. }
                             | Probe::PlateMoment { .. }
                     )
                 }));

@@ -40,6 +40,14 @@ pub(super) enum Probe {
         section: Box<SectionProbe>,
         shear: bool,
     },
+    /// A beam support's vertical reaction at `x`, N: the shear on its right
+    /// (none at the exit) minus the shear on its left (none at the
+    /// entrance), plus the wheels standing exactly on it.
+    Reaction {
+        left: Option<Box<SectionProbe>>,
+        right: Option<Box<SectionProbe>>,
+        x: f64,
+    },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
     /// Flattened wheel index.

@@ -135,6 +135,7 @@ fn is_bridge_quantity(quantity: Quantity) -> bool {
             | Quantity::BridgeAcceleration
             | Quantity::BridgeMoment
             | Quantity::BridgeShear
+            | Quantity::BridgeReaction
     )
 }
 

@@ -18,6 +18,7 @@ fn axis_name(quantity: Quantity) -> &'static str {
         Quantity::BridgeAcceleration => "bridge acceleration",
         Quantity::BridgeMoment => "bending moment",
         Quantity::BridgeShear => "shear force",
+        Quantity::BridgeReaction => "support reaction",
         Quantity::ContactForce => "contact force",
         Quantity::ContactGap => "contact gap",
         Quantity::VehicleDisplacement => "vehicle displacement",

@@ -355,4 +355,11 @@ pub struct RecordRaw {
     #[serde(default)]
     #[schemars(extend("default" = "mx"))]
     pub component: Option<PlateMoment>,
+    /// Which side of `x` a beam's `bridge_shear` or `bridge_moment` is
+    /// taken on: `right` (the right-hand limit, the default) or `left`. At
+    /// a support the two shears differ by its reaction (`bridge_reaction`),
+    /// where a wheel stands by its force.
+    #[serde(default)]
+    #[schemars(extend("default" = "right"))]
+    pub side: Option<crate::scene::Side>,
 }

@@ -193,7 +193,30 @@ pub(crate) fn resolve_records(
                 | Quantity::BridgeAcceleration
                 | Quantity::BridgeMoment
                 | Quantity::BridgeShear
+                | Quantity::BridgeReaction
         );
+        if q == Quantity::BridgeReaction {
+            reaction_checks(r, &at, bridge, ck);
+        }
+        let side = match r.side {
+            Some(_) if !matches!(q, Quantity::BridgeShear | Quantity::BridgeMoment) => {
+                ck.error(
+                    &format!("{at}.side"),
+                    "`side` chooses the side of `x` a beam's `bridge_shear` or `bridge_moment` \
+                     is taken on; a support's reaction is `bridge_reaction`",
+                );
+                None
+            }
+            Some(_) if matches!(bridge, Some(Bridge::Plate(_)) | Some(Bridge::FeImport(_))) => {
+                ck.error(
+                    &format!("{at}.side"),
+                    "`side` is used by the shears and moments of a `type: beam` bridge",
+                );
+                None
+            }
+            Some(crate::scene::Side::Left) => Some(crate::scene::Side::Left),
+            _ => None,
+        };
         if q == Quantity::BridgeShear && matches!(bridge, Some(Bridge::Plate(_))) {
             ck.error(
                 &format!("{at}.quantity"),
@@ -516,7 +539,22 @@ pub(crate) fn resolve_records(
         out.push(Record {
             name: r.name.clone(),
             quantity: q,
-            x: r.x,
+            // A reaction is taken at the support itself (the file's x may
+            // be within a millimetre of it).
+            x: match (q, bridge) {
+                (Quantity::BridgeReaction, Some(Bridge::Beam(beam))) => r.x.map(|x| {
+                    support_positions(&beam.spans)
+                        .into_iter()
+                        .fold(x, |best, s| {
+                            if (s - x).abs() < (best - x).abs() {
+                                s
+                            } else {
+                                best
+                            }
+                        })
+                }),
+                _ => r.x,
+            },
             node: r.node,
             direction,
             y: if is_bridge && r.node.is_none() {
@@ -533,9 +571,48 @@ pub(crate) fn resolve_records(
             max_frequency,
             frame,
             component,
+            side,
         });
     }
     out
+}
+
+/// Positions of a beam's supports, m: the entrance, every pier, the exit.
+pub fn support_positions(spans: &[f64]) -> Vec<f64> {
+    let mut at = vec![0.0];
+    for span in spans {
+        at.push(at.last().copied().unwrap_or(0.0) + span);
+    }
+    at
+}
+
+/// A `bridge_reaction` needs a beam bridge and `x` at one of its supports
+/// (within a millimetre; the reaction is taken at the support itself).
+fn reaction_checks(r: &raw::RecordRaw, at: &str, bridge: Option<&Bridge>, ck: &mut Checker<'_>) {
+    match bridge {
+        None => {}
+        Some(Bridge::Beam(beam)) => {
+            let supports = support_positions(&beam.spans);
+            if let Some(x) = r.x
+                && !supports.iter().any(|s| (s - x).abs() <= 1e-3)
+            {
+                let listed: Vec<String> = supports.iter().map(|s| format!("{s}")).collect();
+                ck.error_with_help(
+                    &format!("{at}.x"),
+                    format!("x = {x} m is not a support of the bridge"),
+                    Some(format!(
+                        "a `bridge_reaction` is taken at a support: x is one of {} (m)",
+                        listed.join(", ")
+                    )),
+                );
+            }
+        }
+        Some(_) => ck.error(
+            &format!("{at}.quantity"),
+            "`bridge_reaction` is computed for `type: beam` bridges (the shear jump at a \
+             support); on a plate or an imported model record displacements and moments",
+        ),
+    }
 }
 
 /// Displacement at the middle of every span (on a plate, on every girder
@@ -560,6 +637,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 max_frequency: None,
                 frame: Frame::Relative,
                 component: None,
+                side: None,
             }),
             Bridge::Plate(plate) => {
                 for (g, &y) in plate.girder_lines.iter().enumerate() {
@@ -576,6 +654,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                         max_frequency: None,
                         frame: Frame::Relative,
                         component: None,
+                        side: None,
                     });
                 }
             }
@@ -600,6 +679,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                 max_frequency: None,
                 frame: Frame::Relative,
                 component: None,
+                side: None,
             });
             if contact.is_unilateral() && !matches!(vehicle, Vehicle::MovingForce(_)) {
                 out.push(Record {
@@ -615,6 +695,7 @@ fn default_records(bridge: &Bridge, vehicles: &[Vehicle], contact: &Contact) -> 
                     max_frequency: None,
                     frame: Frame::Relative,
                     component: None,
+                    side: None,
                 });
             }
         }

@@ -314,4 +314,8 @@ pub struct Record {
     /// A plate's moment per unit width (`bridge_moment` on a plate).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub component: Option<PlateMoment>,
+    /// The side of `x` a beam's shear or moment is taken on (`None`: the
+    /// right-hand limit; written only when the file asks for the left).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub side: Option<Side>,
 }

@@ -21,6 +21,12 @@ pub enum Quantity {
     /// upward forces left of the section; its right-hand limit where a wheel
     /// stands on the section (beams only).
     BridgeShear,
+    /// Vertical reaction of a beam bridge's support at `x` (the position of
+    /// an abutment or pier), N, positive upward on the deck: the jump of the
+    /// shear there plus a wheel standing exactly on it, the beam's inertia
+    /// included, so that the reactions balance the loads and the deck's
+    /// inertia at every step (beams only).
+    BridgeReaction,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,
     /// Gap between a wheel and the surface under it, m: positive when the wheel
@@ -46,6 +52,29 @@ pub enum HistoryFormat {
     Npy,
     /// Both files.
     Both,
+}
+
+/// Which side of a section a beam's shear or moment is taken on: they jump
+/// where a support or a wheel stands on the section.
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Default,
+    serde::Serialize,
+    serde::Deserialize,
+    schemars::JsonSchema,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Side {
+    /// The left-hand limit V(x⁻): the element left of the section; a wheel
+    /// exactly on it not yet passed.
+    Left,
+    /// The right-hand limit V(x⁺) (the default): the element right of it.
+    #[default]
+    Right,
 }
 
 /// Which moment per unit width.

@@ -198,7 +198,9 @@ pub fn record_direction(model: &Model, record: &crate::scene::Record) -> Option<
                 Direction::Ux => None,
             }
         }
-        Quantity::BridgeMoment | Quantity::BridgeShear => Some(ContactDirection::Vertical),
+        Quantity::BridgeMoment | Quantity::BridgeShear | Quantity::BridgeReaction => {
+            Some(ContactDirection::Vertical)
+        }
         Quantity::VehicleDisplacement | Quantity::VehicleAcceleration => {
             let name = record.dof.as_deref().unwrap_or("");
             if ["lateral", "yaw", "roll"].iter().any(|k| name.contains(k)) {

@@ -114,6 +114,7 @@ pub fn point_scenario(
         max_frequency: None,
         frame: Default::default(),
         component: None,
+        side: None,
     }];
     scenario
 }
