@@ -516,8 +516,15 @@ pub(crate) fn plan(
         .iter()
         .map(|v| v.speed().max(v.motion().speed_at(v.exit_time(length))))
         .fold(0.0, f64::max);
+    let before_features = ck.diagnostics.len();
     crate::scenario::surfaces::check_features(&surface, top_speed, time_step, ck);
     crate::scenario::surfaces::check_lateral_followers(&surface, &vehicles, ck);
+    // The surface's lengths once the grid's budgets and the features'
+    // step checks have had their say (a key they refused is not refused
+    // twice).
+    crate::scenario::surfaces::check_lengths(&surface, ck, &|ck, path| {
+        ck.blamed_since(before_features, path)
+    });
     let steps = longest_run / time_step;
     let cause = crate::scenario::long_run::LongRun {
         raw,

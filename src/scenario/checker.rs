@@ -160,6 +160,16 @@ impl<'a> Checker<'a> {
         self.diagnostics.push(diagnostic);
     }
 
+    /// Whether an error recorded since the first `since` diagnostics is at
+    /// the place of `path` (one message per key: a later, more general
+    /// check leaves a key a specific one refused).
+    pub(crate) fn blamed_since(&self, since: usize, path: &str) -> bool {
+        let loc = self.location(path);
+        self.diagnostics
+            .get(since..)
+            .is_some_and(|new| new.iter().any(|d| d.loc == loc))
+    }
+
     /// Records an error at `path` with a `help:` line (a suggestion).
     pub(crate) fn error_with_help(
         &mut self,

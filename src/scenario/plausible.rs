@@ -37,6 +37,16 @@
 //! | plate material density | 1 to 1e5 | kg/m³ |
 //! | explicit time step | 1e-9 to 1 | s |
 //! | Rayleigh damping frequency | 1e-3 to 1e5 | Hz |
+//! | surface elevation or alignment (amplitude, shape height, profile value) | −0.5 to 0.5 | m |
+//! | surface length (wavelength, band, shape length, run-in, sampling length) | 1e-3 to 1e4 | m |
+//! | power-law roughness coefficient A_r | 0 to 0.1 | m³/cycle |
+//!
+//! The surface ranges ([`SURFACE_ELEVATION`], [`SURFACE_LENGTH`],
+//! [`ROUGHNESS_COEFFICIENT`]) come from the standards that classify road
+//! and track irregularities (ISO 8608 for roads, EN 13848 for track
+//! geometry): a surface is the irregularity about the road's or track's
+//! design line, millimetres to centimetres high over wavelengths of
+//! millimetres to a few hundred metres, never metres high.
 
 use super::checker::Checker;
 use crate::scene::{Bridge, Contact, Rigidity, Vehicle};
@@ -99,6 +109,90 @@ pub const TIME_STEP: (f64, f64) = (1e-9, 1.0);
 /// to 100 kHz (far above any mode a vehicle excites; laboratory models
 /// reach a few kHz).
 pub const RAYLEIGH_FREQUENCY: (f64, f64) = (1e-3, 1e5);
+
+/// The largest elevation (or lateral offset) of a surface irregularity
+/// about its design line, m: a harmonic's amplitude, a bump's height, a
+/// dip's depth, a ramp's or step's rise, a point of a piecewise-linear or
+/// measured profile. Half a metre is some twenty times what EN 13848-5
+/// tolerates on any track before immediate action (longitudinal level and
+/// alignment of about ±10–30 mm mean to peak over the D1 band, 3–25 m), five
+/// times the tallest road hump (75–100 mm), and the standard deviation of
+/// ISO 8608's roughest class, H, over its whole band of 0.1–100 m (most of
+/// it in waves longer than 10 m). A profile of metres is a terrain or an
+/// error of units, not a surface.
+pub const SURFACE_ELEVATION: f64 = 0.5;
+/// A length along a surface, m: a harmonic's wavelength, a spectrum's
+/// band, a random road's sampling length, the length of a bump, dip or
+/// ramp, a run-in. A millimetre is the finest road texture (ISO 13473's
+/// macrotexture, 0.5–50 mm), below the shortest rail corrugation (some
+/// 25 mm); 10 km is fifty times the longest wavelength EN 13848-1 measures
+/// (its D3 band, 70–200 m) and a hundred times ISO 8608's longest (100 m).
+pub const SURFACE_LENGTH: (f64, f64) = (1e-3, 1e4);
+/// A power-law road's roughness coefficient A_r, m³/cycle (the spectrum
+/// A_r (Ω/Ω₀)⁻², Ω₀ = 1/2π cycle/m): 0.1 is ISO 8608's class H, the
+/// roughest it names (G_d(n₀) above 0.131 m³ at n₀ = 0.1 cycle/m, which is
+/// A_r = G_d(n₀)(2π n₀)² above 0.052 m³/cycle here), fifty times the plate
+/// paper's very poor class (at most 2.048e-3). A road in good condition is
+/// 16e-6.
+pub const ROUGHNESS_COEFFICIENT: (f64, f64) = (0.0, 0.1);
+
+/// Where the surface ranges come from, said in their messages.
+pub(crate) const SURFACE_SOURCE: &str = "a road's or track's irregularity about its design \
+     line is millimetres to centimetres high: ISO 8608, EN 13848-5";
+/// Where the surface length range comes from, said in its messages.
+pub(crate) const SURFACE_LENGTH_SOURCE: &str = "road and track irregularities have wavelengths \
+     from millimetres, texture and rail corrugation, to a few hundred metres: ISO 8608 \
+     classifies roads over 0.1–100 m, EN 13848-1's longest band, D3, ends at 200 m";
+
+/// [`within_because`] with a `help:` line saying what to type instead.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn within_help(
+    ck: &mut Checker<'_>,
+    path: &str,
+    what: &str,
+    value: f64,
+    (lo, hi): (f64, f64),
+    unit: &str,
+    source: &str,
+    help: String,
+) {
+    let outside = value.is_nan() || value > hi || (value > 0.0 && value < lo);
+    if outside {
+        let (value, lo, hi) = (number(value), number(lo), number(hi));
+        ck.error_with_help(
+            path,
+            format!(
+                "{what} of {value} {unit} is outside the physically plausible range {lo} to {hi} {unit} ({source})"
+            ),
+            Some(help),
+        );
+    }
+}
+
+/// A surface elevation (`value`, m) within ±[`SURFACE_ELEVATION`] at
+/// `path`, or within 0 to [`SURFACE_ELEVATION`] unless `signed` (a negative
+/// value is then the sign checks'); `help` says what to type instead.
+pub(crate) fn surface_elevation(
+    ck: &mut Checker<'_>,
+    path: &str,
+    what: &str,
+    (value, signed): (f64, bool),
+    help: String,
+) {
+    let hi = SURFACE_ELEVATION;
+    if value.abs() <= hi || (!signed && value < 0.0) {
+        return;
+    }
+    let lo = if signed { -hi } else { 0.0 };
+    ck.error_with_help(
+        path,
+        format!(
+            "{what} of {} m is outside the physically plausible range {lo} to {hi} m ({SURFACE_SOURCE})",
+            number(value),
+        ),
+        Some(help),
+    );
+}
 
 /// [`within`] with where the range comes from (`source`, said after it).
 pub(crate) fn within_because(

@@ -15,7 +15,9 @@ use crate::scene::{Rails, RoughnessClass};
 use crate::scene::{Sampling, Surface, Vehicle};
 
 mod measured;
+mod plausible;
 mod reach;
+pub(crate) use self::plausible::check_lengths;
 pub(crate) use self::reach::*;
 
 /// Shortest wavelength the default series resolves, m.
@@ -116,8 +118,23 @@ pub(crate) fn resolve_random(
     }
 }
 
-/// Resolves the `surface` section (`None`: smooth). `bridge_length` in m.
+/// Resolves the `surface` section (`None`: smooth) and checks its
+/// elevations ([`plausible::check_elevations`]; its lengths are checked
+/// once the grid and the time step are: [`check_lengths`]). `bridge_length`
+/// in m.
 pub(crate) fn resolve_surface(
+    raw: Option<&raw::SurfaceRaw>,
+    bridge_length: f64,
+    budget: &Budget,
+    ck: &mut Checker<'_>,
+) -> Surface {
+    let surface = resolve_kind(raw, bridge_length, budget, ck);
+    plausible::check_elevations(&surface, ck);
+    surface
+}
+
+/// The surface of the section as written, defaults filled in.
+fn resolve_kind(
     raw: Option<&raw::SurfaceRaw>,
     bridge_length: f64,
     budget: &Budget,

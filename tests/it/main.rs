@@ -50,6 +50,7 @@ mod monte_carlo;
 mod moreau_jean;
 mod multi_wheel;
 mod multi_wheel_lift;
+mod nonsense;
 mod one_round;
 mod output;
 mod physics;

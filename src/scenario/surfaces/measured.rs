@@ -11,7 +11,12 @@ use super::super::budget::Budget;
 use super::super::checker::Checker;
 use super::super::data_files::{self, DataFile};
 use crate::scenario::ground::not_a_number;
+use crate::scenario::plausible::{SURFACE_ELEVATION, SURFACE_SOURCE, number};
 use crate::scene::MeasuredProfile;
+
+/// Why a profile's text is refused: its 1-based line, the message and a
+/// `help:` line if there is something to type instead.
+pub(super) type ParseError = (usize, String, Option<String>);
 
 /// Fewest bytes a data row takes (`0,0` and a line break).
 const MIN_ROW_BYTES: f64 = 4.0;
@@ -46,15 +51,17 @@ pub(super) fn read(
     };
     match parse(&text) {
         Ok(p) => Some(p),
-        Err((line, message)) => {
-            ck.error(AT, format!("{shown}:{line}: {message}"));
+        Err((line, message, help)) => {
+            ck.error_with_help(AT, format!("{shown}:{line}: {message}"), help);
             None
         }
     }
 }
 
-/// Parses the CSV text; an error is (1-based line, message).
-pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
+/// Parses the CSV text; the values must be finite and within
+/// ±[`SURFACE_ELEVATION`] (a profile is the irregularity about the design
+/// line, [`crate::scenario::plausible`]).
+pub(super) fn parse(text: &str) -> Result<MeasuredProfile, ParseError> {
     let rows = crate::text_table::count(text);
     let mut x = Vec::with_capacity(rows);
     let mut left = Vec::with_capacity(rows);
@@ -74,6 +81,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
                     "a row has 2 columns (x, elevation), 3 (x, left, right) or 5 (x, left, \
                      right, left_lateral, right_lateral), this one has {count}"
                 ),
+                None,
             ));
         }
         match columns {
@@ -91,6 +99,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
                 return Err((
                     n,
                     format!("this row has {count} columns, the rows above have {c}"),
+                    None,
                 ));
             }
             Some(_) => {}
@@ -99,9 +108,28 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
         for (k, field) in fields.iter().enumerate() {
             let v: f64 = field
                 .parse()
-                .map_err(|_| (n, not_a_number(k, field, !x.is_empty(), "")))?;
+                .map_err(|_| (n, not_a_number(k, field, !x.is_empty(), ""), None))?;
             if !v.is_finite() {
-                return Err((n, not_a_number(k, field, true, "finite ")));
+                return Err((n, not_a_number(k, field, true, "finite "), None));
+            }
+            if k > 0 && v.abs() > SURFACE_ELEVATION {
+                return Err((
+                    n,
+                    format!(
+                        "column {}: {} of {} m is outside the physically plausible range {} to \
+                         {} m ({SURFACE_SOURCE})",
+                        k + 1,
+                        column_name(count, k),
+                        number(v),
+                        -SURFACE_ELEVATION,
+                        SURFACE_ELEVATION
+                    ),
+                    Some(
+                        "the profile is the irregularity about the design line, in metres \
+                         (20 mm is 0.02): remove its grade and offset, or convert from mm"
+                            .into(),
+                    ),
+                ));
             }
             values[k] = v;
         }
@@ -114,6 +142,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
                     "column 1: x = {} does not exceed the previous row's {prev} (x must increase strictly)",
                     values[0]
                 ),
+                None,
             ));
         }
         x.push(values[0]);
@@ -133,6 +162,7 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
                 "a measured profile needs at least two rows, this file has {}",
                 x.len()
             ),
+            None,
         ));
     }
     Ok(MeasuredProfile {
@@ -141,6 +171,17 @@ pub(super) fn parse(text: &str) -> Result<MeasuredProfile, (usize, String)> {
         right: (columns >= Some(3)).then_some(right),
         lateral: (columns == Some(5)).then_some((left_lateral, right_lateral)),
     })
+}
+
+/// What column `k` (0-based, not x) of a `count`-column profile holds.
+fn column_name(count: usize, k: usize) -> &'static str {
+    match (count, k) {
+        (2, _) => "an elevation",
+        (_, 1) => "the left rail's elevation",
+        (_, 2) => "the right rail's elevation",
+        (_, 3) => "the left rail's lateral position (its deviation from the design line)",
+        _ => "the right rail's lateral position (its deviation from the design line)",
+    }
 }
 
 #[cfg(test)]
@@ -176,14 +217,14 @@ mod tests {
         assert_eq!(parse("0,0\n0,1\n").unwrap_err().0, 2);
         assert_eq!(parse("0,0\n1,1,1\n").unwrap_err().0, 2);
         // Four columns: neither per-rail vertical nor the recording car's five.
-        let (line, message) = parse("0,0,0,0\n").unwrap_err();
+        let (line, message, _) = parse("0,0,0,0\n").unwrap_err();
         assert_eq!(line, 1);
         assert!(
             message.contains("5 (x, left, right, left_lateral, right_lateral)"),
             "{message}"
         );
         // A bad lateral value is named by its column.
-        let (line, message) = parse("0,0,0,0,0\n1,0,0,0,x\n").unwrap_err();
+        let (line, message, _) = parse("0,0,0,0,0\n1,0,0,0,x\n").unwrap_err();
         assert_eq!(line, 2);
         assert!(message.contains("column 5"), "{message}");
         assert_eq!(parse("0,0,0,0,0\n1,0,0,0\n").unwrap_err().0, 2);
