@@ -544,14 +544,20 @@ pub(crate) fn plan(
     let what = format!(
         "time steps of {time_step:.3e} s over the {longest_run:.4e} s run (the last vehicle's exit plus free vibration)"
     );
-    if budget.check_because(ck, &steps_path, "steps", &what, steps, &cause.hint) && points > 1.0 {
-        budget.check(
-            ck,
-            "study",
-            "study_steps",
-            &format!("time steps over the study's {points} runs"),
-            steps * points,
-        );
+    if budget.check_because(ck, &steps_path, "steps", &what, steps, &cause.hint) {
+        if points > 1.0 {
+            budget.check(
+                ck,
+                "study",
+                "study_steps",
+                &format!("time steps over the study's {points} runs"),
+                steps * points,
+            );
+        }
+        let work = budget::RunWork::of(steps, modal.frequencies().len(), &slow);
+        let (path, hint) =
+            run_work_cause(&work, budget.limit_of("run_work"), &slow, &steps_path, ck);
+        budget.check_because(ck, &path, "run_work", &work.what(), work.work(), &hint);
     }
 
     let method = resolve_method(solver_raw.method, &contact, ck);
@@ -693,4 +699,74 @@ fn raised_acceleration_record(
             && own > default_filter * 1.5)
             .then(|| (format!("record[{i}].max_frequency"), own, default_filter))
     })
+}
+
+/// Where to blame a run whose work ([`budget::RunWork`]) exceeds `limit`,
+/// and what would fit: the vehicle with the most wheels when their contact
+/// system makes most of a step, else the bridge's modes; either way also
+/// the steps that fit (`steps_path`, where the run's length comes from,
+/// is blamed for the modes the file leaves automatic).
+fn run_work_cause(
+    work: &budget::RunWork,
+    limit: f64,
+    vehicles: &[Vehicle],
+    steps_path: &str,
+    ck: &Checker<'_>,
+) -> (String, String) {
+    let steps = work.steps_fitting(limit);
+    let shorter = format!("or keep them and make the run at most {steps} steps long");
+    if work.wheels_dominate() {
+        let wheels_of = |v: &Vehicle| match v {
+            Vehicle::MovingForce(_) => 0,
+            Vehicle::Oscillator(_) => 1,
+            Vehicle::H20Truck(_) | Vehicle::RailCar(_) => 4,
+            Vehicle::Train(t) => 4 * t.cars.len(),
+            Vehicle::Train3d(t) => 12 * t.cars.len(),
+        };
+        let (i, most) = vehicles
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (i, wheels_of(v)))
+            .fold((0, 0), |a, b| if b.1 > a.1 { b } else { a });
+        let at = format!("vehicles[{i}]");
+        let path = [format!("{at}.count"), format!("{at}.cars")]
+            .into_iter()
+            .find(|p| ck.has(p))
+            .unwrap_or(at);
+        let fitting = work.wheels_fitting(limit);
+        let per_car = match vehicles.get(i) {
+            Some(Vehicle::Train(_)) => Some(4.0),
+            Some(Vehicle::Train3d(_)) => Some(12.0),
+            _ => None,
+        };
+        let cars = per_car.map_or(String::new(), |w| {
+            let others = work.coupled_wheels - most as f64;
+            let cars = ((fitting - others) / w).floor().max(0.0);
+            if path.ends_with(".count") {
+                format!(" (this train: `count: {cars}`)")
+            } else {
+                format!(" (this train: at most {cars} cars)")
+            }
+        });
+        let hint = format!(
+            "vehicle {} has {most} of the {} wheels; over these {} steps at most {fitting} \
+             wheels fit{cars}, {shorter}",
+            i + 1,
+            work.coupled_wheels,
+            work.steps.ceil(),
+        );
+        return (path, hint);
+    }
+    let path = ["bridge.modes.count", "bridge.modes"]
+        .into_iter()
+        .find(|p| ck.has(p))
+        .unwrap_or(steps_path)
+        .to_owned();
+    let modes = work.modes_fitting(limit);
+    let hint = format!(
+        "over these {} steps at most {modes} modes fit (`bridge.modes: {{count: {modes}}}`), \
+         {shorter}",
+        work.steps.ceil(),
+    );
+    (path, hint)
 }

@@ -49,6 +49,7 @@ impl Default for Limits {
             eigen_work: 2e9,
             steps: 1e7,
             study_steps: 2e8,
+            run_work: 2e9,
             wheels: 500.0,
             records: 500.0,
             study_points: 10_000.0,
@@ -95,6 +96,7 @@ impl Limits {
             eigen_work: pick("eigen_work", raw.eigen_work, d.eigen_work),
             steps: pick("steps", raw.steps, d.steps),
             study_steps: pick("study_steps", raw.study_steps, d.study_steps),
+            run_work: pick("run_work", raw.run_work, d.run_work),
             wheels: pick("wheels", raw.wheels, d.wheels),
             records: pick("records", raw.records, d.records),
             study_points: pick("study_points", raw.study_points, d.study_points),
@@ -296,12 +298,13 @@ impl Budget {
 
 impl Limits {
     /// Every key of the `limits` section.
-    const KEYS: [&'static str; 14] = [
+    const KEYS: [&'static str; 15] = [
         "dofs",
         "modes",
         "eigen_work",
         "steps",
         "study_steps",
+        "run_work",
         "wheels",
         "records",
         "study_points",
@@ -330,6 +333,7 @@ impl Limits {
             "eigen_work" => &mut self.eigen_work,
             "steps" => &mut self.steps,
             "study_steps" => &mut self.study_steps,
+            "run_work" => &mut self.run_work,
             "wheels" => &mut self.wheels,
             "records" => &mut self.records,
             "study_points" => &mut self.study_points,
@@ -340,6 +344,147 @@ impl Limits {
             "import_entries" => &mut self.import_entries,
             _ => &mut self.output_bytes,
         }
+    }
+}
+
+/// Coupled wheels whose contact system costs as much per step as their
+/// wheel–wheel products: the system's dense solve, w³/3 flops, against the
+/// condensation's w² products of some 45 flops each (fitted on 20–160
+/// wheels of rail-car trains, below).
+const CONTACT_CUBE_WHEELS: f64 = 135.0;
+/// How much less a moving-force axle costs per mode and step than a
+/// coupled wheel (0.6 ns against about 31 ns measured): it is a load on
+/// the modes, with no contact system.
+const MOVING_FORCE_AXLE_WEIGHT: f64 = 1.0 / 50.0;
+
+/// The work of one run, in units of about 30 ns on this project's 2-core
+/// machine: per time step, coupled wheels × (modes + w(1 + w/135)) for the
+/// w coupled wheels of every vehicle with DOFs (they share one dense
+/// contact system per step), plus moving-force axles × modes / 50.
+/// Measured with `vbi run` (permanent contact, the dearest; elastic, Hertz
+/// and rigid contact cost a fifth to a half of it) on a 25 m beam: a train
+/// of 5, 10, 20 and 40 rail cars (20–160 wheels) with 10 modes took 24, 81,
+/// 332 and 1,841 µs a step, 36, 33, 30 and 32 ns a unit; 10 and 20 cars
+/// with 100 modes 196 and 555 µs (32 and 31 ns); one oscillator with 400
+/// modes 7.2 µs (18 ns); seven 3D cars (84 wheels) 485 µs (39 ns); 200
+/// moving-force axles with 100 modes 15.6 µs. So the default limit of 2e9
+/// is about a minute; a train of 20 cars over 17,000 steps (0.33e9) ran in
+/// 5.8 s, one of 125 cars (4.4e11) would run for hours.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RunWork {
+    pub steps: f64,
+    pub modes: f64,
+    /// Wheels of vehicles with DOFs (oscillators, trucks, rail cars, trains).
+    pub coupled_wheels: f64,
+    /// Axles of moving forces.
+    pub axles: f64,
+}
+
+impl RunWork {
+    pub(crate) fn of(steps: f64, modes: usize, vehicles: &[crate::scene::Vehicle]) -> Self {
+        use crate::scene::Vehicle as V;
+        let (mut coupled_wheels, mut axles) = (0.0, 0.0);
+        for v in vehicles {
+            match v {
+                V::MovingForce(m) => axles += m.loads.len() as f64,
+                V::Oscillator(_) => coupled_wheels += 1.0,
+                V::H20Truck(_) | V::RailCar(_) => coupled_wheels += 4.0,
+                V::Train(t) => coupled_wheels += 4.0 * t.cars.len() as f64,
+                V::Train3d(t) => coupled_wheels += 12.0 * t.cars.len() as f64,
+            }
+        }
+        RunWork {
+            steps,
+            modes: modes as f64,
+            coupled_wheels,
+            axles,
+        }
+    }
+
+    /// The contact system's share of a step per coupled wheel.
+    fn contact(wheels: f64) -> f64 {
+        wheels * (1.0 + wheels / CONTACT_CUBE_WHEELS)
+    }
+
+    /// Work of one step.
+    fn per_step(&self, coupled_wheels: f64, modes: f64) -> f64 {
+        coupled_wheels * (modes + Self::contact(coupled_wheels))
+            + self.axles * modes * MOVING_FORCE_AXLE_WEIGHT
+    }
+
+    /// The work of the run.
+    pub(crate) fn work(&self) -> f64 {
+        self.steps * self.per_step(self.coupled_wheels, self.modes)
+    }
+
+    /// The product and its factors, for a message.
+    pub(crate) fn what(&self) -> String {
+        let mut terms = Vec::new();
+        if self.coupled_wheels > 0.0 {
+            terms.push(format!(
+                "{} wheels × ({} modes + {} for their contact system, w(1 + w/{CONTACT_CUBE_WHEELS}))",
+                count(self.coupled_wheels),
+                count(self.modes),
+                count(Self::contact(self.coupled_wheels).round())
+            ));
+        }
+        if self.axles > 0.0 {
+            terms.push(format!(
+                "{} moving-force axles × {} modes / 50",
+                count(self.axles),
+                count(self.modes)
+            ));
+        }
+        format!(
+            "work of the run (time steps × wheels × (modes + the wheels' contact system), about \
+             30 ns a unit): {} steps × ({})",
+            count(self.steps),
+            terms.join(" + ")
+        )
+    }
+
+    /// The most coupled wheels whose work fits `limit` with these steps and
+    /// modes (0 if none does).
+    pub(crate) fn wheels_fitting(&self, limit: f64) -> f64 {
+        let fits = |w: f64| self.steps * self.per_step(w, self.modes) <= limit;
+        let (mut lo, mut hi) = (0.0f64, self.coupled_wheels.max(1.0));
+        if !fits(lo) {
+            return 0.0;
+        }
+        while hi - lo > 1.0 {
+            let mid = ((lo + hi) / 2.0).floor();
+            if fits(mid) { lo = mid } else { hi = mid }
+        }
+        lo
+    }
+
+    /// The most modes that fit `limit` with these steps and wheels (0 if
+    /// none does).
+    pub(crate) fn modes_fitting(&self, limit: f64) -> f64 {
+        let per_mode = self.coupled_wheels + self.axles * MOVING_FORCE_AXLE_WEIGHT;
+        let fixed = self.coupled_wheels * Self::contact(self.coupled_wheels);
+        if per_mode <= 0.0 || !(self.steps > 0.0) {
+            return self.modes;
+        }
+        ((limit / self.steps - fixed) / per_mode).floor().max(0.0)
+    }
+
+    /// The most steps that fit `limit`.
+    pub(crate) fn steps_fitting(&self, limit: f64) -> f64 {
+        let per = self.per_step(self.coupled_wheels, self.modes);
+        if per > 0.0 {
+            (limit / per).floor()
+        } else {
+            self.steps
+        }
+    }
+
+    /// Whether the contact system, not the modes, makes most of a step.
+    pub(crate) fn wheels_dominate(&self) -> bool {
+        self.coupled_wheels > 1.0
+            && self.coupled_wheels * Self::contact(self.coupled_wheels)
+                > self.coupled_wheels * self.modes
+                    + self.axles * self.modes * MOVING_FORCE_AXLE_WEIGHT
     }
 }
 

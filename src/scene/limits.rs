@@ -18,6 +18,9 @@ pub struct Limits {
     pub steps: f64,
     /// Time steps over all runs of a study.
     pub study_steps: f64,
+    /// Work of one run: time steps × wheels × (modes + the wheels' contact
+    /// system), [`crate::scenario::budget::run_work`].
+    pub run_work: f64,
     /// Wheels over all vehicles.
     pub wheels: f64,
     /// Recorded quantities.

@@ -793,6 +793,52 @@ case("steps-car-spacing", "budget",
      scene(vehicles="  - {type: train, speed: 20, count: 3, car_spacing: @@1.0e7}\n"),
      "shorten it")
 
+# Issue 39.5: a YAML tag whose node starts on the next line (a block
+# collection) was located a line off; the tag itself is blamed.
+case("syntax-tag-block-mapping", "rejected", "a tag on a mapping value whose block mapping starts the next line",
+     scene(bridge=BEAM.replace("bridge:\n", "bridge: @@!custom\n")), "tags are not supported")
+case("syntax-tag-block-sequence", "rejected", "a tag on a block sequence starting the next line",
+     scene(extra="record: @@!custom\n  - {name: m, quantity: bridge_displacement, x: 12.5}\n"),
+     "tags are not supported")
+case("syntax-tag-sequence-item", "rejected", "a python object tag on a sequence item whose mapping starts the next line",
+     scene(vehicles="  - @@!!python/object:os.system\n" + OSC.replace("  - type", "    type")),
+     "tags are not supported")
+case("syntax-tag-key", "rejected", "a tag on a key",
+     scene(bridge=BEAM.replace("  spans:", "  @@!custom spans:")), "tags are not supported")
+case("syntax-tag-comment-anchor", "rejected", "a tag after an anchor, with a comment and a blank line before the mapping",
+     scene(bridge=BEAM.replace("bridge:\n", "bridge: &b @@!custom  # note\n\n")), "tags are not supported")
+case("syntax-tag-document", "rejected", "a tag on the document's root mapping",
+     "@@!custom\n" + scene(), "tags are not supported")
+# Issue 39.5: surfaces of metres ran (a harmonic of 10 km: mid-span −4,758 m).
+for slug, surface, message in [
+    ("harmonic-amplitude-10km", "{type: harmonic, amplitude: @@10 km, wavelength: 5}", "physically plausible range 0 to 0.5 m"),
+    ("harmonic-lateral-amplitude", "{type: harmonic, amplitude: @@0.6, wavelength: 5, direction: lateral}", "alignment amplitude"),
+    ("harmonic-wavelength-20km", "{type: harmonic, amplitude: 0.001, wavelength: @@20 km}", "0.001 to 10000 m"),
+    ("bump-height-2m", "{type: bump, start: 2, length: 1, height: @@2}", "a bump height of 2 m"),
+    ("bump-length-20km", "{type: bump, start: 2, length: @@2.0e4, height: 0.01}", "a bump length"),
+    ("dip-depth-1e300", "{type: dip, start: 2, length: 1, depth: @@1e300}", "a dip depth"),
+    ("ramp-rise-minus-3m", "{type: ramp, start: 2, length: 1, height: @@-3}", "-0.5 to 0.5 m"),
+    ("step-height-1e308", "{type: step, position: 2, height: @@1e308}", "a step's height"),
+    ("piecewise-point-2m", "{type: piecewise_linear, points: [[0, 0], @@[5, 2], [8, 0]]}", "point 2's elevation"),
+    ("random-coefficient-15", "{type: random, coefficient: @@15, seed: 1}", "roughness coefficient"),
+    ("random-sampling-20km", "{type: random, class: good, sampling_length: @@2.0e4, terms: 100}", "a sampling length"),
+    ("german-band-50km", "{type: german, interference: low, longest_wavelength: @@5.0e4}", "a longest wavelength"),
+    ("fra-run-in-20km", "{type: fra, class: 5, run_in: @@2.0e4}", "a run-in"),
+    ("measured-metres", "{type: measured, file: @@profile-metres.csv}", "profile-metres.csv:4: column 2"),
+    ("measured-lateral-metres", "{type: measured, file: @@profile-lateral.csv}", "profile-lateral.csv:3: column 4"),
+]:
+    case("plausible-surface-" + slug, "rejected", "a surface of metres: " + slug.replace("-", " "),
+         scene(extra="surface: " + surface + "\n"), message)
+# Issue 39.5: 125 rail cars passed `check` and ran for hours: the run's
+# work (steps × wheels × (modes + contact system)) is budgeted at the count.
+case("size-run-work-125-cars", "budget", "a train of 125 rail cars (500 wheels over 375,000 steps)",
+     scene(vehicles="  - {type: train, speed: 30, count: @@125, car_spacing: 25}\n",
+           extra="record: [{name: m, quantity: bridge_displacement, x: 12.5}]\n"),
+     "limits.run_work")
+side_files["profile-metres.csv"] = "x,elevation\n-50,0\n0,0.001\n10,3.0\n200,0\n"
+side_files["profile-lateral.csv"] = ("x,left,right,left_lateral,right_lateral\n-50,0,0,0,0\n"
+                                     "10,0,0,700,0\n200,0,0,0,0\n")
+
 
 def locate(text):
     """Removes the `@@` marker; returns (text, line, col) of the marker."""

@@ -276,3 +276,114 @@ fn a_measured_profile_of_metres_is_refused_at_its_row() {
         );
     }
 }
+
+/// `syn-tag-custom`: a tag was located where saphyr marks the node after
+/// it, for a block collection the next line. Each tag is blamed at its own
+/// `!`, whatever follows it: a scalar, a flow or block collection, a key,
+/// a comment, an anchor, a lone-CR line break.
+#[test]
+fn a_yaml_tag_is_located_at_the_tag_itself() {
+    use vbi::scenario::yaml::parse;
+    let beam_after = |tagged: &str| {
+        format!(
+            "name: t\nbridge: {tagged}\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  \
+             mass_per_length: 2303.0\nvehicles:\n{OSC}"
+        )
+    };
+    let cases: Vec<(String, (usize, usize))> = vec![
+        // On a mapping value whose block mapping starts on the next line.
+        (beam_after("!custom"), (2, 9)),
+        (
+            beam_after("  !custom   # a comment\n  # another\n"),
+            (2, 11),
+        ),
+        (beam_after("&b !!python/object:x"), (2, 12)),
+        // On a sequence item whose mapping starts on the next line.
+        (
+            format!(
+                "name: t\n{BEAM}vehicles:\n  - !!python/object:foo\n    type: oscillator\n    \
+                 sprung_mass: 5750.0\n    stiffness: 1.595e6\n    speed: 27.7\n"
+            ),
+            (8, 5),
+        ),
+        // On a block sequence starting the next line.
+        (format!("name: t\n{BEAM}vehicles: !custom\n{OSC}"), (7, 11)),
+        // On a scalar item, a flow sequence, a key, the document.
+        (
+            format!(
+                "name: t\nbridge:\n  type: beam\n  spans:\n    - !custom 25.0\n  \
+                 bending_stiffness: 8.323e9\n  mass_per_length: 2303.0\nvehicles:\n{OSC}"
+            ),
+            (5, 7),
+        ),
+        (
+            scene("").replace("spans: [25.0]", "spans: !foo [25.0]"),
+            (4, 10),
+        ),
+        (
+            scene("").replace("spans: [25.0]", "!custom spans: [25.0]"),
+            (4, 3),
+        ),
+        (format!("!custom\n{}", scene("")), (1, 1)),
+        ("a: [1, !foo\n   2]\n".into(), (1, 8)),
+        ("a: 1\rb: !x\r  c: 1\r".into(), (2, 4)),
+    ];
+    for (text, (line, col)) in cases {
+        let e = parse(&text).expect_err(&text);
+        assert_eq!(
+            (e.loc.line, e.loc.col, e.message.as_str()),
+            (line, col, "YAML tags are not supported"),
+            "{text}"
+        );
+        // The loader reports it at the same place.
+        let d = diagnostics(&text, LoadOptions::default());
+        assert_eq!((d[0].loc.line, d[0].loc.col), (line, col), "{}", shown(&d));
+    }
+}
+
+/// `tr-count-125-allowed`: 125 rail cars passed `check` and the run went
+/// on for hours (wheels × steps × modes was budgeted nowhere). The run's
+/// work is refused at the train's `count`, naming the product, its
+/// factors, the limit and what fits; `--allow-large` lifts it.
+#[test]
+fn the_work_of_a_run_is_budgeted_at_its_cause() {
+    let train = |count: usize| {
+        format!(
+            "name: t\n{BEAM}vehicles:\n  - {{type: train, speed: 30, count: {count}, car_spacing: 25}}\n\
+             record: [{{name: m, quantity: bridge_displacement, x: 12.5}}]\n"
+        )
+    };
+    refused_at(
+        &train(125),
+        "8:37",
+        &[
+            "work of the run",
+            "steps × (500 wheels × (5 modes + 2352 for their contact system",
+            "`limits.run_work`",
+            "`limits: {run_work: 5.000e11}`",
+            "--allow-large",
+            "vehicle 1 has 500 of the 500 wheels",
+            "(this train: `count: 14`)",
+        ],
+        &[],
+    );
+    load_str_with(&train(125), "t.yaml", allow_large()).unwrap_or_else(|e| panic!("{e}"));
+    // Ten cars (6e7, about 2 s) pass.
+    load_str_with(&train(10), "t.yaml", LoadOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    // Where the modes make the work, they are blamed, with the count that fits.
+    let modes = format!(
+        "name: t\n{BEAM}  elements_per_span: 400\n  modes: {{count: 400}}\nvehicles:\n{OSC}\
+         record: [{{name: m, quantity: bridge_displacement, x: 12.5}}]\n\
+         solver: {{time_step: 1.0e-5, free_vibration: 60}}\n"
+    );
+    refused_at(
+        &modes,
+        "8:18",
+        &[
+            "1 wheels × (400 modes + 1 for their contact system",
+            "`limits.run_work`",
+            "modes fit (`bridge.modes: {count: ",
+        ],
+        &[],
+    );
+}

@@ -28,6 +28,12 @@ pub struct LimitsRaw {
     /// Most time steps summed over all runs of a study. Default 2e8.
     #[serde(default)]
     pub study_steps: Option<f64>,
+    /// Most work of one run: time steps × coupled wheels × (modes + the
+    /// wheels' contact system, w(1 + w/135) for w wheels), plus moving-force
+    /// axles × modes / 50 a step. A unit is about 30 ns on a 2-core machine
+    /// (permanent contact, the dearest); default 2e9, about a minute.
+    #[serde(default)]
+    pub run_work: Option<f64>,
     /// Most wheels (axles and wheel contacts) over all vehicles. Default 500.
     #[serde(default)]
     pub wheels: Option<f64>,

@@ -3,34 +3,93 @@
 
 use super::Location;
 
-/// The text of line `line` (1-based), without its break.
+/// The text of line `line` (1-based), without its break; lines end at
+/// `\n`, `\r\n` or a lone `\r`, as the scanner counts them.
 fn line_text(source: &str, line: usize) -> Option<&str> {
-    source
-        .split('\n')
-        .nth(line.checked_sub(1)?)
-        .map(|l| l.trim_end_matches('\r'))
+    lines(source).nth(line.checked_sub(1)?)
 }
 
-/// Where the tag of a node written at `loc` starts: the last `!` before it
-/// on the same line (the tag and the node are on one line in a scenario).
+/// The lines of `source`, split at `\n`, `\r\n` and lone `\r`.
+fn lines(source: &str) -> impl Iterator<Item = &str> {
+    source
+        .split('\n')
+        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'))
+}
+
+/// Where the tag of a node written at `loc` starts. saphyr marks a tagged
+/// node where its content starts, which for a block collection is the
+/// line after the tag (`bridge: !custom` then `  type: beam`, or `- !tag`
+/// then the item's first key): from the node back, over white space, line
+/// breaks, comments and an anchor, the token before it is the tag. Without
+/// one there (it cannot be found), `loc`.
 pub(super) fn tag_start(source: &str, loc: Location) -> Location {
-    let Some(text) = line_text(source, loc.line) else {
+    let lines: Vec<&str> = lines(source).take(loc.line).collect();
+    if lines.len() < loc.line {
         return loc;
-    };
-    let before: Vec<char> = text.chars().take(loc.col.saturating_sub(1)).collect();
-    match before.iter().rposition(|&c| c == '!') {
-        // Back to the first `!` of a `!!tag`.
-        Some(mut i) => {
-            while i > 0 && before[i - 1] == '!' {
-                i -= 1;
+    }
+    for line in (1..=loc.line).rev() {
+        let text: Vec<char> = if line == loc.line {
+            lines[line - 1]
+                .chars()
+                .take(loc.col.saturating_sub(1))
+                .collect()
+        } else {
+            lines[line - 1].chars().collect()
+        };
+        let text = without_comment(&text);
+        let mut end = text.len();
+        // The tokens of the line from its end: anchors are skipped, a tag
+        // is the answer, anything else means the tag is not found.
+        while end > 0 {
+            while end > 0 && text[end - 1].is_whitespace() {
+                end -= 1;
             }
-            Location {
-                line: loc.line,
-                col: i + 1,
+            if end == 0 {
+                break;
+            }
+            let mut start = end;
+            while start > 0 && !is_separator(text[start - 1]) {
+                start -= 1;
+            }
+            if start == end {
+                // A flow indicator (`[`, `{`, `,`) or a block one (`-`, `:`
+                // are not separators): nothing before it is the tag.
+                return loc;
+            }
+            match text[start] {
+                '!' => {
+                    return Location {
+                        line,
+                        col: start + 1,
+                    };
+                }
+                '&' => end = start,
+                _ => {
+                    // A tag glued to a flow indicator (`[!foo x`): its `!`.
+                    return match text[start..end].iter().position(|&c| c == '!') {
+                        Some(i) if line == loc.line => Location {
+                            line,
+                            col: start + i + 1,
+                        },
+                        _ => loc,
+                    };
+                }
             }
         }
-        None => loc,
     }
+    loc
+}
+
+/// Whether `c` ends a token before a tag: white space or a flow indicator.
+fn is_separator(c: char) -> bool {
+    c.is_whitespace() || matches!(c, '[' | '{' | ',')
+}
+
+/// `text` up to a comment (a `#` at the start or after white space; quotes
+/// are not followed, which only matters on a line that holds no tag).
+fn without_comment(text: &[char]) -> &[char] {
+    let hash = (0..text.len()).find(|&i| text[i] == '#' && (i == 0 || text[i - 1].is_whitespace()));
+    &text[..hash.unwrap_or(text.len())]
 }
 
 /// saphyr reports some mistakes where it notices them, on the line after

@@ -136,6 +136,11 @@ fn unsupported_features() {
         (at(1, 4), "YAML tags are not supported")
     );
     assert_eq!(syntax_err("a:\n  b: !!str [1]\n").loc, at(2, 6));
+    // A block collection's tag ends its line: the node starts on the next
+    // (issue 39: `syn-tag-custom` was a line off).
+    assert_eq!(syntax_err("a: !foo\n  b: 1\n").loc, at(1, 4));
+    assert_eq!(syntax_err("- !foo # c\n\n  b: 1\n").loc, at(1, 3));
+    assert_eq!(syntax_err("a: !foo\n  - 1\n").loc, at(1, 4));
     let e = syntax_err("a: !!str 1\n");
     assert_eq!(e.message, "YAML tags are not supported");
     let e = syntax_err("- !!map {a: 1}\n");
