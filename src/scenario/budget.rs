@@ -463,7 +463,7 @@ impl RunWork {
     pub(crate) fn modes_fitting(&self, limit: f64) -> f64 {
         let per_mode = self.coupled_wheels + self.axles * MOVING_FORCE_AXLE_WEIGHT;
         let fixed = self.coupled_wheels * Self::contact(self.coupled_wheels);
-        if per_mode <= 0.0 || !(self.steps > 0.0) {
+        if per_mode <= 0.0 || self.steps.is_nan() || self.steps <= 0.0 {
             return self.modes;
         }
         ((limit / self.steps - fixed) / per_mode).floor().max(0.0)

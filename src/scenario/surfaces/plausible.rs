@@ -86,10 +86,9 @@ pub(crate) fn check_elevations(surface: &Surface, ck: &mut Checker<'_>) {
         }
         Surface::PiecewiseLinear { ref points, .. } => {
             // One message: the first point out of range.
-            if let Some(i) = points
-                .iter()
-                .position(|p| !(p[1].abs() <= super::super::plausible::SURFACE_ELEVATION))
-            {
+            if let Some(i) = points.iter().position(|p| {
+                p[1].is_nan() || p[1].abs() > super::super::plausible::SURFACE_ELEVATION
+            }) {
                 surface_elevation(
                     ck,
                     &format!("surface.points[{i}]"),
