@@ -71,7 +71,11 @@ def test_file_raises_three_located_diagnostics(tmp_path):
         [str(vbi_binary()), "check", str(scene)], cwd=REPO, capture_output=True, text=True
     )
     assert check.returncode == 2
-    assert check.stderr.strip() == "error: " + str(error)
+    # `vbi check` starts each diagnostic with `error: ` (issue 38.8).
+    lines = check.stderr.strip().splitlines()
+    assert lines[0].startswith("error: ")
+    unprefixed = "\n".join(l[len("error: "):] if l.startswith("error: ") else l for l in lines)
+    assert unprefixed == str(error)
 
 
 def test_string_is_located_in_the_string():
