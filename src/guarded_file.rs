@@ -117,6 +117,15 @@ pub fn escape_controls(text: &str) -> String {
     out
 }
 
+/// At most `max` characters of `text` (an ellipsis marks a cut), escaped
+/// as [`escape_controls`] does and with line breaks as `\n`: a key or a
+/// field quoted from a file that may be someone else's.
+pub fn excerpt(text: &str, max: usize) -> String {
+    let short: String = text.chars().take(max).collect();
+    let more = if short.len() < text.len() { "…" } else { "" };
+    format!("{}{more}", escape_controls(&short).replace('\n', "\\n"))
+}
+
 fn io_error(path: &Path, e: &io::Error) -> GuardError {
     let text = e.to_string();
     let reason = match text.find(" (os error") {

@@ -135,12 +135,7 @@ impl ModalBridge {
         // g = −EI B(x) on the element's dofs (w positive downward, so
         // sagging is −EI w″), and g = −EI B′(x) for V = dM/dx.
         let curvature = shape_curvatures(xi, h);
-        let third = [
-            12.0 / (h * h * h),
-            6.0 / (h * h),
-            -12.0 / (h * h * h),
-            6.0 / (h * h),
-        ];
+        let third = shape_thirds(h);
         let moment_line = model.kink_line(element, curvature.map(|b| -ei * b))?;
         let shear_line = model.kink_line(element, third.map(|b| -ei * b))?;
         let (modal_moment, modal_shear) = consistent_modal_forces(
@@ -171,6 +166,17 @@ impl ModalBridge {
             modal_shear,
         }))
     }
+}
+
+/// The third derivatives of the Hermite shape functions on an element of
+/// length `h` (constant along it), 1/m³ and 1/m² (rotations).
+fn shape_thirds(h: f64) -> [f64; 4] {
+    [
+        12.0 / (h * h * h),
+        6.0 / (h * h),
+        -12.0 / (h * h * h),
+        6.0 / (h * h),
+    ]
 }
 
 /// The clamped–clamped moment (sagging positive, N·m) and shear (N) at `s`
@@ -211,12 +217,7 @@ fn consistent_modal_forces(
     let h = nodes[element + 1] - nodes[element];
     let s = xi * h;
     let curvature = shape_curvatures(xi, h);
-    let third = [
-        12.0 / (h * h * h),
-        6.0 / (h * h),
-        -12.0 / (h * h * h),
-        6.0 / (h * h),
-    ];
+    let third = shape_thirds(h);
     // Quadrature points on [0, s] and [s, h] (the kernel kinks at a = s),
     // with their weights and shape functions, shared by every mode.
     let mut points: Vec<(f64, f64, [f64; 4])> = Vec::with_capacity(8);
@@ -337,5 +338,68 @@ impl SectionProbe {
             }
         }
         SectionForces { moment, shear }
+    }
+}
+
+/// A beam support's vertical reaction (N, upward on the deck) at `x`: the
+/// shear on its right minus the shear on its left (V is the resultant of
+/// the upward forces left of a section), plus the wheels standing exactly
+/// on it. No element on the left at the entrance, none on the right at the
+/// exit.
+#[derive(Debug, Clone)]
+pub struct ReactionProbe {
+    /// Support position, m.
+    pub x: f64,
+    /// The left-hand section (none at the entrance).
+    pub left: Option<SectionProbe>,
+    /// The right-hand section (none at the exit).
+    pub right: Option<SectionProbe>,
+}
+
+impl ModalBridge {
+    /// The reaction probe of the support at `x` (m), `None` on a plate deck.
+    /// Up to four sparse solves.
+    pub fn reaction_probe(&self, x: f64) -> Result<Option<ReactionProbe>, BridgeError> {
+        let length = self.length;
+        let right = if x < length * (1.0 - 1e-12) {
+            self.section_probe(x, Side::Right)?
+        } else {
+            None
+        };
+        let left = if x > length * 1e-12 {
+            self.section_probe(x, Side::Left)?
+        } else {
+            None
+        };
+        if left.is_none() && right.is_none() {
+            return Ok(None);
+        }
+        Ok(Some(ReactionProbe { x, left, right }))
+    }
+}
+
+impl ReactionProbe {
+    /// The reaction this step, N; `corrected` as for [`SectionProbe::forces`].
+    /// Cost O(modes × wheels).
+    pub fn reaction(&self, loads: &SectionLoads<'_>, corrected: bool) -> f64 {
+        let shear =
+            |p: &Option<SectionProbe>| p.as_ref().map_or(0.0, |s| s.forces(loads, corrected).shear);
+        let x = self.x;
+        let on_support: f64 = loads
+            .on_deck
+            .iter()
+            .filter(|&&w| (loads.positions[w] - x).abs() <= 1e-12 * (1.0 + x.abs()))
+            .map(|&w| loads.forces[w])
+            .sum();
+        shear(&self.right) - shear(&self.left) + on_support
+    }
+
+    /// The right-hand and left-hand sections with the sign they enter the
+    /// reaction with (+1 right, −1 left).
+    pub fn sides(&self) -> impl Iterator<Item = (f64, &SectionProbe)> {
+        self.right
+            .iter()
+            .map(|s| (1.0, s))
+            .chain(self.left.iter().map(|s| (-1.0, s)))
     }
 }

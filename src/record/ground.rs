@@ -150,16 +150,13 @@ pub(super) fn vertical_ground_terms(
             };
             (share, None)
         }
-        Probe::Reaction {
-            ref left,
-            ref right,
-            ..
-        } => {
+        Probe::Reaction { ref probe } => {
             // The shear jump of the ground's inertia share, as for shears.
             let share = if model.bridge.static_correction {
-                let of = |p: &Option<Box<crate::bridge::section::SectionProbe>>| {
-                    p.as_deref().map_or(0.0, |section| {
-                        model
+                probe
+                    .sides()
+                    .map(|(sign, section)| {
+                        sign * model
                             .bridge
                             .ground_section_share(
                                 section,
@@ -168,8 +165,7 @@ pub(super) fn vertical_ground_terms(
                             )
                             .shear
                     })
-                };
-                of(right) - of(left)
+                    .sum()
             } else {
                 0.0
             };

@@ -146,6 +146,15 @@ impl Observer for Recorder<'_> {
         if reuse && let Some(shared) = &self.shared {
             self.statics.clone_from(&shared.borrow().columns);
         }
+        // What a beam section (or support) sees this step, shared by every
+        // moment, shear and reaction column.
+        let section_loads = SectionLoads {
+            modal: view.modal_displacement,
+            positions: view.wheel_positions,
+            forces: view.contact_forces,
+            wheel_modes: &self.wheel_modes,
+            on_deck,
+        };
         for (index, (column, extremes)) in self
             .history
             .columns
@@ -232,41 +241,11 @@ impl Observer for Recorder<'_> {
                     on_deck,
                 ),
                 Probe::Section { section, shear } => {
-                    let loads = SectionLoads {
-                        modal: view.modal_displacement,
-                        positions: view.wheel_positions,
-                        forces: view.contact_forces,
-                        wheel_modes: &self.wheel_modes,
-                        on_deck,
-                    };
-                    let forces = section.forces(&loads, model.bridge.static_correction);
+                    let forces = section.forces(&section_loads, model.bridge.static_correction);
                     if *shear { forces.shear } else { forces.moment }
                 }
-                Probe::Reaction { left, right, x } => {
-                    let loads = SectionLoads {
-                        modal: view.modal_displacement,
-                        positions: view.wheel_positions,
-                        forces: view.contact_forces,
-                        wheel_modes: &self.wheel_modes,
-                        on_deck,
-                    };
-                    let corrected = model.bridge.static_correction;
-                    let shear = |p: &Option<Box<_>>| {
-                        p.as_deref()
-                            .map_or(0.0, |s: &crate::bridge::section::SectionProbe| {
-                                s.forces(&loads, corrected).shear
-                            })
-                    };
-                    // R = V(x⁺) − V(x⁻) + the wheels standing on x (V is the
-                    // resultant of the upward forces left of a section).
-                    let on_support: f64 = on_deck
-                        .iter()
-                        .filter(|&&w| {
-                            (view.wheel_positions[w] - x).abs() <= 1e-12 * (1.0 + x.abs())
-                        })
-                        .map(|&w| view.contact_forces[w])
-                        .sum();
-                    shear(right) - shear(left) + on_support
+                Probe::Reaction { probe } => {
+                    probe.reaction(&section_loads, model.bridge.static_correction)
                 }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
                 Probe::ContactGap { wheel } => view.contact_gaps[*wheel],

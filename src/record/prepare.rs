@@ -135,25 +135,14 @@ impl<'m> Recorder<'m> {
                     (probe, unit, lead)
                 }
                 Quantity::BridgeReaction => {
-                    let x = record.x.unwrap_or(0.0);
-                    let length = model.bridge.length;
-                    let probe_on = |side| -> Result<
-                        Option<Box<crate::bridge::section::SectionProbe>>,
-                        crate::bridge::BridgeError,
-                    > {
-                        Ok(model.bridge.section_probe(x, side)?.map(Box::new))
+                    let probe = model
+                        .bridge
+                        .reaction_probe(record.x.unwrap_or(0.0))?
+                        .expect("reactions on a plate were refused when resolving");
+                    let probe = Probe::Reaction {
+                        probe: Box::new(probe),
                     };
-                    let right = if x < length * (1.0 - 1e-12) {
-                        probe_on(crate::scene::Side::Right)?
-                    } else {
-                        None
-                    };
-                    let left = if x > length * 1e-12 {
-                        probe_on(crate::scene::Side::Left)?
-                    } else {
-                        None
-                    };
-                    (Probe::Reaction { left, right, x }, "N", lead)
+                    (probe, "N", lead)
                 }
                 Quantity::ContactForce | Quantity::ContactGap => {
                     let wheel = record.wheel.map_or(0, |w| w - 1);

@@ -44,9 +44,7 @@ pub(super) enum Probe {
     /// (none at the exit) minus the shear on its left (none at the
     /// entrance), plus the wheels standing exactly on it.
     Reaction {
-        left: Option<Box<SectionProbe>>,
-        right: Option<Box<SectionProbe>>,
-        x: f64,
+        probe: Box<crate::bridge::section::ReactionProbe>,
     },
     /// Flattened wheel index.
     ContactForce { wheel: usize },

@@ -455,17 +455,6 @@ fn read_cell(text: &str) -> Cell {
     }
 }
 
-/// A field of a record file as shown in a message: escaped, at most 40
-/// characters (the file may be forged).
-fn shown_field(text: &str) -> String {
-    let short: String = text.chars().take(40).collect();
-    let more = if short.len() < text.len() { "…" } else { "" };
-    format!(
-        "{}{more}",
-        crate::guarded_file::escape_controls(&short).replace('\n', "\\n")
-    )
-}
-
 /// The header line of every record file.
 const MAGIC: &str = "# vbi regress golden record";
 
@@ -574,7 +563,7 @@ impl Record {
                         other => {
                             return Err(at(&format!(
                                 "unknown header key `{}`",
-                                shown_field(other)
+                                crate::guarded_file::excerpt(other, 40)
                             )));
                         }
                     }
@@ -589,7 +578,7 @@ impl Record {
                         return Err(at(&format!(
                             "the value of `{}` is not a finite number; vbi writes none \
                              other (approve the scene again)",
-                            shown_field(&unescape(fields[0]))
+                            crate::guarded_file::excerpt(&unescape(fields[0]), 40)
                         )));
                     }
                     let place = |k: usize| -> Result<Option<f64>, String> {
@@ -618,7 +607,7 @@ impl Record {
                             return Err(at(&format!(
                                 "{} cells in a row of table `{}` of {} columns",
                                 fields.len(),
-                                shown_field(&table.name),
+                                crate::guarded_file::excerpt(&table.name, 40),
                                 table.header.len()
                             )));
                         }

@@ -140,17 +140,6 @@ pub fn names(key: &str, name: &str) -> bool {
 /// hundred; a link to `/dev/zero` or a huge file is refused unread).
 pub const MAX_SETTINGS_BYTES: u64 = 1 << 20;
 
-/// A key of the file as shown in a message: escaped, at most 40 characters
-/// (the file may be someone else's).
-fn shown_key(key: &str) -> String {
-    let short: String = key.chars().take(40).collect();
-    let more = if short.len() < key.len() { "…" } else { "" };
-    format!(
-        "{}{more}",
-        crate::guarded_file::escape_controls(&short).replace('\n', "\\n")
-    )
-}
-
 impl Settings {
     /// The tolerance of the item `name` of scene `scene`.
     pub fn tolerance(&self, scene: &str, name: &str) -> Tolerance {
@@ -215,7 +204,7 @@ impl Settings {
                         format!(
                             "unknown key `{}` (expected relative, absolute, history_bins, \
                              quantities, scenes)",
-                            shown_key(other)
+                            crate::guarded_file::excerpt(other, 40)
                         ),
                     ));
                 }
@@ -285,7 +274,7 @@ fn partial_key(
                 at,
                 format!(
                     "unknown key `{}` (expected relative, absolute)",
-                    shown_key(other)
+                    crate::guarded_file::excerpt(other, 40)
                 ),
             ));
         }

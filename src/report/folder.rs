@@ -87,7 +87,7 @@ pub fn folder_owner(out: &Path) -> Option<String> {
 /// lines ([`FROM`]), reading at most its first 8 kB.
 fn named_in(folder: &Path, name: &str) -> Option<String> {
     use std::io::Read;
-    let file = crate::scenario::data_files::open_regular(&folder.join(name)).ok()?;
+    let file = crate::guarded_file::open_regular(&folder.join(name)).ok()?;
     let mut head = Vec::new();
     file.take(8192).read_to_end(&mut head).ok()?;
     let head = String::from_utf8_lossy(&head);

@@ -226,7 +226,7 @@ fn pinned_file(named: &str, pinned: String) -> DataFile {
 pub(crate) fn read_text(file: &DataFile, ck: &Checker<'_>) -> Result<String, String> {
     let shown = &file.shown;
     let mut bytes = Vec::new();
-    let read = open_regular(&file.real).and_then(|f| {
+    let read = crate::guarded_file::open_regular(&file.real).and_then(|f| {
         f.take(file.size.saturating_add(1))
             .read_to_end(&mut bytes)
             .map(|_| ())
@@ -254,12 +254,6 @@ pub(crate) fn read_text(file: &DataFile, ck: &Checker<'_>) -> Result<String, Str
             e.utf8_error().valid_up_to() + 1
         )
     })
-}
-
-/// Opens `path` for reading: a regular file only, without blocking
-/// ([`crate::guarded_file::open_regular`], the one place this is done).
-pub fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
-    crate::guarded_file::open_regular(path)
 }
 
 /// `path` with `.` and `..` removed by their names alone (no symlink is

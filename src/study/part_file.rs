@@ -53,7 +53,7 @@ fn read_as<T: DeserializeOwned>(path: &Path, allow_large: bool) -> Result<T, Sha
              merge with `--allow-large` if it really is one"
         )));
     }
-    let file = crate::scenario::data_files::open_regular(path).map_err(io)?;
+    let file = crate::guarded_file::open_regular(path).map_err(io)?;
     let mut bytes = Vec::new();
     file.take(size.saturating_add(1))
         .read_to_end(&mut bytes)
