@@ -242,7 +242,7 @@ impl LongRun<'_> {
         let (i, speed) = slowest;
         let travel = self.slow.get(i).map_or(0.0, |v| v.length()) + self.bridge_length;
         let room = fits - self.free_vibration - self.slow.get(i).map_or(0.0, |v| v.entry_time());
-        let hint = if room > 0.0 {
+        let hint = if room > 0.0 && travel / room <= super::plausible::SPEED.1 {
             format!(
                 "at {} m/s vehicle {} crosses {} m in {} s; a speed of at least {} m/s fits",
                 short(speed),

@@ -32,6 +32,8 @@
 //! | a length within a vehicle (spacing, height, track, radius) | 1e-3 to 1e3 | m |
 //! | gravity | 1e-3 to 300 | m/s² |
 //! | time before a vehicle reaches the bridge | 0 to 86 400 | s |
+//! | a vehicle's speed | 1e-3 to 1e3 | m/s |
+//! | free vibration after the last exit | 0 to 86 400 | s |
 //! | plate thickness | 1e-3 to 100 | m |
 //! | plate (deck) width | 1e-2 to 1e3 | m |
 //! | plate material density | 1 to 1e5 | kg/m³ |
@@ -89,6 +91,12 @@ pub const VEHICLE_LENGTH: (f64, f64) = (1e-3, 1e3);
 pub const GRAVITY: (f64, f64) = (1e-3, 300.0);
 /// Time before a vehicle reaches the bridge, s (one day).
 pub const ENTRY_TIME: (f64, f64) = (0.0, 86_400.0);
+/// A vehicle's speed, m/s: a millimetre a second (a creep test) to the
+/// format's [`super::vehicles::MAX_SPEED`] (1 km/s, six times the fastest
+/// train, the 2015 maglev record of 603 km/h = 168 m/s).
+pub const SPEED: (f64, f64) = (1e-3, super::vehicles::MAX_SPEED);
+/// Free vibration after the last vehicle leaves, s (one day).
+pub const FREE_VIBRATION: (f64, f64) = (0.0, 86_400.0);
 
 /// A plate's thickness, m: a millimetre (laboratory strips) to 100 m
 /// (the deepest box girders are about 15 m deep).
@@ -218,7 +226,7 @@ pub(crate) fn within_because(
 
 /// Refuses `value` outside `[lo, hi]` (both inclusive) at `path`. A zero
 /// or negative value is left to the sign checks, which say "must be
-/// positive" once, rather than twice.
+/// positive" once, rather than twice. Whether it refused.
 pub(crate) fn within(
     ck: &mut Checker<'_>,
     path: &str,
@@ -226,7 +234,7 @@ pub(crate) fn within(
     value: f64,
     (lo, hi): (f64, f64),
     unit: &str,
-) {
+) -> bool {
     let outside = value.is_nan() || value > hi || (value > 0.0 && value < lo);
     if outside {
         let (value, lo, hi) = (number(value), number(lo), number(hi));
@@ -237,6 +245,7 @@ pub(crate) fn within(
             ),
         );
     }
+    outside
 }
 
 /// A value as typed by people: plain while short, else with an exponent.
@@ -264,6 +273,19 @@ pub(crate) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
                     LOAD,
                     "N",
                 );
+            }
+            // An axle spacing is a length within a vehicle (issue 39.5: a
+            // spacing of 1e308 m was blamed on the speed, "over the inf s
+            // run"); blamed where the file writes it, a spacing or the
+            // position of the axle behind it.
+            let by_position = !ck.has(&p("axle_spacings")) && ck.has(&p("axle_positions"));
+            for (k, &spacing) in v.axle_spacings.iter().enumerate() {
+                let path = if by_position {
+                    p(&format!("axle_positions[{}]", k + 1))
+                } else {
+                    p(&format!("axle_spacings[{k}]"))
+                };
+                within(ck, &path, "an axle spacing", spacing, VEHICLE_LENGTH, "m");
             }
         }
         Vehicle::Oscillator(o) => {
@@ -309,11 +331,14 @@ pub(crate) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
             for (k, car) in t.cars.iter().enumerate() {
                 super::rail::check_plausible(ck, &p("parameters"), Some(k + 1), &car.parameters);
             }
+            let spacings = t.cars.iter().map(|c| c.spacing);
+            check_car_spacings(ck, at, spacings);
         }
         Vehicle::Train3d(t) => {
             for (k, car) in t.cars.iter().enumerate() {
                 super::rail_3d::check_plausible(ck, &p("parameters"), k + 1, &car.parameters);
             }
+            check_car_spacings(ck, at, t.cars.iter().map(|c| c.spacing));
         }
         Vehicle::H20Truck(t) => {
             let q = &t.parameters;
@@ -369,6 +394,7 @@ pub(crate) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
             }
         }
     }
+    within(ck, &p("speed"), "a speed", vehicle.speed(), SPEED, "m/s");
     within(
         ck,
         &p(entry_field),
@@ -377,6 +403,27 @@ pub(crate) fn check_vehicle(ck: &mut Checker<'_>, at: &str, entry_field: &str, v
         ENTRY_TIME,
         "s",
     );
+}
+
+/// Checks a train's car spacings (front wheelset to front wheelset, m) as
+/// lengths within a vehicle, blamed at `car_spacing` when the file writes
+/// one spacing for all cars, else at the car's own `spacing`.
+fn check_car_spacings(ck: &mut Checker<'_>, at: &str, spacings: impl Iterator<Item = Option<f64>>) {
+    let one = format!("{at}.car_spacing");
+    let shared = ck.has(&one);
+    for (k, spacing) in spacings.enumerate() {
+        let Some(spacing) = spacing else { continue };
+        let path = if shared {
+            one.clone()
+        } else {
+            format!("{at}.cars[{k}].spacing")
+        };
+        let refused = within(ck, &path, "a car spacing", spacing, VEHICLE_LENGTH, "m");
+        if shared && refused {
+            // One message for the one value, not one per car.
+            return;
+        }
+    }
 }
 
 /// Checks the bridge's stiffness and mass.
@@ -494,14 +541,16 @@ pub(crate) fn check_contact(ck: &mut Checker<'_>, contact: &Contact) {
                 "N/m",
             );
         }
-        Contact::Hertz { coefficient } => within(
-            ck,
-            "contact",
-            "a Hertz coefficient",
-            *coefficient,
-            HERTZ,
-            "N/m^1.5",
-        ),
+        Contact::Hertz { coefficient } => {
+            within(
+                ck,
+                "contact",
+                "a Hertz coefficient",
+                *coefficient,
+                HERTZ,
+                "N/m^1.5",
+            );
+        }
         Contact::Permanent | Contact::Rigid { .. } => {}
     }
 }

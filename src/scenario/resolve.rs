@@ -192,6 +192,14 @@ pub(crate) fn describe(
         free_vibration,
         "free-vibration time",
     );
+    super::plausible::within(
+        ck,
+        "solver.free_vibration",
+        "a free-vibration time",
+        free_vibration,
+        super::plausible::FREE_VIBRATION,
+        "s",
+    );
     if let Some(dt) = solver_raw.time_step {
         ck.positive("solver.time_step", dt, "time step");
         super::plausible::within_because(
@@ -211,6 +219,27 @@ pub(crate) fn describe(
     let (bridge, vehicles) = (bridge?, vehicles?);
     // Placeholders' physics is not the scene's: no plan.
     if !ck.diagnostics.is_empty() || ck.placeheld {
+        return None;
+    }
+    // Vehicles the file gives in full are judged before any budget reads
+    // their lengths (issue 39.5: a spacing of 1e308 m was blamed on the
+    // speed, "over the inf s run"); oscillators derived from the bridge's
+    // frequencies are judged once derived, in the plan.
+    for (i, vehicle) in vehicles.iter().enumerate() {
+        let derived = matches!(raw.vehicles.get(i),
+            Some(raw::VehicleRaw::Oscillator(o)) if o.dimensionless.is_some());
+        if derived {
+            continue;
+        }
+        let at = format!("vehicles[{i}]");
+        let entry_field = if ck.has(&format!("{at}.start_position")) {
+            "start_position"
+        } else {
+            "entry_time"
+        };
+        super::plausible::check_vehicle(ck, &at, entry_field, vehicle);
+    }
+    if !ck.diagnostics.is_empty() {
         return None;
     }
     if !budget.model(&bridge, &surface, ck) {
