@@ -384,10 +384,17 @@ pub const MAX_BEAM_DOFS: usize = 1_000_000;
 
 fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     let elements_per_span = given.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
-    if !(1..=10_000).contains(&elements_per_span) {
-        ck.error(
+    let most = crate::scene::MAX_ELEMENTS_PER_SPAN;
+    if !(1..=most).contains(&elements_per_span) {
+        ck.error_with_help(
             "bridge.elements_per_span",
-            format!("elements per span must be between 1 and 10000, got {elements_per_span}"),
+            format!("elements per span must be between 1 and {most}, got {elements_per_span}"),
+            (elements_per_span > most).then(|| {
+                format!(
+                    "beyond {most} elements a span's stiffness is too ill-conditioned for its \
+                     modes to pass their checks in double precision; 20 to 100 is what a span needs"
+                )
+            }),
         );
     }
     // The sparse eigen solver's memory is linear in the DOFs (a Lanczos

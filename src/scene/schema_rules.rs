@@ -85,10 +85,10 @@ pub fn sign(schema: &mut Schema) {
     set(schema, "enum", vec![Value::from(-1), Value::from(1)]);
 }
 
-/// Elements per span: 1 to 10 000 (`bridges::elements`).
+/// Elements per span: 1 to [`super::MAX_ELEMENTS_PER_SPAN`] (`bridges::elements`).
 pub fn elements_per_span(schema: &mut Schema) {
     at_least_one(schema);
-    set(schema, "maximum", 10_000);
+    set(schema, "maximum", super::MAX_ELEMENTS_PER_SPAN);
 }
 
 /// An isotropic plate's Poisson ratio, in [0, 0.5).
