@@ -120,6 +120,25 @@ pub(super) fn run(
                 q.max_abs.time
             );
         }
+        for peak in &s.envelope_peaks {
+            for (what, at) in [("max", &peak.max), ("min", &peak.min)] {
+                let daf = at.daf.map(|d| format!("  DAF {d:.4}")).unwrap_or_default();
+                let side = if at.side == vbi::scene::Side::Left {
+                    " (left)"
+                } else {
+                    ""
+                };
+                let support = if at.support { ", a support" } else { "" };
+                errln!(
+                    "  envelope {:<17} {what} {:>12.5e} {} at x = {:.3} m{side}{support}, t = {:.4} s{daf}",
+                    peak.quantity,
+                    at.value,
+                    peak.unit,
+                    at.x,
+                    at.time
+                );
+            }
+        }
         errln!("results in {}", out.display());
     }
     deny_warnings(advice, ExitCode::SUCCESS)

@@ -384,14 +384,32 @@ impl ReactionProbe {
     pub fn reaction(&self, loads: &SectionLoads<'_>, corrected: bool) -> f64 {
         let shear =
             |p: &Option<SectionProbe>| p.as_ref().map_or(0.0, |s| s.forces(loads, corrected).shear);
+        shear(&self.right) - shear(&self.left)
+            + self.on_support(loads.positions, loads.forces, loads.on_deck)
+    }
+
+    /// The exact static reaction, N, under downward point forces `forces`
+    /// (N) at `positions` (m), the wheels `on_deck` only: the static shear
+    /// jump ([`SectionProbe::static_forces`] on each side) plus the loads
+    /// standing on the support — the reference of the reaction's dynamic
+    /// factor. Cost O(wheels).
+    pub fn static_reaction(&self, positions: &[f64], forces: &[f64], on_deck: &[usize]) -> f64 {
+        let shear = |p: &Option<SectionProbe>| {
+            p.as_ref()
+                .map_or(0.0, |s| s.static_forces(positions, forces, on_deck).shear)
+        };
+        shear(&self.right) - shear(&self.left) + self.on_support(positions, forces, on_deck)
+    }
+
+    /// The forces of the wheels standing exactly on the support, N: they
+    /// pass into it without shearing either side.
+    fn on_support(&self, positions: &[f64], forces: &[f64], on_deck: &[usize]) -> f64 {
         let x = self.x;
-        let on_support: f64 = loads
-            .on_deck
+        on_deck
             .iter()
-            .filter(|&&w| (loads.positions[w] - x).abs() <= 1e-12 * (1.0 + x.abs()))
-            .map(|&w| loads.forces[w])
-            .sum();
-        shear(&self.right) - shear(&self.left) + on_support
+            .filter(|&&w| (positions[w] - x).abs() <= 1e-12 * (1.0 + x.abs()))
+            .map(|&w| forces[w])
+            .sum()
     }
 
     /// The right-hand and left-hand sections with the sign they enter the

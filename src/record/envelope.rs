@@ -1,7 +1,9 @@
 //! Envelopes along the deck: at every point, the largest and smallest value
 //! of each bridge quantity over the run, with when and where (the lead
 //! vehicle's front axle) each occurred — VBI-2D's load-effect maxima —
-//! tracked step by step without keeping histories.
+//! tracked step by step without keeping histories; beside each, the same
+//! extremes of the static crossing, the reference of the point's dynamic
+//! factor.
 //!
 //! Each point's value is computed by the very formula of the matching
 //! record (displacement with the static correction of the modes left out,
@@ -12,11 +14,24 @@
 //! mode matrix times q per point (kept row by row, not through a BLAS call,
 //! so that the arithmetic is the record's), and each wheel through each
 //! point's static influence lines.
+//!
+//! The points (issue 40.2): the requested grid (the mesh nodes by default),
+//! plus every support, an interior support twice — its left-hand limit,
+//! then its right-hand one, so that the shear's jump by the reaction is in
+//! the envelope — plus, in every span, the section where each vehicle's
+//! static moment envelope peaks ([`peak_sections`]), so that the envelope's
+//! peak is not read low between two grid points.
+//!
+//! The static crossing (each wheel its static load at its position, full
+//! stiffness, exact section forces) is evaluated at every step and also at
+//! the instant a wheel passes each point, on both sides of it: a moment's
+//! or a shear's influence line kinks or jumps under the load, so its static
+//! extreme sits exactly there, between two steps.
 
-use super::probe::{StaticProbe, corrected_displacement, dot, filtered_shape, static_shape};
+use super::probe::{StaticProbe, dot, filtered_shape, static_shape, static_share_beyond};
 use super::unit_of;
 use crate::bridge::BridgeError;
-use crate::bridge::section::{SectionLoads, SectionProbe};
+use crate::bridge::section::{SectionLoads, SectionProbe, Side};
 use crate::model::Model;
 use crate::scene::{Envelopes, Quantity};
 use crate::solve::StepView;
@@ -63,7 +78,23 @@ impl Extremes {
             self.min_position = position;
         }
     }
+
+    /// The larger magnitude of the two extremes.
+    pub fn max_abs(&self) -> f64 {
+        self.max.abs().max(self.min.abs())
+    }
 }
+
+/// The smallest static magnitude, relative to the dynamic one, for which a
+/// point gets a dynamic factor (as a record's DAF,
+/// [`crate::report::summary::DAF_STATIC_SHARE`]): near an influence line's
+/// zero there is nothing to divide by.
+pub const POINT_DAF_STATIC_SHARE: f64 = 1e-3;
+
+/// The smallest static magnitude, relative to the largest along the deck,
+/// for which a point gets a dynamic factor (round-off sits some 1e-16
+/// below the peak; a millionth is still a value).
+pub const POINT_DAF_STATIC_FLOOR: f64 = 1e-6;
 
 /// One enveloped quantity over all points.
 #[derive(Debug, Clone)]
@@ -74,13 +105,45 @@ pub struct EnvelopeColumn {
     pub unit: &'static str,
     /// Per point (empty until the first step).
     pub extremes: Vec<Extremes>,
+    /// The static crossing's extremes per point (displacements, moments and
+    /// shears; empty for accelerations, which have no static part).
+    pub statics: Vec<Extremes>,
+}
+
+impl EnvelopeColumn {
+    /// The dynamic factor at point `p`, max|E| / max|E_static| (none without
+    /// a static envelope, or where the static one is below
+    /// [`POINT_DAF_STATIC_SHARE`] of the dynamic one).
+    /// A point whose static magnitude is below [`POINT_DAF_STATIC_FLOOR`] of
+    /// the column's largest has none either: the moment at a pinned end is
+    /// round-off (1e-11 N·m beside 1e6), and so would be its ratio. Cost
+    /// O(points).
+    pub fn daf(&self, p: usize) -> Option<f64> {
+        let (e, s) = (self.extremes.get(p)?, self.statics.get(p)?);
+        let (dynamic, statics) = (e.max_abs(), s.max_abs());
+        let largest = self
+            .statics
+            .iter()
+            .map(Extremes::max_abs)
+            .fold(0.0, f64::max);
+        (statics > 0.0
+            && statics >= POINT_DAF_STATIC_SHARE * dynamic
+            && statics >= POINT_DAF_STATIC_FLOOR * largest)
+            .then(|| dynamic / statics)
+    }
 }
 
 /// The envelopes of a run.
 #[derive(Debug, Clone)]
 pub struct Envelope {
-    /// Point positions along the bridge, m.
+    /// Point positions along the bridge, m, ascending (an interior support
+    /// appears twice).
     pub x: Vec<f64>,
+    /// Which limit each point takes where a quantity jumps: `Left` for the
+    /// first of an interior support's two points, else `Right`.
+    pub side: Vec<Side>,
+    /// Whether each point is a support.
+    pub support: Vec<bool>,
     /// One column per quantity, in the scene's order.
     pub columns: Vec<EnvelopeColumn>,
 }
@@ -100,27 +163,224 @@ struct PointProbe {
 pub(super) struct EnvelopeTracker {
     envelope: Envelope,
     points: Vec<PointProbe>,
+    /// The wheel positions of the previous step, m (empty before the first).
+    previous_positions: Vec<f64>,
+    /// The previous step's time, s, and lead-vehicle position, m.
+    previous_time: f64,
+    previous_lead: f64,
+    /// Scratch: the wheel positions at the instant a wheel passes a point.
+    passing: Vec<f64>,
+    /// Every flattened wheel's index (the wheels a passing instant sums).
+    all_wheels: Vec<usize>,
+}
+
+/// Two positions within this distance (m) are one envelope point.
+const SAME_POINT: f64 = 1e-9;
+
+/// The points of the envelope: the grid, the supports and the peak
+/// sections, ascending, with each one's side and whether it is a support.
+fn envelope_points(
+    model: &Model,
+    envelopes: &Envelopes,
+    sections: bool,
+) -> Result<(Vec<f64>, Vec<Side>, Vec<bool>), BridgeError> {
+    let length = model.bridge.length;
+    let mut x: Vec<f64> = match envelopes.points {
+        Some(n) => (0..n).map(|i| length * i as f64 / (n - 1) as f64).collect(),
+        None => model.bridge.node_x().to_vec(),
+    };
+    x.extend(model.bridge.supports.iter().copied());
+    if envelopes.quantities.contains(&Quantity::BridgeMoment) {
+        x.extend(peak_sections(model)?);
+    }
+    x.sort_by(f64::total_cmp);
+    x.dedup_by(|b, a| (*b - *a).abs() <= SAME_POINT * (1.0 + length));
+    // Snap onto the supports (a grid point a round-off away is the support).
+    for s in &model.bridge.supports {
+        for p in x.iter_mut() {
+            if (*p - s).abs() <= SAME_POINT * (1.0 + length) {
+                *p = *s;
+            }
+        }
+    }
+    let mut points = Vec::with_capacity(x.len() + model.bridge.supports.len());
+    let mut sides = Vec::with_capacity(points.capacity());
+    let mut support = Vec::with_capacity(points.capacity());
+    for p in x {
+        let on_support = model.bridge.supports.contains(&p);
+        let interior = p > 0.0 && p < length;
+        if sections && on_support && interior {
+            points.push(p);
+            sides.push(Side::Left);
+            support.push(true);
+        }
+        points.push(p);
+        sides.push(Side::Right);
+        support.push(on_support);
+    }
+    Ok((points, sides, support))
+}
+
+/// Where, in every span, each vehicle's static sagging-moment envelope
+/// peaks, m: the section of the absolute maximum moment (for a simply
+/// supported span and a group of point loads, Barré's theorem puts it under
+/// an axle, the axle and the loads' resultant symmetric about mid-span; on
+/// a continuous beam it moves off mid-span). Found by scanning the mesh
+/// nodes of the span and a golden-section search between the best node's
+/// neighbours on the static envelope M*(x) = max over the vehicle's
+/// positions of Σ_w P_w M(x; ξ_w) ([`static_peak_at`]). Two sparse solves
+/// and O(wheels × 2000) influence values per section tried, at most
+/// [`PEAK_CANDIDATES`] + 40 per span and vehicle.
+fn peak_sections(model: &Model) -> Result<Vec<f64>, BridgeError> {
+    let nodes = model.bridge.node_x().to_vec();
+    let supports = &model.bridge.supports;
+    let mut found = Vec::new();
+    for group in vehicle_groups(model) {
+        if group.is_empty() {
+            continue;
+        }
+        for span in supports.windows(2) {
+            let (a, b) = (span[0], span[1]);
+            // At most PEAK_CANDIDATES nodes of the span are tried (a fine
+            // mesh's every k-th), the search then between the best one's
+            // neighbours among them.
+            let all: Vec<f64> = nodes.iter().copied().filter(|&n| n > a && n < b).collect();
+            let every = all.len().div_ceil(PEAK_CANDIDATES).max(1);
+            let inside: Vec<f64> = all.iter().copied().step_by(every).collect();
+            let mut best: Option<(usize, f64)> = None;
+            for (k, &n) in inside.iter().enumerate() {
+                let value = static_peak_at(model, n, &group, &nodes)?;
+                if best.is_none_or(|(_, v)| value > v) {
+                    best = Some((k, value));
+                }
+            }
+            let Some((k, _)) = best else { continue };
+            let lo = if k == 0 { a } else { inside[k - 1] };
+            let hi = inside.get(k + 1).copied().unwrap_or(b);
+            let peak = golden_max(lo, hi, |x| static_peak_at(model, x, &group, &nodes))?;
+            // Within the search's tolerance of a node the node is the peak
+            // (a flat maximum there: mid-span under one load).
+            let tolerance = 1e-5 * (hi - lo);
+            let peak = inside
+                .iter()
+                .copied()
+                .find(|n| (n - peak).abs() <= tolerance)
+                .unwrap_or(peak);
+            found.push(peak);
+        }
+    }
+    Ok(found)
+}
+
+/// Most nodes of a span at which [`peak_sections`] evaluates the static
+/// envelope before its golden-section search.
+const PEAK_CANDIDATES: usize = 48;
+
+/// Most front-axle positions of [`static_peak_at`]'s sweep.
+const PEAK_SWEEP: f64 = 2000.0;
+
+/// Each vehicle's wheels as (distance behind its front axle m, static load
+/// N), a rigid group of point loads.
+fn vehicle_groups(model: &Model) -> Vec<Vec<(f64, f64)>> {
+    let mut groups = vec![Vec::new(); model.vehicles.len()];
+    for (flat, r) in model.wheels.iter().enumerate() {
+        let offset = model.vehicles[r.vehicle].wheels[r.wheel].offset;
+        groups[r.vehicle].push((offset, model.static_wheel_loads[flat]));
+    }
+    groups
+}
+
+/// The largest static moment at `x` (N·m, sagging positive) as the group
+/// of point loads `group` crosses: over the front-axle positions that put
+/// each axle just either side of `x` (where the moment's influence line
+/// kinks) and a sweep at an eighth of the smallest element.
+fn static_peak_at(
+    model: &Model,
+    x: f64,
+    group: &[(f64, f64)],
+    nodes: &[f64],
+) -> Result<f64, BridgeError> {
+    let Some(section) = model.bridge.section_probe(x, Side::Right)? else {
+        return Ok(f64::NEG_INFINITY);
+    };
+    let length = model.bridge.length;
+    let longest = group.iter().map(|g| g.0).fold(0.0, f64::max);
+    // An eighth of the smallest element, or of the crossing over
+    // PEAK_SWEEP positions on a fine mesh (between them only a smooth
+    // maximum, no kink, is missed: its error is quadratic in the step).
+    let step = (nodes
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(f64::INFINITY, f64::min)
+        / 8.0)
+        .max((length + longest) / PEAK_SWEEP);
+    let positions_of = |front: f64| -> Vec<f64> { group.iter().map(|g| front - g.0).collect() };
+    let loads: Vec<f64> = group.iter().map(|g| g.1).collect();
+    let wheels: Vec<usize> = (0..group.len()).collect();
+    let moment_at = |front: f64| {
+        section
+            .static_forces(&positions_of(front), &loads, &wheels)
+            .moment
+    };
+    let mut best = f64::NEG_INFINITY;
+    let eps = 1e-12 * (1.0 + length);
+    for g in group {
+        for side in [-eps, eps] {
+            best = best.max(moment_at(x + g.0 + side));
+        }
+    }
+    let sweeps = ((length + longest) / step).ceil().min(PEAK_SWEEP) as usize;
+    for i in 0..=sweeps {
+        best = best.max(moment_at(i as f64 * step));
+    }
+    Ok(best)
+}
+
+/// The x in [lo, hi] where `f` is largest, by golden-section search to
+/// 1e-6 of the interval (f unimodal there: the envelope near its peak).
+fn golden_max(
+    lo: f64,
+    hi: f64,
+    mut f: impl FnMut(f64) -> Result<f64, BridgeError>,
+) -> Result<f64, BridgeError> {
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (lo, hi);
+    let mut c = b - ratio * (b - a);
+    let mut d = a + ratio * (b - a);
+    let (mut fc, mut fd) = (f(c)?, f(d)?);
+    while (b - a) > 1e-6 * (hi - lo).max(f64::MIN_POSITIVE) {
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - ratio * (b - a);
+            fc = f(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + ratio * (b - a);
+            fd = f(d)?;
+        }
+    }
+    Ok(if fc >= fd { c } else { d })
 }
 
 impl EnvelopeTracker {
     /// The probes of every point (resolved `envelopes` on a beam).
     pub(super) fn new(model: &Model, envelopes: &Envelopes) -> Result<Self, BridgeError> {
-        let length = model.bridge.length;
-        let x: Vec<f64> = match envelopes.points {
-            Some(n) => (0..n).map(|i| length * i as f64 / (n - 1) as f64).collect(),
-            None => model.bridge.node_x().to_vec(),
-        };
         let sections = envelopes
             .quantities
             .iter()
             .any(|q| matches!(q, Quantity::BridgeMoment | Quantity::BridgeShear));
+        let (x, side, support) = envelope_points(model, envelopes, sections)?;
         let modes = model.bridge.mode_count();
         let mut points = Vec::with_capacity(x.len());
-        for &at in &x {
+        for (&at, &side) in x.iter().zip(&side) {
             let mut shape = vec![0.0; modes];
             model.bridge.mode_values(at, 0.0, &mut shape);
             let section = if sections {
-                model.bridge.section_probe(at, crate::scene::Side::Right)?
+                model.bridge.section_probe(at, side)?
             } else {
                 None
             };
@@ -139,11 +399,23 @@ impl EnvelopeTracker {
                 quantity,
                 unit: unit_of(quantity),
                 extremes: Vec::with_capacity(x.len()),
+                statics: Vec::with_capacity(x.len()),
             })
             .collect();
+        let wheels = model.wheels.len();
         Ok(Self {
-            envelope: Envelope { x, columns },
+            envelope: Envelope {
+                x,
+                side,
+                support,
+                columns,
+            },
             points,
+            previous_positions: Vec::with_capacity(wheels),
+            previous_time: 0.0,
+            previous_lead: 0.0,
+            passing: Vec::with_capacity(wheels),
+            all_wheels: (0..wheels).collect(),
         })
     }
 
@@ -173,30 +445,120 @@ impl EnvelopeTracker {
             on_deck,
         };
         let corrected = model.bridge.static_correction;
+        let static_loads = &model.static_wheel_loads;
         for (p, point) in self.points.iter().enumerate() {
             let section = point.section.as_ref().map(|s| s.forces(&loads, corrected));
+            let static_section = point
+                .section
+                .as_ref()
+                .map(|s| s.static_forces(view.wheel_positions, static_loads, on_deck));
             for column in &mut self.envelope.columns {
-                let value = match column.quantity {
-                    Quantity::BridgeDisplacement => corrected_displacement(
-                        &point.shape,
-                        &point.statics,
-                        &point.static_shape,
-                        wheel_modes,
-                        view,
-                        on_deck,
-                    ),
-                    Quantity::BridgeAcceleration => {
-                        dot(&point.acceleration_shape, view.modal_acceleration)
+                let (value, static_value) = match column.quantity {
+                    Quantity::BridgeDisplacement => {
+                        let modal = dot(&point.shape, view.modal_displacement);
+                        let (full, statics) = point.statics.deflections(
+                            view.wheel_positions,
+                            view.contact_forces,
+                            static_loads,
+                            on_deck,
+                        );
+                        // The record's formula (`corrected_displacement`).
+                        let value = if wheel_modes.is_empty() {
+                            modal
+                        } else {
+                            modal
+                                + static_share_beyond(
+                                    full,
+                                    &point.static_shape,
+                                    wheel_modes,
+                                    view,
+                                    on_deck,
+                                )
+                        };
+                        (value, Some(statics))
                     }
-                    Quantity::BridgeMoment => section.map_or(0.0, |s| s.moment),
-                    Quantity::BridgeShear => section.map_or(0.0, |s| s.shear),
-                    _ => 0.0,
+                    Quantity::BridgeAcceleration => (
+                        dot(&point.acceleration_shape, view.modal_acceleration),
+                        None,
+                    ),
+                    Quantity::BridgeMoment => (
+                        section.map_or(0.0, |s| s.moment),
+                        static_section.map(|s| s.moment),
+                    ),
+                    Quantity::BridgeShear => (
+                        section.map_or(0.0, |s| s.shear),
+                        static_section.map(|s| s.shear),
+                    ),
+                    _ => (0.0, None),
                 };
                 match column.extremes.get_mut(p) {
                     Some(e) => e.update(value, view.time, position),
                     None => column
                         .extremes
                         .push(Extremes::new(value, view.time, position)),
+                }
+                if let Some(s) = static_value {
+                    match column.statics.get_mut(p) {
+                        Some(e) => e.update(s, view.time, position),
+                        None => column.statics.push(Extremes::new(s, view.time, position)),
+                    }
+                }
+            }
+        }
+        self.observe_passing(model, view, position);
+        self.previous_positions.clear();
+        self.previous_positions
+            .extend_from_slice(view.wheel_positions);
+        self.previous_time = view.time;
+        self.previous_lead = position;
+    }
+
+    /// The static section forces at the instants between the last step and
+    /// this one when a wheel passes a section point, with that wheel just
+    /// before and just past it (the influence line's kink or jump) and the
+    /// others where they were then (positions linear in time over a step).
+    fn observe_passing(&mut self, model: &Model, view: &StepView<'_>, position: f64) {
+        let now = view.wheel_positions;
+        if self.previous_positions.len() != now.len() {
+            return;
+        }
+        let eps = 1e-12 * (1.0 + model.bridge.length);
+        let static_loads = &model.static_wheel_loads;
+        for (p, point) in self.points.iter().enumerate() {
+            let Some(section) = &point.section else {
+                continue;
+            };
+            let x = self.envelope.x[p];
+            for w in 0..now.len() {
+                let (before, after) = (self.previous_positions[w], now[w]);
+                // Passed x in (before, after]: ahead of it before, not after.
+                if !(before < x && after >= x) || after == before {
+                    continue;
+                }
+                let s = (x - before) / (after - before);
+                self.passing.clear();
+                self.passing.extend(
+                    self.previous_positions
+                        .iter()
+                        .zip(now)
+                        .map(|(a, b)| a + s * (b - a)),
+                );
+                let time = self.previous_time + s * (view.time - self.previous_time);
+                let lead = self.previous_lead + s * (position - self.previous_lead);
+                for side in [-eps, eps] {
+                    self.passing[w] = x + side;
+                    let forces =
+                        section.static_forces(&self.passing, static_loads, &self.all_wheels);
+                    for column in &mut self.envelope.columns {
+                        let value = match column.quantity {
+                            Quantity::BridgeMoment => forces.moment,
+                            Quantity::BridgeShear => forces.shear,
+                            _ => continue,
+                        };
+                        if let Some(e) = column.statics.get_mut(p) {
+                            e.update(value, time, lead);
+                        }
+                    }
                 }
             }
         }

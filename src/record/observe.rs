@@ -240,11 +240,38 @@ impl Observer for Recorder<'_> {
                     &self.wheel_modes,
                     on_deck,
                 ),
+                // The static crossing of the same wheels (each its static
+                // load at its current position, full stiffness, exact
+                // section forces): the reference of the dynamic factor, as
+                // for displacements (issue 40.1).
                 Probe::Section { section, shear } => {
+                    let statics = section.static_forces(
+                        view.wheel_positions,
+                        &model.static_wheel_loads,
+                        on_deck,
+                    );
+                    let static_value = if *shear {
+                        statics.shear
+                    } else {
+                        statics.moment
+                    };
+                    extremes.statics.push(view.step, view.time, static_value);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
+                        s.push(static_value);
+                    }
                     let forces = section.forces(&section_loads, model.bridge.static_correction);
                     if *shear { forces.shear } else { forces.moment }
                 }
                 Probe::Reaction { probe } => {
+                    let static_value = probe.static_reaction(
+                        view.wheel_positions,
+                        &model.static_wheel_loads,
+                        on_deck,
+                    );
+                    extremes.statics.push(view.step, view.time, static_value);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
+                        s.push(static_value);
+                    }
                     probe.reaction(&section_loads, model.bridge.static_correction)
                 }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],

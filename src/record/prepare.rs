@@ -188,8 +188,11 @@ impl<'m> Recorder<'m> {
                     }
                 }
             };
-            let static_values = matches!(probe, Probe::BridgeDisplacement { .. })
-                .then(|| Vec::with_capacity(capacity));
+            let static_values = matches!(
+                probe,
+                Probe::BridgeDisplacement { .. } | Probe::Section { .. } | Probe::Reaction { .. }
+            )
+            .then(|| Vec::with_capacity(capacity));
             let (ground_static, lateral_static, absolute) = ground_terms(model, record, &probe)?;
             columns.push(Column {
                 name: record.name.clone(),

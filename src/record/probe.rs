@@ -116,6 +116,23 @@ impl StaticProbe {
             .sum()
     }
 
+    /// [`Self::deflection`] under two load sets at once, `loads` and
+    /// `static_loads` (N, downward), each influence value read once: the
+    /// full deflection of the static correction and the static crossing's.
+    pub(super) fn deflections(
+        &self,
+        positions: &[f64],
+        loads: &[f64],
+        static_loads: &[f64],
+        on_deck: &[usize],
+    ) -> (f64, f64) {
+        // From −0.0, as `Iterator::sum` starts: the same bits as `deflection`.
+        on_deck.iter().fold((-0.0, -0.0), |(a, b), &w| {
+            let g = self.influences[self.wheel_influence[w]].value_at(positions[w]);
+            (a - loads[w] * g, b - static_loads[w] * g)
+        })
+    }
+
     /// The influence line's value at each wheel `on_deck` (in that order),
     /// m/N, into `values`: [`Self::deflection`]'s factors, for several
     /// load sets at one step.
@@ -250,24 +267,6 @@ pub(super) fn filtered_shape(model: &Model, shape: &[f64], max_frequency: Option
     shape
 }
 
-/// A recorded bridge displacement (m, upward): the modal sum, plus the
-/// static share of the modes left out when `wheel_modes` is filled (the
-/// static correction is on).
-pub(super) fn corrected_displacement(
-    shape: &[f64],
-    statics: &StaticProbe,
-    static_shape: &[f64],
-    wheel_modes: &[f64],
-    view: &StepView<'_>,
-    on_deck: &[usize],
-) -> f64 {
-    let modal = dot(shape, view.modal_displacement);
-    if wheel_modes.is_empty() {
-        modal
-    } else {
-        modal + truncated_static_share(statics, static_shape, wheel_modes, view, on_deck)
-    }
-}
 pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

@@ -58,18 +58,19 @@ pub struct QuantitySummary {
     /// one axle is on the bridge (absent if none is).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub on_bridge: Option<Extremes>,
-    /// Bridge displacements: the static crossing response of largest
-    /// magnitude at the same point, signed, m (`static_largest_magnitude`
-    /// in summary.json).
+    /// Bridge displacements, moments, shears and reactions: the static
+    /// crossing response of largest magnitude at the same point, signed, in
+    /// the column's unit (`static_largest_magnitude` in summary.json).
     #[serde(
         rename = "static_largest_magnitude",
         skip_serializing_if = "Option::is_none"
     )]
     pub static_max_abs: Option<Extreme>,
-    /// Bridge displacements: dynamic amplification factor
-    /// max|w_dynamic| / max|w_static| at this point (dimensionless); none
-    /// where the static crossing barely moves the point
-    /// ([`DAF_STATIC_SHARE`], [`DAF_STATIC_FLOOR`]).
+    /// Bridge displacements, moments, shears and reactions: dynamic
+    /// amplification factor max|E_dynamic| / max|E_static| at this point
+    /// (dimensionless); none where the static crossing barely moves it
+    /// ([`DAF_STATIC_SHARE`], [`DAF_STATIC_FLOOR`],
+    /// [`DAF_STATIC_FORCE_FLOOR`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub daf: Option<f64>,
 }
@@ -160,6 +161,11 @@ pub struct Summary {
     /// line (`bridge.girder_lines`), span by span.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub girder_dafs: Vec<GirderDaf>,
+    /// With `envelopes`: where each enveloped quantity peaks along the deck
+    /// (value, point, side, time, lead position, static value and the
+    /// point's DAF; issue 40.2), the numbers `envelopes.png` marks.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub envelope_peaks: Vec<super::envelopes::EnvelopePeak>,
     /// With `method: embs`: the small parameter ε and, with
     /// `solver.compare`, the errors against `coupled` and the speed-up.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -192,11 +198,28 @@ pub const DAF_STATIC_SHARE: f64 = 1e-3;
 /// dynamic 7.7e-18 m, a "DAF" of 33.7 between two round-offs).
 pub const DAF_STATIC_FLOOR: f64 = 1e-9;
 
+/// The smallest static peak, N or N·m, for which a moment, shear or
+/// reaction record gets a DAF: a micronewton is round-off beside any axle
+/// load (issue 40.1: section forces and reactions have a static reference
+/// too).
+pub const DAF_STATIC_FORCE_FLOOR: f64 = 1e-6;
+
+/// The static floor of `quantity`'s DAF in its unit.
+fn daf_static_floor(quantity: Quantity) -> f64 {
+    match quantity {
+        Quantity::BridgeMoment | Quantity::BridgeShear | Quantity::BridgeReaction => {
+            DAF_STATIC_FORCE_FLOOR
+        }
+        _ => DAF_STATIC_FLOOR,
+    }
+}
+
 /// Static reference used for DAFs.
 pub const STATIC_REFERENCE: &str = "quasi-static crossing of the same wheels with their static \
 loads on level ground (moving-force loads, or the vehicle's static contact forces), deflection \
 from the full finite-element stiffness via influence lines (no inertia, no modal truncation), \
-at the same point and times";
+and bending moments, shears and support reactions exact for point loads on the beam's mesh, at \
+the same point and times";
 
 /// Static reference used for DAFs on a plate deck.
 pub const STATIC_REFERENCE_PLATE: &str = "quasi-static crossing of the same wheels with their \
@@ -288,7 +311,7 @@ impl Summary {
                     .as_ref()
                     .filter(|s| {
                         s.value.abs() >= DAF_STATIC_SHARE * max_abs.value.abs()
-                            && s.value.abs() >= DAF_STATIC_FLOOR
+                            && s.value.abs() >= daf_static_floor(column.quantity)
                     })
                     .filter(|s| s.value != 0.0)
                     .map(|s| max_abs.value.abs() / s.value.abs());
@@ -360,6 +383,11 @@ impl Summary {
             } else {
                 Vec::new()
             },
+            envelope_peaks: history
+                .envelope
+                .as_ref()
+                .map(super::envelopes::envelope_peaks)
+                .unwrap_or_default(),
             embs: None,
             imported_model: None,
             advice: Vec::new(),

@@ -190,7 +190,15 @@ envelopes: {quantities: [bridge_displacement, bridge_moment, bridge_shear, bridg
 fn envelope_at_a_node_equals_the_recorded_extremes() {
     let outcome = run_yaml(&envelope_scene());
     let envelope = outcome.history.envelope.as_ref().expect("envelope");
-    assert_eq!(envelope.x.len(), 21, "every node of 20 elements");
+    // Every node of 20 elements, and the static peak section of the span
+    // (one moving force: mid-span, a node already).
+    for node in 0..=20 {
+        let x = L * node as f64 / 20.0;
+        assert!(
+            envelope.x.iter().any(|&p| (p - x).abs() < 1e-9),
+            "node at {x} m"
+        );
+    }
     let node = envelope
         .x
         .iter()
@@ -263,11 +271,19 @@ fn envelopes_csv_is_written() {
     let text = std::fs::read_to_string(scratch.path("envelopes.csv")).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();
-    assert!(
-        header.starts_with("x [m],bridge_displacement_max [m],bridge_displacement_max_time [s]")
-    );
+    assert!(header.starts_with(
+        "x [m],side,support,bridge_displacement_max [m],bridge_displacement_max_time [s]"
+    ));
     assert!(header.contains("bridge_moment_max [N*m]") && header.contains("bridge_shear_min [N]"));
     assert!(header.contains("bridge_acceleration_max [m/s^2]"));
+    // Static envelopes and per-point DAFs where the quantity has a static
+    // part (issue 40.2), none for accelerations.
+    for name in ["bridge_displacement", "bridge_moment", "bridge_shear"] {
+        assert!(header.contains(&format!("{name}_static_max")), "{name}");
+        assert!(header.contains(&format!("{name}_daf")), "{name}");
+    }
+    assert!(!header.contains("bridge_acceleration_static"));
+    // The 21 nodes (the span's peak section, mid-span, is one of them).
     assert_eq!(lines.count(), 21);
 }
 
@@ -334,13 +350,15 @@ envelopes: {quantities: [bridge_moment], points: 9}
     assert!(e1 < 1e-3 && e2 < 1e-3);
     let envelope = outcome.history.envelope.as_ref().unwrap();
     let extremes = &envelope.columns[0].extremes;
+    let at = |x: f64| envelope.x.iter().rposition(|&p| p == x).unwrap();
     assert_eq!(
-        extremes[4].min, got_support,
+        extremes[at(20.0)].min,
+        got_support,
         "envelope at the support (x = 20 m)"
     );
-    assert_eq!(extremes[2].max, got_span, "envelope at x = 10 m");
+    assert_eq!(extremes[at(10.0)].max, got_span, "envelope at x = 10 m");
     // The load stands at L/√3 = 11.55 m when the support moment peaks.
-    assert!((extremes[4].min_position - l / 3.0f64.sqrt()).abs() < 0.02);
+    assert!((extremes[at(20.0)].min_position - l / 3.0f64.sqrt()).abs() < 0.02);
 }
 
 /// Issue 40.1: support reactions that balance. A 2 × 30 m continuous beam
@@ -531,4 +549,204 @@ record:
             "{modes} modes: the shear jump is not the reaction: {jump} N"
         );
     }
+}
+
+/// Issue 40.1: reactions and section forces have a static reference and a
+/// DAF, as displacements do. Two equal spans L = 20 m under one 100 kN force
+/// at 1 m/s: the static columns equal the closed form at every sample — the
+/// three-moment equation with P at a in span 1 (b = L − a) gives
+/// M_B = −P a b (L + a)/(4 L²), R_A = P b/L + M_B/L, R_C = M_B/L,
+/// R_B = P − R_A − R_C, mirrored in span 2 (Ghali & Neville, Structural
+/// Analysis, continuous beams) — to 1e-9 of P (exact for point loads on the
+/// mesh: round-off only); and at this near-static speed each DAF is within
+/// 1 % of 1.
+#[test]
+fn reactions_and_moments_have_a_static_reference_and_a_daf() {
+    let outcome = run_yaml(
+        "name: statics
+bridge: {type: beam, spans: [20.0, 20.0], bending_stiffness: 8.0e9, mass_per_length: 2000.0, modes: {count: 6}, damping: {type: modal, ratio: 0.02}}
+vehicles: [{type: moving_force, loads: [100.0e3], speed: 1.0}]
+solver: {time_step: 0.01, free_vibration: 0.0}
+record:
+  - {name: ra, quantity: bridge_reaction, x: 0.0}
+  - {name: rb, quantity: bridge_reaction, x: 20.0}
+  - {name: rc, quantity: bridge_reaction, x: 40.0}
+  - {name: mb, quantity: bridge_moment, x: 20.0}
+  - {name: vb_left, quantity: bridge_shear, x: 20.0, side: left}
+",
+    );
+    let (p, l) = (100.0e3, 20.0);
+    // (R_A, R_B, R_C, M_B, V_B⁻) under P at ξ.
+    let closed = |xi: f64| -> [f64; 5] {
+        if !(0.0..=2.0 * l).contains(&xi) {
+            return [0.0; 5];
+        }
+        let mirrored = xi > l;
+        let a = if mirrored { 2.0 * l - xi } else { xi };
+        let b = l - a;
+        let mb = -p * a * b * (l + a) / (4.0 * l * l);
+        let near = p * b / l + mb / l;
+        let far = mb / l;
+        let middle = p - near - far;
+        let (ra, rc) = if mirrored { (far, near) } else { (near, far) };
+        // V just left of B: R_A minus the load when it is in span 1.
+        let v_left = ra - if xi < l { p } else { 0.0 };
+        [ra, middle, rc, mb, v_left]
+    };
+    let statics = |name: &str| -> &[f64] {
+        outcome
+            .history
+            .columns
+            .iter()
+            .find(|c| c.name == name)
+            .and_then(|c| c.static_values.as_deref())
+            .unwrap_or_else(|| panic!("{name} has no static column"))
+    };
+    let names = ["ra", "rb", "rc", "mb", "vb_left"];
+    let mut worst = [0.0_f64; 5];
+    for (i, &t) in outcome.history.time.iter().enumerate() {
+        let xi = t * 1.0;
+        // The shear left of B jumps as the load passes B.
+        let near_b = (xi - l).abs() < 1e-6;
+        let expected = closed(xi);
+        for (k, name) in names.iter().enumerate() {
+            if k == 4 && near_b {
+                continue;
+            }
+            let scale = if k == 3 { p * l } else { p };
+            worst[k] = worst[k].max((statics(name)[i] - expected[k]).abs() / scale);
+        }
+    }
+    eprintln!("worst static error / P (P L for M_B): {worst:?}");
+    assert!(worst.iter().all(|&e| e < 1e-9), "{worst:?}");
+    for name in names {
+        let q = outcome
+            .summary
+            .quantities
+            .iter()
+            .find(|q| q.name == name)
+            .unwrap();
+        let daf = q.daf.unwrap_or_else(|| panic!("{name}: no DAF"));
+        assert!((daf - 1.0).abs() < 0.01, "{name}: DAF {daf}");
+        assert!(q.static_max_abs.is_some(), "{name}: no static peak");
+    }
+}
+
+/// Issue 40.2: envelopes engineers can read. A simply supported span
+/// L = 20 m under two equal axles P at d = 4 m, crossing slowly: the
+/// absolute maximum moment is P (L − d/2)²/(2L) under an axle at
+/// x = L/2 ± d/4 = 9 or 11 m (Barré's theorem; e.g. Hibbeler, Structural
+/// Analysis, §6.7), between the nodes of a 21-element mesh (every
+/// 0.952 m), where a node-only envelope reads it low. The
+/// envelope holds that section, its static envelope equals the closed form
+/// to 1e-9 of it (exact for point loads, the axle exactly over the section
+/// at the passing instant), and `summary.json`'s peak reports it.
+#[test]
+fn envelope_holds_the_absolute_maximum_moment_section() {
+    let outcome = run_yaml(
+        "name: barre
+bridge: {type: beam, spans: [20.0], bending_stiffness: 8.0e9, mass_per_length: 2000.0, elements_per_span: 21, modes: {count: 8}, damping: {type: modal, ratio: 0.02}}
+vehicles: [{type: moving_force, loads: [100.0e3, 100.0e3], axle_spacings: [4.0], speed: 1.0}]
+solver: {time_step: 0.01, free_vibration: 0.0}
+envelopes: {quantities: [bridge_moment, bridge_shear]}
+",
+    );
+    let (p, l, d) = (100.0e3_f64, 20.0_f64, 4.0_f64);
+    let exact = p * (l - d / 2.0).powi(2) / (2.0 * l);
+    let envelope = outcome.history.envelope.as_ref().unwrap();
+    let moment = &envelope.columns[0];
+    let (best, x) = envelope
+        .x
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| (moment.statics[i].max, x))
+        .fold((f64::MIN, 0.0), |a, b| if b.0 > a.0 { b } else { a });
+    eprintln!("static peak {best:.3} at x = {x:.6} m; closed form {exact:.3} at 9 or 11 m");
+    assert!((best - exact).abs() < 1e-9 * exact, "{best} vs {exact}");
+    assert!(
+        (x - (l / 2.0 - d / 4.0)).abs() < 1e-4 || (x - (l / 2.0 + d / 4.0)).abs() < 1e-4,
+        "peak section {x}"
+    );
+    // The nodes either side read low: the section is needed.
+    let node_best = (0..=21)
+        .map(|k| l * k as f64 / 21.0)
+        .filter_map(|xn| envelope.x.iter().position(|&p| (p - xn).abs() < 1e-9))
+        .map(|i| moment.statics[i].max)
+        .fold(f64::MIN, f64::max);
+    assert!(
+        node_best < exact * (1.0 - 1e-4),
+        "a node holds the peak: {node_best}"
+    );
+    // The summary's peak is the envelope's, with its point and DAF ~ 1.
+    let peak = outcome
+        .summary
+        .envelope_peaks
+        .iter()
+        .find(|e| e.quantity == "bridge_moment")
+        .expect("the moment's peak in the summary");
+    assert_eq!(
+        peak.max.value,
+        moment
+            .extremes
+            .iter()
+            .map(|e| e.max)
+            .fold(f64::MIN, f64::max)
+    );
+    let daf = peak.max.daf.expect("a DAF at the peak");
+    assert!((daf - 1.0).abs() < 0.01, "DAF {daf}");
+    assert!((peak.max.value - exact).abs() < 0.01 * exact);
+    // The pinned ends' moments are round-off: no DAF there.
+    assert_eq!(moment.daf(0), None, "DAF of a round-off moment");
+}
+
+/// Issue 40.2: both sides of an interior support are envelope points. Two
+/// spans of 20 m, one force P crossing slowly: just left of the middle
+/// support the shear's extremes are R_A − P at its most negative, with R_A
+/// from the three-moment equation, and just right of it its most positive;
+/// the two static envelopes there equal the closed forms, swept here over
+/// 200,000 load positions, to 1e-6 of P.
+#[test]
+fn shear_envelope_has_both_sides_of_an_interior_support() {
+    let outcome = run_yaml(
+        "name: sides
+bridge: {type: beam, spans: [20.0, 20.0], bending_stiffness: 8.0e9, mass_per_length: 2000.0, modes: {count: 6}, damping: {type: modal, ratio: 0.02}}
+vehicles: [{type: moving_force, loads: [100.0e3], speed: 1.0}]
+solver: {time_step: 0.01, free_vibration: 0.0}
+envelopes: {quantities: [bridge_shear], points: 9}
+",
+    );
+    let (p, l) = (100.0e3, 20.0);
+    let envelope = outcome.history.envelope.as_ref().unwrap();
+    let rows: Vec<usize> = (0..envelope.x.len())
+        .filter(|&i| envelope.x[i] == l)
+        .collect();
+    assert_eq!(rows.len(), 2, "the middle support twice: {:?}", envelope.x);
+    assert_eq!(envelope.side[rows[0]], vbi::scene::Side::Left);
+    assert_eq!(envelope.side[rows[1]], vbi::scene::Side::Right);
+    assert!(envelope.support[rows[0]] && envelope.support[rows[1]]);
+    // Closed form (three-moment equation): P at a in span 1, b = L − a:
+    // M_B = −P a b (L + a)/(4L²), R_A = P b/L + M_B/L; V(B⁻) = R_A − P.
+    // P in span 2 at distance c from B: M_B = −P c e (L + e)/(4L²), e = L − c,
+    // V(B⁺) = P e/L − M_B/L (the right span's left reaction, with M_B).
+    let mut left_min = f64::MAX;
+    let mut right_max = f64::MIN;
+    for k in 0..=200_000 {
+        let a = l * k as f64 / 200_000.0;
+        let b = l - a;
+        let mb = -p * a * b * (l + a) / (4.0 * l * l);
+        left_min = left_min.min(p * b / l + mb / l - p);
+        let (c, e) = (a, b);
+        let mb2 = -p * c * e * (l + e) / (4.0 * l * l);
+        right_max = right_max.max(p * e / l - mb2 / l);
+    }
+    let shear = &envelope.columns[0];
+    let (got_left, got_right) = (shear.statics[rows[0]].min, shear.statics[rows[1]].max);
+    eprintln!(
+        "V(B-) static min {got_left:.3} vs {left_min:.3}; V(B+) max {got_right:.3} vs {right_max:.3}"
+    );
+    assert!((got_left - left_min).abs() < 1e-6 * p);
+    assert!((got_right - right_max).abs() < 1e-6 * p);
+    // The dynamic envelopes at this speed are within 1 % of P of them.
+    assert!((shear.extremes[rows[0]].min - left_min).abs() < 0.01 * p);
+    assert!((shear.extremes[rows[1]].max - right_max).abs() < 0.01 * p);
 }
