@@ -177,6 +177,10 @@ fn draw_history_plot(
     } else {
         history
     };
+    // The crossing fills the time axis: a long approach (a spectrum's
+    // run-in) is left out of the picture, not of history.csv (issue 40.7).
+    let first = approach_end(scenario, &history.time);
+    let time = &history.time[first..];
     // Panels in the order their kind first appears; one per (quantity, unit).
     let mut keys: Vec<(Quantity, &str)> = Vec::new();
     for c in &history.columns {
@@ -206,8 +210,8 @@ fn draw_history_plot(
                     .iter()
                     .map(|&i| Series {
                         label: &history.columns[i].name,
-                        x: &history.time,
-                        y: &history.columns[i].values,
+                        x: time,
+                        y: history.columns[i].values.get(first..).unwrap_or_default(),
                     })
                     .collect(),
                 references: columns
@@ -221,8 +225,8 @@ fn draw_history_plot(
                                 of,
                                 line: Series {
                                     label: &static_labels[i],
-                                    x: &history.time,
-                                    y: s,
+                                    x: time,
+                                    y: s.get(first..).unwrap_or_default(),
                                 },
                             })
                     })
@@ -246,5 +250,35 @@ fn draw_history_plot(
     } else {
         plot::history_chart
     };
-    chart(path, &title, "time (s)", &panels, &bridge_markers(scenario))
+    let axis = match time.first() {
+        Some(&t) if first > 0 => {
+            format!("time (s); the approach before {t:.2} s is in history.csv")
+        }
+        _ => "time (s)".to_owned(),
+    };
+    let markers: Vec<Marker> = bridge_markers(scenario)
+        .into_iter()
+        .filter(|m| time.first().is_none_or(|&t| m.x >= t))
+        .collect();
+    chart(path, &title, &axis, &panels, &markers)
+}
+
+/// The first sample the history plot shows: a little before the first
+/// vehicle reaches the bridge when the approach before it is more than a
+/// quarter of the run (a spectrum's run-in of 4.5 s in an 8.4 s run), else
+/// the first. The margin is a twentieth of the rest of the run.
+fn approach_end(scenario: &Scenario, time: &[f64]) -> usize {
+    let (Some(&start), Some(&end)) = (time.first(), time.last()) else {
+        return 0;
+    };
+    let entry = scenario
+        .vehicles
+        .iter()
+        .map(|v| v.entry_time())
+        .fold(f64::INFINITY, f64::min);
+    if !(entry.is_finite() && entry - start > 0.25 * (end - start)) {
+        return 0;
+    }
+    let from = entry - (end - entry) / 20.0;
+    time.partition_point(|&t| t < from)
 }
