@@ -651,3 +651,210 @@ fn mutated_golden_records_never_panic_or_pass_a_forged_value() {
     assert!(runs > 100, "only {runs} inputs were tried");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Bytes mutated the way a damaged or forged binary file is: bits flipped,
+/// a range cut or duplicated, the file truncated, a length field's bytes
+/// set to their extremes; with `rechecksum` the file's trailing 8-byte
+/// checksum is then recomputed (a forger who knows the format), so the
+/// checks past it are reached.
+fn mutate_bytes(good: &[u8], rng: &mut Rng, rechecksum: bool) -> Vec<u8> {
+    let mut b = if rechecksum {
+        good[..good.len().saturating_sub(8)].to_vec()
+    } else {
+        good.to_vec()
+    };
+    for _ in 0..1 + rng.below(3) {
+        if b.is_empty() {
+            break;
+        }
+        match rng.below(6) {
+            0 | 1 => {
+                let at = rng.below(b.len());
+                b[at] ^= 1 << rng.below(8);
+            }
+            2 => b.truncate(rng.below(b.len())),
+            3 => {
+                let a = rng.below(b.len());
+                let end = (a + rng.below(64)).min(b.len());
+                let copy = b[a..end].to_vec();
+                b.splice(a..a, copy);
+            }
+            4 => {
+                let at = rng.below(b.len());
+                let end = (at + 8).min(b.len());
+                let fill = if rng.below(2) == 0 { 0xff } else { 0x00 };
+                b[at..end].fill(fill);
+            }
+            _ => {
+                let a = rng.below(b.len());
+                let end = (a + rng.below(64)).min(b.len());
+                b.drain(a..end);
+            }
+        }
+    }
+    if rechecksum {
+        let mut h = vbi::bridge::eigen::cache::Hasher::default();
+        h.bytes(&b);
+        b.extend_from_slice(&h.finish().to_le_bytes());
+    }
+    b
+}
+
+/// Issue 39.6: the modes cache and the shard parts are files from disk
+/// too. A cache file mutated (bits, cuts, truncation, a forged checksum
+/// over changed bytes) never panics and never hands back modes that are not
+/// the solve's: a file that passes every re-check gives the fresh
+/// eigenvalues to 1e-10 (a change in an entry's last bits is still a valid
+/// mode), a refused one the fresh solve bit for bit. A shard part mutated
+/// like a scene (numbers at their edges, tokens, cuts, splices) never
+/// panics the merge, and a refusal names no raw control character.
+#[test]
+fn mutated_caches_and_parts_never_panic_or_pass_unchecked() {
+    use vbi::bridge::eigen::cache::{CacheOutcome, ModesCache};
+    let timed: Option<u64> = std::env::var("VBI_FUZZ_SECONDS")
+        .ok()
+        .and_then(|v| v.parse().ok());
+    let (seconds, inputs) = match timed {
+        Some(s) => (s, u64::MAX),
+        None => (DEFAULT_CAP_SECONDS, 300),
+    };
+    let seed: u64 = std::env::var("VBI_FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x39_06);
+    let mut rng = Rng(seed | 1);
+    let scratch = crate::support::Scratch::new("fuzz", "caches_parts");
+    // The cache: a small generated viaduct's 12 lowest modes.
+    let params = vbi::generate::viaduct::ViaductParams {
+        spans: 2,
+        span_length: 6.0,
+        approach_length: 1.2,
+        rail_divisions: 1,
+        pier_elements: 2,
+        ..Default::default()
+    };
+    let pencil = vbi::generate::reduce(&vbi::generate::viaduct::assemble(&params).unwrap())
+        .pencil()
+        .unwrap();
+    let cache = ModesCache {
+        folder: scratch.path("cache"),
+        kind: "fe_import".into(),
+    };
+    let (fresh, _) = pencil.lowest_cached(12, &cache).unwrap();
+    let path = cache.path(cache.key(&pencil, 12));
+    let good_cache = fs::read(&path).unwrap();
+    // The parts: a two-shard Monte Carlo study.
+    let study = "name: mc-fuzz
+bridge: {type: beam, spans: [20.0], bending_stiffness: 3.2423e9, mass_per_length: 2000.0, elements_per_span: 10, modes: {count: 4}, damping: {type: modal, ratio: 0.02}}
+vehicles:
+  - {type: oscillator, sprung_mass: 4000.0, unsprung_mass: 1000.0, stiffness: 4.0e6, damping: 2.53e4, speed: 25.0}
+contact: {type: elastic, stiffness: 4.0e8}
+surface: {type: random, coefficient: 2.56e-4, sampling_length: 40.0, terms: 40, seed: 3}
+solver: {method: lcp, time_step: 2.0e-3, free_vibration: 0.02}
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 10.0}
+study: {type: monte_carlo, samples: 4, seed: 2}
+";
+    fs::write(scratch.path("mc.yaml"), study).unwrap();
+    for k in 1..=2 {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+            .args([
+                "run",
+                "mc.yaml",
+                "-q",
+                "--shard",
+                &format!("{k}/2"),
+                "--out",
+                "parts",
+            ])
+            .current_dir(scratch.dir())
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let parts: Vec<String> = (1..=2)
+        .map(|k| fs::read_to_string(scratch.path(&format!("parts/part-{k}-of-2.json"))).unwrap())
+        .collect();
+    let start = Instant::now();
+    let (mut tried, mut cache_hits, mut merged) = (0u64, 0u64, 0u64);
+    while tried < inputs && start.elapsed() < Duration::from_secs(seconds) {
+        tried += 1;
+        // One cache file.
+        let forged = rng.below(2) == 0;
+        let damaged = mutate_bytes(&good_cache, &mut rng, forged);
+        fs::write(&path, &damaged).unwrap();
+        let result = catch_unwind(AssertUnwindSafe(|| pencil.lowest_cached(12, &cache)));
+        let Ok(result) = result else {
+            let saved = scratch.path(&format!("cache-crash-{tried}.bin"));
+            fs::write(&saved, &damaged).unwrap();
+            panic!(
+                "the modes cache panicked on a mutated file (saved {})",
+                saved.display()
+            );
+        };
+        let (pairs, outcome) = result.unwrap();
+        assert_eq!(pairs.eigenvalues.len(), fresh.eigenvalues.len());
+        match outcome {
+            CacheOutcome::Rejected(_) => assert!(
+                pairs.eigenvalues == fresh.eigenvalues,
+                "a refused file did not give the fresh solve"
+            ),
+            _ => {
+                cache_hits += 1;
+                for (a, b) in pairs.eigenvalues.iter().zip(&fresh.eigenvalues) {
+                    assert!(
+                        (a - b).abs() <= 1e-10 * b.abs(),
+                        "a mutated cache file was used: eigenvalue {a} against {b}"
+                    );
+                }
+            }
+        }
+        // One part of the two mutated (as text, like a scene).
+        let k = rng.below(2);
+        let mutated = mutate(&parts[k], &parts, &mut rng);
+        let dir = scratch.path("mutated");
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        let paths: Vec<PathBuf> = (0..2)
+            .map(|i| {
+                let p = dir.join(format!("part-{}-of-2.json", i + 1));
+                fs::write(&p, if i == k { &mutated } else { &parts[i] }).unwrap();
+                p
+            })
+            .collect();
+        let options = vbi::scenario::LoadOptions::default();
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            vbi::study::shard::merge(&paths, &options)
+        }));
+        match result {
+            Err(_) => {
+                let saved = scratch.path(&format!("part-crash-{tried}.json"));
+                fs::write(&saved, &mutated).unwrap();
+                panic!(
+                    "the merge panicked on a mutated part (saved {})",
+                    saved.display()
+                );
+            }
+            Ok(Ok(_)) => merged += 1,
+            Ok(Err(e)) => {
+                let text = e.to_string();
+                assert!(
+                    !text
+                        .chars()
+                        .any(|c| c.is_control() && c != '\n' && c != '\t'),
+                    "a raw control character in the refusal: {text:?}"
+                );
+            }
+        }
+    }
+    eprintln!(
+        "caches and parts: {tried} inputs each in {:.1} s; {cache_hits} cache files passed \
+         every re-check (same modes), {merged} mutated parts merged",
+        start.elapsed().as_secs_f64()
+    );
+    assert!(tried > 0);
+}
