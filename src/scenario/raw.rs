@@ -13,6 +13,7 @@ use serde::Deserialize;
 
 use crate::scene::{PlateEdges, PlateMoment, Quantity, SolverMethod, Terms};
 
+mod aashto;
 mod bridge;
 mod envelopes;
 mod fe_import;
@@ -28,6 +29,7 @@ mod surface;
 mod truck;
 pub mod units;
 mod vehicle;
+pub use self::aashto::*;
 pub use self::bridge::*;
 pub use self::envelopes::*;
 pub use self::fe_import::*;

@@ -6,6 +6,7 @@
 
 use serde::Serialize;
 
+pub mod aashto;
 mod bridge;
 pub mod dof_names;
 mod fe_import;

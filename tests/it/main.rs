@@ -58,6 +58,7 @@ mod plan_order;
 mod plate;
 mod plate_truck;
 mod plots;
+mod presets;
 mod profile_entrance;
 mod rail_car;
 mod regress;
