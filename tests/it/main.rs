@@ -25,6 +25,7 @@ mod cli;
 mod confined;
 mod converge;
 mod csv_headers;
+mod documented_defaults;
 mod embs;
 mod event_reference_oracle;
 mod fe_import;

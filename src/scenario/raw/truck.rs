@@ -17,10 +17,11 @@ pub struct H20TruckRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,

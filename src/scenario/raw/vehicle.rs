@@ -135,11 +135,12 @@ pub struct MovingForceRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -200,11 +201,12 @@ pub struct OscillatorRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the wheel reaches the bridge entrance, s. Default 0.
+    /// Time at which the wheel reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
