@@ -23,20 +23,26 @@ pub enum StarterBridge {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 #[value(rename_all = "snake_case")]
 pub enum StarterVehicle {
-    /// Constant axle loads (no vehicle dynamics).
+    /// Constant axle loads (no vehicle dynamics); the starter's two 100 kN
+    /// axles 4 m apart are an example, from no standard (AASHTO's trucks are
+    /// `type: aashto_h20_44` and `aashto_hs20_44` in the scene).
     MovingForce,
     /// A sprung mass on a spring (the Yang & Yau 1997 benchmark).
     Oscillator,
-    /// The AASHTO H20-44 two-axle truck (the plate paper).
+    /// The plate paper's 7-DOF two-axle truck, which it calls H20-44 (its
+    /// Section 2.2; static wheel forces 58.81 kN front, 32.42 kN rear, its
+    /// Section 3.2): not AASHTO's H20-44 axle loads of 35.6 and 142.3 kN.
     H20_44,
-    /// The LCP paper's 10-DOF rail car.
+    /// The LCP paper's 10-DOF rail car (its Section 5.2, Table 2).
     RailCar,
-    /// A train of rail cars.
+    /// A train of the LCP paper's rail cars (Table 2).
     Train,
-    /// The EMBS paper's 3D car (needs a 3D beam: the starter gives one).
+    /// The EMBS paper's 3D car, AVE-S103 (its Table 2; needs a 3D beam: the
+    /// starter gives one).
     #[value(name = "train_3d")]
     Train3d,
-    /// An EN 1991-2 HSLM train of moving axle loads (with the resonance check).
+    /// An HSLM-A train of moving axle loads (EN 1991-2:2003 Annex E, Table
+    /// E.1), with the resonance check.
     Hslm,
 }
 
@@ -187,7 +193,8 @@ fn bridge_block(bridge: StarterBridge, vehicle: StarterVehicle) -> &'static str 
 fn vehicle_block(bridge: StarterBridge, vehicle: StarterVehicle) -> &'static str {
     match vehicle {
         StarterVehicle::MovingForce => {
-            "vehicles:\n  - type: moving_force\n    loads: [100000.0, 100000.0]   # N, per axle\n    \
+            "vehicles:\n  - type: moving_force        # an example; AASHTO's trucks: aashto_h20_44, aashto_hs20_44\n    \
+             loads: [100000.0, 100000.0]   # N, per axle\n    \
              axle_spacings: [4.0]           # m between the axles\n    speed: 80 km/h\n"
         }
         StarterVehicle::Oscillator => {
@@ -196,18 +203,20 @@ fn vehicle_block(bridge: StarterBridge, vehicle: StarterVehicle) -> &'static str
              speed: 100 km/h\n"
         }
         StarterVehicle::H20_44 if bridge == StarterBridge::Plate => {
-            "vehicles:\n  - type: h20_44            # the AASHTO H20-44 truck (the plate paper's data)\n    \
+            "vehicles:\n  - type: h20_44            # the plate paper's 7-DOF truck (Sec. 2.2; 58.81/32.42 kN\n    \
+             #   per front/rear wheel, Sec. 3.2): not AASHTO's H20-44 loads (aashto_h20_44)\n    \
              speed: 90 km/h\n    lateral_position: 1.915   # m, right tyres from the deck's y = 0 edge\n"
         }
         StarterVehicle::H20_44 => {
-            "vehicles:\n  - type: h20_44            # the AASHTO H20-44 truck (the plate paper's data)\n    \
+            "vehicles:\n  - type: h20_44            # the plate paper's 7-DOF truck (Sec. 2.2; 58.81/32.42 kN\n    \
+             #   per front/rear wheel, Sec. 3.2): not AASHTO's H20-44 loads (aashto_h20_44)\n    \
              speed: 90 km/h\n"
         }
         StarterVehicle::RailCar => {
             "vehicles:\n  - type: rail_car          # the LCP paper's 10-DOF car (Table 2)\n    speed: 160 km/h\n"
         }
         StarterVehicle::Train => {
-            "vehicles:\n  - type: train             # rail cars coupled in a row\n    \
+            "vehicles:\n  - type: train             # the LCP paper's rail cars (Table 2) coupled in a row\n    \
              count: 3\n    car_spacing: 25.0        # m, front wheelset to front wheelset\n    \
              speed: 160 km/h\n"
         }
@@ -215,7 +224,7 @@ fn vehicle_block(bridge: StarterBridge, vehicle: StarterVehicle) -> &'static str
             "vehicles:\n  - type: train_3d          # the EMBS paper's 3D car (Table 2)\n    speed: 200 km/h\n"
         }
         StarterVehicle::Hslm => {
-            "vehicles:\n  - {type: hslm, model: A1, speed: 200 km/h}   # EN 1991-2 Annex E\n"
+            "vehicles:\n  - {type: hslm, model: A1, speed: 200 km/h}   # EN 1991-2 Annex E, Table E.1\n"
         }
     }
 }

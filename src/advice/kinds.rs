@@ -136,7 +136,7 @@ pub const AUTOMATIC_MODES_UNVERIFIED: Kind = Kind {
           modes above the cut (rail displacement 3.7 % off on the shipped \
           viaduct-2span-axle-loads)",
     fix: "check the run with `vbi converge`, set `bridge.modes`, or let the load enter over \
-          `bridge.entry_length` (default 3 m)",
+          `bridge.entry_length` (leave it out for its default, docs/format.md)",
     example: "an imported viaduct with `entry_length: 0`",
 };
 

@@ -12,8 +12,7 @@
 use crate::bridge::{BridgeError, ModalBridge, ModeRequest};
 use crate::scene::Bridge;
 
-/// The floor of the filter, Hz (EN 1990 A2.4.4.2.1(4)).
-pub const FLOOR_HZ: f64 = 30.0;
+pub use crate::scene::automatic::{FLOOR_HZ, FUNDAMENTAL_FACTOR};
 
 /// The default highest mode frequency of a bridge acceleration, Hz: the
 /// greater of 30 Hz, 1.5 f₁ and f₃ (EN 1990 A2.4.4.2.1(4)), from the
@@ -22,7 +21,7 @@ pub const FLOOR_HZ: f64 = 30.0;
 pub fn default_filter(lowest: &[f64]) -> f64 {
     let first = lowest.first().copied().unwrap_or(0.0);
     let third = lowest.get(2).or(lowest.last()).copied().unwrap_or(0.0);
-    FLOOR_HZ.max(1.5 * first).max(third)
+    FLOOR_HZ.max(FUNDAMENTAL_FACTOR * first).max(third)
 }
 
 /// The bridge's own lowest three natural frequencies, Hz (fewer when its

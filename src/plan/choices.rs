@@ -493,9 +493,10 @@ pub(crate) fn plan(
     } else {
         format!(
             "automatic: {} steps per period of the highest frequency kept or excited, at \
-             least 200 steps over the shortest crossing, and for deck accelerations a phase \
+             least {} steps over the shortest crossing, and for deck accelerations a phase \
              drift of their highest mode below {} rad over the run",
             content::STEPS_PER_PERIOD,
+            content::CROSSING_STEPS,
             content::PHASE_BUDGET
         )
     };

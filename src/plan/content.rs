@@ -21,19 +21,10 @@ use crate::bridge::ModalBridge;
 use crate::scene::{Contact, Surface, Vehicle};
 use crate::vehicle::{VehicleModel, WheelKind};
 
-/// Cut-off frequency over the highest excitation frequency.
-pub const SAFETY: f64 = 4.0;
-/// Fewest modes kept per span.
-pub const MODES_PER_SPAN: usize = 5;
-/// Mode families a plate deck's automatic cut-off keeps at least
-/// [`MODES_PER_SPAN`] per span of: bending, torsion, transverse bending.
-pub const PLATE_FAMILIES: usize = 3;
-/// A wheel (unsprung) mass above this share of the lightest span's mass
-/// makes the automatic choice keep twice [`minimum_modes`]. Measured on the
-/// shipped lcp-fig4-permanent scene (wheel mass 0.2 m L): its contact force
-/// was 0.64 % from the converged answer with 5 modes and 0.25 % with 10; the
-/// lcp-oscillator scenes (0.025 m L) are within 0.3 % with 5.
-pub const HEAVY_WHEEL_RATIO: f64 = 0.1;
+pub use crate::scene::automatic::{
+    CROSSING_STEPS, HEAVY_WHEEL_RATIO, MODES_PER_SPAN, PHASE_BUDGET, PLATE_FAMILIES, SAFETY,
+    STEPS_PER_PERIOD,
+};
 
 /// Whether a wheel's own mass (the mass on its contact DOF: an oscillator's
 /// unsprung mass, a rail car's wheelset; 0 for the truck's massless tyre
@@ -50,14 +41,6 @@ pub fn heavy_wheels(vehicles: &[Vehicle], bridge: &crate::scene::Bridge, gravity
         })
     })
 }
-
-/// Steps per period of the highest frequency, for the default time step.
-/// Newmark's average acceleration errs by about (ωΔt)²/12 in a mode's
-/// period; measured with `vbi converge` on every shipped scene (issue 9),
-/// 20 steps left deck accelerations, Hertz forces and plate accelerations
-/// 0.5–0.84 % from the converged answer (second order in Δt); 30 puts every
-/// quantity but the impulsive rigid-contact ones within the 0.5 % target.
-pub const STEPS_PER_PERIOD: f64 = 30.0;
 
 /// One source of excitation and its frequency.
 #[derive(Debug, Clone, PartialEq)]
@@ -261,19 +244,15 @@ pub fn mode_reason(
 }
 
 /// The automatic time step: [`STEPS_PER_PERIOD`] steps per period of the
-/// highest frequency kept or excited, and at least 200 steps over the
-/// shortest crossing, s.
+/// highest frequency kept or excited, and at least [`CROSSING_STEPS`]
+/// steps over the shortest crossing, s.
 pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossing: f64) -> f64 {
     let top = excitations
         .iter()
         .map(|e| e.frequency)
         .fold(highest_mode, f64::max);
-    (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / 200.0)
+    (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / CROSSING_STEPS)
 }
-
-/// Phase error, rad, the automatic step allows a deck acceleration's highest
-/// mode to accumulate over a run ([`phase_time_step`]).
-pub const PHASE_BUDGET: f64 = 0.02;
 
 /// The step that keeps the phase of a mode of `frequency` (Hz) accurate over
 /// a run of `duration` (s), s. Newmark's average acceleration lengthens a

@@ -537,6 +537,8 @@ pub(crate) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
             raw::VehicleRaw::H20Truck(_) => 4.0,
             raw::VehicleRaw::RailCar(_) => 4.0,
             raw::VehicleRaw::Hslm(h) => h.model.train().axle_count() as f64,
+            raw::VehicleRaw::AashtoH20(_) => 2.0,
+            raw::VehicleRaw::AashtoHs20(_) => 3.0,
             raw::VehicleRaw::Train(t) => {
                 let cars = t.cars.as_ref().map_or(0, Vec::len) as f64;
                 4.0 * (t.count.map_or(0.0, |n| n as f64) + cars).max(1.0)

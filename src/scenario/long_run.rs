@@ -322,6 +322,8 @@ impl LongRun<'_> {
             Some(V::Train(v)) => v.entry_time.or(v.start_position).is_some(),
             Some(V::Train3d(v)) => v.entry_time.or(v.start_position).is_some(),
             Some(V::Hslm(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(V::AashtoH20(v)) => v.entry_time.or(v.start_position).is_some(),
+            Some(V::AashtoHs20(v)) => v.entry_time.or(v.start_position).is_some(),
             None => true,
         }
     }
@@ -336,6 +338,8 @@ impl LongRun<'_> {
             Some(V::Train(v)) => v.start_position.is_some(),
             Some(V::Train3d(v)) => v.start_position.is_some(),
             Some(V::Hslm(v)) => v.start_position.is_some(),
+            Some(V::AashtoH20(v)) => v.start_position.is_some(),
+            Some(V::AashtoHs20(v)) => v.start_position.is_some(),
             None => false,
         }
     }

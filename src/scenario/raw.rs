@@ -13,6 +13,7 @@ use serde::Deserialize;
 
 use crate::scene::{PlateEdges, PlateMoment, Quantity, SolverMethod, Terms};
 
+mod aashto;
 mod bridge;
 mod envelopes;
 mod fe_import;
@@ -28,6 +29,7 @@ mod surface;
 mod truck;
 pub mod units;
 mod vehicle;
+pub use self::aashto::*;
 pub use self::bridge::*;
 pub use self::envelopes::*;
 pub use self::fe_import::*;
@@ -60,7 +62,7 @@ pub struct ScenarioRaw {
     /// Free text describing the scene and its source.
     #[serde(default)]
     pub description: Option<String>,
-    /// Gravitational acceleration, m/s². Default 9.81.
+    /// Gravitational acceleration, m/s². Default {{DEFAULT_GRAVITY}}.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[schemars(extend("default" = super::resolve::DEFAULT_GRAVITY))]
@@ -207,9 +209,14 @@ pub struct SolverRaw {
     /// unilateral contact (rigid, elastic, Hertz).
     #[serde(default)]
     pub method: Option<SolverMethod>,
-    /// Time step, s. Default: 1 / (20 f_max), f_max the highest bridge mode kept
-    /// or frequency excited (see `bridge.modes`), and at most 1/200 of the
-    /// shortest crossing.
+    /// Time step, s. Default: 1 / ({{STEPS_PER_PERIOD}} f_max), f_max the
+    /// highest bridge mode kept or frequency excited (see `bridge.modes`); at
+    /// most 1/{{CROSSING_STEPS}} of the shortest crossing; with recorded deck
+    /// accelerations, short enough that their highest mode's phase drifts
+    /// less than {{PHASE_BUDGET}} rad over the run (Newmark's period error
+    /// (ωΔt)²/12); under ground motion, at most the record's shortest
+    /// sampling interval. The resolved scenario gives the step and the
+    /// summary says which rule set it.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
@@ -217,7 +224,7 @@ pub struct SolverRaw {
     pub time_step: Option<f64>,
     /// Newmark parameters. Default β = 1/4, γ = 1/2, α = 0 (average
     /// acceleration: unconditionally stable, second order, no numerical
-    /// damping); with rigid contact α = −0.05 (HHT).
+    /// damping); with rigid contact α = {{DEFAULT_RIGID_ALPHA}} (HHT).
     #[serde(default)]
     pub newmark: Option<NewmarkRaw>,
     /// Free-vibration time recorded after the last axle leaves the bridge, s. Default 0.
@@ -229,14 +236,16 @@ pub struct SolverRaw {
     pub free_vibration: Option<f64>,
     /// `method: iterative` only: relative tolerance ε on the contact
     /// displacements between iterations, max|Δw| ≤ ε·max|w| (the plate paper's
-    /// Eq. 32; dimensionless). Default 1e-8.
+    /// Eq. 32; dimensionless). Default {{DEFAULT_TOLERANCE}}.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::iteration_tolerance)]
+    #[schemars(extend("default" = crate::scene::DEFAULT_TOLERANCE))]
     pub tolerance: Option<f64>,
     /// `method: iterative` only: most iterations allowed in one time step
-    /// before the run stops with an error. Default 100.
+    /// before the run stops with an error. Default {{DEFAULT_MAX_ITERATIONS}}.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::max_iterations)]
+    #[schemars(extend("default" = crate::scene::DEFAULT_MAX_ITERATIONS))]
     pub max_iterations: Option<usize>,
     /// `method: embs` only: add the first-order bridge response (the EMBS
     /// paper's Eq. 7) to the zero-order one (Eq. 5). Default true; false
@@ -274,7 +283,7 @@ pub struct NewmarkRaw {
     #[schemars(transform = crate::scene::schema_rules::newmark_gamma)]
     pub gamma: Option<f64>,
     /// HHT α in [−1/3, 0] (dimensionless). Default 0 (plain Newmark), except
-    /// −0.05 with rigid contact when β and γ are not given. A negative α keeps
+    /// {{DEFAULT_RIGID_ALPHA}} with rigid contact when β and γ are not given. A negative α keeps
     /// second order and unconditional stability and damps the highest modes,
     /// which quiets the ringing of wheels held to the surface (rigid contact).
     #[serde(default)]
@@ -313,6 +322,7 @@ pub struct RecordRaw {
     /// quantities and contact forces). Default 1.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub vehicle: Option<usize>,
     /// Wheel number within the vehicle, counted from 1 front to rear
     /// (contact forces); on a train, over the whole train, or within `car`.
@@ -333,7 +343,7 @@ pub struct RecordRaw {
     /// Highest mode frequency a bridge acceleration includes, Hz
     /// (`bridge_acceleration` only). Default, as EN 1990 A2.4.4.2.1(4) and
     /// EN 1991-2 6.4.6.5(3) ask for the deck-acceleration check: the greater
-    /// of 30 Hz, 1.5 f₁ and f₃, the bridge's own first and third natural
+    /// of {{FLOOR_HZ}} Hz, {{FUNDAMENTAL_FACTOR}} f₁ and f₃, the bridge's own first and third natural
     /// frequencies whatever `bridge.modes` keeps. The automatic mode choice
     /// keeps every mode up to it; a `bridge.modes` that keeps fewer draws
     /// the warning `acceleration-filter-above-modes`.

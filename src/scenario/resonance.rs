@@ -14,6 +14,11 @@ pub const MAX_RESONANCE_SPEEDS: usize = 10_000;
 
 /// EN 1991-2 6.4.6.2(1): speeds from 40 m/s.
 pub const DEFAULT_LOWEST_SPEED: f64 = 40.0;
+/// EN 1991-2 6.4.6.2(1): speeds up to 1.2 × the line speed.
+pub const DEFAULT_TOP_SPEED_FACTOR: f64 = 1.2;
+/// The default speed step, km/h (EN 1991-2 6.4.6.2 asks for smaller steps
+/// near resonance: the check refines there).
+pub const DEFAULT_SPEED_STEP_KM_H: f64 = 5.0;
 
 /// `first_frequency`: the bridge's f₁, Hz; `default_filter`: the deck
 /// acceleration's cut-off, Hz, where the check gives none (the planning
@@ -68,10 +73,14 @@ pub(crate) fn resolve_resonance(
         .map_or(DEFAULT_LOWEST_SPEED, |v| v.meters_per_second());
     let to = given
         .and_then(|s| s.to)
-        .map_or(1.2 * line_speed, |v| v.meters_per_second());
+        .map_or(DEFAULT_TOP_SPEED_FACTOR * line_speed, |v| {
+            v.meters_per_second()
+        });
     let step = given
         .and_then(|s| s.step)
-        .map_or(km_h_to_m_s(5.0), |v| v.meters_per_second());
+        .map_or(km_h_to_m_s(DEFAULT_SPEED_STEP_KM_H), |v| {
+            v.meters_per_second()
+        });
     let fine = speed_ok(ck, "study.speeds.from", from)
         & speed_ok(ck, "study.speeds.to", to)
         & speed_ok(ck, "study.speeds.step", step);

@@ -35,8 +35,161 @@ pub fn schema_json() -> String {
     describe_tags(&mut value);
     bare_tags(&mut value);
     unwrap_descriptions(&mut value);
+    fill_constants(&mut value, &documented_constants());
+    limits_defaults(&mut value);
     drop_raw_suffix(&mut value);
     serde_json::to_string_pretty(&value).expect("schema serialises") + "\n"
+}
+
+/// The constants the format's descriptions state, by the name a doc comment
+/// writes between double braces (`Default {{DEFAULT_GRAVITY}}.`): each the
+/// constant the code takes its default from (issue 40.3), so a stated
+/// default cannot drift from the one applied. [`schema_json`] writes their
+/// values in; tests/it/documented_defaults.rs checks that none is left
+/// unfilled and that each is used.
+pub fn documented_constants() -> Vec<(String, String)> {
+    use crate::scene::automatic as auto;
+    let mut table: Vec<(String, String)> = [
+        ("DEFAULT_GRAVITY", number(super::resolve::DEFAULT_GRAVITY)),
+        (
+            "DEFAULT_ELEMENTS_PER_SPAN",
+            super::resolve::DEFAULT_ELEMENTS_PER_SPAN.to_string(),
+        ),
+        (
+            "DEFAULT_RIGID_ALPHA",
+            number(super::resolve::DEFAULT_RIGID_ALPHA),
+        ),
+        ("SAFETY", number(auto::SAFETY)),
+        ("MODES_PER_SPAN", auto::MODES_PER_SPAN.to_string()),
+        ("PLATE_FAMILIES", auto::PLATE_FAMILIES.to_string()),
+        (
+            "PLATE_MODES_PER_SPAN",
+            (auto::MODES_PER_SPAN * auto::PLATE_FAMILIES).to_string(),
+        ),
+        ("HEAVY_WHEEL_RATIO", number(auto::HEAVY_WHEEL_RATIO)),
+        ("STEPS_PER_PERIOD", number(auto::STEPS_PER_PERIOD)),
+        ("CROSSING_STEPS", number(auto::CROSSING_STEPS)),
+        ("PHASE_BUDGET", number(auto::PHASE_BUDGET)),
+        ("FLOOR_HZ", number(auto::FLOOR_HZ)),
+        ("FUNDAMENTAL_FACTOR", number(auto::FUNDAMENTAL_FACTOR)),
+        (
+            "DEFAULT_LONGITUDINAL_TERMS_PER_SPAN",
+            super::bridges::DEFAULT_LONGITUDINAL_TERMS_PER_SPAN.to_string(),
+        ),
+        (
+            "MIN_LONGITUDINAL_TERMS",
+            super::bridges::MIN_LONGITUDINAL_TERMS.to_string(),
+        ),
+        (
+            "DEFAULT_TRANSVERSE_TERMS",
+            super::bridges::DEFAULT_TRANSVERSE_TERMS.to_string(),
+        ),
+        (
+            "DEFAULT_ISOTROPIC_POISSON",
+            number(super::bridges::DEFAULT_ISOTROPIC_POISSON),
+        ),
+        (
+            "DEFAULT_ORTHOTROPIC_POISSON",
+            number(super::bridges::DEFAULT_ORTHOTROPIC_POISSON),
+        ),
+        (
+            "DEFAULT_ENTRY_LENGTH",
+            number(super::fe_import::DEFAULT_ENTRY_LENGTH),
+        ),
+        (
+            "DEFAULT_SHORTEST_WAVELENGTH",
+            number(super::surfaces::DEFAULT_SHORTEST_WAVELENGTH),
+        ),
+        (
+            "DEFAULT_SAMPLING_LENGTHS",
+            number(super::surfaces::DEFAULT_SAMPLING_LENGTHS),
+        ),
+        ("RAIL_BAND_SHORTEST", number(super::surfaces::RAIL_BAND.0)),
+        ("RAIL_BAND_LONGEST", number(super::surfaces::RAIL_BAND.1)),
+        ("ROAD_BAND_SHORTEST", number(super::surfaces::ROAD_BAND.0)),
+        ("ROAD_BAND_LONGEST", number(super::surfaces::ROAD_BAND.1)),
+        ("TERMS_PER_DECADE", number(crate::scene::TERMS_PER_DECADE)),
+        ("MIN_BAND_TERMS", crate::scene::MIN_BAND_TERMS.to_string()),
+        ("DEFAULT_TOLERANCE", number(crate::scene::DEFAULT_TOLERANCE)),
+        (
+            "DEFAULT_MAX_ITERATIONS",
+            crate::scene::DEFAULT_MAX_ITERATIONS.to_string(),
+        ),
+        (
+            "DEFAULT_LOWEST_SPEED",
+            number(super::resonance::DEFAULT_LOWEST_SPEED),
+        ),
+        (
+            "DEFAULT_TOP_SPEED_FACTOR",
+            number(super::resonance::DEFAULT_TOP_SPEED_FACTOR),
+        ),
+        (
+            "DEFAULT_SPEED_STEP_KM_H",
+            number(super::resonance::DEFAULT_SPEED_STEP_KM_H),
+        ),
+        ("DEFAULT_SHOWN", super::sweep::DEFAULT_SHOWN.to_string()),
+        ("MAX_SHOWN", super::sweep::MAX_SHOWN.to_string()),
+    ]
+    .into_iter()
+    .map(|(name, value)| (name.to_owned(), value))
+    .collect();
+    // Every budget of `limits`, by its key: `{{limits.dofs}}`.
+    let limits = serde_json::to_value(crate::scene::Limits::default()).expect("limits serialise");
+    if let Value::Object(map) = limits {
+        for (key, value) in map {
+            if let Some(x) = value.as_f64() {
+                table.push((format!("limits.{key}"), number(x)));
+            }
+        }
+    }
+    table
+}
+
+/// A documented number as people write it: integers below 1e5 whole
+/// (`20`, `10000`), larger and smaller magnitudes in e-notation (`2e9`,
+/// `1e-8`), the rest in Rust's shortest round-trip form (`0.5`, `-0.05`).
+pub fn number(x: f64) -> String {
+    let magnitude = x.abs();
+    if x.fract() == 0.0 && magnitude < 1e5 {
+        format!("{}", x as i64)
+    } else if magnitude >= 1e5 || (magnitude < 1e-3 && x != 0.0) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
+/// The `default` of every `limits` budget: [`crate::scene::Limits`]'s own
+/// default, the one the checks apply.
+fn limits_defaults(value: &mut Value) {
+    let defaults = serde_json::to_value(crate::scene::Limits::default()).expect("limits serialise");
+    let Some(Value::Object(properties)) = value.pointer_mut("/$defs/LimitsRaw/properties") else {
+        return;
+    };
+    for (key, property) in properties.iter_mut() {
+        if let (Some(default), Value::Object(property)) = (defaults.get(key), property) {
+            property.insert("default".into(), default.clone());
+        }
+    }
+}
+
+/// Writes the values of `table` into every description's `{{NAME}}`; a
+/// name not in the table stays as written (the test finds it).
+fn fill_constants(value: &mut Value, table: &[(String, String)]) {
+    match value {
+        Value::Object(map) => {
+            if let Some(Value::String(text)) = map.get_mut("description")
+                && text.contains("{{")
+            {
+                for (name, number) in table {
+                    *text = text.replace(&format!("{{{{{name}}}}}"), number);
+                }
+            }
+            map.values_mut().for_each(|v| fill_constants(v, table));
+        }
+        Value::Array(items) => items.iter_mut().for_each(|v| fill_constants(v, table)),
+        _ => {}
+    }
 }
 
 /// The `$defs` names without the `Raw` suffix of the format's internal

@@ -22,6 +22,9 @@ pub(crate) use self::reach::*;
 
 /// Shortest wavelength the default series resolves, m.
 pub const DEFAULT_SHORTEST_WAVELENGTH: f64 = 0.5;
+/// Default sampling length L_c of the plate paper's random road, in bridge
+/// lengths (the series repeats with period L_c).
+pub const DEFAULT_SAMPLING_LENGTHS: f64 = 2.0;
 /// Largest number of series terms.
 pub const MAX_TERMS: usize = 1_000_000;
 
@@ -92,14 +95,14 @@ pub(crate) fn resolve_random(
     };
     // The default needs the bridge's length: not checked without a bridge.
     if sampling_length.is_some() || !ck.bridge_unknown {
-        let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
+        let sampling_length = sampling_length.unwrap_or(DEFAULT_SAMPLING_LENGTHS * bridge_length);
         ck.positive(
             "surface.sampling_length",
             sampling_length,
             "sampling length",
         );
     }
-    let sampling_length = sampling_length.unwrap_or(2.0 * bridge_length);
+    let sampling_length = sampling_length.unwrap_or(DEFAULT_SAMPLING_LENGTHS * bridge_length);
     let terms = terms.unwrap_or_else(|| {
         ((sampling_length / DEFAULT_SHORTEST_WAVELENGTH).round() as usize).clamp(1, MAX_TERMS)
     });

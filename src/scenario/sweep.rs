@@ -186,6 +186,8 @@ pub fn entries_of(list: Option<&[SweepRoughness]>) -> Vec<Option<SweepRoughness>
 
 /// Most sample histories a Monte Carlo plot draws in grey.
 pub const MAX_SHOWN: usize = 20;
+/// Sample histories a Monte Carlo plot draws in grey by default.
+pub const DEFAULT_SHOWN: usize = 5;
 
 /// Checks the `study` section of a Monte Carlo study and fills its
 /// defaults; refuses a study with nothing random to sample.
@@ -222,7 +224,7 @@ pub(crate) fn resolve_monte_carlo(
             }
         }
     }
-    let show = raw.show.unwrap_or(5);
+    let show = raw.show.unwrap_or(DEFAULT_SHOWN);
     if show > MAX_SHOWN {
         ck.error(
             "study.show",

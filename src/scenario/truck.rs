@@ -1,14 +1,19 @@
-//! Resolving the H20-44 truck: the preset and the user's overrides.
+//! Resolving the plate paper's 7-DOF truck (`type: h20_44`): the preset and
+//! the user's overrides.
 
 use super::checker::Checker;
 use super::raw;
 use super::vehicles::{check_acceleration, check_speed, entry_time, lateral};
 use crate::scene::{H20Truck, H20TruckParameters, Vehicle};
 
-/// The H20-44 preset.
+/// The preset of the plate paper's truck (`type: h20_44`).
 ///
-/// Geometry from the AASHTO H20-44 design truck: 4.27 m (14 ft) between the
-/// axles and 1.83 m (6 ft) between the wheels of an axle. The plate paper's
+/// The paper (Section 2.2) models "H20-44 ... in accordance with AASHTO",
+/// and the geometry is AASHTO's H20-44: 4.27 m (14 ft) between the axles
+/// and 1.83 m (6 ft) between the wheels of an axle. Its loads are not:
+/// AASHTO's H20-44 has 8 kip (35.59 kN) on the front and 32 kip
+/// (142.34 kN) on the rear axle ([`crate::scene::aashto`]), while the paper
+/// states 2 × 58.81 kN front and 2 × 32.42 kN rear. The plate paper's
 /// Table 1, which lists its vehicle data after Marchesiello et al. (1999,
 /// J. Sound Vib. 224(3) 541–561) and Zhu & Law (2002, J. Sound Vib. 251(4)
 /// 697–716), is not legible in our copy, and neither cited table could be

@@ -4,6 +4,7 @@
 
 use super::checker::Checker;
 use super::raw;
+use crate::scene::aashto::{HS20_44_REAR_SPACING_MAX, HS20_44_REAR_SPACING_MIN};
 use crate::scene::*;
 
 /// Entry time from `entry_time` / `start_position` (front axle at t = 0),
@@ -134,14 +135,26 @@ pub(crate) fn vehicles_as_written(
     let mut out = Vec::with_capacity(raws.len());
     for (i, raw) in raws.iter().enumerate() {
         let at = format!("vehicles[{i}]");
-        // An HSLM train is its table's moving forces.
-        let hslm;
-        let raw = match raw {
-            raw::VehicleRaw::Hslm(h) => {
-                hslm = raw::VehicleRaw::MovingForce(h.moving_force());
-                &hslm
+        // An HSLM train or an AASHTO truck is its table's moving forces.
+        if let raw::VehicleRaw::AashtoHs20(h) = raw
+            && let Some(rear) = h.rear_axle_spacing
+            && !(HS20_44_REAR_SPACING_MIN..=HS20_44_REAR_SPACING_MAX).contains(&rear)
+        {
+            ck.error(
+                &format!("{at}.rear_axle_spacing"),
+                format!(
+                    "the HS20-44 rear axle spacing is {HS20_44_REAR_SPACING_MIN} m (14 ft) to \
+                     {HS20_44_REAR_SPACING_MAX} m (30 ft) (AASHTO Fig. 3.7.7A), got {rear} m"
+                ),
+            );
+        }
+        let forces;
+        let raw = match raw.as_axle_forces() {
+            Some(moving_force) => {
+                forces = raw::VehicleRaw::MovingForce(moving_force);
+                &forces
             }
-            other => other,
+            None => raw,
         };
         match raw {
             raw::VehicleRaw::MovingForce(v) => {
@@ -271,7 +284,9 @@ pub(crate) fn vehicles_as_written(
                 out.push(super::rail::resolve_rail_car(v, &at, width, ck));
             }
             // Turned into moving forces above.
-            raw::VehicleRaw::Hslm(_) => {}
+            raw::VehicleRaw::Hslm(_)
+            | raw::VehicleRaw::AashtoH20(_)
+            | raw::VehicleRaw::AashtoHs20(_) => {}
             raw::VehicleRaw::Train(v) => {
                 out.push(super::rail::resolve_train(v, &at, width, ck));
             }

@@ -6,6 +6,8 @@
 
 use serde::Serialize;
 
+pub mod aashto;
+pub mod automatic;
 mod bridge;
 pub mod dof_names;
 mod fe_import;
@@ -240,11 +242,16 @@ pub struct Iteration {
     pub max_iterations: usize,
 }
 
+/// The iterative solver's default relative tolerance ε (dimensionless).
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+/// The iterative solver's default iteration limit per step.
+pub const DEFAULT_MAX_ITERATIONS: usize = 100;
+
 impl Default for Iteration {
     fn default() -> Self {
         Self {
-            tolerance: 1e-8,
-            max_iterations: 100,
+            tolerance: DEFAULT_TOLERANCE,
+            max_iterations: DEFAULT_MAX_ITERATIONS,
         }
     }
 }

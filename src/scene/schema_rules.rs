@@ -125,3 +125,10 @@ pub fn grid_count(schema: &mut Schema) {
     at_least_one(schema);
     set(schema, "maximum", 500);
 }
+
+/// The HS20-44 rear axle spacing V, 14 ft to 30 ft (AASHTO Fig. 3.7.7A;
+/// `scenario::vehicles`, the `aashto_hs20_44` check).
+pub fn hs20_44_rear_spacing(schema: &mut Schema) {
+    set(schema, "minimum", super::aashto::HS20_44_REAR_SPACING_MIN);
+    set(schema, "maximum", super::aashto::HS20_44_REAR_SPACING_MAX);
+}

@@ -38,10 +38,16 @@ pub fn grid_nodes(reach: f64, shortest_wavelength: f64) -> f64 {
     (reach.max(0.0) / (shortest_wavelength / NODES_PER_WAVELENGTH)).ceil() + 2.0
 }
 
-/// Default number of terms over a band: 100 per decade of wavelength (bins
-/// 2.3 % wide in Ω), at least 10.
+/// Default terms per decade of wavelength of a band's series (bins 2.3 %
+/// wide in Ω).
+pub const TERMS_PER_DECADE: f64 = 100.0;
+/// Fewest terms of a band's default series.
+pub const MIN_BAND_TERMS: usize = 10;
+
+/// Default number of terms over a band: [`TERMS_PER_DECADE`] per decade of
+/// wavelength, at least [`MIN_BAND_TERMS`].
 pub fn default_terms(shortest: f64, longest: f64) -> usize {
-    ((100.0 * (longest / shortest).log10()).ceil() as usize).max(10)
+    ((TERMS_PER_DECADE * (longest / shortest).log10()).ceil() as usize).max(MIN_BAND_TERMS)
 }
 
 /// How a random track or road profile is sampled (the spectral

@@ -1,5 +1,6 @@
-//! The vehicles of the scene: moving forces, oscillators, H20-44 trucks,
-//! rail cars and trains (their kinematics: [`crate::scene::motion`]).
+//! The vehicles of the scene: moving forces (AASHTO trucks and HSLM trains
+//! among them), oscillators, the plate paper's 7-DOF truck, rail cars and
+//! trains (their kinematics: [`crate::scene::motion`]).
 
 use serde::Serialize;
 
@@ -13,7 +14,8 @@ pub enum Vehicle {
     MovingForce(MovingForce),
     /// Two-mass oscillator.
     Oscillator(Oscillator),
-    /// H20-44 seven-DOF truck.
+    /// The plate paper's seven-DOF truck (`h20_44`: its Section 2.2; static
+    /// wheel forces 58.81 / 32.42 kN, not AASHTO's H20-44 axle loads).
     #[serde(rename = "h20_44")]
     H20Truck(H20Truck),
     /// Four-axle 10-DOF rail car.
@@ -128,7 +130,9 @@ pub struct MovingForce {
     pub lateral_position: Option<f64>,
 }
 
-/// H20-44 truck.
+/// The plate paper's seven-DOF truck (`type: h20_44`; its Section 2.2 and
+/// Appendix A), which the paper names H20-44 after AASHTO but loads with its
+/// own static wheel forces, 58.81 kN front and 32.42 kN rear (Section 3.2).
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct H20Truck {
     /// Speed at t = 0, m/s.
@@ -145,7 +149,8 @@ pub struct H20Truck {
     pub parameters: H20TruckParameters,
 }
 
-/// H20-44 parameters (see the raw format for each meaning); SI units.
+/// The plate paper's truck parameters (see the raw format for each
+/// meaning); SI units.
 #[derive(Debug, Clone, Copy, Serialize, PartialEq)]
 pub struct H20TruckParameters {
     /// kg.

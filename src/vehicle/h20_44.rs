@@ -1,6 +1,10 @@
-//! AASHTO H20-44 two-axle truck with seven degrees of freedom (the plate
-//! paper's Section 2.2, Figs. 2–3 and Appendix A; Marchesiello et al. 1999;
-//! Zhu & Law 2002).
+//! The plate paper's two-axle truck with seven degrees of freedom (its
+//! Section 2.2, Figs. 2–3 and Appendix A, after Marchesiello et al. 1999 and
+//! Zhu & Law 2002). The paper calls it H20-44 "in accordance with AASHTO";
+//! its preset ([`crate::scenario::truck::H20_44_PRESET`]) carries the static
+//! wheel forces the paper states (Section 3.2: Fg1 = 58.81 kN per front
+//! wheel, Fg3 = 32.42 kN per rear wheel, the empty truck), not AASHTO's
+//! H20-44 axle loads of 8 and 32 kip ([`crate::scene::aashto`]).
 //!
 //! DOFs (vertical positive upward, from static equilibrium when recorded):
 //! body bounce z_v (m), pitch θ_v (rad, nose up), roll φ_v (rad, left side

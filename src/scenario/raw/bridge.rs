@@ -66,23 +66,26 @@ pub struct PlateRaw {
     #[serde(default)]
     #[schemars(extend("default" = "free"))]
     pub edges: Option<PlateEdges>,
-    /// Size of the Rayleigh–Ritz basis. Default: 6 longitudinal beam
-    /// functions per span (at least 12) × 8 transverse functions.
+    /// Size of the Rayleigh–Ritz basis. Default:
+    /// {{DEFAULT_LONGITUDINAL_TERMS_PER_SPAN}} longitudinal beam functions per
+    /// span (at least {{MIN_LONGITUDINAL_TERMS}}) × {{DEFAULT_TRANSVERSE_TERMS}}
+    /// transverse functions.
     #[serde(default)]
     pub terms: Option<Terms>,
     /// Finite elements per span of the continuous beam whose modes are the
-    /// longitudinal beam functions. Default 20.
+    /// longitudinal beam functions. Default {{DEFAULT_ELEMENTS_PER_SPAN}}.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::elements_per_span)]
     #[schemars(extend("default" = crate::scenario::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic, as for
-    /// the beam (every mode up to 4 × the highest excitation), and at least 5
-    /// per span of each of the bending, torsion and transverse-bending families
-    /// (15 per span).
+    /// the beam (every mode up to {{SAFETY}} × the highest excitation), and at
+    /// least {{MODES_PER_SPAN}} per span of each of the {{PLATE_FAMILIES}}
+    /// families, bending, torsion and transverse bending
+    /// ({{PLATE_MODES_PER_SPAN}} per span).
     #[serde(default)]
     pub modes: Option<ModesRaw>,
-    /// Structural damping. Default: 0 (undamped).
+    /// Structural damping. Default: none (undamped).
     #[serde(default)]
     pub damping: Option<DampingRaw>,
     /// Transverse positions y of the girder lines, m: the summary tabulates
@@ -108,7 +111,7 @@ pub enum RigidityRaw {
         #[serde(deserialize_with = "crate::scenario::raw::units::pressure::one")]
         #[schemars(schema_with = "crate::scenario::raw::units::pressure::schema")]
         youngs_modulus: f64,
-        /// Poisson's ratio ν (dimensionless). Default 0.2 (concrete).
+        /// Poisson's ratio ν (dimensionless). Default {{DEFAULT_ISOTROPIC_POISSON}} (concrete).
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::isotropic_poisson)]
         #[schemars(extend("default" = crate::scenario::bridges::DEFAULT_ISOTROPIC_POISSON))]
@@ -139,7 +142,7 @@ pub enum RigidityRaw {
         #[schemars(schema_with = "crate::scenario::raw::units::plate_rigidity::schema")]
         equivalent_rigidity: Option<f64>,
         /// Poisson's ratio ν_xy (dimensionless); the coupling rigidity is
-        /// D1 = ν_xy Dy. Default 0.3.
+        /// D1 = ν_xy Dy. Default {{DEFAULT_ORTHOTROPIC_POISSON}}.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::ratio)]
         #[schemars(extend("default" = crate::scenario::bridges::DEFAULT_ORTHOTROPIC_POISSON))]
@@ -167,20 +170,22 @@ pub struct BeamRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_length::one")]
     #[schemars(schema_with = "crate::scenario::raw::units::mass_per_length::schema")]
     pub mass_per_length: f64,
-    /// Hermite-cubic finite elements per span. Default 20.
+    /// Hermite-cubic finite elements per span. Default {{DEFAULT_ELEMENTS_PER_SPAN}}.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::elements_per_span)]
     #[schemars(extend("default" = crate::scenario::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
     pub elements_per_span: Option<usize>,
     /// Which modes the modal superposition keeps. Default: automatic — every
-    /// mode up to 4 × the highest frequency the scene excites (vehicle natural
-    /// frequencies incl. wheel hop on an elastic contact, axle passing v/d,
-    /// span crossing v/2L, roughness v/λ), and at least 5 per span; the
+    /// mode up to {{SAFETY}} × the highest frequency the scene excites
+    /// (vehicle natural frequencies incl. wheel hop on an elastic contact,
+    /// axle passing v/d, span crossing v/2L, roughness v/λ), and at least
+    /// {{MODES_PER_SPAN}} per span (twice that under wheels heavier than
+    /// {{HEAVY_WHEEL_RATIO}} × the lightest span's mass); the
     /// resolved scenario gives the modes kept as `count` with the cut-off as
     /// `max_frequency` and the summary says why.
     #[serde(default)]
     pub modes: Option<ModesRaw>,
-    /// Structural damping. Default: 0 (undamped).
+    /// Structural damping. Default: none (undamped).
     #[serde(default)]
     pub damping: Option<DampingRaw>,
     /// Lateral bending stiffness EI_z, N·m². With `torsional_stiffness`

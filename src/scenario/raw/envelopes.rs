@@ -24,8 +24,9 @@ pub struct EnvelopesRaw {
     #[schemars(transform = crate::scene::schema_rules::at_least_two)]
     pub points: Option<usize>,
     /// Highest mode frequency the acceleration envelope includes, Hz.
-    /// Default as for a `bridge_acceleration` record: the greater of 30 Hz,
-    /// 1.5 f₁ and f₃ of the bridge (EN 1990 A2.4.4.2.1(4)).
+    /// Default as for a `bridge_acceleration` record: the greater of
+    /// {{FLOOR_HZ}} Hz, {{FUNDAMENTAL_FACTOR}} f₁ and f₃ of the bridge (EN 1990
+    /// A2.4.4.2.1(4)).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::frequency::option")]

@@ -31,7 +31,8 @@ pub struct FeImportRaw {
     /// DOFs the matrices still hold but the supports fix: removed on import.
     #[serde(default)]
     pub constrained: Option<Vec<NodeDof>>,
-    /// Damping: a modal ratio, Rayleigh, or a damping matrix file. Default 0.
+    /// Damping: a modal ratio, Rayleigh, or a damping matrix file. Default:
+    /// none (undamped).
     #[serde(default)]
     pub damping: Option<ImportDampingRaw>,
     /// The rails: each a list of nodes with their x along the track.
@@ -63,10 +64,11 @@ pub struct FeImportRaw {
     /// end to 1 at this distance (quintic smoothstep), as a continuous rail
     /// takes a wheel's load before it arrives. Applies only where the
     /// track's end node is free to move vertically (not at a deck end held
-    /// by its support). Default 3 m (at most a quarter of the track); 0 puts
+    /// by its support). Default {{DEFAULT_ENTRY_LENGTH}} m (at most a quarter of the track); 0 puts
     /// the whole load on at once.
     #[serde(default)]
     #[schemars(range(min = 0.0))]
+    #[schemars(extend("default" = crate::scenario::fe_import::DEFAULT_ENTRY_LENGTH))]
     #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub entry_length: Option<f64>,

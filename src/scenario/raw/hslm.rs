@@ -43,7 +43,9 @@ pub struct HslmRaw {
     pub model: HslmModel,
     /// Constant speed: m/s, or with its unit (`300 km/h`).
     pub speed: SpeedRaw,
-    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]

@@ -17,10 +17,11 @@ pub struct RailCarRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the front wheelset reaches the bridge entrance, s. Default 0.
+    /// Time at which the front wheelset reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -127,10 +128,11 @@ pub struct TrainRaw {
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the first car's front wheelset reaches the bridge
-    /// entrance, s. Default 0.
+    /// entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -203,10 +205,11 @@ pub struct Train3dRaw {
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
     /// Time at which the first car's front wheelset reaches the bridge
-    /// entrance, s. Default 0.
+    /// entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -226,6 +229,7 @@ pub struct Train3dRaw {
     /// Default 1.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::at_least_one)]
+    #[schemars(extend("default" = 1))]
     pub count: Option<usize>,
     /// Distance between the front wheelsets of consecutive cars, m (with
     /// `count`); more than a car's wheelset span 2(a + b).

@@ -21,15 +21,16 @@ impl Deck {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ResonanceSpeedsRaw {
-    /// Lowest speed, m/s or with its unit. Default 40 m/s (EN 1991-2
-    /// 6.4.6.2(1)).
+    /// Lowest speed, m/s or with its unit. Default {{DEFAULT_LOWEST_SPEED}}
+    /// m/s (EN 1991-2 6.4.6.2(1)).
     #[serde(default)]
+    #[schemars(extend("default" = crate::scenario::resonance::DEFAULT_LOWEST_SPEED))]
     pub from: Option<SpeedRaw>,
-    /// Highest speed, m/s or with its unit. Default 1.2 × `line_speed`
-    /// (EN 1991-2 6.4.6.2(1)).
+    /// Highest speed, m/s or with its unit. Default
+    /// {{DEFAULT_TOP_SPEED_FACTOR}} × `line_speed` (EN 1991-2 6.4.6.2(1)).
     #[serde(default)]
     pub to: Option<SpeedRaw>,
-    /// Speed step, m/s or with its unit. Default 5 km/h (EN 1991-2 6.4.6.2
+    /// Speed step, m/s or with its unit. Default {{DEFAULT_SPEED_STEP_KM_H}} km/h (EN 1991-2 6.4.6.2
     /// asks for smaller steps near resonance: refine there).
     #[serde(default)]
     pub step: Option<SpeedRaw>,
@@ -37,7 +38,7 @@ pub struct ResonanceSpeedsRaw {
 
 /// Resonance check (EN 1991-2 6.4.6 with Annex E): each HSLM-A train of
 /// `trains` crosses the bridge alone, as moving axle forces, at every speed
-/// from `speeds.from` to `speeds.to` (default 1.2 × `line_speed`); each run
+/// from `speeds.from` to `speeds.to` (default {{DEFAULT_TOP_SPEED_FACTOR}} × `line_speed`); each run
 /// gives the largest |displacement| and |acceleration| along the deck
 /// (acceleration filtered at `max_frequency`, EN 1990 A2.4.4.2.1(4)).
 /// Writes resonance.csv, resonance.png and a summary with the governing
@@ -52,8 +53,10 @@ pub struct ResonanceCheckRaw {
     pub trains: Option<Vec<HslmModel>>,
     /// The maximum line speed, m/s or with its unit (`300 km/h`).
     pub line_speed: SpeedRaw,
-    /// Speeds to run. Defaults: 40 m/s to 1.2 × `line_speed` in 5 km/h
-    /// steps. The grid always holds 1.2 × `line_speed` (EN 1991-2
+    /// Speeds to run. Defaults: {{DEFAULT_LOWEST_SPEED}} m/s to
+    /// {{DEFAULT_TOP_SPEED_FACTOR}} × `line_speed` in
+    /// {{DEFAULT_SPEED_STEP_KM_H}} km/h steps. The grid always holds
+    /// {{DEFAULT_TOP_SPEED_FACTOR}} × `line_speed` (EN 1991-2
     /// 6.4.6.2(1)) and, per train, each resonance speed f₀·D/k with quarter
     /// steps around it.
     #[serde(default)]
@@ -63,7 +66,7 @@ pub struct ResonanceCheckRaw {
     #[serde(default)]
     pub deck: Option<Deck>,
     /// Highest mode frequency the deck acceleration includes, Hz. Default:
-    /// the greater of 30 Hz, 1.5 f₁ and f₃ of the bridge (EN 1990
+    /// the greater of {{FLOOR_HZ}} Hz, {{FUNDAMENTAL_FACTOR}} f₁ and f₃ of the bridge (EN 1990
     /// A2.4.4.2.1(4)); the bridge's modes up to it are summed only if
     /// `bridge.modes` keeps them (leave it out and the automatic choice
     /// does).

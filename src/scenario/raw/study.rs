@@ -32,8 +32,9 @@ pub enum StudyRaw {
     /// speed): the mean, standard deviation and mean ± 3σ of every recorded
     /// history, and per wheel the probability of separation and the expected
     /// largest gap with their confidence intervals. Writes study.csv,
-    /// envelopes.csv, envelopes.png, and with several speeds
-    /// separation_probability.png and expected_gap.png.
+    /// separation.csv, envelopes.csv, one envelope_<record>.png per record
+    /// (the first case), and with several speeds separation_probability.png
+    /// and expected_gap.png.
     MonteCarlo(MonteCarloRaw),
     /// Railway resonance check with the HSLM-A trains of EN 1991-2 Annex E:
     /// see its fields.
@@ -63,11 +64,12 @@ pub struct MonteCarloRaw {
     /// surface. `smooth` is refused: it is not random.
     #[serde(default)]
     pub roughness: Option<Vec<SweepRoughness>>,
-    /// Sample histories drawn in grey behind the envelopes (0 to 20;
-    /// dimensionless count). Default 5.
+    /// Sample histories drawn in grey behind the envelopes (0 to
+    /// {{MAX_SHOWN}}; dimensionless count). Default {{DEFAULT_SHOWN}} (every
+    /// sample when there are fewer).
     #[serde(default)]
-    #[schemars(range(max = 20))]
-    #[schemars(extend("default" = 5))]
+    #[schemars(range(max = crate::scenario::sweep::MAX_SHOWN))]
+    #[schemars(extend("default" = crate::scenario::sweep::DEFAULT_SHOWN))]
     pub show: Option<usize>,
 }
 
@@ -104,8 +106,9 @@ pub struct SpeedSweepRaw {
     /// Surfaces to sweep: `smooth`, or a roughness class (`very_good`,
     /// `good`, `average`, `poor`, `very_poor`) that replaces the scene's
     /// surface by a random profile of that class (sampling length, terms and
-    /// seed from the scene's random surface if it has one, else twice the
-    /// bridge length, one term per 0.5 m of it and seed 1). Default: the
+    /// seed from the scene's random surface if it has one, else
+    /// {{DEFAULT_SAMPLING_LENGTHS}} × the bridge length, one term per
+    /// {{DEFAULT_SHORTEST_WAVELENGTH}} m of it and seed 1). Default: the
     /// scene's own surface only.
     #[serde(default)]
     pub roughness: Option<Vec<SweepRoughness>>,

@@ -55,13 +55,15 @@ pub enum SurfaceRaw {
         #[serde(deserialize_with = "crate::scenario::raw::units::roughness_coefficient::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::roughness_coefficient::schema")]
         coefficient: Option<f64>,
-        /// Length L_c the series repeats over, m. Default: twice the bridge length.
+        /// Length L_c the series repeats over, m. Default:
+        /// {{DEFAULT_SAMPLING_LENGTHS}} × the bridge length.
         #[serde(default)]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         sampling_length: Option<f64>,
         /// Number of terms N of the series. Default: enough for wavelengths
-        /// down to 0.5 m (N = L_c / 0.5).
+        /// down to {{DEFAULT_SHORTEST_WAVELENGTH}} m (N = L_c /
+        /// {{DEFAULT_SHORTEST_WAVELENGTH}}).
         #[serde(default)]
         terms: Option<usize>,
         /// Seed of the random phases (ChaCha8). Default 1. The same seed gives
@@ -79,20 +81,23 @@ pub enum SurfaceRaw {
         /// Track class, 1 (worst) to 6 (best).
         #[schemars(range(min = 1, max = 6))]
         class: u8,
-        /// Shortest wavelength sampled, m. Default: 1 m.
+        /// Shortest wavelength sampled, m. Default: {{RAIL_BAND_SHORTEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::RAIL_BAND.0))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
-        /// Longest wavelength sampled, m. Default: 80 m.
+        /// Longest wavelength sampled, m. Default: {{RAIL_BAND_LONGEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::RAIL_BAND.1))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
-        /// log Ω). Default: 100 per decade of the wavelength band.
+        /// log Ω). Default: {{TERMS_PER_DECADE}} per decade of the wavelength
+        /// band, at least {{MIN_BAND_TERMS}}.
         #[serde(default)]
         terms: Option<usize>,
         /// Seed of the random frequencies and phases (ChaCha8). Default 1.
@@ -113,7 +118,8 @@ pub enum SurfaceRaw {
         #[serde(default)]
         rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
-        /// (80 m for the rail band, 100 m for the road band). The full
+        /// ({{RAIL_BAND_LONGEST}} m for the rail band, {{ROAD_BAND_LONGEST}} m
+        /// for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
         /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
         /// start and continuous, 0 before it), so no wheel meets a jump in
@@ -136,20 +142,23 @@ pub enum SurfaceRaw {
     German {
         /// `low` or `high` interference.
         interference: Interference,
-        /// Shortest wavelength sampled, m. Default: 1 m.
+        /// Shortest wavelength sampled, m. Default: {{RAIL_BAND_SHORTEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::RAIL_BAND.0))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
-        /// Longest wavelength sampled, m. Default: 80 m.
+        /// Longest wavelength sampled, m. Default: {{RAIL_BAND_LONGEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::RAIL_BAND.1))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
-        /// log Ω). Default: 100 per decade of the wavelength band.
+        /// log Ω). Default: {{TERMS_PER_DECADE}} per decade of the wavelength
+        /// band, at least {{MIN_BAND_TERMS}}.
         #[serde(default)]
         terms: Option<usize>,
         /// Seed of the random frequencies and phases (ChaCha8). Default 1.
@@ -170,7 +179,8 @@ pub enum SurfaceRaw {
         #[serde(default)]
         rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
-        /// (80 m for the rail band, 100 m for the road band). The full
+        /// ({{RAIL_BAND_LONGEST}} m for the rail band, {{ROAD_BAND_LONGEST}} m
+        /// for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
         /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
         /// start and continuous, 0 before it), so no wheel meets a jump in
@@ -192,20 +202,23 @@ pub enum SurfaceRaw {
     Iso8608 {
         /// Road class `A` (best) to `H`.
         class: IsoClass,
-        /// Shortest wavelength sampled, m. Default: 0.5 m.
+        /// Shortest wavelength sampled, m. Default: {{ROAD_BAND_SHORTEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::ROAD_BAND.0))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         shortest_wavelength: Option<f64>,
-        /// Longest wavelength sampled, m. Default: 100 m.
+        /// Longest wavelength sampled, m. Default: {{ROAD_BAND_LONGEST}} m.
         #[serde(default)]
         #[schemars(transform = crate::scene::schema_rules::positive)]
+        #[schemars(extend("default" = crate::scenario::surfaces::ROAD_BAND.1))]
         #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
         #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
         longest_wavelength: Option<f64>,
         /// Number of terms N of the series (frequency bins of equal width in
-        /// log Ω). Default: 100 per decade of the wavelength band.
+        /// log Ω). Default: {{TERMS_PER_DECADE}} per decade of the wavelength
+        /// band, at least {{MIN_BAND_TERMS}}.
         #[serde(default)]
         terms: Option<usize>,
         /// Seed of the random frequencies and phases (ChaCha8). Default 1.
@@ -219,7 +232,8 @@ pub enum SurfaceRaw {
         #[serde(default)]
         rails: Option<Rails>,
         /// Length L of the run-in, m; default the band's longest wavelength
-        /// (80 m for the rail band, 100 m for the road band). The full
+        /// ({{RAIL_BAND_LONGEST}} m for the rail band, {{ROAD_BAND_LONGEST}} m
+        /// for the road band). The full
         /// profile lies on the bridge and is faded in over the last L m of
         /// the approach by a quintic smoothstep (r, r′, r″ zero at the fade's
         /// start and continuous, 0 before it), so no wheel meets a jump in

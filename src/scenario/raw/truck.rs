@@ -1,9 +1,9 @@
-//! The H20-44 truck as written in a scenario.
+//! The plate paper's 7-DOF truck (`type: h20_44`) as written in a scenario.
 
 use schemars::JsonSchema;
 use serde::Deserialize;
 
-/// H20-44 truck.
+/// The plate paper's 7-DOF truck (its Section 2.2, Fig. 2, Appendix A).
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct H20TruckRaw {
@@ -17,10 +17,11 @@ pub struct H20TruckRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -37,10 +38,14 @@ pub struct H20TruckRaw {
     #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
     pub lateral_position: Option<f64>,
     /// Overrides of the preset's parameters; omitted ones keep the preset.
-    /// The preset: axles 4.27 m apart, wheels 1.83 m apart (AASHTO H20-44);
-    /// body 16 200 kg, axles 1 200 kg each, centre of gravity 1.426 m behind
-    /// the front axle, which give the plate paper's static wheel loads of
-    /// 58.81 kN (front) and 32.42 kN (rear). The tables of the sources it
+    /// The preset: axles 4.27 m apart, wheels 1.83 m apart (the geometry of
+    /// AASHTO's H20-44, 14 ft and 6 ft); body 16 200 kg, axles 1 200 kg
+    /// each, centre of gravity 1.426 m behind the front axle, which give the
+    /// static wheel forces the plate paper states for its empty truck
+    /// (Section 3.2: Fg1 = 58.81 kN front, Fg3 = 32.42 kN rear; 182.5 kN in
+    /// all). These are NOT AASHTO's H20-44 axle loads (35.59 kN front,
+    /// 142.34 kN rear: `type: aashto_h20_44`). The paper's vehicle table
+    /// (Table 1) is not legible in our copy and the tables of the sources it
     /// cites (Marchesiello et al. 1999, Zhu & Law 2002) were not available,
     /// so the inertias (pitch 1.0e5, roll 2.0e4, axle roll 600 kg·m²),
     /// suspensions (8.0e5 / 6.0e5 N/m, 1.2e4 / 8.0e3 N·s/m per wheel, 1.1 m
@@ -50,8 +55,8 @@ pub struct H20TruckRaw {
     pub parameters: Option<H20TruckParametersRaw>,
 }
 
-/// H20-44 parameters (each optional: the preset fills the rest). Per-wheel
-/// springs and dashpots are the same left and right.
+/// The plate paper's truck parameters (each optional: the preset fills the
+/// rest). Per-wheel springs and dashpots are the same left and right.
 #[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct H20TruckParametersRaw {

@@ -22,13 +22,31 @@ pub enum VehicleRaw {
     /// (the LCP paper's Fig. 1). `unsprung_mass: 0` is the 1-DOF sprung mass
     /// on a massless wheel (Yang & Yau 1997).
     Oscillator(OscillatorRaw),
-    /// AASHTO H20-44 two-axle truck with seven DOFs (body bounce, pitch and
-    /// roll; each axle bounce and roll), a tyre spring–damper under each of
-    /// its four wheels and a suspension spring–damper above it (the plate
-    /// paper's Section 2.2 and Appendix A). Parameters default to the preset
-    /// (see `parameters`).
+    /// The plate paper's two-axle truck with seven DOFs (its Section 2.2,
+    /// Fig. 2 and Appendix A, which call it H20-44 after AASHTO): body
+    /// bounce, pitch and roll, each axle bounce and roll, a tyre
+    /// spring–damper under each of its four wheels and a suspension
+    /// spring–damper above it. The preset carries the static wheel forces
+    /// the paper states for the empty truck (Section 3.2: Fg1 = 58.81 kN per
+    /// front wheel, Fg3 = 32.42 kN per rear wheel; its vehicle table, Table 1,
+    /// is not legible in our copy): NOT AASHTO's H20-44 axle loads (8 and
+    /// 32 kip, `aashto_h20_44`). Parameters default to the preset (see
+    /// `parameters`).
     #[serde(rename = "h20_44")]
     H20Truck(H20TruckRaw),
+    /// AASHTO's H20-44 truck as moving axle forces (no inertia): 35.59 kN
+    /// (8 kip) front and 142.34 kN (32 kip) rear axle 4.267 m (14 ft) apart
+    /// (AASHTO Standard Specifications for Highway Bridges, 17th ed.,
+    /// Art. 3.7.6, Fig. 3.7.6A); resolved into a `moving_force`.
+    #[serde(rename = "aashto_h20_44")]
+    AashtoH20(AashtoH20Raw),
+    /// AASHTO's HS20-44 truck as moving axle forces (no inertia): 35.59 kN
+    /// (8 kip), 142.34 kN (32 kip) and 142.34 kN axles, 4.267 m (14 ft) and
+    /// `rear_axle_spacing` (14–30 ft) apart (AASHTO Standard Specifications
+    /// for Highway Bridges, 17th ed., Art. 3.7.7, Fig. 3.7.7A; the design
+    /// truck of AASHTO LRFD Art. 3.6.1.2.2); resolved into a `moving_force`.
+    #[serde(rename = "aashto_hs20_44")]
+    AashtoHs20(AashtoHs20Raw),
     /// Four-axle rail car with ten DOFs: car body and two bogies (bounce
     /// and pitch each) over four wheelsets (bounce), a primary
     /// spring–dashpot between each wheelset and its bogie and a secondary
@@ -46,12 +64,26 @@ pub enum VehicleRaw {
     /// laterally (permanent contact; no creep, no flange contact).
     #[serde(rename = "train_3d")]
     Train3d(Train3dRaw),
-    /// An HSLM-A train of EN 1991-2 Annex E (`model: A1` … `A10`) as moving
-    /// axle forces; resolved into a `moving_force` with its axle positions.
+    /// An HSLM-A train of EN 1991-2:2003 Annex E (`model: A1` … `A10`; the
+    /// coach count, coach length, bogie axle spacing and axle force of
+    /// Table E.1 at the layout of Fig. E.2) as moving axle forces; resolved
+    /// into a `moving_force` with its axle positions.
     Hslm(HslmRaw),
 }
 
 impl VehicleRaw {
+    /// A vehicle that is a set of axle forces from a table (an HSLM train,
+    /// an AASHTO truck) as the `moving_force` it resolves into; `None` for
+    /// every other vehicle.
+    pub fn as_axle_forces(&self) -> Option<MovingForceRaw> {
+        match self {
+            VehicleRaw::Hslm(v) => Some(v.moving_force()),
+            VehicleRaw::AashtoH20(v) => Some(v.moving_force()),
+            VehicleRaw::AashtoHs20(v) => Some(v.moving_force()),
+            _ => None,
+        }
+    }
+
     /// The speed as written (`None`: an oscillator given by its
     /// dimensionless groups, its speed derived from the velocity ratio).
     pub fn speed(&self) -> Option<SpeedRaw> {
@@ -63,6 +95,8 @@ impl VehicleRaw {
             VehicleRaw::Train(v) => Some(v.speed),
             VehicleRaw::Train3d(v) => Some(v.speed),
             VehicleRaw::Hslm(v) => Some(v.speed),
+            VehicleRaw::AashtoH20(v) => Some(v.speed),
+            VehicleRaw::AashtoHs20(v) => Some(v.speed),
         }
     }
 }
@@ -101,11 +135,12 @@ pub struct MovingForceRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the front axle reaches the bridge entrance, s. Default 0.
+    /// Time at which the front axle reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
@@ -166,11 +201,12 @@ pub struct OscillatorRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::acceleration::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::acceleration::schema")]
     pub acceleration: Option<f64>,
-    /// Time at which the wheel reaches the bridge entrance, s. Default 0.
+    /// Time at which the wheel reaches the bridge entrance, s. Default 0, or on a
+    /// random surface with a run-in the time to reach the entrance from
+    /// x = −`run_in` (`surface.run_in`).
     /// Give this or `start_position`, not both.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::non_negative)]
-    #[schemars(extend("default" = 0.0))]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]
     #[schemars(schema_with = "crate::scenario::raw::units::time::schema")]
     pub entry_time: Option<f64>,
