@@ -516,7 +516,7 @@ study: {type: monte_carlo, samples: 3, seed: 5}
     };
     assert!((1..=3).contains(&sample), "{message}");
     assert!(
-        message.contains(&format!("sample {sample} of case fra-5"))
+        message.contains(&format!("sample {sample} of case fra5"))
             && message.contains(&format!("--sample {sample}"))
             && message.contains("diverged"),
         "{message}"
