@@ -67,6 +67,103 @@ pub fn wilson_interval(successes: usize, n: usize) -> (f64, f64) {
     (low, high)
 }
 
+/// The 97.5 % quantile of Student's t with `dof` ≥ 1 degrees of freedom,
+/// t with P(|T| ≤ t) = 0.95. Up to 30 degrees of freedom by bisection (60
+/// halvings, to round-off) on the closed form of P(|T| ≤ t) (Abramowitz &
+/// Stegun 1964, 26.7.3 and 26.7.4: with θ = atan(t/√ν), for odd ν
+/// (2/π)(θ + sin θ (cos θ + ⅔ cos³θ + … + (2·4⋯(ν−3))/(3·5⋯(ν−2)) cos^{ν−2}θ)),
+/// the bracket empty for ν = 1; for even ν
+/// sin θ (1 + ½ cos²θ + … + (1·3⋯(ν−3))/(2·4⋯(ν−2)) cos^{ν−2}θ)); above,
+/// the Cornish–Fisher expansion in 1/ν to the fourth order (26.7.5), within
+/// 4e-8 of the exact value at ν = 31 and closer beyond.
+pub fn student_t_975(dof: usize) -> f64 {
+    assert!(dof >= 1, "Student's t needs a degree of freedom");
+    if dof > 30 {
+        let (x, nu) = (Z95, dof as f64);
+        let g1 = (x.powi(3) + x) / 4.0;
+        let g2 = (5.0 * x.powi(5) + 16.0 * x.powi(3) + 3.0 * x) / 96.0;
+        let g3 = (3.0 * x.powi(7) + 19.0 * x.powi(5) + 17.0 * x.powi(3) - 15.0 * x) / 384.0;
+        let g4 = (79.0 * x.powi(9) + 776.0 * x.powi(7) + 1482.0 * x.powi(5)
+            - 1920.0 * x.powi(3)
+            - 945.0 * x)
+            / 92160.0;
+        return x + g1 / nu + g2 / nu.powi(2) + g3 / nu.powi(3) + g4 / nu.powi(4);
+    }
+    // P(|T| ≤ t) for ν = dof.
+    let central = |t: f64| {
+        let theta = (t / (dof as f64).sqrt()).atan();
+        let (sin, cos) = theta.sin_cos();
+        // Σ of the series' terms: first term cos θ (odd ν) or 1 (even ν),
+        // each next one the last × (k + 1)/(k + 2) cos²θ, k = 1, 3, … (odd)
+        // or 0, 2, … (even), up to the power ν − 2.
+        let (mut term, mut k) = if dof % 2 == 1 { (cos, 1) } else { (1.0, 0) };
+        let mut sum = if dof == 1 { 0.0 } else { term };
+        while k + 2 < dof {
+            term *= (k + 1) as f64 / (k + 2) as f64 * cos * cos;
+            sum += term;
+            k += 2;
+        }
+        if dof % 2 == 1 {
+            2.0 / std::f64::consts::PI * (theta + sin * sum)
+        } else {
+            sin * sum
+        }
+    };
+    // P(|T| ≤ 13) > 0.95 for every ν ≥ 1 (ν = 1: 0.9515).
+    let (mut low, mut high) = (Z95, 13.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (low + high);
+        if central(mid) < 0.95 {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    0.5 * (low + high)
+}
+
+/// 95 % interval of the mean of non-negative samples (a largest gap, a
+/// DAF), `(low, high)`, `high` `None` where the samples do not bound it.
+///
+/// The interval of log μ by the delta method (Var log x̄ ≈ Var x̄ / x̄²;
+/// Casella & Berger, Statistical Inference, 2nd ed. 2002, §5.5.4), taken
+/// back:
+///
+///   [x̄ / e^{t s/(x̄ √n)},  x̄ · e^{t s/(x̄ √n)}],
+///
+/// s the sample standard deviation, t [`student_t_975`]`(n − 1)`. It is
+/// positive wherever a sample is (a mean that is not 0 can be small, never
+/// negative, unlike x̄ ∓ 1.96 s/√n, which went below 0 for a 16-sample
+/// study's expected gap), and longer above x̄ than below, as the skewed
+/// sampling distribution of a mean of mostly-zero, occasionally-large gaps
+/// is. By simulation of gaps that are 0 with probability 1 − p and
+/// exponential otherwise (the tests) it covers the mean in 0.90–0.94 of
+/// 10,000 draws at n = 16 and 0.93–0.94 at n = 100 for p = 0.1 … 1; a
+/// percentile bootstrap of the same samples covered about 0.83 at n = 16,
+/// p = 0.3 (400 draws, outside the tests: the bootstrap distribution of a
+/// mean of 16 is too narrow).
+///
+/// Samples without spread (all equal, in particular all 0: no wheel lost
+/// contact) or fewer than two say nothing about how far the mean could be
+/// from them: the interval is then [0, ∞), `(0.0, None)`: with no
+/// separation in 16 samples the probability may still be 19 %
+/// ([`wilson_interval`]) and the gap it would open is unknown.
+pub fn nonnegative_mean_interval(samples: &[f64]) -> (f64, Option<f64>) {
+    let n = samples.len();
+    let Some(&first) = samples.first() else {
+        return (0.0, None);
+    };
+    if n < 2 || samples.iter().all(|&x| x == first) {
+        return (0.0, None);
+    }
+    debug_assert!(samples.iter().all(|&x| x >= 0.0), "non-negative samples");
+    let nf = n as f64;
+    let mean = samples.iter().sum::<f64>() / nf;
+    let variance = samples.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (nf - 1.0);
+    let factor = (student_t_975(n - 1) * variance.sqrt() / (mean * nf.sqrt())).exp();
+    (mean / factor, Some(mean * factor))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -224,6 +321,90 @@ mod tests {
                     (simulated - exact).abs() <= 4.0 * se,
                     "n {n} p {p}: simulated {simulated}, exact {exact}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn student_t_against_tables() {
+        // Two-sided 95 % points of t (e.g. Abramowitz & Stegun Table 26.10),
+        // to the 4 decimals of the table.
+        for (dof, t) in [
+            (1, 12.7062),
+            (2, 4.3027),
+            (3, 3.1824),
+            (4, 2.7764),
+            (5, 2.5706),
+            (10, 2.2281),
+            (15, 2.1314),
+            (30, 2.0423),
+            (60, 2.0003),
+            (120, 1.9799),
+        ] {
+            let got = student_t_975(dof);
+            assert!((got - t).abs() < 6e-5, "dof {dof}: {got}");
+        }
+        // ν = 2 in closed form: P(|T| ≤ t) = t/√(2 + t²) = 0.95.
+        let t2 = (2.0 * 0.95f64.powi(2) / (1.0 - 0.95f64.powi(2))).sqrt();
+        assert!((student_t_975(2) - t2).abs() < 1e-12);
+        // The expansion meets the bisection where they hand over.
+        assert!((student_t_975(31) - 2.039_513_446).abs() < 1e-7);
+        assert!(student_t_975(1_000_000) - Z95 < 1e-5);
+    }
+
+    #[test]
+    fn mean_interval_respects_the_support() {
+        // All zero, one sample, none: [0, ∞).
+        assert_eq!(nonnegative_mean_interval(&[0.0; 16]), (0.0, None));
+        assert_eq!(nonnegative_mean_interval(&[3.0]), (0.0, None));
+        assert_eq!(nonnegative_mean_interval(&[]), (0.0, None));
+        // One separation in 16 (a gap of 1.6e-4 m): the mean 1e-5 m with
+        // s/√n = 1e-5 m too, so the normal interval was 1e-5 ∓ 1.96e-5
+        // (below 0); this one is 1e-5 m ÷ and × e^{2.1314}.
+        let mut gaps = vec![0.0; 16];
+        gaps[7] = 1.6e-4;
+        let (lo, hi) = nonnegative_mean_interval(&gaps);
+        let factor = student_t_975(15).exp();
+        assert!((lo - 1e-5 / factor).abs() < 1e-18, "{lo}");
+        assert!((hi.unwrap() - 1e-5 * factor).abs() < 1e-15, "{hi:?}");
+        assert!(lo > 0.0);
+    }
+
+    /// Coverage of the mean interval by simulation: 10,000 samples of n
+    /// gaps from a seeded ChaCha8 stream, each gap 0 with probability 1 − p
+    /// and otherwise exponential with mean 1 (the shape of a largest gap:
+    /// most samples never separate, a few separate far). Bounds: at least
+    /// 0.89 at n = 16 and 0.91 at n = 100 — below the nominal 0.95 (a mean
+    /// of skewed samples converges slowly to its normal limit; no interval
+    /// from 16 such samples reaches 0.95 without being far longer), each
+    /// bound at least 3 standard errors (0.003 for 10,000 draws) under what
+    /// the draws give; the lower end never below 0.
+    #[test]
+    fn mean_interval_coverage_by_simulation() {
+        const DRAWS: usize = 10_000;
+        let mut rng = ChaCha8Rng::seed_from_u64(1927);
+        for (n, least) in [(16, 0.89), (100, 0.91)] {
+            for p in [0.1, 0.3, 1.0] {
+                let mean = p;
+                let mut covered = 0;
+                for _ in 0..DRAWS {
+                    let gaps: Vec<f64> = (0..n)
+                        .map(|_| {
+                            if uniform(&mut rng) < p {
+                                -(1.0 - uniform(&mut rng)).ln()
+                            } else {
+                                0.0
+                            }
+                        })
+                        .collect();
+                    let (lo, hi) = nonnegative_mean_interval(&gaps);
+                    assert!(lo >= 0.0);
+                    if lo <= mean && hi.is_none_or(|h| mean <= h) {
+                        covered += 1;
+                    }
+                }
+                let coverage = covered as f64 / DRAWS as f64;
+                assert!(coverage >= least, "n {n} p {p}: coverage {coverage}");
             }
         }
     }
