@@ -143,18 +143,28 @@ pub fn student_t_975(dof: usize) -> f64 {
 /// p = 0.3 (400 draws, outside the tests: the bootstrap distribution of a
 /// mean of 16 is too narrow).
 ///
-/// Samples without spread (all equal, in particular all 0: no wheel lost
-/// contact) or fewer than two say nothing about how far the mean could be
-/// from them: the interval is then [0, ∞), `(0.0, None)`: with no
-/// separation in 16 samples the probability may still be 19 %
-/// ([`wilson_interval`]) and the gap it would open is unknown.
+/// Samples without spread need their own answer (s = 0):
+///
+/// - all 0 (no wheel lost contact): [0, ∞), `(0.0, None)`. 0 is the
+///   support's end, where a quantity that is mostly 0 piles up: the
+///   samples do not say how far the mean could be above it (with no
+///   separation in 16 samples the probability may still be 19 %,
+///   [`wilson_interval`], and the gap it would open is unknown);
+/// - all equal to c > 0: [c, c]. Samples of a quantity that varies do not
+///   tie exactly; these do not depend on the sample (a moving force's DAF
+///   over any roughness).
+///
+/// Fewer than two samples say nothing of the spread: [0, ∞).
 pub fn nonnegative_mean_interval(samples: &[f64]) -> (f64, Option<f64>) {
     let n = samples.len();
     let Some(&first) = samples.first() else {
         return (0.0, None);
     };
-    if n < 2 || samples.iter().all(|&x| x == first) {
+    if n < 2 || (first == 0.0 && samples.iter().all(|&x| x == 0.0)) {
         return (0.0, None);
+    }
+    if samples.iter().all(|&x| x == first) {
+        return (first, Some(first));
     }
     debug_assert!(samples.iter().all(|&x| x >= 0.0), "non-negative samples");
     let nf = n as f64;
@@ -358,6 +368,8 @@ mod tests {
         assert_eq!(nonnegative_mean_interval(&[0.0; 16]), (0.0, None));
         assert_eq!(nonnegative_mean_interval(&[3.0]), (0.0, None));
         assert_eq!(nonnegative_mean_interval(&[]), (0.0, None));
+        // Exact ties away from 0: a value that does not vary.
+        assert_eq!(nonnegative_mean_interval(&[1.25; 4]), (1.25, Some(1.25)));
         // One separation in 16 (a gap of 1.6e-4 m): the mean 1e-5 m with
         // s/√n = 1e-5 m too, so the normal interval was 1e-5 ∓ 1.96e-5
         // (below 0); this one is 1e-5 m ÷ and × e^{2.1314}.

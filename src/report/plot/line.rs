@@ -5,6 +5,10 @@ use super::*;
 /// Series with at most this many points get a dot at each.
 const MAX_MARKED_POINTS: usize = 60;
 
+/// One series' band as runs of consecutive usable abscissae, each point
+/// (x, low, high).
+pub(super) type BandRuns = Vec<Vec<(f64, f64, f64)>>;
+
 /// Opacity of a band's fill ([`Band`]): several overlapping bands stay
 /// readable.
 const BAND_OPACITY: f64 = 0.12;
@@ -75,7 +79,7 @@ pub(super) fn render_line_chart(
         .collect();
     // Per band, runs of consecutive abscissae where the series' x and both
     // ends are usable: (x, low, high).
-    let band_runs: Vec<Vec<Vec<(f64, f64, f64)>>> = series
+    let band_runs: Vec<BandRuns> = series
         .iter()
         .zip(bands.iter().chain(std::iter::repeat(&None)))
         .map(|(s, band)| {
@@ -177,6 +181,7 @@ pub(super) struct LineChartText<'a> {
     reference: usize,
 }
 
+#[allow(clippy::too_many_arguments)]
 pub(super) fn draw_line_chart<X, Y>(
     root: &Area<'_>,
     x_coord: X,
@@ -184,7 +189,7 @@ pub(super) fn draw_line_chart<X, Y>(
     text: &LineChartText,
     series: &[Series],
     runs: &[Vec<Vec<(f64, f64)>>],
-    band_runs: &[Vec<Vec<(f64, f64, f64)>>],
+    band_runs: &[BandRuns],
     grey: usize,
 ) -> Result<Geometry, PlotError>
 where

@@ -46,8 +46,8 @@ pub struct WheelStatistics {
     /// x̄ / e^{t s/(x̄√n)}, never below 0; 0 when the samples do not bound it).
     pub expected_max_gap_low: f64,
     /// 95 % interval of the mean, upper end, m (x̄ · e^{t s/(x̄√n)}; `null`
-    /// when the samples do not bound it: no sample separated, or all gaps
-    /// equal, or one sample).
+    /// when the samples do not bound it: no sample separated, or one
+    /// sample).
     pub expected_max_gap_high: Option<f64>,
 }
 
@@ -85,7 +85,7 @@ pub struct MonteCarloSummary {
     pub cases: Vec<CaseSummary>,
 }
 
-const INTERVALS: &str = "95 % intervals over the samples of each case. probability: Wilson score interval (Wilson 1927) with the Poisson lower end at 1 or 2 separations (3 above 50 samples) of Brown, Cai & DasGupta 2001 (upper end mirrored), [0, 0.194] for none of 16; expected largest gap: mean / and * exp(t s / (mean sqrt(n))), t the 97.5 % point of Student's t with n - 1 degrees of freedom (the delta-method interval of log mean, never below 0); upper end null (unbounded) when no sample separated or all gaps are equal";
+const INTERVALS: &str = "95 % intervals over the samples of each case. probability: Wilson score interval (Wilson 1927) with the Poisson lower end at 1 or 2 separations (3 above 50 samples) of Brown, Cai & DasGupta 2001 (upper end mirrored), [0, 0.194] for none of 16; expected largest gap: mean / and * exp(t s / (mean sqrt(n))), t the 97.5 % point of Student's t with n - 1 degrees of freedom (the delta-method interval of log mean, never below 0); upper end null (unbounded) when no sample separated";
 
 impl MonteCarloResults {
     /// The speed of case `c`, m/s: swept, or the first vehicle's own.
