@@ -94,12 +94,39 @@ pub(super) fn write_study(
             );
         }
         Results::MonteCarlo(mc) => {
+            // The wheel that separated in the most samples (the first such
+            // in case order), its probability with the 95 % interval and
+            // the count it comes from: 0 of 16 reads 0 (0–0.194), not 0.
             let highest = (0..mc.cases.len())
-                .flat_map(|c| mc.wheel_statistics(c))
-                .map(|w| w.probability)
-                .fold(0.0, f64::max);
+                .flat_map(|c| mc.wheel_statistics(c).into_iter().map(move |w| (c, w)))
+                .reduce(|best, next| {
+                    if next.1.separated > best.1.separated {
+                        next
+                    } else {
+                        best
+                    }
+                });
+            let highest = highest
+                .map(|(c, w)| {
+                    let speed = mc
+                        .speed(c)
+                        .map(|v| format!(", {:.1} km/h", vbi::report::km_h(v)))
+                        .unwrap_or_default();
+                    format!(
+                        ", highest probability of separation {:.4} (95 % interval {:.4}–{:.4}; {} of {} samples; {}{speed}, vehicle {} wheel {})",
+                        w.probability,
+                        w.probability_low,
+                        w.probability_high,
+                        w.separated,
+                        mc.samples,
+                        mc.labels[c],
+                        w.vehicle,
+                        w.wheel
+                    )
+                })
+                .unwrap_or_default();
             errln!(
-                "{}: Monte Carlo of {} runs ({} cases × {} samples), highest probability of separation {highest:.4}, {:.2} s",
+                "{}: Monte Carlo of {} runs ({} cases × {} samples){highest}, {:.2} s",
                 scenario.name,
                 mc.sample_results.len(),
                 mc.cases.len(),

@@ -156,6 +156,18 @@ pub struct Series<'a> {
     pub y: &'a [f64],
 }
 
+/// A shaded band around one series of [`line_chart_with_bands`]: at each
+/// abscissa of the series, an interval [`low`, `high`] (a confidence
+/// interval); a point where either end is not finite (an interval without
+/// an upper end) is left out and breaks the band.
+#[derive(Debug, Clone, Copy)]
+pub struct Band<'a> {
+    /// Lower ends, one per abscissa of the series.
+    pub low: &'a [f64],
+    /// Upper ends, one per abscissa of the series.
+    pub high: &'a [f64],
+}
+
 /// Line chart: title, axis labels (with units), several series with a legend,
 /// optional logarithmic axes.
 ///
@@ -172,7 +184,7 @@ pub fn line_chart(
     log_x: bool,
     log_y: bool,
 ) -> Result<(), PlotError> {
-    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y, 0, 0)?;
+    let rendered = render_line_chart(title, x_label, y_label, series, log_x, log_y, 0, 0, &[])?;
     write_png(path, &rendered.rgb)
 }
 
@@ -189,7 +201,7 @@ pub fn line_chart_with_reference(
 ) -> Result<(), PlotError> {
     let mut all = series.to_vec();
     all.push(*reference);
-    let rendered = render_line_chart(title, x_label, y_label, &all, false, false, 0, 1)?;
+    let rendered = render_line_chart(title, x_label, y_label, &all, false, false, 0, 1, &[])?;
     write_png(path, &rendered.rgb)
 }
 
@@ -204,7 +216,30 @@ pub fn line_chart_over_samples(
     series: &[Series],
     grey: usize,
 ) -> Result<(), PlotError> {
-    let rendered = render_line_chart(title, x_label, y_label, series, false, false, grey, 0)?;
+    let rendered = render_line_chart(title, x_label, y_label, series, false, false, grey, 0, &[])?;
+    write_png(path, &rendered.rgb)
+}
+
+/// [`line_chart`] on linear axes with `bands[i]` shaded behind `series[i]`
+/// in its colour, translucent (confidence intervals of estimates at a few
+/// speeds); the axes take in the bands. `bands` has one entry per series
+/// (`None`: no band), each as long as its series.
+pub fn line_chart_with_bands(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    bands: &[Option<Band>],
+) -> Result<(), PlotError> {
+    if bands.len() != series.len() {
+        return Err(PlotError::InvalidInput(format!(
+            "{} bands for {} series",
+            bands.len(),
+            series.len()
+        )));
+    }
+    let rendered = render_line_chart(title, x_label, y_label, series, false, false, 0, 0, bands)?;
     write_png(path, &rendered.rgb)
 }
 

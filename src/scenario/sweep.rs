@@ -407,3 +407,36 @@ pub fn study_points(study: &Study, base: &Surface) -> f64 {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Rails;
+
+    /// One label per FRA class (issue 40.5): a study over the scene's own
+    /// `{type: fra, class: 4}` and one over `roughness: [fra4]` label their
+    /// cases alike, as the `roughness` list spells the class.
+    #[test]
+    fn an_fra_class_has_one_label() {
+        for (class, entry) in [
+            (1, SweepRoughness::Fra1),
+            (4, SweepRoughness::Fra4),
+            (6, SweepRoughness::Fra6),
+        ] {
+            let own = Surface::Fra {
+                class,
+                sampling: Sampling {
+                    shortest_wavelength: 1.0,
+                    longest_wavelength: 80.0,
+                    terms: 100,
+                    seed: 1,
+                    rails: Rails::Identical,
+                    run_in: 0.0,
+                    alignment: false,
+                },
+            };
+            assert_eq!(label(&own, None), format!("fra{class}"));
+            assert_eq!(label(&own, Some(entry)), label(&own, None));
+        }
+    }
+}

@@ -243,7 +243,8 @@ impl Surface {
     }
 
     /// A short name for tables and plots: `smooth`, `harmonic`, the
-    /// power-law class or `random`, `fra-5`, `german-low`, `iso-C`,
+    /// power-law class or `random`, `fra5` (as a study's `roughness` list
+    /// names it), `german-low`, `iso-C`,
     /// `measured`, `ramp`, `step`, `bump`, `dip`, `piecewise-linear`.
     pub fn label(&self) -> String {
         match self {

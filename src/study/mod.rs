@@ -11,6 +11,7 @@ mod resonance_report;
 pub mod separation_map;
 pub mod shard;
 pub mod speed_sweep;
+pub mod statistics;
 
 use crate::run::Outcome;
 use monte_carlo::MonteCarloResults;

@@ -395,6 +395,31 @@ impl SweepResults {
             .collect()
     }
 
+    /// Per speed, the 95 % interval of the mean DAF of `column` over the
+    /// samples of surface `roughness`
+    /// ([`crate::study::statistics::nonnegative_mean_interval`]: never below
+    /// 0; the value itself where every sample gives the same), or
+    /// `None` with one run (a deterministic surface: nothing sampled) or
+    /// where a sample has no DAF.
+    pub fn daf_mean_intervals(
+        &self,
+        roughness: usize,
+        column: usize,
+    ) -> Vec<Option<(f64, Option<f64>)>> {
+        let samples = self.samples_of(roughness);
+        (0..self.speeds.len())
+            .map(|i| {
+                let values: Option<Vec<f64>> = samples
+                    .iter()
+                    .map(|s| s[i].dafs[column].filter(|d| d.is_finite()))
+                    .collect();
+                values
+                    .filter(|v| v.len() > 1)
+                    .map(|v| crate::study::statistics::nonnegative_mean_interval(&v))
+            })
+            .collect()
+    }
+
     /// Per speed, the mean and the largest DAF of `column` over the samples
     /// of surface `roughness` (NaN where a sample has none).
     pub fn daf_statistics(&self, roughness: usize, column: usize) -> (Vec<f64>, Vec<f64>) {

@@ -198,16 +198,17 @@ impl Spectrum {
         }
     }
 
-    /// A short name for labels: `fra-5`, `german-low`, `iso-C`.
+    /// A short name for labels: `fra5` (an FRA class as a study's
+    /// `roughness` list names it), `german-low`, `iso-C`.
     pub fn label(&self) -> String {
         match *self {
-            Spectrum::Fra { class } => format!("fra-{class}"),
+            Spectrum::Fra { class } => format!("fra{class}"),
             Spectrum::German { interference } => match interference {
                 Interference::Low => "german-low".into(),
                 Interference::High => "german-high".into(),
             },
             Spectrum::Iso8608 { class } => format!("iso-{class:?}"),
-            Spectrum::FraAlignment { class } => format!("fra-{class}-alignment"),
+            Spectrum::FraAlignment { class } => format!("fra{class}-alignment"),
             Spectrum::GermanAlignment { interference } => match interference {
                 Interference::Low => "german-low-alignment".into(),
                 Interference::High => "german-high-alignment".into(),

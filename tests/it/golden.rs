@@ -436,7 +436,8 @@ fn sweep_snapshots(sweep: &SweepResults) -> (String, String) {
 }
 
 /// A Monte Carlo study as (per case and wheel the probability of separation
-/// with its interval and the expected largest gap; every sample's seed,
+/// with its interval and the expected largest gap with its standard error
+/// and interval, `[0, ∞)` where the samples do not bound it; every sample's seed,
 /// separation and largest gap, then each record's mean and standard
 /// deviation at 11 evenly spaced steps of each case), rounded to 6
 /// significant digits.
@@ -451,7 +452,7 @@ fn monte_carlo_snapshots(mc: &MonteCarloResults) -> (String, String) {
     for c in 0..mc.cases.len() {
         for w in mc.wheel_statistics(c) {
             summary.push_str(&format!(
-                "{} {} v{} w{}: separated {} p {} [{}, {}] E[max gap] {} ± {}\n",
+                "{} {} v{} w{}: separated {} p {} [{}, {}] E[max gap] {} ± {} [{}, {}\n",
                 mc.labels[c],
                 mc.speed(c)
                     .map_or("-".into(), |v| significant(v).to_string()),
@@ -463,6 +464,9 @@ fn monte_carlo_snapshots(mc: &MonteCarloResults) -> (String, String) {
                 significant(w.probability_high),
                 significant(w.expected_max_gap),
                 significant(w.expected_max_gap_std_error),
+                significant(w.expected_max_gap_low),
+                w.expected_max_gap_high
+                    .map_or("∞)".into(), |h| format!("{}]", significant(h))),
             ));
         }
     }

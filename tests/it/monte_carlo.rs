@@ -168,8 +168,13 @@ fn separation_probability_is_exact_where_the_answer_is_known() {
     assert_eq!(w.separated, 0);
     assert_eq!(w.probability, 0.0);
     assert_eq!(w.expected_max_gap, 0.0);
-    let z2 = monte_carlo::report::Z95.powi(2);
+    let z2 = vbi::study::statistics::Z95.powi(2);
     assert!((w.probability_high - z2 / (12.0 + z2)).abs() < 1e-15);
+    // No gap opened: the samples do not bound the expected gap from above.
+    assert_eq!(
+        (w.expected_max_gap_low, w.expected_max_gap_high),
+        (0.0, None)
+    );
     // A very poor road (A_r = 1024e-6 m³/cycle) at 40 m/s with a stiff
     // contact: every sample lifts the wheel.
     let rough = study(
@@ -184,6 +189,98 @@ fn separation_probability_is_exact_where_the_answer_is_known() {
     assert_eq!(w.separated, 12);
     assert_eq!(w.probability, 1.0);
     assert!(w.expected_max_gap > 0.0);
+    // Every sample separated: the interval of the expected gap is
+    // positive, around the mean.
+    let high = w.expected_max_gap_high.expect("the samples bound the mean");
+    assert!(0.0 < w.expected_max_gap_low && w.expected_max_gap_low < w.expected_max_gap);
+    assert!(w.expected_max_gap < high);
+}
+
+/// Issue 40.5, honest intervals: a 16-sample study through `vbi run`, at a
+/// speed where no sample separates and one where some do. The console gives
+/// the highest probability with its interval and count; separation.csv and
+/// summary.json give 0 of 16 as 0 with the Wilson interval [0, 0.194], not a
+/// bare 0, and the expected largest gap an interval that never goes below 0
+/// (the normal interval mean ∓ 1.96 SE went to −1.34e-5 m) and, where no
+/// sample separated, no upper end; both plots are drawn.
+#[test]
+fn a_16_sample_study_reports_honest_intervals() {
+    let scratch = Scratch::new("monte_carlo", "honest-intervals");
+    let path = scratch.path("mc.yaml");
+    let study =
+        "{type: monte_carlo, samples: 16, seed: 11, show: 2, speeds: {from: 2, to: 30, count: 2}}";
+    std::fs::write(&path, scene(256e-6, 30.0, study)).unwrap();
+    let out_dir = scratch.path("out");
+    let out = vbi(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let console = stderr
+        .lines()
+        .find(|l| l.contains("highest probability of separation"))
+        .unwrap_or_else(|| panic!("{stderr}"));
+    assert!(
+        console.contains("95 % interval") && console.contains(" of 16 samples"),
+        "{console}"
+    );
+
+    let z2 = vbi::study::statistics::Z95.powi(2);
+    let csv = std::fs::read_to_string(out_dir.join("separation.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("{name} in {header:?}"))
+    };
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2, "{csv}");
+    let (calm, fast) = (&rows[0], &rows[1]);
+    assert_eq!(calm[column("samples")], "16");
+    assert_eq!(calm[column("separated")], "0");
+    let high: f64 = calm[column("probability_high")].parse().unwrap();
+    assert!(
+        (high - z2 / (16.0 + z2)).abs() < 1e-12 && (high - 0.1936).abs() < 1e-4,
+        "{high}"
+    );
+    assert_eq!(calm[column("expected_max_gap_low [m]")], "0");
+    assert_eq!(
+        calm[column("expected_max_gap_high [m]")],
+        "",
+        "no sample separated: unbounded"
+    );
+    let separated: usize = fast[column("separated")].parse().unwrap();
+    assert!(separated > 0, "{csv}");
+    let mean: f64 = fast[column("expected_max_gap [m]")].parse().unwrap();
+    let low: f64 = fast[column("expected_max_gap_low [m]")].parse().unwrap();
+    let high: f64 = fast[column("expected_max_gap_high [m]")].parse().unwrap();
+    assert!(
+        0.0 < low && low < mean && mean < high,
+        "{low} {mean} {high}"
+    );
+
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out_dir.join("summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(summary["samples"], 16);
+    assert!(summary["intervals"].as_str().unwrap().contains("Wilson"));
+    let calm = &summary["cases"][0]["wheels"][0];
+    assert_eq!(calm["probability"], 0.0);
+    assert!(calm["probability_high"].as_f64().unwrap() > 0.19);
+    assert!(calm["expected_max_gap_high"].is_null(), "{calm}");
+    let fast = &summary["cases"][1]["wheels"][0];
+    assert!(
+        fast["expected_max_gap_low"].as_f64().unwrap() > 0.0,
+        "{fast}"
+    );
+    for png in ["separation_probability.png", "expected_gap.png"] {
+        assert!(out_dir.join(png).is_file(), "{png}");
+    }
 }
 
 #[test]
@@ -516,7 +613,7 @@ study: {type: monte_carlo, samples: 3, seed: 5}
     };
     assert!((1..=3).contains(&sample), "{message}");
     assert!(
-        message.contains(&format!("sample {sample} of case fra-5"))
+        message.contains(&format!("sample {sample} of case fra5"))
             && message.contains(&format!("--sample {sample}"))
             && message.contains("diverged"),
         "{message}"

@@ -240,10 +240,21 @@ fn plate_sweep_tabulates_every_girder_and_matches_single_runs() {
     let c = results.span_column(2, 1);
     let (smooth, _) = results.daf_statistics(0, c);
     let (good, good_max) = results.daf_statistics(1, c);
+    let intervals = results.daf_mean_intervals(1, c);
     for i in 0..2 {
         assert!(good[i] > smooth[i], "{good:?} vs {smooth:?}");
         assert!(good_max[i] >= good[i]);
+        // The mean of the 2 rough-road samples has a 95 % interval around
+        // it, above 0 (issue 40.5); the smooth road's single run none.
+        let Some((low, Some(high))) = intervals[i] else {
+            panic!("{intervals:?}")
+        };
+        assert!(
+            0.0 < low && low < good[i] && good[i] < high,
+            "{intervals:?}"
+        );
     }
+    assert!(results.daf_mean_intervals(0, c).iter().all(Option::is_none));
 }
 
 // ---------------------------------------------------------------------------
@@ -329,6 +340,21 @@ fn run_writes_every_output_and_nothing_on_failure() {
     assert_eq!(by.len(), 2);
     assert_eq!(by[1]["seeds"], serde_json::json!([1, 2]));
     assert_eq!(by[1]["mean_daf"].as_array().unwrap().len(), 4);
+    // The mean DAF of the 2 samples has its 95 % interval (issue 40.5): a
+    // moving force does not feel the roughness, both samples give the same
+    // DAF, and the interval is that value; the smooth surface, run once,
+    // has none.
+    for i in 0..4 {
+        let mean = &by[1]["mean_daf"][i];
+        assert!(mean.as_f64().is_some_and(|m| m > 1.0), "{}", by[1]);
+        assert_eq!(
+            (&by[1]["mean_daf_low"][i], &by[1]["mean_daf_high"][i]),
+            (mean, mean),
+            "{}",
+            by[1]
+        );
+        assert!(by[0]["mean_daf_low"][i].is_null() && by[0]["mean_daf_high"][i].is_null());
+    }
     let largest = &summary["largest_daf"];
     let all_dafs = csv.lines().skip(1).flat_map(|l| {
         l.split(',')

@@ -5,6 +5,14 @@ use super::*;
 /// Series with at most this many points get a dot at each.
 const MAX_MARKED_POINTS: usize = 60;
 
+/// One series' band as runs of consecutive usable abscissae, each point
+/// (x, low, high).
+pub(super) type BandRuns = Vec<Vec<(f64, f64, f64)>>;
+
+/// Opacity of a band's fill ([`Band`]): several overlapping bands stay
+/// readable.
+const BAND_OPACITY: f64 = 0.12;
+
 #[allow(clippy::too_many_arguments)]
 pub(super) fn render_line_chart(
     title: &str,
@@ -15,7 +23,21 @@ pub(super) fn render_line_chart(
     log_y: bool,
     grey: usize,
     reference: usize,
+    bands: &[Option<Band>],
 ) -> Result<Rendered, PlotError> {
+    for (s, band) in series.iter().zip(bands) {
+        if let Some(b) = band
+            && (b.low.len() != s.x.len() || b.high.len() != s.x.len())
+        {
+            return Err(PlotError::InvalidInput(format!(
+                "series '{}': {} points but its band has {} lower and {} upper ends",
+                s.label,
+                s.x.len(),
+                b.low.len(),
+                b.high.len()
+            )));
+        }
+    }
     for s in series {
         if s.x.len() != s.y.len() {
             return Err(PlotError::InvalidInput(format!(
@@ -55,7 +77,34 @@ pub(super) fn render_line_chart(
             runs
         })
         .collect();
-    let points = runs.iter().flatten().flatten();
+    // Per band, runs of consecutive abscissae where the series' x and both
+    // ends are usable: (x, low, high).
+    let band_runs: Vec<BandRuns> = series
+        .iter()
+        .zip(bands.iter().chain(std::iter::repeat(&None)))
+        .map(|(s, band)| {
+            let Some(b) = band else { return Vec::new() };
+            let mut runs = Vec::new();
+            let mut cur = Vec::new();
+            for ((&x, &lo), &hi) in s.x.iter().zip(b.low).zip(b.high) {
+                if ok_x(x) && ok_y(lo) && ok_y(hi) {
+                    cur.push((x, lo, hi));
+                } else if !cur.is_empty() {
+                    runs.push(std::mem::take(&mut cur));
+                }
+            }
+            if !cur.is_empty() {
+                runs.push(cur);
+            }
+            runs
+        })
+        .collect();
+    let band_points = band_runs
+        .iter()
+        .flatten()
+        .flatten()
+        .flat_map(|&(x, lo, hi)| [(x, lo), (x, hi)]);
+    let points = runs.iter().flatten().flatten().copied().chain(band_points);
     let (x_lo, x_hi) = min_max(points.clone().map(|p| p.0));
     let (y_lo, y_hi) = min_max(points.map(|p| p.1));
 
@@ -85,6 +134,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            &band_runs,
             grey,
         ),
         (true, false) => draw_line_chart(
@@ -94,6 +144,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            &band_runs,
             grey,
         ),
         (false, true) => draw_line_chart(
@@ -103,6 +154,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            &band_runs,
             grey,
         ),
         (true, true) => draw_line_chart(
@@ -112,6 +164,7 @@ pub(super) fn render_line_chart(
             &labels,
             series,
             &runs,
+            &band_runs,
             grey,
         ),
     })
@@ -128,6 +181,7 @@ pub(super) struct LineChartText<'a> {
     reference: usize,
 }
 
+#[allow(clippy::too_many_arguments)]
 pub(super) fn draw_line_chart<X, Y>(
     root: &Area<'_>,
     x_coord: X,
@@ -135,6 +189,7 @@ pub(super) fn draw_line_chart<X, Y>(
     text: &LineChartText,
     series: &[Series],
     runs: &[Vec<Vec<(f64, f64)>>],
+    band_runs: &[BandRuns],
     grey: usize,
 ) -> Result<Geometry, PlotError>
 where
@@ -166,6 +221,33 @@ where
         .draw()
         .map_err(draw_err)?;
 
+    // Bands first, under every line: each series' interval as a
+    // translucent polygon (lower ends forward, upper ends back) per run, in
+    // the series' colour (the palette from its start, as the lines).
+    for (k, runs) in band_runs.iter().enumerate() {
+        let colour = PALETTE[k.saturating_sub(grey) % PALETTE.len()];
+        for run in runs {
+            let outline: Vec<(f64, f64)> = run
+                .iter()
+                .map(|&(x, lo, _)| (x, lo))
+                .chain(run.iter().rev().map(|&(x, _, hi)| (x, hi)))
+                .collect();
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    outline.clone(),
+                    colour.mix(BAND_OPACITY).filled(),
+                )))
+                .map_err(draw_err)?;
+            // A band of one abscissa (or of zero width) has no area: its
+            // outline, 1 px, shows it.
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    outline,
+                    colour.mix(0.5).stroke_width(1),
+                )))
+                .map_err(draw_err)?;
+        }
+    }
     let mut any_label = false;
     for (k, (s, runs)) in series.iter().zip(runs).enumerate() {
         // The first `grey` series are background samples (thin, grey, no

@@ -514,3 +514,62 @@ fn a_dense_record_stays_inside_its_panel() {
         "blue rows {top}..{bottom} of {height}"
     );
 }
+
+/// A band (issue 40.5: the probability plot's 95 % intervals) is shaded
+/// under its line in a light tint of the line's colour; an interval
+/// without an upper end draws nothing; a band of the wrong length is an
+/// error, not a panic.
+#[test]
+fn bands_shade_their_interval() {
+    let x = [100.0, 200.0, 300.0];
+    let y = [0.0, 0.25, 1.0];
+    let low = [0.0, 0.0128, 0.51];
+    let high = [0.49, 0.70, 1.0];
+    let series = [Series {
+        label: "fra4, vehicle 1 wheel 1",
+        x: &x,
+        y: &y,
+    }];
+    let band = Band {
+        low: &low,
+        high: &high,
+    };
+    let render = |bands: &[Option<Band>]| {
+        render_line_chart("t", "speed (km/h)", "p", &series, false, false, 0, 0, bands)
+            .unwrap()
+            .rgb
+    };
+    let plain = render(&[None]);
+    let shaded = render(&[Some(band)]);
+    // Light, bluish pixels (the first palette colour, 31/119/180, over
+    // white at low opacity) cover a good part of the chart with the band;
+    // without it only the line's anti-aliased edges are that light.
+    let tinted = |rgb: &[u8]| {
+        rgb.chunks(3)
+            .filter(|p| p[0] > 200 && p[0] < 250 && p[2] > p[0] + 8 && p[1] > p[0])
+            .count()
+    };
+    let (plain_tint, shaded_tint) = (tinted(&plain), tinted(&shaded));
+    assert!(plain_tint < 1_000, "{plain_tint}");
+    assert!(shaded_tint > plain_tint + 20_000, "{shaded_tint}");
+    // No upper ends: no band, the chart as without one.
+    let unbounded = [f64::NAN; 3];
+    let open = Band {
+        low: &low,
+        high: &unbounded,
+    };
+    assert_eq!(render(&[Some(open)]), plain);
+    // Lengths must agree.
+    let dir = test_dir("bands");
+    let short = Band {
+        low: &low[..2],
+        high: &high,
+    };
+    let err = line_chart_with_bands(&dir.join("b.png"), "t", "x", "y", &series, &[Some(short)]);
+    assert!(matches!(err, Err(PlotError::InvalidInput(_))), "{err:?}");
+    let err = line_chart_with_bands(&dir.join("b.png"), "t", "x", "y", &series, &[]);
+    assert!(matches!(err, Err(PlotError::InvalidInput(_))), "{err:?}");
+    line_chart_with_bands(&dir.join("b.png"), "t", "x", "y", &series, &[Some(band)]).unwrap();
+    check_png(&dir.join("b.png"));
+    assert!(leftovers(&dir).is_empty());
+}

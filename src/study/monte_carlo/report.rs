@@ -1,10 +1,12 @@
 //! A Monte Carlo study's outputs: study.csv (one row per sample),
 //! separation.csv (per case and wheel: probability of separation and
-//! expected largest gap with 95 % intervals), envelopes.csv (per case, mean,
+//! expected largest gap with their 95 % intervals and the sample count,
+//! [`crate::study::statistics`]), envelopes.csv (per case, mean,
 //! standard deviation and mean ± 3σ of every record at every step),
 //! envelope_<record>.png (the first case, a few samples in grey as in the
 //! LCP separation paper's Fig. 7), with several speeds
-//! separation_probability.png and expected_gap.png (Figs. 8 and 9),
+//! separation_probability.png and expected_gap.png (Figs. 8 and 9, the
+//! intervals shaded),
 //! resolved.yaml and, last, summary.json.
 
 use std::path::Path;
@@ -12,43 +14,11 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::MonteCarloResults;
-use crate::report::plot::{Series, line_chart, line_chart_over_samples};
+use crate::report::plot::{Band, Series, line_chart_over_samples, line_chart_with_bands};
 use crate::report::{clean, heading, km_h, number, write_atomic};
 use crate::run::RunError;
 use crate::scene::Scenario;
-
-/// Standard normal quantile of a two-sided 95 % interval.
-pub const Z95: f64 = 1.959_963_984_540_054;
-
-/// Wilson score interval of a proportion (Wilson 1927; Agresti & Coull
-/// 1998, eq. 2) at normal quantile `z`: `successes` out of `n` trials gives
-/// (p̂ + z²/2n ± z √(p̂(1−p̂)/n + z²/4n²)) / (1 + z²/n). Unlike the normal
-/// (Wald) interval it stays inside [0, 1] and is not empty at p̂ = 0 or 1,
-/// the cases a separation study meets most.
-pub fn wilson_interval(successes: usize, n: usize, z: f64) -> (f64, f64) {
-    if n == 0 {
-        return (0.0, 1.0);
-    }
-    let n = n as f64;
-    let p = successes as f64 / n;
-    let z2 = z * z;
-    let denominator = 1.0 + z2 / n;
-    let centre = (p + z2 / (2.0 * n)) / denominator;
-    let half = z / denominator * (p * (1.0 - p) / n + z2 / (4.0 * n * n)).sqrt();
-    // At p̂ = 0 (1) the lower (upper) end is exactly 0 (1); the formula
-    // reaches it only up to round-off.
-    let low = if successes == 0 {
-        0.0
-    } else {
-        (centre - half).max(0.0)
-    };
-    let high = if p == 1.0 {
-        1.0
-    } else {
-        (centre + half).min(1.0)
-    };
-    (low, high)
-}
+use crate::study::statistics::{nonnegative_mean_interval, wilson_interval};
 
 /// Separation statistics of one wheel in one case.
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -61,19 +31,24 @@ pub struct WheelStatistics {
     pub separated: usize,
     /// Estimated probability of separation, separated / samples.
     pub probability: f64,
-    /// Wilson 95 % interval of the probability, lower end.
+    /// 95 % interval of the probability, lower end
+    /// ([`wilson_interval`]: Wilson's score interval, Brown, Cai & DasGupta's
+    /// end for 1 or 2 (3 above 50 samples) separations).
     pub probability_low: f64,
-    /// Wilson 95 % interval of the probability, upper end.
+    /// 95 % interval of the probability, upper end (0.194 for none of 16).
     pub probability_high: f64,
     /// Mean over the samples of the largest gap, m (a sample that never
     /// separates counts 0).
     pub expected_max_gap: f64,
     /// Standard error of that mean, s/√n, m (s the sample standard deviation).
     pub expected_max_gap_std_error: f64,
-    /// Normal 95 % interval of the mean, lower end, m (mean − 1.96 SE).
+    /// 95 % interval of the mean, lower end, m ([`nonnegative_mean_interval`]:
+    /// x̄ / e^{t s/(x̄√n)}, never below 0; 0 when the samples do not bound it).
     pub expected_max_gap_low: f64,
-    /// Normal 95 % interval of the mean, upper end, m (mean + 1.96 SE).
-    pub expected_max_gap_high: f64,
+    /// 95 % interval of the mean, upper end, m (x̄ · e^{t s/(x̄√n)}; `null`
+    /// when the samples do not bound it: no sample separated, or one
+    /// sample).
+    pub expected_max_gap_high: Option<f64>,
 }
 
 /// One case of summary.json.
@@ -110,7 +85,7 @@ pub struct MonteCarloSummary {
     pub cases: Vec<CaseSummary>,
 }
 
-const INTERVALS: &str = "probability: Wilson score 95 % interval; expected largest gap: mean ± 1.96 standard errors (s/sqrt(n))";
+const INTERVALS: &str = "95 % intervals over the samples of each case. probability: Wilson score interval (Wilson 1927) with the Poisson lower end at 1 or 2 separations (3 above 50 samples) of Brown, Cai & DasGupta 2001 (upper end mirrored), [0, 0.194] for none of 16; expected largest gap: mean / and * exp(t s / (mean sqrt(n))), t the 97.5 % point of Student's t with n - 1 degrees of freedom (the delta-method interval of log mean, never below 0); upper end null (unbounded) when no sample separated";
 
 impl MonteCarloResults {
     /// The speed of case `c`, m/s: swept, or the first vehicle's own.
@@ -128,7 +103,7 @@ impl MonteCarloResults {
         (0..first.wheels.len())
             .map(|w| {
                 let separated = rows.iter().filter(|r| r.wheels[w].separated).count();
-                let (low, high) = wilson_interval(separated, n, Z95);
+                let (low, high) = wilson_interval(separated, n);
                 let gaps: Vec<f64> = rows.iter().map(|r| r.wheels[w].max_gap).collect();
                 let mean = gaps.iter().sum::<f64>() / n as f64;
                 let std_error = if n > 1 {
@@ -138,6 +113,7 @@ impl MonteCarloResults {
                 } else {
                     0.0
                 };
+                let (gap_low, gap_high) = nonnegative_mean_interval(&gaps);
                 WheelStatistics {
                     vehicle: first.wheels[w].vehicle,
                     wheel: first.wheels[w].wheel,
@@ -147,8 +123,8 @@ impl MonteCarloResults {
                     probability_high: high,
                     expected_max_gap: mean,
                     expected_max_gap_std_error: std_error,
-                    expected_max_gap_low: mean - Z95 * std_error,
-                    expected_max_gap_high: mean + Z95 * std_error,
+                    expected_max_gap_low: gap_low,
+                    expected_max_gap_high: gap_high,
                 }
             })
             .collect()
@@ -212,8 +188,9 @@ impl MonteCarloResults {
         out.into_inner().expect("writing to memory")
     }
 
-    /// separation.csv: per case and wheel, the statistics of
-    /// [`WheelStatistics`].
+    /// separation.csv: per case and wheel, the sample count and the
+    /// statistics of [`WheelStatistics`]; an interval's missing upper end
+    /// (the samples do not bound it) is an empty cell.
     pub fn separation_csv(&self) -> Vec<u8> {
         let mut out = csv::Writer::from_writer(Vec::new());
         out.write_record([
@@ -247,7 +224,7 @@ impl MonteCarloResults {
                     number(w.expected_max_gap),
                     number(w.expected_max_gap_std_error),
                     number(w.expected_max_gap_low),
-                    number(w.expected_max_gap_high),
+                    w.expected_max_gap_high.map(number).unwrap_or_default(),
                 ]);
                 out.write_record(&row).expect("writing to memory");
             }
@@ -367,7 +344,9 @@ fn plot_envelopes(out: &Path, name: &str, results: &MonteCarloResults) -> Result
 }
 
 /// separation_probability.png and expected_gap.png against speed, one line
-/// per surface and wheel (Figs. 8 and 9).
+/// per surface and wheel (Figs. 8 and 9), each shaded with its 95 %
+/// interval ([`WheelStatistics`]); an expected gap whose interval has no
+/// upper end (no sample separated) has no band there.
 fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Result<(), RunError> {
     if results.cases.iter().all(|c| c.speed.is_none()) {
         return Ok(());
@@ -378,10 +357,14 @@ fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Re
     let stats: Vec<Vec<WheelStatistics>> = (0..results.cases.len())
         .map(|c| results.wheel_statistics(c))
         .collect();
-    let mut labels = Vec::new();
-    let mut xs = Vec::new();
-    let mut probability = Vec::new();
-    let mut gap = Vec::new();
+    // Per line: label, speeds (km/h), then per chart the estimates and
+    // their lower and upper ends.
+    struct Line {
+        label: String,
+        km_h: Vec<f64>,
+        charts: [[Vec<f64>; 3]; 2],
+    }
+    let mut lines = Vec::new();
     for s in 0..surfaces {
         let cases: Vec<usize> = (s * n_speeds..(s + 1) * n_speeds).collect();
         let km_h: Vec<f64> = cases
@@ -389,54 +372,83 @@ fn plot_against_speed(out: &Path, name: &str, results: &MonteCarloResults) -> Re
             .map(|&c| km_h(results.speed(c).unwrap_or(f64::NAN)))
             .collect();
         for (w, first) in stats[cases[0]].iter().enumerate() {
-            labels.push(format!(
-                "{}, vehicle {} wheel {}",
-                results.labels[cases[0]], first.vehicle, first.wheel
-            ));
-            xs.push(km_h.clone());
-            probability.push(cases.iter().map(|&c| stats[c][w].probability).collect());
-            gap.push(
-                cases
-                    .iter()
-                    .map(|&c| stats[c][w].expected_max_gap * 1e3)
-                    .collect::<Vec<f64>>(),
-            );
+            let of = |f: &dyn Fn(&WheelStatistics) -> f64| -> Vec<f64> {
+                cases.iter().map(|&c| f(&stats[c][w])).collect()
+            };
+            lines.push(Line {
+                label: format!(
+                    "{}, vehicle {} wheel {}",
+                    results.labels[cases[0]], first.vehicle, first.wheel
+                ),
+                km_h: km_h.clone(),
+                charts: [
+                    [
+                        of(&|w| w.probability),
+                        of(&|w| w.probability_low),
+                        of(&|w| w.probability_high),
+                    ],
+                    // In mm; an interval without an upper end is NaN (no band).
+                    [
+                        of(&|w| w.expected_max_gap * 1e3),
+                        of(&|w| w.expected_max_gap_low * 1e3),
+                        of(&|w| w.expected_max_gap_high.map_or(f64::NAN, |h| h * 1e3)),
+                    ],
+                ],
+            });
         }
     }
-    let series = |ys: &[Vec<f64>]| -> Vec<(String, Vec<f64>, Vec<f64>)> {
-        labels
-            .iter()
-            .zip(&xs)
-            .zip(ys)
-            .map(|((l, x), y)| (l.clone(), x.clone(), y.clone()))
-            .collect()
-    };
-    for (file, title, y_label, data) in [
+    let n = results.samples;
+    // Where no sample separated the gap's interval has no upper end, and
+    // no band: the title says why.
+    let unbounded = lines
+        .iter()
+        .any(|l| l.charts[1][2].iter().any(|h| h.is_nan()));
+    for (chart, (file, title, y_label)) in [
         (
             "separation_probability.png",
-            "probability of separation",
-            "probability of separation",
-            series(&probability),
+            format!("probability of separation, n = {n} samples"),
+            "probability of separation (band: 95 % Wilson interval)",
         ),
         (
             "expected_gap.png",
-            "expected largest separation",
-            "expected largest gap (mm)",
-            series(&gap),
+            format!(
+                "expected largest separation, n = {n} samples{}",
+                if unbounded {
+                    " (no band: no sample separated, unbounded)"
+                } else {
+                    ""
+                }
+            ),
+            "expected largest gap (mm; band: 95 % interval)",
         ),
-    ] {
-        let lines: Vec<Series> = data
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let series: Vec<Series> = lines
             .iter()
-            .map(|(label, x, y)| Series { label, x, y })
+            .map(|l| Series {
+                label: &l.label,
+                x: &l.km_h,
+                y: &l.charts[chart][0],
+            })
             .collect();
-        line_chart(
+        let bands: Vec<Option<Band>> = lines
+            .iter()
+            .map(|l| {
+                Some(Band {
+                    low: &l.charts[chart][1],
+                    high: &l.charts[chart][2],
+                })
+            })
+            .collect();
+        line_chart_with_bands(
             &out.join(file),
-            &format!("{name}: {title} over {} samples", results.samples),
+            &format!("{name}: {title}"),
             "speed (km/h)",
             y_label,
-            &lines,
-            false,
-            false,
+            &series,
+            &bands,
         )?;
     }
     Ok(())
@@ -468,26 +480,4 @@ pub fn write(out: &Path, scenario: &Scenario, results: &MonteCarloResults) -> Re
         crate::study::summary_json(&results.summary(&scenario.name), results.advice(scenario));
     write_atomic(&out.join("summary.json"), text.as_bytes())?;
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn wilson_interval_against_hand_values() {
-        // 3 of 10 at z = 1.96, by hand from Agresti & Coull 1998, eq. 2:
-        // centre (0.3 + 0.19208)/1.38416 = 0.355508, half 1.96/1.38416 ·
-        // √(0.021 + 0.009604) = 0.247719: (0.107789, 0.603227).
-        let (lo, hi) = wilson_interval(3, 10, 1.96);
-        assert!((lo - 0.107_789).abs() < 2e-6, "{lo}");
-        assert!((hi - 0.603_227).abs() < 2e-6, "{hi}");
-        // 0 of n: lower end exactly 0, upper z²/(n + z²).
-        let (lo, hi) = wilson_interval(0, 100, 1.96);
-        assert_eq!(lo, 0.0);
-        assert!((hi - 1.96f64.powi(2) / (100.0 + 1.96f64.powi(2))).abs() < 1e-15);
-        let (lo, hi) = wilson_interval(100, 100, 1.96);
-        assert!((lo - 100.0 / (100.0 + 1.96f64.powi(2))).abs() < 1e-15);
-        assert_eq!(hi, 1.0);
-    }
 }

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::{DafSource, SweepResults};
 use crate::report::km_h;
-use crate::report::plot::{Series, category_heat_map, line_chart};
+use crate::report::plot::{Band, Series, category_heat_map, line_chart_with_bands};
 use crate::report::{self, write_atomic};
 use crate::run::RunError;
 use crate::scene::Scenario;
@@ -26,6 +26,15 @@ pub struct RoughnessDaf {
     pub seeds: Vec<u64>,
     /// Mean DAF over the samples at each speed (null where undefined).
     pub mean_daf: Vec<Option<f64>>,
+    /// 95 % interval of the mean DAF over the `runs` samples at each speed,
+    /// lower end ([`crate::study::statistics::nonnegative_mean_interval`]:
+    /// x̄ / e^{t s/(x̄√n)}, never below 0); null with one run (nothing
+    /// sampled) or where a sample has no DAF.
+    pub mean_daf_low: Vec<Option<f64>>,
+    /// Upper end of that interval (x̄ · e^{t s/(x̄√n)}; both ends the DAF
+    /// where every sample gives the same, as a moving force over any
+    /// roughness); null as the lower end.
+    pub mean_daf_high: Vec<Option<f64>>,
     /// Largest DAF over the samples at each speed (null where undefined).
     pub max_daf: Vec<Option<f64>>,
 }
@@ -95,11 +104,17 @@ impl SweepSummary {
         let daf_by_roughness = (0..results.roughness.len())
             .map(|r| {
                 let (mean, max) = results.daf_statistics(r, column);
+                let intervals = results.daf_mean_intervals(r, column);
                 RoughnessDaf {
                     roughness: results.roughness[r].clone(),
                     runs: results.runs[r],
                     seeds: results.seeds[r].clone(),
                     mean_daf: mean.into_iter().map(finite).collect(),
+                    mean_daf_low: intervals.iter().map(|i| i.map(|(low, _)| low)).collect(),
+                    mean_daf_high: intervals
+                        .iter()
+                        .map(|i| i.and_then(|(_, high)| high))
+                        .collect(),
                     max_daf: max.into_iter().map(finite).collect(),
                 }
             })
@@ -141,6 +156,28 @@ fn mean_note(runs: usize) -> String {
         format!(" (mean of {runs} samples)")
     } else {
         String::new()
+    }
+}
+
+/// The lower and upper ends of [`SweepResults::daf_mean_intervals`] as
+/// band values (NaN where there is none: no band there).
+fn band_ends(results: &SweepResults, roughness: usize, column: usize) -> (Vec<f64>, Vec<f64>) {
+    results
+        .daf_mean_intervals(roughness, column)
+        .into_iter()
+        .map(|i| match i {
+            Some((low, Some(high))) => (low, high),
+            _ => (f64::NAN, f64::NAN),
+        })
+        .unzip()
+}
+
+/// The title's note of the bands, where there are any.
+fn band_note(banded: bool) -> &'static str {
+    if banded {
+        "; band: 95 % interval of the mean"
+    } else {
+        ""
     }
 }
 
@@ -190,17 +227,28 @@ fn plot_daf_speed(
         .zip(&means)
         .map(|((_, label), y)| Series { label, x: &km_h, y })
         .collect();
+    // Several samples: each line's 95 % interval of the mean shaded.
+    let banded = results.runs[0] > 1;
+    let ends: Vec<(Vec<f64>, Vec<f64>)> = columns
+        .iter()
+        .map(|(c, _)| band_ends(results, 0, *c))
+        .collect();
+    let bands: Vec<Option<Band>> = ends
+        .iter()
+        .map(|(low, high)| banded.then_some(Band { low, high }))
+        .collect();
     let at = if by_record {
         "DAF per displacement record".to_string()
     } else {
         format!("DAF at mid-span {}", results.span)
     };
     let title = format!(
-        "{name}: {at}, {}{}",
+        "{name}: {at}, {}{}{}",
         results.roughness[0],
-        mean_note(results.runs[0])
+        mean_note(results.runs[0]),
+        band_note(banded)
     );
-    line_chart(path, &title, SPEED_LABEL, DAF_LABEL, &series, false, false)?;
+    line_chart_with_bands(path, &title, SPEED_LABEL, DAF_LABEL, &series, &bands)?;
     Ok(())
 }
 
@@ -224,15 +272,24 @@ fn plot_roughness(out: &Path, name: &str, results: &SweepResults) -> Result<(), 
         .zip(&means)
         .map(|(label, y)| Series { label, x: &km_h, y })
         .collect();
+    // A sampled surface's line has its 95 % interval of the mean shaded.
+    let ends: Vec<(Vec<f64>, Vec<f64>)> = (0..results.roughness.len())
+        .map(|r| band_ends(results, r, column))
+        .collect();
+    let bands: Vec<Option<Band>> = ends
+        .iter()
+        .zip(&results.runs)
+        .map(|((low, high), &runs)| (runs > 1).then_some(Band { low, high }))
+        .collect();
+    let banded = bands.iter().any(Option::is_some);
     let at = format!("mid-span {}, girder {}", results.span, results.girder);
-    line_chart(
+    line_chart_with_bands(
         &out.join("daf_speed_roughness.png"),
-        &format!("{name}: DAF at {at} by road surface"),
+        &format!("{name}: DAF at {at} by road surface{}", band_note(banded)),
         SPEED_LABEL,
         DAF_LABEL,
         &series,
-        false,
-        false,
+        &bands,
     )?;
     // The map's rows are the surfaces in sweep order, named on the axis.
     let rows = results.roughness.len();
