@@ -240,12 +240,13 @@ case("size-modes-automatic", "budget",
      "name: hostile\nbridge:\n  type: beam\n  spans: @@[10000]\n  bending_stiffness: 8.323e9\n"
      "  mass_per_length: 2303.0\n  elements_per_span: 4000\nvehicles:\n" + OSC, "limits.modes")
 case("size-eigen-work", "budget",
-     "EI = 1 N·m² on a 4,000-element span: the automatic cut-off keeps 449 modes of 8,000 DOFs, "
-     "a Lanczos solve of 1.6e9 (n k²; at 10,000 elements, now refused, 4e9 took 18–30 s inside "
-     "`vbi check`, found by tests/it/fuzz.rs), over an eigen-work budget lowered to 1e9",
-     "name: hostile\nbridge:\n  type: beam\n  spans: @@[25.0]\n  bending_stiffness: 1\n"
-     "  mass_per_length: 2303.0\n  elements_per_span: 4000\nvehicles:\n" + OSC
-     + "limits: {eigen_work: 1.0e9}\n", "limits.eigen_work")
+     "400 modes of a 16,000-DOF beam (two spans of 4,000 elements): a Lanczos solve of 2.6e9 "
+     "(n k²) over the default eigen-work budget of 2e9, refused before solving (an EI = 1 N·m² "
+     "span of 10,000 elements, 449 automatic modes of 20,000 DOFs, took 18–30 s inside `vbi check`, "
+     "found by tests/it/fuzz.rs)",
+     "name: hostile\nbridge:\n  type: beam\n  spans: [25.0, 25.0]\n  bending_stiffness: 8.323e9\n"
+     "  mass_per_length: 2303.0\n  elements_per_span: 4000\n  modes: {count: @@400}\nvehicles:\n" + OSC,
+     "limits.eigen_work")
 case("size-many-spans", "budget",
      "5,000 identical 10 m spans × 2 elements asking 10 modes (issue 23): every band holds 5,000 "
      "nearly equal frequencies, which the Lanczos basis resolves together, so the solve grows as "
