@@ -7,9 +7,14 @@ use serde::Deserialize;
 use crate::scene::Quantity;
 
 /// Envelopes along the whole deck (beams): at every mesh node, or at
-/// `points` evenly spaced points, the largest and smallest value of each
-/// quantity over the run, with the time and the lead vehicle's position
-/// when each occurred, written to `envelopes.csv`.
+/// `points` evenly spaced points, plus every support (an interior one twice:
+/// its left-hand and right-hand limits) and, with `bridge_moment`, each
+/// vehicle's absolute-maximum-moment section of every span, the largest and
+/// smallest value of each quantity over the run, with the time and the lead
+/// vehicle's position when each occurred, beside the static crossing's
+/// (exact where a wheel passes the point) and the point's DAF; written to
+/// `envelopes.csv` and `envelopes.png`, the peaks to `summary.json`
+/// (`envelope_peaks`).
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct EnvelopesRaw {
@@ -19,7 +24,8 @@ pub struct EnvelopesRaw {
     #[schemars(transform = crate::scene::schema_rules::non_empty)]
     pub quantities: Option<Vec<Quantity>>,
     /// Number of evenly spaced points from the entrance to the exit, both
-    /// included (at least 2). Default: every node of the beam's mesh.
+    /// included (at least 2); the supports and the peak sections are added.
+    /// Default: every node of the beam's mesh.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::at_least_two)]
     pub points: Option<usize>,
