@@ -39,7 +39,7 @@ mod merge;
 pub use merge::{Merged, merge};
 
 /// Version tag of the part format.
-pub const PART_FORMAT: &str = "vbi-part-1";
+pub const PART_FORMAT: &str = "vbi-part-2";
 
 /// Which shard of how many: K of N, both from 1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -149,8 +149,26 @@ pub struct Part<D = PartData> {
     pub end: usize,
     /// Wall time of the slice, s.
     pub wall_time: f64,
+    /// FNV-1a 64 of the results as written ([`data_digest`]), hex: a part
+    /// damaged or edited after its run (a bit flipped, a number changed by
+    /// hand) is refused at the merge instead of folded in (issue 39.6:
+    /// 1,437 of 9,757 mutated parts had merged). It guards against damage,
+    /// not against a forger who recomputes it: only running the shard again
+    /// re-derives its results.
+    pub data_digest: String,
     /// The slice's results.
     pub data: D,
+}
+
+/// The digest of a part's results: FNV-1a 64 of their JSON text (serde's
+/// shortest round-trip numbers, so the same values give the same text
+/// whichever way the file wrote them), hex.
+pub fn data_digest(data: &PartData) -> String {
+    fnv1a(
+        serde_json::to_string(data)
+            .expect("a part's results serialise")
+            .as_bytes(),
+    )
 }
 
 impl<D> Part<D> {
@@ -171,6 +189,7 @@ impl<D> Part<D> {
             && self.first == other.first
             && self.end == other.end
             && self.wall_time.to_bits() == other.wall_time.to_bits()
+            && self.data_digest == other.data_digest
     }
 }
 
@@ -363,6 +382,7 @@ pub fn run_shard(
         first: range.start,
         end: range.end,
         wall_time: start.elapsed().as_secs_f64(),
+        data_digest: data_digest(&data),
         data,
     })
 }

@@ -729,10 +729,10 @@ PART_SCENE = scene(extra="study:\n  type: separation_map\n  velocity_ratio: {fro
 
 def part(**fields):
     import json
-    base = {"format": "vbi-part-1", "vbi_version": "0", "scenario_hash": "0000000000000000",
+    base = {"format": "vbi-part-2", "vbi_version": "0", "scenario_hash": "0000000000000000",
             "scenario_file": "scene.yaml", "scenario_source": PART_SCENE, "allow_large": False,
             "study": "separation_map", "size": 6, "shard": 1, "shards": 1, "first": 0, "end": 6,
-            "wall_time": 0.0, "data": {"study": "separation_map", "points": []}}
+            "wall_time": 0.0, "data_digest": "0", "data": {"study": "separation_map", "points": []}}
     base.update(fields)
     return json.dumps(base)
 

@@ -240,10 +240,10 @@ fn a_forged_part_reads_nothing_outside() {
     let (_, secret) = quake_copy(&scratch);
     let part = |file: &str, source: String| {
         serde_json::json!({
-            "format": "vbi-part-1", "vbi_version": "0", "scenario_hash": "0",
+            "format": "vbi-part-2", "vbi_version": "0", "scenario_hash": "0",
             "scenario_file": file, "scenario_source": source, "allow_large": false,
             "study": "separation_map", "size": 4, "shard": 1, "shards": 1, "first": 0,
-            "end": 4, "wall_time": 0.0, "data": {"study": "separation_map", "points": []}
+            "end": 4, "wall_time": 0.0, "data_digest": "0", "data": {"study": "separation_map", "points": []}
         })
         .to_string()
     };

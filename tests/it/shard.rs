@@ -298,7 +298,35 @@ fn missing_duplicated_and_foreign_parts_are_refused() {
     std::fs::write(&cut, value.to_string()).unwrap();
     refused(
         &[part("a", 1), cut.display().to_string(), part("a", 3)],
+        "cut.json's results do not match their digest",
+    );
+    // With the digest forged to match, the slice's shape still refuses it.
+    let data: vbi::study::shard::PartData = serde_json::from_value(value["data"].clone()).unwrap();
+    value["data_digest"] = vbi::study::shard::data_digest(&data).into();
+    std::fs::write(&cut, value.to_string()).unwrap();
+    refused(
+        &[part("a", 1), cut.display().to_string(), part("a", 3)],
         "shard 2 of 3: it holds",
+    );
+    // One number of the results edited: the digest refuses it.
+    let mut value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(part("a", 2)).unwrap()).unwrap();
+    let text = value["data"].to_string();
+    let digit = text.find(|c: char| c.is_ascii_digit() && c != '0').unwrap();
+    let mut edited = text.clone();
+    edited.replace_range(
+        digit..digit + 1,
+        if &text[digit..digit + 1] == "9" {
+            "8"
+        } else {
+            "9"
+        },
+    );
+    value["data"] = serde_json::from_str(&edited).unwrap();
+    std::fs::write(&cut, value.to_string()).unwrap();
+    refused(
+        &[part("a", 1), cut.display().to_string(), part("a", 3)],
+        "do not match their digest",
     );
     let junk = scratch.path("junk.json");
     std::fs::write(&junk, "{\"format\": 1}").unwrap();

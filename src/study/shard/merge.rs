@@ -51,6 +51,7 @@ struct Slot {
     end: usize,
     wall_time: f64,
     vbi_version: String,
+    data_digest: String,
 }
 
 /// Checks that the parts at `paths` are the N distinct shards of one study
@@ -110,6 +111,7 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
             end: part.end,
             wall_time: part.wall_time,
             vbi_version: part.vbi_version.clone(),
+            data_digest: part.data_digest.clone(),
         });
         first.get_or_insert((path.clone(), part));
     }
@@ -233,8 +235,18 @@ pub fn merge(paths: &[PathBuf], options: &LoadOptions) -> Result<Merged, ShardEr
             end: slot.end,
             wall_time: slot.wall_time,
             vbi_version: slot.vbi_version.clone(),
+            data_digest: slot.data_digest.clone(),
             ..first.clone()
         };
+        if super::data_digest(&part.data) != part.data_digest {
+            return Err(ShardError::Mismatch(format!(
+                "{}'s results do not match their digest (the file was damaged or edited after \
+                 its run); run shard {} again: `{}`",
+                shown(&slot.path),
+                slot.shard,
+                rerun(slot.shard)
+            )));
+        }
         if !part.same_stamp(&claimed) {
             return Err(ShardError::Mismatch(format!(
                 "{} changed while it was being merged (it no longer says what it said when first \
