@@ -177,13 +177,17 @@ pub(super) struct EnvelopeTracker {
 /// Two positions within this distance (m) are one envelope point.
 const SAME_POINT: f64 = 1e-9;
 
+/// Envelope points (m, ascending), the side of each, and whether each is a
+/// support.
+type PointSet = (Vec<f64>, Vec<Side>, Vec<bool>);
+
 /// The points of the envelope: the grid, the supports and the peak
 /// sections, ascending, with each one's side and whether it is a support.
 fn envelope_points(
     model: &Model,
     envelopes: &Envelopes,
     sections: bool,
-) -> Result<(Vec<f64>, Vec<Side>, Vec<bool>), BridgeError> {
+) -> Result<PointSet, BridgeError> {
     let length = model.bridge.length;
     let mut x: Vec<f64> = match envelopes.points {
         Some(n) => (0..n).map(|i| length * i as f64 / (n - 1) as f64).collect(),
@@ -193,9 +197,8 @@ fn envelope_points(
     if envelopes.quantities.contains(&Quantity::BridgeMoment) {
         x.extend(peak_sections(model)?);
     }
-    x.sort_by(f64::total_cmp);
-    x.dedup_by(|b, a| (*b - *a).abs() <= SAME_POINT * (1.0 + length));
-    // Snap onto the supports (a grid point a round-off away is the support).
+    // Snap onto the supports (a grid point a round-off away is the
+    // support), then one point per position.
     for s in &model.bridge.supports {
         for p in x.iter_mut() {
             if (*p - s).abs() <= SAME_POINT * (1.0 + length) {
@@ -203,6 +206,8 @@ fn envelope_points(
             }
         }
     }
+    x.sort_by(f64::total_cmp);
+    x.dedup_by(|b, a| (*b - *a).abs() <= SAME_POINT * (1.0 + length));
     let mut points = Vec::with_capacity(x.len() + model.bridge.supports.len());
     let mut sides = Vec::with_capacity(points.capacity());
     let mut support = Vec::with_capacity(points.capacity());
