@@ -238,15 +238,16 @@ fn file_name(text: &str) -> String {
     out.trim_matches('_').to_string()
 }
 
-/// The x axis of a table's plot: a history bin's mid time, a study row's
+/// The x axis of a table's plot: a history or envelope bin's mid time
+/// (each case of a study's envelopes in turn), a study row's
 /// speed (the first column with `speed` in its name), else the first
 /// numeric column, else the row number.
 fn abscissa(table: &Table) -> (String, Vec<f64>) {
-    if table.name == "history" {
+    if let Some((from, to)) = super::compare::bin_span(table) {
         let x = table
             .rows
             .iter()
-            .map(|r| match (r[0].number(), r[1].number()) {
+            .map(|r| match (r[from].number(), r[to].number()) {
                 (Some(a), Some(b)) => 0.5 * (a + b),
                 _ => f64::NAN,
             })
