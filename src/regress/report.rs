@@ -52,7 +52,7 @@ pub fn headline(check: &SceneCheck) -> String {
         "results changed"
     };
     let mut line = if c.scene_changed {
-        format!("the scene changed (resolved diff below), {results}")
+        format!("the scene changed (its resolved diff first), {results}")
     } else {
         format!("{results}, the scene is unchanged")
     };
@@ -62,8 +62,8 @@ pub fn headline(check: &SceneCheck) -> String {
     line
 }
 
-/// The details of one scene's failure: its differences and the scene's
-/// resolved diff.
+/// The details of one scene's failure: the scene's resolved diff (the
+/// cause, when the scene changed), then its differences.
 pub fn details(check: &SceneCheck) -> Vec<String> {
     let mut lines = Vec::new();
     match &check.verdict {
@@ -73,6 +73,12 @@ pub fn details(check: &SceneCheck) -> Vec<String> {
             let Some(c) = &check.comparison else {
                 return lines;
             };
+            // The cause first (issue 40.7): a changed scene explains the
+            // quantities that follow, so its diff is not buried under them.
+            if !check.scene_diff.is_empty() {
+                lines.push("resolved scene, approved (-) against now (+):".into());
+                lines.extend(check.scene_diff.iter().map(|l| format!("  {l}")));
+            }
             for d in c.differences.iter().take(LISTED) {
                 let mut line = format!("{}: {} → {}", d.quantity, d.old, d.new);
                 if let Some(r) = d.relative {
@@ -91,10 +97,6 @@ pub fn details(check: &SceneCheck) -> Vec<String> {
                     "… and {} more quantities",
                     c.differences.len() - LISTED
                 ));
-            }
-            if !check.scene_diff.is_empty() {
-                lines.push("resolved scene, approved (-) against now (+):".into());
-                lines.extend(check.scene_diff.iter().map(|l| format!("  {l}")));
             }
         }
     }

@@ -151,6 +151,26 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
         "{report}"
     );
     assert!(report.contains("8331323000"), "{report}");
+    // The cause first (issue 40.7): right under the FAIL line the resolved
+    // diff, its stiffness lines before the first of the quantities.
+    let lines: Vec<&str> = report.lines().map(str::trim).collect();
+    let fail = lines
+        .iter()
+        .position(|l| l.starts_with("FAIL  moving-force-slow"))
+        .expect("FAIL line");
+    assert_eq!(
+        lines[fail + 1],
+        "resolved scene, approved (-) against now (+):",
+        "{report}"
+    );
+    let at = |what: &str| lines.iter().position(|l| l.contains(what));
+    let (old_line, new_line) = (at("8323000000"), at("8331323000"));
+    let first_quantity = at("quantities.").expect("a quantity line");
+    assert!(
+        old_line.is_some_and(|o| o < first_quantity)
+            && new_line.is_some_and(|n| n < first_quantity),
+        "the resolved diff comes after the quantities:\n{report}"
+    );
     // The deflection extreme (negative, downward) shrinks by 1 − 1/1.001 =
     // 9.99e-4 of its peak, so new − old is positive; the dynamic share (DAF
     // 1.068 at α = 0.1) moves a little with the 0.05 % higher frequency.
@@ -217,7 +237,7 @@ fn scene_edit_is_reported_as_such() {
     assert_exit(&out, 1);
     let report = text(&out.stdout);
     assert!(
-        report.contains("FAIL  moving-force-slow: the scene changed (resolved diff below), results within tolerance"),
+        report.contains("FAIL  moving-force-slow: the scene changed (its resolved diff first), results within tolerance"),
         "{report}"
     );
     let diff_line = |tag: &str, name: &str| {
