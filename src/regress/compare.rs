@@ -229,7 +229,12 @@ pub fn row_place(table: &Table, r: usize) -> String {
         return format!("t = {a:.6} … {b:.6} s");
     }
     let mut parts = vec![format!("row {}", r + 1)];
+    // A binned study envelope: its case, then its bin's time span.
+    let span = bin_span(table);
     for (c, (h, cell)) in table.header.iter().zip(row).enumerate() {
+        if span.is_some_and(|(a, b)| c == a || c == b) {
+            continue;
+        }
         let key = c == 0 || h.contains("speed") || matches!(cell, Cell::Exact(_));
         if key && !matches!(cell, Cell::Empty) {
             let value = match cell {
@@ -239,7 +244,19 @@ pub fn row_place(table: &Table, r: usize) -> String {
             parts.push(format!("{h} = {value}"));
         }
     }
+    if let Some((a, b)) = span
+        && let (Some(a), Some(b)) = (row[a].number(), row.get(b).and_then(Cell::number))
+    {
+        parts.push(format!("t = {a:.6} … {b:.6} s"));
+    }
     parts.join(", ")
+}
+
+/// The columns `time_from [s]` and `time_to [s]` of a table binned in
+/// time (the history, a study's envelopes), if it has both.
+pub fn bin_span(table: &Table) -> Option<(usize, usize)> {
+    let at = |name: &str| table.header.iter().position(|h| h == name);
+    Some((at("time_from [s]")?, at("time_to [s]")?))
 }
 
 fn compare_table(scene: &str, old: &Table, new: &Table, settings: &Settings, out: &mut Comparison) {

@@ -52,7 +52,7 @@ pub fn headline(check: &SceneCheck) -> String {
         "results changed"
     };
     let mut line = if c.scene_changed {
-        format!("the scene changed (resolved diff below), {results}")
+        format!("the scene changed (its resolved diff first), {results}")
     } else {
         format!("{results}, the scene is unchanged")
     };
@@ -62,8 +62,8 @@ pub fn headline(check: &SceneCheck) -> String {
     line
 }
 
-/// The details of one scene's failure: its differences and the scene's
-/// resolved diff.
+/// The details of one scene's failure: the scene's resolved diff (the
+/// cause, when the scene changed), then its differences.
 pub fn details(check: &SceneCheck) -> Vec<String> {
     let mut lines = Vec::new();
     match &check.verdict {
@@ -73,6 +73,12 @@ pub fn details(check: &SceneCheck) -> Vec<String> {
             let Some(c) = &check.comparison else {
                 return lines;
             };
+            // The cause first (issue 40.7): a changed scene explains the
+            // quantities that follow, so its diff is not buried under them.
+            if !check.scene_diff.is_empty() {
+                lines.push("resolved scene, approved (-) against now (+):".into());
+                lines.extend(check.scene_diff.iter().map(|l| format!("  {l}")));
+            }
             for d in c.differences.iter().take(LISTED) {
                 let mut line = format!("{}: {} → {}", d.quantity, d.old, d.new);
                 if let Some(r) = d.relative {
@@ -91,10 +97,6 @@ pub fn details(check: &SceneCheck) -> Vec<String> {
                     "… and {} more quantities",
                     c.differences.len() - LISTED
                 ));
-            }
-            if !check.scene_diff.is_empty() {
-                lines.push("resolved scene, approved (-) against now (+):".into());
-                lines.extend(check.scene_diff.iter().map(|l| format!("  {l}")));
             }
         }
     }
@@ -238,15 +240,16 @@ fn file_name(text: &str) -> String {
     out.trim_matches('_').to_string()
 }
 
-/// The x axis of a table's plot: a history bin's mid time, a study row's
+/// The x axis of a table's plot: a history or envelope bin's mid time
+/// (each case of a study's envelopes in turn), a study row's
 /// speed (the first column with `speed` in its name), else the first
 /// numeric column, else the row number.
 fn abscissa(table: &Table) -> (String, Vec<f64>) {
-    if table.name == "history" {
+    if let Some((from, to)) = super::compare::bin_span(table) {
         let x = table
             .rows
             .iter()
-            .map(|r| match (r[0].number(), r[1].number()) {
+            .map(|r| match (r[from].number(), r[to].number()) {
                 (Some(a), Some(b)) => 0.5 * (a + b),
                 _ => f64::NAN,
             })

@@ -151,6 +151,26 @@ fn stiffness_change_of_a_tenth_percent_fails_naming_the_quantity() {
         "{report}"
     );
     assert!(report.contains("8331323000"), "{report}");
+    // The cause first (issue 40.7): right under the FAIL line the resolved
+    // diff, its stiffness lines before the first of the quantities.
+    let lines: Vec<&str> = report.lines().map(str::trim).collect();
+    let fail = lines
+        .iter()
+        .position(|l| l.starts_with("FAIL  moving-force-slow"))
+        .expect("FAIL line");
+    assert_eq!(
+        lines[fail + 1],
+        "resolved scene, approved (-) against now (+):",
+        "{report}"
+    );
+    let at = |what: &str| lines.iter().position(|l| l.contains(what));
+    let (old_line, new_line) = (at("8323000000"), at("8331323000"));
+    let first_quantity = at("quantities.").expect("a quantity line");
+    assert!(
+        old_line.is_some_and(|o| o < first_quantity)
+            && new_line.is_some_and(|n| n < first_quantity),
+        "the resolved diff comes after the quantities:\n{report}"
+    );
     // The deflection extreme (negative, downward) shrinks by 1 − 1/1.001 =
     // 9.99e-4 of its peak, so new − old is positive; the dynamic share (DAF
     // 1.068 at α = 0.1) moves a little with the 0.05 % higher frequency.
@@ -217,7 +237,7 @@ fn scene_edit_is_reported_as_such() {
     assert_exit(&out, 1);
     let report = text(&out.stdout);
     assert!(
-        report.contains("FAIL  moving-force-slow: the scene changed (resolved diff below), results within tolerance"),
+        report.contains("FAIL  moving-force-slow: the scene changed (its resolved diff first), results within tolerance"),
         "{report}"
     );
     let diff_line = |tag: &str, name: &str| {
@@ -712,4 +732,95 @@ fn shipped_scenarios_approve_and_check() {
             "hslm-resonance-20m"
         ]
     );
+}
+
+/// The cells of `[table NAME]` of a record: its header and rows.
+fn record_table(record: &str, name: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut lines = record
+        .lines()
+        .skip_while(|l| *l != format!("[table {name}]"))
+        .skip(1)
+        .take_while(|l| !l.is_empty());
+    let header = lines
+        .next()
+        .map(|l| l.split('\t').map(String::from).collect())
+        .unwrap_or_default();
+    let rows = lines
+        .map(|l| l.split('\t').map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+/// Issue 40.7: a 16-sample Monte Carlo study at every one of its 96 000
+/// steps (the LCP Fig. 7 scene at a 5 µs step) made a 15.4 MB record, its
+/// envelopes written step by step. Binned like the history, the record is
+/// under 1 MB, and the largest and smallest value of every envelope column
+/// over the whole run (from the study's own `envelopes.csv`, unbinned) are
+/// the record's, exactly at the record's 10 significant digits.
+#[test]
+fn monte_carlo_record_is_compact_and_keeps_every_peak() {
+    let dir = Scratch::new("regress", "monte_carlo_compact");
+    let scene = copy_scene(&dir, "lcp-fig7-monte-carlo.yaml");
+    edit(&scene, "samples: 20", "samples: 16");
+    edit(&scene, "time_step: 2.0e-3", "time_step: 5.0e-6");
+    let store = dir.path("golden");
+    assert_exit(&regress("approve", &[&scene], &store, &[], dir.dir()), 0);
+    let path = store.join("lcp-fig7-monte-carlo/record.tsv");
+    let bytes = std::fs::metadata(&path).expect("record written").len();
+    assert!(bytes <= 1 << 20, "record of {bytes} bytes");
+    let record = std::fs::read_to_string(&path).expect("read record");
+    let (header, rows) = record_table(&record, "envelopes");
+    assert!(
+        header.contains(&"time_from [s]".to_string()) && rows.len() <= 200,
+        "{header:?}, {} rows",
+        rows.len()
+    );
+
+    let out = dir.path("run");
+    let args = [
+        "run".as_ref(),
+        scene.as_os_str(),
+        "--out".as_ref(),
+        out.as_os_str(),
+    ];
+    assert_exit(&vbi(&args, dir.dir()), 0);
+    let csv = std::fs::read_to_string(out.join("envelopes.csv")).expect("envelopes.csv");
+    let mut lines = csv.lines();
+    let csv_header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let csv_rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|c| c.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
+        .collect();
+    assert!(csv_rows.len() > 90_000, "{} steps", csv_rows.len());
+    let time = csv_header
+        .iter()
+        .position(|h| *h == "time [s]")
+        .expect("time");
+    let column = |name: &str| -> Vec<f64> {
+        let c = header.iter().position(|h| h == name).unwrap_or_else(|| {
+            panic!("record has no column {name}: {header:?}");
+        });
+        rows.iter()
+            .map(|r| r[c].parse().expect("a number"))
+            .collect()
+    };
+    for (c, label) in csv_header.iter().enumerate().skip(time + 1) {
+        let all: Vec<f64> = csv_rows.iter().map(|r| r[c]).collect();
+        let (hi, lo) = all
+            .iter()
+            .fold((f64::MIN, f64::MAX), |(h, l), &x| (h.max(x), l.min(x)));
+        let (name, unit) = label.split_once(" [").expect("a unit");
+        let binned_hi = column(&format!("{name}_max [{unit}"))
+            .into_iter()
+            .fold(f64::MIN, f64::max);
+        let binned_lo = column(&format!("{name}_min [{unit}"))
+            .into_iter()
+            .fold(f64::MAX, f64::min);
+        let digits = vbi::regress::record::format_number;
+        assert_eq!(digits(binned_hi), digits(hi), "{label}: largest value");
+        assert_eq!(digits(binned_lo), digits(lo), "{label}: smallest value");
+    }
 }
