@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use super::compare::ChangedColumn;
 use super::record::{Record, Table};
 use super::{SceneCheck, Verdict};
-use crate::report::plot::{PlotError, Series, line_chart};
+use crate::report::plot::{Panel, PlotError, Series, history_chart};
 
 /// Differences listed per scene in the text report (the JUnit failure
 /// text lists the same).
@@ -281,7 +281,8 @@ fn abscissa(table: &Table) -> (String, Vec<f64>) {
 
 /// Writes one PNG per changed column of a changed scene into
 /// `out/<scene>/`: the golden values and the new ones against time (a
-/// history) or the row's speed (a study table). The paths written, with
+/// history) or the row's speed (a study table), and under them their
+/// difference, new − golden, in the column's unit. The paths written, with
 /// their scene's key.
 pub fn write_plots(checks: &[SceneCheck], out: &Path) -> Result<Vec<(String, PathBuf)>, PlotError> {
     let mut written = Vec::new();
@@ -335,26 +336,55 @@ fn plot_column(
         file_name(&changed.table),
         file_name(header)
     ));
-    let series = [
-        Series {
-            label: "golden (approved)",
-            x: &old_x,
-            y: &old_y,
-        },
-        Series {
-            label: "new",
-            x: &new_x,
-            y: &new_y,
-        },
-    ];
-    line_chart(
-        &path,
-        &format!("{key}: {header}"),
-        &x_label,
-        header,
-        &series,
-        false,
-        false,
-    )?;
+    // The difference new − old on a panel of its own under the two
+    // curves (issue 40.7): curves that agree lie on top of each other, so
+    // without it a change below a line width is invisible and a pass looks
+    // like a missing line. Row by row, so only when the rows align (the
+    // comparison reports a changed row count by itself).
+    let difference: Option<Vec<f64>> = (old_y.len() == new_y.len()
+        && old_x.len() == new_x.len()
+        && old_x
+            .iter()
+            .zip(&new_x)
+            .all(|(a, b)| a == b || (a.is_nan() && b.is_nan())))
+    .then(|| old_y.iter().zip(&new_y).map(|(a, b)| b - a).collect());
+    let unit = header
+        .split_once(" [")
+        .and_then(|(_, u)| u.strip_suffix(']'))
+        .unwrap_or("");
+    let mut panels = vec![Panel {
+        y_label: header.clone(),
+        unit: unit.into(),
+        series: vec![
+            Series {
+                label: "golden (approved)",
+                x: &old_x,
+                y: &old_y,
+            },
+            Series {
+                label: "new",
+                x: &new_x,
+                y: &new_y,
+            },
+        ],
+        references: Vec::new(),
+    }];
+    if let Some(d) = &difference {
+        panels.push(Panel {
+            y_label: if unit.is_empty() {
+                "new − golden".into()
+            } else {
+                format!("new − golden [{unit}]")
+            },
+            unit: unit.into(),
+            series: vec![Series {
+                label: "difference (new − golden)",
+                x: &old_x,
+                y: d,
+            }],
+            references: Vec::new(),
+        });
+    }
+    history_chart(&path, &format!("{key}: {header}"), &x_label, &panels, &[])?;
     Ok(Some(path))
 }
