@@ -261,6 +261,31 @@ impl ModalBridge {
         }
     }
 
+    /// The reaction of an imported model's constrained DOF (node,
+    /// direction) ([`super::fe_import::reaction`]); `None` if the bridge is
+    /// not imported or the DOF is not listed under `constrained`. Two
+    /// solves with K's factor.
+    pub fn support_reaction(
+        &self,
+        node: u64,
+        direction: crate::scene::imported::Direction,
+    ) -> Result<Option<super::fe_import::reaction::SupportReaction>, BridgeError> {
+        let Shapes::Imported(imported) = &self.shapes else {
+            return Ok(None);
+        };
+        let Some(support) = imported
+            .model
+            .supports
+            .iter()
+            .position(|s| s.node == node && s.direction == direction)
+        else {
+            return Ok(None);
+        };
+        imported
+            .support_reaction(support, &self.circular_frequencies)
+            .map(Some)
+    }
+
     /// Mode values (1/√kg) at free DOF `dof` of an imported model; zeros
     /// for any other bridge.
     pub fn dof_mode_values(&self, dof: usize, values: &mut [f64]) {

@@ -46,6 +46,20 @@ pub(super) fn ground_terms(
             .unwrap_or(0.0),
         _ => 0.0,
     };
+    if let Probe::SupportReaction { reaction } = probe
+        && !ground.lateral.is_empty()
+    {
+        lateral = if model.bridge.static_correction {
+            reaction.lateral_ground
+        } else {
+            reaction.plain_ground[1]
+        };
+    }
+    if let Probe::SupportReaction { .. } = probe
+        && ground.vertical.is_empty()
+    {
+        vertical = 0.0;
+    }
     // A node's DOF of an imported model: both static shares at the DOF
     // itself (K⁻¹ M δ there), whatever its direction.
     if let (Probe::BridgeDisplacement { .. }, Some(node), true) =
@@ -168,6 +182,17 @@ pub(super) fn vertical_ground_terms(
                     .sum()
             } else {
                 0.0
+            };
+            (share, None)
+        }
+        // The ground's inertia load's static share through the support,
+        // and the support rows' own inertia as they move with the ground
+        // (reaction module doc): frame-independent forces.
+        Probe::SupportReaction { ref reaction } => {
+            let share = if model.bridge.static_correction {
+                reaction.vertical_ground
+            } else {
+                reaction.plain_ground[0]
             };
             (share, None)
         }

@@ -274,6 +274,40 @@ impl Observer for Recorder<'_> {
                     }
                     probe.reaction(&section_loads, model.bridge.static_correction)
                 }
+                Probe::SupportReaction { reaction } => {
+                    let static_value = reaction.static_reaction(
+                        view.wheel_positions,
+                        &model.wheel_y,
+                        &model.static_wheel_loads,
+                        on_deck,
+                    );
+                    extremes.statics.push(view.step, view.time, static_value);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
+                        s.push(static_value);
+                    }
+                    if model.bridge.static_correction {
+                        // The mode-acceleration form: exact statics plus
+                        // the modes' dynamic share (reaction module doc).
+                        reaction.static_reaction(
+                            view.wheel_positions,
+                            &model.wheel_y,
+                            view.contact_forces,
+                            on_deck,
+                        ) + dot(&reaction.corrected_modal, view.modal_acceleration)
+                    } else {
+                        // Plain modal: K_cf Φ q + M_cf Φ q̈, and the load
+                        // standing on the support (no damping share).
+                        let on_support: f64 = reaction.direct_load(
+                            view.wheel_positions,
+                            &model.wheel_y,
+                            view.contact_forces,
+                            on_deck,
+                        );
+                        dot(&reaction.stiffness_modal, view.modal_displacement)
+                            + dot(&reaction.mass_modal, view.modal_acceleration)
+                            + on_support
+                    }
+                }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
                 Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
                 Probe::VehicleDisplacement { vehicle, dof } => {

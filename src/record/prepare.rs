@@ -134,6 +134,19 @@ impl<'m> Recorder<'m> {
                     };
                     (probe, unit, lead)
                 }
+                Quantity::BridgeReaction if record.node.is_some() => {
+                    let node = record.node.expect("matched");
+                    let direction = record.direction.unwrap_or_default();
+                    let reaction = model
+                        .bridge
+                        .support_reaction(node, direction)?
+                        .expect("reaction nodes were validated when resolving");
+                    let unit = if direction.is_rotation() { "N*m" } else { "N" };
+                    let probe = Probe::SupportReaction {
+                        reaction: Box::new(reaction),
+                    };
+                    (probe, unit, lead)
+                }
                 Quantity::BridgeReaction => {
                     let probe = model
                         .bridge
@@ -190,7 +203,10 @@ impl<'m> Recorder<'m> {
             };
             let static_values = matches!(
                 probe,
-                Probe::BridgeDisplacement { .. } | Probe::Section { .. } | Probe::Reaction { .. }
+                Probe::BridgeDisplacement { .. }
+                    | Probe::Section { .. }
+                    | Probe::Reaction { .. }
+                    | Probe::SupportReaction { .. }
             )
             .then(|| Vec::with_capacity(capacity));
             let (ground_static, lateral_static, absolute) = ground_terms(model, record, &probe)?;
@@ -268,6 +284,7 @@ impl<'m> Recorder<'m> {
                         Probe::BridgeDisplacement { .. }
                             | Probe::Section { .. }
                             | Probe::Reaction { .. }
+                            | Probe::SupportReaction { .. }
                             | Probe::PlateMoment { .. }
                     )
                 }));

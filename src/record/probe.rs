@@ -46,6 +46,11 @@ pub(super) enum Probe {
     Reaction {
         probe: Box<crate::bridge::section::ReactionProbe>,
     },
+    /// An imported model's support reaction at a constrained DOF, N (or
+    /// N·m): read from its rows of K and M ([`crate::bridge::fe_import::reaction`]).
+    SupportReaction {
+        reaction: Box<crate::bridge::fe_import::reaction::SupportReaction>,
+    },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
     /// Flattened wheel index.

@@ -195,9 +195,11 @@ pub(crate) fn resolve_records(
                 | Quantity::BridgeShear
                 | Quantity::BridgeReaction
         );
-        if q == Quantity::BridgeReaction {
-            reaction_checks(r, &at, bridge, ck);
-        }
+        let support_node = if q == Quantity::BridgeReaction {
+            reaction_checks(r, &at, bridge, ck)
+        } else {
+            None
+        };
         let side = match r.side {
             Some(_) if !matches!(q, Quantity::BridgeShear | Quantity::BridgeMoment) => {
                 ck.error(
@@ -262,6 +264,8 @@ pub(crate) fn resolve_records(
             } else {
                 match bridge {
                     None => {}
+                    // A reaction's node is a support: `reaction_checks`.
+                    Some(Bridge::FeImport(_)) if q == Quantity::BridgeReaction => {}
                     Some(Bridge::FeImport(f)) => {
                         if f.model.dof(node, direction).is_none() {
                             ck.error(
@@ -292,7 +296,10 @@ pub(crate) fn resolve_records(
                 q,
                 Quantity::BridgeDisplacement | Quantity::BridgeAcceleration
             );
-            if !(along_track && sideways && matches!(d, Direction::Uz | Direction::Uy)) {
+            let support_direction =
+                q == Quantity::BridgeReaction && matches!(bridge, Some(Bridge::FeImport(_)) | None);
+            let along = along_track && sideways && matches!(d, Direction::Uz | Direction::Uy);
+            if !(support_direction || along) {
                 ck.error(
                     &format!("{at}.direction"),
                     "`direction` goes with `node`, or, as `uz` or `uy` (the rails' lateral \
@@ -555,7 +562,7 @@ pub(crate) fn resolve_records(
                 }),
                 _ => r.x,
             },
-            node: r.node,
+            node: support_node.or(r.node),
             direction,
             y: if is_bridge && r.node.is_none() {
                 r.y.or(width.map(|w| w / 2.0))
@@ -588,9 +595,14 @@ pub fn support_positions(spans: &[f64]) -> Vec<f64> {
 
 /// A `bridge_reaction` needs a beam bridge and `x` at one of its supports
 /// (within a millimetre; the reaction is taken at the support itself).
-fn reaction_checks(r: &raw::RecordRaw, at: &str, bridge: Option<&Bridge>, ck: &mut Checker<'_>) {
+fn reaction_checks(
+    r: &raw::RecordRaw,
+    at: &str,
+    bridge: Option<&Bridge>,
+    ck: &mut Checker<'_>,
+) -> Option<u64> {
     match bridge {
-        None => {}
+        None => None,
         Some(Bridge::Beam(beam)) => {
             let supports = support_positions(&beam.spans);
             if let Some(x) = r.x
@@ -606,13 +618,109 @@ fn reaction_checks(r: &raw::RecordRaw, at: &str, bridge: Option<&Bridge>, ck: &m
                     )),
                 );
             }
+            None
         }
-        Some(_) => ck.error(
-            &format!("{at}.quantity"),
-            "`bridge_reaction` is computed for `type: beam` bridges (the shear jump at a \
-             support); on a plate or an imported model record displacements and moments",
-        ),
+        Some(Bridge::FeImport(f)) => imported_support(r, at, f, ck),
+        Some(Bridge::Plate(_)) => {
+            ck.error(
+                &format!("{at}.quantity"),
+                "`bridge_reaction` is computed for `type: beam` bridges (the shear jump at a \
+                 support) and at the `constrained` DOFs of an imported model; on a plate record \
+                 displacements and moments",
+            );
+            None
+        }
     }
+}
+
+/// The constrained node of an imported model's `bridge_reaction`: `node`
+/// as given, or the track's rail node at `x` (within 1 mm) whose DOF in
+/// `direction` (default uz) is listed under `constrained`. A DOF that is
+/// not listed (free, or dropped by the export) has no row to read a
+/// reaction from: refused, with the supports that have one.
+fn imported_support(
+    r: &raw::RecordRaw,
+    at: &str,
+    f: &crate::scene::FeImport,
+    ck: &mut Checker<'_>,
+) -> Option<u64> {
+    let direction = r.direction.unwrap_or(Direction::Uz);
+    let model = &f.model;
+    let listed = || -> String {
+        let mut names: Vec<String> = model
+            .supports
+            .iter()
+            .take(12)
+            .map(|s| format!("node {} {}", s.node, s.direction.name()))
+            .collect();
+        if model.supports.len() > 12 {
+            names.push(format!("… ({} in all)", model.supports.len()));
+        }
+        if names.is_empty() {
+            "none: the model lists no `constrained` DOF".into()
+        } else {
+            names.join(", ")
+        }
+    };
+    let help = || {
+        Some(format!(
+            "a reaction is read from the rows of K and M at a DOF listed under \
+             `bridge.constrained` (a DOF the export removed from the matrices has none); \
+             constrained DOFs: {}",
+            listed()
+        ))
+    };
+    let node = match (r.node, r.x) {
+        (Some(node), _) => node,
+        (None, Some(x)) => {
+            let found = model
+                .track
+                .iter()
+                .flat_map(|&t| {
+                    let rail = &model.rails[t];
+                    rail.nodes.iter().zip(&rail.x)
+                })
+                .filter(|&(_, &nx)| (nx - x).abs() <= 1e-3)
+                .map(|(&node, _)| node)
+                .find(|&node| {
+                    model
+                        .supports
+                        .iter()
+                        .any(|s| s.node == node && s.direction == direction)
+                });
+            match found {
+                Some(node) => node,
+                None => {
+                    ck.error_with_help(
+                        &format!("{at}.x"),
+                        format!(
+                            "no track node at x = {x} m has its {} constrained",
+                            direction.name()
+                        ),
+                        help(),
+                    );
+                    return None;
+                }
+            }
+        }
+        (None, None) => return None,
+    };
+    if !model
+        .supports
+        .iter()
+        .any(|s| s.node == node && s.direction == direction)
+    {
+        ck.error_with_help(
+            &format!("{at}.node"),
+            format!(
+                "node {node} {} is not a constrained DOF of the imported model",
+                direction.name()
+            ),
+            help(),
+        );
+        return None;
+    }
+    Some(node)
 }
 
 /// Displacement at the middle of every span (on a plate, on every girder

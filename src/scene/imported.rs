@@ -154,6 +154,32 @@ pub struct ImportedModel {
     /// How a wheel's load passes onto the track at its ends ([`entry`]);
     /// none unless the scene sets it.
     pub entry: RailEntry,
+    /// The rows of K and M at each DOF listed under `constrained`, on the
+    /// free columns: what a support's reaction is read from,
+    /// R = K_cf u + M_cf ü (issue 40.1).
+    pub supports: Vec<SupportRow>,
+}
+
+/// One constrained DOF's coupling with the free DOFs: its rows of the
+/// stiffness and mass matrices restricted to the free columns, and its
+/// share of the rigid-translation inertia, for the support reaction
+/// R_c = K_cf u_f + M_cf ü_f (+ the ground's inertia at the support).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SupportRow {
+    /// The node.
+    pub node: u64,
+    /// The constrained direction (vbi's axes).
+    pub direction: Direction,
+    /// K_cf: (free DOF, entry), N/m or N·m/rad (per unit of the free DOF).
+    pub stiffness: Vec<(usize, f64)>,
+    /// M_cf: (free DOF, entry), kg or kg·m.
+    pub mass: Vec<(usize, f64)>,
+    /// (M δ_z)_c over the whole matrix (the constrained columns included:
+    /// the supports move with the ground), kg: the inertia at the support
+    /// under a unit vertical ground acceleration.
+    pub vertical_inertia: f64,
+    /// (M δ_y)_c likewise, lateral, kg.
+    pub lateral_inertia: f64,
 }
 
 /// One rail: its nodes along the track and where their DOFs sit among the

@@ -25,7 +25,11 @@ pub enum Quantity {
     /// an abutment or pier), N, positive upward on the deck: the jump of the
     /// shear there plus a wheel standing exactly on it, the beam's inertia
     /// included, so that the reactions balance the loads and the deck's
-    /// inertia at every step (beams only).
+    /// inertia at every step. On an imported model, the reaction at a DOF
+    /// listed under `constrained` (`node` and `direction`, or the track
+    /// node at `x` whose uz is constrained), N or N·m on the structure:
+    /// K_cf u + M_cf ü from its rows of the matrices; the reactions of all
+    /// supports balance the loads and ∫ m ü to round-off (not on plates).
     BridgeReaction,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,

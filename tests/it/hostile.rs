@@ -16,8 +16,33 @@ use support::Scratch;
 
 /// Virtual memory a `vbi check` may map, KiB (the binary and its thread
 /// stacks take a few hundred MB of address space; 1 GiB of heap on top is
-/// far more than any check needs).
+/// far more than any check needs), plus [`gemm_reservation_kib`].
 const MEMORY_KIB: u64 = 2 * 1024 * 1024;
+
+/// Address space faer's matrix kernel (private-gemm-x86) reserves, KiB:
+/// each thread that multiplies matrices reserves twice the L3 cache it
+/// reads from CPUID as packing buffers, untouched (resident memory does not
+/// grow) — on a virtual machine that reports a 480 MiB L3, 960 MiB per
+/// thread, which a fixed `ulimit -v` mistook for an input-sized
+/// allocation. The main thread and every core's worker may hold one.
+fn gemm_reservation_kib() -> u64 {
+    let l3 = std::fs::read_to_string("/sys/devices/system/cpu/cpu0/cache/index3/size")
+        .ok()
+        .and_then(|s| {
+            let s = s.trim();
+            let (digits, scale) = match s.strip_suffix('K') {
+                Some(d) => (d, 1),
+                None => match s.strip_suffix('M') {
+                    Some(d) => (d, 1024),
+                    None => (s, 1),
+                },
+            };
+            digits.parse::<u64>().ok().map(|v| v * scale)
+        })
+        .unwrap_or(64 * 1024);
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get() as u64) + 1;
+    2 * l3 * threads
+}
 /// CPU seconds a `vbi check` may use (`ulimit -t`).
 const CPU_SECONDS: u64 = 20;
 /// Wall time per file before it counts as a hang.
@@ -74,8 +99,9 @@ struct Run {
 fn capped(args: &[&str], cwd: &Path, scratch: &Scratch, tag: &str) -> Run {
     let out = scratch.path(&format!("{tag}.out"));
     let err = scratch.path(&format!("{tag}.err"));
+    let memory = MEMORY_KIB + gemm_reservation_kib();
     let script = format!(
-        "ulimit -v {MEMORY_KIB} && ulimit -t {CPU_SECONDS} && exec \"$0\" \"$@\" >'{}' 2>'{}'",
+        "ulimit -v {memory} && ulimit -t {CPU_SECONDS} && exec \"$0\" \"$@\" >'{}' 2>'{}'",
         out.display(),
         err.display()
     );

@@ -76,6 +76,7 @@ mod shipped_converged;
 mod slurm;
 mod speed_sweep;
 mod speed_units;
+mod support_reactions;
 mod surfaces;
 mod train_3d;
 mod truck;

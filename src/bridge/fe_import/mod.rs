@@ -10,4 +10,5 @@
 
 pub mod entry;
 pub mod modal;
+pub mod reaction;
 pub mod track;

@@ -117,16 +117,31 @@ impl RailDofs {
         components: usize,
         value: impl Fn(usize, usize) -> f64,
     ) -> RailField {
+        self.field_with_constrained(direction, components, value, |_, _| 0.0)
+    }
+
+    /// [`Self::field`] with `constrained(node, slot)` the value at a
+    /// node's DOF that is not free (slot 0 the displacement, 1 the
+    /// rotation, before the slope's sign), 0 in [`Self::field`]: a
+    /// support reaction's influence line is 1 at its own constrained DOF.
+    pub fn field_with_constrained(
+        &self,
+        direction: RailDirection,
+        components: usize,
+        value: impl Fn(usize, usize) -> f64,
+        constrained: impl Fn(u64, usize) -> f64,
+    ) -> RailField {
         let d = Self::index(direction);
         let sign = Self::slope_sign(direction);
         let nodes = self.x.len();
         let mut nodal = vec![0.0; nodes * 2 * components];
         for n in 0..nodes {
+            let node = self.nodes[n];
             for c in 0..components {
                 nodal[2 * n * components + c] =
-                    self.displacement[d][n].map_or(0.0, |i| value(i, c));
-                nodal[(2 * n + 1) * components + c] =
-                    sign * self.rotation[d][n].map_or(0.0, |i| value(i, c));
+                    self.displacement[d][n].map_or_else(|| constrained(node, 0), |i| value(i, c));
+                nodal[(2 * n + 1) * components + c] = sign
+                    * self.rotation[d][n].map_or_else(|| constrained(node, 1), |i| value(i, c));
             }
         }
         RailField {

@@ -6,7 +6,9 @@ use std::collections::HashMap;
 
 use thiserror::Error;
 
-use crate::scene::imported::{Axes, Direction, ImportedModel, RailDofs, RailEntry, RotationSign};
+use crate::scene::imported::{
+    Axes, Direction, ImportedModel, RailDofs, RailEntry, RotationSign, SupportRow,
+};
 
 use super::{entries, matrix_market, penalty, rotation};
 
@@ -327,6 +329,45 @@ impl ImportedModel {
                 _ => {}
             }
         }
+        // The supports' rows on the free columns, for their reactions.
+        let support_of: HashMap<usize, usize> = constrained
+            .iter()
+            .enumerate()
+            .filter_map(|(i, key)| position.get(key).map(|&g| (g, i)))
+            .collect();
+        let mut supports: Vec<SupportRow> = constrained
+            .iter()
+            .map(|&(node, direction)| SupportRow {
+                node,
+                direction,
+                stiffness: Vec::new(),
+                mass: Vec::new(),
+                vertical_inertia: 0.0,
+                lateral_inertia: 0.0,
+            })
+            .collect();
+        for (entries, is_mass) in [(&k, false), (&m, true)] {
+            for &(r, c, v) in entries.iter() {
+                let Some(&s) = support_of.get(&r) else {
+                    continue;
+                };
+                let row = &mut supports[s];
+                if let Some(col) = index[c] {
+                    if is_mass {
+                        row.mass.push((col, v));
+                    } else {
+                        row.stiffness.push((col, v));
+                    }
+                }
+                if is_mass {
+                    match map[c].1 {
+                        Direction::Uz => row.vertical_inertia += v,
+                        Direction::Uy => row.lateral_inertia += v,
+                        _ => {}
+                    }
+                }
+            }
+        }
         let (k, m) = (restrict(k), restrict(m));
         let c = c.map(restrict);
         // Diagonals: a free DOF needs stiffness and mass of its own.
@@ -470,6 +511,7 @@ impl ImportedModel {
                 entry: 0.0,
                 exit: 0.0,
             },
+            supports,
         })
     }
 }
