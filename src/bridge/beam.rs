@@ -297,7 +297,9 @@ impl BeamFlexibility {
     }
 }
 
-fn element_stiffness(ei: f64, h: f64) -> [[f64; 4]; 4] {
+/// The Hermite beam element's stiffness on (wₐ, θₐ, w_b, θ_b), EI in
+/// N·m², h in m (Przemieniecki §5.6).
+pub(crate) fn element_stiffness(ei: f64, h: f64) -> [[f64; 4]; 4] {
     let c = ei / (h * h * h);
     let h2 = h * h;
     [
@@ -308,7 +310,9 @@ fn element_stiffness(ei: f64, h: f64) -> [[f64; 4]; 4] {
     ]
 }
 
-fn element_mass(m: f64, h: f64) -> [[f64; 4]; 4] {
+/// The Hermite beam element's consistent mass on (wₐ, θₐ, w_b, θ_b), m in
+/// kg/m, h in m (Przemieniecki §11.3).
+pub(crate) fn element_mass(m: f64, h: f64) -> [[f64; 4]; 4] {
     let c = m * h / 420.0;
     let h2 = h * h;
     [

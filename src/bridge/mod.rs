@@ -350,6 +350,11 @@ impl ModalBridge {
         matches!(self.shapes, Shapes::Imported(_))
     }
 
+    /// Whether the modes are a plate deck's.
+    pub fn is_plate(&self) -> bool {
+        matches!(self.shapes, Shapes::Plate { .. })
+    }
+
     /// Whether contact points get the static correction.
     pub fn corrects_contacts(&self) -> bool {
         self.contact_flexibility.is_some()

@@ -248,6 +248,22 @@ impl ModalBridge {
         }
     }
 
+    /// The line reaction probe of a plate deck's support at `x` (m) for
+    /// wheels along `line_y` (m) ([`plate::reactions`]); `None` on another
+    /// bridge or off a support. One solve per wheel line.
+    pub fn plate_reaction_probe(
+        &self,
+        x: f64,
+        line_y: &[f64],
+    ) -> Result<Option<plate::reactions::PlateReactionProbe>, BridgeError> {
+        match &self.shapes {
+            Shapes::Plate { modes, .. } => {
+                modes.reaction_probe(x, &self.supports, &self.circular_frequencies, line_y)
+            }
+            _ => Ok(None),
+        }
+    }
+
     /// The free DOF of an imported model's (node, direction), if the
     /// bridge is imported and the DOF free; `Err` with the reason otherwise.
     pub fn imported_dof(

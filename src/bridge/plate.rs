@@ -53,6 +53,7 @@ use super::{BridgeError, eigen};
 use crate::scene::{Beam, Damping, Modes, Plate, PlateEdges};
 
 pub mod moments;
+pub mod reactions;
 mod transverse;
 
 use self::transverse::TransverseBasis;
@@ -149,6 +150,8 @@ pub struct PlateModes {
     eigenvalues: Vec<f64>,
     /// (Dx, Dy, D1, Dxy), N·m: the moments per unit width ([`moments`]).
     rigidities: (f64, f64, f64, f64),
+    /// ρh, kg/m²: the inertia of the line reactions ([`reactions`]).
+    mass_per_area: f64,
 }
 
 impl PlateModes {
@@ -270,6 +273,7 @@ impl PlateModes {
             ritz_mass: mass,
             eigenvalues,
             rigidities: plate.rigidity.rigidities(plate.thickness.unwrap_or(0.0)),
+            mass_per_area: rho_h,
         };
         Ok((modes, omegas))
     }

@@ -149,7 +149,7 @@ pub(super) fn vertical_ground_terms(
         }
         // A plate's records under ground motion are modal sums (no
         // full-stiffness share of the inertia load; as its displacements).
-        Probe::PlateMoment { .. } => (0.0, None),
+        Probe::PlateMoment { .. } | Probe::PlateReaction { .. } => (0.0, None),
         Probe::Section { ref section, shear } => {
             // Moments and shears are frame-independent (relative motion).
             let share = if model.bridge.static_correction {

@@ -308,6 +308,34 @@ impl Observer for Recorder<'_> {
                             + on_support
                     }
                 }
+                Probe::PlateReaction { probe, line_of } => {
+                    let static_value = probe.static_reaction(
+                        view.wheel_positions,
+                        &model.static_wheel_loads,
+                        line_of,
+                        on_deck,
+                    );
+                    extremes.statics.push(view.step, view.time, static_value);
+                    if sampled && let Some(s) = column.static_values.as_mut() {
+                        s.push(static_value);
+                    }
+                    // a(w, v_c) as a moment (its own static correction),
+                    // the inertia and the loads' share through v_c.
+                    let elastic = probe.elastic.moment(
+                        view.modal_displacement,
+                        model.bridge.static_correction,
+                        view.wheel_positions,
+                        view.contact_forces,
+                        line_of,
+                        &self.wheel_modes,
+                        on_deck,
+                    );
+                    let loads: f64 = on_deck
+                        .iter()
+                        .map(|&w| view.contact_forces[w] * probe.hat_at(view.wheel_positions[w]))
+                        .sum();
+                    elastic + dot(&probe.inertia, view.modal_acceleration) + loads
+                }
                 Probe::ContactForce { wheel } => view.contact_forces[*wheel],
                 Probe::ContactGap { wheel } => view.contact_gaps[*wheel],
                 Probe::VehicleDisplacement { vehicle, dof } => {

@@ -147,6 +147,18 @@ impl<'m> Recorder<'m> {
                     };
                     (probe, unit, lead)
                 }
+                Quantity::BridgeReaction if model.bridge.is_plate() => {
+                    let (lines, line_of) = wheel_lines(model);
+                    let probe = model
+                        .bridge
+                        .plate_reaction_probe(record.x.unwrap_or(0.0), &lines)?
+                        .expect("plate reactions are at supports, checked when resolving");
+                    let probe = Probe::PlateReaction {
+                        probe: Box::new(probe),
+                        line_of,
+                    };
+                    (probe, "N", lead)
+                }
                 Quantity::BridgeReaction => {
                     let probe = model
                         .bridge
@@ -207,6 +219,7 @@ impl<'m> Recorder<'m> {
                     | Probe::Section { .. }
                     | Probe::Reaction { .. }
                     | Probe::SupportReaction { .. }
+                    | Probe::PlateReaction { .. }
             )
             .then(|| Vec::with_capacity(capacity));
             let (ground_static, lateral_static, absolute) = ground_terms(model, record, &probe)?;
@@ -285,6 +298,7 @@ impl<'m> Recorder<'m> {
                             | Probe::Section { .. }
                             | Probe::Reaction { .. }
                             | Probe::SupportReaction { .. }
+                            | Probe::PlateReaction { .. }
                             | Probe::PlateMoment { .. }
                     )
                 }));

@@ -51,6 +51,12 @@ pub(super) enum Probe {
     SupportReaction {
         reaction: Box<crate::bridge::fe_import::reaction::SupportReaction>,
     },
+    /// A plate deck's line reaction at a support, N; `line_of[w]` is the
+    /// probe's influence line of flattened wheel w.
+    PlateReaction {
+        probe: Box<crate::bridge::plate::reactions::PlateReactionProbe>,
+        line_of: Vec<usize>,
+    },
     /// Flattened wheel index.
     ContactForce { wheel: usize },
     /// Flattened wheel index.

@@ -549,17 +549,18 @@ pub(crate) fn resolve_records(
             // A reaction is taken at the support itself (the file's x may
             // be within a millimetre of it).
             x: match (q, bridge) {
-                (Quantity::BridgeReaction, Some(Bridge::Beam(beam))) => r.x.map(|x| {
-                    support_positions(&beam.spans)
-                        .into_iter()
-                        .fold(x, |best, s| {
+                (Quantity::BridgeReaction, Some(Bridge::Beam(Beam { spans, .. })))
+                | (Quantity::BridgeReaction, Some(Bridge::Plate(Plate { spans, .. }))) => {
+                    r.x.map(|x| {
+                        support_positions(spans).into_iter().fold(x, |best, s| {
                             if (s - x).abs() < (best - x).abs() {
                                 s
                             } else {
                                 best
                             }
                         })
-                }),
+                    })
+                }
                 _ => r.x,
             },
             node: support_node.or(r.node),
@@ -621,13 +622,34 @@ fn reaction_checks(
             None
         }
         Some(Bridge::FeImport(f)) => imported_support(r, at, f, ck),
-        Some(Bridge::Plate(_)) => {
-            ck.error(
-                &format!("{at}.quantity"),
-                "`bridge_reaction` is computed for `type: beam` bridges (the shear jump at a \
-                 support) and at the `constrained` DOFs of an imported model; on a plate record \
-                 displacements and moments",
-            );
+        Some(Bridge::Plate(plate)) => {
+            if plate.edges != PlateEdges::Free {
+                ck.error(
+                    &format!("{at}.quantity"),
+                    "`bridge_reaction` on a plate is the line reaction of a support across a \
+                     deck with free longitudinal edges; simply supported edges carry part of the \
+                     load themselves",
+                );
+            } else if r.y.is_some() {
+                ck.error(
+                    &format!("{at}.y"),
+                    "a plate's `bridge_reaction` is the whole support line's force (N), taken \
+                     across the width: give `x` only",
+                );
+            } else if let Some(x) = r.x {
+                let supports = support_positions(&plate.spans);
+                if !supports.iter().any(|s| (s - x).abs() <= 1e-3) {
+                    let listed: Vec<String> = supports.iter().map(|s| format!("{s}")).collect();
+                    ck.error_with_help(
+                        &format!("{at}.x"),
+                        format!("x = {x} m is not a support of the deck"),
+                        Some(format!(
+                            "a `bridge_reaction` is taken at a support line: x is one of {} (m)",
+                            listed.join(", ")
+                        )),
+                    );
+                }
+            }
             None
         }
     }

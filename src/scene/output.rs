@@ -29,7 +29,10 @@ pub enum Quantity {
     /// listed under `constrained` (`node` and `direction`, or the track
     /// node at `x` whose uz is constrained), N or N·m on the structure:
     /// K_cf u + M_cf ü from its rows of the matrices; the reactions of all
-    /// supports balance the loads and ∫ m ü to round-off (not on plates).
+    /// supports balance the loads and ∫ m ü to round-off. On a plate deck
+    /// with free edges, the whole force of the support line across the deck
+    /// at `x`, N, from virtual work with the span-wise hat of that support
+    /// (the lines balance the loads and ∫∫ ρh ẅ dA to round-off).
     BridgeReaction,
     /// Contact force of a wheel, N, positive in compression.
     ContactForce,

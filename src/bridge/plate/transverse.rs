@@ -115,7 +115,7 @@ impl TransverseBasis {
 /// Gauss–Legendre nodes and weights on [−1, 1] with `count` points, exact
 /// for polynomials of degree ≤ 2·count − 1 (Newton on Pₙ from Chebyshev
 /// guesses; Abramowitz & Stegun 25.4.29).
-fn gauss_legendre(count: usize) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn gauss_legendre(count: usize) -> (Vec<f64>, Vec<f64>) {
     let n = count as f64;
     let mut points = Vec::with_capacity(count);
     let mut weights = Vec::with_capacity(count);
