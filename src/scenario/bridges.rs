@@ -454,10 +454,16 @@ fn beam_elements(ck: &mut Checker<'_>, b: &raw::BeamRaw) -> Vec<usize> {
                     .enumerate()
                     .find(|(_, (_, n))| **n > most)
                 {
+                    // 1e-300 written out would take a line of zeros.
+                    let shown = if (1e-4..1e7).contains(&length) {
+                        format!("{length}")
+                    } else {
+                        format!("{length:e}")
+                    };
                     ck.error_with_help(
                     "bridge.element_length",
                     format!(
-                        "an element length of {length} m makes {} elements on span {} ({span} m), \
+                        "an element length of {shown} m makes {} elements on span {} ({span} m), \
                          more than the {most} a span takes",
                         if n == usize::MAX { "too many".to_owned() } else { n.to_string() },
                         i + 1
