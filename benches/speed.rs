@@ -304,7 +304,7 @@ fn eigen(budget: f64) {
             spans: vec![30.0; 30],
             bending_stiffness: 8.323e9,
             mass_per_length: 2303.0,
-            elements_per_span: elements,
+            elements_per_span: vec![elements; 30],
             modes: Modes {
                 count: None,
                 max_frequency: None,

@@ -52,9 +52,16 @@ pub fn beam_files(scenario: &Scenario) -> Result<Vec<(String, String)>, ExportEr
             .collect()
     };
     let (k, m) = (flip(k), flip(m));
+    let counts = &beam.elements_per_span;
+    let elements = if counts.iter().all(|&n| n == counts[0]) {
+        counts[0].to_string()
+    } else {
+        let each: Vec<String> = counts.iter().map(|n| n.to_string()).collect();
+        format!("[{}]", each.join(", "))
+    };
     let note = format!(
-        "vbi export beam: {}; EI = {} N m^2, m = {} kg/m, {} elements per span; DOFs in dofs.csv",
-        scenario.name, beam.bending_stiffness, beam.mass_per_length, beam.elements_per_span
+        "vbi export beam: {}; EI = {} N m^2, m = {} kg/m, {elements} elements per span; DOFs in dofs.csv",
+        scenario.name, beam.bending_stiffness, beam.mass_per_length
     );
     let mut dofs = String::from("dof,node,direction\n");
     let mut rail = String::from("node,x\n");

@@ -25,6 +25,8 @@ pub(super) fn modes(
         Err(e) => return load_error(&e),
     };
     let plate = bridge.width().is_some();
+    // An imported mode's direction by its kinetic energy (`vertical 2 (99.7 %)`).
+    let named = plate || bridge.is_imported();
     if json {
         outln!(
             "{}",
@@ -42,8 +44,15 @@ pub(super) fn modes(
         "frequency_Hz",
         "period_s",
         "damping",
-        // A plate mode's (m, n): its dominant longitudinal and transverse terms.
-        if plate { "  (m, n)" } else { "" }
+        // A plate mode's (m, n): its dominant longitudinal and transverse
+        // terms; an imported mode's direction and its share of the energy.
+        if plate {
+            "  (m, n)"
+        } else if named {
+            "  direction (kinetic energy share)"
+        } else {
+            ""
+        }
     );
     for (i, (f, z)) in bridge
         .frequencies()
@@ -51,7 +60,7 @@ pub(super) fn modes(
         .zip(&bridge.damping_ratios)
         .enumerate()
     {
-        let character = if plate {
+        let character = if named {
             format!("  {}", bridge.mode_character(i))
         } else {
             String::new()

@@ -35,11 +35,10 @@ pub struct BeamModel {
 impl BeamModel {
     /// Meshes and assembles the beam. Cost O(elements) time and memory.
     pub fn new(beam: &Beam) -> Result<Self, BridgeError> {
-        let elements_per_span = beam.elements_per_span;
         let mut node_x = vec![0.0];
         let mut supported = vec![true];
         let mut start = 0.0;
-        for &span in &beam.spans {
+        for (&span, &elements_per_span) in beam.spans.iter().zip(&beam.elements_per_span) {
             for e in 1..=elements_per_span {
                 node_x.push(start + span * e as f64 / elements_per_span as f64);
                 supported.push(e == elements_per_span);
@@ -100,7 +99,7 @@ impl BeamModel {
 
     /// Number of free dofs for a beam without building it.
     pub fn free_dofs_of(beam: &Beam) -> usize {
-        let nodes = beam.spans.len() * beam.elements_per_span + 1;
+        let nodes = beam.elements() + 1;
         2 * nodes - (beam.spans.len() + 1)
     }
 

@@ -100,10 +100,10 @@ pub fn lateral_ratio(beam: &Beam, sway: &BeamSway) -> f64 {
 /// its ω² (rad²/s²).
 pub fn torsion_modes(beam: &Beam, sway: &BeamSway) -> Vec<(f64, TorsionMode)> {
     let speed = (sway.torsional_stiffness / sway.polar_mass).sqrt();
-    let mut out = Vec::with_capacity(beam.spans.len() * beam.elements_per_span);
+    let mut out = Vec::with_capacity(beam.elements());
     let mut start = 0.0;
-    for (span, &length) in beam.spans.iter().enumerate() {
-        for order in 1..=beam.elements_per_span {
+    for (span, (&length, &elements)) in beam.spans.iter().zip(&beam.elements_per_span).enumerate() {
+        for order in 1..=elements {
             let omega = order as f64 * PI / length * speed;
             out.push((
                 omega * omega,
@@ -123,7 +123,7 @@ pub fn torsion_modes(beam: &Beam, sway: &BeamSway) -> Vec<(f64, TorsionMode)> {
 
 /// Number of twist modes the beam offers.
 pub fn torsion_count(beam: &Beam) -> usize {
-    beam.spans.len() * beam.elements_per_span
+    beam.elements()
 }
 
 /// The lowest `count` modes of the 3D beam from its lowest vertical

@@ -175,7 +175,7 @@ impl PlateModes {
             spans: plate.spans.clone(),
             bending_stiffness: 1.0,
             mass_per_length: 1.0,
-            elements_per_span: plate.elements_per_span,
+            elements_per_span: vec![plate.elements_per_span; plate.spans.len()],
             modes: Modes {
                 count: None,
                 max_frequency: None,

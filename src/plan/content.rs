@@ -185,15 +185,27 @@ pub fn excitations(
     out
 }
 
-/// Fewest modes the automatic choice keeps: [`MODES_PER_SPAN`] per span, of
+/// Fewest modes the automatic choice keeps: [`MODES_PER_SPAN`] per span
+/// ([`floor_spans`]: an imported model's between its track's supports), of
 /// each of [`PLATE_FAMILIES`] on a plate deck (a plate deck's quasi-static
 /// shape under an eccentric wheel needs the torsional and first
 /// transverse-bending families as well as bending: 45 on a three-span deck,
 /// the count the plate paper uses); at most what the model offers.
 pub fn minimum_modes(bridge: &crate::scene::Bridge) -> usize {
-    (modes_per_span(bridge) * bridge.spans().len())
+    (modes_per_span(bridge) * floor_spans(bridge))
         .min(ModalBridge::available_of(bridge))
         .max(1)
+}
+
+/// The spans [`minimum_modes`] counts: a beam's and a plate's own; an
+/// imported model's between the supports its track finds
+/// ([`crate::scene::imported::ImportedModel::supported_spans`]), at least
+/// one.
+pub fn floor_spans(bridge: &crate::scene::Bridge) -> usize {
+    match bridge {
+        crate::scene::Bridge::FeImport(f) => f.model.supported_spans().len().max(1),
+        _ => bridge.spans().len(),
+    }
 }
 
 /// Fewest modes per span the automatic choice keeps ([`minimum_modes`]).

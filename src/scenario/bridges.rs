@@ -39,7 +39,7 @@ pub(crate) fn resolve_bridge(
                 b.mass_per_length,
                 "mass per length",
             );
-            let elements_per_span = elements(ck, b.elements_per_span, b.spans.len());
+            let elements_per_span = beam_elements(ck, b);
             Bridge::Beam(Beam {
                 spans: b.spans.clone(),
                 bending_stiffness: b.bending_stiffness,
@@ -382,12 +382,137 @@ fn check_spans(ck: &mut Checker<'_>, spans: &[f64]) {
 /// Most degrees of freedom a beam model may have.
 pub const MAX_BEAM_DOFS: usize = 1_000_000;
 
+/// A plate's beam functions' elements per span: one count for all spans.
 fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
     let elements_per_span = given.unwrap_or(DEFAULT_ELEMENTS_PER_SPAN);
+    check_count(ck, "bridge.elements_per_span", elements_per_span);
+    check_beam_dofs(ck, spans.saturating_mul(elements_per_span));
+    elements_per_span
+}
+
+/// A beam's elements on each span, from `elements_per_span` (one count or
+/// one per span) or `element_length` (ceil(span / element_length), a ratio
+/// within a relative [`WHOLE_RATIO`] of a whole number taken as that
+/// number), never both; the default count on every span if neither.
+fn beam_elements(ck: &mut Checker<'_>, b: &raw::BeamRaw) -> Vec<usize> {
+    let spans = b.spans.len();
+    let counts =
+        match (&b.elements_per_span, b.element_length) {
+            (Some(_), Some(_)) => {
+                ck.error(
+                    "bridge.element_length",
+                    "give `elements_per_span` or `element_length`, not both: each sets the mesh",
+                );
+                return vec![DEFAULT_ELEMENTS_PER_SPAN; spans];
+            }
+            (None, None) => vec![DEFAULT_ELEMENTS_PER_SPAN; spans],
+            (Some(raw::ElementsPerSpanRaw::All(n)), None) => {
+                check_count(ck, "bridge.elements_per_span", *n);
+                vec![*n; spans]
+            }
+            (Some(raw::ElementsPerSpanRaw::PerSpan(counts)), None) => {
+                for (i, &n) in counts.iter().enumerate() {
+                    check_count(ck, &format!("bridge.elements_per_span[{i}]"), n);
+                }
+                // A list or spans that lost an entry to a type error (already
+                // reported) is not compared.
+                if counts.len() != spans
+                    && !ck.uncertain("bridge.spans")
+                    && !ck.uncertain("bridge.elements_per_span")
+                {
+                    ck.error(
+                    "bridge.elements_per_span",
+                    format!(
+                        "`elements_per_span` lists {} count{} for {spans} span{}; give one count \
+                         per span, or one number for every span",
+                        counts.len(),
+                        if counts.len() == 1 { "" } else { "s" },
+                        if spans == 1 { "" } else { "s" },
+                    ),
+                );
+                }
+                if counts.len() != spans {
+                    return vec![DEFAULT_ELEMENTS_PER_SPAN; spans];
+                }
+                counts.clone()
+            }
+            (None, Some(length)) => {
+                ck.positive("bridge.element_length", length, "an element length");
+                if !(length > 0.0 && length.is_finite()) {
+                    return vec![DEFAULT_ELEMENTS_PER_SPAN; spans];
+                }
+                let most = crate::scene::MAX_ELEMENTS_PER_SPAN;
+                let counts: Vec<usize> = b
+                    .spans
+                    .iter()
+                    .map(|&span| elements_for_length(span, length))
+                    .collect();
+                if let Some((i, (&span, &n))) = b
+                    .spans
+                    .iter()
+                    .zip(&counts)
+                    .enumerate()
+                    .find(|(_, (_, n))| **n > most)
+                {
+                    // 1e-300 written out would take a line of zeros.
+                    let shown = if (1e-4..1e7).contains(&length) {
+                        format!("{length}")
+                    } else {
+                        format!("{length:e}")
+                    };
+                    ck.error_with_help(
+                    "bridge.element_length",
+                    format!(
+                        "an element length of {shown} m makes {} elements on span {} ({span} m), \
+                         more than the {most} a span takes",
+                        if n == usize::MAX { "too many".to_owned() } else { n.to_string() },
+                        i + 1
+                    ),
+                    Some(format!(
+                        "beyond {most} elements a span's stiffness is too ill-conditioned for its \
+                         modes to pass their checks in double precision; 20 to 100 per span is \
+                         what a span needs"
+                    )),
+                );
+                }
+                counts
+            }
+        };
+    let path = if b.element_length.is_some() {
+        "bridge.element_length"
+    } else {
+        "bridge.elements_per_span"
+    };
+    let total = counts.iter().fold(0usize, |sum, &n| sum.saturating_add(n));
+    check_beam_dofs_at(ck, path, total);
+    counts
+}
+
+/// How close to a whole number span / element_length must come to count
+/// as that number (relative): round-off in a ratio of decimals (25 / 2.5)
+/// must not add an element.
+pub const WHOLE_RATIO: f64 = 1e-9;
+
+/// Elements of a span `span` m long no longer than `length` m:
+/// ceil(span / length), a ratio within a relative [`WHOLE_RATIO`] of a
+/// whole number taken as that number; at least 1, `usize::MAX` for a count
+/// no integer holds.
+pub fn elements_for_length(span: f64, length: f64) -> usize {
+    let ratio = span / length;
+    let count = (ratio * (1.0 - WHOLE_RATIO)).ceil().max(1.0);
+    if count.is_finite() && count < usize::MAX as f64 {
+        count as usize
+    } else {
+        usize::MAX
+    }
+}
+
+/// A count of elements on one span: 1 to [`crate::scene::MAX_ELEMENTS_PER_SPAN`].
+fn check_count(ck: &mut Checker<'_>, path: &str, elements_per_span: usize) {
     let most = crate::scene::MAX_ELEMENTS_PER_SPAN;
     if !(1..=most).contains(&elements_per_span) {
         ck.error_with_help(
-            "bridge.elements_per_span",
+            path,
             format!("elements per span must be between 1 and {most}, got {elements_per_span}"),
             (elements_per_span > most).then(|| {
                 format!(
@@ -397,18 +522,25 @@ fn elements(ck: &mut Checker<'_>, given: Option<usize>, spans: usize) -> usize {
             }),
         );
     }
+}
+
+/// `elements` elements in all: at most [`MAX_BEAM_DOFS`] degrees of freedom.
+fn check_beam_dofs(ck: &mut Checker<'_>, elements: usize) {
+    check_beam_dofs_at(ck, "bridge.elements_per_span", elements);
+}
+
+fn check_beam_dofs_at(ck: &mut Checker<'_>, path: &str, elements: usize) {
     // The sparse eigen solver's memory is linear in the DOFs (a Lanczos
     // basis of a few hundred vectors): 10⁶ DOFs is ~2 GB for 100 modes.
-    let total_dofs = spans.saturating_mul(elements_per_span).saturating_mul(2);
+    let total_dofs = elements.saturating_mul(2);
     if total_dofs > MAX_BEAM_DOFS {
         ck.error(
-            "bridge.elements_per_span",
+            path,
             format!(
                 "{total_dofs} degrees of freedom is more than a beam model takes ({MAX_BEAM_DOFS}); use fewer elements per span"
             ),
         );
     }
-    elements_per_span
 }
 
 pub(crate) fn resolve_modes(ck: &mut Checker<'_>, raw: Option<&raw::ModesRaw>) -> Modes {

@@ -244,6 +244,10 @@ impl Budget {
                 "bridge.terms",
                 "degrees of freedom of the plate's eigenproblem (a Ritz term counts 1.5, a transverse function 2.5)",
             ),
+            Bridge::Beam(_) if ck.has("bridge.element_length") => (
+                "bridge.element_length",
+                "degrees of freedom of the bridge's eigenproblem",
+            ),
             _ => (
                 "bridge.elements_per_span",
                 "degrees of freedom of the bridge's eigenproblem",
@@ -566,20 +570,24 @@ pub(crate) fn raw_wheels(vehicles: &[raw::VehicleRaw]) -> f64 {
 pub fn bridge_dofs(bridge: &Bridge) -> f64 {
     /// Beam DOFs that cost what one dense unit costs.
     const SPARSE_BEAM_DOFS_PER_UNIT: f64 = 50.0;
-    let beam = |spans: usize, elements: usize| {
+    let beam = |spans: usize, elements: f64| {
         let spans = spans as f64;
-        2.0 * (spans * elements as f64 + 1.0) - (spans + 1.0)
+        2.0 * (elements + 1.0) - (spans + 1.0)
     };
     match bridge {
-        Bridge::Beam(b) => beam(b.spans.len(), b.elements_per_span) / SPARSE_BEAM_DOFS_PER_UNIT,
+        Bridge::Beam(b) => {
+            let elements: f64 = b.elements_per_span.iter().map(|&n| n as f64).sum();
+            beam(b.spans.len(), elements) / SPARSE_BEAM_DOFS_PER_UNIT
+        }
         // The same sparse Lanczos path as a beam (its bandwidth is larger,
         // but so is its budget's weight in practice small next to the read).
         Bridge::FeImport(f) => f.model.dofs.len() as f64 / SPARSE_BEAM_DOFS_PER_UNIT,
         Bridge::Plate(p) => {
             let ritz = p.terms.longitudinal as f64 * p.terms.transverse as f64;
-            (1.5 * ritz)
-                .max(2.5 * p.terms.transverse as f64)
-                .max(beam(p.spans.len(), p.elements_per_span))
+            (1.5 * ritz).max(2.5 * p.terms.transverse as f64).max(beam(
+                p.spans.len(),
+                p.spans.len() as f64 * p.elements_per_span as f64,
+            ))
         }
     }
 }

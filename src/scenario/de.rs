@@ -307,9 +307,14 @@ impl<'de> de::Deserializer<'de> for NodeDeserializer<'de> {
 
     fn deserialize_newtype_struct<V: Visitor<'de>>(
         self,
-        _name: &'static str,
+        name: &'static str,
         visitor: V,
     ) -> Result<V::Value, DeError> {
+        // A count or a list of counts (`elements_per_span`): the list to
+        // `visit_seq`, anything else read as the count field it is.
+        if name == super::raw::COUNT_OR_LIST && matches!(self.node.kind, NodeKind::Sequence(_)) {
+            return self.deserialize_seq(visitor);
+        }
         visitor
             .visit_newtype_struct(self)
             .map_err(|e| e.at(self.node.loc))

@@ -91,7 +91,7 @@ pub(crate) fn resolve_envelopes(
         _ => {}
     }
     if let Bridge::Beam(beam) = bridge {
-        let nodes = beam.spans.len() * beam.elements_per_span + 1;
+        let nodes = beam.elements().saturating_add(1);
         if raw.points.is_none() && nodes > MAX_ENVELOPE_POINTS {
             ck.error(
                 "envelopes",

@@ -15,6 +15,7 @@ use crate::scene::{PlateEdges, PlateMoment, Quantity, SolverMethod, Terms};
 
 mod aashto;
 mod bridge;
+mod elements;
 mod envelopes;
 mod fe_import;
 mod ground;
@@ -31,6 +32,7 @@ pub mod units;
 mod vehicle;
 pub use self::aashto::*;
 pub use self::bridge::*;
+pub use self::elements::*;
 pub use self::envelopes::*;
 pub use self::fe_import::*;
 pub use self::ground::*;

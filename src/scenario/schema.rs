@@ -56,6 +56,10 @@ pub fn documented_constants() -> Vec<(String, String)> {
             super::resolve::DEFAULT_ELEMENTS_PER_SPAN.to_string(),
         ),
         (
+            "MAX_ELEMENTS_PER_SPAN",
+            crate::scene::MAX_ELEMENTS_PER_SPAN.to_string(),
+        ),
+        (
             "DEFAULT_RIGID_ALPHA",
             number(super::resolve::DEFAULT_RIGID_ALPHA),
         ),

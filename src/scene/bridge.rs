@@ -87,6 +87,25 @@ impl Bridge {
 /// the default is 20.
 pub const MAX_ELEMENTS_PER_SPAN: usize = 4_000;
 
+/// `elements_per_span` as the format writes it: one number when every span
+/// has the same count (as a scene that gave one number wrote it), else the
+/// list.
+fn one_or_each<S: serde::Serializer>(counts: &[usize], s: S) -> Result<S::Ok, S::Error> {
+    match counts {
+        [first, rest @ ..] if rest.iter().all(|n| n == first) => s.serialize_u64(*first as u64),
+        _ => serde::Serialize::serialize(counts, s),
+    }
+}
+
+impl Beam {
+    /// Finite elements in all, over every span.
+    pub fn elements(&self) -> usize {
+        self.elements_per_span
+            .iter()
+            .fold(0, |sum, &n| sum.saturating_add(n))
+    }
+}
+
 /// Thin plate deck.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Plate {
@@ -180,8 +199,10 @@ pub struct Beam {
     pub bending_stiffness: f64,
     /// Mass per unit length, kg/m.
     pub mass_per_length: f64,
-    /// Finite elements per span.
-    pub elements_per_span: usize,
+    /// Finite elements on each span, one count per span (of equal length
+    /// within a span); written as one number when all are equal.
+    #[serde(serialize_with = "one_or_each")]
+    pub elements_per_span: Vec<usize>,
     /// Mode selection.
     pub modes: Modes,
     /// Structural damping.

@@ -288,6 +288,31 @@ impl ImportedModel {
         (free(false), free(true))
     }
 
+    /// The spans the track's supports make, m, from the entrance: the
+    /// intervals between consecutive track rail nodes with no free uz (a
+    /// DOF the map leaves out or the scene lists under `constrained`),
+    /// positions within 10⁻⁶ of the track's length taken as one support.
+    /// Empty with fewer than two supports (a deck carried by modelled
+    /// piers, whose rail nodes all move vertically, has no support here).
+    pub fn supported_spans(&self) -> Vec<f64> {
+        let mut supports: Vec<f64> = self
+            .track
+            .iter()
+            .flat_map(|&r| {
+                let rail = &self.rails[r];
+                rail.x
+                    .iter()
+                    .zip(&rail.displacement[0])
+                    .filter(|(_, dof)| dof.is_none())
+                    .map(|(&x, _)| x)
+            })
+            .collect();
+        supports.sort_by(f64::total_cmp);
+        let tolerance = 1e-6 * self.length;
+        supports.dedup_by(|a, b| (*a - *b).abs() <= tolerance);
+        supports.windows(2).map(|w| w[1] - w[0]).collect()
+    }
+
     /// Mass moving with a rigid vertical translation of every node (all
     /// uz DOFs of the map, constrained ones included), kg.
     pub fn vertical_mass(&self) -> f64 {

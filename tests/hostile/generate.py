@@ -197,6 +197,30 @@ for path, make in int_fields:
     case(f"int-{slug}-float", "rejected", f"2.5 for a whole number ({path})", make("2.5"),
          "expected a whole number")
 
+# Issue 40.6: a count inside the per-span list gets the plain count's
+# message at the item; the list's length and `element_length` are checked.
+def per_span(v):
+    return scene(bridge=BEAM + "  elements_per_span: [@@" + v + "]\n")
+
+
+case("int-bridge-elements_per_span-list-2p64", "rejected", "2^64 inside the per-span list",
+     per_span("18446744073709551616"), "out of range")
+case("int-bridge-elements_per_span-list-1e40", "rejected", "a 40-digit integer inside the per-span list",
+     per_span("1" + "0" * 40), "out of range")
+case("int-bridge-elements_per_span-list-negative", "rejected", "-1 inside the per-span list",
+     per_span("-1"), "out of range")
+case("int-bridge-elements_per_span-list-float", "rejected", "2.5 inside the per-span list",
+     per_span("2.5"), "expected a whole number")
+case("size-elements-per-span-list-length", "rejected", "two counts for one span",
+     scene(bridge=BEAM + "  elements_per_span: @@[10, 10]\n"), "2 counts for 1 span")
+case("size-elements-per-span-list-empty", "rejected", "an empty per-span list",
+     scene(bridge=BEAM + "  elements_per_span: @@[]\n"), "0 counts for 1 span")
+case("size-element-length-and-count", "rejected", "both `elements_per_span` and `element_length`",
+     scene(bridge=BEAM + "  elements_per_span: 10\n  element_length: @@2.5\n"), "not both")
+case("size-element-length-tiny", "rejected",
+     "an element length of 1e-300 m (a count no integer holds)",
+     scene(bridge=BEAM + "  element_length: @@1.0e-300\n"), "more than the 4000 a span takes")
+
 # --- sizes: checked arithmetic and resource budgets ----------------------------------
 case("size-plate-terms-wrap", "rejected",
      "plate Ritz terms whose product passes usize (2^32 x 2^32 wrapped to 0 and panicked)",

@@ -1038,3 +1038,41 @@ fn a_contact_force_peak_on_a_rail_end_ramp_is_named() {
         "{ramps:?}"
     );
 }
+
+/// Issue 40.6: the automatic choice's floor of modes per span applies to
+/// an imported model as to a beam, over the spans its track's supports
+/// make (rail nodes whose uz is constrained or left out of the map). The
+/// 20-25-20 m beam exported with its four supports under `constrained`
+/// and its modes left automatic: supports at 0, 20, 45 and 65 m, so three
+/// spans and the beam's own 15 modes (5 per span; the slow moving force
+/// excites less), not the 5 of one span.
+#[test]
+fn an_imported_track_s_supports_set_the_modes_per_span() {
+    let scratch = Scratch::new("fe_import", "floor");
+    let yaml = "name: three
+bridge: {type: beam, spans: [20.0, 25.0, 20.0], bending_stiffness: 8.323e9, mass_per_length: 2303.0, element_length: 2.5}
+vehicles: [{type: moving_force, speed: 10.0, loads: [1.0e5]}]
+";
+    let (beam, _) = export_and_import(yaml, scratch.dir());
+    assert_eq!(beam.bridge.mode_count(), 15, "{}", beam.bridge.selection);
+    // The exported scene with its modes left to the automatic choice.
+    let path = scratch.path("scenario.yaml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let start = text.find("  modes:\n").expect("a modes block");
+    let end = start + text[start..].find("vehicles:").unwrap();
+    let automatic = format!("{}{}", &text[..start], &text[end..]);
+    std::fs::write(scratch.path("automatic.yaml"), automatic).unwrap();
+    let imported = load_file(&scratch.path("automatic.yaml")).unwrap_or_else(|e| panic!("{e}"));
+    let vbi::scenario::resolved::Bridge::FeImport(fe) = &imported.scenario.bridge else {
+        panic!("not imported")
+    };
+    let spans = fe.model.supported_spans();
+    assert_eq!(spans.len(), 3, "{spans:?}");
+    for (got, want) in spans.iter().zip([20.0, 25.0, 20.0]) {
+        assert!((got - want).abs() <= 1e-12 * want, "{spans:?}");
+    }
+    let selection = &imported.bridge.selection;
+    assert_eq!(imported.bridge.mode_count(), 15, "{selection}");
+    assert!(selection.contains("at least 5 per span"), "{selection}");
+    assert_same_modes(&beam, &imported);
+}

@@ -693,3 +693,71 @@ record:
         );
     }
 }
+
+/// Issue 40.6: an imported mode is named by the direction that carries
+/// most of its kinetic energy. The frame's ux DOFs form a bar fixed at
+/// node 1 (`fix 1 1 1 0`) and free at node 13, uncoupled from the bending
+/// of the straight girder, so its 12 axial modes carry all of their energy
+/// in ux and the 24 bending ones all in uz and ry: every mode's share is
+/// 100.0 %, 12 are `axial`, 24 `vertical`, none `lateral` or `torsion`.
+/// The first axial mode is the fixed-free bar's: on 12 equal linear
+/// elements with consistent mass the discrete modes are exactly
+/// sin(k x) with k = π/2L, at ω² = (EA/m)(6/h²)(1 − cos kh)/(2 + cos kh)
+/// (the interior equations' dispersion relation; the free end holds by
+/// the mode's symmetry about x = L, as cos kL = 0): matched to 1e-9; the
+/// continuous bar's ω = (π/2L)√(EA/m) (Rao, Mechanical Vibrations,
+/// §8.4) lies 7.1e-4 below it ((kh)²/24), held to 1e-3. `vbi modes`
+/// shows the names in its table.
+#[test]
+fn imported_modes_are_named_by_their_kinetic_energy() {
+    use std::f64::consts::PI;
+    let scratch = Scratch::new("fe_import_opensees", "directions");
+    Export::new(Export::free_rows(), true, false).write_files(scratch.dir());
+    let yaml = import_scene("  axes: y_up\n")
+        .replace("modes: {max_frequency: 150.0}", "modes: {count: 36}");
+    let loaded = load_in(scratch.dir(), &yaml).unwrap_or_else(|e| panic!("{e}"));
+    let bridge = vbi::bridge::ModalBridge::build(&loaded.scenario.bridge).unwrap();
+    let names: Vec<String> = (0..bridge.mode_count())
+        .map(|i| bridge.mode_character(i))
+        .collect();
+    assert_eq!(names.len(), 36);
+    assert_eq!(names[0], "vertical 1 (100.0 %)");
+    let count = |d: &str| names.iter().filter(|n| n.starts_with(d)).count();
+    assert_eq!(
+        (
+            count("axial"),
+            count("vertical"),
+            count("lateral"),
+            count("torsion")
+        ),
+        (12, 24, 0, 0),
+        "{names:#?}"
+    );
+    assert!(names.iter().all(|n| n.ends_with("(100.0 %)")), "{names:#?}");
+    let first_axial = names.iter().position(|n| n == "axial 1 (100.0 %)").unwrap();
+    let omega = 2.0 * PI * bridge.frequencies()[first_axial];
+    let h = SPAN / ELEMENTS as f64;
+    let k = PI / (2.0 * SPAN);
+    let discrete =
+        (EA / MASS * 6.0 / (h * h) * (1.0 - (k * h).cos()) / (2.0 + (k * h).cos())).sqrt();
+    let continuous = k * (EA / MASS).sqrt();
+    eprintln!(
+        "first axial mode (mode {}): {omega:.9} rad/s, discrete {discrete:.9}, continuous \
+         {continuous:.9} ({:.2e})",
+        first_axial + 1,
+        (omega - continuous) / continuous
+    );
+    assert!((omega - discrete).abs() <= 1e-9 * discrete);
+    assert!((omega - continuous).abs() <= 1e-3 * continuous);
+    // The table of `vbi modes`.
+    let path = scratch.path("scene.yaml");
+    let out = vbi(&["modes", path.to_str().unwrap()], scratch.dir());
+    assert_exit(&out, 0);
+    let table = text(&out.stdout);
+    assert!(
+        table.contains("direction (kinetic energy share)"),
+        "{table}"
+    );
+    assert!(table.contains("  axial 1 (100.0 %)"), "{table}");
+    assert!(table.contains("  vertical 24 (100.0 %)"), "{table}");
+}

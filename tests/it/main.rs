@@ -20,6 +20,7 @@ mod automatic_shipped;
 mod bad_inputs;
 mod bare_tags;
 mod beam_3d;
+mod beam_mesh;
 mod cancel;
 mod cli;
 mod confined;

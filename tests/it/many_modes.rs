@@ -30,7 +30,7 @@ fn beam(elements: usize) -> Bridge {
         spans: vec![LENGTH],
         bending_stiffness: EI,
         mass_per_length: MASS,
-        elements_per_span: elements,
+        elements_per_span: vec![elements],
         modes: Modes {
             count: None,
             max_frequency: None,
@@ -193,7 +193,7 @@ fn many_identical_spans_are_solved_when_the_budget_allows() {
         spans: vec![10.0; spans],
         bending_stiffness: EI,
         mass_per_length: MASS,
-        elements_per_span: 2,
+        elements_per_span: vec![2; spans],
         modes: Modes {
             count: Some(10),
             max_frequency: None,

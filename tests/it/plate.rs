@@ -457,7 +457,7 @@ fn narrow_strip_influence_line_matches_beam() {
         spans: SPANS.to_vec(),
         bending_stiffness: ei,
         mass_per_length: m,
-        elements_per_span: 20,
+        elements_per_span: vec![20; SPANS.len()],
         modes: no_modes(),
         damping: Damping::Modal { ratio: 0.0 },
         sway: None,

@@ -16,7 +16,7 @@ fn beam(spans: &[f64], ei: f64, m: f64, elements_per_span: usize) -> Bridge {
         spans: spans.to_vec(),
         bending_stiffness: ei,
         mass_per_length: m,
-        elements_per_span,
+        elements_per_span: vec![elements_per_span; spans.len()],
         modes: Modes {
             count: None,
             max_frequency: None,

@@ -170,11 +170,24 @@ pub struct BeamRaw {
     #[serde(deserialize_with = "crate::scenario::raw::units::mass_per_length::one")]
     #[schemars(schema_with = "crate::scenario::raw::units::mass_per_length::schema")]
     pub mass_per_length: f64,
-    /// Hermite-cubic finite elements per span. Default {{DEFAULT_ELEMENTS_PER_SPAN}}.
+    /// Hermite-cubic finite elements per span: one count for every span
+    /// (`20`), or a list with one count per span from the entrance
+    /// (`[8, 10, 8]`), each 1 to {{MAX_ELEMENTS_PER_SPAN}}; a span's
+    /// elements are of equal length. Give this or `element_length`.
+    /// Default {{DEFAULT_ELEMENTS_PER_SPAN}} on every span.
     #[serde(default)]
-    #[schemars(transform = crate::scene::schema_rules::elements_per_span)]
     #[schemars(extend("default" = crate::scenario::resolve::DEFAULT_ELEMENTS_PER_SPAN))]
-    pub elements_per_span: Option<usize>,
+    pub elements_per_span: Option<ElementsPerSpanRaw>,
+    /// Longest finite element, m, instead of `elements_per_span`: each span
+    /// gets ceil(span / element_length) elements of equal length, the
+    /// fewest no longer than `element_length` (a ratio within a relative
+    /// 10⁻⁹ of a whole number counts as that number, so 25 m at 2.5 m is
+    /// 10 elements, not 11). The resolved scenario gives the counts.
+    #[serde(default)]
+    #[schemars(transform = crate::scene::schema_rules::positive)]
+    #[serde(deserialize_with = "crate::scenario::raw::units::length::option")]
+    #[schemars(schema_with = "crate::scenario::raw::units::length::schema")]
+    pub element_length: Option<f64>,
     /// Which modes the modal superposition keeps. Default: automatic — every
     /// mode up to {{SAFETY}} × the highest frequency the scene excites
     /// (vehicle natural frequencies incl. wheel hop on an elastic contact,

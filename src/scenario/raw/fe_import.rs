@@ -41,7 +41,10 @@ pub struct FeImportRaw {
     /// 2D vehicle sees their average). Default: every rail, if one or two.
     #[serde(default)]
     pub track: Option<Vec<String>>,
-    /// Which modes to keep. Default: chosen automatically, as for a beam.
+    /// Which modes to keep. Default: chosen automatically, as for a beam,
+    /// with at least {{MODES_PER_SPAN}} per span between the supports the
+    /// track's rails find (rail nodes with no free uz: left out of the DOF
+    /// map or listed under `constrained`; one span if fewer than two).
     #[serde(default)]
     pub modes: Option<ModesRaw>,
     /// Signs of the files' slope rotations against this program's
