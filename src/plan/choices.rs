@@ -491,10 +491,53 @@ pub(crate) fn plan(
     let time_step_selection = if solver_raw.time_step.is_some() {
         "set in the file".to_owned()
     } else {
+        // Which rule gave the step (the smallest candidate), so that the
+        // summary says what to change to make the run cheaper.
+        let top = excitations
+            .iter()
+            .map(|e| e.frequency)
+            .fold(highest, f64::max);
+        let mut rules = vec![
+            (
+                1.0 / (content::STEPS_PER_PERIOD * top),
+                format!(
+                    "{} steps per period of {top:.4} Hz, the highest frequency kept or excited",
+                    content::STEPS_PER_PERIOD
+                ),
+            ),
+            (
+                shortest_crossing / content::CROSSING_STEPS,
+                format!(
+                    "{} steps over the shortest crossing ({shortest_crossing:.4} s)",
+                    content::CROSSING_STEPS
+                ),
+            ),
+            (
+                content::phase_time_step(acceleration_top, longest_run),
+                format!(
+                    "the phase of the recorded accelerations' highest mode ({acceleration_top:.4} \
+                     Hz) over the {longest_run:.4} s run"
+                ),
+            ),
+        ];
+        if let Some(g) = ground_motion
+            .iter()
+            .map(|g| g.record.shortest_interval())
+            .reduce(f64::min)
+        {
+            rules.push((
+                g,
+                "the ground-motion record's shortest sample interval".into(),
+            ));
+        }
+        let governing = rules
+            .iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or(String::new(), |(_, why)| format!("; governed by {why}"));
         format!(
             "automatic: {} steps per period of the highest frequency kept or excited, at \
              least {} steps over the shortest crossing, and for deck accelerations a phase \
-             drift of their highest mode below {} rad over the run",
+             drift of their highest mode below {} rad over the run{governing}",
             content::STEPS_PER_PERIOD,
             content::CROSSING_STEPS,
             content::PHASE_BUDGET
