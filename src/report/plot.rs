@@ -473,7 +473,7 @@ pub use history::{
     HistoryLayout, Marker, MarkerLayout, Panel, PanelLayout, PeakLayout, Reference, history_chart,
     history_chart_svg, history_layout,
 };
-pub use ladders::{LadderPanel, ladder_chart};
+pub use ladders::{LadderPanel, LadderPanelLayout, ladder_chart, ladder_layout};
 pub use layout::PixelBox;
 use line::*;
 use scale::*;

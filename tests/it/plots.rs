@@ -306,3 +306,120 @@ fn crowded_panels_keep_their_labels_and_legends_clear() {
     assert_eq!(labels.len(), 3);
     assert!(!labels[0].intersects(&labels[1]), "{labels:?}");
 }
+
+/// The LCP paper's oscillator on a smooth two-mode beam (the scene of
+/// tests/it/converge.rs), 1 ms step: a quick convergence study.
+const SMOOTH_SCENE: &str = "name: smooth-two-modes
+bridge:
+  type: beam
+  spans: [20.0]
+  bending_stiffness: 3.2423e9
+  mass_per_length: 2000.0
+  modes: {count: 2}
+  damping: {type: modal, ratio: 0.02}
+vehicles:
+  - type: oscillator
+    sprung_mass: 4000.0
+    unsprung_mass: 1000.0
+    stiffness: 4.0e6
+    damping: 2.53e4
+    speed: 25.0
+solver: {method: coupled, time_step: 1.0e-3, free_vibration: 0.2}
+record:
+  - {name: midspan, quantity: bridge_displacement, x: 10.0}
+  - {name: contact_force, quantity: contact_force, wheel: 1}
+";
+
+/// A PNG's RGB pixels and width.
+fn decode_png(bytes: &[u8]) -> (Vec<u8>, usize) {
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let mut reader = decoder.read_info().unwrap();
+    let mut rgb = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut rgb).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    rgb.truncate(info.buffer_size());
+    (rgb, info.width as usize)
+}
+
+/// Issue 40.7: `converge.png`'s time-step axis (logarithmic, a ladder of
+/// factors of 2) is labelled at a few round steps written `1e-3`, `2e-3`,
+/// `5e-3`, whose boxes are apart; and in the picture, the ink under the
+/// axis falls in those boxes only, in groups no wider than one label (the
+/// 2×10⁻³ … 6×10⁻³ of a decade had run into each other).
+#[test]
+fn converge_time_step_ticks_are_apart_and_read_as_numbers() {
+    for levels in [3, 6] {
+        let loaded = vbi::plan::load_str(SMOOTH_SCENE, "smooth.yaml").unwrap();
+        let options = vbi::study::converge::Options {
+            levels,
+            tolerance: 0.05,
+            ..Default::default()
+        };
+        let study = vbi::study::converge::converge(&loaded, &options, &mut |_, _, _| {}).unwrap();
+        let (_, height, panels) = study.plot_layout().unwrap();
+        let steps = &panels[0];
+        let ticks = &steps.x_ticks;
+        assert!(ticks.len() >= 2, "levels {levels}: {ticks:?}");
+        for (text, _) in ticks {
+            let (m, e) = text.split_once('e').unwrap_or((text, "0"));
+            assert!(
+                m.len() == 1 && m.parse::<u32>().is_ok_and(|m| m > 0) && e.parse::<i32>().is_ok(),
+                "levels {levels}: tick '{text}'"
+            );
+        }
+        for pair in ticks.windows(2) {
+            let ((a, x), (b, y)) = (&pair[0], &pair[1]);
+            assert!(
+                x.right + 8 <= y.left,
+                "levels {levels}: '{a}' {x:?} and '{b}' {y:?}"
+            );
+        }
+        // The picture: dark pixels in the tick labels' rows.
+        let out = std::env::temp_dir().join(format!(
+            "vbi-plots-{}-converge-{levels}.png",
+            std::process::id()
+        ));
+        study.plot(&out).unwrap();
+        let (rgb, width) = decode_png(&std::fs::read(&out).unwrap());
+        let _ = std::fs::remove_file(&out);
+        let plot = steps.plot;
+        let rows = (plot.bottom + 3)..(plot.bottom + 26).min(height as i32);
+        let dark = |col: i32| {
+            rows.clone().any(|row| {
+                let at = 3 * (row as usize * width + col as usize);
+                rgb[at..at + 3].iter().all(|&c| c < 140)
+            })
+        };
+        let columns = (plot.left - 30)..(plot.right + 30);
+        let inked: Vec<i32> = columns.filter(|&c| dark(c)).collect();
+        // Runs of inked columns, split at 4 blank ones.
+        let mut groups: Vec<(i32, i32)> = Vec::new();
+        for &c in &inked {
+            match groups.last_mut() {
+                Some(g) if c - g.1 <= 4 => g.1 = c,
+                _ => groups.push((c, c)),
+            }
+        }
+        let widest = ticks.iter().map(|(_, b)| b.right - b.left).max().unwrap();
+        for &(a, z) in &groups {
+            assert!(
+                z - a < widest + 2,
+                "levels {levels}: ink {a}..={z} wider than a label"
+            );
+            assert!(
+                ticks
+                    .iter()
+                    .any(|(_, b)| a >= b.left - 2 && z < b.right + 2),
+                "levels {levels}: ink {a}..={z} outside every tick label {ticks:?}"
+            );
+        }
+        for (text, b) in ticks {
+            assert!(
+                groups
+                    .iter()
+                    .any(|&(a, z)| a >= b.left - 2 && z < b.right + 2),
+                "levels {levels}: no ink for '{text}' {b:?}"
+            );
+        }
+    }
+}
