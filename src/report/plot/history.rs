@@ -354,14 +354,21 @@ fn draw_panel<DB: DrawingBackend>(
     let (y_lo, y_hi) = min_max(lines.iter().chain(&references).flatten().map(|p| p.1));
     let x_label_area = if frame.x_label.is_empty() { 28 } else { 55 };
     // Room for a peak's label beyond the data: above the lines when a
-    // series peaks at a maximum, below them when one peaks at a minimum.
+    // series peaks at a maximum (or markers are labelled), below them when
+    // one peaks at a minimum.
     let plot_height = area.dim_in_pixel().1 as i32 - 16 - x_label_area;
     let peaks: Vec<Option<(f64, f64)>> = panel.series.iter().map(|s| peak(s.x, s.y)).collect();
     let room = |wanted: bool| {
         let label = f64::from(PEAK_LABEL_ROOM) / f64::from(plot_height.max(4 * PEAK_LABEL_ROOM));
         if wanted { label.max(0.07) } else { 0.07 }
     };
-    let above = room(peaks.iter().flatten().any(|p| p.1 >= 0.0));
+    // The first panel's top line holds the markers' labels, off the data.
+    let marker_labels_here = frame.label_markers
+        && frame
+            .markers
+            .iter()
+            .any(|m| m.x >= x_range.start && m.x <= x_range.end);
+    let above = room(marker_labels_here || peaks.iter().flatten().any(|p| p.1 >= 0.0));
     let below = room(peaks.iter().flatten().any(|p| p.1 < 0.0));
     let y_range = linear_range(y_lo, y_hi, 0.0);
     let y_range = {
