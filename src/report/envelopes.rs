@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use super::number;
-use super::plot::{self, Marker, Panel, PlotError, Reference, Series};
+use super::plot::{self, HistoryLayout, Marker, Panel, PlotError, Reference, Series};
 use crate::record::envelope::{Envelope, EnvelopeColumn, Extremes};
 use crate::scenario::quantity_name_of;
 use crate::scene::{Scenario, Side};
@@ -89,8 +89,30 @@ pub fn write_envelope_plot(
     scenario: &Scenario,
     envelope: &Envelope,
 ) -> Result<(), PlotError> {
+    with_panels(scenario, envelope, |title, axis, panels, markers| {
+        plot::history_chart(path, title, axis, panels, markers)
+    })
+    .map(|_| ())
+}
+
+/// Where `envelopes.png` puts its lines, peak labels, support markers and
+/// legends ([`plot::history_layout`]); none without an envelope.
+pub fn envelope_plot_layout(
+    scenario: &Scenario,
+    envelope: &Envelope,
+) -> Result<Option<HistoryLayout>, PlotError> {
+    with_panels(scenario, envelope, plot::history_layout)
+}
+
+/// The envelope chart's title, axis label, panels and markers handed to
+/// `draw`; none drawn without an envelope.
+fn with_panels<R>(
+    scenario: &Scenario,
+    envelope: &Envelope,
+    draw: impl FnOnce(&str, &str, &[Panel], &[Marker]) -> Result<R, PlotError>,
+) -> Result<Option<R>, PlotError> {
     if envelope.columns.is_empty() || envelope.x.is_empty() {
-        return Ok(());
+        return Ok(None);
     }
     let names: Vec<String> = envelope
         .columns
@@ -164,8 +186,7 @@ pub fn write_envelope_plot(
             label: "support".into(),
         });
     }
-    plot::history_chart(
-        path,
+    draw(
         &format!(
             "{}: envelopes along the deck over the crossing (o: peak)",
             scenario.name
@@ -174,6 +195,7 @@ pub fn write_envelope_plot(
         &panels,
         &supports,
     )
+    .map(Some)
 }
 
 /// Where an envelope peaks: the value, the point and when.

@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use super::plot::{self, Marker, Panel, PlotError, Reference, Series};
+use super::plot::{self, HistoryLayout, Marker, Panel, PlotError, Reference, Series};
 use crate::record::History;
 use crate::scene::{Quantity, Scenario};
 
@@ -66,7 +66,10 @@ pub fn write_history_plot(
     scenario: &Scenario,
     history: &History,
 ) -> Result<(), PlotError> {
-    draw_history_plot(path, scenario, history, false)
+    with_panels(scenario, history, |title, axis, panels, markers| {
+        plot::history_chart(path, title, axis, panels, markers)
+    })
+    .map(|_| ())
 }
 
 /// Writes the history chart of a run to `path` as SVG.
@@ -75,7 +78,19 @@ pub fn write_history_svg(
     scenario: &Scenario,
     history: &History,
 ) -> Result<(), PlotError> {
-    draw_history_plot(path, scenario, history, true)
+    with_panels(scenario, history, |title, axis, panels, markers| {
+        plot::history_chart_svg(path, title, axis, panels, markers)
+    })
+    .map(|_| ())
+}
+
+/// Where the history chart of a run puts its lines, peak labels, markers
+/// and legends ([`plot::history_layout`]); none when nothing is recorded.
+pub fn history_plot_layout(
+    scenario: &Scenario,
+    history: &History,
+) -> Result<Option<HistoryLayout>, PlotError> {
+    with_panels(scenario, history, plot::history_layout)
 }
 
 /// Buckets of a streamed history's plot: each keeps its rows' first and
@@ -164,12 +179,13 @@ fn reduced_for_plot(history: &History) -> Result<History, PlotError> {
     Ok(reduced)
 }
 
-fn draw_history_plot(
-    path: &Path,
+/// The history chart's title, time axis label, panels and markers handed
+/// to `draw`; none drawn when nothing is recorded.
+fn with_panels<R>(
     scenario: &Scenario,
     history: &History,
-    svg: bool,
-) -> Result<(), PlotError> {
+    draw: impl FnOnce(&str, &str, &[Panel], &[Marker]) -> Result<R, PlotError>,
+) -> Result<Option<R>, PlotError> {
     let reduced;
     let history = if history.spilled.is_some() {
         reduced = reduced_for_plot(history)?;
@@ -235,7 +251,7 @@ fn draw_history_plot(
         })
         .collect();
     if panels.is_empty() {
-        return Ok(());
+        return Ok(None);
     }
     let title = if panels.iter().all(|p| p.references.is_empty()) {
         format!("{}: recorded histories (o: peak)", scenario.name)
@@ -244,11 +260,6 @@ fn draw_history_plot(
             "{}: recorded histories (dashed: static crossing; o: peak)",
             scenario.name
         )
-    };
-    let chart = if svg {
-        plot::history_chart_svg
-    } else {
-        plot::history_chart
     };
     let axis = match time.first() {
         Some(&t) if first > 0 => {
@@ -260,7 +271,7 @@ fn draw_history_plot(
         .into_iter()
         .filter(|m| time.first().is_none_or(|&t| m.x >= t))
         .collect();
-    chart(path, &title, &axis, &panels, &markers)
+    draw(&title, &axis, &panels, &markers).map(Some)
 }
 
 /// The first sample the history plot shows: a little before the first

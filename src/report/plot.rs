@@ -464,12 +464,17 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
 mod grid;
 mod history;
 mod ladders;
+mod layout;
 mod line;
 mod scale;
 
 use grid::*;
-pub use history::{Marker, Panel, Reference, history_chart, history_chart_svg};
-pub use ladders::{LadderPanel, ladder_chart};
+pub use history::{
+    HistoryLayout, Marker, MarkerLayout, Panel, PanelLayout, PeakLayout, Reference, history_chart,
+    history_chart_svg, history_layout,
+};
+pub use ladders::{LadderPanel, LadderPanelLayout, ladder_chart, ladder_layout};
+pub use layout::PixelBox;
 use line::*;
 use scale::*;
 

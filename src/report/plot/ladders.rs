@@ -2,6 +2,7 @@
 //! converge` (issue 28 point 7), where each ladder gets its own abscissa
 //! (time step, modes kept) so that neither is squashed into a stroke.
 
+use super::layout::PixelBox;
 use super::*;
 
 /// Canvas of [`ladder_chart`], pixels: two panels side by side.
@@ -36,6 +37,40 @@ pub fn ladder_chart(
     limit: f64,
     limit_label: &str,
 ) -> Result<(), PlotError> {
+    let (rgb, _) = render_ladder(title, y_label, panels, limit, limit_label)?;
+    let bytes = encode_png_sized(&rgb, LADDER_WIDTH, HEIGHT)?;
+    write_atomic(path, &bytes)
+}
+
+/// Where one panel of a [`ladder_chart`] put its plotting area and its
+/// abscissa's tick labels (image pixels).
+#[derive(Debug, Clone, Default)]
+pub struct LadderPanelLayout {
+    /// The plotting area.
+    pub plot: PixelBox,
+    /// Each abscissa tick label and its box, left to right.
+    pub x_ticks: Vec<(String, PixelBox)>,
+}
+
+/// Where [`ladder_chart`] puts each panel's parts, without writing it.
+pub fn ladder_layout(
+    title: &str,
+    y_label: &str,
+    panels: &[LadderPanel],
+    limit: f64,
+    limit_label: &str,
+) -> Result<(u32, u32, Vec<LadderPanelLayout>), PlotError> {
+    let (_, layouts) = render_ladder(title, y_label, panels, limit, limit_label)?;
+    Ok((LADDER_WIDTH, HEIGHT, layouts))
+}
+
+fn render_ladder(
+    title: &str,
+    y_label: &str,
+    panels: &[LadderPanel],
+    limit: f64,
+    limit_label: &str,
+) -> Result<(Vec<u8>, Vec<LadderPanelLayout>), PlotError> {
     if panels.is_empty() {
         return Err(PlotError::InvalidInput("no panels".into()));
     }
@@ -57,6 +92,7 @@ pub fn ladder_chart(
         .filter(|&y| usable_log(y));
     let (y_lo, y_hi) = min_max(ys);
     let y_range = log_range(y_lo, y_hi);
+    let mut layouts = Vec::new();
     let rendered = render_sized(LADDER_WIDTH, HEIGHT, |root| {
         let area = with_title(root, title)?;
         let columns = area.split_evenly((1, panels.len()));
@@ -84,19 +120,160 @@ pub fn ladder_chart(
                 } else {
                     log_range(x_lo, x_hi)
                 };
-                let x = LogCoord::from(range.log_scale());
-                draw_panel(column, x, y, panel, y_label, limit, limit_label)?;
+                // Ticks a label each, as many as fit apart (issue 40.7: a
+                // decade's 2×10⁻³ … 6×10⁻³ ran into each other).
+                let width = column.dim_in_pixel().0 as i32 - PANEL_SIDES;
+                let measure = |text: &str| {
+                    column
+                        .estimate_text_size(text, &font(LABEL_SIZE))
+                        .map_or(10 * text.len() as i32, |(w, _)| w as i32)
+                };
+                let x = TickedLog::new(range, width, &measure);
+                layouts.push(draw_panel(
+                    column,
+                    x,
+                    y,
+                    panel,
+                    y_label,
+                    limit,
+                    limit_label,
+                )?);
             } else {
                 // Whole numbers (mode counts) from 0, with room to the right.
                 let hi = if x_hi.is_finite() { x_hi.max(1.0) } else { 1.0 };
                 let x = RangedCoordf64::from(0.0..(hi * 1.08).ceil());
-                draw_panel(column, x, y, panel, y_label, limit, limit_label)?;
+                layouts.push(draw_panel(
+                    column,
+                    x,
+                    y,
+                    panel,
+                    y_label,
+                    limit,
+                    limit_label,
+                )?);
             }
         }
         Ok(Geometry::default())
     })?;
-    let bytes = encode_png_sized(&rendered.rgb, LADDER_WIDTH, HEIGHT)?;
-    write_atomic(path, &bytes)
+    Ok((rendered.rgb, layouts))
+}
+
+/// Columns of a panel outside its plotting area: the margins (15 left,
+/// 25 right) and the ordinate's label area (95).
+const PANEL_SIDES: i32 = 15 + 25 + 95;
+/// Least blank space between two abscissa tick labels, pixels.
+const TICK_GAP: i32 = 14;
+
+/// A logarithmic abscissa labelled at round values (`1e-3`, `2e-3`,
+/// `5e-3`) no closer than [`TICK_GAP`] apart, grid lines at every
+/// 1…9 × 10ᵉ between them.
+pub(super) struct TickedLog {
+    coord: LogCoord<f64>,
+    ticks: Vec<(f64, String)>,
+    grid: Vec<f64>,
+}
+
+impl TickedLog {
+    /// For an axis `width` pixels long whose label `text` is `measure(text)` wide.
+    pub(super) fn new(range: Range<f64>, width: i32, measure: &dyn Fn(&str) -> i32) -> Self {
+        let (lo, hi) = (range.start.min(range.end), range.start.max(range.end));
+        let at = |m: u32, e: i32| f64::from(m) * 10f64.powi(e);
+        let decades = (lo.log10().floor() as i32)..=(hi.log10().ceil() as i32);
+        let inside = |v: f64| v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9);
+        // One notation along the axis: `5e-3` beside `1e-2`, not `0.01`.
+        let scientific = *decades.start() < -2 || *decades.end() > 3;
+        let values = |mantissas: &[u32], every: i32| -> Vec<(f64, String)> {
+            decades
+                .clone()
+                .filter(|e| e.rem_euclid(every) == 0)
+                .flat_map(|e| mantissas.iter().map(move |&m| (m, e)))
+                .filter(|&(m, e)| inside(at(m, e)))
+                .map(|(m, e)| (at(m, e), log_tick_label(m, e, scientific)))
+                .collect()
+        };
+        let grid = values(&[1, 2, 3, 4, 5, 6, 7, 8, 9], 1)
+            .into_iter()
+            .map(|(v, _)| v)
+            .collect();
+        let span = (hi / lo).ln().max(f64::MIN_POSITIVE);
+        let pixel = |v: f64| f64::from(width) * (v / lo).ln() / span;
+        let fits = |ticks: &[(f64, String)]| {
+            ticks.windows(2).all(|pair| {
+                let half = |(v, t): &(f64, String)| (pixel(*v), f64::from(measure(t)) / 2.0);
+                let ((a, wa), (b, wb)) = (half(&pair[0]), half(&pair[1]));
+                b - wb - (a + wa) >= f64::from(TICK_GAP)
+            })
+        };
+        let choices: Vec<Vec<(f64, String)>> = vec![
+            values(&[1, 2, 3, 4, 5, 6, 7, 8, 9], 1),
+            values(&[1, 2, 3, 5], 1),
+            values(&[1, 2, 5], 1),
+            values(&[1, 5], 1),
+            values(&[1], 1),
+            values(&[1], 2),
+            values(&[1], 5),
+        ];
+        // The densest that fits with two ticks or more; else the sparsest.
+        let ticks = choices
+            .iter()
+            .find(|t| t.len() >= 2 && fits(t))
+            .or_else(|| choices.iter().rev().find(|t| fits(t)))
+            .cloned()
+            .unwrap_or_default();
+        TickedLog {
+            coord: LogCoord::from(range.log_scale()),
+            ticks,
+            grid,
+        }
+    }
+}
+
+/// `m × 10ᵉ` as a tick reads: `5e-5`, `1e-4`, `2e0` when `scientific`,
+/// else `0.02`, `3`, `200`.
+pub(super) fn log_tick_label(m: u32, e: i32, scientific: bool) -> String {
+    if !scientific {
+        fixed(f64::from(m) * 10f64.powi(e), 2)
+    } else {
+        format!("{m}e{e}")
+    }
+}
+
+impl Ranged for TickedLog {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.coord.map(value, limit)
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.grid.clone()
+        } else {
+            self.ticks.iter().map(|(v, _)| *v).collect()
+        }
+    }
+
+    fn range(&self) -> Range<f64> {
+        self.coord.range()
+    }
+}
+
+/// The abscissa's ticks of a panel: (value, label).
+pub(super) trait XTicks {
+    fn x_ticks(&self) -> Vec<(f64, String)>;
+}
+
+impl XTicks for TickedLog {
+    fn x_ticks(&self) -> Vec<(f64, String)> {
+        self.ticks.clone()
+    }
+}
+
+impl XTicks for RangedCoordf64 {
+    fn x_ticks(&self) -> Vec<(f64, String)> {
+        Vec::new()
+    }
 }
 
 fn draw_panel<X>(
@@ -107,12 +284,19 @@ fn draw_panel<X>(
     y_label: &str,
     limit: f64,
     limit_label: &str,
-) -> Result<(), PlotError>
+) -> Result<LadderPanelLayout, PlotError>
 where
-    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64> + XTicks,
 {
     let x_range = x_coord.range();
-    let x_fmt = tick_formatter(&x_range, panel.log_x);
+    let ticks = x_coord.x_ticks();
+    let x_fmt = |v: &f64| {
+        ticks
+            .iter()
+            .find(|(t, _)| (t - v).abs() <= 1e-9 * t.abs())
+            .map(|(_, s)| s.clone())
+            .unwrap_or_default()
+    };
     let whole = |v: &f64| {
         if (v - v.round()).abs() < 1e-9 {
             fixed(*v, 0)
@@ -121,6 +305,7 @@ where
         }
     };
     let y_fmt = tick_formatter(&y_coord.range(), true);
+    let y_start = y_coord.range().start;
     let area = area
         .titled(panel.title, font(DESC_SIZE))
         .map_err(draw_err)?;
@@ -267,6 +452,31 @@ where
             ))
             .map_err(draw_err)?;
     }
+    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
+    let plot = PixelBox {
+        left: px_x.start,
+        top: px_y.start,
+        right: px_x.end,
+        bottom: px_y.end,
+    };
+    // Each tick label centred under its tick (as the mesh draws it).
+    let x_ticks = ticks
+        .iter()
+        .map(|(v, text)| {
+            let x = chart.backend_coord(&(*v, y_start)).0;
+            let (w, h) = area
+                .estimate_text_size(text, &font(LABEL_SIZE))
+                .map_or((0, 0), |(w, h)| (w as i32, h as i32));
+            let top = plot.bottom + 5;
+            let b = PixelBox {
+                left: x - w / 2,
+                top,
+                right: x - w / 2 + w,
+                bottom: top + h,
+            };
+            (text.clone(), b)
+        })
+        .collect();
     if !legend.is_empty() {
         let position = legend_position(&chart, &legend, &all_runs)?;
         chart
@@ -279,5 +489,5 @@ where
             .draw()
             .map_err(draw_err)?;
     }
-    Ok(())
+    Ok(LadderPanelLayout { plot, x_ticks })
 }

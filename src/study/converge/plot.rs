@@ -11,7 +11,7 @@
 use std::path::Path;
 
 use super::{Convergence, Ladder, RunReport, percent, short};
-use crate::report::plot::{self, LadderPanel, PlotError, Series};
+use crate::report::plot::{self, LadderPanel, LadderPanelLayout, PlotError, Series};
 
 /// (x, y) points of one line.
 type Line = (String, Vec<f64>, Vec<f64>);
@@ -19,6 +19,22 @@ type Line = (String, Vec<f64>, Vec<f64>);
 impl Convergence {
     /// Writes the two-panel chart to `path` (PNG).
     pub fn plot(&self, path: &Path) -> Result<(), PlotError> {
+        self.with_panels(|title, y_label, panels, tolerance, tolerance_label| {
+            plot::ladder_chart(path, title, y_label, panels, tolerance, tolerance_label)
+        })
+    }
+
+    /// Where [`Self::plot`] puts each panel's plotting area and abscissa
+    /// tick labels: the image's width and height and one entry a panel.
+    pub fn plot_layout(&self) -> Result<(u32, u32, Vec<LadderPanelLayout>), PlotError> {
+        self.with_panels(plot::ladder_layout)
+    }
+
+    /// The chart's title, ordinate label, panels and tolerance handed to `draw`.
+    fn with_panels<R>(
+        &self,
+        draw: impl FnOnce(&str, &str, &[LadderPanel], f64, &str) -> Result<R, PlotError>,
+    ) -> Result<R, PlotError> {
         let names = self.quantities();
         let ok = |r: &&RunReport| r.wall_time.is_some() && r.errors.is_ok();
         let error = |r: &RunReport, q: usize| r.errors.as_ref().map_or(f64::NAN, |e| e[q].max_abs);
@@ -120,8 +136,7 @@ impl Convergence {
                 chosen: mark(&[Ladder::Modes], &|r| r.modes as f64),
             },
         ];
-        plot::ladder_chart(
-            path,
+        draw(
             &format!(
                 "{}: error against {} (reference)",
                 self.scenario, self.reference.label
