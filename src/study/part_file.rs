@@ -68,20 +68,31 @@ fn read_as<T: DeserializeOwned>(path: &Path, allow_large: bool) -> Result<T, Sha
     struct Tag {
         format: Option<serde_json::Value>,
     }
-    let tag: Tag = serde_json::from_str(&text).map_err(|e| not_a_part(json_fault(&e)))?;
+    let tag: Tag = serde_json::from_str(&text).map_err(|e| not_a_part(json_fault(&e, &text)))?;
     if tag.format.as_ref().and_then(|v| v.as_str()) != Some(PART_FORMAT) {
         return Err(not_a_part(format!(
             "its `format` is not `{PART_FORMAT}`, the part format this vbi reads"
         )));
     }
-    serde_json::from_str(&text).map_err(|e| not_a_part(json_fault(&e)))
+    serde_json::from_str(&text).map_err(|e| not_a_part(json_fault(&e, &text)))
 }
 
-/// Where and what kind a JSON error is, without the text serde quotes.
-fn json_fault(e: &serde_json::Error) -> String {
+/// Where and what kind a JSON error of `text` is, without the text serde
+/// quotes. A syntax error on the text's last character is a cut file too
+/// (a number cut short, "…e-6,5", is refused there as a syntax error,
+/// not as an end of input).
+fn json_fault(e: &serde_json::Error, text: &str) -> String {
     use serde_json::error::Category;
+    let (last_line, last_column) = text
+        .trim_end()
+        .lines()
+        .enumerate()
+        .last()
+        .map_or((1, 0), |(i, l)| (i + 1, l.chars().count()));
+    let at_end = e.line() > last_line || (e.line() == last_line && e.column() >= last_column);
     let kind = match e.classify() {
         Category::Io => "cannot be read",
+        Category::Syntax if at_end => "ends early",
         Category::Syntax => "is not valid JSON",
         Category::Data => "does not have a part's fields and types",
         Category::Eof => "ends early",
