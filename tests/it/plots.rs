@@ -429,5 +429,33 @@ fn converge_time_step_ticks_are_apart_and_read_as_numbers() {
                 "levels {levels}: no ink for '{text}' {b:?}"
             );
         }
+        // The cheapest run's red label is off every drawn line (its 2 px
+        // stroke sampled along each segment), on whichever panel holds it.
+        let labels: Vec<_> = panels
+            .iter()
+            .filter_map(|p| p.chosen_label.map(|b| (p, b)))
+            .collect();
+        assert!(!labels.is_empty(), "levels {levels}: no cheapest label");
+        for (panel, b) in labels {
+            for line in &panel.lines {
+                for pair in line.windows(2) {
+                    let (a, z) = (pair[0], pair[1]);
+                    let steps = (z.0 - a.0).abs().max((z.1 - a.1).abs()).max(1);
+                    for k in 0..=steps {
+                        let t = f64::from(k) / f64::from(steps);
+                        let x = f64::from(a.0) + f64::from(z.0 - a.0) * t;
+                        let y = f64::from(a.1) + f64::from(z.1 - a.1) * t;
+                        let inside = x >= f64::from(b.left - 2)
+                            && x <= f64::from(b.right + 2)
+                            && y >= f64::from(b.top - 2)
+                            && y <= f64::from(b.bottom + 2);
+                        assert!(
+                            !inside,
+                            "levels {levels}: the cheapest label {b:?} is on a line at ({x}, {y})"
+                        );
+                    }
+                }
+            }
+        }
     }
 }

@@ -2,7 +2,7 @@
 //! converge` (issue 28 point 7), where each ladder gets its own abscissa
 //! (time step, modes kept) so that neither is squashed into a stroke.
 
-use super::layout::PixelBox;
+use super::layout::{LEADER_DISTANCE, LINE_CLEARANCE, Occupancy, PixelBox, place_label};
 use super::*;
 
 /// Canvas of [`ladder_chart`], pixels: two panels side by side.
@@ -50,6 +50,10 @@ pub struct LadderPanelLayout {
     pub plot: PixelBox,
     /// Each abscissa tick label and its box, left to right.
     pub x_ticks: Vec<(String, PixelBox)>,
+    /// Every drawn line (the ladders and the limit) in pixels.
+    pub lines: Vec<Vec<(i32, i32)>>,
+    /// The chosen run's label, where it was put (off every line).
+    pub chosen_label: Option<PixelBox>,
 }
 
 /// Where [`ladder_chart`] puts each panel's parts, without writing it.
@@ -424,34 +428,6 @@ where
         });
         all_runs.push(vec![across]);
     }
-    if let Some((x, y, label)) = panel.chosen
-        && usable_point(&(x, y))
-    {
-        // Ring and label; the label on the side with room, below the ring
-        // in the upper half (where the tolerance line usually is), else above.
-        let (px, py) = chart.backend_coord(&(x, y));
-        let (xs, ys) = area.get_pixel_range();
-        let (left, right) = (xs.start, xs.end);
-        let upper = py - ys.start < ys.end - py;
-        let to_left = px - left > right - px;
-        let h = if to_left { HPos::Right } else { HPos::Left };
-        let v = if upper { VPos::Top } else { VPos::Bottom };
-        let anchor = Pos::new(h, v);
-        let dx = if to_left { -12 } else { 12 };
-        let dy = if upper { 12 } else { -12 };
-        let red = RGBColor(220, 0, 0);
-        chart
-            .draw_series(std::iter::once(
-                EmptyElement::at((x, y))
-                    + Circle::new((0, 0), 10, red.stroke_width(3))
-                    + Text::new(
-                        label.to_string(),
-                        (dx, dy),
-                        font(LEGEND_SIZE).color(&red).pos(anchor),
-                    ),
-            ))
-            .map_err(draw_err)?;
-    }
     let (px_x, px_y) = chart.plotting_area().get_pixel_range();
     let plot = PixelBox {
         left: px_x.start,
@@ -459,6 +435,68 @@ where
         right: px_x.end,
         bottom: px_y.end,
     };
+    let lines: Vec<Vec<(i32, i32)>> = all_runs
+        .iter()
+        .flatten()
+        .map(|run| run.iter().map(|p| chart.backend_coord(p)).collect())
+        .collect();
+    let mut chosen_label = None;
+    if let Some((x, y, label)) = panel.chosen
+        && usable_point(&(x, y))
+    {
+        // Ring and label; the label in the free place nearest the ring,
+        // off every line (as a history's peak labels), else beside it on
+        // the side with room.
+        let (px, py) = chart.backend_coord(&(x, y));
+        let (w, h) = area
+            .estimate_text_size(label, &font(LEGEND_SIZE))
+            .map_or((0, 0), |(w, h)| (w as i32, h as i32));
+        let mut occupancy = Occupancy::new(plot);
+        for line in &lines {
+            occupancy.mark_polyline(line, LINE_CLEARANCE);
+        }
+        occupancy.mark_polyline(&[(px, py)], 14);
+        occupancy.seal();
+        let upper = py - plot.top < plot.bottom - py;
+        let red = RGBColor(220, 0, 0);
+        let ring = EmptyElement::at((x, y)) + Circle::new((0, 0), 10, red.stroke_width(3));
+        chart.draw_series(std::iter::once(ring)).map_err(draw_err)?;
+        let style = font(LEGEND_SIZE)
+            .color(&red)
+            .pos(Pos::new(HPos::Left, VPos::Top));
+        // The panel's area draws in its own coordinates; the layout's are
+        // the image's.
+        let (xs, ys) = area.get_pixel_range();
+        let local = |(x, y): (i32, i32)| (x - xs.start, y - ys.start);
+        match place_label(&occupancy, &[], &[], (px, py), (w, h), !upper) {
+            Some(b) => {
+                if b.distance_to((px, py)) > LEADER_DISTANCE {
+                    let end = b.nearest_to((px, py));
+                    area.draw(&PathElement::new(
+                        vec![local((px, py)), local(end)],
+                        red.stroke_width(1),
+                    ))
+                    .map_err(draw_err)?;
+                }
+                area.draw(&Text::new(label.to_string(), local((b.left, b.top)), style))
+                    .map_err(draw_err)?;
+                chosen_label = Some(b);
+            }
+            None => {
+                let to_left = px - plot.left > plot.right - px;
+                let left = if to_left { px - 12 - w } else { px + 12 };
+                let top = if upper { py + 12 } else { py - 12 - h };
+                area.draw(&Text::new(label.to_string(), local((left, top)), style))
+                    .map_err(draw_err)?;
+                chosen_label = Some(PixelBox {
+                    left,
+                    top,
+                    right: left + w,
+                    bottom: top + h,
+                });
+            }
+        }
+    }
     // Each tick label centred under its tick (as the mesh draws it).
     let x_ticks = ticks
         .iter()
@@ -489,5 +527,10 @@ where
             .draw()
             .map_err(draw_err)?;
     }
-    Ok(LadderPanelLayout { plot, x_ticks })
+    Ok(LadderPanelLayout {
+        plot,
+        x_ticks,
+        lines,
+        chosen_label,
+    })
 }
