@@ -130,6 +130,21 @@ fn inertia_of_uz(mtx: &str) -> Vec<f64> {
     out
 }
 
+/// The static reference columns of the records `names`.
+fn static_columns<'a>(run: &'a vbi::run::Outcome, names: &[&str]) -> Vec<&'a [f64]> {
+    names
+        .iter()
+        .map(|n| {
+            run.history
+                .columns
+                .iter()
+                .find(|c| c.name == *n)
+                .and_then(|c| c.static_values.as_deref())
+                .expect("a static reference")
+        })
+        .collect()
+}
+
 #[test]
 fn imported_reactions_balance_the_load_and_the_inertia_and_equal_the_beams() {
     let scratch = Scratch::new("it", "imported_reactions");
@@ -187,17 +202,7 @@ fn imported_reactions_balance_the_load_and_the_inertia_and_equal_the_beams() {
         }
         // The static reference: the static reactions carry the load on the
         // deck, exactly.
-        let statics: Vec<&[f64]> = ["r1", "r2", "r3"]
-            .iter()
-            .map(|n| {
-                run.history
-                    .columns
-                    .iter()
-                    .find(|c| c.name == *n)
-                    .and_then(|c| c.static_values.as_deref())
-                    .expect("a static reference")
-            })
-            .collect();
+        let statics = static_columns(&run, &["r1", "r2", "r3"]);
         for i in 0..statics[0].len() {
             let t = run.history.time[i];
             let on = if SPEED * t <= 2.0 * SPAN { LOAD } else { 0.0 };
@@ -325,17 +330,7 @@ fn plate_line_reactions_balance_the_load_and_the_inertia() {
             worst <= 1e-9 * LOAD,
             "{modes} modes: Σ R − P − ∫∫ρh ẅ is {worst} N"
         );
-        let statics: Vec<&[f64]> = ["r1", "r2", "r3"]
-            .iter()
-            .map(|n| {
-                run.history
-                    .columns
-                    .iter()
-                    .find(|c| c.name == *n)
-                    .and_then(|c| c.static_values.as_deref())
-                    .expect("a static reference")
-            })
-            .collect();
+        let statics = static_columns(&run, &["r1", "r2", "r3"]);
         for (i, &t) in run.history.time.iter().enumerate() {
             let on = if 25.0 * t <= 35.0 { LOAD } else { 0.0 };
             let sum: f64 = statics.iter().map(|s| s[i]).sum();
@@ -360,15 +355,8 @@ fn a_single_span_plates_static_line_reactions_are_the_lever_rule() {
         .join("\n")
         .replace("x: 15}", "x: 20}");
     let run = run_yaml(&yaml);
-    let find = |n: &str| {
-        run.history
-            .columns
-            .iter()
-            .find(|c| c.name == n)
-            .and_then(|c| c.static_values.clone())
-            .expect("static")
-    };
-    let (a, b) = (find("r1"), find("r2"));
+    let statics = static_columns(&run, &["r1", "r2"]);
+    let (a, b) = (statics[0], statics[1]);
     for (i, &t) in run.history.time.iter().enumerate() {
         let xi = 25.0 * t;
         let (ea, eb) = if xi <= 20.0 {

@@ -99,22 +99,43 @@ impl PlateModes {
         circular_frequencies: &[f64],
         line_y: &[f64],
     ) -> Result<PlateMomentProbe, BridgeError> {
-        let terms = self.available();
         let basis = self.moment_basis(x, y, moment);
-        let modal: Vec<f64> = (0..self.kept)
+        self.functional_probe(&basis, circular_frequencies, line_y)
+    }
+
+    /// Σ_r b_r c_{r,m} per kept mode m: a linear functional b of the Ritz
+    /// coefficients (a moment's 𝓜Ψ, a line reaction's a(Ψ, v)) on each
+    /// kept mode. Cost O(N · kept).
+    pub(super) fn modal_values(&self, basis: &[f64]) -> Vec<f64> {
+        let terms = self.available();
+        (0..self.kept)
             .map(|m| {
                 (0..basis.len())
                     .map(|r| basis[r] * self.coefficients[r * terms + m])
                     .sum()
             })
-            .collect();
+            .collect()
+    }
+
+    /// The mode-acceleration probe of the linear functional `basis` (b on
+    /// the Ritz coefficients): its modal values, their static part
+    /// (÷ ω², `circular_frequencies` in rad/s) and its full-stiffness
+    /// influence line −Ψ(ξ, η)ᵀ K⁻¹ b along each wheel line `line_y` (m).
+    /// Cost O(N²) per line with K factored once.
+    pub(super) fn functional_probe(
+        &self,
+        basis: &[f64],
+        circular_frequencies: &[f64],
+        line_y: &[f64],
+    ) -> Result<PlateMomentProbe, BridgeError> {
+        let modal = self.modal_values(basis);
         let static_modal = modal
             .iter()
             .zip(circular_frequencies)
             .map(|(e, w)| e / (w * w))
             .collect();
         // u = K⁻¹ b; M(ξ, η) = −Ψ(ξ, η)ᵀ u.
-        let solution = self.solve_stiffness(&basis)?;
+        let solution = self.solve_stiffness(basis)?;
         let lines = line_y
             .iter()
             .map(|&line| self.along_load_line(&solution, line, -1.0))

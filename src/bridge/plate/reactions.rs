@@ -110,34 +110,9 @@ impl PlateModes {
                 inertia_basis[r] = self.mass_per_area * x[2] * y_integral[j];
             }
         }
-        let modal_of = |b: &[f64]| -> Vec<f64> {
-            (0..self.kept)
-                .map(|m| {
-                    (0..terms)
-                        .map(|r| b[r] * self.coefficients[r * terms + m])
-                        .sum()
-                })
-                .collect()
-        };
-        let modal = modal_of(&basis);
-        let static_modal = modal
-            .iter()
-            .zip(circular_frequencies)
-            .map(|(e, w)| e / (w * w))
-            .collect();
-        let solution = self.solve_stiffness(&basis)?;
-        let lines = line_y
-            .iter()
-            .map(|&line| self.along_load_line(&solution, line, -1.0))
-            .collect();
         Ok(Some(PlateReactionProbe {
-            elastic: PlateMomentProbe {
-                modal,
-                static_modal,
-                lines,
-                line_y: line_y.to_vec(),
-            },
-            inertia: modal_of(&inertia_basis),
+            elastic: self.functional_probe(&basis, circular_frequencies, line_y)?,
+            inertia: self.modal_values(&inertia_basis),
             hat,
             node_x,
         }))
