@@ -196,10 +196,7 @@ impl Observer for Recorder<'_> {
                         }
                     }
                     let static_w = part.static_w;
-                    extremes.statics.push(view.step, view.time, static_w);
-                    if sampled && let Some(s) = column.static_values.as_mut() {
-                        s.push(static_w);
-                    }
+                    keep_static(extremes, &mut column.static_values, sampled, view, static_w);
                     let modal = dot(shape, view.modal_displacement);
                     if self.wheel_modes.is_empty() {
                         modal
@@ -255,10 +252,13 @@ impl Observer for Recorder<'_> {
                     } else {
                         statics.moment
                     };
-                    extremes.statics.push(view.step, view.time, static_value);
-                    if sampled && let Some(s) = column.static_values.as_mut() {
-                        s.push(static_value);
-                    }
+                    keep_static(
+                        extremes,
+                        &mut column.static_values,
+                        sampled,
+                        view,
+                        static_value,
+                    );
                     let forces = section.forces(&section_loads, model.bridge.static_correction);
                     if *shear { forces.shear } else { forces.moment }
                 }
@@ -268,10 +268,13 @@ impl Observer for Recorder<'_> {
                         &model.static_wheel_loads,
                         on_deck,
                     );
-                    extremes.statics.push(view.step, view.time, static_value);
-                    if sampled && let Some(s) = column.static_values.as_mut() {
-                        s.push(static_value);
-                    }
+                    keep_static(
+                        extremes,
+                        &mut column.static_values,
+                        sampled,
+                        view,
+                        static_value,
+                    );
                     probe.reaction(&section_loads, model.bridge.static_correction)
                 }
                 Probe::SupportReaction { reaction } => {
@@ -281,10 +284,13 @@ impl Observer for Recorder<'_> {
                         &model.static_wheel_loads,
                         on_deck,
                     );
-                    extremes.statics.push(view.step, view.time, static_value);
-                    if sampled && let Some(s) = column.static_values.as_mut() {
-                        s.push(static_value);
-                    }
+                    keep_static(
+                        extremes,
+                        &mut column.static_values,
+                        sampled,
+                        view,
+                        static_value,
+                    );
                     if model.bridge.static_correction {
                         // The mode-acceleration form: exact statics plus
                         // the modes' dynamic share (reaction module doc).
@@ -315,10 +321,13 @@ impl Observer for Recorder<'_> {
                         line_of,
                         on_deck,
                     );
-                    extremes.statics.push(view.step, view.time, static_value);
-                    if sampled && let Some(s) = column.static_values.as_mut() {
-                        s.push(static_value);
-                    }
+                    keep_static(
+                        extremes,
+                        &mut column.static_values,
+                        sampled,
+                        view,
+                        static_value,
+                    );
                     // a(w, v_c) as a moment (its own static correction),
                     // the inertia and the loads' share through v_c.
                     let elastic = probe.elastic.moment(
@@ -411,5 +420,20 @@ impl Observer for Recorder<'_> {
                     .map(|v| v.expect("one sample per column this step")),
             );
         }
+    }
+}
+
+/// A column's static reference this step: into its extremes, and into its
+/// samples when the step is sampled.
+fn keep_static(
+    extremes: &mut super::extremes::ColumnExtremes,
+    samples: &mut Option<Vec<f64>>,
+    sampled: bool,
+    view: &StepView<'_>,
+    value: f64,
+) {
+    extremes.statics.push(view.step, view.time, value);
+    if sampled && let Some(s) = samples.as_mut() {
+        s.push(value);
     }
 }
