@@ -162,6 +162,9 @@ impl Observer for Recorder<'_> {
             .zip(&mut self.history.extremes)
             .enumerate()
         {
+            // The static crossing's value this step, for the columns that
+            // have one (the reference of their dynamic factor).
+            let mut reference = None;
             let value = match &column.probe {
                 Probe::BridgeDisplacement {
                     shape,
@@ -196,7 +199,7 @@ impl Observer for Recorder<'_> {
                         }
                     }
                     let static_w = part.static_w;
-                    keep_static(extremes, &mut column.static_values, sampled, view, static_w);
+                    reference = Some(static_w);
                     let modal = dot(shape, view.modal_displacement);
                     if self.wheel_modes.is_empty() {
                         modal
@@ -252,13 +255,7 @@ impl Observer for Recorder<'_> {
                     } else {
                         statics.moment
                     };
-                    keep_static(
-                        extremes,
-                        &mut column.static_values,
-                        sampled,
-                        view,
-                        static_value,
-                    );
+                    reference = Some(static_value);
                     let forces = section.forces(&section_loads, model.bridge.static_correction);
                     if *shear { forces.shear } else { forces.moment }
                 }
@@ -268,13 +265,7 @@ impl Observer for Recorder<'_> {
                         &model.static_wheel_loads,
                         on_deck,
                     );
-                    keep_static(
-                        extremes,
-                        &mut column.static_values,
-                        sampled,
-                        view,
-                        static_value,
-                    );
+                    reference = Some(static_value);
                     probe.reaction(&section_loads, model.bridge.static_correction)
                 }
                 Probe::SupportReaction { reaction } => {
@@ -284,13 +275,7 @@ impl Observer for Recorder<'_> {
                         &model.static_wheel_loads,
                         on_deck,
                     );
-                    keep_static(
-                        extremes,
-                        &mut column.static_values,
-                        sampled,
-                        view,
-                        static_value,
-                    );
+                    reference = Some(static_value);
                     if model.bridge.static_correction {
                         // The mode-acceleration form: exact statics plus
                         // the modes' dynamic share (reaction module doc).
@@ -321,13 +306,7 @@ impl Observer for Recorder<'_> {
                         line_of,
                         on_deck,
                     );
-                    keep_static(
-                        extremes,
-                        &mut column.static_values,
-                        sampled,
-                        view,
-                        static_value,
-                    );
+                    reference = Some(static_value);
                     // a(w, v_c) as a moment (its own static correction),
                     // the inertia and the loads' share through v_c.
                     let elastic = probe.elastic.moment(
@@ -391,6 +370,9 @@ impl Observer for Recorder<'_> {
                     value + column.lateral_static * lateral_acceleration + lateral_displacement
                 }
             };
+            if let Some(r) = reference {
+                keep_static(extremes, &mut column.static_values, sampled, view, r);
+            }
             extremes.all.push(view.step, view.time, value);
             if any_on_deck {
                 extremes.on_bridge.push(view.step, view.time, value);

@@ -400,13 +400,7 @@ fn draw_panel<DB: DrawingBackend>(
         .draw()
         .map_err(draw_err)?;
     let base = area.get_base_pixel();
-    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
-    let plot = PixelBox {
-        left: px_x.start,
-        top: px_y.start,
-        right: px_x.end,
-        bottom: px_y.end,
-    };
+    let plot = PixelBox::of_ranges(chart.plotting_area().get_pixel_range());
     let text_size = |text: &str, style: &TextStyle| {
         area.estimate_text_size(text, style)
             .map_or((8 * text.len() as i32, 18), |(w, h)| (w as i32, h as i32))

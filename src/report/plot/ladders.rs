@@ -428,13 +428,7 @@ where
         });
         all_runs.push(vec![across]);
     }
-    let (px_x, px_y) = chart.plotting_area().get_pixel_range();
-    let plot = PixelBox {
-        left: px_x.start,
-        top: px_y.start,
-        right: px_x.end,
-        bottom: px_y.end,
-    };
+    let plot = PixelBox::of_ranges(chart.plotting_area().get_pixel_range());
     let lines: Vec<Vec<(i32, i32)>> = all_runs
         .iter()
         .flatten()
@@ -466,8 +460,8 @@ where
             .pos(Pos::new(HPos::Left, VPos::Top));
         // The panel's area draws in its own coordinates; the layout's are
         // the image's.
-        let (xs, ys) = area.get_pixel_range();
-        let local = |(x, y): (i32, i32)| (x - xs.start, y - ys.start);
+        let base = area.get_base_pixel();
+        let local = |(x, y): (i32, i32)| (x - base.0, y - base.1);
         match place_label(&occupancy, &[], &[], (px, py), (w, h), !upper) {
             Some(b) => {
                 if b.distance_to((px, py)) > LEADER_DISTANCE {

@@ -19,6 +19,17 @@ pub struct PixelBox {
 }
 
 impl PixelBox {
+    /// The box of a drawing area's pixel ranges (as plotters'
+    /// `get_pixel_range` gives them: columns, rows).
+    pub fn of_ranges((columns, rows): (std::ops::Range<i32>, std::ops::Range<i32>)) -> Self {
+        PixelBox {
+            left: columns.start,
+            top: rows.start,
+            right: columns.end,
+            bottom: rows.end,
+        }
+    }
+
     /// Whether the two rectangles share a pixel.
     pub fn intersects(&self, other: &PixelBox) -> bool {
         self.left < other.right
