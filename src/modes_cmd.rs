@@ -73,6 +73,21 @@ pub(super) fn modes(
             z
         );
     }
+    // What the plan left out of them (issue 40.6), so that the table still
+    // shows every mode below the last kept one.
+    if !bridge.left_out.is_empty() {
+        outln!("left out (nothing in the scene moves them):");
+        for mode in &bridge.left_out {
+            outln!(
+                "{:>5} {:>14.6} {:>14.6} {:>12}  {}",
+                "-",
+                mode.frequency,
+                1.0 / mode.frequency,
+                "",
+                mode.direction
+            );
+        }
+    }
     if let Some(scenario) = &scenario {
         print_vehicle_frequencies(scenario);
     }
@@ -132,6 +147,7 @@ pub(super) fn modes_json(
         "modes_used": bridge.mode_count(),
         "modes_available": bridge.available_modes,
         "selection": bridge.selection,
+        "left_out": bridge.left_out,
         "check": {
             "solver": if check.dense { "dense inverted reduction" } else { "shift-invert Lanczos" },
             "largest_energy_residual": check.largest_residual,

@@ -9,9 +9,11 @@ use super::fe_import::modal::ImportedShapes;
 use super::hermite::HermiteField;
 use super::plate::PlateModes;
 use super::{
-    BridgeError, CUT_OFF_TOLERANCE, ModalBridge, ModeRequest, Shapes, beam_3d, eigen, fe_import,
+    BridgeError, CUT_OFF_TOLERANCE, ModalBridge, ModeRequest, Shapes, UnexcitedMode, beam_3d,
+    eigen, fe_import,
 };
 use crate::scene::Bridge;
+use faer::Mat;
 
 /// (2π f)², rad²/s².
 pub(super) fn eigenvalue_of(frequency: f64) -> f64 {
@@ -94,8 +96,24 @@ impl ModalBridge {
         request: ModeRequest,
         cache: Option<&std::path::Path>,
     ) -> Result<Self, BridgeError> {
+        Self::build_excited(bridge, request, cache, None)
+    }
+
+    /// [`ModalBridge::build_cached`] for a scene whose loads are
+    /// `loads`: an imported model's modes that those loads cannot
+    /// move ([`fe_import::excited`]) are left out, and a count means modes
+    /// kept, so the solve goes on until it has that many the scene moves
+    /// (each left out listed in [`ModalBridge::left_out`]). `None`: every
+    /// mode is kept (a bridge without its vehicles, `vbi modes`). Beams and
+    /// plates keep every mode either way.
+    pub fn build_excited(
+        bridge: &Bridge,
+        request: ModeRequest,
+        cache: Option<&std::path::Path>,
+        loads: Option<fe_import::excited::SceneLoads>,
+    ) -> Result<Self, BridgeError> {
         let ModeRequest::LowestUpTo(count, max_frequency) = request else {
-            return Self::build_counted(bridge, request, cache);
+            return Self::build_counted(bridge, request, cache, loads);
         };
         let available = Self::available_of(bridge);
         if count > available {
@@ -109,7 +127,7 @@ impl ModalBridge {
         // plus one in case it rounds a mode at the cut-off away).
         let counted = Self::count_up_to(bridge, max_frequency)?.map_or(count, |c| c + 1);
         let solved = count.min(counted).max(1);
-        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache)?;
+        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache, loads)?;
         let within = modal
             .frequencies()
             .iter()
@@ -122,7 +140,7 @@ impl ModalBridge {
             });
         }
         if within < solved {
-            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache)?;
+            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache, loads)?;
         }
         modal.selection = format!("requested: the lowest {count} modes, up to {max_frequency} Hz");
         Ok(modal)
@@ -134,6 +152,7 @@ impl ModalBridge {
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        loads: Option<fe_import::excited::SceneLoads>,
     ) -> Result<Self, BridgeError> {
         let selection = match request {
             ModeRequest::Lowest(n) => format!("requested: the lowest {n} modes"),
@@ -154,6 +173,7 @@ impl ModalBridge {
         let available = Self::available_of(bridge);
         let mut from_cache = None;
         let mut cache_rejected = None;
+        let mut left_out = Vec::new();
         let (omegas, shapes, check) = match bridge {
             Bridge::Beam(beam) => {
                 let model = BeamModel::new(beam)?;
@@ -263,23 +283,66 @@ impl ModalBridge {
                     |g| pencil.count_below(eigenvalue_of(g)),
                     || Ok(pencil.lowest(1)?.eigenvalues[0].sqrt() / (2.0 * PI)),
                 )?;
-                let modes = match cache {
+                let solve = |count: usize| match cache {
                     Some(folder) => {
                         let cache = eigen::cache::ModesCache {
                             folder: folder.to_path_buf(),
                             kind: "fe_import".into(),
                         };
                         let (modes, outcome) = pencil.lowest_cached(count, &cache)?;
-                        from_cache = Some(outcome == eigen::cache::CacheOutcome::Hit);
-                        if let eigen::cache::CacheOutcome::Rejected(why) = outcome {
-                            cache_rejected = Some(why);
-                        }
-                        modes
+                        Ok((modes, Some(outcome)))
                     }
-                    None => pencil.lowest(count)?,
+                    None => Ok::<_, BridgeError>((pencil.lowest(count)?, None)),
                 };
-                let omegas: Vec<f64> = modes.eigenvalues.iter().map(|l| l.sqrt()).collect();
-                let shapes = ImportedShapes::new(f.model.clone(), pencil, modes.vectors);
+                let (modes, outcome, kept) = match loads {
+                    None => {
+                        let (modes, outcome) = solve(count)?;
+                        let kept = (0..modes.eigenvalues.len()).collect();
+                        (modes, outcome, kept)
+                    }
+                    Some(loads) => {
+                        solve_excited(&f.model, request, count, available, loads, solve)?
+                    }
+                };
+                if let Some(outcome) = outcome {
+                    from_cache = Some(outcome == eigen::cache::CacheOutcome::Hit);
+                    if let eigen::cache::CacheOutcome::Rejected(why) = outcome {
+                        cache_rejected = Some(why);
+                    }
+                }
+                let solved = modes.eigenvalues.len();
+                let vectors = Mat::from_fn(modes.vectors.nrows(), kept.len(), |i, c| {
+                    modes.vectors[(i, kept[c])]
+                });
+                let omegas: Vec<f64> = kept.iter().map(|&c| modes.eigenvalues[c].sqrt()).collect();
+                if kept.len() < solved {
+                    let shares = fe_import::modal::energy_shares(&f.model, &pencil, &modes.vectors);
+                    let mut is_kept = vec![false; solved];
+                    for &c in &kept {
+                        is_kept[c] = true;
+                    }
+                    // Left out of the count: the unmoved modes below the
+                    // last kept one (those above were solved past it),
+                    // every one solved when the model has fewer moved
+                    // modes than the count asks for.
+                    let wanted = match request {
+                        ModeRequest::Lowest(n) | ModeRequest::AtLeastUpTo(n, _) => n,
+                        _ => 0,
+                    };
+                    let last = if kept.len() < wanted {
+                        solved
+                    } else {
+                        kept.last().map_or(0, |&c| c + 1)
+                    };
+                    left_out = (0..last)
+                        .filter(|&c| !is_kept[c])
+                        .map(|c| UnexcitedMode {
+                            frequency: modes.eigenvalues[c].sqrt() / (2.0 * PI),
+                            direction: fe_import::modal::dominant(&shares[c]).0.name(),
+                        })
+                        .collect();
+                }
+                let shapes = ImportedShapes::new(f.model.clone(), pencil, vectors);
                 (
                     omegas,
                     Shapes::Imported(std::sync::Arc::new(shapes)),
@@ -314,6 +377,7 @@ impl ModalBridge {
             modes_cache_rejected: cache_rejected,
             rails_flexibility: None,
             acceleration_filter: None,
+            left_out,
             contact_flexibility: None,
             shapes,
         })
@@ -382,5 +446,120 @@ pub(super) fn select_count(
             let below = count_below(f * (1.0 + CUT_OFF_TOLERANCE))?;
             Ok(below.max(n.min(available)).max(1))
         }
+    }
+}
+
+/// The modes of an imported model a request keeps among those the scene
+/// moves ([`fe_import::excited::excited_modes`]): `count` (the request's
+/// own count, [`select_count`]) solved first; a request with a count
+/// ([`ModeRequest::Lowest`], [`ModeRequest::AtLeastUpTo`]) solves more,
+/// doubling what is missing each time, until it keeps that many moved
+/// modes or the model has no more; a solve that went past the last kept
+/// mode is repeated for exactly the modes up to it. Returns the solve, its
+/// cache outcome and the kept columns, ascending; every solved mode when
+/// the scene moves none (nothing to choose by).
+fn solve_excited(
+    model: &crate::scene::imported::ImportedModel,
+    request: ModeRequest,
+    count: usize,
+    available: usize,
+    loads: fe_import::excited::SceneLoads,
+    solve: impl Fn(
+        usize,
+    ) -> Result<(eigen::Eigenpairs, Option<eigen::cache::CacheOutcome>), BridgeError>,
+) -> Result<
+    (
+        eigen::Eigenpairs,
+        Option<eigen::cache::CacheOutcome>,
+        Vec<usize>,
+    ),
+    BridgeError,
+> {
+    let wanted = match request {
+        ModeRequest::Lowest(n) | ModeRequest::AtLeastUpTo(n, _) => n,
+        ModeRequest::UpTo(_) | ModeRequest::LowestUpTo(..) => 0,
+    };
+    let mut solved = count;
+    let mut settled = false;
+    loop {
+        let (modes, outcome) = solve(solved)?;
+        let moved: Vec<usize> = fe_import::excited::excited_modes(model, &modes.vectors, loads)
+            .iter()
+            .enumerate()
+            .filter_map(|(c, &m)| m.then_some(c))
+            .collect();
+        if !settled && moved.len() < wanted && solved < available {
+            solved = (solved + 2 * (wanted - moved.len())).min(available);
+            continue;
+        }
+        if moved.is_empty() {
+            let all = (0..modes.eigenvalues.len()).collect();
+            return Ok((modes, outcome, all));
+        }
+        // Beyond the count: only what a cut-off of the request keeps.
+        let limit = match request {
+            ModeRequest::AtLeastUpTo(_, f) => eigenvalue_of(f * (1.0 + CUT_OFF_TOLERANCE)),
+            _ => f64::NEG_INFINITY,
+        };
+        let kept = match request {
+            ModeRequest::UpTo(_) | ModeRequest::LowestUpTo(..) => moved,
+            _ => moved
+                .into_iter()
+                .enumerate()
+                .filter(|&(rank, c)| rank < wanted || modes.eigenvalues[c] <= limit)
+                .map(|(_, c)| c)
+                .collect(),
+        };
+        // Solved past the last kept mode (a count grown, a cut-off's
+        // top modes unmoved): solve again for exactly the modes up to
+        // it, so that every route to these modes — the automatic choice,
+        // and the count and cut-off it writes back — ends in the same
+        // solve, bit for bit.
+        let last = kept.last().map_or(0, |&c| c + 1);
+        if !settled && last < solved && kept.len() >= wanted {
+            solved = last;
+            settled = true;
+            continue;
+        }
+        return Ok((modes, outcome, kept));
+    }
+}
+
+impl ModalBridge {
+    /// The left-out modes in words, for the selection's reason: how many of
+    /// each direction and their frequency range; `None` when none was.
+    pub fn left_out_reason(&self) -> Option<String> {
+        if self.left_out.is_empty() {
+            return None;
+        }
+        let mut groups: Vec<(&str, usize, f64, f64)> = Vec::new();
+        for mode in &self.left_out {
+            match groups.iter_mut().find(|g| g.0 == mode.direction) {
+                Some(g) => {
+                    g.1 += 1;
+                    g.2 = g.2.min(mode.frequency);
+                    g.3 = g.3.max(mode.frequency);
+                }
+                None => groups.push((mode.direction, 1, mode.frequency, mode.frequency)),
+            }
+        }
+        let listed: Vec<String> = groups
+            .iter()
+            .map(|&(direction, n, low, high)| {
+                if n == 1 {
+                    format!("1 {direction} at {low:.2} Hz")
+                } else {
+                    format!("{n} {direction} at {low:.2}–{high:.2} Hz")
+                }
+            })
+            .collect();
+        Some(format!(
+            "; {} modes left out of them and of the count ({}): the scene cannot move them \
+             (at the rails the vehicles load they move less than {:e} of their largest motion, \
+             and no ground motion drives them)",
+            self.left_out.len(),
+            listed.join(", "),
+            fe_import::excited::UNEXCITED_SHARE
+        ))
     }
 }

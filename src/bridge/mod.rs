@@ -133,11 +133,28 @@ pub struct ModalBridge {
     /// the bridge has modes there: the filter and how many modes lie up to
     /// it (a Sturm count; [`crate::report::advice`] warns).
     pub acceleration_filter: Option<AccelerationFilter>,
+    /// Modes an imported bridge's solve found that nothing in the scene
+    /// moves (no motion at the loaded rails, no ground participation:
+    /// [`fe_import::excited`]), left out of the kept ones and of `count`;
+    /// empty for beams, plates and a solve without the scene's loads.
+    pub left_out: Vec<UnexcitedMode>,
     /// The static flexibility between contact points, for the contact
     /// static correction ([`ModalBridge::prepare_contact_correction`]).
     contact_flexibility: Option<std::sync::Arc<Flexibility>>,
     /// The mode shapes of the bridge type.
     shapes: Shapes,
+}
+
+/// A mode an imported bridge's solve left out because the scene cannot
+/// move it ([`ModalBridge::left_out`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct UnexcitedMode {
+    /// Its natural frequency, Hz.
+    pub frequency: f64,
+    /// The direction it moves in, by its kinetic energy
+    /// ([`fe_import::modal::ModeDirection`]): `axial`, `lateral`,
+    /// `vertical` or `torsion`.
+    pub direction: &'static str,
 }
 
 /// What the kept modes of an imported track leave out of the rails' static

@@ -80,8 +80,11 @@ pub(crate) fn plan(
     }
 
     let cache = options.modes_cache.as_deref();
+    // Modes of an imported model that nothing in the scene moves are left
+    // out of the kept ones and of `count` (issue 40.6).
+    let loads = content::scene_loads(&vehicles, &ground_motion, gravity);
     let build = |request| {
-        ModalBridge::build_cached(&bridge, request, cache).map_err(|e| {
+        ModalBridge::build_excited(&bridge, request, cache, Some(loads)).map_err(|e| {
             let path = match e {
                 BridgeError::TooManyModes { .. } => "bridge.modes.count",
                 BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",
@@ -383,6 +386,9 @@ pub(crate) fn plan(
         // away, the cut-off says why ([`ModalBridge::build_cached`]).
         bridge.modes_mut().count = Some(modal.mode_count());
         bridge.modes_mut().max_frequency = Some(cutoff);
+    }
+    if let Some(reason) = modal.left_out_reason() {
+        modal.selection.push_str(&reason);
     }
     // The modes kept, however chosen (a high `max_frequency` keeps many).
     let modes_path = if ck.has("bridge.modes") {

@@ -26,6 +26,30 @@ pub use crate::scene::automatic::{
     STEPS_PER_PERIOD,
 };
 
+/// Where a scene loads an imported bridge, for leaving out the modes it
+/// cannot move (issue 40.6, [`crate::bridge::fe_import::excited`]): the
+/// rails vertically always, sideways where a vehicle has a lateral contact
+/// (a `train_3d`'s wheelsets), and the ground's inertia in each direction
+/// a ground-motion record acts.
+pub fn scene_loads(
+    vehicles: &[Vehicle],
+    ground_motion: &[crate::scene::GroundMotion],
+    gravity: f64,
+) -> crate::bridge::fe_import::excited::SceneLoads {
+    use crate::contact::ContactDirection;
+    let has = |d| ground_motion.iter().any(|g| g.direction == d);
+    crate::bridge::fe_import::excited::SceneLoads {
+        lateral_rails: vehicles.iter().any(|vehicle| {
+            VehicleModel::build(vehicle, gravity)
+                .wheels
+                .iter()
+                .any(|wheel| wheel.direction == ContactDirection::Lateral)
+        }),
+        vertical_ground: has(crate::scene::Direction::Vertical),
+        lateral_ground: has(crate::scene::Direction::Lateral),
+    }
+}
+
 /// Whether a wheel's own mass (the mass on its contact DOF: an oscillator's
 /// unsprung mass, a rail car's wheelset; 0 for the truck's massless tyre
 /// contact points and for moving forces) exceeds [`HEAVY_WHEEL_RATIO`] of

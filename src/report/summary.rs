@@ -129,6 +129,12 @@ pub struct RunInfo {
     /// the order of `frequencies`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mode_directions: Option<Vec<String>>,
+    /// On an imported model: the modes the solve found that nothing in the
+    /// scene moves (still at the loaded rails, no ground participation),
+    /// left out of `frequencies` and of the count (issue 40.6), each with
+    /// its frequency (Hz) and direction.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub modes_left_out: Vec<crate::bridge::UnexcitedMode>,
     /// How the DAF's static reference is computed.
     pub static_reference: &'static str,
     /// `iterative` solver: vehicle–bridge iterations per time step.
@@ -373,6 +379,7 @@ impl Summary {
                         .map(|i| model.bridge.mode_character(i))
                         .collect()
                 }),
+                modes_left_out: model.bridge.left_out.clone(),
                 static_reference: if model.bridge.width().is_some() {
                     STATIC_REFERENCE_PLATE
                 } else {

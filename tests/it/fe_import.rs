@@ -781,9 +781,33 @@ fn automatic_modes_keep_the_rails_flexibility_under_wheels_with_mass() {
         .expect("the plan measured the share");
     assert!(measured.limited && measured.static_correction && measured.every_node);
     assert_eq!(measured.left_out, share);
-    // A typical rail point keeps more of its flexibility than the most
-    // flexible one, which sets the rule.
-    assert!(measured.typical_left_out <= share, "{measured:?}");
+    // The typical share is the median over the rail nodes of R(c, c) /
+    // G(c, c), recomputed here (to 1e-10: the plan's G comes from its own
+    // solves with K's factor, 3e-12 apart measured). (It is not ordered with the rule's
+    // max R / max G: with the 26 lateral modes that keep the rails still
+    // no longer taking slots, issue 40.6, the 400 kept modes carry more
+    // of the free rail ends' flexibility, and the median, 10.73 %, is now
+    // above the rule's 10.69 %.)
+    let mut values = vec![0.0; bridge.mode_count()];
+    let mut ratios: Vec<f64> = sample_points(&bridge, 2, false)
+        .into_iter()
+        .map(|point| {
+            let full = bridge.static_flexibility(point, point).unwrap();
+            bridge.contact_mode_values_in(point.0, point.1, point.2, &mut values);
+            let modal: f64 = values
+                .iter()
+                .zip(&bridge.circular_frequencies)
+                .map(|(v, w)| v * v / (w * w))
+                .sum();
+            ((full - modal) / full).clamp(0.0, 1.0)
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    let median = ratios[ratios.len() / 2];
+    assert!(
+        (measured.typical_left_out - median).abs() <= 1e-10,
+        "{measured:?} against the median {median}"
+    );
     // The shares fall with every mode added (each adds φ²/ω² ≥ 0).
     assert!(shares.windows(2).all(|w| w[1] <= w[0] + 1e-15));
     let printed = format!("{:.1} %", 100.0 * (1.0 - share));

@@ -716,7 +716,13 @@ fn imported_modes_are_named_by_their_kinetic_energy() {
     let yaml = import_scene("  axes: y_up\n")
         .replace("modes: {max_frequency: 150.0}", "modes: {count: 36}");
     let loaded = load_in(scratch.dir(), &yaml).unwrap_or_else(|e| panic!("{e}"));
+    // Every mode, none left out (the plan leaves the axial ones out: a
+    // vertical wheel does no work on them; checked below).
     let bridge = vbi::bridge::ModalBridge::build(&loaded.scenario.bridge).unwrap();
+    let planned = &loaded.bridge;
+    assert_eq!(planned.mode_count(), 24, "{}", planned.selection);
+    assert_eq!(planned.left_out.len(), 12, "{}", planned.selection);
+    assert!(planned.left_out.iter().all(|m| m.direction == "axial"));
     let names: Vec<String> = (0..bridge.mode_count())
         .map(|i| bridge.mode_character(i))
         .collect();
@@ -758,6 +764,24 @@ fn imported_modes_are_named_by_their_kinetic_energy() {
         table.contains("direction (kinetic energy share)"),
         "{table}"
     );
-    assert!(table.contains("  axial 1 (100.0 %)"), "{table}");
     assert!(table.contains("  vertical 24 (100.0 %)"), "{table}");
+    assert!(!table.contains("  axial 1 (100.0 %)"), "{table}");
+    // The axial modes the plan left out are listed after the kept ones,
+    // the first at the bar's frequency.
+    let (_, left) = table
+        .split_once("left out (nothing in the scene moves them):\n")
+        .expect("the left-out modes listed");
+    assert_eq!(
+        left.lines().filter(|l| l.ends_with("  axial")).count(),
+        12,
+        "{table}"
+    );
+    assert!(
+        left.contains(&format!("{:.6}", omega / (2.0 * PI))),
+        "{table}"
+    );
+    assert!(
+        table.contains("12 modes left out of them and of the count (12 axial at"),
+        "{table}"
+    );
 }

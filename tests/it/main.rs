@@ -48,6 +48,7 @@ mod lsp;
 mod many_modes;
 mod merge_memory;
 mod modes_cache;
+mod modes_left_out;
 mod monte_carlo;
 mod moreau_jean;
 mod multi_wheel;
