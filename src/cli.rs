@@ -203,7 +203,7 @@ pub(super) enum Command {
     /// stores a compact record of their results in the store folder,
     /// `check` re-runs them and compares (exit 0 all pass, 1 a result or
     /// scene changed, 2 a scene could not run or has no record). Tolerances:
-    /// `regress.yaml` in the store (see the README, "Regression").
+    /// `regress.yaml` in the store (see docs/guide/regression.md).
     Regress {
         #[command(subcommand)]
         action: Regress,

@@ -35,7 +35,7 @@ impl Drop for Scratch {
     }
 }
 
-/// The check's exit status when it fails (README, "Exit codes").
+/// The check's exit status when it fails (docs/guide/commands.md, "Exit codes").
 const EXIT_CHECK_FAILED: i32 = 3;
 
 fn vbi(args: &[&str], cwd: &Path) -> Output {
