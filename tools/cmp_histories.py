@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""cmp.py REF RUN [RUN...]: per column, max |run - ref| / max |ref| (%) on the run's times
+"""tools/cmp_histories.py REF RUN [RUN...]: per column, max |run - ref| / max |ref| (%) on the run's times
 (the reference interpolated linearly; its step divides the run's)."""
 import sys, csv
 def load(p):
