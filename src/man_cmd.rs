@@ -220,7 +220,8 @@ fn render(cmd: &clap::Command, parent: Option<&str>) -> std::io::Result<Page> {
         .get_display_name()
         .unwrap_or_else(|| cmd.get_name())
         .to_string();
-    let man = clap_mangen::Man::new(cmd.clone()).source(format!("vbi {}", env!("CARGO_PKG_VERSION")));
+    let man =
+        clap_mangen::Man::new(cmd.clone()).source(format!("vbi {}", env!("CARGO_PKG_VERSION")));
     let mut out = Vec::new();
     man.render_title(&mut out)?;
     man.render_name_section(&mut out)?;
@@ -259,7 +260,10 @@ fn render(cmd: &clap::Command, parent: Option<&str>) -> std::io::Result<Page> {
     see.retain(|p| *p != name && seen.insert(p.clone()));
     if !see.is_empty() {
         roff.push_str(".SH \"SEE ALSO\"\n");
-        let refs: Vec<String> = see.iter().map(|p| format!("\\fB{}\\fR(1)", roff_text(p))).collect();
+        let refs: Vec<String> = see
+            .iter()
+            .map(|p| format!("\\fB{}\\fR(1)", roff_text(p)))
+            .collect();
         roff.push_str(&refs.join(", "));
         roff.push('\n');
     }
@@ -273,7 +277,11 @@ fn render(cmd: &clap::Command, parent: Option<&str>) -> std::io::Result<Page> {
 
 /// Every page: vbi(1) first, then each subcommand's (depth first).
 fn pages() -> std::io::Result<Vec<Page>> {
-    fn walk(cmd: &clap::Command, parent: Option<&str>, pages: &mut Vec<Page>) -> std::io::Result<()> {
+    fn walk(
+        cmd: &clap::Command,
+        parent: Option<&str>,
+        pages: &mut Vec<Page>,
+    ) -> std::io::Result<()> {
         let page = render(cmd, parent)?;
         let name = page.name.clone();
         pages.push(page);
