@@ -181,8 +181,16 @@ pub(super) enum Command {
         /// The shell.
         shell: clap_complete::Shell,
     },
-    /// Print the manual page (roff): `vbi man > ~/.local/share/man/man1/vbi.1`.
-    Man,
+    /// Print a manual page (roff), or write every page: `vbi man --dir
+    /// ~/.local/share/man/man1` (vbi.1, vbi-run.1, …), then `man vbi-run`.
+    Man {
+        /// The page to print: a subcommand (`run`, `regress-check`) or a
+        /// page name (`vbi-run`). Default: vbi(1).
+        page: Option<String>,
+        /// Write every page (one per command, `<page>.1`) into DIR instead.
+        #[arg(long, value_name = "DIR", conflicts_with = "page")]
+        dir: Option<PathBuf>,
+    },
     /// Write a commented starter scene (and the schema beside it, for the
     /// editor) that `vbi check` accepts and `vbi run` runs.
     Init {
@@ -203,7 +211,7 @@ pub(super) enum Command {
     /// stores a compact record of their results in the store folder,
     /// `check` re-runs them and compares (exit 0 all pass, 1 a result or
     /// scene changed, 2 a scene could not run or has no record). Tolerances:
-    /// `regress.yaml` in the store (see the README, "Regression").
+    /// `regress.yaml` in the store (see docs/guide/regression.md).
     Regress {
         #[command(subcommand)]
         action: Regress,

@@ -1,5 +1,7 @@
 //! The `vbi` command line: parses arguments, calls the library, prints, and
-//! maps errors to exit codes (0 success, 1 a run failed, 2 invalid input).
+//! maps errors to exit codes (0 success, 1 a run failed, 2 invalid input, 3 a
+//! check fails, 4 a warning denied; each command's in its manual page,
+//! `man_cmd`).
 //!
 //! Streams follow the usual convention: stdout carries what a command
 //! produces (the schema, `check`'s verdicts, the modes table, mode shapes
@@ -196,6 +198,7 @@ mod cli;
 mod converge_cmd;
 mod generate_cmd;
 mod init_cmd;
+mod man_cmd;
 mod modes_cmd;
 mod regress_cmd;
 mod run_cmd;
@@ -284,19 +287,7 @@ fn main() -> ExitCode {
             file,
             force,
         } => init(bridge, vehicle, &file, force),
-        Command::Man => {
-            let mut page = Vec::new();
-            match clap_mangen::Man::new(Cli::command()).render(&mut page) {
-                Ok(()) => {
-                    out!("{}", String::from_utf8_lossy(&page));
-                    ExitCode::SUCCESS
-                }
-                Err(e) => {
-                    errln!("error: could not render the manual page: {e}");
-                    ExitCode::from(EXIT_FAILED)
-                }
-            }
-        }
+        Command::Man { page, dir } => man_cmd::man(page.as_deref(), dir.as_deref()),
         Command::Export { what: _, file, out } => match load(&file) {
             Ok(loaded) => match vbi::export::export_beam(&loaded.scenario, &out) {
                 Ok(()) => {

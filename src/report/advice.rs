@@ -50,7 +50,7 @@ pub fn run_advice(scenario: &Scenario, summary: &Summary) -> Vec<Advice> {
 /// An imported track whose free rail end takes the whole load at once
 /// (`entry_length: 0`): the step rings track modes above the automatic
 /// cut (measured on scenarios/viaduct-2span-axle-loads.yaml with the
-/// entry removed; README, "Imported FE models").
+/// entry removed; docs/guide/imports.md).
 fn unverified_entry(scenario: &Scenario, summary: &Summary) -> Option<Advice> {
     let crate::scene::Bridge::FeImport(fe) = &scenario.bridge else {
         return None;
@@ -370,7 +370,7 @@ fn ground_motion_after_the_run(scenario: &Scenario, summary: &Summary) -> Vec<Ad
 /// A contact force whose largest value is the entrance's kick: a vertical
 /// harmonic surface r = a·sin(2πx/λ + φ) starts at the entrance at
 /// r(0) = a·sin φ above the flat approach, with slope r′(0) = (2πa/λ)·cos φ
-/// (README, "Surface"), so each wheel meets a step in elevation, in slope,
+/// (docs/guide/conventions.md, "Surface"), so each wheel meets a step in elevation, in slope,
 /// or both, as it enters: an impact under rigid contact, a spike under
 /// elastic contact. Said when a `contact_force` record peaks within the
 /// first tenth of a wavelength past the entrance. Measured on a 300 kg

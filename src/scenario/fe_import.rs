@@ -35,8 +35,8 @@ const MIN_ENTRY_BYTES: f64 = 10.0;
 /// a continuous rail on ballasted track already bends under it (the first
 /// zero of its deflection line, 1.7–2.1 m: `crate::bridge::fe_import::entry`),
 /// and long enough that the ramp rings no track mode above the automatic
-/// cut-off: measured on scenarios/viaduct-2span (issue 24.4; README,
-/// "Imported FE models").
+/// cut-off: measured on scenarios/viaduct-2span (issue 24.4;
+/// docs/guide/imports.md).
 pub const DEFAULT_ENTRY_LENGTH: f64 = 3.0;
 
 /// Resolves the `fe_import` bridge; `None` after reporting its problems.

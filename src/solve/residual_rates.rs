@@ -11,13 +11,13 @@ use super::newmark::Newmark;
 /// imported track's entry ramps, where R falls as the load weight's
 /// square): undamped there, the trapezoidal rule (ρ∞ = 1) gained energy
 /// from the changing R and the contact forces diverged at the exit ramp of
-/// the EMBS golden viaduct (8,000 % on the wheel force, notes/embs/NOTES.md).
+/// the EMBS golden viaduct (8,000 % on the wheel force; docs/methods.md, "Why WBZ-α").
 /// 0.8 damps what the step cannot resolve (ω_rΔt → ∞) about as Newmark's
 /// γ = 0.6 did there (ρ∞ ≈ 0.82), but keeps second order; it damps less
 /// than γ = 0.6 at ω_rΔt ~ 1–10, as on the exit ramp, where that first-order
 /// scheme's ξ ≈ (γ − ½)ωΔt/2 acted (measured on the EMBS golden scene at 564
 /// modes: wheel force 22 % against 8.6 % with γ = 0.6 off the converged
-/// answer there, notes/embs/NOTES.md). The ramps no longer rely on it: the
+/// answer there; docs/methods.md, "Why WBZ-α"). The ramps no longer rely on it: the
 /// wheel rides s's rates only where ω_r lies below the kept band
 /// ([`residual_coupling`]: 4.2 % there).
 const RESIDUAL_RHO_INFINITY: f64 = 0.8;
@@ -176,14 +176,14 @@ impl ResidualRates {
 /// wheel on them would oscillate below ω_{N+1}, not at ω_r on a massless
 /// spring; and on an imported track's exit ramp R falls as the load
 /// weight's square, ω_r → ∞ and the wheel, rung on a stiffening spring the
-/// step cannot resolve, pumps (notes/embs/NOTES.md, EMBS3/EMBS4). There
+/// step cannot resolve, pumps (docs/methods.md, "Why the weight"). There
 /// the quasi-static limit (c = 0: a mass on an infinitely stiff spring
 /// follows it) is the right one. A smooth cut between the two,
 /// c = y⁸/(1 + y⁸) with y = (ω_N/ω_r)² = ω_N² m R, i.e. 1/(1 + (ω_r/ω_N)¹⁶):
 /// ½ at ω_r = ω_N, 0.97 at 0.8 ω_N, 0.05 at 1.2 ω_N; c → 1 as the kept band
 /// grows past ω_r (R → 0 there anyway). Measured on the EMBS viaduct at
-/// its automatic 564 modes against 1,128 modes and Δt/4 (notes/embs/NOTES.md,
-/// EMBS4): the sharper cut (power 16) beat power 8 (contact forces 4.2 % and
+/// its automatic 564 modes against 1,128 modes and Δt/4 (docs/methods.md,
+/// "Why the weight"): the sharper cut (power 16) beat power 8 (contact forces 4.2 % and
 /// 4.1 % against 3.5 % and 4.2 %, but deck acceleration 2.5 % against 3.3 %,
 /// rail lateral acceleration 5.3 % against 5.6 %); c = 1 everywhere left the
 /// exit ramp's 22 % / 15 %, c = 0 (no residual inertia) the deck

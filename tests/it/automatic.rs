@@ -3,6 +3,7 @@
 
 use crate::support;
 
+use support::max_abs;
 use support::reference as exact;
 use vbi::plan::load_str;
 use vbi::run::{Outcome, simulate};
@@ -42,7 +43,6 @@ fn peak(outcome: &Outcome, name: &str) -> f64 {
 fn automatic_modes_keep_yang_yau_within_half_a_percent() {
     let case = exact::yang_yau_1997();
     let reference = exact::sprung_mass_reference(&case, 40, 5e-6, case.crossing_time());
-    let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let deflection = max_abs(&reference.midspan_deflection);
     let acceleration = max_abs(&reference.vehicle_acceleration);
     let generous = run(&yang_yau(", modes: {count: 40}", ", time_step: 1.0e-4"));

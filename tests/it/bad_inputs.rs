@@ -2,8 +2,11 @@
 //! every command with exit code 2, a located `FILE:LINE:COL: message`, a
 //! source excerpt with a caret, no panic, and no output left behind.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::ffi::OsStr;
+use std::path::PathBuf;
+
+use crate::support::{Scratch, manifest_dir, text, vbi};
+use std::process::Output;
 
 /// One broken file and what its diagnostic must say.
 struct Case {
@@ -258,58 +261,8 @@ const CASES: &[Case] = &[
     ),
 ];
 
-fn manifest_dir() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
 fn bad_dir() -> PathBuf {
     manifest_dir().join("tests").join("bad")
-}
-
-/// A scratch folder under the system temp dir, unique per process and test,
-/// removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(test: &str) -> Self {
-        let dir =
-            std::env::temp_dir().join(format!("vbi-bad-inputs-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-
-    fn entries(&self) -> Vec<String> {
-        let mut names: Vec<String> = std::fs::read_dir(&self.0)
-            .expect("read scratch dir")
-            .map(|e| {
-                e.expect("dir entry")
-                    .file_name()
-                    .to_string_lossy()
-                    .into_owned()
-            })
-            .collect();
-        names.sort();
-        names
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-fn vbi(args: &[&std::ffi::OsStr], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
 }
 
 /// Number of diagnostics: lines that start with `error: `.
@@ -384,7 +337,7 @@ fn check_rejects_each_bad_file_with_a_located_error() {
     for case in CASES {
         // Relative path, as a user would type it from the project root.
         let rel = format!("tests/bad/{}", case.file);
-        let out = vbi(&["check".as_ref(), rel.as_ref()], manifest_dir());
+        let out = vbi::<&OsStr>(&["check".as_ref(), rel.as_ref()], manifest_dir());
         problems.extend(judge(case, "check", &rel, &out));
         if !out.stdout.is_empty() {
             problems.push(format!("{} [check]: printed on stdout", case.file));
@@ -397,19 +350,22 @@ fn check_rejects_each_bad_file_with_a_located_error() {
 fn run_rejects_each_bad_file_and_writes_nothing() {
     let mut problems = Vec::new();
     for case in CASES {
-        let scratch = Scratch::new(&format!("run-{}", case.file.trim_end_matches(".yaml")));
+        let scratch = Scratch::new(
+            "bad-inputs",
+            &format!("run-{}", case.file.trim_end_matches(".yaml")),
+        );
         let path = bad_dir().join(case.file);
-        let out_dir = scratch.0.join("out");
+        let out_dir = scratch.path("out");
         // The scratch dir is also the working directory, so a default
         // `results/` folder would show up too.
-        let out = vbi(
+        let out = vbi::<&OsStr>(
             &[
                 "run".as_ref(),
                 path.as_os_str(),
                 "--out".as_ref(),
                 out_dir.as_os_str(),
             ],
-            &scratch.0,
+            scratch.dir(),
         );
         problems.extend(judge(case, "run", &path.display().to_string(), &out));
         let left = scratch.entries();
@@ -426,17 +382,20 @@ fn modes_rejects_each_bad_file_and_writes_no_shapes() {
     // `vbi modes` needs only the bridge: a file without vehicles is valid
     // there (tests/it/cli.rs, `modes_works_without_vehicles`).
     for case in CASES.iter().filter(|c| c.file != "missing-vehicles.yaml") {
-        let scratch = Scratch::new(&format!("modes-{}", case.file.trim_end_matches(".yaml")));
+        let scratch = Scratch::new(
+            "bad-inputs",
+            &format!("modes-{}", case.file.trim_end_matches(".yaml")),
+        );
         let path = bad_dir().join(case.file);
-        let shapes = scratch.0.join("shapes.csv");
-        let out = vbi(
+        let shapes = scratch.path("shapes.csv");
+        let out = vbi::<&OsStr>(
             &[
                 "modes".as_ref(),
                 path.as_os_str(),
                 "--shapes".as_ref(),
                 shapes.as_os_str(),
             ],
-            &scratch.0,
+            scratch.dir(),
         );
         problems.extend(judge(case, "modes", &path.display().to_string(), &out));
         let left = scratch.entries();
@@ -453,7 +412,7 @@ fn check_reports_every_bad_file_among_several() {
     let bad1 = "tests/bad/negative-mass.yaml";
     let bad2 = "tests/bad/unknown-key-top-level.yaml";
     // The good file sits between the bad ones: checking goes on after an error.
-    let out = vbi(
+    let out = vbi::<&OsStr>(
         &[
             "check".as_ref(),
             bad1.as_ref(),
@@ -475,7 +434,7 @@ fn check_reports_every_bad_file_among_several() {
     assert!(!stderr.contains("panicked"), "{stderr}");
 
     // All good: exit 0, one `ok` per file.
-    let out = vbi(
+    let out = vbi::<&OsStr>(
         &["check".as_ref(), good.as_ref(), good.as_ref()],
         manifest_dir(),
     );
@@ -485,10 +444,10 @@ fn check_reports_every_bad_file_among_several() {
 
 #[test]
 fn missing_file_is_invalid_input_with_a_clear_message() {
-    let scratch = Scratch::new("missing-file");
+    let scratch = Scratch::new("bad-inputs", "missing-file");
     let missing = "tests/bad/no-such-scenario.yaml";
-    let out_dir = scratch.0.join("out");
-    let shapes = scratch.0.join("shapes.csv");
+    let out_dir = scratch.path("out");
+    let shapes = scratch.path("shapes.csv");
     let runs: [Vec<&std::ffi::OsStr>; 3] = [
         vec!["check".as_ref(), missing.as_ref()],
         vec![
@@ -517,7 +476,7 @@ fn missing_file_is_invalid_input_with_a_clear_message() {
     assert!(scratch.entries().is_empty());
 
     // A folder is not a scenario file either.
-    let out = vbi(&["check".as_ref(), "tests/bad".as_ref()], manifest_dir());
+    let out = vbi::<&OsStr>(&["check".as_ref(), "tests/bad".as_ref()], manifest_dir());
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).starts_with("error: tests/bad: cannot read: "));
 }
@@ -538,7 +497,7 @@ fn a_raised_acceleration_cut_off_is_blamed_for_the_steps() {
          max_frequency: 1e5}\n",
     )
     .unwrap();
-    let out = vbi(&["check".as_ref(), scene.as_os_str()], scratch.dir());
+    let out = vbi::<&OsStr>(&["check".as_ref(), scene.as_os_str()], scratch.dir());
     let stderr = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("acc.yaml:12:70: time steps"), "{stderr}");

@@ -814,3 +814,209 @@ fn copy_tree(from: &Path, to: &Path) {
         }
     }
 }
+
+/// `vbi man --dir DIR` writes one page per command (issue 41.7): every
+/// subcommand of `vbi --help` has its page, every page has an EXIT STATUS
+/// section, and every `name(1)` a page refers to (SUBCOMMANDS, SEE ALSO)
+/// is a page that was written. `vbi man` prints vbi(1) and `vbi man run`
+/// vbi-run(1), the same text as the files.
+#[test]
+fn man_pages_one_per_command_with_exit_status() {
+    let dir = Scratch::new("cli", "man-pages");
+    let pages = dir.path("man");
+    let wrote = vbi(
+        &["man".as_ref(), "--dir".as_ref(), pages.as_os_str()],
+        dir.dir(),
+    );
+    assert_exit(&wrote, 0);
+    let names: Vec<String> = file_names(&pages)
+        .into_iter()
+        .map(|f| f.strip_suffix(".1").expect("a section-1 page").to_string())
+        .collect();
+    let help = text(&vbi(&["--help"], dir.dir()).stdout);
+    let commands: Vec<&str> = help
+        .split("Commands:")
+        .nth(1)
+        .expect("a command list")
+        .split("Options:")
+        .next()
+        .unwrap()
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .collect();
+    assert!(commands.len() >= 13, "{commands:?}");
+    for command in &commands {
+        assert!(
+            names.contains(&format!("vbi-{command}")),
+            "no page for `vbi {command}`: {names:?}"
+        );
+    }
+    for nested in [
+        "vbi-regress-approve",
+        "vbi-regress-check",
+        "vbi-generate-viaduct",
+    ] {
+        assert!(names.contains(&nested.to_string()), "no page {nested}");
+    }
+    for name in &names {
+        let page = std::fs::read_to_string(pages.join(format!("{name}.1"))).unwrap();
+        assert!(page.contains(&format!(".TH {name} 1")), "{name}: no header");
+        let status = page
+            .split(".SH \"EXIT STATUS\"")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{name}: no EXIT STATUS section"));
+        assert!(status.contains("\\fB0\\fR"), "{name}: exit 0 not stated");
+        assert!(
+            status.contains("\\fB2\\fR"),
+            "{name}: usage errors not stated"
+        );
+        // Every reference `word(1)`, hyphens and fonts unescaped.
+        let plain = page
+            .replace("\\-", "-")
+            .replace("\\fB", "")
+            .replace("\\fR", "")
+            .replace("\\fI", "");
+        for (at, _) in plain.match_indices("(1)") {
+            let start = plain[..at]
+                .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+                .map_or(0, |i| i + 1);
+            let target = &plain[start..at];
+            assert!(
+                names.iter().any(|n| n == target),
+                "{name} refers to {target}(1), which is not a page"
+            );
+        }
+        if name != "vbi" {
+            assert!(plain.contains("SEE ALSO"), "{name}: no SEE ALSO");
+        }
+    }
+    let main = vbi(&["man"], dir.dir());
+    assert_exit(&main, 0);
+    assert_eq!(
+        text(&main.stdout),
+        std::fs::read_to_string(pages.join("vbi.1")).unwrap()
+    );
+    let run = vbi(&["man", "run"], dir.dir());
+    assert_exit(&run, 0);
+    assert_eq!(
+        text(&run.stdout),
+        std::fs::read_to_string(pages.join("vbi-run.1")).unwrap()
+    );
+    let none = vbi(&["man", "nonsense"], dir.dir());
+    assert_exit(&none, 2);
+    assert!(
+        text(&none.stderr).contains("vbi-run"),
+        "{}",
+        text(&none.stderr)
+    );
+}
+
+/// The README's first scene (its first ```yaml block, five lines) is what
+/// it says: `vbi check` accepts it without a warning and `vbi run` runs it
+/// (issue 41.7).
+#[test]
+fn the_readme_first_scene_runs() {
+    let readme = std::fs::read_to_string(manifest_dir().join("README.md")).unwrap();
+    let scene = readme
+        .split("```yaml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("a yaml block in the README");
+    assert_eq!(
+        scene.lines().count(),
+        5,
+        "a first scene in five lines:\n{scene}"
+    );
+    let dir = Scratch::new("cli", "readme-first");
+    let path = dir.path("first.yaml");
+    std::fs::write(&path, scene).unwrap();
+    let check = vbi(&["check".as_ref(), path.as_os_str()], dir.dir());
+    assert_exit(&check, 0);
+    assert!(
+        !text(&check.stderr).contains("warning"),
+        "{}",
+        text(&check.stderr)
+    );
+    let out = dir.path("out");
+    assert_exit(&run_quiet(&path, &out, dir.dir()), 0);
+    for file in [
+        "summary.json",
+        "history.csv",
+        "history.png",
+        "resolved.yaml",
+    ] {
+        assert!(out.join(file).is_file(), "{file} missing");
+    }
+}
+
+/// The front door (issue 41.7): README.md stays under 10 KB, and every
+/// relative link of the README, the guide, docs/methods.md, docs/cluster.md
+/// and BENCHMARKS.md names a file that exists and, with `#anchor`, a
+/// heading of that file (GitHub's slugs: lower case, spaces to `-`,
+/// punctuation dropped).
+#[test]
+fn front_door_links_resolve() {
+    let root = manifest_dir();
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    assert!(
+        readme.len() <= 10 * 1024,
+        "README.md is {} bytes",
+        readme.len()
+    );
+    let slug = |heading: &str| -> String {
+        heading
+            .trim()
+            .to_lowercase()
+            .chars()
+            .filter(|c| c.is_alphanumeric() || *c == '-' || *c == '_' || *c == ' ')
+            .map(|c| if c == ' ' { '-' } else { c })
+            .collect()
+    };
+    let mut files: Vec<PathBuf> = [
+        "README.md",
+        "BENCHMARKS.md",
+        "docs/methods.md",
+        "docs/cluster.md",
+    ]
+    .iter()
+    .map(|f| root.join(f))
+    .collect();
+    let guide = root.join("docs/guide");
+    files.extend(file_names(&guide).iter().map(|f| guide.join(f)));
+    assert!(files.len() > 15, "the guide has its topics");
+    let mut broken = Vec::new();
+    for file in &files {
+        let body = std::fs::read_to_string(file).unwrap();
+        // Links outside code blocks.
+        let prose: String = body.split("```").step_by(2).collect::<Vec<_>>().join("\n");
+        for (at, _) in prose.match_indices("](") {
+            let rest = &prose[at + 2..];
+            let link = &rest[..rest.find(')').unwrap_or(rest.len())];
+            if link.starts_with("http") || link.contains(' ') {
+                continue;
+            }
+            let (path, anchor) = link.split_once('#').unwrap_or((link, ""));
+            let target = if path.is_empty() {
+                file.clone()
+            } else {
+                file.parent().unwrap().join(path)
+            };
+            if !target.exists() {
+                broken.push(format!("{}: {link}", file.display()));
+                continue;
+            }
+            if !anchor.is_empty() && target.extension().is_some_and(|e| e == "md") {
+                let text = std::fs::read_to_string(&target).unwrap();
+                if !text
+                    .lines()
+                    .filter(|l| l.starts_with('#'))
+                    .any(|l| slug(l.trim_start_matches('#')) == anchor)
+                {
+                    broken.push(format!("{}: {link} (no such heading)", file.display()));
+                }
+            }
+        }
+    }
+    assert!(broken.is_empty(), "{}", broken.join("\n"));
+}

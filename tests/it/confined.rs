@@ -9,22 +9,10 @@ use std::process::Command;
 
 use crate::support;
 use support::Scratch;
+use support::vbi_streams as vbi;
 
 /// A secret outside every scene folder: no output may ever contain it.
 const CANARY: &str = "CANARY-SECRET-8a41f2";
-
-fn vbi(args: &[&str], cwd: &Path) -> (Option<i32>, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi");
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn scenarios() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios")

@@ -2,8 +2,7 @@
 //! the cheapest run within tolerance, failed runs, determinism, and the
 //! command line (files written, bad tolerance).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::support::{scratch_dir, vbi};
 
 use vbi::plan::{self, Loaded};
 use vbi::study::converge::{
@@ -345,24 +344,9 @@ fn the_table_is_deterministic_apart_from_wall_times() {
     assert_eq!(a, b);
 }
 
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("vbi-converge-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create scratch dir");
-    dir
-}
-
-fn vbi(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
-
 #[test]
 fn cli_writes_csv_and_png() {
-    let dir = scratch("cli");
+    let dir = scratch_dir("converge", "cli");
     std::fs::write(dir.join("scene.yaml"), smooth_scene(1.0e-3, "")).unwrap();
     let out = vbi(
         &[
@@ -422,7 +406,7 @@ fn cli_writes_csv_and_png() {
 
 #[test]
 fn cli_rejects_a_bad_tolerance() {
-    let dir = scratch("bad");
+    let dir = scratch_dir("converge", "bad");
     std::fs::write(dir.join("scene.yaml"), smooth_scene(1.0e-3, "")).unwrap();
     for bad in ["abc", "-1%", "0"] {
         let out = vbi(&["converge", "scene.yaml", "--tolerance", bad], &dir);
@@ -562,7 +546,7 @@ fn paste(scene: &str, block: &str) -> String {
 /// run of the study bit for bit (every recorded sample, compared by bits).
 #[test]
 fn printed_yaml_pasted_into_the_scene_reproduces_the_chosen_run() {
-    let dir = scratch("paste");
+    let dir = scratch_dir("converge", "paste");
     let scene = block_scene();
     std::fs::write(dir.join("scene.yaml"), &scene).unwrap();
     let out = vbi(

@@ -15,18 +15,11 @@ use std::path::{Path, PathBuf};
 
 use regex::Regex;
 
-use crate::support::{manifest_dir, text, vbi};
+use crate::support::{manifest_dir, scratch_dir, text, vbi};
 
 /// The one header style: a name (letters, digits, `_`, `.`, `-`), then
 /// optionally a space and the unit in brackets (`m`, `m/s^2`, `N*m`, `km/h`).
 const HEADER_FIELD: &str = r"^[A-Za-z0-9_.\-]+( \[[A-Za-z0-9*/^.]+\])?$";
-
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("vbi-csv-headers-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// Runs `vbi args` in the repository, accepting the exit codes `ok`.
 fn run(args: &[&str], ok: &[i32]) {
@@ -62,7 +55,7 @@ fn scene_with(dir: &Path, shipped: &str, extra: &str) -> String {
 
 #[test]
 fn every_csv_header_of_every_command_is_name_space_unit_in_brackets() {
-    let dir = scratch("style");
+    let dir = scratch_dir("csv-headers", "style");
     let out = |name: &str| dir.join(name).display().to_string();
     // A history (with static columns).
     run(
@@ -224,7 +217,7 @@ fn every_csv_header_of_every_command_is_name_space_unit_in_brackets() {
 /// `359`, and no output writes the float noise of the conversion.
 #[test]
 fn a_speed_given_in_km_h_comes_back_as_written_in_every_output() {
-    let dir = scratch("km_h");
+    let dir = scratch_dir("csv-headers", "km_h");
     // A Monte Carlo study over one speed given in km/h (a speed grid), and a
     // speed sweep over the same speed: both write speed [km/h] columns and
     // summary.json.

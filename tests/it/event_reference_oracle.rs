@@ -2,6 +2,7 @@
 #![allow(clippy::needless_range_loop)]
 use crate::support;
 use support::event_reference::*;
+use support::max_abs;
 
 const G: f64 = GRAVITY;
 
@@ -29,10 +30,6 @@ fn separating_case() -> TensionlessCase {
 
 fn grid(t_end: f64, n: usize) -> Vec<f64> {
     (0..=n).map(|i| t_end * i as f64 / n as f64).collect()
-}
-
-fn max_abs(v: impl IntoIterator<Item = f64>) -> f64 {
-    v.into_iter().fold(0.0, |m, x| m.max(x.abs()))
 }
 
 fn contact_events(ev: &[ContactEvent]) -> Vec<ContactEvent> {

@@ -8,44 +8,7 @@
 //! (j, i) in it are the same entry given twice. A `general` file lists both,
 //! and (i, j) twice is a duplicate.
 
-use std::path::Path;
-use std::process::{Command, Output};
-
-/// A scratch folder under the system temp dir, unique per process and
-/// test, removed on drop (tests/it/support's, without the reference models
-/// that module compiles and tests).
-struct Scratch(std::path::PathBuf);
-
-impl Scratch {
-    fn new(binary: &str, test: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-
-    fn dir(&self) -> &Path {
-        &self.0
-    }
-
-    fn path(&self, name: &str) -> std::path::PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
+use crate::support::{Scratch, vbi};
 
 const MM: &str = "%%MatrixMarket matrix coordinate real symmetric\n";
 const GENERAL: &str = "%%MatrixMarket matrix coordinate real general\n";

@@ -415,7 +415,7 @@ fn a_plain_export_in_dense_text_runs_as_the_beam() {
 }
 
 /// vbi's own axis names (uz up, ry = −∂w/∂x) with the supports' uz dropped
-/// from the files rather than listed under `constrained`: the README's
+/// from the files rather than listed under `constrained`: docs/guide/imports.md's
 /// promise, a rail node without its vertical DOF is a support. A rail node
 /// with no DOF at all in the map is still refused (a wrong id must not
 /// become a support).

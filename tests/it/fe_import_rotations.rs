@@ -11,60 +11,15 @@
 //! θ = −ry: its runs must equal the export's bit for bit once declared.
 
 use std::path::Path;
-use std::process::{Command, Output};
+
+use crate::support::{Scratch, assert_exit, vbi};
+use std::process::Output;
 
 use vbi::scenario::fe_import::{abaqus, harwell_boeing};
 use vbi::scene::imported::Direction;
 
-/// A scratch folder under the system temp dir, unique per process and
-/// test, removed on drop (tests/it/support's, without the reference models
-/// that module compiles and tests).
-struct Scratch(std::path::PathBuf);
-
-impl Scratch {
-    fn new(binary: &str, test: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-
-    fn dir(&self) -> &Path {
-        &self.0
-    }
-
-    fn path(&self, name: &str) -> std::path::PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
-
 fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
-}
-
-fn assert_exit(out: &Output, code: i32) {
-    assert_eq!(
-        out.status.code(),
-        Some(code),
-        "stdout:\n{}\nstderr:\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        stderr(out)
-    );
-    assert!(!stderr(out).contains("panicked"));
 }
 
 /// A 20 m simply supported beam (the LCP paper's Fig. 4 bridge, 10

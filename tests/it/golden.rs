@@ -30,6 +30,8 @@
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
+
+use crate::support::max_abs_finite;
 use vbi::execute::Results;
 use vbi::record::History;
 use vbi::run::Outcome;
@@ -151,13 +153,6 @@ fn round_all(value: &mut Value) {
     }
 }
 
-fn max_abs(values: &[f64]) -> f64 {
-    values
-        .iter()
-        .filter(|v| v.is_finite())
-        .fold(0.0, |m, v| m.max(v.abs()))
-}
-
 /// The summary as pretty JSON, without `run.wall_time`, rounded (see the
 /// module documentation).
 fn summary_snapshot(outcome: &Outcome) -> String {
@@ -198,11 +193,11 @@ fn summary_snapshot(outcome: &Outcome) -> String {
         .zip(&outcome.summary.quantities)
         .zip(columns)
     {
-        let dynamic = quantum_exponent(max_abs(&column.values));
+        let dynamic = quantum_exponent(max_abs_finite(&column.values));
         let fixed = column
             .static_values
             .as_deref()
-            .and_then(|s| quantum_exponent(max_abs(s)));
+            .and_then(|s| quantum_exponent(max_abs_finite(s)));
         for (key, extreme, value_exp) in [
             ("max", Some(&typed.max), dynamic),
             ("min", Some(&typed.min), dynamic),
@@ -258,7 +253,7 @@ fn history_snapshot(history: &History) -> String {
     let picks: Vec<usize> = (0..rows).map(|k| k * (n - 1) / span).collect();
     let mut cells: Vec<Vec<String>> = Vec::with_capacity(table.len());
     for (name, values) in &table {
-        let exp = quantum_exponent(max_abs(values));
+        let exp = quantum_exponent(max_abs_finite(values));
         let mut col = vec![
             name.clone(),
             exp.map_or_else(|| "0".into(), |e| format!("1e{e}")),
@@ -492,8 +487,8 @@ fn monte_carlo_snapshots(mc: &MonteCarloResults) -> (String, String) {
             let i = k * (n - 1) / 10;
             let cells: Vec<String> = (0..m.names.len())
                 .map(|r| {
-                    let exp = quantum_exponent(max_abs(&m.mean[r]));
-                    let sexp = quantum_exponent(max_abs(&std[r]));
+                    let exp = quantum_exponent(max_abs_finite(&m.mean[r]));
+                    let sexp = quantum_exponent(max_abs_finite(&std[r]));
                     format!(
                         "{}={} ±{}",
                         m.names[r],

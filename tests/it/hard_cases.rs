@@ -320,7 +320,7 @@ fn rigid_contact_repeated_hops() {
     );
 }
 
-/// Rigid landings are perfectly inelastic (README: "with rigid contact a
+/// Rigid landings are perfectly inelastic (docs/guide/contact.md: "with rigid contact a
 /// landing wheel … leaves the step with the surface's vertical velocity"):
 /// - after every landing the wheel stays on the surface or leaves it with a
 ///   relative velocity below 10 % of its approach velocity (a plastic

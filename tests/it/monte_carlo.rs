@@ -8,8 +8,7 @@
 
 use crate::support;
 
-use std::process::Command;
-
+use support::vbi_here as vbi;
 use support::{Scratch, on_threads};
 use vbi::execute::{Results, execute};
 use vbi::plan::Loaded;
@@ -313,13 +312,6 @@ fn speeds_and_classes_make_cases_in_order() {
         let poor = results.wheel_statistics(3 + s)[0].expected_max_gap;
         assert!(poor >= good, "speed {s}: {poor} < {good}");
     }
-}
-
-fn vbi(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .output()
-        .expect("vbi runs")
 }
 
 #[test]

@@ -6,7 +6,7 @@
 //! different lateral positions on a plate; rigid, elastic and Hertz contact
 //! for the truck, elastic and Hertz for the oscillators, and rigid for them
 //! up to the first landing (their wheels have mass: a rigid landing is an
-//! impact, step-dependent in vbi by design, see the README and
+//! impact, step-dependent in vbi by design, see docs/guide/contact.md and
 //! tests/it/hard_cases.rs).
 
 use crate::support;
@@ -545,7 +545,7 @@ fn the_reference_is_converged_at_its_step() {
 /// cosine bump 6 m into the plate: both leave the surface (reference:
 /// 0.22172 and 0.22494 s) before either lands (0.24714 s). A rigid landing
 /// of a wheel with mass is an impact, which vbi takes on the step grid
-/// (step-dependent by design, see the README), so the comparison stops at
+/// (step-dependent by design, see docs/guide/contact.md), so the comparison stops at
 /// the reference's first landing. vbi at Δt = 2.5e-5 s and Δt/2 (HHT α =
 /// −0.05) against the reference (h = 2.5e-6 s, events located):
 /// - first loss: vbi counts a wheel apart once its gap exceeds 1 nm, which
@@ -566,7 +566,7 @@ fn the_reference_is_converged_at_its_step() {
 /// and vbi's held wheel rings about it from step to step (215.9, 73.7,
 /// 187.9, 98.3 kN, … decaying under HHT α = −0.05) at both steps: a peak
 /// force 46 % too high that does not shrink with Δt. That is the ringing
-/// the README gives as the reason for HHT under rigid contact; a larger
+/// docs/guide/contact.md gives as the reason for HHT under rigid contact; a larger
 /// |α| damps it faster.
 #[test]
 fn rigid_oscillators_side_by_side_on_a_plate_lift_as_the_reference() {

@@ -641,16 +641,16 @@ fn shell(command: &str, cwd: &Path) -> Output {
         .expect("run sh")
 }
 
-/// The README's approve command and the check of the GitHub Actions and
+/// The guide's approve command (docs/guide/regression.md) and the check of the GitHub Actions and
 /// GitLab CI examples, run as written on a folder `scenes/` of two shipped
 /// scenes: pass, then fail (exit 1, JUnit written) after a scene edit.
 #[test]
 fn documented_ci_commands_run_as_written() {
-    let readme = regress_commands("README.md");
+    let readme = regress_commands("docs/guide/regression.md");
     let approve: Vec<&String> = readme.iter().filter(|c| c.contains(" approve ")).collect();
     assert!(
         !approve.is_empty(),
-        "README shows no `vbi regress approve` line"
+        "docs/guide/regression.md shows no `vbi regress approve` line"
     );
     let mut checks = regress_commands("docs/ci/github-actions.yml");
     checks.extend(regress_commands("docs/ci/gitlab-ci.yml"));

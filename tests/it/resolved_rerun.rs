@@ -71,7 +71,7 @@ fn assert_same_history(a: &Outcome, b: &Outcome, name: &str) {
     }
 }
 
-/// The plane beam of the README's 3D example: 25 m, EI = 8e10 N·m², m =
+/// The plane beam of the 3D example in docs/guide/embs.md: 25 m, EI = 8e10 N·m², m =
 /// 18 000 kg/m (f₁ = 5.299 Hz, f₃ = 9 f₁ = 47.688 Hz).
 const PLANE_BEAM: &str =
     "{type: beam, spans: [25.0], bending_stiffness: 8.0e10, mass_per_length: 18000.0";

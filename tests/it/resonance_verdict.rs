@@ -5,46 +5,10 @@
 //! and the additional damping Δζ of EN 1991-2 6.4.6.3.1(3) is the code's
 //! formula and acts as that much more modal damping.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::support::{Scratch, vbi};
 
-// (Not `mod support`: its own tests would run again in this binary.)
-/// A scratch folder unique per process and test, removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(binary: &str, test: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create scratch dir");
-        Scratch(dir)
-    }
-
-    fn dir(&self) -> &Path {
-        &self.0
-    }
-
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-/// The check's exit status when it fails (README, "Exit codes").
+/// The check's exit status when it fails (docs/guide/commands.md, "Exit codes").
 const EXIT_CHECK_FAILED: i32 = 3;
-
-fn vbi(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("run vbi")
-}
 
 /// The km/h column of resonance.csv, as printed, for `train`.
 fn km_h_column(csv: &str, train: &str) -> Vec<String> {

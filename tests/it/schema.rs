@@ -324,7 +324,7 @@ fn the_schema_has_an_id() {
     assert_eq!(
         schema()["$id"],
         "https://vbi.dev/schema/vbi.schema.json",
-        "the README's editor set-up states this $id"
+        "the editor set-up (docs/guide/editor.md) states this $id"
     );
 }
 

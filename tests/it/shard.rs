@@ -10,13 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use support::Scratch;
-
-fn vbi(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vbi"))
-        .args(args)
-        .output()
-        .expect("vbi runs")
-}
+use support::vbi_here as vbi;
 
 fn ok(out: &Output) {
     assert_eq!(

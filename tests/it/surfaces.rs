@@ -4,7 +4,8 @@
 //! located errors for bad surface input.
 
 use std::f64::consts::PI;
-use std::path::PathBuf;
+
+use crate::support::Scratch;
 
 use vbi::scenario::resolved::{Rails, Sampling, Surface, TrackDirection};
 use vbi::scene::{Interference, IsoClass, Spectrum};
@@ -519,24 +520,6 @@ fn shapes_by_hand() {
     assert_eq!(pl.elevation(8.0), -0.002);
 }
 
-/// A scratch folder removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("vbi-surfaces-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
 /// An oscillator crossing a 20 m beam from x = −2 m at 25 m/s with 0.2 s of
 /// free vibration: the wheel travels x = −2 … 23 m.
 fn scene(surface: &str) -> String {
@@ -574,11 +557,11 @@ fn load(
     String,
     Result<vbi::plan::Loaded, vbi::scenario::LoadError>,
 ) {
-    let dir = Scratch::new(name);
+    let dir = Scratch::new("surfaces", name);
     for (file, text) in files {
-        std::fs::write(dir.0.join(file), text).unwrap();
+        std::fs::write(dir.path(file), text).unwrap();
     }
-    let path = dir.0.join("scene.yaml");
+    let path = dir.path("scene.yaml");
     std::fs::write(&path, scene(surface)).unwrap();
     let loaded = vbi::plan::load_file(&path);
     (dir, path.display().to_string(), loaded)

@@ -16,8 +16,7 @@ pub const LOOKS_DENSE: &str = "this looks like a dense text matrix (rows of numb
 pub const FORMATS_HELP: &str = "vbi reads Matrix Market coordinate files (`%%MatrixMarket \
                                 matrix coordinate real symmetric|general`), Harwell–Boeing \
                                 RSA/RUA (ANSYS `HBMAT`), Abaqus `*MATRIX GENERATE` coordinate \
-                                output and square dense text matrices (README, \"Imported FE \
-                                models\")";
+                                output and square dense text matrices (docs/guide/imports.md)";
 
 /// Whether `text` is a dense text matrix: its first three lines that are
 /// not blank or comments (all of them, if fewer) hold numbers only, and

@@ -116,7 +116,7 @@ impl PermanentContacts {
             // inertia off it and shifted the wheel–track (P2-type, 30–50 Hz)
             // response by 9 % of the wheel force and 22 % of the deck
             // acceleration against twice the modes (issue 24.4,
-            // notes/embs/NOTES.md). Only where the wheel's oscillation on the
+            // docs/methods.md, "Why the wheel's mass rides the residual"). Only where the wheel's oscillation on the
             // residual lies below the kept band does the wheel ride s's
             // rates ([`residual_coupling`]): above it (beams at few modes,
             // the load weight's ramps) the residual stays quasi-static.

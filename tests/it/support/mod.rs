@@ -29,6 +29,24 @@ pub fn vbi<S: AsRef<std::ffi::OsStr>>(args: &[S], cwd: &Path) -> std::process::O
         .expect("run vbi")
 }
 
+/// Runs the `vbi` binary with `args` in the test's own working directory
+/// (cargo runs tests in the repository root).
+pub fn vbi_here<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+        .args(args)
+        .output()
+        .expect("run vbi")
+}
+
+/// [`vbi`], its exit code and its two streams as text.
+pub fn vbi_streams<S: AsRef<std::ffi::OsStr>>(
+    args: &[S],
+    cwd: &Path,
+) -> (Option<i32>, String, String) {
+    let out = vbi(args, cwd);
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
 /// A command's output as text.
 pub fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
@@ -63,9 +81,17 @@ pub fn column<'a>(outcome: &'a Outcome, name: &str) -> &'a [f64] {
         .values
 }
 
-/// Largest absolute value.
-pub fn max_abs(values: &[f64]) -> f64 {
-    values.iter().fold(0.0, |m, v| m.max(v.abs()))
+/// Largest absolute value (of a slice or of any iterator of values).
+pub fn max_abs<T: std::borrow::Borrow<f64>>(values: impl IntoIterator<Item = T>) -> f64 {
+    values.into_iter().fold(0.0, |m, v| m.max(v.borrow().abs()))
+}
+
+/// Largest absolute value of the finite values (NaN and ±∞ skipped).
+pub fn max_abs_finite(values: &[f64]) -> f64 {
+    values
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold(0.0, |m, v| m.max(v.abs()))
 }
 
 /// Asserts that the histories `names` of two runs agree everywhere to
@@ -108,6 +134,30 @@ impl Scratch {
     pub fn path(&self, name: &str) -> PathBuf {
         self.0.join(name)
     }
+
+    /// The names of the folder's entries, sorted.
+    pub fn entries(&self) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(&self.0)
+            .expect("read scratch dir")
+            .map(|e| {
+                e.expect("dir entry")
+                    .file_name()
+                    .to_string_lossy()
+                    .into_owned()
+            })
+            .collect();
+        names.sort();
+        names
+    }
+}
+
+/// A scratch folder like [`Scratch`]'s (`vbi-<binary>-<pid>-<test>` under
+/// the system temp dir, emptied first) that is kept after the test.
+pub fn scratch_dir(binary: &str, test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("vbi-{binary}-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create scratch dir");
+    dir
 }
 
 impl Drop for Scratch {
