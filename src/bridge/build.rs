@@ -76,7 +76,7 @@ impl ModalBridge {
     /// a frequency cut-off one extra sparse factorisation for its inertia
     /// count; a plate's Ritz problem O(terms³).
     pub fn build_with(bridge: &Bridge, request: ModeRequest) -> Result<Self, BridgeError> {
-        Self::build_cached(bridge, request, None)
+        Self::build_cached(bridge, request, None, faer::Par::Seq)
     }
 
     /// [`ModalBridge::build_with`] with an imported model's modes read
@@ -89,13 +89,18 @@ impl ModalBridge {
     /// and cut-off an automatic choice writes back (the cut-off at least the
     /// last kept mode's own frequency) solve for the same modes again, bit
     /// for bit, whatever the rounding of a count near a mode.
+    ///
+    /// `par`: the parallelism of an imported model's eigen solve
+    /// ([`eigen::Pencil::with_parallelism`]); the modes are bit-identical
+    /// whatever it is.
     pub fn build_cached(
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        par: faer::Par,
     ) -> Result<Self, BridgeError> {
         let ModeRequest::LowestUpTo(count, max_frequency) = request else {
-            return Self::build_counted(bridge, request, cache);
+            return Self::build_counted(bridge, request, cache, par);
         };
         let available = Self::available_of(bridge);
         if count > available {
@@ -109,7 +114,7 @@ impl ModalBridge {
         // plus one in case it rounds a mode at the cut-off away).
         let counted = Self::count_up_to(bridge, max_frequency)?.map_or(count, |c| c + 1);
         let solved = count.min(counted).max(1);
-        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache)?;
+        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache, par)?;
         let within = modal
             .frequencies()
             .iter()
@@ -122,7 +127,7 @@ impl ModalBridge {
             });
         }
         if within < solved {
-            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache)?;
+            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache, par)?;
         }
         modal.selection = format!("requested: the lowest {count} modes, up to {max_frequency} Hz");
         Ok(modal)
@@ -134,6 +139,7 @@ impl ModalBridge {
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        par: faer::Par,
     ) -> Result<Self, BridgeError> {
         let selection = match request {
             ModeRequest::Lowest(n) => format!("requested: the lowest {n} modes"),
@@ -256,7 +262,7 @@ impl ModalBridge {
                 (omegas, shapes, check)
             }
             Bridge::FeImport(f) => {
-                let pencil = fe_import::modal::pencil(&f.model)?;
+                let pencil = fe_import::modal::pencil(&f.model)?.with_parallelism(par);
                 let count = select_count(
                     request,
                     available,

@@ -24,13 +24,16 @@
 //! vector at a time it is two matrix–vector sweeps over the basis per
 //! step; a block sweeps it four times (CGS2) for [`BLOCK`] vectors, as
 //! matrix–matrix products, and the solves share one pass over the factor.
-//! Sequential and seeded: bit-identical whatever the thread count.
+//! Seeded, and bit-identical whatever the thread count: the sweeps over the
+//! basis and the M products use the threads `par` allows in parts fixed by
+//! the sizes ([`super::parallel`]); the solves and the k × k work are
+//! sequential.
 
-use faer::linalg::matmul::matmul;
 use faer::reborrow::{Reborrow, ReborrowMut};
-use faer::{Accum, Mat, MatMut, MatRef, Par, Side};
+use faer::{Accum, Mat, MatRef, Par};
 
 use super::sparse::{Factor, SymmetricSparse, multiply};
+use super::{kernels, parallel};
 use crate::bridge::BridgeError;
 
 /// Vectors per block. Eight keeps the basis sweeps to a quarter of the
@@ -60,6 +63,7 @@ pub fn lowest(
     mass: &SymmetricSparse,
     factor: &Factor,
     wanted: usize,
+    par: Par,
 ) -> Result<Option<Pairs>, BridgeError> {
     let n = mass.nrows();
     let p = BLOCK;
@@ -85,14 +89,7 @@ pub fn lowest(
             .col_mut(c)
             .copy_from(faer::ColRef::from_slice(&column));
     }
-    apply_operator(
-        mass,
-        factor,
-        &mut block,
-        &mut m_block,
-        &mut column,
-        &mut workspace,
-    );
+    apply_operator(mass, factor, &mut block, &mut m_block, &mut workspace, par);
     let mut within = Mat::<f64>::zeros(p, p);
     let ok = orthonormalise_block(
         mass,
@@ -113,28 +110,14 @@ pub fn lowest(
         // The newest complete block: its image under S.
         let start = columns - p;
         block.copy_from(basis.as_ref().subcols(start, p));
-        apply_operator(
-            mass,
-            factor,
-            &mut block,
-            &mut m_block,
-            &mut column,
-            &mut workspace,
-        );
+        apply_operator(mass, factor, &mut block, &mut m_block, &mut workspace, par);
         // Block CGS2 against the whole basis; coefficients into H.
         for _pass in 0..2 {
-            multiply_block(mass, block.as_ref(), m_block.as_mut(), &mut column);
+            parallel::multiply_columns(par, mass, block.as_ref(), m_block.as_mut());
             let v = basis.as_ref().subcols(0, columns);
             let mut c = coefficients.as_mut().subrows_mut(0, columns);
-            matmul(
-                c.rb_mut(),
-                Accum::Replace,
-                v.transpose(),
-                m_block.as_ref(),
-                1.0,
-                Par::Seq,
-            );
-            matmul(block.as_mut(), Accum::Add, v, c.rb(), -1.0, Par::Seq);
+            parallel::product_tn(c.rb_mut(), v, m_block.as_ref(), par);
+            parallel::product_nn(block.as_mut(), Accum::Add, v, c.rb(), -1.0, par);
             let mut h = projected.as_mut().submatrix_mut(0, start, columns, p);
             for j in 0..p {
                 for i in 0..columns {
@@ -181,18 +164,18 @@ pub fn lowest(
             let coupling = projected.as_ref().submatrix(complete, complete - p, p, p);
             let converged = (0..wanted).all(|r| {
                 let last = ritz.as_ref().submatrix(complete - p, r, p, 1);
-                let residual = (coupling * last).norm_l2();
+                let residual = kernels::product(coupling, last, Par::Seq).norm_l2();
                 residual <= RITZ_TOLERANCE * thetas[r].abs()
             });
             if converged {
                 let mut vectors = Mat::<f64>::zeros(n, wanted);
-                matmul(
+                parallel::product_nn(
                     vectors.as_mut(),
                     Accum::Replace,
                     basis.as_ref().subcols(0, complete),
                     ritz.as_ref().subcols(0, wanted),
                     1.0,
-                    Par::Seq,
+                    par,
                 );
                 let mut eigenvalues = Vec::with_capacity(wanted);
                 for (c, &theta) in thetas.iter().take(wanted).enumerate() {
@@ -214,35 +197,18 @@ pub fn lowest(
     }
 }
 
-/// block ← S block = K⁻¹ M block (`scratch` receives M block first,
-/// `column` is an n-vector of scratch).
+/// block ← S block = K⁻¹ M block (`scratch` receives M block first).
 fn apply_operator(
     mass: &SymmetricSparse,
     factor: &Factor,
     block: &mut Mat<f64>,
     scratch: &mut Mat<f64>,
-    column: &mut [f64],
     workspace: &mut faer::dyn_stack::MemBuffer,
+    par: Par,
 ) {
-    multiply_block(mass, block.as_ref(), scratch.as_mut(), column);
+    parallel::multiply_columns(par, mass, block.as_ref(), scratch.as_mut());
     block.copy_from(&*scratch);
     factor.solve_block_in_place(block.as_mut(), workspace);
-}
-
-/// out = M x, column by column (`column` is an n-vector of scratch).
-fn multiply_block(
-    mass: &SymmetricSparse,
-    x: MatRef<'_, f64>,
-    mut out: MatMut<'_, f64>,
-    column: &mut [f64],
-) {
-    for c in 0..x.ncols() {
-        let xc = x.col(c).try_as_col_major().unwrap().as_slice();
-        multiply(mass, xc, column);
-        out.rb_mut()
-            .col_mut(c)
-            .copy_from(faer::ColRef::from_slice(column));
-    }
 }
 
 /// M-orthonormalises the columns of `block` (already M-orthogonal to
@@ -326,11 +292,10 @@ fn orthonormalise_block(
 fn projected_eigen(h: MatRef<'_, f64>) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
     let m = h.nrows();
     let t = Mat::from_fn(m, m, |i, j| 0.5 * (h[(i, j)] + h[(j, i)]));
-    let eig = t
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
-    let thetas = (0..m).rev().map(|i| eig.S()[i]).collect();
-    let vectors = Mat::from_fn(m, m, |i, j| eig.U()[(i, m - 1 - j)]);
+    let (values, u) =
+        kernels::symmetric_eigen(t.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
+    let thetas = (0..m).rev().map(|i| values[i]).collect();
+    let vectors = Mat::from_fn(m, m, |i, j| u[(i, m - 1 - j)]);
     Ok((thetas, vectors))
 }
 
