@@ -134,7 +134,7 @@ pub(super) fn verify_parallel(
             let phi = vectors.col(mode).try_as_col_major().unwrap().as_slice();
             let apply_mass = |x: &[f64], y: &mut [f64]| multiply(mass, x, y);
             let solve = |x: &mut [f64]| factor.solve_in_place(x, workspace);
-            let pair = mode_residuals(stiffness, &apply_mass, solve, eigenvalues[mode], phi, m_phi);
+            let pair = mode_residuals(stiffness, apply_mass, solve, eigenvalues[mode], phi, m_phi);
             figures.lock().unwrap()[mode] = pair;
         },
     )?;

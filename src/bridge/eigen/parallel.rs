@@ -71,7 +71,7 @@ pub fn for_column_blocks(
 
 /// `f(item)` for every item, at most [`threads`] at once, each over a
 /// contiguous run of items.
-fn for_each<T: Send>(par: Par, items: Vec<T>, f: impl Fn(T) + Sync) {
+pub fn for_each<T: Send>(par: Par, items: Vec<T>, f: impl Fn(T) + Sync) {
     let groups = threads(par).min(items.len());
     if groups <= 1 {
         items.into_iter().for_each(f);
@@ -161,6 +161,63 @@ pub fn product_nn(
 
 fn part_rows(n: usize, start: usize) -> usize {
     ROWS.min(n - start)
+}
+
+/// Whether a sparse matrix equals its transpose bit for bit (both triangles
+/// stored, each entry's mirror holding the same f64). Cost O(nnz · log of
+/// the column length).
+pub fn is_bitwise_symmetric(matrix: &SymmetricSparse) -> bool {
+    let col_ptr = matrix.symbolic().col_ptr();
+    let row_idx = matrix.symbolic().row_idx();
+    let values = matrix.val();
+    (0..matrix.ncols()).all(|j| {
+        (col_ptr[j]..col_ptr[j + 1]).all(|p| {
+            let i = row_idx[p];
+            let column = &row_idx[col_ptr[i]..col_ptr[i + 1]];
+            column
+                .binary_search(&j)
+                .is_ok_and(|q| values[col_ptr[i] + q].to_bits() == values[p].to_bits())
+        })
+    })
+}
+
+/// y = A x for a sparse A, the rows in parts of [`ROWS`] on the threads
+/// `par` allows when A is bitwise symmetric (`symmetric`, from
+/// [`is_bitwise_symmetric`]): row i is then column i, so yᵢ = Σⱼ Aⱼᵢ xⱼ
+/// over column i in ascending j, the very sums, in the very order, of the
+/// sequential [`multiply`] (which adds column j's contributions for
+/// ascending j; the products it skips, of an xⱼ = 0, add a zero, which
+/// leaves a sum unchanged since it is never −0). Else [`multiply`].
+/// Cost O(nnz).
+pub fn multiply_symmetric(
+    par: Par,
+    matrix: &SymmetricSparse,
+    symmetric: bool,
+    x: &[f64],
+    y: &mut [f64],
+) {
+    if !symmetric || threads(par) == 1 || y.len() <= ROWS {
+        multiply(matrix, x, y);
+        return;
+    }
+    let col_ptr = matrix.symbolic().col_ptr();
+    let row_idx = matrix.symbolic().row_idx();
+    let values = matrix.val();
+    let parts: Vec<(usize, &mut [f64])> = y
+        .chunks_mut(ROWS)
+        .enumerate()
+        .map(|(k, part)| (k * ROWS, part))
+        .collect();
+    for_each(par, parts, |(start, part)| {
+        for (k, out) in part.iter_mut().enumerate() {
+            let i = start + k;
+            let mut sum = 0.0;
+            for p in col_ptr[i]..col_ptr[i + 1] {
+                sum += values[p] * x[row_idx[p]];
+            }
+            *out = sum;
+        }
+    });
 }
 
 /// out ← A x column by column for a sparse A (columns in parallel, each
