@@ -42,6 +42,10 @@ use crate::bridge::BridgeError;
 /// what the wanted pairs need.
 pub const BLOCK: usize = 8;
 
+/// Blocks per chunk added when the basis outgrows its first estimate
+/// ([`Basis`]).
+const GROWTH: usize = 4;
+
 /// Relative residual ‖R y_last‖ / θ below which a Ritz pair is accepted
 /// (as [`super::lanczos`]).
 const RITZ_TOLERANCE: f64 = 1e-13;
@@ -72,6 +76,10 @@ pub fn lowest(
         return Ok(None);
     }
     let mut workspace = factor.block_workspace(p)?;
+    let mut solve_workspaces = [
+        factor.block_workspace(SOLVE_COLUMNS)?,
+        factor.block_workspace(SOLVE_COLUMNS)?,
+    ];
     let symmetric = parallel::is_bitwise_symmetric(mass);
     let mut capacity = (2 * wanted + 20).div_ceil(p) * p + p;
     let mut basis = Basis::new(n, capacity)?;
@@ -90,7 +98,14 @@ pub fn lowest(
             .col_mut(c)
             .copy_from(faer::ColRef::from_slice(&column));
     }
-    apply_operator(mass, factor, &mut block, &mut m_block, par)?;
+    apply_operator(
+        mass,
+        factor,
+        &mut block,
+        &mut m_block,
+        &mut solve_workspaces,
+        par,
+    );
     let mut within = Mat::<f64>::zeros(p, p);
     let ok = orthonormalise_block(
         mass,
@@ -112,7 +127,14 @@ pub fn lowest(
         // The newest complete block: its image under S.
         let start = columns - p;
         block.copy_from(basis.block(start, p));
-        apply_operator(mass, factor, &mut block, &mut m_block, par)?;
+        apply_operator(
+            mass,
+            factor,
+            &mut block,
+            &mut m_block,
+            &mut solve_workspaces,
+            par,
+        );
         // Block CGS2 against the whole basis; coefficients into H.
         for _pass in 0..2 {
             parallel::multiply_columns(par, mass, block.as_ref(), m_block.as_mut());
@@ -150,7 +172,9 @@ pub fn lowest(
         }
         // The coupling R of the new block to this one: H rows below.
         if columns + p > capacity {
-            let grown = (capacity + capacity / 2).div_ceil(p) * p;
+            // A chunk of GROWTH blocks at a time: growing copies nothing, so
+            // small steps cost nothing but keep the unused tail short.
+            let grown = capacity + GROWTH * p;
             basis.grow(grown)?;
             projected.resize_with(grown, grown, |_, _| 0.0);
             coefficients.resize_with(grown, p, |_, _| 0.0);
@@ -330,27 +354,23 @@ impl Basis {
 const SOLVE_COLUMNS: usize = BLOCK / 2;
 
 /// block ← S block = K⁻¹ M block (`scratch` receives M block first), the
-/// solve in fixed parts of [`SOLVE_COLUMNS`] right-hand sides.
+/// solve in fixed parts of [`SOLVE_COLUMNS`] right-hand sides, one
+/// workspace each.
 fn apply_operator(
     mass: &SymmetricSparse,
     factor: &Factor,
     block: &mut Mat<f64>,
     scratch: &mut Mat<f64>,
+    workspaces: &mut [faer::dyn_stack::MemBuffer; BLOCK / SOLVE_COLUMNS],
     par: Par,
-) -> Result<(), BridgeError> {
+) {
     parallel::multiply_columns(par, mass, block.as_ref(), scratch.as_mut());
     block.copy_from(&*scratch);
-    let failed = std::sync::atomic::AtomicBool::new(false);
-    parallel::for_column_blocks(par, block.as_mut(), SOLVE_COLUMNS, |_, part| {
-        match factor.block_workspace(SOLVE_COLUMNS) {
-            Ok(mut workspace) => factor.solve_block_in_place(part, &mut workspace),
-            Err(_) => failed.store(true, std::sync::atomic::Ordering::Relaxed),
-        }
+    let (first, second) = block.as_mut().split_at_col_mut(SOLVE_COLUMNS);
+    let [a, b] = workspaces;
+    parallel::for_each(par, vec![(first, a), (second, b)], |(part, workspace)| {
+        factor.solve_block_in_place(part, workspace);
     });
-    if failed.into_inner() {
-        return Err(BridgeError::OutOfMemory);
-    }
-    Ok(())
 }
 
 /// M-orthonormalises the columns of `block` (already M-orthogonal to
