@@ -89,6 +89,7 @@ pub fn verify(
     let mut m_vectors = Mat::<f64>::zeros(n, count);
     let mut largest_residual = 0.0f64;
     let mut largest_plain_residual = 0.0f64;
+    let mut scratch = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
     for (mode, &lambda) in eigenvalues.iter().enumerate() {
         let phi = vectors.col(mode).try_as_col_major().unwrap().as_slice();
         let m_phi = m_vectors
@@ -96,8 +97,13 @@ pub fn verify(
             .try_as_col_major_mut()
             .unwrap()
             .as_slice_mut();
-        let (relative, plain) =
-            mode_residuals(&stiffness, &mass, &mut solve_stiffness, lambda, phi, m_phi);
+        let (relative, plain) = mode_residuals(
+            (&stiffness, &mass, &mut solve_stiffness),
+            lambda,
+            phi,
+            m_phi,
+            &mut scratch,
+        );
         accept(mode, lambda, relative)?;
         largest_residual = largest_residual.max(relative);
         largest_plain_residual = largest_plain_residual.max(plain);
@@ -130,11 +136,17 @@ pub(super) fn verify_parallel(
         par,
         factor,
         m_vectors.as_mut(),
-        |mode, m_phi, workspace| {
+        |mode, m_phi, workspace, scratch| {
             let phi = vectors.col(mode).try_as_col_major().unwrap().as_slice();
             let apply_mass = |x: &[f64], y: &mut [f64]| multiply(mass, x, y);
             let solve = |x: &mut [f64]| factor.solve_in_place(x, workspace);
-            let pair = mode_residuals(stiffness, apply_mass, solve, eigenvalues[mode], phi, m_phi);
+            let pair = mode_residuals(
+                (stiffness, apply_mass, solve),
+                eigenvalues[mode],
+                phi,
+                m_phi,
+                scratch,
+            );
             figures.lock().unwrap()[mode] = pair;
         },
     )?;
@@ -155,26 +167,32 @@ pub(super) fn verify_parallel(
 }
 
 /// One pair's (energy-norm, plain) relative residuals; M φ into `m_phi`.
+/// `scratch`: three n-vectors, overwritten.
 fn mode_residuals(
-    stiffness: impl Fn(&[f64], &mut [f64]),
-    mass: impl Fn(&[f64], &mut [f64]),
-    mut solve_stiffness: impl FnMut(&mut [f64]),
+    (stiffness, mass, mut solve_stiffness): (
+        impl Fn(&[f64], &mut [f64]),
+        impl Fn(&[f64], &mut [f64]),
+        impl FnMut(&mut [f64]),
+    ),
     lambda: f64,
     phi: &[f64],
     m_phi: &mut [f64],
+    scratch: &mut parallel::Scratch,
 ) -> (f64, f64) {
     let n = phi.len();
-    let mut k_phi = vec![0.0; n];
-    stiffness(phi, &mut k_phi);
+    let [k_phi, residual, flexible] = scratch;
+    stiffness(phi, k_phi);
     mass(phi, m_phi);
     let norm_k: f64 = k_phi.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let residual: Vec<f64> = (0..n).map(|i| k_phi[i] - lambda * m_phi[i]).collect();
+    for i in 0..n {
+        residual[i] = k_phi[i] - lambda * m_phi[i];
+    }
     let plain = residual.iter().map(|v| v * v).sum::<f64>().sqrt() / norm_k;
     // ‖r‖²_{K⁻¹} = rᵀK⁻¹r; ‖Kφ‖²_{K⁻¹} = φᵀKφ.
-    let mut flexible = residual.clone();
-    solve_stiffness(&mut flexible);
-    let energy_r: f64 = residual.iter().zip(&flexible).map(|(a, b)| a * b).sum();
-    let energy_phi: f64 = phi.iter().zip(&k_phi).map(|(a, b)| a * b).sum();
+    flexible.copy_from_slice(residual);
+    solve_stiffness(flexible);
+    let energy_r: f64 = residual.iter().zip(flexible.iter()).map(|(a, b)| a * b).sum();
+    let energy_phi: f64 = phi.iter().zip(k_phi.iter()).map(|(a, b)| a * b).sum();
     ((energy_r.abs() / energy_phi).sqrt(), plain)
 }
 

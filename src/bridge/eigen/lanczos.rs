@@ -423,13 +423,12 @@ pub fn polish_block(
     let mut w = try_zeros(n, k)?;
     let mut p = try_zeros(n, k)?;
     let failed = std::sync::atomic::AtomicBool::new(false);
-    parallel::for_columns_with_solves(par, factor, w.as_mut(), |c, column, workspace| {
+    parallel::for_columns_with_solves(par, factor, w.as_mut(), |c, column, workspace, scratch| {
         let phi = vectors.col(c).try_as_col_major().unwrap().as_slice();
         multiply(mass, phi, column);
         factor.solve_in_place(column, workspace);
         // Scale each column to unit M-norm so B is well conditioned.
-        let mut product = vec![0.0; n];
-        let norm = m_norm(mass, column, &mut product);
+        let norm = m_norm(mass, column, &mut scratch[0]);
         if !(norm > 0.0 && norm.is_finite()) {
             failed.store(true, std::sync::atomic::Ordering::Relaxed);
         }

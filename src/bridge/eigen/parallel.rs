@@ -240,14 +240,19 @@ pub fn multiply_columns(
     });
 }
 
-/// `f(column, workspace)` for every column of `out` in parallel, each with
-/// a solve workspace of `factor` made once per thread's run of columns.
+/// Three n-vectors of scratch, made once per thread's run of columns.
+pub type Scratch = [Vec<f64>; 3];
+
+/// `f(column, workspace, scratch)` for every column of `out` in parallel,
+/// each with a solve workspace of `factor` and [`Scratch`] made once per
+/// thread's run of columns.
 pub fn for_columns_with_solves(
     par: Par,
     factor: &Factor,
     out: MatMut<'_, f64>,
-    f: impl Fn(usize, &mut [f64], &mut MemBuffer) + Sync,
+    f: impl Fn(usize, &mut [f64], &mut MemBuffer, &mut Scratch) + Sync,
 ) -> Result<(), BridgeError> {
+    let rows = out.nrows();
     let n = out.ncols();
     let groups = threads(par).min(n).max(1);
     let width = n.div_ceil(groups).max(1);
@@ -257,6 +262,7 @@ pub fn for_columns_with_solves(
             failed.store(true, std::sync::atomic::Ordering::Relaxed);
             return;
         };
+        let mut scratch = [vec![0.0; rows], vec![0.0; rows], vec![0.0; rows]];
         for c in 0..block.ncols() {
             let column = block
                 .rb_mut()
@@ -264,7 +270,7 @@ pub fn for_columns_with_solves(
                 .try_as_col_major_mut()
                 .unwrap()
                 .as_slice_mut();
-            f(first + c, column, &mut workspace);
+            f(first + c, column, &mut workspace, &mut scratch);
         }
     });
     if failed.into_inner() {
