@@ -36,6 +36,32 @@ fi
 echo "== vbi phases (Lanczos, polish, inertia count timed apart; a separate run)"
 ./target/release/examples/mtx_modes "$work/viaduct" 100 --phases > "$work/vbi-phases.txt"
 head -1 "$work/vbi-phases.txt"
+echo "== vbi modes on a scene of the viaduct (100 modes), --threads 2 then 1 (same output expected)"
+cat > "$work/viaduct.yaml" <<SCENE
+name: viaduct-modes
+bridge:
+  type: fe_import
+  stiffness: viaduct/K.mtx
+  mass: viaduct/M.mtx
+  dof_map: viaduct/dof_map.csv
+  rails: [{name: left, file: viaduct/rail_left.csv}, {name: right, file: viaduct/rail_right.csv}]
+  damping: {type: modal, ratio: 0.02}
+  modes: {count: 100}
+vehicles:
+  - {type: rail_car, speed: 300 km/h}
+contact: {type: permanent}
+solver: {time_step: 5.0e-4}
+limits: {dofs: 200000}
+record:
+  - {name: span15_mid, quantity: bridge_displacement, x: 372.7}
+SCENE
+for threads in 2 1; do
+    /usr/bin/time -v ./target/release/vbi --threads $threads modes "$work/viaduct.yaml" --trust-limits \
+        > "$work/modes-$threads.txt" 2> "$work/modes-$threads.time"
+    echo "--threads $threads"
+    grep -E "Elapsed|Maximum resident|User time|Percent of CPU" "$work/modes-$threads.time"
+done
+cmp -s "$work/modes-1.txt" "$work/modes-2.txt" && echo "vbi modes: identical output with 1 and 2 threads"
 echo "== scipy"
 /usr/bin/time -v "$python" benches/viaduct_eigen.py "$work/viaduct" 100 \
     > "$work/scipy.txt" 2> "$work/scipy.time"

@@ -4,6 +4,8 @@
 //! benches/viaduct_eigen.py).
 //!
 //! Usage: mtx_modes DIR [COUNT=100] [--phases | --cache CACHE_DIR]
+//! Threads: `VBI_THREADS` (default every core); the modes are bit-identical
+//! whatever the number.
 //! With `--cache`, the modes go through the modes cache (a second run reads
 //! them back and re-checks them).
 //! Prints the phases' times, the frequencies (Hz, one per line after a
@@ -45,10 +47,21 @@ fn main() {
     let start = Instant::now();
     let (n, k) = read(&dir.join("K.mtx"));
     let (_, m) = read(&dir.join("M.mtx"));
+    let threads = std::env::var("VBI_THREADS")
+        .ok()
+        .and_then(|v| v.parse::<std::num::NonZeroUsize>().ok())
+        .or_else(|| std::thread::available_parallelism().ok())
+        .unwrap_or(std::num::NonZeroUsize::MIN);
+    let par = if threads.get() == 1 {
+        faer::Par::Seq
+    } else {
+        faer::Par::Rayon(threads)
+    };
     let pencil = Pencil::new(
         symmetric_from_entries(n, k, true).expect("K"),
         symmetric_from_entries(n, m, true).expect("M"),
-    );
+    )
+    .with_parallelism(par);
     let read_time = start.elapsed().as_secs_f64();
     let t = Instant::now();
     pencil.stiffness_factor().expect("factor");
@@ -62,7 +75,7 @@ fn main() {
                 .expect("lanczos");
         let single_time = t.elapsed().as_secs_f64();
         let t = Instant::now();
-        let ritz = vbi::bridge::eigen::block::lowest(&pencil.mass, factor, count + 4)
+        let ritz = vbi::bridge::eigen::block::lowest(&pencil.mass, factor, count + 4, par)
             .expect("block lanczos")
             .map_or(single, |(_, ritz)| ritz);
         let lanczos_time = t.elapsed().as_secs_f64();
@@ -75,8 +88,14 @@ fn main() {
                 .expect("polish");
         let polish_time = t.elapsed().as_secs_f64();
         let t = Instant::now();
-        vbi::bridge::eigen::lanczos::polish_block(&pencil.mass, &pencil.stiffness, factor, &ritz)
-            .expect("block polish");
+        vbi::bridge::eigen::lanczos::polish_block(
+            &pencil.mass,
+            &pencil.stiffness,
+            factor,
+            &ritz,
+            par,
+        )
+        .expect("block polish");
         let block_time = t.elapsed().as_secs_f64();
         let t = Instant::now();
         let counted = pencil.count_below(values[count] * 0.999).expect("inertia");

@@ -39,6 +39,11 @@ pub(super) struct Cli {
     /// docs/advice.md). The results are written all the same.
     #[arg(long, global = true)]
     pub(super) deny_warnings: bool,
+    /// Threads for the eigen solve and the study runs. Default: the
+    /// `VBI_THREADS` environment variable, else `RAYON_NUM_THREADS`, else
+    /// every core. Results are bit-identical whatever the number.
+    #[arg(long, global = true, value_name = "N")]
+    pub(super) threads: Option<std::num::NonZeroUsize>,
 }
 
 #[derive(Debug, Subcommand)]

@@ -213,6 +213,40 @@ use studies::{merge, run_sample, run_shard};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let threads = threads(cli.threads);
+    // The command runs in a rayon pool of its own with that many threads
+    // (the library sets no process-wide parallelism; it is passed down as
+    // `LoadOptions::par`).
+    match rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.get())
+        .build()
+    {
+        Ok(pool) => pool.install(|| dispatch(cli, threads)),
+        Err(e) => {
+            errln!("error: could not start {threads} threads: {e}");
+            ExitCode::from(EXIT_FAILED)
+        }
+    }
+}
+
+/// The thread count: `--threads`, else `VBI_THREADS`, else
+/// `RAYON_NUM_THREADS`, else the machine's cores (a variable that is not a
+/// positive whole number is ignored).
+fn threads(given: Option<std::num::NonZeroUsize>) -> std::num::NonZeroUsize {
+    let from_env = |name: &str| {
+        std::env::var(name)
+            .ok()
+            .and_then(|v| v.trim().parse::<std::num::NonZeroUsize>().ok())
+    };
+    given
+        .or_else(|| from_env("VBI_THREADS"))
+        .or_else(|| from_env("RAYON_NUM_THREADS"))
+        .or_else(|| std::thread::available_parallelism().ok())
+        .unwrap_or(std::num::NonZeroUsize::MIN)
+}
+
+/// Runs the parsed command with `threads` threads.
+fn dispatch(cli: Cli, threads: std::num::NonZeroUsize) -> ExitCode {
     DENY_WARNINGS.store(cli.deny_warnings, Ordering::Relaxed);
     // The modes cache: the one given, else `.vbi-cache` in the output
     // folder of a command that has one (nothing is written outside it).
@@ -234,6 +268,11 @@ fn main() -> ExitCode {
         trust_limits: cli.trust_limits,
         modes_cache: cache_in(None),
         data: data.clone(),
+        par: if threads.get() == 1 {
+            faer::Par::Seq
+        } else {
+            faer::Par::Rayon(threads)
+        },
     };
     let load = |file: &Path| plan::load_file_with(file, options.clone());
     match cli.command {

@@ -78,7 +78,7 @@ impl ModalBridge {
     /// a frequency cut-off one extra sparse factorisation for its inertia
     /// count; a plate's Ritz problem O(terms³).
     pub fn build_with(bridge: &Bridge, request: ModeRequest) -> Result<Self, BridgeError> {
-        Self::build_cached(bridge, request, None)
+        Self::build_cached(bridge, request, None, faer::Par::Seq)
     }
 
     /// [`ModalBridge::build_with`] with an imported model's modes read
@@ -91,12 +91,17 @@ impl ModalBridge {
     /// and cut-off an automatic choice writes back (the cut-off at least the
     /// last kept mode's own frequency) solve for the same modes again, bit
     /// for bit, whatever the rounding of a count near a mode.
+    ///
+    /// `par`: the parallelism of an imported model's eigen solve
+    /// ([`eigen::Pencil::with_parallelism`]); the modes are bit-identical
+    /// whatever it is.
     pub fn build_cached(
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        par: faer::Par,
     ) -> Result<Self, BridgeError> {
-        Self::build_excited(bridge, request, cache, None)
+        Self::build_excited(bridge, request, cache, par, None)
     }
 
     /// [`ModalBridge::build_cached`] for a scene whose loads are
@@ -110,10 +115,11 @@ impl ModalBridge {
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        par: faer::Par,
         loads: Option<fe_import::excited::SceneLoads>,
     ) -> Result<Self, BridgeError> {
         let ModeRequest::LowestUpTo(count, max_frequency) = request else {
-            return Self::build_counted(bridge, request, cache, loads);
+            return Self::build_counted(bridge, request, cache, par, loads);
         };
         let available = Self::available_of(bridge);
         if count > available {
@@ -127,7 +133,8 @@ impl ModalBridge {
         // plus one in case it rounds a mode at the cut-off away).
         let counted = Self::count_up_to(bridge, max_frequency)?.map_or(count, |c| c + 1);
         let solved = count.min(counted).max(1);
-        let mut modal = Self::build_counted(bridge, ModeRequest::Lowest(solved), cache, loads)?;
+        let mut modal =
+            Self::build_counted(bridge, ModeRequest::Lowest(solved), cache, par, loads)?;
         let within = modal
             .frequencies()
             .iter()
@@ -140,7 +147,7 @@ impl ModalBridge {
             });
         }
         if within < solved {
-            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache, loads)?;
+            modal = Self::build_counted(bridge, ModeRequest::Lowest(within), cache, par, loads)?;
         }
         modal.selection = format!("requested: the lowest {count} modes, up to {max_frequency} Hz");
         Ok(modal)
@@ -152,6 +159,7 @@ impl ModalBridge {
         bridge: &Bridge,
         request: ModeRequest,
         cache: Option<&std::path::Path>,
+        par: faer::Par,
         loads: Option<fe_import::excited::SceneLoads>,
     ) -> Result<Self, BridgeError> {
         let selection = match request {
@@ -276,7 +284,7 @@ impl ModalBridge {
                 (omegas, shapes, check)
             }
             Bridge::FeImport(f) => {
-                let pencil = fe_import::modal::pencil(&f.model)?;
+                let pencil = fe_import::modal::pencil(&f.model)?.with_parallelism(par);
                 let count = select_count(
                     request,
                     available,

@@ -45,11 +45,13 @@
 //! problem O((Nx·Ny)³); the default 18 × 8 = 144 terms take milliseconds,
 //! the largest basis the format allows (2,000 terms) some seconds.
 
-use faer::{Mat, Side};
+use faer::Mat;
+use faer::Par::Seq;
 
 use super::beam::BeamModel;
 use super::hermite::{HermiteField, shape_curvatures, shape_functions};
 use super::{BridgeError, eigen};
+use crate::bridge::eigen::kernels;
 use crate::scene::{Beam, Damping, Modes, Plate, PlateEdges};
 
 pub mod moments;
@@ -94,7 +96,11 @@ fn element_slope_products(h: f64) -> [[f64; 4]; 4] {
 /// columns of `phi`, symmetrised against round-off.
 fn project(a: &Mat<f64>, phi: &Mat<f64>, count: usize) -> Mat<f64> {
     let basis = phi.subcols(0, count);
-    let projected = basis.transpose() * (a * basis);
+    let projected = kernels::product(
+        basis.transpose(),
+        kernels::product(a.as_ref(), basis, Seq).as_ref(),
+        Seq,
+    );
     Mat::from_fn(count, count, |i, k| {
         0.5 * (projected[(i, k)] + projected[(k, i)])
     })
@@ -241,11 +247,8 @@ impl PlateModes {
             }
         }
 
-        let stiffness_factor = stiffness
-            .llt(Side::Lower)
-            .map_err(|_| BridgeError::StiffnessNotPositive)?
-            .L()
-            .to_owned();
+        let stiffness_factor = kernels::cholesky_lower(stiffness.as_ref(), Seq)
+            .ok_or(BridgeError::StiffnessNotPositive)?;
         let (eigenvalues, vectors) = lowest_modes_first(&stiffness, &mass)?;
         let omegas: Vec<f64> = eigenvalues.iter().map(|l| l.sqrt()).collect();
         let mut coefficients = vec![0.0; terms * terms];
@@ -504,10 +507,8 @@ impl PlateModes {
     fn solve_stiffness(&self, rhs: &[f64]) -> Result<Mat<f64>, BridgeError> {
         let mut solution = Mat::from_fn(rhs.len(), 1, |r, _| rhs[r]);
         let lower = self.stiffness_factor.as_ref();
-        lower.solve_lower_triangular_in_place(solution.as_mut());
-        lower
-            .transpose()
-            .solve_upper_triangular_in_place(solution.as_mut());
+        kernels::solve_lower(lower, solution.as_mut(), Seq);
+        kernels::solve_upper(lower.transpose(), solution.as_mut(), Seq);
         if solution.col(0).iter().any(|u| !u.is_finite()) {
             return Err(BridgeError::StiffnessNotPositive);
         }

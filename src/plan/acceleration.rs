@@ -33,13 +33,14 @@ pub fn lowest_three(
     bridge: &Bridge,
     modal: &ModalBridge,
     cache: Option<&std::path::Path>,
+    par: faer::Par,
 ) -> Result<Vec<f64>, BridgeError> {
     let wanted = 3.min(ModalBridge::available_of(bridge));
     let kept = modal.frequencies();
     if kept.len() >= wanted {
         return Ok(kept[..wanted].to_vec());
     }
-    Ok(ModalBridge::build_cached(bridge, ModeRequest::Lowest(wanted), cache)?.frequencies())
+    Ok(ModalBridge::build_cached(bridge, ModeRequest::Lowest(wanted), cache, par)?.frequencies())
 }
 
 /// How many modes the bridge has up to `cut` (Hz): a Sturm count where
@@ -49,10 +50,13 @@ pub fn modes_up_to(
     bridge: &Bridge,
     cut: f64,
     cache: Option<&std::path::Path>,
+    par: faer::Par,
 ) -> Result<usize, BridgeError> {
     match ModalBridge::count_up_to(bridge, cut)? {
         Some(count) => Ok(count),
-        None => Ok(ModalBridge::build_cached(bridge, ModeRequest::UpTo(cut), cache)?.mode_count()),
+        None => {
+            Ok(ModalBridge::build_cached(bridge, ModeRequest::UpTo(cut), cache, par)?.mode_count())
+        }
     }
 }
 

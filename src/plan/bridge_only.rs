@@ -118,10 +118,11 @@ pub fn load_for_modes(
     }
     let request = ModeRequest::of(bridge.modes(), ModeRequest::Lowest(minimum));
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
-    let mut modal = ModalBridge::build_with(&bridge, request).map_err(|e| {
-        ck.error("bridge", e.to_string());
-        LoadError::Invalid(std::mem::take(&mut ck.diagnostics))
-    })?;
+    let mut modal =
+        ModalBridge::build_cached(&bridge, request, None, options.par).map_err(|e| {
+            ck.error("bridge", e.to_string());
+            LoadError::Invalid(std::mem::take(&mut ck.diagnostics))
+        })?;
     if automatic {
         let count = modal.mode_count();
         modal.selection = format!(

@@ -84,7 +84,7 @@ pub(crate) fn plan(
     // out of the kept ones and of `count` (issue 40.6).
     let loads = content::scene_loads(&vehicles, &ground_motion, gravity);
     let build = |request| {
-        ModalBridge::build_excited(&bridge, request, cache, Some(loads)).map_err(|e| {
+        ModalBridge::build_excited(&bridge, request, cache, options.par, Some(loads)).map_err(|e| {
             let path = match e {
                 BridgeError::TooManyModes { .. } => "bridge.modes.count",
                 BridgeError::NoModeBelow { .. } => "bridge.modes.max_frequency",
@@ -106,7 +106,7 @@ pub(crate) fn plan(
     // The deck-acceleration filter of EN 1990 A2.4.4.2.1(4) is the
     // bridge's own max(30 Hz, 1.5 f₁, f₃), whatever `bridge.modes` keeps
     // (a cap that keeps one mode must not lower it to the kept top).
-    let lowest = match super::acceleration::lowest_three(&bridge, &modal, cache) {
+    let lowest = match super::acceleration::lowest_three(&bridge, &modal, cache, options.par) {
         Ok(f) => f,
         Err(e) => {
             ck.error("bridge", e.to_string());
@@ -423,7 +423,7 @@ pub(crate) fn plan(
     // sum misses.
     if let (Some(cut), Some(&top)) = (record_cutoff, modal.frequencies().last())
         && cut > top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE)
-        && let Ok(count) = super::acceleration::modes_up_to(&bridge, cut, cache)
+        && let Ok(count) = super::acceleration::modes_up_to(&bridge, cut, cache, options.par)
         && count > modal.mode_count()
     {
         modal.acceleration_filter = Some(crate::bridge::AccelerationFilter {

@@ -15,9 +15,9 @@ use super::checker::Checker;
 use super::raw::{self, LimitsRaw};
 use crate::scene::{Bridge, Limits, Surface};
 
-/// How a scene is loaded: whether its budgets are enforced, and where
-/// solved modes are cached.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+/// How a scene is loaded: whether its budgets are enforced, where solved
+/// modes are cached, and how many threads its eigen solve may use.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct LoadOptions {
     /// Lift every resource limit (`--allow-large`); sizes are still checked
     /// for overflow.
@@ -36,6 +36,23 @@ pub struct LoadOptions {
     /// Where the files a scene names may be read from: its own folder tree
     /// and the `--data-dir` folders ([`super::data_files`]).
     pub data: super::data_files::DataAccess,
+    /// The parallelism of the bridge's eigen solve (`Par::Seq`, the library
+    /// default, or `Par::Rayon(threads)` on the current rayon pool; the
+    /// command line's default is every core, `--threads`). The modes are
+    /// bit-identical whatever it is ([`crate::bridge::eigen::parallel`]).
+    pub par: faer::Par,
+}
+
+impl Default for LoadOptions {
+    fn default() -> Self {
+        Self {
+            allow_large: false,
+            trust_limits: false,
+            modes_cache: None,
+            data: Default::default(),
+            par: faer::Par::Seq,
+        }
+    }
 }
 
 impl Default for Limits {

@@ -300,6 +300,149 @@ fn modes_do_not_depend_on_the_thread_count() {
     assert_eq!(solve(1), solve(2));
 }
 
+/// Bit-identical modes whatever the parallelism passed to the solve (issue
+/// 42 point 2): a six-span viaduct above 8,192 DOFs, so that the block
+/// Lanczos, the block polish and the checks split their n × k products into
+/// row parts ([`vbi::bridge::eigen::parallel::ROWS`]) and their solves by
+/// column, solved sequentially and with 2 and 3 threads (3: parts that do
+/// not divide evenly), each in a rayon pool of that many threads.
+#[test]
+fn modes_are_bit_identical_whatever_the_parallelism() {
+    let params = ViaductParams {
+        spans: 6,
+        ..Default::default()
+    };
+    let model = reduce(&viaduct::assemble(&params).unwrap());
+    assert!(
+        model.order > vbi::bridge::eigen::parallel::ROWS,
+        "{}",
+        model.order
+    );
+    let solve = |threads: usize| {
+        let par = match threads {
+            1 => faer::Par::Seq,
+            t => faer::Par::Rayon(std::num::NonZeroUsize::new(t).unwrap()),
+        };
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let pencil: Pencil = model.pencil().unwrap().with_parallelism(par);
+            let pairs = pencil.lowest(30).unwrap();
+            assert!(!pairs.check.dense);
+            let check = pairs.check;
+            let bits: Vec<u64> = pairs
+                .eigenvalues
+                .iter()
+                .chain(pairs.vectors.col_iter().flat_map(|c| c.iter()))
+                .chain([
+                    &check.largest_residual,
+                    &check.largest_plain_residual,
+                    &check.orthonormality_error,
+                ])
+                .map(|v| v.to_bits())
+                .collect();
+            (bits, check.inertia)
+        })
+    };
+    let sequential = solve(1);
+    assert_eq!(sequential.1.map(|(_, below)| below), Some(30));
+    for threads in [2, 3] {
+        assert!(solve(threads) == sequential, "{threads} threads");
+    }
+}
+
+/// The same through the command line: `vbi modes` (frequencies, checks and
+/// mode shapes) and `vbi run` (every output file but the timings) write the
+/// same bytes with `--threads 1` and `--threads 2`, on a generated viaduct
+/// above 8,192 DOFs.
+#[test]
+fn the_command_line_writes_the_same_bytes_with_one_or_two_threads() {
+    let dir = std::env::temp_dir().join(format!("vbi-generate-threads-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let vbi = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_vbi"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        out.stdout
+    };
+    vbi(&["generate", "viaduct", "--spans", "6", "--out", "viaduct"]);
+    std::fs::write(
+        dir.join("scene.yaml"),
+        "name: viaduct-threads
+bridge:
+  type: fe_import
+  stiffness: viaduct/K.mtx
+  mass: viaduct/M.mtx
+  dof_map: viaduct/dof_map.csv
+  rails: [{name: left, file: viaduct/rail_left.csv}, {name: right, file: viaduct/rail_right.csv}]
+  damping: {type: modal, ratio: 0.02}
+  modes: {count: 12}
+vehicles:
+  - {type: rail_car, speed: 300 km/h}
+contact: {type: permanent}
+solver: {time_step: 2.0e-3}
+limits: {dofs: 20000}
+record:
+  - {name: span3_mid, quantity: bridge_displacement, x: 72.5}
+  - {name: body_acc, quantity: vehicle_acceleration, dof: body_bounce}
+",
+    )
+    .unwrap();
+    let mut outputs = Vec::new();
+    for threads in ["1", "2"] {
+        let shapes = format!("shapes-{threads}.csv");
+        let out = format!("out-{threads}");
+        let modes = vbi(&[
+            "--threads",
+            threads,
+            "--trust-limits",
+            "modes",
+            "scene.yaml",
+            "--shapes",
+            &shapes,
+        ]);
+        vbi(&[
+            "--threads",
+            threads,
+            "--trust-limits",
+            "--no-modes-cache",
+            "run",
+            "scene.yaml",
+            "--out",
+            &out,
+            "-q",
+        ]);
+        let summary = std::fs::read_to_string(dir.join(&out).join("summary.json")).unwrap();
+        // Timings differ from run to run; everything else must not.
+        let summary: String = summary
+            .lines()
+            .filter(|l| !l.contains("wall_time") && !l.contains("_time\""))
+            .collect::<Vec<_>>()
+            .join("\n");
+        outputs.push((
+            modes,
+            std::fs::read(dir.join(&shapes)).unwrap(),
+            std::fs::read(dir.join(&out).join("history.csv")).unwrap(),
+            summary,
+        ));
+    }
+    assert!(outputs[0].0 == outputs[1].0, "vbi modes output differs");
+    assert!(outputs[0].1 == outputs[1].1, "mode shapes differ");
+    assert!(outputs[0].2 == outputs[1].2, "history.csv differs");
+    assert_eq!(outputs[0].3, outputs[1].3, "summary.json differs");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// The written files: Matrix Market read back gives the very f64 entries,
 /// the DOF map and rails have the agreed headers and sizes, and a second
 /// generation writes the same bytes; bad parameters exit 2 with a message.
@@ -444,15 +587,22 @@ fn block_lanczos_agrees_with_the_single_vector_run() {
     assert!(!pairs.check.dense);
     assert_eq!(pairs.check.inertia.map(|(_, below)| below), Some(count));
     let factor = pencil.stiffness_factor().unwrap();
-    let blocked = vbi::bridge::eigen::block::lowest(&pencil.mass, factor, count + 4)
-        .unwrap()
-        .expect("the block path takes this size");
+    let blocked =
+        vbi::bridge::eigen::block::lowest(&pencil.mass, factor, count + 4, faer::Par::Seq)
+            .unwrap()
+            .expect("the block path takes this size");
     let (_, single) =
         vbi::bridge::eigen::lanczos::lowest(&pencil.mass, factor, 0.0, count + 4, None).unwrap();
     let polished = |ritz: &faer::Mat<f64>| {
-        vbi::bridge::eigen::lanczos::polish_block(&pencil.mass, &pencil.stiffness, factor, ritz)
-            .unwrap()
-            .0
+        vbi::bridge::eigen::lanczos::polish_block(
+            &pencil.mass,
+            &pencil.stiffness,
+            factor,
+            ritz,
+            faer::Par::Seq,
+        )
+        .unwrap()
+        .0
     };
     let (a, b) = (polished(&blocked.1), polished(&single));
     let mut worst = 0.0f64;

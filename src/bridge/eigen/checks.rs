@@ -4,9 +4,11 @@
 //! ([`inertia_check`]); [`check_dense`] applies them to a dense pencil.
 
 use faer::Mat;
+use faer::Par::Seq;
 
-use super::sparse::symmetric_from_entries;
-use super::{ModeCheck, ORTHONORMALITY_BOUND, Pencil, RESIDUAL_BOUND};
+use super::parallel;
+use super::sparse::{Factor, SymmetricSparse, multiply, symmetric_from_entries};
+use super::{ModeCheck, ORTHONORMALITY_BOUND, Pencil, RESIDUAL_BOUND, kernels};
 use crate::bridge::BridgeError;
 
 /// Relative gap below which two eigenvalues count as one cluster (a cut never
@@ -84,44 +86,142 @@ pub fn verify(
 ) -> Result<(f64, f64, f64), BridgeError> {
     let n = vectors.nrows();
     let count = eigenvalues.len();
-    let mut k_phi = vec![0.0; n];
     let mut m_vectors = Mat::<f64>::zeros(n, count);
-    let mut m_phi = vec![0.0; n];
-    let mut residual = vec![0.0; n];
-    let mut flexible = vec![0.0; n];
     let mut largest_residual = 0.0f64;
     let mut largest_plain_residual = 0.0f64;
+    let mut scratch = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
     for (mode, &lambda) in eigenvalues.iter().enumerate() {
-        let phi: Vec<f64> = vectors.col(mode).iter().copied().collect();
-        stiffness(&phi, &mut k_phi);
-        mass(&phi, &mut m_phi);
-        let norm_k: f64 = k_phi.iter().map(|v| v * v).sum::<f64>().sqrt();
-        for i in 0..n {
-            residual[i] = k_phi[i] - lambda * m_phi[i];
-        }
-        let plain = residual.iter().map(|v| v * v).sum::<f64>().sqrt() / norm_k;
-        // ‖r‖²_{K⁻¹} = rᵀK⁻¹r; ‖Kφ‖²_{K⁻¹} = φᵀKφ.
-        flexible.copy_from_slice(&residual);
-        solve_stiffness(&mut flexible);
-        let energy_r: f64 = residual.iter().zip(&flexible).map(|(a, b)| a * b).sum();
-        let energy_phi: f64 = phi.iter().zip(&k_phi).map(|(a, b)| a * b).sum();
-        let relative = (energy_r.abs() / energy_phi).sqrt();
-        let accepted = lambda > 0.0 && lambda.is_finite() && relative <= RESIDUAL_BOUND;
-        if !accepted {
-            return Err(BridgeError::ModeCheckFailed {
-                mode: mode + 1,
-                what: "relative residual ‖Kφ − ω²Mφ‖/‖Kφ‖ in the energy norm",
-                value: relative,
-                bound: RESIDUAL_BOUND,
-            });
-        }
+        let phi = vectors.col(mode).try_as_col_major().unwrap().as_slice();
+        let m_phi = m_vectors
+            .col_mut(mode)
+            .try_as_col_major_mut()
+            .unwrap()
+            .as_slice_mut();
+        let (relative, plain) = mode_residuals(
+            (&stiffness, &mass, &mut solve_stiffness),
+            lambda,
+            phi,
+            m_phi,
+            &mut scratch,
+        );
+        accept(mode, lambda, relative)?;
         largest_residual = largest_residual.max(relative);
         largest_plain_residual = largest_plain_residual.max(plain);
-        for i in 0..n {
-            m_vectors[(i, mode)] = m_phi[i];
-        }
     }
-    let gram = vectors.transpose() * &m_vectors;
+    let orthonormality_error = orthonormality(vectors, &m_vectors, Seq)?;
+    Ok((
+        largest_residual,
+        largest_plain_residual,
+        orthonormality_error,
+    ))
+}
+
+/// [`verify`] with K⁻¹ by `factor`, the modes checked on the threads `par`
+/// allows (each mode's figures computed as [`verify`] computes them, so the
+/// result is the same whatever the thread count; the Gram matrix by
+/// [`super::parallel::product_tn`]).
+pub(super) fn verify_parallel(
+    stiffness: &(dyn Fn(&[f64], &mut [f64]) + Sync),
+    mass: &SymmetricSparse,
+    factor: &Factor,
+    eigenvalues: &[f64],
+    vectors: &Mat<f64>,
+    par: faer::Par,
+) -> Result<(f64, f64, f64), BridgeError> {
+    let n = vectors.nrows();
+    let count = eigenvalues.len();
+    let mut m_vectors = Mat::<f64>::zeros(n, count);
+    let figures = std::sync::Mutex::new(vec![(0.0, 0.0); count]);
+    parallel::for_columns_with_solves(
+        par,
+        factor,
+        m_vectors.as_mut(),
+        |mode, m_phi, workspace, scratch| {
+            let phi = vectors.col(mode).try_as_col_major().unwrap().as_slice();
+            let apply_mass = |x: &[f64], y: &mut [f64]| multiply(mass, x, y);
+            let solve = |x: &mut [f64]| factor.solve_in_place(x, workspace);
+            let pair = mode_residuals(
+                (stiffness, apply_mass, solve),
+                eigenvalues[mode],
+                phi,
+                m_phi,
+                scratch,
+            );
+            figures.lock().unwrap()[mode] = pair;
+        },
+    )?;
+    let figures = figures.into_inner().unwrap();
+    let mut largest_residual = 0.0f64;
+    let mut largest_plain_residual = 0.0f64;
+    for (mode, (&lambda, &(relative, plain))) in eigenvalues.iter().zip(&figures).enumerate() {
+        accept(mode, lambda, relative)?;
+        largest_residual = largest_residual.max(relative);
+        largest_plain_residual = largest_plain_residual.max(plain);
+    }
+    let orthonormality_error = orthonormality(vectors, &m_vectors, par)?;
+    Ok((
+        largest_residual,
+        largest_plain_residual,
+        orthonormality_error,
+    ))
+}
+
+/// One pair's (energy-norm, plain) relative residuals; M φ into `m_phi`.
+/// `scratch`: three n-vectors, overwritten.
+fn mode_residuals(
+    (stiffness, mass, mut solve_stiffness): (
+        impl Fn(&[f64], &mut [f64]),
+        impl Fn(&[f64], &mut [f64]),
+        impl FnMut(&mut [f64]),
+    ),
+    lambda: f64,
+    phi: &[f64],
+    m_phi: &mut [f64],
+    scratch: &mut parallel::Scratch,
+) -> (f64, f64) {
+    let n = phi.len();
+    let [k_phi, residual, flexible] = scratch;
+    stiffness(phi, k_phi);
+    mass(phi, m_phi);
+    let norm_k: f64 = k_phi.iter().map(|v| v * v).sum::<f64>().sqrt();
+    for i in 0..n {
+        residual[i] = k_phi[i] - lambda * m_phi[i];
+    }
+    let plain = residual.iter().map(|v| v * v).sum::<f64>().sqrt() / norm_k;
+    // ‖r‖²_{K⁻¹} = rᵀK⁻¹r; ‖Kφ‖²_{K⁻¹} = φᵀKφ.
+    flexible.copy_from_slice(residual);
+    solve_stiffness(flexible);
+    let energy_r: f64 = residual
+        .iter()
+        .zip(flexible.iter())
+        .map(|(a, b)| a * b)
+        .sum();
+    let energy_phi: f64 = phi.iter().zip(k_phi.iter()).map(|(a, b)| a * b).sum();
+    ((energy_r.abs() / energy_phi).sqrt(), plain)
+}
+
+/// Whether mode `mode` (from 0) passes the residual bound.
+fn accept(mode: usize, lambda: f64, relative: f64) -> Result<(), BridgeError> {
+    if lambda > 0.0 && lambda.is_finite() && relative <= RESIDUAL_BOUND {
+        return Ok(());
+    }
+    Err(BridgeError::ModeCheckFailed {
+        mode: mode + 1,
+        what: "relative residual ‖Kφ − ω²Mφ‖/‖Kφ‖ in the energy norm",
+        value: relative,
+        bound: RESIDUAL_BOUND,
+    })
+}
+
+/// Largest |ΦᵀMΦ − I| entry, checked against the bound (`m_vectors` = M Φ).
+fn orthonormality(
+    vectors: &Mat<f64>,
+    m_vectors: &Mat<f64>,
+    par: faer::Par,
+) -> Result<f64, BridgeError> {
+    let count = vectors.ncols();
+    let mut gram = Mat::<f64>::zeros(count, count);
+    parallel::product_tn(gram.as_mut(), vectors.as_ref(), m_vectors.as_ref(), par);
     let mut orthonormality_error = 0.0f64;
     for i in 0..count {
         for j in 0..count {
@@ -138,11 +238,7 @@ pub fn verify(
             orthonormality_error = orthonormality_error.max(error);
         }
     }
-    Ok((
-        largest_residual,
-        largest_plain_residual,
-        orthonormality_error,
-    ))
+    Ok(orthonormality_error)
 }
 
 /// Checks the lowest `count` of every eigenpair of a dense pencil (a Ritz
@@ -175,16 +271,16 @@ pub fn check_dense(
         Pencil::new(to_sparse(stiffness)?, to_sparse(mass)?).count_below(shift)
     })?;
     let kept = vectors.subcols(0, count).to_owned();
-    let stiffness_llt = stiffness
-        .llt(faer::Side::Lower)
-        .map_err(|_| BridgeError::StiffnessNotPositive)?;
+    let lower = kernels::cholesky_lower(stiffness.as_ref(), Seq)
+        .ok_or(BridgeError::StiffnessNotPositive)?;
     let (largest_residual, largest_plain_residual, orthonormality_error) = verify(
         |x, y| dense_multiply(stiffness, x, y),
         |x, y| dense_multiply(mass, x, y),
         |x| {
-            use faer::linalg::solvers::Solve;
             let len = x.len();
-            stiffness_llt.solve_in_place(faer::MatMut::from_column_major_slice_mut(x, len, 1));
+            let mut x = faer::MatMut::from_column_major_slice_mut(x, len, 1);
+            kernels::solve_lower(lower.as_ref(), x.as_mut(), Seq);
+            kernels::solve_upper(lower.transpose(), x, Seq);
         },
         &eigenvalues[..count],
         &kept,

@@ -9,10 +9,12 @@
 //! highest lose digits. (Reduced forwards, ‖A‖ = λ_max, which grows like
 //! elements⁴ on a beam and swamps the fundamental on fine meshes.) Each
 //! λ is then the Rayleigh quotient cᵀKc / cᵀMc = 1/(cᵀMc) of its vector
-//! (cᵀKc = 1 from the reduction). Sequential (`Par::Seq`): bit-identical
-//! whatever the thread count. Cost O(n³) time, O(n²) memory.
+//! (cᵀKc = 1 from the reduction). Sequential (`Par::Seq`, passed per call:
+//! [`super::kernels`]): bit-identical whatever the thread count. Cost O(n³) time, O(n²) memory.
 
-use faer::{Mat, Par, Side};
+use faer::{Mat, Par};
+
+use super::kernels::{cholesky_lower, product_col, solve_lower, solve_upper, symmetric_eigen};
 
 use crate::bridge::BridgeError;
 
@@ -23,33 +25,28 @@ pub fn lowest_inverted(
     stiffness: &Mat<f64>,
     mass: &Mat<f64>,
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
-    faer::set_global_parallelism(Par::Seq);
     let n = stiffness.nrows();
     // About eight n × n work matrices (the reduction, faer's eigen solver,
     // the sorted vectors): refuse what cannot be had instead of aborting.
     ensure_memory(n, n, 8)?;
-    let llt = stiffness
-        .llt(Side::Lower)
-        .map_err(|_| BridgeError::StiffnessNotPositive)?;
-    let lower = llt.L();
+    let lower =
+        cholesky_lower(stiffness.as_ref(), Par::Seq).ok_or(BridgeError::StiffnessNotPositive)?;
+    let lower = lower.as_ref();
     // A = L⁻¹ M L⁻ᵀ: first X = L⁻¹ M, then A = L⁻¹ Xᵀ (M symmetric).
     let mut x = mass.clone();
-    lower.solve_lower_triangular_in_place(x.as_mut());
+    solve_lower(lower, x.as_mut(), Par::Seq);
     let mut a = x.transpose().to_owned();
-    lower.solve_lower_triangular_in_place(a.as_mut());
+    solve_lower(lower, a.as_mut(), Par::Seq);
     let a = Mat::from_fn(n, n, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
-    let eig = a
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
+    let (_, eigenvectors) =
+        symmetric_eigen(a.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
     // c = L⁻ᵀ y is K-normalised (cᵀKc = 1).
-    let mut vectors = eig.U().to_owned();
-    lower
-        .transpose()
-        .solve_upper_triangular_in_place(vectors.as_mut());
+    let mut vectors = eigenvectors;
+    solve_upper(lower.transpose(), vectors.as_mut(), Par::Seq);
     let modal_masses: Vec<f64> = (0..n)
         .map(|m| {
             let c = vectors.col(m);
-            let mc = mass * c;
+            let mc = product_col(mass.as_ref(), c, Par::Seq);
             c.iter().zip(mc.iter()).map(|(a, b)| a * b).sum::<f64>()
         })
         .collect();
@@ -87,26 +84,19 @@ pub fn every_forward(
     stiffness: &Mat<f64>,
     mass: &Mat<f64>,
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
-    faer::set_global_parallelism(Par::Seq);
     let n = stiffness.nrows();
     ensure_memory(n, n, 8)?;
-    let llt = mass
-        .llt(Side::Lower)
-        .map_err(|_| BridgeError::MassNotPositive)?;
-    let lower = llt.L();
+    let lower = cholesky_lower(mass.as_ref(), Par::Seq).ok_or(BridgeError::MassNotPositive)?;
+    let lower = lower.as_ref();
     let mut x = stiffness.clone();
-    lower.solve_lower_triangular_in_place(x.as_mut());
+    solve_lower(lower, x.as_mut(), Par::Seq);
     let mut a = x.transpose().to_owned();
-    lower.solve_lower_triangular_in_place(a.as_mut());
+    solve_lower(lower, a.as_mut(), Par::Seq);
     let a = Mat::from_fn(n, n, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
-    let eig = a
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
-    let values: Vec<f64> = eig.S().column_vector().iter().copied().collect();
-    let mut vectors = eig.U().to_owned();
-    lower
-        .transpose()
-        .solve_upper_triangular_in_place(vectors.as_mut());
+    let (values, eigenvectors) =
+        symmetric_eigen(a.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
+    let mut vectors = eigenvectors;
+    solve_upper(lower.transpose(), vectors.as_mut(), Par::Seq);
     for mode in 0..n {
         let mut largest = 0.0f64;
         for r in 0..n {
@@ -133,23 +123,17 @@ pub fn lowest_forward_small(
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
     let k = stiffness.nrows();
     let mass = Mat::from_fn(k, k, |i, j| 0.5 * (mass[(i, j)] + mass[(j, i)]));
-    let llt = mass
-        .llt(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
-    let lower = llt.L();
+    let lower = cholesky_lower(mass.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
+    let lower = lower.as_ref();
     let mut x = Mat::from_fn(k, k, |i, j| 0.5 * (stiffness[(i, j)] + stiffness[(j, i)]));
-    lower.solve_lower_triangular_in_place(x.as_mut());
+    solve_lower(lower, x.as_mut(), Par::Seq);
     let mut c = x.transpose().to_owned();
-    lower.solve_lower_triangular_in_place(c.as_mut());
+    solve_lower(lower, c.as_mut(), Par::Seq);
     let c = Mat::from_fn(k, k, |i, j| 0.5 * (c[(i, j)] + c[(j, i)]));
-    let eig = c
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
-    let values: Vec<f64> = eig.S().column_vector().iter().copied().collect();
-    let mut y = eig.U().to_owned();
-    lower
-        .transpose()
-        .solve_upper_triangular_in_place(y.as_mut());
+    let (values, eigenvectors) =
+        symmetric_eigen(c.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
+    let mut y = eigenvectors;
+    solve_upper(lower.transpose(), y.as_mut(), Par::Seq);
     Ok((values, y))
 }
 

@@ -22,9 +22,10 @@
 
 use faer::linalg::matmul::matmul;
 use faer::reborrow::{Reborrow, ReborrowMut};
-use faer::{Accum, Mat, Par, Side};
+use faer::{Accum, Mat, Par};
 
 use super::sparse::{Factor, SymmetricSparse, multiply};
+use super::{kernels, parallel};
 use crate::bridge::BridgeError;
 
 /// An accurate product y = A x with the shifted matrix.
@@ -353,12 +354,11 @@ fn tridiagonal_eigen(a: &[f64], b: &[f64]) -> Result<(Vec<f64>, Mat<f64>), Bridg
             0.0
         }
     });
-    let eig = t
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
+    let (values, u) =
+        kernels::symmetric_eigen(t.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
     // faer returns ascending eigenvalues: reverse to descending θ.
-    let thetas = (0..m).rev().map(|i| eig.S()[i]).collect();
-    let vectors = Mat::from_fn(m, m, |i, j| eig.U()[(i, m - 1 - j)]);
+    let thetas = (0..m).rev().map(|i| values[i]).collect();
+    let vectors = Mat::from_fn(m, m, |i, j| u[(i, m - 1 - j)]);
     Ok((thetas, vectors))
 }
 
@@ -407,51 +407,43 @@ fn try_zeros(n: usize, m: usize) -> Result<Mat<f64>, BridgeError> {
 /// Same effect as [`polish`] (inverse iteration divides the error along a
 /// higher mode j by λⱼ/λ) at a cost of O(n·k²) in three matrix products
 /// instead of k Gram–Schmidt sweeps. For a factor of K (shift 0) only.
+/// The solves, the sparse products and the n × k products use the threads
+/// `par` allows, bit-identically whatever their number
+/// ([`super::parallel`]).
 pub fn polish_block(
     mass: &SymmetricSparse,
     stiffness: &SymmetricSparse,
     factor: &Factor,
     vectors: &Mat<f64>,
+    par: Par,
 ) -> Result<(Vec<f64>, Mat<f64>), BridgeError> {
     let (n, k) = (vectors.nrows(), vectors.ncols());
-    let mut workspace = factor.workspace()?;
     // Two n × k matrices only: W, and P holding K W, then M W, then the
     // result W Y.
     let mut w = try_zeros(n, k)?;
     let mut p = try_zeros(n, k)?;
-    let mut column = vec![0.0; n];
-    let mut product = vec![0.0; n];
-    for c in 0..k {
-        let phi: Vec<f64> = vectors.col(c).iter().copied().collect();
-        multiply(mass, &phi, &mut column);
-        factor.solve_in_place(&mut column, &mut workspace);
+    let failed = std::sync::atomic::AtomicBool::new(false);
+    parallel::for_columns_with_solves(par, factor, w.as_mut(), |c, column, workspace, scratch| {
+        let phi = vectors.col(c).try_as_col_major().unwrap().as_slice();
+        multiply(mass, phi, column);
+        factor.solve_in_place(column, workspace);
         // Scale each column to unit M-norm so B is well conditioned.
-        let norm = m_norm(mass, &column, &mut product);
+        let norm = m_norm(mass, column, &mut scratch[0]);
         if !(norm > 0.0 && norm.is_finite()) {
-            return Err(BridgeError::EigenFailed);
+            failed.store(true, std::sync::atomic::Ordering::Relaxed);
         }
-        for i in 0..n {
-            w[(i, c)] = column[i] / norm;
+        for x in column.iter_mut() {
+            *x /= norm;
         }
+    })?;
+    if failed.into_inner() {
+        return Err(BridgeError::EigenFailed);
     }
     let mut a = Mat::<f64>::zeros(k, k);
     let mut b = Mat::<f64>::zeros(k, k);
     for (target, matrix) in [(&mut a, stiffness), (&mut b, mass)] {
-        for c in 0..k {
-            let wc: Vec<f64> = w.col(c).iter().copied().collect();
-            multiply(matrix, &wc, &mut product);
-            for (i, &v) in product.iter().enumerate() {
-                p[(i, c)] = v;
-            }
-        }
-        matmul(
-            target.as_mut(),
-            Accum::Replace,
-            w.transpose(),
-            p.as_ref(),
-            1.0,
-            Par::Seq,
-        );
+        parallel::multiply_columns(par, matrix, w.as_ref(), p.as_mut());
+        parallel::product_tn(target.as_mut(), w.as_ref(), p.as_ref(), par);
     }
     let a = Mat::from_fn(k, k, |i, j| 0.5 * (a[(i, j)] + a[(j, i)]));
     let b = Mat::from_fn(k, k, |i, j| 0.5 * (b[(i, j)] + b[(j, i)]));
@@ -462,8 +454,7 @@ pub fn polish_block(
     // L_B⁻ᵀ, ‖C‖ = λ_k) a low mode in a near-degenerate pair (identical
     // spans) took errors of ε λ_k / gap (measured: 690 modes of a 1,404-DOF
     // two-span viaduct, mode 3's energy residual 3.7e-8).
-    let llt = a.llt(Side::Lower).map_err(|_| BridgeError::EigenFailed)?;
-    let l = llt.L().to_owned();
+    let l = kernels::cholesky_lower(a.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
     let mut c = b;
     faer::linalg::triangular_solve::solve_lower_triangular_in_place(
         l.as_ref(),
@@ -477,17 +468,15 @@ pub fn polish_block(
         Par::Seq,
     );
     let c = Mat::from_fn(k, k, |i, j| 0.5 * (ct[(i, j)] + ct[(j, i)]));
-    let eig = c
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
+    let (values, z) =
+        kernels::symmetric_eigen(c.as_ref(), Par::Seq).ok_or(BridgeError::EigenFailed)?;
     // μ ascending is λ descending: take the columns from the last. Y =
     // L⁻ᵀ Z is A-normalised (yᵀAy = 1, yᵀBy = μ), so each column is
     // divided by √μ for unit M-norm of Φ' = W Y.
-    let mu: Vec<f64> = (0..k).map(|j| eig.S()[k - 1 - j]).collect();
+    let mu: Vec<f64> = (0..k).map(|j| values[k - 1 - j]).collect();
     if mu.iter().any(|&m| !(m > 0.0 && m.is_finite())) {
         return Err(BridgeError::EigenFailed);
     }
-    let z = eig.U();
     let mut y = Mat::from_fn(k, k, |i, j| z[(i, k - 1 - j)]);
     faer::linalg::triangular_solve::solve_upper_triangular_in_place(
         l.transpose(),
@@ -501,13 +490,13 @@ pub fn polish_block(
         }
     }
     let mut polished = p;
-    matmul(
+    parallel::product_nn(
         polished.as_mut(),
         Accum::Replace,
         w.as_ref(),
         y.as_ref(),
         1.0,
-        Par::Seq,
+        par,
     );
     let eigenvalues = mu.iter().map(|m| 1.0 / m).collect();
     Ok((eigenvalues, polished))

@@ -26,11 +26,14 @@ pub mod block;
 pub mod cache;
 mod checks;
 pub mod dense;
+pub mod kernels;
 pub mod lanczos;
+pub mod parallel;
 mod refine;
 pub mod sparse;
 
 use faer::Mat;
+use faer::Par::Seq;
 
 pub use self::checks::{check_dense, verify};
 use self::checks::{first_gap, inertia_check};
@@ -95,11 +98,13 @@ pub struct Pencil {
     pub mass: SymmetricSparse,
     /// LDLᵀ of K, made on first use (static solves and the Lanczos operator).
     stiffness_factor: std::sync::OnceLock<Result<Factor, BridgeError>>,
+    /// The parallelism of the solve ([`Pencil::with_parallelism`]).
+    par: faer::Par,
 }
 
 impl Clone for Pencil {
     fn clone(&self) -> Self {
-        Self::new(self.stiffness.clone(), self.mass.clone())
+        Self::new(self.stiffness.clone(), self.mass.clone()).with_parallelism(self.par)
     }
 }
 
@@ -110,7 +115,24 @@ impl Pencil {
             stiffness,
             mass,
             stiffness_factor: std::sync::OnceLock::new(),
+            par: faer::Par::Seq,
         }
+    }
+
+    /// The pencil with the eigen solve's parallelism set to `par`
+    /// (sequential by default): `Par::Rayon(t)` lets the n × k work of a
+    /// solve use t threads of the current rayon pool. The result is
+    /// bit-identical whatever `par` is: the work is split into parts fixed
+    /// by the sizes alone and combined in a fixed order ([`parallel`]),
+    /// never as a scheduler happens to run it.
+    pub fn with_parallelism(mut self, par: faer::Par) -> Self {
+        self.par = par;
+        self
+    }
+
+    /// The parallelism of the eigen solve.
+    pub fn parallelism(&self) -> faer::Par {
+        self.par
     }
 
     /// Order n.
@@ -174,8 +196,12 @@ impl Pencil {
                 vectors.col_mut(k).copy_from(forward.col(k));
                 for _pass in 0..2 {
                     let lower = m_vectors.as_ref().subcols(0, k);
-                    let overlaps = lower.transpose() * vectors.col(k);
-                    let correction = vectors.as_ref().subcols(0, k) * &overlaps;
+                    let overlaps = kernels::product_col(lower.transpose(), vectors.col(k), Seq);
+                    let correction = kernels::product_col(
+                        vectors.as_ref().subcols(0, k),
+                        overlaps.as_ref(),
+                        Seq,
+                    );
                     for i in 0..n {
                         vectors[(i, k)] -= correction[i];
                     }
@@ -233,21 +259,24 @@ impl Pencil {
 
     /// Checks `pairs` (module doc) with `stiffness` applying K (a model may
     /// offer a more accurate form than the assembled matrix) and records
-    /// the figures in `pairs.check`.
+    /// the figures in `pairs.check`. The modes are checked on the threads
+    /// the pencil's parallelism allows, with the same figures whatever
+    /// their number.
     pub fn verify(
         &self,
         pairs: &mut Eigenpairs,
-        stiffness: impl Fn(&[f64], &mut [f64]),
+        stiffness: impl Fn(&[f64], &mut [f64]) + Sync,
     ) -> Result<(), BridgeError> {
         let factor = self.stiffness_factor()?;
-        let mut workspace = factor.workspace()?;
-        let (largest_residual, largest_plain_residual, orthonormality_error) = verify(
-            stiffness,
-            |x, y| multiply(&self.mass, x, y),
-            |x| factor.solve_in_place(x, &mut workspace),
-            &pairs.eigenvalues,
-            &pairs.vectors,
-        )?;
+        let (largest_residual, largest_plain_residual, orthonormality_error) =
+            checks::verify_parallel(
+                &stiffness,
+                &self.mass,
+                factor,
+                &pairs.eigenvalues,
+                &pairs.vectors,
+                self.par,
+            )?;
         pairs.check.largest_residual = largest_residual;
         pairs.check.largest_plain_residual = largest_plain_residual;
         pairs.check.orthonormality_error = orthonormality_error;
@@ -301,10 +330,11 @@ impl Pencil {
                 // refined below.
                 let unpolished = self.dense_two_sided(want)?;
                 let factor = self.stiffness_factor()?;
-                faer::set_global_parallelism(faer::Par::Seq);
-                let once =
-                    lanczos::polish_block(&self.mass, &self.stiffness, factor, &unpolished.1)?;
-                let twice = lanczos::polish_block(&self.mass, &self.stiffness, factor, &once.1)?;
+                let polish = |vectors| {
+                    lanczos::polish_block(&self.mass, &self.stiffness, factor, vectors, self.par)
+                };
+                let once = polish(&unpolished.1)?;
+                let twice = polish(&once.1)?;
                 let mut candidates = vec![unpolished, once, twice];
                 let residuals = candidates
                     .iter()
@@ -317,18 +347,11 @@ impl Pencil {
                 self.dense_two_sided(want)?
             } else {
                 let factor = self.stiffness_factor()?;
-                if stiffness.is_none() {
-                    // The dense k × k work (tridiagonal and Rayleigh–Ritz
-                    // eigen problems, Cholesky) runs sequentially, as the
-                    // dense path's does, so the result does not depend on
-                    // the thread count.
-                    faer::set_global_parallelism(faer::Par::Seq);
-                }
                 // A large assembled pencil: block Lanczos (matrix–matrix
                 // re-orthogonalisation, multi-right-hand-side solves;
                 // [`block`]), the single-vector run where it declines.
                 let blocked = if stiffness.is_none() && n > DENSE_SHARE_LIMIT {
-                    block::lowest(&self.mass, factor, want)?
+                    block::lowest(&self.mass, factor, want, self.par)?
                 } else {
                     None
                 };
@@ -342,7 +365,9 @@ impl Pencil {
                     Some(_) => lanczos::polish(&self.mass, factor, stiffness, product, &ritz)?,
                     // The assembled matrices are all there is: block
                     // Rayleigh–Ritz, by matrix products.
-                    None => lanczos::polish_block(&self.mass, &self.stiffness, factor, &ritz)?,
+                    None => {
+                        lanczos::polish_block(&self.mass, &self.stiffness, factor, &ritz, self.par)?
+                    }
                 }
             };
             // Cheap where a factorisation is (small pencils, beams); a

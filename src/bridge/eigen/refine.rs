@@ -5,9 +5,10 @@
 //! share (symmetric M-orthonormalisation, energy residuals, ordering).
 
 use faer::Mat;
+use faer::Par::Seq;
 
 use super::sparse::{Factor, SymmetricSparse, multiply, shifted};
-use super::{Pencil, RESIDUAL_BOUND, dense, lanczos};
+use super::{Pencil, RESIDUAL_BOUND, dense, kernels, lanczos};
 use crate::bridge::BridgeError;
 
 /// Relative gap below which neighbours are refined together by
@@ -125,7 +126,7 @@ impl Pencil {
                 }
             }
             let (values, coefficients) = dense::lowest_forward_small(&projected_k, &projected_m)?;
-            let refined = &x * &coefficients;
+            let refined = kernels::product(x.as_ref(), coefficients.as_ref(), Seq);
             for c in 0..k {
                 eigenvalues[a + c] = values[c];
                 vectors.col_mut(a + c).copy_from(refined.col(c));
@@ -250,18 +251,16 @@ pub(super) fn lowdin(mass: &SymmetricSparse, vectors: &mut Mat<f64>) -> Result<(
             m_vectors[(i, mode)] = product[i];
         }
     }
-    let gram = vectors.transpose() * &m_vectors;
+    let gram = kernels::product(vectors.transpose(), m_vectors.as_ref(), Seq);
     let gram = Mat::from_fn(count, count, |i, j| 0.5 * (gram[(i, j)] + gram[(j, i)]));
-    let eig = gram
-        .self_adjoint_eigen(faer::Side::Lower)
-        .map_err(|_| BridgeError::EigenFailed)?;
-    let (u, sigma) = (eig.U(), eig.S().column_vector());
+    let (sigma, u) =
+        kernels::symmetric_eigen(gram.as_ref(), Seq).ok_or(BridgeError::EigenFailed)?;
     if sigma.iter().any(|&v| !(v > 0.0 && v.is_finite())) {
         return Err(BridgeError::EigenFailed);
     }
     let scaled = Mat::from_fn(count, count, |i, j| u[(i, j)] / sigma[j].sqrt());
-    let inverse_root = &scaled * u.transpose();
-    *vectors = &*vectors * &inverse_root;
+    let inverse_root = kernels::product(scaled.as_ref(), u.transpose(), Seq);
+    *vectors = kernels::product(vectors.as_ref(), inverse_root.as_ref(), Seq);
     Ok(())
 }
 

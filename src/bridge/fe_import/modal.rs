@@ -277,15 +277,18 @@ impl ImportedShapes {
     pub fn static_flexibility_at(&self, points: &[ContactPoint]) -> Result<Vec<f64>, BridgeError> {
         let n = self.model.dofs.len();
         let factor = self.pencil.stiffness_factor()?;
-        let mut workspace = factor.block_workspace(FLEXIBILITY_BLOCK)?;
-        let mut block = Mat::<f64>::zeros(n, FLEXIBILITY_BLOCK.min(points.len()));
-        let mut out = Vec::with_capacity(points.len());
-        for chunk in points.chunks(FLEXIBILITY_BLOCK) {
+        let chunks: Vec<&[ContactPoint]> = points.chunks(FLEXIBILITY_BLOCK).collect();
+        // Each chunk of points is one block solve, the same whichever thread
+        // runs it: the result does not depend on the thread count.
+        let par = self.pencil.parallelism();
+        let parts = super::super::eigen::parallel::map(par, chunks.len(), |c| {
+            let chunk = chunks[c];
+            let mut workspace = factor.block_workspace(FLEXIBILITY_BLOCK)?;
+            let mut block = Mat::<f64>::zeros(n, FLEXIBILITY_BLOCK.min(points.len()));
             let weights: Vec<TrackWeights> = chunk
                 .iter()
                 .map(|&(direction, x, y)| track_weights_at(&self.model, direction, x, y))
                 .collect();
-            block.fill(0.0);
             for (j, w) in weights.iter().enumerate() {
                 for &(dof, weight) in w.as_slice() {
                     block[(dof, j)] += weight;
@@ -296,6 +299,7 @@ impl ImportedShapes {
             // A contact couples to the model with its entry weight at a
             // free rail end ([`super::entry`]), as in [`ImportedFlexibility::green`].
             let entry = &self.model.entry;
+            let mut out = Vec::with_capacity(columns);
             for ((j, w), point) in weights.iter().enumerate().zip(chunk) {
                 let g: f64 = w
                     .as_slice()
@@ -309,6 +313,11 @@ impl ImportedShapes {
                 };
                 out.push(g * coupling * coupling);
             }
+            Ok::<_, BridgeError>(out)
+        });
+        let mut out = Vec::with_capacity(points.len());
+        for part in parts {
+            out.extend(part?);
         }
         Ok(out)
     }
