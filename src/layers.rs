@@ -62,6 +62,7 @@ const FRONT_END_FILES: &[&str] = &[
     "cli.rs",
     "run_cmd.rs",
     "modes_cmd.rs",
+    "man_cmd.rs",
     "converge_cmd.rs",
     "generate_cmd.rs",
     "init_cmd.rs",
