@@ -333,11 +333,7 @@ impl ModalBridge {
                     // last kept one (those above were solved past it),
                     // every one solved when the model has fewer moved
                     // modes than the count asks for.
-                    let wanted = match request {
-                        ModeRequest::Lowest(n) | ModeRequest::AtLeastUpTo(n, _) => n,
-                        _ => 0,
-                    };
-                    let last = if kept.len() < wanted {
+                    let last = if kept.len() < moved_wanted(request) {
                         solved
                     } else {
                         kept.last().map_or(0, |&c| c + 1)
@@ -457,6 +453,16 @@ pub(super) fn select_count(
     }
 }
 
+/// How many moved modes a request's count asks for (0: a cut-off alone,
+/// or [`ModeRequest::LowestUpTo`], which [`ModalBridge::build_excited`]
+/// turns into counts).
+fn moved_wanted(request: ModeRequest) -> usize {
+    match request {
+        ModeRequest::Lowest(n) | ModeRequest::AtLeastUpTo(n, _) => n,
+        ModeRequest::UpTo(_) | ModeRequest::LowestUpTo(..) => 0,
+    }
+}
+
 /// The modes of an imported model a request keeps among those the scene
 /// moves ([`fe_import::excited::excited_modes`]): `count` (the request's
 /// own count, [`select_count`]) solved first; a request with a count
@@ -483,10 +489,7 @@ fn solve_excited(
     ),
     BridgeError,
 > {
-    let wanted = match request {
-        ModeRequest::Lowest(n) | ModeRequest::AtLeastUpTo(n, _) => n,
-        ModeRequest::UpTo(_) | ModeRequest::LowestUpTo(..) => 0,
-    };
+    let wanted = moved_wanted(request);
     let mut solved = count;
     let mut settled = false;
     loop {
@@ -561,11 +564,14 @@ impl ModalBridge {
                 }
             })
             .collect();
+        let count = match self.left_out.len() {
+            1 => "1 mode".to_string(),
+            n => format!("{n} modes"),
+        };
         Some(format!(
-            "; {} modes left out of them and of the count ({}): the scene cannot move them \
+            "; {count} left out of them and of the count ({}): the scene cannot move them \
              (at the rails the vehicles load they move less than {:e} of their largest motion, \
              and no ground motion drives them)",
-            self.left_out.len(),
             listed.join(", "),
             fe_import::excited::UNEXCITED_SHARE
         ))
