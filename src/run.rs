@@ -126,17 +126,25 @@ fn run_scene(
                         .map_err(BuildError::from)?
                         .every(every);
                     let coupled_start = Instant::now();
-                    solve::coupled::run(model, &mut coupled, &mut |_, _| {})?;
+                    solve::run_method(
+                        model,
+                        crate::scene::SolverMethod::Coupled,
+                        &mut coupled,
+                        None,
+                        &mut |_, _| {},
+                    )?;
                     Ok((coupled.finish(), coupled_start.elapsed().as_secs_f64()))
                 })
             })
         });
         let solve_start = Instant::now();
-        let stats = match zero_order.as_mut() {
-            Some(zero) => solve::embs::run_orders(&model, &mut recorder, Some(zero), progress)
-                .map(|()| solve::SolveStats::default()),
-            None => solve::run(&model, &mut recorder, progress),
-        };
+        let stats = solve::run_method(
+            &model,
+            model.method,
+            &mut recorder,
+            zero_order.as_mut().map(|z| z as &mut dyn solve::Observer),
+            progress,
+        );
         let solve_time = solve_start.elapsed().as_secs_f64();
         let reference = coupled.map(|handle| {
             handle

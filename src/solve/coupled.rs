@@ -16,80 +16,109 @@ use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::permanent::PermanentContacts;
-use super::{Observer, Progress, SolveError, StepView};
+use super::time_loop::Stepper;
+use super::{SolveError, StepView};
 use crate::model::Model;
 
-/// Integrates the model with permanent contact, calling `observer` at t = 0
-/// and after every step.
-pub fn run(
-    model: &Model,
-    observer: &mut dyn Observer,
-    progress: Progress<'_>,
-) -> Result<(), SolveError> {
-    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
-    let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm)
-        .with_ground(model.ground_participation())
-        .with_lateral_ground(model.lateral_ground_participation());
-    let mut step_state = PermanentContacts::new(model, &nm)?;
-    let nc = step_state.count();
+/// The coupled method's state and work arrays, for [`super::time_loop::drive`].
+#[derive(Debug)]
+pub struct Coupled<'a> {
+    model: &'a Model,
+    nm: Newmark,
+    modal: ModalStep,
+    contacts: PermanentContacts,
+    ground: GroundStep,
+    sens: Vec<[f64; 3]>,
+    system: Vec<f64>,
+    lambda: Vec<f64>,
+    contact_forces: Vec<f64>,
+    contact_gaps: Vec<f64>,
+    wheel_positions: Vec<f64>,
+}
 
-    // Work arrays.
-    let mut sens = vec![[0.0f64; 3]; nc * nc];
-    let mut system = vec![0.0; nc * nc];
-    let mut lambda = vec![0.0; nc];
-    let nw = model.wheels.len();
-    let mut contact_forces = model.static_wheel_loads.clone();
-    let contact_gaps = vec![0.0; nw];
-    let mut wheel_positions = vec![0.0; nw];
-    model.wheel_positions(0.0, &mut wheel_positions);
+impl<'a> Coupled<'a> {
+    /// `model` at rest at t = 0, every work array allocated.
+    ///
+    /// # Errors
+    ///
+    /// [`PermanentContacts::new`]'s: a vehicle whose free DOFs cannot be
+    /// condensed.
+    pub fn new(model: &'a Model) -> Result<Self, SolveError> {
+        let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+        let modal = ModalStep::new(&model.bridge, &nm)
+            .with_ground(model.ground_participation())
+            .with_lateral_ground(model.lateral_ground_participation());
+        let contacts = PermanentContacts::new(model, &nm)?;
+        let nc = contacts.count();
+        let nw = model.wheels.len();
+        let mut wheel_positions = vec![0.0; nw];
+        model.wheel_positions(0.0, &mut wheel_positions);
+        Ok(Self {
+            model,
+            ground: GroundStep::new(model, &nm),
+            nm,
+            modal,
+            contacts,
+            sens: vec![[0.0f64; 3]; nc * nc],
+            system: vec![0.0; nc * nc],
+            lambda: vec![0.0; nc],
+            contact_forces: model.static_wheel_loads.clone(),
+            contact_gaps: vec![0.0; nw],
+            wheel_positions,
+        })
+    }
+}
 
-    observer.observe(&StepView::of(
-        0,
-        0.0,
-        &modal,
-        &step_state.states,
-        &contact_forces,
-        &contact_gaps,
-        &wheel_positions,
-    ));
+impl Stepper for Coupled<'_> {
+    type Error = SolveError;
 
-    let guard = Guard::new(model);
-    let mut ground = GroundStep::new(model, &nm);
-    let report_every = (model.steps / 200).max(1);
-    for step in 1..=model.steps {
-        let t = step as f64 * model.time_step;
-        model.wheel_positions(t, &mut wheel_positions);
-        step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
-        step_state.lateral_ground = ground.lateral_load;
-        step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
+    fn models(&self) -> &[&Model] {
+        std::slice::from_ref(&self.model)
+    }
+
+    fn advance(&mut self, _step: usize, t: f64) -> Result<(), SolveError> {
+        let (model, nm) = (self.model, &self.nm);
+        let step_state = &mut self.contacts;
+        let nc = step_state.count();
+        model.wheel_positions(t, &mut self.wheel_positions);
+        step_state.gravity_ratio = self.ground.step_of(model, &mut self.modal, t);
+        step_state.lateral_ground = self.ground.lateral_load;
+        step_state.begin_step(
+            model,
+            nm,
+            &mut self.modal,
+            t,
+            &self.wheel_positions,
+            &self.contact_forces,
+        );
 
         // (I − A)λ = b from the wheels' sensitivities and the vehicles' rows.
-        step_state.contact_system(&mut sens, &mut system);
-        step_state.vehicle_forces(&step_state.base, &mut lambda);
-        if nc > 0 && !lu_solve(&mut system, &mut lambda, nc) {
+        step_state.contact_system(&mut self.sens, &mut self.system);
+        step_state.vehicle_forces(&step_state.base, &mut self.lambda);
+        if nc > 0 && !lu_solve(&mut self.system, &mut self.lambda, nc) {
             return Err(SolveError::SingularContact {
                 time: t,
                 reason: "the condensed contact system is singular".into(),
             });
         }
-        step_state.finish_step(&nm, &mut modal, &lambda, &mut contact_forces);
+        step_state.finish_step(nm, &mut self.modal, &self.lambda, &mut self.contact_forces);
+        Ok(())
+    }
 
-        guard.check(model, &modal, &step_state.states, &lambda, t, step)?;
+    fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
+        let energy = Guard::energy(self.model, &self.modal, &self.contacts.states);
+        (energy, &self.lambda)
+    }
 
-        observer.observe(&StepView::of(
+    fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
+        StepView::of(
             step,
             t,
-            &modal,
-            &step_state.states,
-            &contact_forces,
-            &contact_gaps,
-            &wheel_positions,
-        ));
-        if step % report_every == 0 || step == model.steps {
-            progress(step, model.steps);
-            super::cancel::check()?;
-        }
+            &self.modal,
+            &self.contacts.states,
+            &self.contact_forces,
+            &self.contact_gaps,
+            &self.wheel_positions,
+        )
     }
-    Ok(())
 }

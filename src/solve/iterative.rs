@@ -32,7 +32,8 @@ use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::permanent::PermanentContacts;
-use super::{Observer, Progress, SolveError, SolveStats, StepView, describe_positions};
+use super::time_loop::Stepper;
+use super::{SolveError, SolveStats, StepView, describe_positions};
 use crate::model::Model;
 
 /// Smallest deflection scale of the convergence test, m: below a nanometre
@@ -41,152 +42,220 @@ pub const DISPLACEMENT_FLOOR: f64 = 1e-9;
 /// Smallest force scale of the convergence test, N.
 pub const FORCE_FLOOR: f64 = 1.0;
 
-/// Integrates the model with permanent contact by per-step iteration.
-pub fn run(
-    model: &Model,
-    observer: &mut dyn Observer,
-    progress: Progress<'_>,
-) -> Result<SolveStats, SolveError> {
-    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
-    let bridge = &model.bridge;
-    let mut modal = ModalStep::new(bridge, &nm)
-        .with_ground(model.ground_participation())
-        .with_lateral_ground(model.lateral_ground_participation());
-    let mut step_state = PermanentContacts::new(model, &nm)?;
-    let nc = step_state.count();
-    let (tolerance, max_iterations) = (model.iteration.tolerance, model.iteration.max_iterations);
-
-    let nw = model.wheels.len();
-    let mut contact_forces = model.static_wheel_loads.clone();
-    let contact_gaps = vec![0.0; nw];
-    let mut wheel_positions = vec![0.0; nw];
-    model.wheel_positions(0.0, &mut wheel_positions);
+/// The iterative method's state and work arrays, for
+/// [`super::time_loop::drive`].
+#[derive(Debug)]
+pub struct Iterative<'a> {
+    model: &'a Model,
+    nm: Newmark,
+    modal: ModalStep,
+    contacts: PermanentContacts,
+    ground: GroundStep,
+    contact_forces: Vec<f64>,
+    contact_gaps: Vec<f64>,
+    wheel_positions: Vec<f64>,
     // Work arrays: forces, their update, residuals, wheel kinematics.
-    let mut lambda = vec![0.0; nc];
-    let mut answer = vec![0.0; nc];
-    let mut residual = vec![0.0; nc];
-    let mut previous_residual = vec![0.0; nc];
-    let mut kinematics = vec![[0.0f64; 3]; nc];
-    let mut previous_displacement = vec![0.0; nc];
-    for (c, contact) in step_state.contacts.iter().enumerate() {
-        lambda[c] = contact_forces[contact.wheel];
+    lambda: Vec<f64>,
+    answer: Vec<f64>,
+    residual: Vec<f64>,
+    previous_residual: Vec<f64>,
+    kinematics: Vec<[f64; 3]>,
+    previous_displacement: Vec<f64>,
+    total_iterations: usize,
+    most_iterations: usize,
+}
+
+impl<'a> Iterative<'a> {
+    /// `model` at rest at t = 0, every work array allocated; the first
+    /// step's iteration starts from the static wheel loads.
+    ///
+    /// # Errors
+    ///
+    /// [`PermanentContacts::new`]'s.
+    pub fn new(model: &'a Model) -> Result<Self, SolveError> {
+        let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+        let modal = ModalStep::new(&model.bridge, &nm)
+            .with_ground(model.ground_participation())
+            .with_lateral_ground(model.lateral_ground_participation());
+        let contacts = PermanentContacts::new(model, &nm)?;
+        let nc = contacts.count();
+        let nw = model.wheels.len();
+        let contact_forces = model.static_wheel_loads.clone();
+        let mut wheel_positions = vec![0.0; nw];
+        model.wheel_positions(0.0, &mut wheel_positions);
+        let mut lambda = vec![0.0; nc];
+        for (c, contact) in contacts.contacts.iter().enumerate() {
+            lambda[c] = contact_forces[contact.wheel];
+        }
+        Ok(Self {
+            model,
+            ground: GroundStep::new(model, &nm),
+            nm,
+            modal,
+            contacts,
+            contact_forces,
+            contact_gaps: vec![0.0; nw],
+            wheel_positions,
+            lambda,
+            answer: vec![0.0; nc],
+            residual: vec![0.0; nc],
+            previous_residual: vec![0.0; nc],
+            kinematics: vec![[0.0f64; 3]; nc],
+            previous_displacement: vec![0.0; nc],
+            total_iterations: 0,
+            most_iterations: 0,
+        })
     }
 
-    observer.observe(&StepView::of(
-        0,
-        0.0,
-        &modal,
-        &step_state.states,
-        &contact_forces,
-        &contact_gaps,
-        &wheel_positions,
-    ));
-
-    let guard = Guard::new(model);
-    let mut ground = GroundStep::new(model, &nm);
-    let report_every = (model.steps / 200).max(1);
-    let (mut total_iterations, mut most_iterations) = (0usize, 0usize);
-    for step in 1..=model.steps {
-        let t = step as f64 * model.time_step;
-        model.wheel_positions(t, &mut wheel_positions);
-        step_state.gravity_ratio = ground.step_of(model, &mut modal, t);
-        step_state.lateral_ground = ground.lateral_load;
-        step_state.begin_step(model, &nm, &mut modal, t, &wheel_positions, &contact_forces);
-
+    /// The vehicle–bridge iteration of the step ending at `t` (s) (the
+    /// module's steps 1–4), from the contact forces in `lambda`; returns
+    /// the iterations it took.
+    fn iterate(&mut self, t: f64) -> Result<usize, SolveError> {
+        let model = self.model;
+        let (tolerance, max_iterations) =
+            (model.iteration.tolerance, model.iteration.max_iterations);
+        let Self {
+            contacts: step_state,
+            lambda,
+            answer,
+            residual,
+            previous_residual,
+            kinematics,
+            previous_displacement,
+            ..
+        } = self;
+        let nc = step_state.count();
         let mut relaxation = 1.0;
         let mut iterations = 0;
-        if nc > 0 {
-            step_state.bridge_kinematics(&lambda, &mut kinematics);
-            for (w, k) in previous_displacement.iter_mut().zip(&kinematics) {
+        step_state.bridge_kinematics(lambda, kinematics);
+        for (w, k) in previous_displacement.iter_mut().zip(kinematics.iter()) {
+            *w = k[0];
+        }
+        loop {
+            iterations += 1;
+            step_state.vehicle_forces(kinematics, answer);
+            for c in 0..nc {
+                residual[c] = answer[c] - lambda[c];
+            }
+            if iterations > 1 {
+                // Aitken: ω ← −ω r_{k−1}·(r_k − r_{k−1}) / |r_k − r_{k−1}|².
+                let (mut numerator, mut denominator) = (0.0, 0.0);
+                for c in 0..nc {
+                    let change = residual[c] - previous_residual[c];
+                    numerator += previous_residual[c] * change;
+                    denominator += change * change;
+                }
+                if denominator > 0.0 {
+                    relaxation = -relaxation * numerator / denominator;
+                }
+            }
+            for c in 0..nc {
+                lambda[c] += relaxation * residual[c];
+            }
+            previous_residual.copy_from_slice(residual);
+            step_state.bridge_kinematics(lambda, kinematics);
+            let (mut change, mut scale) = (0.0f64, DISPLACEMENT_FLOOR);
+            for (w, k) in previous_displacement.iter_mut().zip(kinematics.iter()) {
+                change = change.max((k[0] - *w).abs());
+                scale = scale.max(k[0].abs());
                 *w = k[0];
             }
-            loop {
-                iterations += 1;
-                step_state.vehicle_forces(&kinematics, &mut answer);
-                for c in 0..nc {
-                    residual[c] = answer[c] - lambda[c];
-                }
-                if iterations > 1 {
-                    // Aitken: ω ← −ω r_{k−1}·(r_k − r_{k−1}) / |r_k − r_{k−1}|².
-                    let (mut numerator, mut denominator) = (0.0, 0.0);
-                    for c in 0..nc {
-                        let change = residual[c] - previous_residual[c];
-                        numerator += previous_residual[c] * change;
-                        denominator += change * change;
-                    }
-                    if denominator > 0.0 {
-                        relaxation = -relaxation * numerator / denominator;
-                    }
-                }
-                for c in 0..nc {
-                    lambda[c] += relaxation * residual[c];
-                }
-                previous_residual.copy_from_slice(&residual);
-                step_state.bridge_kinematics(&lambda, &mut kinematics);
-                let (mut change, mut scale) = (0.0f64, DISPLACEMENT_FLOOR);
-                for (w, k) in previous_displacement.iter_mut().zip(&kinematics) {
-                    change = change.max((k[0] - *w).abs());
-                    scale = scale.max(k[0].abs());
-                    *w = k[0];
-                }
-                let (mut force_change, mut force_scale) = (0.0f64, FORCE_FLOOR);
-                for (r, f) in residual.iter().zip(&lambda) {
-                    force_change = force_change.max((relaxation * r).abs());
-                    force_scale = force_scale.max(f.abs());
-                }
-                if !(change.is_finite() && lambda.iter().all(|f| f.is_finite())) {
-                    return Err(SolveError::NotConverged {
-                        time: t,
-                        positions: describe_positions(model, t),
-                        iterations,
-                        reason: "the interaction forces became non-finite".into(),
-                    });
-                }
-                if change <= tolerance * scale && force_change <= tolerance * force_scale {
-                    break;
-                }
-                if iterations >= max_iterations {
-                    return Err(SolveError::NotConverged {
-                        time: t,
-                        positions: describe_positions(model, t),
-                        iterations,
-                        reason: format!(
-                            "the contact displacements still change by {:.3e} and the forces by \
-                             {:.3e} of their size (tolerance {tolerance:.1e}); raise \
-                             `max_iterations`, shorten the time step, or use `method: coupled`",
-                            change / scale,
-                            force_change / force_scale
-                        ),
-                    });
-                }
+            let (mut force_change, mut force_scale) = (0.0f64, FORCE_FLOOR);
+            for (r, f) in residual.iter().zip(lambda.iter()) {
+                force_change = force_change.max((relaxation * r).abs());
+                force_scale = force_scale.max(f.abs());
+            }
+            if !(change.is_finite() && lambda.iter().all(|f| f.is_finite())) {
+                return Err(SolveError::NotConverged {
+                    time: t,
+                    positions: describe_positions(model, t),
+                    iterations,
+                    reason: "the interaction forces became non-finite".into(),
+                });
+            }
+            if change <= tolerance * scale && force_change <= tolerance * force_scale {
+                return Ok(iterations);
+            }
+            if iterations >= max_iterations {
+                return Err(SolveError::NotConverged {
+                    time: t,
+                    positions: describe_positions(model, t),
+                    iterations,
+                    reason: format!(
+                        "the contact displacements still change by {:.3e} and the forces by \
+                         {:.3e} of their size (tolerance {tolerance:.1e}); raise \
+                         `max_iterations`, shorten the time step, or use `method: coupled`",
+                        change / scale,
+                        force_change / force_scale
+                    ),
+                });
             }
         }
-        total_iterations += iterations;
-        most_iterations = most_iterations.max(iterations);
-        step_state.finish_step(&nm, &mut modal, &lambda, &mut contact_forces);
+    }
+}
 
-        guard.check(model, &modal, &step_state.states, &lambda, t, step)?;
+impl Stepper for Iterative<'_> {
+    type Error = SolveError;
 
-        observer.observe(&StepView::of(
+    fn models(&self) -> &[&Model] {
+        std::slice::from_ref(&self.model)
+    }
+
+    fn advance(&mut self, _step: usize, t: f64) -> Result<(), SolveError> {
+        let model = self.model;
+        model.wheel_positions(t, &mut self.wheel_positions);
+        let step_state = &mut self.contacts;
+        step_state.gravity_ratio = self.ground.step_of(model, &mut self.modal, t);
+        step_state.lateral_ground = self.ground.lateral_load;
+        step_state.begin_step(
+            model,
+            &self.nm,
+            &mut self.modal,
+            t,
+            &self.wheel_positions,
+            &self.contact_forces,
+        );
+        let iterations = if self.contacts.count() > 0 {
+            self.iterate(t)?
+        } else {
+            0
+        };
+        self.total_iterations += iterations;
+        self.most_iterations = self.most_iterations.max(iterations);
+        self.contacts.finish_step(
+            &self.nm,
+            &mut self.modal,
+            &self.lambda,
+            &mut self.contact_forces,
+        );
+        Ok(())
+    }
+
+    fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
+        let energy = Guard::energy(self.model, &self.modal, &self.contacts.states);
+        (energy, &self.lambda)
+    }
+
+    fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
+        StepView::of(
             step,
             t,
-            &modal,
-            &step_state.states,
-            &contact_forces,
-            &contact_gaps,
-            &wheel_positions,
-        ));
-        if step % report_every == 0 || step == model.steps {
-            progress(step, model.steps);
-            super::cancel::check()?;
+            &self.modal,
+            &self.contacts.states,
+            &self.contact_forces,
+            &self.contact_gaps,
+            &self.wheel_positions,
+        )
+    }
+
+    fn stats(&self) -> SolveStats {
+        SolveStats {
+            iterations: Some(IterationStats {
+                mean: self.total_iterations as f64 / self.model.steps.max(1) as f64,
+                max: self.most_iterations,
+            }),
         }
     }
-    Ok(SolveStats {
-        iterations: Some(IterationStats {
-            mean: total_iterations as f64 / model.steps.max(1) as f64,
-            max: most_iterations,
-        }),
-    })
 }
 
 /// Iteration counts of the `iterative` solver over a run.

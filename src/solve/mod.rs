@@ -24,6 +24,7 @@ pub mod partition;
 pub mod permanent;
 mod residual_rates;
 pub mod row_spans;
+pub mod time_loop;
 pub mod unilateral;
 
 use nalgebra::DVector;
@@ -177,22 +178,64 @@ pub struct SolveStats {
     pub iterations: Option<iterative::IterationStats>,
 }
 
-/// Integrates the model with its solver method.
+/// Integrates the model with its solver method, calling `observer` at
+/// t = 0 and after every step.
+///
+/// # Errors
+///
+/// The method's failure, divergence, or cancellation ([`time_loop::drive`]).
 pub fn run(
     model: &Model,
     observer: &mut dyn Observer,
     progress: Progress<'_>,
 ) -> Result<SolveStats, SolveError> {
-    match model.method {
-        SolverMethod::Iterative => iterative::run(model, observer, progress),
+    run_method(model, model.method, observer, None, progress)
+}
+
+/// The one dispatch from a solver method to its [`time_loop::Stepper`]:
+/// integrates `model` with `method`, calling `observer` at t = 0 and after
+/// every step, and `zero_order` (when given) at the same instants with the
+/// zero order of an expansion alone (EMBS: [`embs::run_orders`];
+/// the other methods have no expansion and leave it unobserved).
+///
+/// # Errors
+///
+/// As [`run`].
+pub fn run_method(
+    model: &Model,
+    method: SolverMethod,
+    observer: &mut dyn Observer,
+    zero_order: Option<&mut dyn Observer>,
+    progress: Progress<'_>,
+) -> Result<SolveStats, SolveError> {
+    match method {
+        SolverMethod::Coupled => drive_one(
+            &mut coupled::Coupled::new(model)?,
+            &mut [observer],
+            progress,
+        ),
+        SolverMethod::Iterative => drive_one(
+            &mut iterative::Iterative::new(model)?,
+            &mut [observer],
+            progress,
+        ),
         SolverMethod::Lcp => {
             unilateral::run(model, observer, progress).map(|()| SolveStats::default())
         }
-        SolverMethod::Coupled => {
-            coupled::run(model, observer, progress).map(|()| SolveStats::default())
+        SolverMethod::Embs => {
+            embs::run_orders(model, observer, zero_order, progress).map(|()| SolveStats::default())
         }
-        SolverMethod::Embs => embs::run(model, observer, progress).map(|()| SolveStats::default()),
     }
+}
+
+/// [`time_loop::drive`] for one scene, then the stepper's own report.
+fn drive_one<S: time_loop::Stepper<Error = SolveError>>(
+    stepper: &mut S,
+    observers: &mut [&mut dyn Observer],
+    progress: Progress<'_>,
+) -> Result<SolveStats, SolveError> {
+    time_loop::drive(stepper, observers, progress)?;
+    Ok(stepper.stats())
 }
 
 /// Progress reporting: called with (steps done, total steps) now and then.
