@@ -101,58 +101,25 @@ fn run_scene(
     if let Some(why) = crate::solve::embs_scale::refusal(&model, &scenario.record) {
         return Err(RunError::EmbsOutOfRange(why));
     }
-    // EMBS with its first order also records the zero order alone, for
-    // the a-posteriori check of the expansion (report::embs).
-    let mut zero_order = match model.embs {
-        Some(e) if e.first_order && model.method == crate::scene::SolverMethod::Embs => Some(
+    // A method that shows the zero order of its expansion alone (EMBS with
+    // its first order) has it recorded too, for the a-posteriori check of
+    // the expansion (report::embs).
+    let mut zero_order = if solve::shows_zero_order(&model) {
+        Some(
             Recorder::new(&model, &scenario.record)
                 .map_err(BuildError::from)?
                 .every(scenario.output.every),
-        ),
-        _ => None,
+        )
+    } else {
+        None
     };
-    // EMBS compared with `coupled`: the same model and records through the
-    // coupled solver as the reference, on a second thread while EMBS runs
-    // (the two runs share nothing but the model; on two cores the pair takes
-    // the time of the slower one).
-    let embs_compared = compare && model.method == crate::scene::SolverMethod::Embs;
-    let (stats, solve_time, reference) = std::thread::scope(|scope| {
-        let coupled = embs_compared.then(|| {
-            let token = solve::cancel::current();
-            let (model, record, every) = (&model, &scenario.record, scenario.output.every);
-            scope.spawn(move || {
-                solve::cancel::in_scope(token.as_ref(), || -> Result<_, RunError> {
-                    let mut coupled = Recorder::new(model, record)
-                        .map_err(BuildError::from)?
-                        .every(every);
-                    let coupled_start = Instant::now();
-                    solve::run_method(
-                        model,
-                        crate::scene::SolverMethod::Coupled,
-                        &mut coupled,
-                        None,
-                        &mut |_, _| {},
-                    )?;
-                    Ok((coupled.finish(), coupled_start.elapsed().as_secs_f64()))
-                })
-            })
-        });
-        let solve_start = Instant::now();
-        let stats = solve::run_method(
-            &model,
-            model.method,
-            &mut recorder,
-            zero_order.as_mut().map(|z| z as &mut dyn solve::Observer),
-            progress,
-        );
-        let solve_time = solve_start.elapsed().as_secs_f64();
-        let reference = coupled.map(|handle| {
-            handle
-                .join()
-                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
-        });
-        (stats, solve_time, reference)
-    });
+    let (stats, solve_time, reference) = solve_compared(
+        &model,
+        &scenario,
+        &mut recorder,
+        zero_order.as_mut(),
+        progress,
+    );
     let stats = stats?;
     let reference = reference.transpose()?;
     let zero_order = zero_order.map(Recorder::finish);
@@ -178,6 +145,61 @@ fn run_scene(
         model,
         history,
         summary,
+    })
+}
+
+/// A reference run's history and its solve time, s.
+type Reference = (History, f64);
+
+/// Integrates `model` with its method into `recorder` (and `zero_order`,
+/// [`solve::run_method`]), and with the method it is compared with, when
+/// the scene asks ([`solve::reference_method`]: EMBS with `coupled`): the
+/// same model and records through the reference as well, on a second
+/// thread while the method runs (the two runs share nothing but the
+/// model; on two cores the pair takes the time of the slower one).
+/// Returns the method's result, its solve time (s) and the reference's.
+fn solve_compared(
+    model: &Model,
+    scenario: &Scenario,
+    recorder: &mut Recorder<'_>,
+    zero_order: Option<&mut Recorder<'_>>,
+    progress: Progress<'_>,
+) -> (
+    Result<solve::SolveStats, SolveError>,
+    f64,
+    Option<Result<Reference, RunError>>,
+) {
+    let reference_method = solve::reference_method(model);
+    std::thread::scope(|scope| {
+        let reference_run = reference_method.map(|method| {
+            let token = solve::cancel::current();
+            let (record, every) = (&scenario.record, scenario.output.every);
+            scope.spawn(move || {
+                solve::cancel::in_scope(token.as_ref(), || -> Result<_, RunError> {
+                    let mut recorder = Recorder::new(model, record)
+                        .map_err(BuildError::from)?
+                        .every(every);
+                    let start = Instant::now();
+                    solve::run_method(model, method, &mut recorder, None, &mut |_, _| {})?;
+                    Ok((recorder.finish(), start.elapsed().as_secs_f64()))
+                })
+            })
+        });
+        let solve_start = Instant::now();
+        let stats = solve::run_method(
+            model,
+            model.method,
+            recorder,
+            zero_order.map(|z| z as &mut dyn solve::Observer),
+            progress,
+        );
+        let solve_time = solve_start.elapsed().as_secs_f64();
+        let reference = reference_run.map(|handle| {
+            handle
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        });
+        (stats, solve_time, reference)
     })
 }
 

@@ -46,7 +46,8 @@ use super::guard::Guard;
 use super::modal::ModalStep;
 use super::newmark::Newmark;
 use super::permanent::PermanentContacts;
-use super::{GroundStep, Observer, Progress, SolveError, StepView};
+use super::time_loop::Stepper;
+use super::{GroundStep, SolveError, StepView};
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::{VehicleModel, WheelKind};
@@ -196,136 +197,180 @@ fn drive_vehicle(
     }
 }
 
-/// Integrates the model by EMBS, calling `observer` at t = 0 and after
-/// every step with the summed bridge response and the Eq. 3 vehicles.
-pub fn run(
-    model: &Model,
-    observer: &mut dyn Observer,
-    progress: Progress<'_>,
-) -> Result<(), SolveError> {
-    run_orders(model, observer, None, progress)
+/// The EMBS method's state and work arrays, for
+/// [`super::time_loop::drive`]: the two bridge orders, the Eq. 6 upper
+/// part, the Eq. 3 vehicle and, when asked, the Eq. 3 vehicle on the zero
+/// order alone.
+///
+/// Views: 0 is the summed bridge response u_B⁽⁰⁾ + u_B⁽¹⁾ with the Eq. 3
+/// vehicles; with [`Self::new`]'s `zero_order`, 1 is the zero order alone,
+/// the bridge u_B⁽⁰⁾ and an Eq. 3 vehicle on u_B⁽⁰⁾ (the a-posteriori check
+/// of the expansion, [`crate::report::embs`], differences the two). The
+/// guard watches the zero-order bridge with the Eq. 3 vehicles.
+#[derive(Debug)]
+pub struct Embs<'a> {
+    model: &'a Model,
+    nm: Newmark,
+    first_order: bool,
+    /// Whether the zero order alone is a view of its own.
+    zero_view: bool,
+    ground: GroundStep,
+    modal0: ModalStep,
+    modal1: ModalStep,
+    /// The vehicles reduced to their wheel masses, loaded (zero order) and
+    /// unloaded (first order).
+    zero_order: Model,
+    first: Model,
+    bridge0: PermanentContacts,
+    bridge1: PermanentContacts,
+    upper: PermanentContacts,
+    vehicle: PermanentContacts,
+    vehicle0: PermanentContacts,
+    /// The static suspension force on each wheel, −(λ_static + f_g,w): the
+    /// vehicle's weight the modified bridge system carries (f_B,gravity).
+    statics: Vec<f64>,
+    /// Which of each vehicle's DOFs are wheel DOFs, looked up per DOF in
+    /// the first-order load (a search of the wheel list there cost a fifth
+    /// of an 8-car train's step).
+    is_wheel_dof: Vec<Vec<bool>>,
+    sens: Vec<[f64; 3]>,
+    system: Vec<f64>,
+    pivots: Vec<usize>,
+    lambda0: Vec<f64>,
+    lambda1: Vec<f64>,
+    lambda: Vec<f64>,
+    lambda_zero: Vec<f64>,
+    suspension: Vec<f64>,
+    suspension_previous: Vec<f64>,
+    weighted: Vec<f64>,
+    kinematics: Vec<[f64; 3]>,
+    forces0: Vec<f64>,
+    forces1: Vec<f64>,
+    contact_forces: Vec<f64>,
+    contact_forces0: Vec<f64>,
+    contact_gaps: Vec<f64>,
+    wheel_positions: Vec<f64>,
+    /// The recorded bridge response u_B⁽⁰⁾ + u_B⁽¹⁾ and its acceleration.
+    displacement: Vec<f64>,
+    acceleration: Vec<f64>,
 }
 
-/// [`run`], also calling `zero_observer` (when given) at the same instants
-/// with the zero order alone: the bridge u_B⁽⁰⁾ and an Eq. 3 vehicle on
-/// u_B⁽⁰⁾ (the a-posteriori check of the expansion,
-/// [`crate::report::embs`], differences the two).
-pub fn run_orders(
-    model: &Model,
-    observer: &mut dyn Observer,
-    mut zero_observer: Option<&mut dyn Observer>,
-    progress: Progress<'_>,
-) -> Result<(), SolveError> {
-    let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
-    let first_order = model.embs.is_none_or(|e| e.first_order);
-    let bridge = &model.bridge;
-    let modes = bridge.mode_count();
-    let mut modal0 = ModalStep::new(bridge, &nm)
-        .with_ground(model.ground_participation())
-        .with_lateral_ground(model.lateral_ground_participation());
-    let mut modal1 = ModalStep::new(bridge, &nm);
-    let zero_order = Model {
-        vehicles: model
-            .vehicles
+impl<'a> Embs<'a> {
+    /// `model` at rest at t = 0, every work array allocated; with
+    /// `zero_order`, the zero order alone is stepped and shown too.
+    ///
+    /// # Errors
+    ///
+    /// [`PermanentContacts::new`]'s, for the full or the reduced vehicles.
+    pub fn new(model: &'a Model, zero_order: bool) -> Result<Self, SolveError> {
+        let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+        let bridge = &model.bridge;
+        let modal0 = ModalStep::new(bridge, &nm)
+            .with_ground(model.ground_participation())
+            .with_lateral_ground(model.lateral_ground_participation());
+        let modal1 = ModalStep::new(bridge, &nm);
+        let reduced = Model {
+            vehicles: model
+                .vehicles
+                .iter()
+                .map(|v| wheel_masses(v, true))
+                .collect(),
+            ..model.clone()
+        };
+        let first = Model {
+            vehicles: model
+                .vehicles
+                .iter()
+                .map(|v| wheel_masses(v, false))
+                .collect(),
+            ground: None,
+            ..model.clone()
+        };
+        let mut bridge0 = PermanentContacts::new(&reduced, &nm)?;
+        let mut bridge1 = PermanentContacts::new(&first, &nm)?;
+        bridge1.follow_irregularity = false;
+        at_zero(&mut bridge0);
+        at_zero(&mut bridge1);
+        // The Eq. 6 upper part on held wheels, and the Eq. 3 vehicle.
+        let upper = PermanentContacts::new(model, &nm)?;
+        let vehicle = PermanentContacts::new(model, &nm)?;
+        // The Eq. 3 vehicle on the zero-order bridge alone.
+        let vehicle0 = PermanentContacts::new(model, &nm)?;
+        let nc = bridge0.count();
+        let statics: Vec<f64> = bridge0
+            .contacts
             .iter()
-            .map(|v| wheel_masses(v, true))
-            .collect(),
-        ..model.clone()
-    };
-    let first = Model {
-        vehicles: model
-            .vehicles
+            .map(|c| {
+                -(model.static_wheel_loads[c.wheel] + model.vehicles[c.vehicle].gravity_load[c.dof])
+            })
+            .collect();
+        let is_wheel_dof: Vec<Vec<bool>> = upper
+            .partitions
             .iter()
-            .map(|v| wheel_masses(v, false))
-            .collect(),
-        ground: None,
-        ..model.clone()
-    };
-    let mut bridge0 = PermanentContacts::new(&zero_order, &nm)?;
-    let mut bridge1 = PermanentContacts::new(&first, &nm)?;
-    bridge1.follow_irregularity = false;
-    at_zero(&mut bridge0);
-    at_zero(&mut bridge1);
-    // The Eq. 6 upper part on held wheels, and the Eq. 3 vehicle.
-    let mut upper = PermanentContacts::new(model, &nm)?;
-    let mut vehicle = PermanentContacts::new(model, &nm)?;
-    // The Eq. 3 vehicle on the zero-order bridge alone (for `zero_observer`).
-    let mut vehicle0 = PermanentContacts::new(model, &nm)?;
-    let nc = bridge0.count();
-
-    // The static suspension force on each wheel, −(λ_static + f_g,w): the
-    // vehicle's weight the modified bridge system carries (f_B,gravity).
-    let statics: Vec<f64> = bridge0
-        .contacts
-        .iter()
-        .map(|c| {
-            -(model.static_wheel_loads[c.wheel] + model.vehicles[c.vehicle].gravity_load[c.dof])
+            .zip(&model.vehicles)
+            .map(|(partition, vehicle)| {
+                let mut mask = vec![false; vehicle.dofs()];
+                for &d in &partition.wheel_dofs {
+                    mask[d] = true;
+                }
+                mask
+            })
+            .collect();
+        let nw = model.wheels.len();
+        let mut wheel_positions = vec![0.0; nw];
+        model.wheel_positions(0.0, &mut wheel_positions);
+        // At t = 0 the view is the zero-order bridge (the first order
+        // starts at rest).
+        let (displacement, acceleration) =
+            (modal0.displacement.clone(), modal0.acceleration.clone());
+        Ok(Self {
+            model,
+            ground: GroundStep::new(model, &nm),
+            nm,
+            first_order: model.embs.is_none_or(|e| e.first_order),
+            zero_view: zero_order,
+            modal0,
+            modal1,
+            zero_order: reduced,
+            first,
+            bridge0,
+            bridge1,
+            upper,
+            vehicle,
+            vehicle0,
+            statics,
+            is_wheel_dof,
+            sens: vec![[0.0f64; 3]; nc * nc],
+            system: vec![0.0; nc * nc],
+            pivots: vec![0; nc],
+            lambda0: vec![0.0; nc],
+            lambda1: vec![0.0; nc],
+            lambda: vec![0.0; nc],
+            lambda_zero: vec![0.0; nc],
+            suspension: vec![0.0; nc],
+            suspension_previous: vec![0.0; nc],
+            weighted: vec![0.0; nc],
+            kinematics: vec![[0.0f64; 3]; nc],
+            forces0: model.static_wheel_loads.clone(),
+            forces1: vec![0.0; nw],
+            contact_forces: model.static_wheel_loads.clone(),
+            contact_forces0: model.static_wheel_loads.clone(),
+            contact_gaps: vec![0.0; nw],
+            wheel_positions,
+            displacement,
+            acceleration,
         })
-        .collect();
-    let weight = nm.weight();
-
-    let mut sens = vec![[0.0f64; 3]; nc * nc];
-    let mut system = vec![0.0; nc * nc];
-    let mut pivots = vec![0; nc];
-    let (mut lambda0, mut lambda1, mut lambda) = (vec![0.0; nc], vec![0.0; nc], vec![0.0; nc]);
-    let (mut suspension, mut suspension_previous, mut weighted) =
-        (vec![0.0; nc], vec![0.0; nc], vec![0.0; nc]);
-    let mut kinematics = vec![[0.0f64; 3]; nc];
-    let nw = model.wheels.len();
-    let mut forces0 = model.static_wheel_loads.clone();
-    let mut forces1 = vec![0.0; nw];
-    let mut contact_forces = model.static_wheel_loads.clone();
-    let mut contact_forces0 = model.static_wheel_loads.clone();
-    let mut lambda_zero = vec![0.0; nc];
-    let contact_gaps = vec![0.0; nw];
-    let mut wheel_positions = vec![0.0; nw];
-    let (mut displacement, mut acceleration) = (vec![0.0; modes], vec![0.0; modes]);
-    model.wheel_positions(0.0, &mut wheel_positions);
-
-    let initial = StepView::of(
-        0,
-        0.0,
-        &modal0,
-        &vehicle.states,
-        &contact_forces,
-        &contact_gaps,
-        &wheel_positions,
-    );
-    observer.observe(&initial);
-    if let Some(zero) = zero_observer.as_deref_mut() {
-        zero.observe(&initial);
     }
 
-    let guard = Guard::new(model);
-    let mut ground = GroundStep::new(model, &nm);
-    let report_every = (model.steps / 200).max(1);
-    // Which of each vehicle's DOFs are wheel DOFs, looked up per DOF in the
-    // first-order load below (a search of the wheel list there cost a
-    // fifth of an 8-car train's step).
-    let is_wheel_dof: Vec<Vec<bool>> = upper
-        .partitions
-        .iter()
-        .zip(&model.vehicles)
-        .map(|(partition, vehicle)| {
-            let mut mask = vec![false; vehicle.dofs()];
-            for &d in &partition.wheel_dofs {
-                mask[d] = true;
-            }
-            mask
-        })
-        .collect();
-    for step in 1..=model.steps {
-        let t = step as f64 * model.time_step;
-        model.wheel_positions(t, &mut wheel_positions);
-        let ratio = ground.step_of(model, &mut modal0, t);
-        let lateral = ground.lateral_load;
-
-        // Eq. 6: the upper part on wheels held at rest, under the ground.
+    /// Eq. 6: the upper part on wheels held at rest, under the ground's
+    /// `(gravity ratio, lateral load)`.
+    fn step_upper(&mut self, (ratio, lateral): (f64, f64)) {
+        let (nm, upper) = (&self.nm, &mut self.upper);
         for (v, partition) in upper.partitions.iter_mut().enumerate() {
             let state = &mut upper.states[v];
             partition.lateral_ground = lateral;
             partition.begin_step(
-                &nm,
+                nm,
                 ratio,
                 &state.displacement,
                 &state.velocity,
@@ -333,125 +378,186 @@ pub fn run_orders(
                 std::iter::empty(),
             );
             partition.finish_step(
-                &nm,
+                nm,
                 &mut state.displacement,
                 &mut state.velocity,
                 &mut state.acceleration,
             );
         }
+    }
 
-        // Eq. 5: the zero-order modified bridge system.
+    /// Eq. 5: the zero-order modified bridge system at `t` (s); leaves the
+    /// step's condensed contact matrix factored in `system`.
+    fn step_zero_order(&mut self, t: f64, (ratio, lateral): (f64, f64)) -> Result<(), SolveError> {
+        let nc = self.bridge0.count();
+        let Self {
+            nm,
+            modal0,
+            zero_order,
+            bridge0,
+            statics,
+            sens,
+            system,
+            pivots,
+            lambda0,
+            forces0,
+            wheel_positions,
+            ..
+        } = self;
         bridge0.gravity_ratio = ratio;
         bridge0.lateral_ground = lateral;
-        bridge0.begin_step(&zero_order, &nm, &mut modal0, t, &wheel_positions, &forces0);
-        load_wheels(&mut bridge0, &statics, weight);
-        bridge0.contact_system(&mut sens, &mut system);
-        if nc > 0 && !lu_factor(&mut system, &mut pivots, nc) {
+        bridge0.begin_step(zero_order, nm, modal0, t, wheel_positions, forces0);
+        load_wheels(bridge0, statics, nm.weight());
+        bridge0.contact_system(sens, system);
+        if nc > 0 && !lu_factor(system, pivots, nc) {
             return Err(SolveError::SingularContact {
                 time: t,
                 reason: "the modified bridge system's contact matrix is singular".into(),
             });
         }
-        bridge0.vehicle_forces(&bridge0.base, &mut lambda0);
-        lu_apply(&system, &pivots, &mut lambda0, nc);
-        bridge0.finish_step(&nm, &mut modal0, &lambda0, &mut forces0);
+        bridge0.vehicle_forces(&bridge0.base, lambda0);
+        lu_apply(system, pivots, lambda0, nc);
+        bridge0.finish_step(nm, modal0, lambda0, forces0);
+        Ok(())
+    }
 
-        // Eq. 7: the first-order bridge under the zero-order suspension
-        // forces F₁ = C_ww u̇_w⁽⁰⁾ + K_wu u_u⁽⁰⁾ + C_wu u̇_u⁽⁰⁾.
-        if first_order {
-            for (c, contact) in bridge0.contacts.iter().enumerate() {
-                let full = &model.vehicles[contact.vehicle];
-                let (zero, held) = (
-                    &bridge0.states[contact.vehicle],
-                    &upper.states[contact.vehicle],
-                );
-                let wheel_dof = &is_wheel_dof[contact.vehicle];
-                let mut force = 0.0;
-                for j in 0..full.dofs() {
-                    if wheel_dof[j] {
-                        force += full.damping[(contact.dof, j)] * zero.velocity[j];
-                    } else {
-                        let moved = held.displacement[j] - held.static_displacement[j];
-                        force += full.stiffness[(contact.dof, j)] * moved
-                            + full.damping[(contact.dof, j)] * held.velocity[j];
-                    }
+    /// Eq. 7: the first-order bridge under the zero-order suspension
+    /// forces F₁ = C_ww u̇_w⁽⁰⁾ + K_wu u_u⁽⁰⁾ + C_wu u̇_u⁽⁰⁾, with the zero
+    /// order's factored contact matrix.
+    fn step_first_order(&mut self) {
+        let model = self.model;
+        let nc = self.bridge0.count();
+        let Self {
+            nm,
+            modal1,
+            first,
+            bridge0,
+            bridge1,
+            upper,
+            is_wheel_dof,
+            system,
+            pivots,
+            lambda1,
+            suspension,
+            suspension_previous,
+            weighted,
+            forces1,
+            wheel_positions,
+            ..
+        } = self;
+        let weight = nm.weight();
+        for (c, contact) in bridge0.contacts.iter().enumerate() {
+            let full = &model.vehicles[contact.vehicle];
+            let (zero, held) = (
+                &bridge0.states[contact.vehicle],
+                &upper.states[contact.vehicle],
+            );
+            let wheel_dof = &is_wheel_dof[contact.vehicle];
+            let mut force = 0.0;
+            for j in 0..full.dofs() {
+                if wheel_dof[j] {
+                    force += full.damping[(contact.dof, j)] * zero.velocity[j];
+                } else {
+                    let moved = held.displacement[j] - held.static_displacement[j];
+                    force += full.stiffness[(contact.dof, j)] * moved
+                        + full.damping[(contact.dof, j)] * held.velocity[j];
                 }
-                suspension[c] = force;
-                // M ü = −F₁ + λ: the load is −F₁, HHT-weighted.
-                weighted[c] = -(weight * force - nm.alpha * suspension_previous[c]);
             }
-            suspension_previous.copy_from_slice(&suspension);
-            // The same wheel positions over the same bridge: the zero
-            // order's contact geometry (shape rows, residual flexibility)
-            // serves the first order too, as its LU does.
-            bridge1.begin_step_located(
-                &mut bridge0,
-                &first,
-                &nm,
-                &mut modal1,
-                &wheel_positions,
-                &forces1,
-            );
-            load_wheels(&mut bridge1, &weighted, weight);
-            bridge1.vehicle_forces(&bridge1.base, &mut lambda1);
-            lu_apply(&system, &pivots, &mut lambda1, nc);
-            bridge1.finish_step(&nm, &mut modal1, &lambda1, &mut forces1);
-            bridge1.return_geometry(&mut bridge0);
+            suspension[c] = force;
+            // M ü = −F₁ + λ: the load is −F₁, HHT-weighted.
+            weighted[c] = -(weight * force - nm.alpha * suspension_previous[c]);
         }
+        suspension_previous.copy_from_slice(suspension);
+        // The same wheel positions over the same bridge: the zero order's
+        // contact geometry (shape rows, residual flexibility) serves the
+        // first order too, as its LU does.
+        bridge1.begin_step_located(bridge0, first, nm, modal1, wheel_positions, forces1);
+        load_wheels(bridge1, weighted, weight);
+        bridge1.vehicle_forces(&bridge1.base, lambda1);
+        lu_apply(system, pivots, lambda1, nc);
+        bridge1.finish_step(nm, modal1, lambda1, forces1);
+        bridge1.return_geometry(bridge0);
+    }
+}
 
+impl Stepper for Embs<'_> {
+    type Error = SolveError;
+
+    fn models(&self) -> &[&Model] {
+        std::slice::from_ref(&self.model)
+    }
+
+    fn views(&self) -> usize {
+        1 + usize::from(self.zero_view)
+    }
+
+    fn advance(&mut self, _step: usize, t: f64) -> Result<(), SolveError> {
+        let model = self.model;
+        model.wheel_positions(t, &mut self.wheel_positions);
+        let ratio = self.ground.step_of(model, &mut self.modal0, t);
+        let ground = (ratio, self.ground.lateral_load);
+        self.step_upper(ground);
+        self.step_zero_order(t, ground)?;
+        if self.first_order {
+            self.step_first_order();
+        }
         // Eq. 3: the vehicle with its wheels on u_B⁽⁰⁾ + u_B⁽¹⁾ + r.
-        let orders = [&bridge0.states[..], &bridge1.states[..]];
+        let orders = [&self.bridge0.states[..], &self.bridge1.states[..]];
         drive_vehicle(
-            &mut vehicle,
-            &nm,
-            (ratio, lateral),
+            &mut self.vehicle,
+            &self.nm,
+            ground,
             &orders,
-            &mut kinematics,
-            &mut lambda,
-            &mut contact_forces,
+            &mut self.kinematics,
+            &mut self.lambda,
+            &mut self.contact_forces,
         );
-        if let Some(zero) = zero_observer.as_deref_mut() {
+        if self.zero_view {
             drive_vehicle(
-                &mut vehicle0,
-                &nm,
-                (ratio, lateral),
-                &[&bridge0.states[..]],
-                &mut kinematics,
-                &mut lambda_zero,
-                &mut contact_forces0,
+                &mut self.vehicle0,
+                &self.nm,
+                ground,
+                &[&self.bridge0.states[..]],
+                &mut self.kinematics,
+                &mut self.lambda_zero,
+                &mut self.contact_forces0,
             );
-            zero.observe(&StepView {
+        }
+        let (modal0, modal1) = (&self.modal0, &self.modal1);
+        for i in 0..self.displacement.len() {
+            self.displacement[i] = modal0.displacement[i] + modal1.displacement[i];
+            self.acceleration[i] = modal0.acceleration[i] + modal1.acceleration[i];
+        }
+        Ok(())
+    }
+
+    fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
+        let energy = Guard::energy(self.model, &self.modal0, &self.vehicle.states);
+        (energy, &self.lambda)
+    }
+
+    fn view(&self, index: usize, step: usize, t: f64) -> StepView<'_> {
+        if index == 1 {
+            return StepView::of(
                 step,
-                time: t,
-                modal_displacement: &modal0.displacement,
-                modal_acceleration: &modal0.acceleration,
-                vehicles: &vehicle0.states,
-                contact_forces: &contact_forces0,
-                contact_gaps: &contact_gaps,
-                wheel_positions: &wheel_positions,
-                wheel_modes: None,
-            });
+                t,
+                &self.modal0,
+                &self.vehicle0.states,
+                &self.contact_forces0,
+                &self.contact_gaps,
+                &self.wheel_positions,
+            );
         }
-        guard.check(model, &modal0, &vehicle.states, &lambda, t, step)?;
-        for i in 0..modes {
-            displacement[i] = modal0.displacement[i] + modal1.displacement[i];
-            acceleration[i] = modal0.acceleration[i] + modal1.acceleration[i];
-        }
-        observer.observe(&StepView {
+        StepView {
             step,
             time: t,
-            modal_displacement: &displacement,
-            modal_acceleration: &acceleration,
-            vehicles: &vehicle.states,
-            contact_forces: &contact_forces,
-            contact_gaps: &contact_gaps,
-            wheel_positions: &wheel_positions,
+            modal_displacement: &self.displacement,
+            modal_acceleration: &self.acceleration,
+            vehicles: &self.vehicle.states,
+            contact_forces: &self.contact_forces,
+            contact_gaps: &self.contact_gaps,
+            wheel_positions: &self.wheel_positions,
             wheel_modes: None,
-        });
-        if step % report_every == 0 || step == model.steps {
-            progress(step, model.steps);
-            super::cancel::check()?;
         }
     }
-    Ok(())
 }

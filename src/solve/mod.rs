@@ -5,6 +5,11 @@
 //! forces as unknowns, the wheel-to-surface gaps are expressed through those
 //! forces (the step's contact compliance), and the contact model closes the
 //! system. [`coupled`] enforces permanent contact.
+//!
+//! Every method is a [`time_loop::Stepper`] — its step and nothing else —
+//! run by the one time loop [`time_loop::drive`], which owns the step
+//! times, the divergence guard, the observer calls, the progress reports
+//! and the cancellation check. [`run_method`] picks the stepper.
 
 #![allow(clippy::needless_range_loop)] // numeric kernels index several arrays in step
 
@@ -195,7 +200,7 @@ pub fn run(
 /// The one dispatch from a solver method to its [`time_loop::Stepper`]:
 /// integrates `model` with `method`, calling `observer` at t = 0 and after
 /// every step, and `zero_order` (when given) at the same instants with the
-/// zero order of an expansion alone (EMBS: [`embs::run_orders`];
+/// zero order of an expansion alone (EMBS: [`embs::Embs`];
 /// the other methods have no expansion and leave it unobserved).
 ///
 /// # Errors
@@ -219,13 +224,34 @@ pub fn run_method(
             &mut [observer],
             progress,
         ),
-        SolverMethod::Lcp => {
-            unilateral::run(model, observer, progress).map(|()| SolveStats::default())
-        }
+        SolverMethod::Lcp => drive_one(
+            &mut unilateral::Unilateral::new(model)?,
+            &mut [observer],
+            progress,
+        ),
         SolverMethod::Embs => {
-            embs::run_orders(model, observer, zero_order, progress).map(|()| SolveStats::default())
+            let mut stepper = embs::Embs::new(model, zero_order.is_some())?;
+            match zero_order {
+                Some(zero) => drive_one(&mut stepper, &mut [observer, zero], progress),
+                None => drive_one(&mut stepper, &mut [observer], progress),
+            }
         }
     }
+}
+
+/// Whether `model`'s method shows the zero order of its expansion alone
+/// as a view of its own (the `zero_order` observer of [`run_method`]):
+/// EMBS with its first order.
+pub fn shows_zero_order(model: &Model) -> bool {
+    model.method == SolverMethod::Embs && model.embs.is_some_and(|e| e.first_order)
+}
+
+/// The method a run of `model` is compared with, when the scene asks for
+/// a comparison: `coupled`, the exact permanent contact, for EMBS with
+/// `compare` ([`crate::report::embs`] differences the two).
+pub fn reference_method(model: &Model) -> Option<SolverMethod> {
+    (model.method == SolverMethod::Embs && model.embs.is_some_and(|e| e.compare))
+        .then_some(SolverMethod::Coupled)
 }
 
 /// [`time_loop::drive`] for one scene, then the stepper's own report.

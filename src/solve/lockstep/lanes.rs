@@ -1,6 +1,6 @@
 //! The batch's state held lane by lane (`[f64; LANES]` per quantity) and
 //! the per-lane Newmark/HHT steps of the bridge and the vehicles, each with
-//! the floating-point operations of [`crate::solve::unilateral::run`] in
+//! the floating-point operations of [`crate::solve::unilateral::Unilateral`] in
 //! the same order.
 
 use nalgebra::DMatrix;
