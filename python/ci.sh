@@ -2,7 +2,10 @@
 # Builds and tests the Python package: a fresh venv, `pip install ./python`
 # (maturin compiles the extension), the test dependencies, then pytest and
 # the example notebook. The tests compare against the command-line binary,
-# built first. Usage: bash python/ci.sh [VENV]   (default: target/pyvenv)
+# built first. Both reuse what `cargo test --release` compiled (one target
+# folder, one profile, one feature set: tools/feature_sets.sh), so after the
+# tests only pyo3, numpy and the extension itself are compiled (~30 s, not
+# the whole library again). Usage: bash python/ci.sh [VENV]   (default: target/pyvenv)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 repo="$(dirname "$here")"
