@@ -27,11 +27,7 @@
 //! tolerance, so the two agree to it. Cost per iteration O(modes·wheels) +
 //! O(Σ wheelsᵥ²); nothing is allocated in the loop.
 
-use super::GroundStep;
-use super::guard::Guard;
-use super::modal::ModalStep;
-use super::newmark::Newmark;
-use super::permanent::PermanentContacts;
+use super::permanent::PermanentStep;
 use super::time_loop::Stepper;
 use super::{SolveError, SolveStats, StepView, describe_positions};
 use crate::model::Model;
@@ -46,14 +42,7 @@ pub const FORCE_FLOOR: f64 = 1.0;
 /// [`super::time_loop::drive`].
 #[derive(Debug)]
 pub struct Iterative<'a> {
-    model: &'a Model,
-    nm: Newmark,
-    modal: ModalStep,
-    contacts: PermanentContacts,
-    ground: GroundStep,
-    contact_forces: Vec<f64>,
-    contact_gaps: Vec<f64>,
-    wheel_positions: Vec<f64>,
+    state: PermanentStep<'a>,
     // Work arrays: forces, their update, residuals, wheel kinematics.
     lambda: Vec<f64>,
     answer: Vec<f64>,
@@ -71,31 +60,16 @@ impl<'a> Iterative<'a> {
     ///
     /// # Errors
     ///
-    /// [`PermanentContacts::new`]'s.
+    /// [`PermanentStep::new`]'s.
     pub fn new(model: &'a Model) -> Result<Self, SolveError> {
-        let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
-        let modal = ModalStep::new(&model.bridge, &nm)
-            .with_ground(model.ground_participation())
-            .with_lateral_ground(model.lateral_ground_participation());
-        let contacts = PermanentContacts::new(model, &nm)?;
-        let nc = contacts.count();
-        let nw = model.wheels.len();
-        let contact_forces = model.static_wheel_loads.clone();
-        let mut wheel_positions = vec![0.0; nw];
-        model.wheel_positions(0.0, &mut wheel_positions);
+        let state = PermanentStep::new(model)?;
+        let nc = state.contacts.count();
         let mut lambda = vec![0.0; nc];
-        for (c, contact) in contacts.contacts.iter().enumerate() {
-            lambda[c] = contact_forces[contact.wheel];
+        for (c, contact) in state.contacts.contacts.iter().enumerate() {
+            lambda[c] = state.contact_forces[contact.wheel];
         }
         Ok(Self {
-            model,
-            ground: GroundStep::new(model, &nm),
-            nm,
-            modal,
-            contacts,
-            contact_forces,
-            contact_gaps: vec![0.0; nw],
-            wheel_positions,
+            state,
             lambda,
             answer: vec![0.0; nc],
             residual: vec![0.0; nc],
@@ -111,11 +85,15 @@ impl<'a> Iterative<'a> {
     /// module's steps 1–4), from the contact forces in `lambda`; returns
     /// the iterations it took.
     fn iterate(&mut self, t: f64) -> Result<usize, SolveError> {
-        let model = self.model;
+        let model = self.state.model;
         let (tolerance, max_iterations) =
             (model.iteration.tolerance, model.iteration.max_iterations);
         let Self {
-            contacts: step_state,
+            state:
+                PermanentStep {
+                    contacts: step_state,
+                    ..
+                },
             lambda,
             answer,
             residual,
@@ -198,60 +176,34 @@ impl Stepper for Iterative<'_> {
     type Error = SolveError;
 
     fn models(&self) -> &[&Model] {
-        std::slice::from_ref(&self.model)
+        std::slice::from_ref(&self.state.model)
     }
 
     fn advance(&mut self, _step: usize, t: f64) -> Result<(), SolveError> {
-        let model = self.model;
-        model.wheel_positions(t, &mut self.wheel_positions);
-        let step_state = &mut self.contacts;
-        step_state.gravity_ratio = self.ground.step_of(model, &mut self.modal, t);
-        step_state.lateral_ground = self.ground.lateral_load;
-        step_state.begin_step(
-            model,
-            &self.nm,
-            &mut self.modal,
-            t,
-            &self.wheel_positions,
-            &self.contact_forces,
-        );
-        let iterations = if self.contacts.count() > 0 {
+        self.state.begin(t);
+        let iterations = if self.state.contacts.count() > 0 {
             self.iterate(t)?
         } else {
             0
         };
         self.total_iterations += iterations;
         self.most_iterations = self.most_iterations.max(iterations);
-        self.contacts.finish_step(
-            &self.nm,
-            &mut self.modal,
-            &self.lambda,
-            &mut self.contact_forces,
-        );
+        self.state.finish(&self.lambda);
         Ok(())
     }
 
     fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
-        let energy = Guard::energy(self.model, &self.modal, &self.contacts.states);
-        (energy, &self.lambda)
+        (self.state.energy(), &self.lambda)
     }
 
     fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
-        StepView::of(
-            step,
-            t,
-            &self.modal,
-            &self.contacts.states,
-            &self.contact_forces,
-            &self.contact_gaps,
-            &self.wheel_positions,
-        )
+        self.state.view(step, t)
     }
 
     fn stats(&self) -> SolveStats {
         SolveStats {
             iterations: Some(IterationStats {
-                mean: self.total_iterations as f64 / self.model.steps.max(1) as f64,
+                mean: self.total_iterations as f64 / self.state.model.steps.max(1) as f64,
                 max: self.most_iterations,
             }),
         }

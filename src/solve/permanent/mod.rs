@@ -25,11 +25,13 @@ use super::residual_rates::{ResidualRates, ResidualStart};
 use super::{SolveError, VehicleState};
 
 mod geometry;
+mod step;
 use crate::contact::ContactDirection;
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat, Par};
+pub use step::PermanentStep;
 
 /// A wheel that rides the surface through a vehicle DOF.
 #[derive(Debug, Clone, Copy)]
