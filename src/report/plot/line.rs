@@ -338,7 +338,8 @@ where
     Ok(Geometry {
         px_x,
         px_y,
-        ..Geometry::default()
+        x: chart.x_range(),
+        y: chart.y_range(),
     })
 }
 
@@ -362,13 +363,23 @@ where
     let (w, h) = (tw + 30 + 20, th + 20);
     let (px_x, px_y) = chart.plotting_area().get_pixel_range();
     let (aw, ah) = (px_x.end - px_x.start, px_y.end - px_y.start);
-    let candidates = [
+    // The four corners first (the tie-break prefers them, in this order);
+    // then, for a plot whose every corner holds data (a limit line across
+    // the top, curves along the bottom), the box at the left, middle and
+    // right of five rows between them.
+    let mut candidates = vec![
         (SeriesLabelPosition::UpperRight, aw - w - 5, 5),
         (SeriesLabelPosition::UpperLeft, 5, 5),
         (SeriesLabelPosition::LowerRight, aw - w - 5, ah - h - 5),
         (SeriesLabelPosition::LowerLeft, 5, ah - h - 5),
     ];
-    let mut hits = [0usize; 4];
+    for row in 1..=5 {
+        let y = 5 + (ah - h - 10) * row / 6;
+        for x in [aw - w - 5, 5, (aw - w) / 2] {
+            candidates.push((SeriesLabelPosition::Coordinate(x, y), x, y));
+        }
+    }
+    let mut hits = vec![0usize; candidates.len()];
     let mut count = |p: (i32, i32)| {
         let (x, y) = (p.0 - px_x.start, p.1 - px_y.start);
         for (hit, (_, cx, cy)) in hits.iter_mut().zip(&candidates) {

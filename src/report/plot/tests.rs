@@ -573,3 +573,61 @@ fn bands_shade_their_interval() {
     check_png(&dir.join("b.png"));
     assert!(leftovers(&dir).is_empty());
 }
+
+/// A legend with every corner taken — a limit line across the top (the
+/// resonance check's 3.5 m/s²) and curves along the bottom at both ends —
+/// goes between them, and every drawn sample of both lines stays visible
+/// (it sat in the upper-right corner over the limit line and the curves
+/// before the interior candidates of `legend_position`).
+#[test]
+fn a_legend_with_every_corner_taken_hides_no_line() {
+    let x: Vec<f64> = (0..=100).map(|k| f64::from(k) * 0.1).collect();
+    let limit = vec![3.5; x.len()];
+    // Three responses apart (none drawn over another), low at both ends,
+    // where the lower corners are.
+    let curves: Vec<Vec<f64>> = (0..3)
+        .map(|k| {
+            let k = f64::from(k);
+            x.iter()
+                .map(|x| 0.3 + 0.4 * k + 0.7 * (1.0 - (std::f64::consts::TAU * x / 10.0).cos()))
+                .collect()
+        })
+        .collect();
+    let series = [
+        Series {
+            label: "response 1",
+            x: &x,
+            y: &curves[0],
+        },
+        Series {
+            label: "response 2",
+            x: &x,
+            y: &curves[1],
+        },
+        Series {
+            label: "response 3",
+            x: &x,
+            y: &curves[2],
+        },
+        Series {
+            label: "limit 3.5 m/s^2 (ballasted, EN 1990 A2.4.4.2.1)",
+            x: &x,
+            y: &limit,
+        },
+    ];
+    let rendered =
+        render_line_chart("t", "x", "y", &series, false, false, 0, 0, &[None; 4]).unwrap();
+    let g = &rendered.geometry;
+    for (s, colour) in series.iter().zip(PALETTE) {
+        // Interior samples: the range's ends map onto the area's edges.
+        for (&x, &y) in s.x.iter().zip(s.y).skip(1).take(s.x.len() - 2) {
+            let (px, py) = to_pixel(g, x, y);
+            // Drawn: the line's own colour within a pixel of the sample
+            // (anti-aliasing shades the exact pixel on steep stretches).
+            let drawn = (-1..=1).any(|dx| {
+                (-1..=1).any(|dy| pixel(&rendered.rgb, px + dx, py + dy) == colour_tuple(colour))
+            });
+            assert!(drawn, "{}: the sample at x = {x} is hidden", s.label);
+        }
+    }
+}
