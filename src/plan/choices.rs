@@ -21,11 +21,9 @@ use crate::scene::*;
 use super::budget::eigen_fits;
 use super::content;
 use super::derive::derive_dimensionless;
+use super::modes;
+use super::time_step;
 use super::track_flexibility;
-
-/// Share of the bridge's mass the automatic modes carry under ground
-/// motion (EN 1998-1 4.3.3.3.1(3)).
-const GROUND_MASS_SHARE: f64 = 0.9;
 
 /// Builds the bridge's modal model and makes the automatic choices of a
 /// scene the format described; `None` once an error is reported.
@@ -177,38 +175,14 @@ pub(crate) fn plan(
     if !ck.diagnostics.is_empty() {
         return None;
     }
-    // A speed sweep runs the scene at every speed of its grid: the automatic
-    // choices must serve its fastest run.
-    let excitations = match &study {
-        Some(Study::SpeedSweep(sweep)) => super::sweep::excitations(
-            Some(sweep.speed_range().1),
-            &crate::scenario::sweep::entries_of(sweep.roughness.as_deref()),
-            &vehicles,
-            &contact,
-            &surface,
-            &bridge,
-            gravity,
-        ),
-        Some(Study::MonteCarlo(mc)) => super::sweep::excitations(
-            mc.speed_range().map(|r| r.1),
-            &crate::scenario::sweep::entries_of(mc.roughness.as_deref()),
-            &vehicles,
-            &contact,
-            &surface,
-            &bridge,
-            gravity,
-        ),
-        // Every train of a resonance check at its top speed.
-        Some(Study::ResonanceCheck(check)) => {
-            let trains: Vec<Vehicle> = check
-                .trains
-                .iter()
-                .map(|&t| crate::scenario::resonance::train_vehicle(t, check.top_speed()))
-                .collect();
-            content::excitations(&trains, &contact, &surface, bridge.spans(), gravity)
-        }
-        _ => content::excitations(&vehicles, &contact, &surface, bridge.spans(), gravity),
-    };
+    let excitations = study_excitations(
+        study.as_ref(),
+        &vehicles,
+        &contact,
+        &surface,
+        &bridge,
+        gravity,
+    );
     // The highest mode frequency any deck acceleration the runs record
     // sums: the records' and the envelope's; a resonance check's runs
     // record neither (they envelope the deck themselves, peaks only).
@@ -236,151 +210,18 @@ pub(crate) fn plan(
     // flexibility under a wheel matters for ([`track_flexibility`]).
     let (vertical_mass, lateral_mass) = track_flexibility::wheels_with_mass(&vehicles, gravity);
     if automatic {
-        // Automatic: keep the modes this scene excites; write the cut-off back
-        // so the resolved scenario reproduces the choice.
-        let (mut cutoff, mut dynamic, top) = content::mode_cutoff(&modal, &excitations);
-        // Deck accelerations sum every mode up to their own cut-off (30 Hz
-        // or more, EN 1990 A2.4.4.2.1(4)): keep all of them, so that the
-        // filtered acceleration is complete and converges with the step.
-        let acceleration_cut = record_cutoff.filter(|&cut| cut > cutoff);
-        if let Some(cut) = acceleration_cut {
-            cutoff = cut;
-            dynamic = true;
-        }
-        // Heavy wheels feel the bridge's acceleration under them, which a
-        // few modes resolve poorly: keep twice the minimum.
-        let heavy = content::heavy_wheels(&vehicles, &bridge, gravity);
-        let floor = if heavy {
-            (2 * minimum).min(ModalBridge::available_of(&bridge))
-        } else {
-            minimum
+        let needs = modes::Needs {
+            excitations: &excitations,
+            record_cutoff,
+            vehicles: &vehicles,
+            ground_motion: &ground_motion,
+            gravity,
+            minimum,
+            vertical_mass,
+            lateral_mass,
         };
-        dynamic |= heavy;
-        if dynamic {
-            // The cut-off the excitation asks for may keep more modes than the
-            // budget allows (a very long or very flexible span): count them
-            // with one factorisation before solving for them.
-            let kept = ModalBridge::count_up_to(&bridge, cutoff)
-                .ok()
-                .flatten()
-                .map_or(floor, |n| n.max(floor));
-            if !budget.check(
-                ck,
-                "bridge.spans",
-                "modes",
-                &format!("bridge modes up to the {cutoff:.4} Hz the vehicles excite"),
-                kept as f64,
-            ) || !eigen_fits(&budget, ck, "bridge.spans", &bridge, kept)
-            {
-                return None;
-            }
-            modal = match build(ModeRequest::AtLeastUpTo(floor, cutoff)) {
-                Ok(m) => m,
-                Err((path, message)) => {
-                    ck.error(path, message);
-                    return None;
-                }
-            };
-        }
-        // The cut-off written back must reproduce the modes kept.
-        cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
-        modal.selection = match acceleration_cut {
-            _ if heavy => format!(
-                "automatic: {} modes up to {cutoff:.2} Hz, at least twice the {minimum} of the \
-                 minimum because a wheel's mass exceeds {} of a span's (its contact force \
-                 follows the deck's acceleration under it)",
-                modal.mode_count(),
-                content::HEAVY_WHEEL_RATIO
-            ),
-            Some(cut) => format!(
-                "automatic: {} modes, every one up to {cut:.2} Hz that the deck accelerations \
-                 sum (EN 1990 A2.4.4.2.1: max(30 Hz, 1.5 f₁, f₃) unless the record sets \
-                 `max_frequency`)",
-                modal.mode_count()
-            ),
-            None => content::mode_reason(
-                modal.mode_count(),
-                cutoff,
-                dynamic,
-                &top,
-                content::modes_per_span(&bridge),
-            ),
-        };
-        // An imported track under wheels with mass: keep modes until they
-        // carry the rails' static flexibility under a wheel (the static
-        // correction's spring has no inertia; [`track_flexibility`]).
-        if modal.is_imported() && modal.static_correction && (vertical_mass || lateral_mass) {
-            modal = track_flexibility::keep_rails_flexibility(
-                modal,
-                &bridge,
-                lateral_mass,
-                &budget,
-                ck,
-                &build,
-            )?;
-            cutoff = cutoff.max(modal.frequencies().last().copied().unwrap_or(0.0));
-        }
-        // Ground motion: keep modes until they carry 90 % of the bridge's
-        // mass (EN 1998-1 4.3.3.3.1(3)); the uniform inertia load of a
-        // vertical record excites the symmetric modes, each less than the
-        // last, so a few suffice.
-        // A lateral record asks the same of the lateral modes (a bridge in
-        // the vertical plane has no lateral mass to carry: skipped).
-        if !ground_motion.is_empty() {
-            let available = ModalBridge::available_of(&bridge);
-            let has = |d| ground_motion.iter().any(|g| g.direction == d);
-            let (vertical, lateral) = (
-                has(crate::scene::Direction::Vertical),
-                has(crate::scene::Direction::Lateral),
-            );
-            loop {
-                let share = |(participation, mass): (Vec<f64>, f64)| {
-                    if mass > 0.0 {
-                        participation.iter().map(|g| g * g).sum::<f64>() / mass
-                    } else {
-                        1.0
-                    }
-                };
-                let mut ratio = 1.0f64;
-                if vertical {
-                    ratio = ratio.min(share(modal.vertical_participation(&bridge)));
-                }
-                if lateral {
-                    ratio = ratio.min(share(modal.lateral_participation(&bridge)));
-                }
-                let count = modal.mode_count();
-                if ratio >= GROUND_MASS_SHARE || count >= available {
-                    if ratio >= GROUND_MASS_SHARE {
-                        modal.selection.push_str(&format!(
-                            "; for the ground motion they carry {:.1} % of the bridge's mass (EN 1998-1 4.3.3.3.1: at least {:.0} %)",
-                            100.0 * ratio,
-                            100.0 * GROUND_MASS_SHARE
-                        ));
-                    }
-                    break;
-                }
-                let more = (2 * count).min(available);
-                if !budget.check(
-                    ck,
-                    "ground_motion",
-                    "modes",
-                    "bridge modes for 90 % of the mass under ground motion",
-                    more as f64,
-                ) || !eigen_fits(&budget, ck, "ground_motion", &bridge, more)
-                {
-                    return None;
-                }
-                modal = match build(ModeRequest::Lowest(more)) {
-                    Ok(m) => m,
-                    Err((path, message)) => {
-                        ck.error(path, message);
-                        return None;
-                    }
-                };
-            }
-            let top = modal.frequencies().last().copied().unwrap_or(0.0);
-            cutoff = cutoff.max(top);
-        }
+        let cutoff;
+        (modal, cutoff) = modes::automatic(modal, &bridge, &needs, &budget, ck, &build)?;
         // Written back as the count kept and the cut-off (at least the
         // last kept mode's own frequency): the count cannot round a mode
         // away, the cut-off says why ([`ModalBridge::build_cached`]).
@@ -457,98 +298,22 @@ pub(crate) fn plan(
     let (fast, slow) = crate::scenario::sweep::extreme_vehicles(study.as_ref(), &vehicles);
     let highest = modal.frequencies().last().copied().unwrap_or(1.0);
     let length = modal.length;
-    let shortest_crossing = fast
-        .iter()
-        .map(|v| v.exit_time(length) - v.entry_time())
-        .fold(f64::INFINITY, f64::min);
-    let duration = |vehicles: &[Vehicle]| {
-        let last_exit = vehicles
-            .iter()
-            .map(|v| v.exit_time(length))
-            .fold(0.0, f64::max);
-        last_exit + free_vibration
-    };
-    let (shortest_run, mut longest_run) = (duration(&fast), duration(&slow));
-    // A separation map's slowest point (its smallest velocity ratio) runs
-    // longest: v = 2 α f₁ L.
-    if let (Some(Study::SeparationMap { velocity_ratio, .. }), Some(&f1), [vehicle]) =
-        (&study, modal.frequencies().first(), vehicles.as_slice())
-    {
-        let slowest = 2.0 * velocity_ratio.from.min(velocity_ratio.to) * f1 * length;
-        if slowest > 0.0 {
-            longest_run = longest_run.max(vehicle.entry_time() + length / slowest + free_vibration);
-        }
-    }
-    // Recorded deck accelerations: their highest mode keeps its phase over
-    // the run (a history; a resonance check keeps only peaks).
-    let acceleration_top = history_cutoff.map_or(0.0, |cut| cut.min(highest));
-    let step_without_ground = solver_raw.time_step.is_none().then(|| {
-        content::time_step(highest, &excitations, shortest_crossing)
-            .min(content::phase_time_step(acceleration_top, longest_run))
-    });
-    // A ground-motion record is linear between its samples: a step no
-    // longer than its shortest interval sees every peak.
-    let time_step = solver_raw.time_step.unwrap_or_else(|| {
-        ground_motion
-            .iter()
-            .map(|g| g.record.shortest_interval())
-            .fold(step_without_ground.unwrap_or(f64::INFINITY), f64::min)
-    });
-    let time_step_selection = if solver_raw.time_step.is_some() {
-        "set in the file".to_owned()
-    } else {
-        // Which rule gave the step (the smallest candidate), so that the
-        // summary says what to change to make the run cheaper.
-        let top = excitations
-            .iter()
-            .map(|e| e.frequency)
-            .fold(highest, f64::max);
-        let mut rules = vec![
-            (
-                1.0 / (content::STEPS_PER_PERIOD * top),
-                format!(
-                    "{} steps per period of {top:.4} Hz, the highest frequency kept or excited",
-                    content::STEPS_PER_PERIOD
-                ),
-            ),
-            (
-                shortest_crossing / content::CROSSING_STEPS,
-                format!(
-                    "{} steps over the shortest crossing ({shortest_crossing:.4} s)",
-                    content::CROSSING_STEPS
-                ),
-            ),
-            (
-                content::phase_time_step(acceleration_top, longest_run),
-                format!(
-                    "the phase of the recorded accelerations' highest mode ({acceleration_top:.4} \
-                     Hz) over the {longest_run:.4} s run"
-                ),
-            ),
-        ];
-        if let Some(g) = ground_motion
-            .iter()
-            .map(|g| g.record.shortest_interval())
-            .reduce(f64::min)
-        {
-            rules.push((
-                g,
-                "the ground-motion record's shortest sample interval".into(),
-            ));
-        }
-        let governing = rules
-            .iter()
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or(String::new(), |(_, why)| format!("; governed by {why}"));
-        format!(
-            "automatic: {} steps per period of the highest frequency kept or excited, at \
-             least {} steps over the shortest crossing, and for deck accelerations a phase \
-             drift of their highest mode below {} rad over the run{governing}",
-            content::STEPS_PER_PERIOD,
-            content::CROSSING_STEPS,
-            content::PHASE_BUDGET
-        )
-    };
+    let (shortest_crossing, shortest_run, longest_run) = time_step::run_lengths(
+        study.as_ref(),
+        &vehicles,
+        (&fast, &slow),
+        &modal,
+        free_vibration,
+    );
+    let (time_step, step_without_ground, time_step_selection) = time_step::choose(
+        solver_raw.time_step,
+        highest,
+        &excitations,
+        history_cutoff,
+        shortest_crossing,
+        longest_run,
+        &ground_motion,
+    );
     let steps = shortest_run / time_step;
     if steps < 10.0 {
         ck.error(
@@ -730,6 +495,50 @@ pub(crate) fn plan(
             .collect(),
     };
     Some((scenario, modal))
+}
+
+/// The frequencies the scene's runs excite (each vehicle's axle passings,
+/// body modes and surface features): a speed sweep's or Monte Carlo study's
+/// at its fastest speed, every train of a resonance check at its top speed,
+/// since the automatic choices must serve the study's fastest run.
+fn study_excitations(
+    study: Option<&Study>,
+    vehicles: &[Vehicle],
+    contact: &Contact,
+    surface: &Surface,
+    bridge: &Bridge,
+    gravity: f64,
+) -> Vec<content::Excitation> {
+    match study {
+        Some(Study::SpeedSweep(sweep)) => super::sweep::excitations(
+            Some(sweep.speed_range().1),
+            &crate::scenario::sweep::entries_of(sweep.roughness.as_deref()),
+            vehicles,
+            contact,
+            surface,
+            bridge,
+            gravity,
+        ),
+        Some(Study::MonteCarlo(mc)) => super::sweep::excitations(
+            mc.speed_range().map(|r| r.1),
+            &crate::scenario::sweep::entries_of(mc.roughness.as_deref()),
+            vehicles,
+            contact,
+            surface,
+            bridge,
+            gravity,
+        ),
+        // Every train of a resonance check at its top speed.
+        Some(Study::ResonanceCheck(check)) => {
+            let trains: Vec<Vehicle> = check
+                .trains
+                .iter()
+                .map(|&t| crate::scenario::resonance::train_vehicle(t, check.top_speed()))
+                .collect();
+            content::excitations(&trains, contact, surface, bridge.spans(), gravity)
+        }
+        _ => content::excitations(vehicles, contact, surface, bridge.spans(), gravity),
+    }
 }
 
 /// The deck-acceleration record whose own `max_frequency`, above the

@@ -29,8 +29,10 @@ mod choices;
 pub mod content;
 mod derive;
 pub mod imported_check;
+mod modes;
 mod plausible;
 mod sweep;
+mod time_step;
 pub mod track_flexibility;
 mod travel;
 
