@@ -300,10 +300,11 @@ impl DeckSums {
         Some((lines, first.wheel_influence.clone()))
     }
 
-    /// This step's sums: the modal ones, and with `displacement` and
-    /// stacked lines the static ones of the wheels `on_deck` with
-    /// `wheel_modes` (wheel-major, `modes` a wheel; empty without static
-    /// correction).
+    /// This step's sums of the quantities enveloped (`displacement`,
+    /// `acceleration`): the modal ones, and for displacements on stacked
+    /// lines the static ones of the wheels `on_deck` with `wheel_modes`
+    /// (wheel-major, `modes` a wheel; empty without static correction).
+    #[allow(clippy::too_many_arguments)]
     fn evaluate(
         &mut self,
         view: &StepView<'_>,
@@ -311,22 +312,28 @@ impl DeckSums {
         wheel_modes: &[f64],
         on_deck: &[usize],
         displacement: bool,
+        acceleration: bool,
     ) {
         let modes = self.shape.len() / self.modal.len().max(1);
         // `dot`'s terms: the shorter of the shape (every mode) and q.
+        if acceleration {
+            mode_sums(
+                &mut self.acceleration,
+                &self.acceleration_shape,
+                view.modal_acceleration,
+                modes.min(view.modal_acceleration.len()),
+            );
+        }
+        if !displacement {
+            return;
+        }
         mode_sums(
             &mut self.modal,
             &self.shape,
             view.modal_displacement,
             modes.min(view.modal_displacement.len()),
         );
-        mode_sums(
-            &mut self.acceleration,
-            &self.acceleration_shape,
-            view.modal_acceleration,
-            modes.min(view.modal_acceleration.len()),
-        );
-        let Some((lines, wheel_line)) = self.lines.as_ref().filter(|_| displacement) else {
+        let Some((lines, wheel_line)) = self.lines.as_ref() else {
             return;
         };
         // From −0.0, as `Iterator::sum` and the folds start.
@@ -642,13 +649,19 @@ impl EnvelopeTracker {
         };
         let corrected = model.bridge.static_correction;
         let static_loads = &model.static_wheel_loads;
-        let displacement = self
-            .envelope
-            .columns
-            .iter()
-            .any(|c| c.quantity == Quantity::BridgeDisplacement);
-        self.sums
-            .evaluate(view, static_loads, wheel_modes, on_deck, displacement);
+        let has = |q| self.envelope.columns.iter().any(|c| c.quantity == q);
+        let (displacement, acceleration) = (
+            has(Quantity::BridgeDisplacement),
+            has(Quantity::BridgeAcceleration),
+        );
+        self.sums.evaluate(
+            view,
+            static_loads,
+            wheel_modes,
+            on_deck,
+            displacement,
+            acceleration,
+        );
         let sums = &self.sums;
         if self.from_sums {
             // Column by column, point by point: the same values as below.
