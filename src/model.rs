@@ -270,11 +270,18 @@ impl Model {
         self.vehicles[r.vehicle].wheel_position(r.wheel, t)
     }
 
-    /// Writes every flattened wheel's position at time `t` into `positions`, m.
+    /// Writes every flattened wheel's position at time `t` into `positions`,
+    /// m: [`Self::wheel_position`] of each, each vehicle's front axle found
+    /// once for its wheels (a train's dozens of axles; the same values).
     #[inline]
     pub fn wheel_positions(&self, t: f64, positions: &mut [f64]) {
-        for (w, x) in positions.iter_mut().enumerate() {
-            *x = self.wheel_position(w, t);
+        let mut front = (usize::MAX, 0.0);
+        for (x, r) in positions.iter_mut().zip(&self.wheels) {
+            let vehicle = &self.vehicles[r.vehicle];
+            if front.0 != r.vehicle {
+                front = (r.vehicle, vehicle.front_position(t));
+            }
+            *x = front.1 - vehicle.wheels[r.wheel].offset;
         }
     }
 

@@ -96,6 +96,34 @@ impl HermiteField {
         }
     }
 
+    /// One field holding `fields` (each of one component, all on the same
+    /// nodes) as its components, in order, so that one [`Self::values_at`]
+    /// gives every field's [`Self::value_at`], bit for bit (the same element,
+    /// shape functions and sums), from one element search. `None` when the
+    /// nodes differ or a field has more than one component.
+    pub fn stacked(fields: &[&HermiteField]) -> Option<HermiteField> {
+        let first = fields.first()?;
+        if fields
+            .iter()
+            .any(|f| f.components != 1 || f.node_x != first.node_x || f.spacing != first.spacing)
+        {
+            return None;
+        }
+        let components = fields.len();
+        let mut nodal = vec![0.0; first.nodal.len() * components];
+        for (c, field) in fields.iter().enumerate() {
+            for (slot, &value) in field.nodal.iter().enumerate() {
+                nodal[slot * components + c] = value;
+            }
+        }
+        Some(Self {
+            node_x: first.node_x.clone(),
+            components,
+            nodal,
+            spacing: first.spacing,
+        })
+    }
+
     /// Number of components.
     pub fn components(&self) -> usize {
         self.components
@@ -242,5 +270,35 @@ mod tests {
         }
         assert_eq!(field.value_at(-0.1), 0.0);
         assert_eq!(field.value_at(4.1), 0.0);
+    }
+
+    /// A stack of one-component fields gives each field's value bit for
+    /// bit, off the mesh too; fields on other nodes do not stack.
+    #[test]
+    fn stacked_fields_give_each_value_exactly() {
+        let nodes = vec![0.0, 0.75, 1.5, 2.25, 3.0];
+        let fields: Vec<HermiteField> = (0..3)
+            .map(|k| {
+                HermiteField::from_fn(nodes.clone(), 1, |n, _| {
+                    let x = nodes[n] + 0.1 * k as f64;
+                    (x.sin() / 3.0, (1.7 * x).cos() * 1e-3)
+                })
+            })
+            .collect();
+        let refs: Vec<&HermiteField> = fields.iter().collect();
+        let stack = HermiteField::stacked(&refs).expect("same nodes");
+        assert_eq!(stack.components(), 3);
+        let mut values = [0.0; 3];
+        for i in -3..=33 {
+            let x = 0.1 * i as f64 - 0.0123;
+            stack.values_at(x, &mut values);
+            for (v, f) in values.iter().zip(&fields) {
+                assert_eq!(v.to_bits(), f.value_at(x).to_bits(), "x = {x}");
+            }
+        }
+        let other = HermiteField::from_fn(vec![0.0, 1.0, 3.0], 1, |_, _| (1.0, 0.0));
+        assert!(HermiteField::stacked(&[&fields[0], &other]).is_none());
+        assert!(HermiteField::stacked(&[&stack]).is_none());
+        assert!(HermiteField::stacked(&[]).is_none());
     }
 }

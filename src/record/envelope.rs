@@ -28,9 +28,11 @@
 //! or a shear's influence line kinks or jumps under the load, so its static
 //! extreme sits exactly there, between two steps.
 
-use super::probe::{StaticProbe, dot, filtered_shape, static_shape, static_share_beyond};
+use super::probe::{StaticProbe, filtered_shape, static_shape, static_share_beyond};
 use super::unit_of;
 use crate::bridge::BridgeError;
+use crate::bridge::InfluenceLine;
+use crate::bridge::hermite::HermiteField;
 use crate::bridge::section::{SectionLoads, SectionProbe, Side};
 use crate::model::Model;
 use crate::scene::{Envelopes, Quantity};
@@ -172,6 +174,193 @@ pub(super) struct EnvelopeTracker {
     passing: Vec<f64>,
     /// Every flattened wheel's index (the wheels a passing instant sums).
     all_wheels: Vec<usize>,
+    /// This step's values at every point, computed for all points at once.
+    sums: DeckSums,
+    /// Whether every column's values are [`Self::sums`]' (displacements
+    /// from stacked lines and accelerations, no section), so that the
+    /// columns are tracked from them alone.
+    from_sums: bool,
+}
+
+/// `extremes` updated with this step's `values`, one per point (pushed at
+/// the first step).
+fn track(extremes: &mut Vec<Extremes>, values: impl Iterator<Item = f64>, time: f64, at: f64) {
+    if extremes.is_empty() {
+        extremes.extend(values.map(|v| Extremes::new(v, time, at)));
+    } else {
+        for (e, v) in extremes.iter_mut().zip(values) {
+            e.update(v, time, at);
+        }
+    }
+}
+
+/// One step's per-point sums of every point at once, each in its probe's
+/// formula, term for term and in its order (bit for bit what the point's
+/// own `dot` and [`StaticProbe::deflections`] give): the loops are turned
+/// inside out, modes (and wheels) outside, points inside, over shapes kept
+/// mode-major, and the points' static influence lines are stacked into one
+/// field per wheel line ([`HermiteField::stacked`]) when all are Hermite
+/// fields on one mesh (a beam), so that each wheel's element is found
+/// once for all points.
+#[derive(Debug, Clone)]
+struct DeckSums {
+    /// Mode values φᵢ(x_p), the filtered ones of the acceleration and the
+    /// static shapes φᵢ/ωᵢ², mode-major (`[i * points + p]`).
+    shape: Vec<f64>,
+    acceleration_shape: Vec<f64>,
+    static_shape: Vec<f64>,
+    /// Per wheel line (as [`StaticProbe::influences`]) the points' lines,
+    /// and which line each flattened wheel uses; `None` when they do not
+    /// stack (the points' own lines are used).
+    lines: Option<(Vec<HermiteField>, Vec<usize>)>,
+    /// Scratch: every point's line at one wheel, and φ_s·φ_w at one wheel.
+    values: Vec<f64>,
+    wheel_dots: Vec<f64>,
+    /// This step's sums per point: Σ φᵢ qᵢ, Σ φᵢ q̈ᵢ (filtered), the full
+    /// static deflection under the wheel forces, the static crossing's, and
+    /// the modal part of the former (`static_share_beyond`'s).
+    modal: Vec<f64>,
+    acceleration: Vec<f64>,
+    full: Vec<f64>,
+    statics: Vec<f64>,
+    modal_static: Vec<f64>,
+}
+
+/// `shapes` (one per point, each `modes` long) mode-major.
+fn mode_major<'a>(shapes: impl Iterator<Item = &'a [f64]> + Clone, modes: usize) -> Vec<f64> {
+    (0..modes)
+        .flat_map(|i| {
+            shapes
+                .clone()
+                .map(move |s| s.get(i).copied().unwrap_or(0.0))
+        })
+        .collect()
+}
+
+/// `out[p]` = Σᵢ `shapes[i * points + p]` · `x[i]` over the first `terms`
+/// modes, from −0.0 and in mode order: [`dot`] of point p's shape and `x`.
+fn mode_sums(out: &mut [f64], shapes: &[f64], x: &[f64], terms: usize) {
+    out.fill(-0.0);
+    let points = out.len();
+    if points == 0 {
+        return;
+    }
+    for (row, &xi) in shapes.chunks_exact(points).zip(x).take(terms) {
+        for (o, s) in out.iter_mut().zip(row) {
+            *o += s * xi;
+        }
+    }
+}
+
+impl DeckSums {
+    fn new(points: &[PointProbe], modes: usize) -> Self {
+        let count = points.len();
+        let lines = Self::stack(points);
+        Self {
+            shape: mode_major(points.iter().map(|p| p.shape.as_slice()), modes),
+            acceleration_shape: mode_major(
+                points.iter().map(|p| p.acceleration_shape.as_slice()),
+                modes,
+            ),
+            static_shape: mode_major(points.iter().map(|p| p.static_shape.as_slice()), modes),
+            lines,
+            values: vec![0.0; count],
+            wheel_dots: vec![0.0; count],
+            modal: vec![0.0; count],
+            acceleration: vec![0.0; count],
+            full: vec![0.0; count],
+            statics: vec![0.0; count],
+            modal_static: vec![0.0; count],
+        }
+    }
+
+    /// The points' lines stacked, one field per wheel line; `None` unless
+    /// every line is a Hermite field on one mesh and every point's wheels
+    /// use the same lines.
+    fn stack(points: &[PointProbe]) -> Option<(Vec<HermiteField>, Vec<usize>)> {
+        let first = &points.first()?.statics;
+        if points
+            .iter()
+            .any(|p| p.statics.wheel_influence != first.wheel_influence)
+        {
+            return None;
+        }
+        let lines = (0..first.influences.len())
+            .map(|l| {
+                let fields = points
+                    .iter()
+                    .map(|p| match p.statics.influences.get(l) {
+                        Some(InfluenceLine::Hermite(field)) => Some(field),
+                        _ => None,
+                    })
+                    .collect::<Option<Vec<_>>>()?;
+                HermiteField::stacked(&fields)
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some((lines, first.wheel_influence.clone()))
+    }
+
+    /// This step's sums of the quantities enveloped (`displacement`,
+    /// `acceleration`): the modal ones, and for displacements on stacked
+    /// lines the static ones of the wheels `on_deck` with `wheel_modes`
+    /// (wheel-major, `modes` a wheel; empty without static correction).
+    #[allow(clippy::too_many_arguments)]
+    fn evaluate(
+        &mut self,
+        view: &StepView<'_>,
+        static_loads: &[f64],
+        wheel_modes: &[f64],
+        on_deck: &[usize],
+        displacement: bool,
+        acceleration: bool,
+    ) {
+        let modes = self.shape.len() / self.modal.len().max(1);
+        // `dot`'s terms: the shorter of the shape (every mode) and q.
+        if acceleration {
+            mode_sums(
+                &mut self.acceleration,
+                &self.acceleration_shape,
+                view.modal_acceleration,
+                modes.min(view.modal_acceleration.len()),
+            );
+        }
+        if !displacement {
+            return;
+        }
+        mode_sums(
+            &mut self.modal,
+            &self.shape,
+            view.modal_displacement,
+            modes.min(view.modal_displacement.len()),
+        );
+        let Some((lines, wheel_line)) = self.lines.as_ref() else {
+            return;
+        };
+        // From −0.0, as `Iterator::sum` and the folds start.
+        self.full.fill(-0.0);
+        self.statics.fill(-0.0);
+        self.modal_static.fill(-0.0);
+        for &w in on_deck {
+            lines[wheel_line[w]].values_at(view.wheel_positions[w], &mut self.values);
+            let (force, load) = (view.contact_forces[w], static_loads[w]);
+            for ((full, statics), &g) in self
+                .full
+                .iter_mut()
+                .zip(&mut self.statics)
+                .zip(&self.values)
+            {
+                *full -= force * g;
+                *statics -= load * g;
+            }
+            if !wheel_modes.is_empty() {
+                let values = &wheel_modes[w * modes..(w + 1) * modes];
+                mode_sums(&mut self.wheel_dots, &self.static_shape, values, modes);
+                for (modal, &d) in self.modal_static.iter_mut().zip(&self.wheel_dots) {
+                    *modal += -force * d;
+                }
+            }
+        }
+    }
 }
 
 /// Two positions within this distance (m) are one envelope point.
@@ -408,6 +597,13 @@ impl EnvelopeTracker {
             })
             .collect();
         let wheels = model.wheels.len();
+        let sums = DeckSums::new(&points, modes);
+        let from_sums = points.iter().all(|p| p.section.is_none())
+            && envelopes.quantities.iter().all(|q| match q {
+                Quantity::BridgeDisplacement => sums.lines.is_some(),
+                Quantity::BridgeAcceleration => true,
+                _ => false,
+            });
         Ok(Self {
             envelope: Envelope {
                 x,
@@ -421,6 +617,8 @@ impl EnvelopeTracker {
             previous_lead: 0.0,
             passing: Vec::with_capacity(wheels),
             all_wheels: (0..wheels).collect(),
+            sums,
+            from_sums,
         })
     }
 
@@ -451,7 +649,45 @@ impl EnvelopeTracker {
         };
         let corrected = model.bridge.static_correction;
         let static_loads = &model.static_wheel_loads;
-        for (p, point) in self.points.iter().enumerate() {
+        let has = |q| self.envelope.columns.iter().any(|c| c.quantity == q);
+        let (displacement, acceleration) = (
+            has(Quantity::BridgeDisplacement),
+            has(Quantity::BridgeAcceleration),
+        );
+        self.sums.evaluate(
+            view,
+            static_loads,
+            wheel_modes,
+            on_deck,
+            displacement,
+            acceleration,
+        );
+        let sums = &self.sums;
+        if self.from_sums {
+            // Column by column, point by point: the same values as below.
+            let time = view.time;
+            for column in &mut self.envelope.columns {
+                match column.quantity {
+                    Quantity::BridgeDisplacement => {
+                        let values = sums.modal.iter().enumerate().map(|(p, &modal)| {
+                            if wheel_modes.is_empty() {
+                                modal
+                            } else {
+                                modal + (sums.full[p] - sums.modal_static[p])
+                            }
+                        });
+                        track(&mut column.extremes, values, time, position);
+                        let statics = sums.statics.iter().copied();
+                        track(&mut column.statics, statics, time, position);
+                    }
+                    _ => {
+                        let values = sums.acceleration.iter().copied();
+                        track(&mut column.extremes, values, time, position);
+                    }
+                }
+            }
+        }
+        for (p, point) in self.points.iter().enumerate().filter(|_| !self.from_sums) {
             let section = point.section.as_ref().map(|s| s.forces(&loads, corrected));
             let static_section = point
                 .section
@@ -460,32 +696,39 @@ impl EnvelopeTracker {
             for column in &mut self.envelope.columns {
                 let (value, static_value) = match column.quantity {
                     Quantity::BridgeDisplacement => {
-                        let modal = dot(&point.shape, view.modal_displacement);
-                        let (full, statics) = point.statics.deflections(
-                            view.wheel_positions,
-                            view.contact_forces,
-                            static_loads,
-                            on_deck,
-                        );
+                        let modal = sums.modal[p];
                         // The record's formula (`corrected_displacement`).
-                        let value = if wheel_modes.is_empty() {
-                            modal
+                        if sums.lines.is_some() {
+                            let value = if wheel_modes.is_empty() {
+                                modal
+                            } else {
+                                // `static_share_beyond`'s difference.
+                                modal + (sums.full[p] - sums.modal_static[p])
+                            };
+                            (value, Some(sums.statics[p]))
                         } else {
-                            modal
-                                + static_share_beyond(
-                                    full,
-                                    &point.static_shape,
-                                    wheel_modes,
-                                    view,
-                                    on_deck,
-                                )
-                        };
-                        (value, Some(statics))
+                            let (full, statics) = point.statics.deflections(
+                                view.wheel_positions,
+                                view.contact_forces,
+                                static_loads,
+                                on_deck,
+                            );
+                            let value = if wheel_modes.is_empty() {
+                                modal
+                            } else {
+                                modal
+                                    + static_share_beyond(
+                                        full,
+                                        &point.static_shape,
+                                        wheel_modes,
+                                        view,
+                                        on_deck,
+                                    )
+                            };
+                            (value, Some(statics))
+                        }
                     }
-                    Quantity::BridgeAcceleration => (
-                        dot(&point.acceleration_shape, view.modal_acceleration),
-                        None,
-                    ),
+                    Quantity::BridgeAcceleration => (sums.acceleration[p], None),
                     Quantity::BridgeMoment => (
                         section.map_or(0.0, |s| s.moment),
                         static_section.map(|s| s.moment),

@@ -2,7 +2,7 @@
 //! girder DAFs, envelopes and wheel separation, and the written samples.
 
 use super::ground::GroundTerm;
-use super::probe::{Probe, StaticProbe, dot, truncated_static_share};
+use super::probe::{Probe, StaticProbe, dot, static_share_beyond};
 use super::{Flight, Recorder, SEPARATION_GAP};
 use crate::bridge::section::SectionLoads;
 use crate::solve::{Observer, StepView};
@@ -13,11 +13,6 @@ impl Observer for Recorder<'_> {
         if sampled {
             self.history.time.push(view.time);
         }
-        // Whether at least one axle is on the deck (the summary's `on_bridge`).
-        let any_on_deck = view
-            .wheel_positions
-            .iter()
-            .any(|&x| self.model.bridge.is_on(x));
         let dt = self.model.time_step;
         // A flight (zero force, gap above SEPARATION_GAP) is a contact-loss
         // episode once its gap passes the loss gap (see RIGID_LOSS_GAP);
@@ -77,6 +72,8 @@ impl Observer for Recorder<'_> {
                 .filter(|&w| model.bridge.is_on(view.wheel_positions[w])),
         );
         let on_deck = &self.on_deck;
+        // Whether at least one axle is on the deck (the summary's `on_bridge`).
+        let any_on_deck = !on_deck.is_empty();
         if !self.wheel_modes.is_empty() {
             for &w in on_deck {
                 let values = &mut self.wheel_modes[w * modes..(w + 1) * modes];
@@ -95,19 +92,24 @@ impl Observer for Recorder<'_> {
         }
         for probe in &mut self.daf_probes {
             let mut dynamic = dot(&probe.shape, view.modal_displacement);
+            // The full deflection under the wheel forces (the static
+            // correction's) and the static crossing's, each influence value
+            // read once.
+            let (full, statics) = probe.statics.deflections(
+                view.wheel_positions,
+                view.contact_forces,
+                &model.static_wheel_loads,
+                on_deck,
+            );
             if !self.wheel_modes.is_empty() {
-                dynamic += truncated_static_share(
-                    &probe.statics,
+                dynamic += static_share_beyond(
+                    full,
                     &probe.static_shape,
                     &self.wheel_modes,
                     view,
                     on_deck,
                 );
             }
-            let statics =
-                probe
-                    .statics
-                    .deflection(view.wheel_positions, &model.static_wheel_loads, on_deck);
             let r = &mut probe.result;
             r.dynamic_max_abs = r.dynamic_max_abs.max(dynamic.abs());
             r.static_max_abs = r.static_max_abs.max(statics.abs());
@@ -205,7 +207,7 @@ impl Observer for Recorder<'_> {
                         modal
                     } else {
                         // Σ_w F_w [G(x, x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²], as
-                        // `truncated_static_share`, term by term.
+                        // `static_share_beyond`, term by term.
                         let full = StaticProbe::deflection_from(
                             &part.influence,
                             view.contact_forces,

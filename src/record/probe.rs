@@ -116,20 +116,12 @@ impl StaticProbe {
         })
     }
 
-    /// Static deflection at the point, m (upward positive), with every wheel
-    /// carrying its static load at `positions`.
-    /// Only the wheels `on_deck` (indices) are summed: the influence
-    /// lines vanish off the deck.
-    pub(super) fn deflection(&self, positions: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
-        on_deck
-            .iter()
-            .map(|&w| -loads[w] * self.influences[self.wheel_influence[w]].value_at(positions[w]))
-            .sum()
-    }
-
-    /// [`Self::deflection`] under two load sets at once, `loads` and
-    /// `static_loads` (N, downward), each influence value read once: the
-    /// full deflection of the static correction and the static crossing's.
+    /// Static deflection at the point, m (upward positive), under two load
+    /// sets at once, `loads` and `static_loads` (N, downward), each wheel's
+    /// at `positions`, each influence value read once: the full deflection
+    /// of the static correction and the static crossing's. Only the wheels
+    /// `on_deck` (indices) are summed: the influence lines vanish off the
+    /// deck.
     pub(super) fn deflections(
         &self,
         positions: &[f64],
@@ -137,7 +129,7 @@ impl StaticProbe {
         static_loads: &[f64],
         on_deck: &[usize],
     ) -> (f64, f64) {
-        // From −0.0, as `Iterator::sum` starts: the same bits as `deflection`.
+        // From −0.0, as `Iterator::sum` starts (`deflection_from`'s bits).
         on_deck.iter().fold((-0.0, -0.0), |(a, b), &w| {
             let g = self.influences[self.wheel_influence[w]].value_at(positions[w]);
             (a - loads[w] * g, b - static_loads[w] * g)
@@ -145,7 +137,7 @@ impl StaticProbe {
     }
 
     /// The influence line's value at each wheel `on_deck` (in that order),
-    /// m/N, into `values`: [`Self::deflection`]'s factors, for several
+    /// m/N, into `values`: [`Self::deflections`]' factors, for several
     /// load sets at one step.
     pub(super) fn values_at_wheels(
         &self,
@@ -161,7 +153,8 @@ impl StaticProbe {
         );
     }
 
-    /// [`Self::deflection`] from the values of [`Self::values_at_wheels`].
+    /// One deflection of [`Self::deflections`] from the values of
+    /// [`Self::values_at_wheels`].
     pub(super) fn deflection_from(values: &[f64], loads: &[f64], on_deck: &[usize]) -> f64 {
         on_deck
             .iter()
@@ -228,23 +221,11 @@ pub(super) fn static_shape(model: &Model, shape: &[f64]) -> Vec<f64> {
 }
 
 /// The static share of the modes left out at a point (m, upward
-/// positive): the full static deflection under the current wheel forces
-/// minus its modal part, Σ_w F_w [Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ² − G(x, x_w)]
+/// positive): the full static deflection under the current wheel forces,
+/// `full` (m, [`StaticProbe::deflections`] under the contact forces), minus
+/// its modal part, Σ_w F_w [Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ² − G(x, x_w)]
 /// (mode-acceleration method; Williams 1945; Cornwell, Craig & Johnson
 /// 1983). `wheel_modes` holds the mode values at each wheel (wheel-major).
-pub(super) fn truncated_static_share(
-    statics: &StaticProbe,
-    static_shape: &[f64],
-    wheel_modes: &[f64],
-    view: &StepView<'_>,
-    on_deck: &[usize],
-) -> f64 {
-    let full = statics.deflection(view.wheel_positions, view.contact_forces, on_deck);
-    static_share_beyond(full, static_shape, wheel_modes, view, on_deck)
-}
-
-/// [`truncated_static_share`] with the full static deflection under the
-/// current wheel forces, `full` (m), given.
 pub(super) fn static_share_beyond(
     full: f64,
     static_shape: &[f64],
