@@ -368,7 +368,12 @@ impl ModalBridge {
             }
             (Bridge::FeImport(_), _) => vec![0.0; omegas.len()],
         };
+        let rayleigh_damping = match bridge {
+            Bridge::Beam(beam) => beam.damping.rayleigh_coefficients(),
+            _ => None,
+        };
         Ok(Self {
+            rayleigh_damping,
             length: x,
             supports,
             circular_frequencies: omegas,

@@ -106,6 +106,12 @@ pub struct ModalBridge {
     pub circular_frequencies: Vec<f64>,
     /// Modal damping ratios ζᵢ, dimensionless.
     pub damping_ratios: Vec<f64>,
+    /// The damping of the assembled model as C = c_M M + c_K K, `(c_M,
+    /// c_K)` in (1/s, s), for the direct solver ([`crate::solve::direct`]):
+    /// a beam's Rayleigh damping, or (0, 0) without damping; `None` where
+    /// no such sparse C stands for the modal ratios (a nonzero modal ratio,
+    /// a plate, an imported model).
+    pub rayleigh_damping: Option<(f64, f64)>,
     /// Number of modes the discretisation offers.
     pub available_modes: usize,
     /// How the kept modes were chosen, in words (for the summary).
@@ -358,6 +364,19 @@ impl ModalBridge {
     ) -> Option<Result<Vec<f64>, BridgeError>> {
         match &self.shapes {
             Shapes::Imported(imported) => Some(imported.static_flexibility_at(points)),
+            _ => None,
+        }
+    }
+
+    /// The assembled finite-element model of a plane beam (its sparse K
+    /// and M on the free DOFs and the mesh), for the direct solver
+    /// ([`crate::solve::direct`]); `None` for a 3D beam, a plate or an
+    /// imported model.
+    pub fn beam_model(&self) -> Option<&BeamModel> {
+        match &self.shapes {
+            Shapes::Beam {
+                model, sway: None, ..
+            } => Some(model),
             _ => None,
         }
     }

@@ -16,6 +16,7 @@
 pub mod cancel;
 pub mod coupled;
 pub mod dense;
+pub mod direct;
 pub mod embs;
 pub mod embs_scale;
 pub mod guard;
@@ -82,6 +83,12 @@ pub enum SolveError {
     SingularContact {
         /// Time, s.
         time: f64,
+        /// Explanation.
+        reason: String,
+    },
+    /// The direct solver cannot run this scene ([`direct`]).
+    #[error("the direct solver cannot run this scene: {reason}")]
+    Direct {
         /// Explanation.
         reason: String,
     },

@@ -1,0 +1,168 @@
+//! The direct solver: Newmark/HHT-α on the assembled finite-element
+//! system of the bridge, exact in space (no modal truncation).
+//!
+//! **The math.** The bridge's free DOFs u (m, rad) obey
+//! M ü + C u̇ + K u = F(t) − Σ_c N(x_c) λ_c,
+//! K (N/m) and the consistent M (kg) assembled on the free DOFs
+//! ([`crate::bridge::beam::BeamModel`]), Rayleigh damping C = c_M M + c_K K
+//! (the only damping with a sparse C that the modal solver's ratios
+//! ζ(ω) = c_M/(2ω) + c_K ω/2 stand for), N(x) the Hermite interpolation of
+//! the deck's deflection at x from its element's DOFs
+//! ([`assembled::LinePoint`]; the very functions the modal solver's mode
+//! values φᵢ(x) = N(x)ᵀΦᵢ are interpolated with), F the moving forces'
+//! nodal loads −P N(x) (P downward, N) and λ the contact forces
+//! (compression positive). HHT-α with Newmark (β, γ) exactly as
+//! [`super::newmark`] (w = 1 + α):
+//! K̂ u_{n+1} = R̂, K̂ = a₀M + w(a₁C + K),
+//! R̂ = wF_{n+1} − αFₙ + M hₐ + wC h_v + α(C u̇ₙ + K uₙ),
+//! and ü_{n+1} from the equation of motion, (M + wγΔt C) ü_{n+1} = wF_{n+1}
+//! − αFₙ − wC(u̇ₙ + (1−γ)Δt üₙ) − wK u_{n+1} + α(C u̇ₙ + K uₙ), u̇ by
+//! Newmark ([`step::DirectStep`]). With every mode kept, the modal solver
+//! integrates the same discrete system in other coordinates, so the two
+//! agree to round-off (tests/it/direct.rs).
+//!
+//! **Cost.** Once: two sparse LDLᵀ factorisations (faer, approximate
+//! minimum degree ordering, `Par::Seq`) of K̂ and of M + wγΔtC, O(nnz(L))
+//! memory each (a beam's band: O(n)). Per step: four sparse products with
+//! K or M (O(nnz(K))), one solve with each factor (O(nnz(L))), the loads'
+//! O(log nodes) element searches, and two products for the energy the
+//! divergence guard checks: O(n) for a beam, nothing grows with the
+//! loads beyond O(1) each. Nothing is allocated in the step.
+//!
+//! **Errors.** [`SolveError::Direct`] for a bridge that is not a plane
+//! beam, damping that no sparse C stands for (a nonzero modal ratio), a
+//! matrix that cannot be factorised, or a scene with vehicles in contact
+//! (next: permanent contact).
+
+pub mod assembled;
+pub mod step;
+
+use self::assembled::{AssembledBeam, LinePoint};
+use self::step::DirectStep;
+use super::newmark::Newmark;
+use super::time_loop::Stepper;
+use super::{SolveError, StepView, VehicleState};
+use crate::model::Model;
+use crate::vehicle::WheelKind;
+
+/// The direct method's state, for [`super::time_loop::drive`].
+#[derive(Debug)]
+pub struct Direct<'a> {
+    model: &'a Model,
+    nm: Newmark,
+    beam: AssembledBeam<'a>,
+    bridge: DirectStep,
+    /// Moving forces: (flattened wheel, downward load N).
+    loads: Vec<(usize, f64)>,
+    /// Vehicles at rest (moving forces have no DOFs that move).
+    states: Vec<VehicleState>,
+    wheel_positions: Vec<f64>,
+    contact_forces: Vec<f64>,
+    contact_gaps: Vec<f64>,
+}
+
+impl<'a> Direct<'a> {
+    /// `model` at rest at t = 0, K̂ factorised.
+    ///
+    /// # Errors
+    ///
+    /// [`SolveError::Direct`]: see the module doc.
+    pub fn new(model: &'a Model) -> Result<Self, SolveError> {
+        let beam = AssembledBeam::of(&model.bridge)?;
+        if model.ground.is_some() {
+            return Err(SolveError::Direct {
+                reason: "ground motion is not supported yet".into(),
+            });
+        }
+        let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
+        let bridge = DirectStep::new(&beam, &nm)?;
+        let mut loads = Vec::new();
+        for (flat, r) in model.wheels.iter().enumerate() {
+            match model.vehicles[r.vehicle].wheels[r.wheel].kind {
+                WheelKind::Load(load) => loads.push((flat, load)),
+                WheelKind::Dof(_) => {
+                    return Err(SolveError::Direct {
+                        reason: "vehicles in contact are not supported yet (moving forces only)"
+                            .into(),
+                    });
+                }
+            }
+        }
+        let nw = model.wheels.len();
+        let mut wheel_positions = vec![0.0; nw];
+        model.wheel_positions(0.0, &mut wheel_positions);
+        Ok(Self {
+            states: (0..model.vehicles.len())
+                .map(|v| VehicleState::at_rest(model, v))
+                .collect(),
+            contact_forces: model.static_wheel_loads.clone(),
+            contact_gaps: vec![0.0; nw],
+            wheel_positions,
+            loads,
+            bridge,
+            beam,
+            nm,
+            model,
+        })
+    }
+
+    /// The bridge's free-DOF displacements u after the last step (m, rad).
+    pub fn displacement(&self) -> &[f64] {
+        &self.bridge.displacement
+    }
+
+    /// The bridge's free-DOF accelerations ü after the last step (m/s², rad/s²).
+    pub fn acceleration(&self) -> &[f64] {
+        &self.bridge.acceleration
+    }
+
+    /// N(x) of the deck at `x` (m).
+    pub fn point(&self, x: f64) -> LinePoint {
+        self.beam.point(x)
+    }
+
+    /// The deck's deflection at `x` (m, upward positive) after the last step.
+    pub fn deflection_at(&self, x: f64) -> f64 {
+        self.beam.point(x).value(&self.bridge.displacement)
+    }
+}
+
+impl Stepper for Direct<'_> {
+    type Error = SolveError;
+
+    fn models(&self) -> &[&Model] {
+        std::slice::from_ref(&self.model)
+    }
+
+    fn advance(&mut self, _step: usize, t: f64) -> Result<(), SolveError> {
+        self.model.wheel_positions(t, &mut self.wheel_positions);
+        self.bridge.clear_force();
+        for &(flat, load) in &self.loads {
+            let point = self.beam.point(self.wheel_positions[flat]);
+            point.spread(-load, &mut self.bridge.current_force);
+        }
+        self.bridge.predict(&self.nm);
+        self.bridge.finish(&self.nm);
+        Ok(())
+    }
+
+    fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
+        (self.bridge.energy(), &self.contact_forces)
+    }
+
+    fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
+        // The records read modal coordinates; the direct state has none
+        // (wiring the nodal state to the records is left for later).
+        StepView {
+            step,
+            time: t,
+            modal_displacement: &[],
+            modal_acceleration: &[],
+            vehicles: &self.states,
+            contact_forces: &self.contact_forces,
+            contact_gaps: &self.contact_gaps,
+            wheel_positions: &self.wheel_positions,
+            wheel_modes: None,
+        }
+    }
+}
