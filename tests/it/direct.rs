@@ -21,12 +21,23 @@ use vbi::solve::{Observer, StepView};
 /// kg/m) meshed with 20 elements, every mode kept, under `vehicle` at
 /// `time_step`, with `damping` and `extra_solver` keys.
 fn scene(vehicle: &str, damping: &str, time_step: f64, extra_solver: &str) -> Model {
+    scene_with(vehicle, damping, time_step, extra_solver, "")
+}
+
+/// [`scene`] with a `surface` line (empty: a smooth deck).
+fn scene_with(
+    vehicle: &str,
+    damping: &str,
+    time_step: f64,
+    extra_solver: &str,
+    surface: &str,
+) -> Model {
     let yaml = format!(
         "name: direct\n\
          bridge:\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  \
          mass_per_length: 2303.0\n  elements_per_span: 20\n  \
          modes: {{count: 40, static_correction: false}}\n  damping: {damping}\n\
-         vehicles:\n  - {vehicle}\n\
+         vehicles:\n  - {vehicle}\n{surface}\
          solver: {{method: coupled, time_step: {time_step}{extra_solver}}}\n\
          record:\n  - {{name: midspan, quantity: bridge_displacement, x: 12.5}}\n"
     );
@@ -158,5 +169,135 @@ fn direct_newmark_converges_at_second_order() {
     );
     for ratio in ratios {
         assert!((3.5..=4.5).contains(&ratio), "ratio {ratio}");
+    }
+}
+
+/// One step's record of a run: the deflection at a point (m, upward), the
+/// vehicles' DOFs (m, rad) and every wheel's contact force (N).
+#[derive(Debug, Clone, PartialEq)]
+struct Sample {
+    deflection: f64,
+    vehicle_dofs: Vec<f64>,
+    forces: Vec<f64>,
+}
+
+struct ModalSamples {
+    values: Vec<f64>,
+    samples: Vec<Sample>,
+}
+
+impl Observer for ModalSamples {
+    fn observe(&mut self, view: &StepView<'_>) {
+        let deflection = self
+            .values
+            .iter()
+            .zip(view.modal_displacement)
+            .map(|(p, q)| p * q)
+            .sum();
+        self.samples.push(Sample {
+            deflection,
+            vehicle_dofs: view
+                .vehicles
+                .iter()
+                .flat_map(|v| v.displacement.iter().copied())
+                .collect(),
+            forces: view.contact_forces.to_vec(),
+        });
+    }
+}
+
+fn modal_samples(model: &Model, x: f64) -> Vec<Sample> {
+    let mut values = vec![0.0; model.bridge.mode_count()];
+    model.bridge.mode_values(x, 0.0, &mut values);
+    let mut observer = ModalSamples {
+        values,
+        samples: Vec::new(),
+    };
+    vbi::solve::run_method(model, model.method, &mut observer, None, &mut |_, _| {}).unwrap();
+    observer.samples
+}
+
+fn direct_sample(direct: &Direct<'_>, x: f64) -> Sample {
+    Sample {
+        deflection: direct.deflection_at(x),
+        vehicle_dofs: direct
+            .vehicles()
+            .iter()
+            .flat_map(|v| v.displacement.iter().copied())
+            .collect(),
+        forces: direct.contact_forces().to_vec(),
+    }
+}
+
+fn direct_samples(model: &Model, x: f64) -> Vec<Sample> {
+    let mut direct = Direct::new(model).unwrap();
+    let mut samples = vec![direct_sample(&direct, x)];
+    for step in 1..=model.steps {
+        direct.advance(step, step as f64 * model.time_step).unwrap();
+        samples.push(direct_sample(&direct, x));
+    }
+    samples
+}
+
+/// The largest differences (deflection m, vehicle DOF m, force N) between
+/// two runs, and the peaks of the first (the deflection, the vehicle DOFs'
+/// motion about their initial values, the forces' departure from their
+/// initial values).
+fn differences(a: &[Sample], b: &[Sample]) -> ([f64; 3], [f64; 3]) {
+    assert_eq!(a.len(), b.len());
+    let (mut difference, mut peak) = ([0.0f64; 3], [0.0f64; 3]);
+    for (s, t) in a.iter().zip(b) {
+        difference[0] = difference[0].max((s.deflection - t.deflection).abs());
+        peak[0] = peak[0].max(s.deflection.abs());
+        for (k, (x, y)) in s.vehicle_dofs.iter().zip(&t.vehicle_dofs).enumerate() {
+            difference[1] = difference[1].max((x - y).abs());
+            peak[1] = peak[1].max((x - a[0].vehicle_dofs[k]).abs());
+        }
+        for (k, (x, y)) in s.forces.iter().zip(&t.forces).enumerate() {
+            difference[2] = difference[2].max((x - y).abs());
+            peak[2] = peak[2].max((x - a[0].forces[k]).abs());
+        }
+    }
+    (difference, peak)
+}
+
+/// Vehicles in permanent contact: the direct solver against the `coupled`
+/// method with all 40 modes (no static correction: nothing is left out),
+/// the midspan deflection, every vehicle DOF and every contact force to
+/// 1e-9 of their peaks (dynamic parts: about the initial static values).
+/// Cases: Yang & Yau's (1997) sprung mass (5,750 kg on 1,595 kN/m, 100
+/// km/h; scenarios/yang-yau-sprung-mass.yaml on this mesh), and the
+/// AASHTO H20-44 truck (two axles, pitch) on a harmonic surface with
+/// Rayleigh damping and HHT α = −0.05.
+#[test]
+fn permanent_contact_matches_the_coupled_method_with_every_mode() {
+    let cases = [
+        (
+            "{type: oscillator, sprung_mass: 5750.0, unsprung_mass: 0.0, stiffness: 1.595e6, speed: 27.777777777777778}",
+            "{type: modal, ratio: 0.0}",
+            "",
+            "",
+        ),
+        (
+            "{type: h20_44, speed: 20.0}",
+            "{type: rayleigh, frequencies: [4.0, 60.0], ratio: 0.02}",
+            ", newmark: {alpha: -0.05}",
+            "surface: {type: harmonic, amplitude: 0.002, wavelength: 5.0, phase: 0.0}\n",
+        ),
+    ];
+    for (vehicle, damping, extra, surface) in cases {
+        let model = scene_with(vehicle, damping, 1.0e-3, extra, surface);
+        assert_eq!(model.bridge.mode_count(), 40);
+        let modal = modal_samples(&model, 12.5);
+        let direct = direct_samples(&model, 12.5);
+        let (difference, peak) = differences(&modal, &direct);
+        eprintln!("{vehicle}: |direct − coupled| {difference:?} of peaks {peak:?}");
+        for k in 0..3 {
+            assert!(peak[k] > 0.0, "{vehicle}: {peak:?}");
+            assert!(
+                difference[k] <= 1e-9 * peak[k],
+                "{vehicle} [{k}]: {difference:?} of {peak:?}"
+            );
+        }
     }
 }

@@ -9,6 +9,7 @@ use crate::bridge::ModalBridge;
 use crate::bridge::beam::BeamModel;
 use crate::bridge::eigen::sparse::SymmetricSparse;
 use crate::bridge::hermite::{shape_curvatures, shape_functions};
+use crate::contact::ContactDirection;
 use crate::solve::SolveError;
 
 /// N(x) at one point of the deck line: the (at most four) free DOFs of the
@@ -98,6 +99,22 @@ impl<'a> AssembledBeam<'a> {
     /// M, sparse on the free DOFs.
     pub fn mass(&self) -> &SymmetricSparse {
         &self.model.pencil.mass
+    }
+
+    /// N(x) of the rail point at `x` (m) in `direction`: the deck line's
+    /// for a vertical contact, all zero for a lateral one (a plane beam
+    /// does not move sideways). Cost O(log nodes).
+    pub fn point_in(&self, direction: ContactDirection, x: f64) -> LinePoint {
+        match direction {
+            ContactDirection::Vertical => self.point(x),
+            ContactDirection::Lateral => LinePoint::default(),
+        }
+    }
+
+    /// The free DOFs any N(x) along the deck touches, ascending (for a
+    /// plane beam: every free DOF).
+    pub fn line_dofs(&self) -> Vec<usize> {
+        (0..self.order()).collect()
     }
 
     /// N(x) at `x` (m) along the deck; all zero off it. Cost O(log nodes).

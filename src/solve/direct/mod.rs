@@ -31,17 +31,29 @@
 //!
 //! **Errors.** [`SolveError::Direct`] for a bridge that is not a plane
 //! beam, damping that no sparse C stands for (a nonzero modal ratio), a
-//! matrix that cannot be factorised, or a scene with vehicles in contact
-//! (next: permanent contact).
+//! matrix that cannot be factorised, ground motion (not yet), or a deck
+//! line too long for the contacts' dense flexibility
+//! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
+//! coupled method's.
+//!
+//! **Vehicles** in permanent contact ([`contact`]): the coupled method's
+//! physics and vehicle condensation ([`super::partition`]) with N(x) for
+//! the mode values, the contact forces from one small dense system per
+//! step whose flexibility G = N(x_c)ᵀ wK̂⁻¹ N(x_d) is read from K̂⁻¹ on
+//! the deck line's DOFs, formed once; the correction of u for all contacts
+//! together is one more solve with K̂'s factor.
 
 pub mod assembled;
+pub mod contact;
 pub mod step;
 
 use self::assembled::{AssembledBeam, LinePoint};
+use self::contact::DirectContacts;
 use self::step::DirectStep;
+use super::guard::Guard;
 use super::newmark::Newmark;
 use super::time_loop::Stepper;
-use super::{SolveError, StepView, VehicleState};
+use super::{SolveError, StepView};
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
@@ -54,8 +66,8 @@ pub struct Direct<'a> {
     bridge: DirectStep,
     /// Moving forces: (flattened wheel, downward load N).
     loads: Vec<(usize, f64)>,
-    /// Vehicles at rest (moving forces have no DOFs that move).
-    states: Vec<VehicleState>,
+    /// The wheels in permanent contact and the vehicles' states.
+    contacts: DirectContacts,
     wheel_positions: Vec<f64>,
     contact_forces: Vec<f64>,
     contact_gaps: Vec<f64>,
@@ -78,23 +90,16 @@ impl<'a> Direct<'a> {
         let bridge = DirectStep::new(&beam, &nm)?;
         let mut loads = Vec::new();
         for (flat, r) in model.wheels.iter().enumerate() {
-            match model.vehicles[r.vehicle].wheels[r.wheel].kind {
-                WheelKind::Load(load) => loads.push((flat, load)),
-                WheelKind::Dof(_) => {
-                    return Err(SolveError::Direct {
-                        reason: "vehicles in contact are not supported yet (moving forces only)"
-                            .into(),
-                    });
-                }
+            if let WheelKind::Load(load) = model.vehicles[r.vehicle].wheels[r.wheel].kind {
+                loads.push((flat, load));
             }
         }
+        let contacts = DirectContacts::new(model, &beam, &nm, bridge.effective_factor())?;
         let nw = model.wheels.len();
         let mut wheel_positions = vec![0.0; nw];
         model.wheel_positions(0.0, &mut wheel_positions);
         Ok(Self {
-            states: (0..model.vehicles.len())
-                .map(|v| VehicleState::at_rest(model, v))
-                .collect(),
+            contacts,
             contact_forces: model.static_wheel_loads.clone(),
             contact_gaps: vec![0.0; nw],
             wheel_positions,
@@ -121,6 +126,22 @@ impl<'a> Direct<'a> {
         self.beam.point(x)
     }
 
+    /// The vehicles' states after the last step.
+    pub fn vehicles(&self) -> &[super::VehicleState] {
+        &self.contacts.states
+    }
+
+    /// Each flattened wheel's contact force after the last step, N
+    /// (compression positive; a moving force's load).
+    pub fn contact_forces(&self) -> &[f64] {
+        &self.contact_forces
+    }
+
+    /// Each flattened wheel's position after the last step, m.
+    pub fn wheel_positions(&self) -> &[f64] {
+        &self.wheel_positions
+    }
+
     /// The deck's deflection at `x` (m, upward positive) after the last step.
     pub fn deflection_at(&self, x: f64) -> f64 {
         self.beam.point(x).value(&self.bridge.displacement)
@@ -142,12 +163,28 @@ impl Stepper for Direct<'_> {
             point.spread(-load, &mut self.bridge.current_force);
         }
         self.bridge.predict(&self.nm);
-        self.bridge.finish(&self.nm);
+        if self.contacts.count() == 0 {
+            self.bridge.finish(&self.nm);
+            return Ok(());
+        }
+        self.contacts.begin_step(
+            self.model,
+            &self.beam,
+            &self.nm,
+            &self.bridge,
+            t,
+            &self.wheel_positions,
+            &self.contact_forces,
+        );
+        self.contacts.solve(t)?;
+        self.contacts
+            .finish_step(&self.nm, &mut self.bridge, &mut self.contact_forces);
         Ok(())
     }
 
     fn guarded(&self, _lane: usize) -> (f64, &[f64]) {
-        (self.bridge.energy(), &self.contact_forces)
+        let energy = Guard::vehicle_energy(self.model, self.bridge.energy(), &self.contacts.states);
+        (energy, &self.contact_forces)
     }
 
     fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
@@ -158,7 +195,7 @@ impl Stepper for Direct<'_> {
             time: t,
             modal_displacement: &[],
             modal_acceleration: &[],
-            vehicles: &self.states,
+            vehicles: &self.contacts.states,
             contact_forces: &self.contact_forces,
             contact_gaps: &self.contact_gaps,
             wheel_positions: &self.wheel_positions,

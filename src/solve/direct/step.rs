@@ -33,6 +33,9 @@ pub struct DirectStep {
     pub inertia_history: Vec<f64>,
     /// h_v = a₁uₙ + a₄u̇ₙ + a₅üₙ, m/s.
     pub damping_history: Vec<f64>,
+    /// The contacts' nodal load −Σ N(x_c)λ_c (N, N·m) of this step, set
+    /// by the caller before [`Self::take_contact_load`].
+    pub contact_load: Vec<f64>,
     /// Nodal load F_{n+1} (N, N·m) being assembled for this step.
     pub current_force: Vec<f64>,
     /// Fₙ, the previous step's nodal load.
@@ -121,6 +124,7 @@ impl DirectStep {
             inertia_history: vec![0.0; n],
             damping_history: vec![0.0; n],
             current_force: vec![0.0; n],
+            contact_load: vec![0.0; n],
             previous_force: vec![0.0; n],
             work_mass: vec![0.0; n],
             work_stiffness: vec![0.0; n],
@@ -174,6 +178,22 @@ impl DirectStep {
         }
         self.effective
             .solve_in_place(&mut self.predictor, &mut self.workspace);
+    }
+
+    /// Adds the contacts' load in [`Self::contact_load`] to the step: to
+    /// F_{n+1}, and to the predictor as u_{n+1} = u* + w K̂⁻¹(−Σ N λ), one
+    /// solve with K̂'s factor whatever the number of contacts
+    /// (`contact_load` is left holding K̂⁻¹ of it). Cost O(n + nnz(L)).
+    pub fn take_contact_load(&mut self, nm: &Newmark) {
+        let w = nm.weight();
+        for (f, g) in self.current_force.iter_mut().zip(&self.contact_load) {
+            *f += g;
+        }
+        self.effective
+            .solve_in_place(&mut self.contact_load, &mut self.workspace);
+        for (u, du) in self.predictor.iter_mut().zip(&self.contact_load) {
+            *u += w * du;
+        }
     }
 
     /// Accepts [`Self::predictor`] as u_{n+1} with the step's whole load in
