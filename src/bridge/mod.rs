@@ -381,6 +381,34 @@ impl ModalBridge {
         }
     }
 
+    /// The kept modes of a plane beam on its free DOFs (1/√kg), column-major
+    /// n × modes (column i is Φᵢ, with ΦᵢᵀMΦᵢ = 1), read back from the
+    /// nodal values of the mode shapes; `None` as [`Self::beam_model`].
+    /// Cost O(n·modes).
+    pub fn beam_mode_vectors(&self) -> Option<Vec<f64>> {
+        let Shapes::Beam {
+            shapes,
+            model,
+            sway: None,
+        } = &self.shapes
+        else {
+            return None;
+        };
+        let (n, modes) = (model.free_dofs(), self.mode_count());
+        let mut vectors = vec![0.0; n * modes];
+        for node in 0..model.node_x.len() {
+            for c in 0..modes {
+                let (w, theta) = shapes.nodal(node, c);
+                for (dof, value) in [(2 * node, w), (2 * node + 1, theta)] {
+                    if let Some(i) = model.free_index[dof] {
+                        vectors[c * n + i] = value;
+                    }
+                }
+            }
+        }
+        Some(vectors)
+    }
+
     /// Whether the modes are an imported finite-element model's.
     pub fn is_imported(&self) -> bool {
         matches!(self.shapes, Shapes::Imported(_))

@@ -4,7 +4,8 @@
 //! at each step both subsystems are advanced by Newmark with the contact
 //! forces as unknowns, the wheel-to-surface gaps are expressed through those
 //! forces (the step's contact compliance), and the contact model closes the
-//! system. [`coupled`] enforces permanent contact.
+//! system. [`coupled`] enforces permanent contact; [`direct`] does the
+//! same on the bridge's assembled matrices instead of its modes.
 //!
 //! Every method is a [`time_loop::Stepper`] — its step and nothing else —
 //! run by the one time loop [`time_loop::drive`], which owns the step
@@ -236,6 +237,9 @@ pub fn run_method(
             &mut [observer],
             progress,
         ),
+        SolverMethod::Direct => {
+            drive_one(&mut direct::Direct::new(model)?, &mut [observer], progress)
+        }
         SolverMethod::Embs => {
             let mut stepper = embs::Embs::new(model, zero_order.is_some())?;
             match zero_order {

@@ -217,20 +217,16 @@ fn line_flexibility(
 }
 
 impl DirectContacts {
-    /// Opens the step ending at `t` (s), after the bridge's predictor
-    /// ([`DirectStep::predict`]): each contact's N and rows, its λ = 0
-    /// kinematics from u*, and each vehicle's condensed rows from its state
-    /// at tₙ and the previous contact forces (N, by flattened wheel).
-    /// Cost O(contacts · log nodes) + O(Σ dofᵥ²).
-    pub fn begin_step(
+    /// Where the contacts are this step (ending at `t`, s): each contact's
+    /// speed and acceleration along its path, N and its Newmark rows
+    /// [N, P₁, P₂], and the surface under it. Cost O(contacts · log nodes).
+    pub fn locate(
         &mut self,
         model: &Model,
         beam: &AssembledBeam<'_>,
         nm: &Newmark,
-        bridge: &DirectStep,
         t: f64,
         wheel_positions: &[f64],
-        contact_forces: &[f64],
     ) {
         for (c, contact) in self.contacts.iter().enumerate() {
             let x = wheel_positions[contact.wheel];
@@ -238,7 +234,7 @@ impl DirectContacts {
             let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
             self.path[c] = (v, a);
             let point = beam.point_in(contact.direction, x);
-            let mut rows = [[0.0; 4]; 3];
+            let rows = &mut self.rows[c];
             for k in 0..4 {
                 let (n, n1, n2) = (point.values[k], point.slopes[k], point.curvatures[k]);
                 rows[0][k] = n;
@@ -250,24 +246,38 @@ impl DirectContacts {
                 self.line_points[c][k] = self.line_index[point.dofs[k]];
             }
             self.points[c] = point;
-            self.rows[c] = rows;
-            let (r, dr, ddr) =
+            self.surface[c] =
                 model.irregularity(contact.direction, model.wheel_rail[contact.wheel], x);
-            self.surface[c] = (r, dr, ddr);
-            let row = |k: usize, u: &[f64]| -> f64 {
-                (0..4).map(|j| rows[k][j] * u[point.dofs[j]]).sum()
-            };
-            let u_star = &bridge.predictor;
+        }
+    }
+
+    /// Each contact's λ = 0 kinematics from the bridge's predictor u*
+    /// ([`DirectStep::predict`], after [`Self::locate`]):
+    /// [N·u* + r, P₁·u* − N·h_v + vr′, P₂·u* − N·hₐ − 2vN′·h_v + v²r″ + ar′].
+    /// Cost O(contacts).
+    pub fn predict_wheels(&mut self, bridge: &DirectStep) {
+        let u_star = &bridge.predictor;
+        for c in 0..self.count() {
+            let (point, rows) = (&self.points[c], &self.rows[c]);
+            let row =
+                |k: usize| -> f64 { (0..4).map(|j| rows[k][j] * u_star[point.dofs[j]]).sum() };
+            let (v, a) = self.path[c];
+            let (r, dr, ddr) = self.surface[c];
             self.base[c] = [
                 point.value(u_star) + r,
-                row(1, u_star) - point.value(&bridge.damping_history) + v * dr,
-                row(2, u_star)
+                row(1) - point.value(&bridge.damping_history) + v * dr,
+                row(2)
                     - point.value(&bridge.inertia_history)
                     - 2.0 * v * point.slope(&bridge.damping_history)
                     + v * v * ddr
                     + if a != 0.0 { a * dr } else { 0.0 },
             ];
         }
+    }
+
+    /// Each vehicle's condensed wheel rows from its state at tₙ and the
+    /// previous contact forces (N, by flattened wheel). Cost O(Σ dofᵥ²).
+    pub fn begin_vehicles(&mut self, nm: &Newmark, contact_forces: &[f64]) {
         for (v, partition) in self.partitions.iter_mut().enumerate() {
             let state = &self.states[v];
             partition.begin_step(

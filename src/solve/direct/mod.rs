@@ -36,6 +36,15 @@
 //! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
 //! coupled method's.
 //!
+//! **Records.** The record layer reads modal coordinates
+//! ([`super::StepView`]); the direct stepper shows it the projection of its
+//! nodal state onto the scene's kept modes, q = ΦᵀM u and q̈ = ΦᵀM ü
+//! (O(n·modes) per step). With every mode kept the projection is exact
+//! (u = Φq); with fewer, a bridge record is what the modal records make of
+//! the kept modes (with the static correction of the rest when it is on),
+//! while the vehicles' DOFs and the contact forces are the direct
+//! solution's own. [`Direct::deflection_at`] reads N(x)ᵀu itself.
+//!
 //! **Vehicles** in permanent contact ([`contact`]): the coupled method's
 //! physics and vehicle condensation ([`super::partition`]) with N(x) for
 //! the mode values, the contact forces from one small dense system per
@@ -71,6 +80,13 @@ pub struct Direct<'a> {
     wheel_positions: Vec<f64>,
     contact_forces: Vec<f64>,
     contact_gaps: Vec<f64>,
+    /// MΦ of the kept modes, column-major n × modes (√kg): the projection
+    /// q = ΦᵀM u of the nodal state onto them, for the records.
+    projection: Vec<f64>,
+    /// q = ΦᵀM u and q̈ = ΦᵀM ü of the state after the last step (√kg·m,
+    /// √kg·m/s²).
+    modal_displacement: Vec<f64>,
+    modal_acceleration: Vec<f64>,
 }
 
 impl<'a> Direct<'a> {
@@ -95,11 +111,16 @@ impl<'a> Direct<'a> {
             }
         }
         let contacts = DirectContacts::new(model, &beam, &nm, bridge.effective_factor())?;
+        let projection = mass_times_modes(&model.bridge, &beam)?;
+        let modes = model.bridge.mode_count();
         let nw = model.wheels.len();
         let mut wheel_positions = vec![0.0; nw];
         model.wheel_positions(0.0, &mut wheel_positions);
         Ok(Self {
             contacts,
+            projection,
+            modal_displacement: vec![0.0; modes],
+            modal_acceleration: vec![0.0; modes],
             contact_forces: model.static_wheel_loads.clone(),
             contact_gaps: vec![0.0; nw],
             wheel_positions,
@@ -109,6 +130,16 @@ impl<'a> Direct<'a> {
             nm,
             model,
         })
+    }
+
+    /// q = ΦᵀM u and q̈ = ΦᵀM ü of the state after a step, for the
+    /// records. Cost O(n·modes).
+    fn project_onto_modes(&mut self) {
+        let n = self.bridge.order();
+        for (i, column) in self.projection.chunks_exact(n).enumerate() {
+            self.modal_displacement[i] = dot(column, &self.bridge.displacement);
+            self.modal_acceleration[i] = dot(column, &self.bridge.acceleration);
+        }
     }
 
     /// The bridge's free-DOF displacements u after the last step (m, rad).
@@ -165,20 +196,17 @@ impl Stepper for Direct<'_> {
         self.bridge.predict(&self.nm);
         if self.contacts.count() == 0 {
             self.bridge.finish(&self.nm);
+            self.project_onto_modes();
             return Ok(());
         }
-        self.contacts.begin_step(
-            self.model,
-            &self.beam,
-            &self.nm,
-            &self.bridge,
-            t,
-            &self.wheel_positions,
-            &self.contact_forces,
-        );
+        let contacts = &mut self.contacts;
+        contacts.locate(self.model, &self.beam, &self.nm, t, &self.wheel_positions);
+        contacts.predict_wheels(&self.bridge);
+        contacts.begin_vehicles(&self.nm, &self.contact_forces);
         self.contacts.solve(t)?;
         self.contacts
             .finish_step(&self.nm, &mut self.bridge, &mut self.contact_forces);
+        self.project_onto_modes();
         Ok(())
     }
 
@@ -188,13 +216,13 @@ impl Stepper for Direct<'_> {
     }
 
     fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
-        // The records read modal coordinates; the direct state has none
-        // (wiring the nodal state to the records is left for later).
+        // The records read modal coordinates: the nodal state's projection
+        // onto the kept modes (the module doc's "Records").
         StepView {
             step,
             time: t,
-            modal_displacement: &[],
-            modal_acceleration: &[],
+            modal_displacement: &self.modal_displacement,
+            modal_acceleration: &self.modal_acceleration,
             vehicles: &self.contacts.states,
             contact_forces: &self.contact_forces,
             contact_gaps: &self.contact_gaps,
@@ -202,4 +230,29 @@ impl Stepper for Direct<'_> {
             wheel_modes: None,
         }
     }
+}
+
+/// Dot product.
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// MΦ of `bridge`'s kept modes on `beam`'s free DOFs, column-major
+/// n × modes (√kg). Cost O(modes·nnz(M)).
+fn mass_times_modes(
+    bridge: &crate::bridge::ModalBridge,
+    beam: &AssembledBeam<'_>,
+) -> Result<Vec<f64>, SolveError> {
+    let vectors = bridge
+        .beam_mode_vectors()
+        .ok_or_else(|| SolveError::Direct {
+            reason: "the bridge's modes are not a plane beam's".into(),
+        })?;
+    let n = beam.order();
+    let mut projection = vec![0.0; vectors.len()];
+    for (phi, column) in vectors.chunks_exact(n).zip(projection.chunks_exact_mut(n)) {
+        crate::bridge::eigen::sparse::multiply(beam.mass(), phi, column);
+    }
+    Ok(projection)
 }
