@@ -147,6 +147,11 @@ impl<'a> Direct<'a> {
         &self.bridge.displacement
     }
 
+    /// The bridge's free-DOF velocities u̇ after the last step (m/s, rad/s).
+    pub fn velocity(&self) -> &[f64] {
+        &self.bridge.velocity
+    }
+
     /// The bridge's free-DOF accelerations ü after the last step (m/s², rad/s²).
     pub fn acceleration(&self) -> &[f64] {
         &self.bridge.acceleration
