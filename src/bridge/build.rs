@@ -370,7 +370,12 @@ impl ModalBridge {
         };
         let rayleigh_damping = match bridge {
             Bridge::Beam(beam) => beam.damping.rayleigh_coefficients(),
-            _ => None,
+            Bridge::FeImport(f) => match (f.damping.rule(), &f.model.damping) {
+                (Some(rule), _) => rule.rayleigh_coefficients(),
+                (None, Some(_)) => None,
+                (None, None) => Some((0.0, 0.0)),
+            },
+            Bridge::Plate(_) => None,
         };
         Ok(Self {
             rayleigh_damping,

@@ -108,9 +108,9 @@ pub struct ModalBridge {
     pub damping_ratios: Vec<f64>,
     /// The damping of the assembled model as C = c_M M + c_K K, `(c_M,
     /// c_K)` in (1/s, s), for the direct solver ([`crate::solve::direct`]):
-    /// a beam's Rayleigh damping, or (0, 0) without damping; `None` where
-    /// no such sparse C stands for the modal ratios (a nonzero modal ratio,
-    /// a plate, an imported model).
+    /// a beam's or an imported model's Rayleigh damping, or (0, 0)
+    /// without damping; `None` where no such C stands for the modal ratios
+    /// (a nonzero modal ratio, a plate, an imported damping matrix).
     pub rayleigh_damping: Option<(f64, f64)>,
     /// Number of modes the discretisation offers.
     pub available_modes: usize,
@@ -381,11 +381,30 @@ impl ModalBridge {
         }
     }
 
-    /// The kept modes of a plane beam on its free DOFs (1/√kg), column-major
-    /// n × modes (column i is Φᵢ, with ΦᵢᵀMΦᵢ = 1), read back from the
-    /// nodal values of the mode shapes; `None` as [`Self::beam_model`].
-    /// Cost O(n·modes).
-    pub fn beam_mode_vectors(&self) -> Option<Vec<f64>> {
+    /// An imported model's shapes (its model, pencil and kept mode
+    /// vectors), for the direct solver ([`crate::solve::direct`]); `None`
+    /// for any other bridge.
+    pub fn imported_shapes(&self) -> Option<&ImportedShapes> {
+        match &self.shapes {
+            Shapes::Imported(imported) => Some(imported),
+            _ => None,
+        }
+    }
+
+    /// The kept modes on the free DOFs of a plane beam or an imported
+    /// model (1/√kg), column-major n × modes (column i is Φᵢ, with
+    /// ΦᵢᵀMΦᵢ = 1): a beam's read back from the nodal values of its mode
+    /// shapes; `None` for a 3D beam or a plate. Cost O(n·modes).
+    pub fn assembled_mode_vectors(&self) -> Option<Vec<f64>> {
+        if let Shapes::Imported(imported) = &self.shapes {
+            let vectors = &imported.vectors;
+            let (n, modes) = (vectors.nrows(), vectors.ncols());
+            let mut out = vec![0.0; n * modes];
+            for c in 0..modes {
+                out[c * n..(c + 1) * n].copy_from_slice(vectors.col_as_slice(c));
+            }
+            return Some(out);
+        }
         let Shapes::Beam {
             shapes,
             model,

@@ -15,11 +15,12 @@
 //! dense system (I − A)λ = b, solved by LU.
 //!
 //! **Cost and memory.** Once: Z on the deck line's DOFs (every free DOF
-//! of a plane beam), n_R solves with K̂'s factor in blocks of
+//! of a plane beam, the rails' of an imported track), n_R solves with K̂'s factor in blocks of
 //! [`SOLVE_BLOCK`] columns, O(n_R·nnz(L)) time and n_R² × 8 bytes (a beam
 //! of 1,000 elements: 2,000² × 8 B = 32 MB; refused above
-//! [`MAX_LINE_DOFS`]). Per step: O(48 nc²) for the sensitivities (N has 4
-//! entries per contact, Z is read at 16 entries per pair), the coupled
+//! [`MAX_LINE_DOFS`]). Per step: O(3·P² nc²) for the sensitivities (N has P
+//! ≤ 8 entries per contact, 4 on a beam or one rail: Z is read at P² entries
+//! per pair), the coupled
 //! method's O(nc² · wheels per vehicle + Σ dofᵥ²) for the vehicles and
 //! O(nc³) for the LU, and ONE extra solve with K̂'s factor for the
 //! correction u* → u_{n+1} of all contacts together (O(nnz(L))): nothing
@@ -27,7 +28,7 @@
 
 use faer::MatMut;
 
-use super::assembled::{AssembledBeam, LinePoint};
+use super::assembled::{AssembledBridge, LinePoint, POINT_DOFS};
 use super::step::DirectStep;
 use crate::bridge::eigen::sparse::Factor;
 use crate::model::Model;
@@ -67,9 +68,9 @@ pub struct DirectContacts {
     /// N at each contact this step.
     points: Vec<LinePoint>,
     /// Each contact's line indices of its N's DOFs.
-    line_points: Vec<[usize; 4]>,
+    line_points: Vec<[usize; POINT_DOFS]>,
     /// Each contact's rows [N, P₁, P₂] on its N's DOFs.
-    rows: Vec<[[f64; 4]; 3]>,
+    rows: Vec<[[f64; POINT_DOFS]; 3]>,
     /// Each contact's speed (m/s) and acceleration (m/s²) at t_{n+1}.
     path: Vec<(f64, f64)>,
     /// The surface under each contact: r (m), r′, r″ (1/m).
@@ -100,7 +101,7 @@ impl DirectContacts {
     /// a workspace does not fit in memory.
     pub fn new(
         model: &Model,
-        beam: &AssembledBeam<'_>,
+        beam: &AssembledBridge<'_>,
         nm: &Newmark,
         effective: &Factor,
     ) -> Result<Self, SolveError> {
@@ -155,8 +156,8 @@ impl DirectContacts {
             line_dofs: line.len(),
             flexibility,
             points: vec![LinePoint::default(); nc],
-            line_points: vec![[0; 4]; nc],
-            rows: vec![[[0.0; 4]; 3]; nc],
+            line_points: vec![[0; POINT_DOFS]; nc],
+            rows: vec![[[0.0; POINT_DOFS]; 3]; nc],
             path: vec![(0.0, 0.0); nc],
             surface: vec![(0.0, 0.0, 0.0); nc],
             base: vec![[0.0; 3]; nc],
@@ -223,7 +224,7 @@ impl DirectContacts {
     pub fn locate(
         &mut self,
         model: &Model,
-        beam: &AssembledBeam<'_>,
+        beam: &AssembledBridge<'_>,
         nm: &Newmark,
         t: f64,
         wheel_positions: &[f64],
@@ -233,9 +234,9 @@ impl DirectContacts {
             let vehicle = &model.vehicles[contact.vehicle];
             let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
             self.path[c] = (v, a);
-            let point = beam.point_in(contact.direction, x);
+            let point = beam.point_in(contact.direction, x, contact.y);
             let rows = &mut self.rows[c];
-            for k in 0..4 {
+            for k in 0..POINT_DOFS {
                 let (n, n1, n2) = (point.values[k], point.slopes[k], point.curvatures[k]);
                 rows[0][k] = n;
                 rows[1][k] = nm.a1 * n + v * n1;
@@ -259,8 +260,11 @@ impl DirectContacts {
         let u_star = &bridge.predictor;
         for c in 0..self.count() {
             let (point, rows) = (&self.points[c], &self.rows[c]);
-            let row =
-                |k: usize| -> f64 { (0..4).map(|j| rows[k][j] * u_star[point.dofs[j]]).sum() };
+            let row = |k: usize| -> f64 {
+                (0..POINT_DOFS)
+                    .map(|j| rows[k][j] * u_star[point.dofs[j]])
+                    .sum()
+            };
             let (v, a) = self.path[c];
             let (r, dr, ddr) = self.surface[c];
             self.base[c] = [

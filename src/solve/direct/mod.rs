@@ -3,13 +3,15 @@
 //!
 //! **The math.** The bridge's free DOFs u (m, rad) obey
 //! M ü + C u̇ + K u = F(t) − Σ_c N(x_c) λ_c,
-//! K (N/m) and the consistent M (kg) assembled on the free DOFs
-//! ([`crate::bridge::beam::BeamModel`]), Rayleigh damping C = c_M M + c_K K
+//! K (N/m) and M (kg) assembled on the free DOFs of a plane beam
+//! ([`crate::bridge::beam::BeamModel`]) or an imported model
+//! ([`crate::bridge::fe_import`]), Rayleigh damping C = c_M M + c_K K
 //! (the only damping with a sparse C that the modal solver's ratios
-//! ζ(ω) = c_M/(2ω) + c_K ω/2 stand for), N(x) the Hermite interpolation of
-//! the deck's deflection at x from its element's DOFs
-//! ([`assembled::LinePoint`]; the very functions the modal solver's mode
-//! values φᵢ(x) = N(x)ᵀΦᵢ are interpolated with), F the moving forces'
+//! ζ(ω) = c_M/(2ω) + c_K ω/2 stand for), N(x) the interpolation of a rail
+//! point's displacement from its element's DOFs ([`assembled::LinePoint`]:
+//! Hermite on a beam or a rail with rotations, linear on a rail without;
+//! the very functions the modal solver's mode values φᵢ(x) = N(x)ᵀΦᵢ are
+//! interpolated with), F the moving forces'
 //! nodal loads −P N(x) (P downward, N) and λ the contact forces
 //! (compression positive). HHT-α with Newmark (β, γ) exactly as
 //! [`super::newmark`] (w = 1 + α):
@@ -24,14 +26,15 @@
 //! **Cost.** Once: two sparse LDLᵀ factorisations (faer, approximate
 //! minimum degree ordering, `Par::Seq`) of K̂ and of M + wγΔtC, O(nnz(L))
 //! memory each (a beam's band: O(n)). Per step: four sparse products with
-//! K or M (O(nnz(K))), one solve with each factor (O(nnz(L))), the loads'
-//! O(log nodes) element searches, and two products for the energy the
-//! divergence guard checks: O(n) for a beam, nothing grows with the
-//! loads beyond O(1) each. Nothing is allocated in the step.
+//! K or M (O(nnz(K) + nnz(M))), one solve with each factor (O(nnz(L))),
+//! the loads' O(log nodes) element searches, two products for the energy
+//! the divergence guard checks and the records' projection (below): O(n)
+//! for a beam; each load adds O(1). Nothing is allocated in the step.
 //!
-//! **Errors.** [`SolveError::Direct`] for a bridge that is not a plane
-//! beam, damping that no sparse C stands for (a nonzero modal ratio), a
-//! matrix that cannot be factorised, ground motion (not yet), or a deck
+//! **Errors.** [`SolveError::Direct`] for a 3D beam or a plate, damping
+//! that is not Rayleigh's (a nonzero modal ratio, a damping matrix file),
+//! an imported track with free rail ends (`entry`), a matrix that cannot
+//! be factorised, ground motion (not yet), or a deck
 //! line too long for the contacts' dense flexibility
 //! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
 //! coupled method's.
@@ -56,13 +59,14 @@ pub mod assembled;
 pub mod contact;
 pub mod step;
 
-use self::assembled::{AssembledBeam, LinePoint};
+use self::assembled::{AssembledBridge, LinePoint};
 use self::contact::DirectContacts;
 use self::step::DirectStep;
 use super::guard::Guard;
 use super::newmark::Newmark;
 use super::time_loop::Stepper;
 use super::{SolveError, StepView};
+use crate::contact::ContactDirection::Vertical;
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
@@ -71,7 +75,7 @@ use crate::vehicle::WheelKind;
 pub struct Direct<'a> {
     model: &'a Model,
     nm: Newmark,
-    beam: AssembledBeam<'a>,
+    assembled: AssembledBridge<'a>,
     bridge: DirectStep,
     /// Moving forces: (flattened wheel, downward load N).
     loads: Vec<(usize, f64)>,
@@ -96,22 +100,22 @@ impl<'a> Direct<'a> {
     ///
     /// [`SolveError::Direct`]: see the module doc.
     pub fn new(model: &'a Model) -> Result<Self, SolveError> {
-        let beam = AssembledBeam::of(&model.bridge)?;
+        let assembled = AssembledBridge::of(&model.bridge)?;
         if model.ground.is_some() {
             return Err(SolveError::Direct {
                 reason: "ground motion is not supported yet".into(),
             });
         }
         let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
-        let bridge = DirectStep::new(&beam, &nm)?;
+        let bridge = DirectStep::new(&assembled, &nm)?;
         let mut loads = Vec::new();
         for (flat, r) in model.wheels.iter().enumerate() {
             if let WheelKind::Load(load) = model.vehicles[r.vehicle].wheels[r.wheel].kind {
                 loads.push((flat, load));
             }
         }
-        let contacts = DirectContacts::new(model, &beam, &nm, bridge.effective_factor())?;
-        let projection = mass_times_modes(&model.bridge, &beam)?;
+        let contacts = DirectContacts::new(model, &assembled, &nm, bridge.effective_factor())?;
+        let projection = mass_times_modes(&model.bridge, &assembled)?;
         let modes = model.bridge.mode_count();
         let nw = model.wheels.len();
         let mut wheel_positions = vec![0.0; nw];
@@ -126,7 +130,7 @@ impl<'a> Direct<'a> {
             wheel_positions,
             loads,
             bridge,
-            beam,
+            assembled,
             nm,
             model,
         })
@@ -159,7 +163,7 @@ impl<'a> Direct<'a> {
 
     /// N(x) of the deck at `x` (m).
     pub fn point(&self, x: f64) -> LinePoint {
-        self.beam.point(x)
+        self.assembled.point(x)
     }
 
     /// The vehicles' states after the last step.
@@ -180,7 +184,7 @@ impl<'a> Direct<'a> {
 
     /// The deck's deflection at `x` (m, upward positive) after the last step.
     pub fn deflection_at(&self, x: f64) -> f64 {
-        self.beam.point(x).value(&self.bridge.displacement)
+        self.assembled.point(x).value(&self.bridge.displacement)
     }
 }
 
@@ -195,7 +199,11 @@ impl Stepper for Direct<'_> {
         self.model.wheel_positions(t, &mut self.wheel_positions);
         self.bridge.clear_force();
         for &(flat, load) in &self.loads {
-            let point = self.beam.point(self.wheel_positions[flat]);
+            let point = self.assembled.point_in(
+                Vertical,
+                self.wheel_positions[flat],
+                self.model.wheel_y[flat],
+            );
             point.spread(-load, &mut self.bridge.current_force);
         }
         self.bridge.predict(&self.nm);
@@ -205,7 +213,13 @@ impl Stepper for Direct<'_> {
             return Ok(());
         }
         let contacts = &mut self.contacts;
-        contacts.locate(self.model, &self.beam, &self.nm, t, &self.wheel_positions);
+        contacts.locate(
+            self.model,
+            &self.assembled,
+            &self.nm,
+            t,
+            &self.wheel_positions,
+        );
         contacts.predict_wheels(&self.bridge);
         contacts.begin_vehicles(&self.nm, &self.contact_forces);
         self.contacts.solve(t)?;
@@ -247,10 +261,10 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// n × modes (√kg). Cost O(modes·nnz(M)).
 fn mass_times_modes(
     bridge: &crate::bridge::ModalBridge,
-    beam: &AssembledBeam<'_>,
+    beam: &AssembledBridge<'_>,
 ) -> Result<Vec<f64>, SolveError> {
     let vectors = bridge
-        .beam_mode_vectors()
+        .assembled_mode_vectors()
         .ok_or_else(|| SolveError::Direct {
             reason: "the bridge's modes are not a plane beam's".into(),
         })?;

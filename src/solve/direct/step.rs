@@ -4,7 +4,7 @@
 use faer::dyn_stack::MemBuffer;
 use faer::sparse::{SparseColMat, Triplet};
 
-use super::assembled::AssembledBeam;
+use super::assembled::AssembledBridge;
 use crate::bridge::eigen::sparse::{Factor, SymmetricSparse, multiply};
 use crate::solve::SolveError;
 use crate::solve::newmark::Newmark;
@@ -96,7 +96,7 @@ impl DirectStep {
     /// # Errors
     ///
     /// [`SolveError::Direct`] if either matrix cannot be factorised.
-    pub fn new(beam: &AssembledBeam<'_>, nm: &Newmark) -> Result<Self, SolveError> {
+    pub fn new(beam: &AssembledBridge<'_>, nm: &Newmark) -> Result<Self, SolveError> {
         let (k, m) = (beam.stiffness(), beam.mass());
         let (c_m, c_k) = beam.damping;
         let w = nm.weight();
