@@ -543,11 +543,13 @@ fn method_direct_runs_an_imported_model() {
 /// A generated two-rail viaduct (`vbi generate viaduct`: one 5 m span on
 /// 2 m piers, deck, ballast, sleepers, pads and two rails with ry and rz,
 /// 300 DOFs), Rayleigh damping, loads put on at the free rail ends at once
-/// (`entry_length: 0`), a moving force, a two-mass oscillator and the
-/// H20-44 truck on a harmonic surface, riding both rails' average:
-/// `direct` equals `coupled` with every mode kept, record by record, to
-/// 1e-9 of the peaks (measured: below 1e-10, the oscillator's contact
-/// force on its 500 kg wheel).
+/// (`entry_length: 0`): `direct` equals `coupled` with every mode kept,
+/// record by record, to 1e-9 of the peaks. Cases: a moving force, a
+/// two-mass oscillator and the H20-44 truck on a harmonic surface, riding
+/// both rails' average (measured: below 1e-10); the `train_3d` car on a
+/// harmonic alignment, each vertical wheel on its own rail and the
+/// wheelsets following the rails sideways through uy and rz (measured:
+/// below 1e-10 for the left, right and lateral contact forces).
 #[test]
 fn method_direct_runs_a_generated_two_rail_viaduct() {
     let scratch = crate::support::Scratch::new("direct", "viaduct");
@@ -570,7 +572,7 @@ fn method_direct_runs_a_generated_two_rail_viaduct() {
         "via",
     ];
     crate::support::assert_exit(&crate::support::vbi(&args, scratch.dir()), 0);
-    let scene = |method: &str| {
+    let scene = |method: &str, vehicles: &str, direction: &str, records: &str| {
         format!(
             "name: via-{method}\n\
              bridge:\n  type: fe_import\n  stiffness: via/K.mtx\n  mass: via/M.mtx\n  \
@@ -579,25 +581,40 @@ fn method_direct_runs_a_generated_two_rail_viaduct() {
              entry_length: 0\n  \
              damping: {{type: rayleigh, frequencies: [5.0, 80.0], ratio: 0.02}}\n  \
              modes: {{count: 300, static_correction: false}}\n\
-             vehicles:\n  \
-             - {{type: moving_force, loads: [100.0e3], speed: 20.0}}\n  \
-             - {{type: oscillator, sprung_mass: 5750.0, unsprung_mass: 500.0, stiffness: 1.595e6, speed: 15.0}}\n  \
-             - {{type: h20_44, speed: 18.0}}\n\
-             surface: {{type: harmonic, amplitude: 0.001, wavelength: 2.0, phase: 0.0}}\n\
+             vehicles:\n{vehicles}\
+             surface: {{type: harmonic, amplitude: 0.001, wavelength: 2.0, phase: 0.0, direction: {direction}}}\n\
              solver: {{method: {method}, time_step: 2.0e-4}}\n\
              record:\n  - {{name: mid, quantity: bridge_displacement, x: 2.5}}\n  \
-             - {{name: mid_acc, quantity: bridge_acceleration, x: 2.5}}\n  \
-             - {{name: force2, quantity: contact_force, vehicle: 2, wheel: 1}}\n  \
-             - {{name: force3, quantity: contact_force, vehicle: 3, wheel: 2}}\n  \
-             - {{name: body2, quantity: vehicle_displacement, vehicle: 2, dof: sprung}}\n"
+             - {{name: mid_acc, quantity: bridge_acceleration, x: 2.5}}\n{records}"
         )
     };
-    let run = |method: &str| {
-        let path = scratch.dir().join(format!("{method}.yaml"));
-        std::fs::write(&path, scene(method)).unwrap();
-        vbi::run::simulate(vbi::plan::load_file(&path).unwrap(), &mut |_, _| {}).unwrap()
-    };
-    let (direct, coupled) = (run("direct"), run("coupled"));
-    let names = ["mid", "mid_acc", "force2", "force3", "body2"];
-    crate::support::assert_histories_agree(&direct, &coupled, &names, 1e-9);
+    let cases = [
+        (
+            "  - {type: moving_force, loads: [100.0e3], speed: 20.0}\n  \
+             - {type: oscillator, sprung_mass: 5750.0, unsprung_mass: 500.0, stiffness: 1.595e6, speed: 15.0}\n  \
+             - {type: h20_44, speed: 18.0}\n",
+            "vertical",
+            "  - {name: force2, quantity: contact_force, vehicle: 2, wheel: 1}\n  \
+             - {name: force3, quantity: contact_force, vehicle: 3, wheel: 2}\n  \
+             - {name: body2, quantity: vehicle_displacement, vehicle: 2, dof: sprung}\n",
+            &["mid", "mid_acc", "force2", "force3", "body2"][..],
+        ),
+        (
+            "  - {type: train_3d, speed: 20.0}\n",
+            "lateral",
+            "  - {name: left, quantity: contact_force, wheel: 1}\n  \
+             - {name: right, quantity: contact_force, wheel: 2}\n  \
+             - {name: lateral, quantity: contact_force, wheel: 3}\n",
+            &["mid", "mid_acc", "left", "right", "lateral"][..],
+        ),
+    ];
+    for (case, (vehicles, direction, records, names)) in cases.into_iter().enumerate() {
+        let run = |method: &str| {
+            let path = scratch.dir().join(format!("{method}-{case}.yaml"));
+            std::fs::write(&path, scene(method, vehicles, direction, records)).unwrap();
+            vbi::run::simulate(vbi::plan::load_file(&path).unwrap(), &mut |_, _| {}).unwrap()
+        };
+        let (direct, coupled) = (run("direct"), run("coupled"));
+        crate::support::assert_histories_agree(&direct, &coupled, names, 1e-9);
+    }
 }
