@@ -35,7 +35,7 @@ pub enum SolverMethod {
     /// effective stiffness factorised once, exact in space (no modal
     /// truncation); the vehicles as in `coupled`. A plane `type: beam` or
     /// a `type: fe_import` model (without `entry`), with Rayleigh damping
-    /// or none, and no ground motion. Bridge records are taken from the
+    /// or none. Bridge records are taken from the
     /// nodal state's projection onto the kept modes (exact with every
     /// mode kept); vehicle and contact records are the direct solution's.
     Direct,

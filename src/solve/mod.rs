@@ -332,17 +332,30 @@ impl GroundStep {
     /// Advances to the step ending at `t` (s) of `model`.
     #[inline]
     pub fn step_of(&mut self, model: &Model, modal: &mut modal::ModalStep, t: f64) -> f64 {
+        let (ratio, vertical, lateral) = self.advance_to(model, t);
+        if self.active {
+            modal.ground_acceleration = vertical;
+            modal.lateral_ground_acceleration = lateral;
+        }
+        ratio
+    }
+
+    /// Advances to the step ending at `t` (s) of `model` (whatever the
+    /// bridge's coordinates: [`Self::step_of`] for modal ones, the direct
+    /// solver's nodal ones): the vehicles' extra weight ratio, and the
+    /// vertical and lateral ground accelerations at `t` (m/s²); all 0
+    /// without ground motion.
+    #[inline]
+    pub fn advance_to(&mut self, model: &Model, t: f64) -> (f64, f64, f64) {
         if !self.active {
-            return 0.0;
+            return (0.0, 0.0, 0.0);
         }
         let now = model.ground_acceleration(t);
-        modal.ground_acceleration = now;
         let ratio = (self.weight * now - self.alpha * self.previous) / self.gravity;
         self.previous = now;
         let lateral = model.lateral_ground_acceleration(t);
-        modal.lateral_ground_acceleration = lateral;
         self.lateral_load = self.weight * lateral - self.alpha * self.lateral_previous;
         self.lateral_previous = lateral;
-        ratio
+        (ratio, now, lateral)
     }
 }

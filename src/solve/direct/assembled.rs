@@ -187,6 +187,45 @@ impl<'a> AssembledBridge<'a> {
         }
     }
 
+    /// M δ on the free DOFs (kg): the inertia load per unit support
+    /// acceleration in `direction` (δ = 1 on every DOF of that direction,
+    /// the supports' included, as the modal participation factors
+    /// Γ = Φᵀ M δ of [`crate::bridge::ground`]). A beam's vertical one is
+    /// the consistent load of its weight per g, m ∫N dx, element by element
+    /// m h [1/2, h/12, 1/2, −h/12] on (wₐ, θₐ, w_b, θ_b); a plane beam has
+    /// no lateral one (zeros); an imported model's are its
+    /// `vertical_inertia` and `lateral_inertia`.
+    pub fn ground_inertia(&self, direction: ContactDirection) -> Vec<f64> {
+        match (self.line, direction) {
+            (Line::Beam(beam), ContactDirection::Vertical) => {
+                let mut inertia = vec![0.0; self.order()];
+                let m = beam.mass_per_length;
+                for (e, pair) in beam.node_x.windows(2).enumerate() {
+                    let h = pair[1] - pair[0];
+                    let element = [
+                        0.5 * m * h,
+                        m * h * h / 12.0,
+                        0.5 * m * h,
+                        -m * h * h / 12.0,
+                    ];
+                    for (a, load) in element.into_iter().enumerate() {
+                        if let Some(i) = beam.free_index[2 * e + a] {
+                            inertia[i] += load;
+                        }
+                    }
+                }
+                inertia
+            }
+            (Line::Beam(_), ContactDirection::Lateral) => vec![0.0; self.order()],
+            (Line::Imported(imported), ContactDirection::Vertical) => {
+                imported.model.vertical_inertia.clone()
+            }
+            (Line::Imported(imported), ContactDirection::Lateral) => {
+                imported.model.lateral_inertia.clone()
+            }
+        }
+    }
+
     /// N of the rail point at `x` (m) along the deck and `y` (m) across it
     /// in `direction`, as the modal solver's mode values there: on a beam
     /// the deck line (all zero laterally: a plane beam does not move

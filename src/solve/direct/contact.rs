@@ -280,13 +280,22 @@ impl DirectContacts {
     }
 
     /// Each vehicle's condensed wheel rows from its state at tₙ and the
-    /// previous contact forces (N, by flattened wheel). Cost O(Σ dofᵥ²).
-    pub fn begin_vehicles(&mut self, nm: &Newmark, contact_forces: &[f64]) {
+    /// previous contact forces (N, by flattened wheel), under the ground
+    /// motion's HHT-weighted extra weight ratio `gravity_ratio` and lateral
+    /// acceleration `lateral_ground` (m/s²; [`crate::solve::GroundStep`]).
+    /// Cost O(Σ dofᵥ²).
+    pub fn begin_vehicles(
+        &mut self,
+        nm: &Newmark,
+        (gravity_ratio, lateral_ground): (f64, f64),
+        contact_forces: &[f64],
+    ) {
         for (v, partition) in self.partitions.iter_mut().enumerate() {
             let state = &self.states[v];
+            partition.lateral_ground = lateral_ground;
             partition.begin_step(
                 nm,
-                0.0,
+                gravity_ratio,
                 &state.displacement,
                 &state.velocity,
                 &state.acceleration,

@@ -34,10 +34,15 @@
 //! **Errors.** [`SolveError::Direct`] for a 3D beam or a plate, damping
 //! that is not Rayleigh's (a nonzero modal ratio, a damping matrix file),
 //! an imported track with free rail ends (`entry`), a matrix that cannot
-//! be factorised, ground motion (not yet), or a deck
+//! be factorised, or a deck
 //! line too long for the contacts' dense flexibility
 //! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
 //! coupled method's.
+//!
+//! **Ground motion** in relative coordinates, as the modal solver: the
+//! supports' acceleration üg loads the deck by −M δ üg (δ = 1 on every DOF
+//! of its direction; [`assembled::AssembledBridge::ground_inertia`]) and
+//! the vehicles by their weight's share ([`super::GroundStep`]).
 //!
 //! **Records.** The record layer reads modal coordinates
 //! ([`super::StepView`]); the direct stepper shows it the projection of its
@@ -65,8 +70,8 @@ use self::step::DirectStep;
 use super::guard::Guard;
 use super::newmark::Newmark;
 use super::time_loop::Stepper;
-use super::{SolveError, StepView};
-use crate::contact::ContactDirection::Vertical;
+use super::{GroundStep, SolveError, StepView};
+use crate::contact::ContactDirection::{Lateral, Vertical};
 use crate::model::Model;
 use crate::vehicle::WheelKind;
 
@@ -81,6 +86,11 @@ pub struct Direct<'a> {
     loads: Vec<(usize, f64)>,
     /// The wheels in permanent contact and the vehicles' states.
     contacts: DirectContacts,
+    /// The ground motion's step (its weighting and the vehicles' share).
+    ground: GroundStep,
+    /// M δ (kg) of a vertical and a lateral support motion on the free
+    /// DOFs; empty without ground motion in that direction.
+    ground_inertia: [Vec<f64>; 2],
     wheel_positions: Vec<f64>,
     contact_forces: Vec<f64>,
     contact_gaps: Vec<f64>,
@@ -101,11 +111,6 @@ impl<'a> Direct<'a> {
     /// [`SolveError::Direct`]: see the module doc.
     pub fn new(model: &'a Model) -> Result<Self, SolveError> {
         let assembled = AssembledBridge::of(&model.bridge)?;
-        if model.ground.is_some() {
-            return Err(SolveError::Direct {
-                reason: "ground motion is not supported yet".into(),
-            });
-        }
         let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
         let bridge = DirectStep::new(&assembled, &nm)?;
         let mut loads = Vec::new();
@@ -116,12 +121,25 @@ impl<'a> Direct<'a> {
         }
         let contacts = DirectContacts::new(model, &assembled, &nm, bridge.effective_factor())?;
         let projection = mass_times_modes(&model.bridge, &assembled)?;
+        let ground_inertia = [Vertical, Lateral].map(|direction| {
+            let moves = model.ground.as_ref().is_some_and(|g| match direction {
+                Vertical => !g.vertical.is_empty(),
+                Lateral => !g.lateral.is_empty(),
+            });
+            if moves {
+                assembled.ground_inertia(direction)
+            } else {
+                Vec::new()
+            }
+        });
         let modes = model.bridge.mode_count();
         let nw = model.wheels.len();
         let mut wheel_positions = vec![0.0; nw];
         model.wheel_positions(0.0, &mut wheel_positions);
         Ok(Self {
             contacts,
+            ground: GroundStep::new(model, &nm),
+            ground_inertia,
             projection,
             modal_displacement: vec![0.0; modes],
             modal_acceleration: vec![0.0; modes],
@@ -206,6 +224,14 @@ impl Stepper for Direct<'_> {
             );
             point.spread(-load, &mut self.bridge.current_force);
         }
+        let (gravity_ratio, vertical, lateral) = self.ground.advance_to(self.model, t);
+        // Relative coordinates: the supports' motion loads the deck by
+        // −M δ üg (weighted by HHT with the other loads).
+        for (inertia, acceleration) in self.ground_inertia.iter().zip([vertical, lateral]) {
+            for (f, m) in self.bridge.current_force.iter_mut().zip(inertia) {
+                *f -= m * acceleration;
+            }
+        }
         self.bridge.predict(&self.nm);
         if self.contacts.count() == 0 {
             self.bridge.finish(&self.nm);
@@ -221,7 +247,8 @@ impl Stepper for Direct<'_> {
             &self.wheel_positions,
         );
         contacts.predict_wheels(&self.bridge);
-        contacts.begin_vehicles(&self.nm, &self.contact_forces);
+        let ground = (gravity_ratio, self.ground.lateral_load);
+        contacts.begin_vehicles(&self.nm, ground, &self.contact_forces);
         self.contacts.solve(t)?;
         self.contacts
             .finish_step(&self.nm, &mut self.bridge, &mut self.contact_forces);
