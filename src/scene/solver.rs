@@ -34,9 +34,8 @@ pub enum SolverMethod {
     /// instead of its modes: Newmark/HHT on M ü + C u̇ + K u = f, the
     /// effective stiffness factorised once, exact in space (no modal
     /// truncation); the vehicles as in `coupled`. A plane `type: beam` or
-    /// a `type: fe_import` model (without `entry`), with Rayleigh damping
-    /// or none. Bridge records are taken from the
-    /// nodal state's projection onto the kept modes (exact with every
-    /// mode kept); vehicle and contact records are the direct solution's.
+    /// a `type: fe_import` model, with Rayleigh damping or none. Bridge records are taken from the nodal state's projection
+    /// onto the kept modes (exact with every mode kept); vehicle and
+    /// contact records are the direct solution's.
     Direct,
 }

@@ -110,18 +110,12 @@ impl<'a> AssembledBridge<'a> {
     ///
     /// # Errors
     ///
-    /// [`SolveError::Direct`] for a 3D beam or a plate, damping that no
+    /// [`SolveError::Direct`] for a 3D beam or a plate, or damping that no
     /// C = c_M M + c_K K stands for (a nonzero modal ratio, a damping
-    /// matrix file), or an imported track with free rail ends (the entry
-    /// weights).
+    /// matrix file).
     pub fn of(bridge: &'a ModalBridge) -> Result<Self, SolveError> {
         let line = match (bridge.beam_model(), bridge.imported_shapes()) {
             (Some(beam), _) => Line::Beam(beam),
-            (None, Some(imported)) if imported.model.entry.is_active() => {
-                return Err(refused(
-                    "free rail ends (`entry`) on an imported track are not supported yet",
-                ));
-            }
             (None, Some(imported)) => Line::Imported(imported),
             (None, None) => {
                 return Err(refused(
@@ -262,6 +256,30 @@ impl<'a> AssembledBridge<'a> {
     /// (y = 0).
     pub fn point(&self, x: f64) -> LinePoint {
         self.point_in(ContactDirection::Vertical, x, 0.0)
+    }
+
+    /// [`Self::point_in`] as a wheel's contact (or a moving load) at (x, y)
+    /// sees it: on an imported track with free rail ends, times the entry
+    /// weight s(x) ([`crate::bridge::fe_import::entry`]: the weights of
+    /// s·N, s·N′ + s′·N and s·N″ + 2s′·N′ + s″·N), as the modal solver's
+    /// contact mode values; elsewhere the same.
+    pub fn contact_point(&self, direction: ContactDirection, x: f64, y: f64) -> LinePoint {
+        let mut point = self.point_in(direction, x, y);
+        if let Line::Imported(imported) = self.line {
+            let entry = &imported.model.entry;
+            if entry.is_active() {
+                let (s, ds, dds) = entry.weight(x);
+                if !(s == 1.0 && ds == 0.0 && dds == 0.0) {
+                    for a in 0..POINT_DOFS {
+                        let (v, d, c) = (point.values[a], point.slopes[a], point.curvatures[a]);
+                        point.curvatures[a] = s * c + 2.0 * ds * d + dds * v;
+                        point.slopes[a] = s * d + ds * v;
+                        point.values[a] = v * s;
+                    }
+                }
+            }
+        }
+        point
     }
 }
 

@@ -234,7 +234,7 @@ impl DirectContacts {
             let vehicle = &model.vehicles[contact.vehicle];
             let (v, a) = (vehicle.speed_at(t), vehicle.acceleration_at(t));
             self.path[c] = (v, a);
-            let point = beam.point_in(contact.direction, x, contact.y);
+            let point = beam.contact_point(contact.direction, x, contact.y);
             let rows = &mut self.rows[c];
             for k in 0..POINT_DOFS {
                 let (n, n1, n2) = (point.values[k], point.slopes[k], point.curvatures[k]);

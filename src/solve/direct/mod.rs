@@ -9,7 +9,8 @@
 //! (the only damping with a sparse C that the modal solver's ratios
 //! ζ(ω) = c_M/(2ω) + c_K ω/2 stand for), N(x) the interpolation of a rail
 //! point's displacement from its element's DOFs ([`assembled::LinePoint`]:
-//! Hermite on a beam or a rail with rotations, linear on a rail without;
+//! Hermite on a beam or a rail with rotations, linear on a rail without,
+//! times the entry weight at free rail ends;
 //! the very functions the modal solver's mode values φᵢ(x) = N(x)ᵀΦᵢ are
 //! interpolated with), F the moving forces'
 //! nodal loads −P N(x) (P downward, N) and λ the contact forces
@@ -33,8 +34,7 @@
 //!
 //! **Errors.** [`SolveError::Direct`] for a 3D beam or a plate, damping
 //! that is not Rayleigh's (a nonzero modal ratio, a damping matrix file),
-//! an imported track with free rail ends (`entry`), a matrix that cannot
-//! be factorised, or a deck
+//! a matrix that cannot be factorised, or a deck
 //! line too long for the contacts' dense flexibility
 //! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
 //! coupled method's.
@@ -217,7 +217,7 @@ impl Stepper for Direct<'_> {
         self.model.wheel_positions(t, &mut self.wheel_positions);
         self.bridge.clear_force();
         for &(flat, load) in &self.loads {
-            let point = self.assembled.point_in(
+            let point = self.assembled.contact_point(
                 Vertical,
                 self.wheel_positions[flat],
                 self.model.wheel_y[flat],
