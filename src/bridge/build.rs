@@ -368,7 +368,17 @@ impl ModalBridge {
             }
             (Bridge::FeImport(_), _) => vec![0.0; omegas.len()],
         };
+        let rayleigh_damping = match bridge {
+            Bridge::Beam(beam) => beam.damping.rayleigh_coefficients(),
+            Bridge::FeImport(f) => match (f.damping.rule(), &f.model.damping) {
+                (Some(rule), _) => rule.rayleigh_coefficients(),
+                (None, Some(_)) => None,
+                (None, None) => Some((0.0, 0.0)),
+            },
+            Bridge::Plate(_) => None,
+        };
         Ok(Self {
+            rayleigh_damping,
             length: x,
             supports,
             circular_frequencies: omegas,

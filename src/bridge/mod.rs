@@ -106,6 +106,12 @@ pub struct ModalBridge {
     pub circular_frequencies: Vec<f64>,
     /// Modal damping ratios ζᵢ, dimensionless.
     pub damping_ratios: Vec<f64>,
+    /// The damping of the assembled model as C = c_M M + c_K K, `(c_M,
+    /// c_K)` in (1/s, s), for the direct solver ([`crate::solve::direct`]):
+    /// a beam's or an imported model's Rayleigh damping, or (0, 0)
+    /// without damping; `None` where no such C stands for the modal ratios
+    /// (a nonzero modal ratio, a plate, an imported damping matrix).
+    pub rayleigh_damping: Option<(f64, f64)>,
     /// Number of modes the discretisation offers.
     pub available_modes: usize,
     /// How the kept modes were chosen, in words (for the summary).
@@ -360,6 +366,66 @@ impl ModalBridge {
             Shapes::Imported(imported) => Some(imported.static_flexibility_at(points)),
             _ => None,
         }
+    }
+
+    /// The assembled finite-element model of a plane beam (its sparse K
+    /// and M on the free DOFs and the mesh), for the direct solver
+    /// ([`crate::solve::direct`]); `None` for a 3D beam, a plate or an
+    /// imported model.
+    pub fn beam_model(&self) -> Option<&BeamModel> {
+        match &self.shapes {
+            Shapes::Beam {
+                model, sway: None, ..
+            } => Some(model),
+            _ => None,
+        }
+    }
+
+    /// An imported model's shapes (its model, pencil and kept mode
+    /// vectors), for the direct solver ([`crate::solve::direct`]); `None`
+    /// for any other bridge.
+    pub fn imported_shapes(&self) -> Option<&ImportedShapes> {
+        match &self.shapes {
+            Shapes::Imported(imported) => Some(imported),
+            _ => None,
+        }
+    }
+
+    /// The kept modes on the free DOFs of a plane beam or an imported
+    /// model (1/√kg), column-major n × modes (column i is Φᵢ, with
+    /// ΦᵢᵀMΦᵢ = 1): a beam's read back from the nodal values of its mode
+    /// shapes; `None` for a 3D beam or a plate. Cost O(n·modes).
+    pub fn assembled_mode_vectors(&self) -> Option<Vec<f64>> {
+        if let Shapes::Imported(imported) = &self.shapes {
+            let vectors = &imported.vectors;
+            let (n, modes) = (vectors.nrows(), vectors.ncols());
+            let mut out = vec![0.0; n * modes];
+            for c in 0..modes {
+                out[c * n..(c + 1) * n].copy_from_slice(vectors.col_as_slice(c));
+            }
+            return Some(out);
+        }
+        let Shapes::Beam {
+            shapes,
+            model,
+            sway: None,
+        } = &self.shapes
+        else {
+            return None;
+        };
+        let (n, modes) = (model.free_dofs(), self.mode_count());
+        let mut vectors = vec![0.0; n * modes];
+        for node in 0..model.node_x.len() {
+            for c in 0..modes {
+                let (w, theta) = shapes.nodal(node, c);
+                for (dof, value) in [(2 * node, w), (2 * node + 1, theta)] {
+                    if let Some(i) = model.free_index[dof] {
+                        vectors[c * n + i] = value;
+                    }
+                }
+            }
+        }
+        Some(vectors)
     }
 
     /// Whether the modes are an imported finite-element model's.

@@ -353,6 +353,7 @@ impl Summary {
                     SolverMethod::Iterative => "iterative",
                     SolverMethod::Lcp => "lcp",
                     SolverMethod::Embs => "embs",
+                    SolverMethod::Direct => "direct",
                 },
                 contact: match model.contact {
                     crate::model::ContactLaw::Permanent => "permanent",

@@ -157,6 +157,15 @@ pub(crate) fn resolve_method(
         Some(m) if m == needed => m,
         Some(SolverMethod::Iterative) if !contact.is_unilateral() => SolverMethod::Iterative,
         Some(SolverMethod::Embs) if !contact.is_unilateral() => SolverMethod::Embs,
+        Some(SolverMethod::Direct) if !contact.is_unilateral() => SolverMethod::Direct,
+        Some(SolverMethod::Direct) => {
+            ck.error(
+                "solver.method",
+                "`method: direct` keeps every wheel in permanent contact; unilateral contact \
+                 (rigid, elastic, hertz) needs `method: lcp`",
+            );
+            needed
+        }
         Some(SolverMethod::Embs) => {
             ck.error(
                 "solver.method",

@@ -263,6 +263,22 @@ pub enum Damping {
 }
 
 impl Damping {
+    /// The damping matrix C = c_M M + c_K K this damping stands for on an
+    /// assembled model, `(c_M, c_K)` in (1/s, s): Rayleigh's a₀ = 2ζω₁ω₂/(ω₁+ω₂),
+    /// a₁ = 2ζ/(ω₁+ω₂) (as [`Self::ratio_at`]), `(0, 0)` for a zero modal
+    /// ratio; `None` for a nonzero modal ratio, which no sparse matrix
+    /// holds (C = MΦ diag(2ζω) ΦᵀM is full).
+    pub fn rayleigh_coefficients(&self) -> Option<(f64, f64)> {
+        match *self {
+            Damping::Modal { ratio } => (ratio == 0.0).then_some((0.0, 0.0)),
+            Damping::Rayleigh { frequencies, ratio } => {
+                let w1 = 2.0 * std::f64::consts::PI * frequencies[0];
+                let w2 = 2.0 * std::f64::consts::PI * frequencies[1];
+                Some((2.0 * ratio * w1 * w2 / (w1 + w2), 2.0 * ratio / (w1 + w2)))
+            }
+        }
+    }
+
     /// Damping ratio of a mode with circular frequency `omega` (rad/s).
     ///
     /// Rayleigh: ζ(ω) = a₀/(2ω) + a₁ω/2 with a₀, a₁ solved so that ζ(ω₁) =

@@ -30,4 +30,12 @@ pub enum SolverMethod {
     /// ε = ω_p/ω_B (primary suspension over first bridge frequency) is
     /// small; the summary states ε.
     Embs,
+    /// Permanent contact on the bridge's assembled finite-element matrices
+    /// instead of its modes: Newmark/HHT on M ü + C u̇ + K u = f, the
+    /// effective stiffness factorised once, exact in space (no modal
+    /// truncation); the vehicles as in `coupled`. A plane `type: beam` or
+    /// a `type: fe_import` model, with Rayleigh damping or none. Bridge records are taken from the nodal state's projection
+    /// onto the kept modes (exact with every mode kept); vehicle and
+    /// contact records are the direct solution's.
+    Direct,
 }

@@ -4,7 +4,8 @@
 //! at each step both subsystems are advanced by Newmark with the contact
 //! forces as unknowns, the wheel-to-surface gaps are expressed through those
 //! forces (the step's contact compliance), and the contact model closes the
-//! system. [`coupled`] enforces permanent contact.
+//! system. [`coupled`] enforces permanent contact; [`direct`] does the
+//! same on the bridge's assembled matrices instead of its modes.
 //!
 //! Every method is a [`time_loop::Stepper`] — its step and nothing else —
 //! run by the one time loop [`time_loop::drive`], which owns the step
@@ -16,6 +17,7 @@
 pub mod cancel;
 pub mod coupled;
 pub mod dense;
+pub mod direct;
 pub mod embs;
 pub mod embs_scale;
 pub mod guard;
@@ -82,6 +84,12 @@ pub enum SolveError {
     SingularContact {
         /// Time, s.
         time: f64,
+        /// Explanation.
+        reason: String,
+    },
+    /// The direct solver cannot run this scene ([`direct`]).
+    #[error("the direct solver cannot run this scene: {reason}")]
+    Direct {
         /// Explanation.
         reason: String,
     },
@@ -229,6 +237,9 @@ pub fn run_method(
             &mut [observer],
             progress,
         ),
+        SolverMethod::Direct => {
+            drive_one(&mut direct::Direct::new(model)?, &mut [observer], progress)
+        }
         SolverMethod::Embs => {
             let mut stepper = embs::Embs::new(model, zero_order.is_some())?;
             match zero_order {
@@ -321,17 +332,30 @@ impl GroundStep {
     /// Advances to the step ending at `t` (s) of `model`.
     #[inline]
     pub fn step_of(&mut self, model: &Model, modal: &mut modal::ModalStep, t: f64) -> f64 {
+        let (ratio, vertical, lateral) = self.advance_to(model, t);
+        if self.active {
+            modal.ground_acceleration = vertical;
+            modal.lateral_ground_acceleration = lateral;
+        }
+        ratio
+    }
+
+    /// Advances to the step ending at `t` (s) of `model` (whatever the
+    /// bridge's coordinates: [`Self::step_of`] for modal ones, the direct
+    /// solver's nodal ones): the vehicles' extra weight ratio, and the
+    /// vertical and lateral ground accelerations at `t` (m/s²); all 0
+    /// without ground motion.
+    #[inline]
+    pub fn advance_to(&mut self, model: &Model, t: f64) -> (f64, f64, f64) {
         if !self.active {
-            return 0.0;
+            return (0.0, 0.0, 0.0);
         }
         let now = model.ground_acceleration(t);
-        modal.ground_acceleration = now;
         let ratio = (self.weight * now - self.alpha * self.previous) / self.gravity;
         self.previous = now;
         let lateral = model.lateral_ground_acceleration(t);
-        modal.lateral_ground_acceleration = lateral;
         self.lateral_load = self.weight * lateral - self.alpha * self.lateral_previous;
         self.lateral_previous = lateral;
-        ratio
+        (ratio, now, lateral)
     }
 }

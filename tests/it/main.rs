@@ -26,6 +26,7 @@ mod cli;
 mod confined;
 mod converge;
 mod csv_headers;
+mod direct;
 mod documented_defaults;
 mod embs;
 mod event_reference_oracle;

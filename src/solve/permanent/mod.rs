@@ -412,58 +412,14 @@ impl PermanentContacts {
                 ];
             }
         }
-        // Row c of (I − A) for each vehicle's wheel c: A_c· = Σ_b (M̃ S₂ + C̃ S₁
-        // + K̃ S₀)_{cb,·}, accumulated along whole rows so the inner loop runs
-        // over contiguous memory. 0 − x₁ − x₂ … rounds exactly as −(x₁ + x₂ …)
-        // and 1 is added last, as 1 − Σ was: the same bits as the sum per entry.
-        for (v, partition) in self.partitions.iter().enumerate() {
-            let local = &self.contact_of[v];
-            for (a, &c) in local.iter().enumerate() {
-                let row = &mut system[c * nc..(c + 1) * nc];
-                row.fill(0.0);
-                let (first, end) = partition.condensed_spans[a];
-                for (b, &cb) in local.iter().enumerate().take(end).skip(first) {
-                    let mass = partition.condensed_mass[(a, b)];
-                    let damping = partition.condensed_damping[(a, b)];
-                    let stiffness = partition.condensed_stiffness[(a, b)];
-                    // Cars without couplers (a `count:` train) condense to
-                    // blocks: the zero blocks between cars add nothing
-                    // (−0·s leaves every entry's value as it was).
-                    if mass == 0.0 && damping == 0.0 && stiffness == 0.0 {
-                        continue;
-                    }
-                    for (entry, s) in row.iter_mut().zip(&sens[cb * nc..(cb + 1) * nc]) {
-                        *entry -= mass * s[2] + damping * s[1] + stiffness * s[0];
-                    }
-                }
-                row[c] += 1.0;
-            }
-        }
+        close_with_vehicles(&self.partitions, &self.contact_of, nc, sens, system);
     }
 
     /// The vehicles' answer to prescribed wheel kinematics: the contact force
     /// of each wheel, λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W (N), written to `forces`.
     /// Cost O(Σ wheelsᵥ²).
     pub fn vehicle_forces(&self, kinematics: &[[f64; 3]], forces: &mut [f64]) {
-        for (v, partition) in self.partitions.iter().enumerate() {
-            for (a, &c) in self.contact_of[v].iter().enumerate() {
-                let mut force = partition.base_forces[a];
-                let (first, end) = partition.condensed_spans[a];
-                for (b, &cb) in self.contact_of[v].iter().enumerate().take(end).skip(first) {
-                    // The zero blocks between uncoupled cars add nothing.
-                    if partition.condensed_mass[(a, b)] == 0.0
-                        && partition.condensed_damping[(a, b)] == 0.0
-                        && partition.condensed_stiffness[(a, b)] == 0.0
-                    {
-                        continue;
-                    }
-                    force += partition.condensed_mass[(a, b)] * kinematics[cb][2]
-                        + partition.condensed_damping[(a, b)] * kinematics[cb][1]
-                        + partition.condensed_stiffness[(a, b)] * kinematics[cb][0];
-                }
-                forces[c] = force;
-            }
-        }
+        vehicle_forces(&self.partitions, &self.contact_of, kinematics, forces);
     }
 
     /// The bridge's answer to contact forces `forces` (N): each wheel's
@@ -541,6 +497,80 @@ impl PermanentContacts {
                 &mut state.velocity,
                 &mut state.acceleration,
             );
+        }
+    }
+}
+
+/// Closes the condensed contact system (I − A)λ = b: row c of each
+/// vehicle's wheel c gets A_c· = Σ_b (M̃ S₂ + C̃ S₁ + K̃ S₀)_{cb,·} from the
+/// wheels' sensitivities `sens` (row-major `nc` × `nc`, [∂u, ∂u̇, ∂ü]/∂λ) and
+/// each vehicle's condensed rows (`partitions`, with the global contact
+/// indices `contact_of` of each vehicle's wheels), written row-major into
+/// `system`. Shared by the modal permanent-contact methods and the direct
+/// solver ([`super::direct`]). Cost O(contacts²·wheels per vehicle).
+pub fn close_with_vehicles(
+    partitions: &[Partition],
+    contact_of: &[Vec<usize>],
+    nc: usize,
+    sens: &[[f64; 3]],
+    system: &mut [f64],
+) {
+    // Row c of (I − A) for each vehicle's wheel c: A_c· = Σ_b (M̃ S₂ + C̃ S₁
+    // + K̃ S₀)_{cb,·}, accumulated along whole rows so the inner loop runs
+    // over contiguous memory. 0 − x₁ − x₂ … rounds exactly as −(x₁ + x₂ …)
+    // and 1 is added last, as 1 − Σ was: the same bits as the sum per entry.
+    for (v, partition) in partitions.iter().enumerate() {
+        let local = &contact_of[v];
+        for (a, &c) in local.iter().enumerate() {
+            let row = &mut system[c * nc..(c + 1) * nc];
+            row.fill(0.0);
+            let (first, end) = partition.condensed_spans[a];
+            for (b, &cb) in local.iter().enumerate().take(end).skip(first) {
+                let mass = partition.condensed_mass[(a, b)];
+                let damping = partition.condensed_damping[(a, b)];
+                let stiffness = partition.condensed_stiffness[(a, b)];
+                // Cars without couplers (a `count:` train) condense to
+                // blocks: the zero blocks between cars add nothing
+                // (−0·s leaves every entry's value as it was).
+                if mass == 0.0 && damping == 0.0 && stiffness == 0.0 {
+                    continue;
+                }
+                for (entry, s) in row.iter_mut().zip(&sens[cb * nc..(cb + 1) * nc]) {
+                    *entry -= mass * s[2] + damping * s[1] + stiffness * s[0];
+                }
+            }
+            row[c] += 1.0;
+        }
+    }
+}
+
+/// The vehicles' answer to prescribed wheel kinematics `kinematics`
+/// ([u m, u̇ m/s, ü m/s²] per contact): each wheel's contact force,
+/// λ = λ⁰ + M̃ü_W + C̃u̇_W + K̃u_W (N), written to `forces` (see
+/// [`close_with_vehicles`] for the arguments). Cost O(Σ wheelsᵥ²).
+pub fn vehicle_forces(
+    partitions: &[Partition],
+    contact_of: &[Vec<usize>],
+    kinematics: &[[f64; 3]],
+    forces: &mut [f64],
+) {
+    for (v, partition) in partitions.iter().enumerate() {
+        for (a, &c) in contact_of[v].iter().enumerate() {
+            let mut force = partition.base_forces[a];
+            let (first, end) = partition.condensed_spans[a];
+            for (b, &cb) in contact_of[v].iter().enumerate().take(end).skip(first) {
+                // The zero blocks between uncoupled cars add nothing.
+                if partition.condensed_mass[(a, b)] == 0.0
+                    && partition.condensed_damping[(a, b)] == 0.0
+                    && partition.condensed_stiffness[(a, b)] == 0.0
+                {
+                    continue;
+                }
+                force += partition.condensed_mass[(a, b)] * kinematics[cb][2]
+                    + partition.condensed_damping[(a, b)] * kinematics[cb][1]
+                    + partition.condensed_stiffness[(a, b)] * kinematics[cb][0];
+            }
+            forces[c] = force;
         }
     }
 }
