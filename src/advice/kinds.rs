@@ -229,6 +229,23 @@ pub const RUN_ENDS_AT_PEAK: Kind = Kind {
     example: "a moving force above a beam's critical speed with `free_vibration: 0`",
 };
 
+/// A direct run whose bridge records read fewer modes than the model has.
+pub const DIRECT_RECORDS_ON_KEPT_MODES: Kind = Kind {
+    id: "direct-records-on-kept-modes",
+    severity: Severity::Warning,
+    meaning: "`solver.method: direct` steps the assembled model, exact in space, but the \
+              bridge records (displacements, accelerations, moments, shears, reactions, \
+              envelopes) read its nodal state projected onto the kept modes, and \
+              `bridge.modes` keeps fewer modes than the model has",
+    why: "the vehicle and contact records are the direct solution's own, but each bridge \
+          record carries the truncation of the modes it is projected on (with the static \
+          correction where that is on), as a modal run's would",
+    fix: "keep every mode (`bridge.modes: {count: N}` with N the model's modes) for bridge \
+          records exact in space, or measure the truncation with `vbi converge`",
+    example: "scenarios/yang-yau-sprung-mass.yaml with `solver: {method: direct}` (10 of its \
+              40 modes kept)",
+};
+
 /// Every kind, in the order of the pipeline (scene, plan, run).
 pub const KINDS: &[Kind] = &[
     IMPLAUSIBLE_SPEED,
@@ -249,4 +266,5 @@ pub const KINDS: &[Kind] = &[
     HARMONIC_ENTRANCE_KICK,
     CONTACT_PEAK_ON_RAIL_END,
     RUN_ENDS_AT_PEAK,
+    DIRECT_RECORDS_ON_KEPT_MODES,
 ];

@@ -5,7 +5,7 @@
 
 use crate::advice::{self, Advice};
 use crate::report::summary::Summary;
-use crate::scene::{Quantity, Scenario, Surface};
+use crate::scene::{Quantity, Scenario, SolverMethod, Surface};
 
 /// Every piece of advice about `scenario` and its run's `summary`: the
 /// scene's (before it ran) then the run's, the scene's `allow` applied.
@@ -43,6 +43,7 @@ pub fn run_advice(scenario: &Scenario, summary: &Summary) -> Vec<Advice> {
     out.extend(entrance_kick(scenario, summary));
     out.extend(peaks_on_a_rail_end_ramp(scenario, summary));
     out.extend(peaks_at_the_end(scenario, summary));
+    out.extend(direct_records_on_kept_modes(scenario, summary));
     advice::apply_allow(&mut out, &scenario.allow);
     out
 }
@@ -124,6 +125,48 @@ fn rails_left_out(summary: &Summary) -> Option<Advice> {
         .figure("share_left_out", rails.left_out)
         .figure("modes_used", run.modes_used as f64)
     })
+}
+
+/// A `direct` run whose bridge records are projections onto fewer modes
+/// than the model has (`src/solve/direct`: the record layer reads modal
+/// coordinates, q = ΦᵀMu of the nodal state).
+fn direct_records_on_kept_modes(scenario: &Scenario, summary: &Summary) -> Option<Advice> {
+    let run = &summary.run;
+    if scenario.solver.method != SolverMethod::Direct || run.modes_used >= run.modes_available {
+        return None;
+    }
+    let mut names: Vec<String> = scenario
+        .record
+        .iter()
+        .filter(|r| is_bridge_quantity(r.quantity))
+        .map(|r| format!("`{}`", r.name))
+        .collect();
+    if scenario.envelopes.is_some() {
+        names.push("the envelopes".to_owned());
+    }
+    if names.is_empty() {
+        return None;
+    }
+    Some(
+        Advice::new(
+            &advice::DIRECT_RECORDS_ON_KEPT_MODES,
+            format!(
+                "the direct solution is exact in space, but the bridge records ({}) read it \
+                 projected onto the {} kept modes of the model's {}: they carry the modes' \
+                 truncation as a modal run's would (the vehicle and contact records do not)",
+                names.join(", "),
+                run.modes_used,
+                run.modes_available
+            ),
+        )
+        .at("bridge.modes")
+        .help(format!(
+            "keep every mode for bridge records exact in space: `bridge.modes: {{count: {}}}`",
+            run.modes_available
+        ))
+        .figure("modes_used", run.modes_used as f64)
+        .figure("modes_available", run.modes_available as f64),
+    )
 }
 
 /// Whether `quantity` is a response of the bridge (displacement,

@@ -370,6 +370,33 @@ fn direct_vehicle_records_do_not_depend_on_the_modes_kept() {
     }
 }
 
+/// A direct run whose bridge records are projected onto fewer modes than
+/// the model has says so, as data in the summary (warning
+/// `direct-records-on-kept-modes`, pointing at `bridge.modes`, with the
+/// counts), and says nothing once every mode is kept.
+#[test]
+fn direct_bridge_records_on_fewer_modes_are_warned() {
+    let id = "direct-records-on-kept-modes";
+    let truncated = crate::support::run_yaml(&yang_yau("direct", 10));
+    let advice = truncated
+        .summary
+        .advice
+        .iter()
+        .find(|a| a.id == id)
+        .unwrap_or_else(|| panic!("no {id} at 10 of 40 modes"));
+    assert!(advice.message.contains("`midspan`"), "{}", advice.message);
+    assert!(
+        !advice.message.contains("`body`"),
+        "vehicle records are not projected: {}",
+        advice.message
+    );
+    assert!(advice.help.as_deref().unwrap_or("").contains("count: 40"));
+    let exact = crate::support::run_yaml(&yang_yau("direct", 40));
+    assert!(exact.summary.advice.iter().all(|a| a.id != id));
+    let modal = crate::support::run_yaml(&yang_yau("coupled", 10));
+    assert!(modal.summary.advice.iter().all(|a| a.id != id));
+}
+
 /// The direct method refuses what it cannot hold, with the reason: a
 /// nonzero modal damping ratio (no sparse C stands for it) at run time,
 /// unilateral contact when the scene is checked.
