@@ -370,6 +370,30 @@ fn direct_vehicle_records_do_not_depend_on_the_modes_kept() {
     }
 }
 
+/// `vbi generate viaduct` of one 5 m span on 2 m piers, 1 m approaches,
+/// one rail element per sleeper bay, into `via/` of `scratch` (300 DOFs).
+fn generate_small_viaduct(scratch: &crate::support::Scratch) {
+    let args = [
+        "generate",
+        "viaduct",
+        "--spans",
+        "1",
+        "--span-length",
+        "5",
+        "--pier-height",
+        "2",
+        "--approach-length",
+        "1",
+        "--rail-divisions",
+        "1",
+        "--pier-elements",
+        "2",
+        "--out",
+        "via",
+    ];
+    crate::support::assert_exit(&crate::support::vbi(&args, scratch.dir()), 0);
+}
+
 /// A direct run whose bridge records are projected onto fewer modes than
 /// the model has says so, as data in the summary (warning
 /// `direct-records-on-kept-modes`, pointing at `bridge.modes`, with the
@@ -583,25 +607,7 @@ fn method_direct_runs_an_imported_model() {
 #[test]
 fn method_direct_runs_a_generated_two_rail_viaduct() {
     let scratch = crate::support::Scratch::new("direct", "viaduct");
-    let args = [
-        "generate",
-        "viaduct",
-        "--spans",
-        "1",
-        "--span-length",
-        "5",
-        "--pier-height",
-        "2",
-        "--approach-length",
-        "1",
-        "--rail-divisions",
-        "1",
-        "--pier-elements",
-        "2",
-        "--out",
-        "via",
-    ];
-    crate::support::assert_exit(&crate::support::vbi(&args, scratch.dir()), 0);
+    generate_small_viaduct(&scratch);
     let scene = |method: &str, entry: &str, vehicles: &str, direction: &str, records: &str| {
         format!(
             "name: via-{method}\n\
@@ -667,25 +673,7 @@ fn method_direct_follows_the_ground_motion() {
     for name in ["synthetic-vertical.AT2", "synthetic-lateral.AT2"] {
         std::fs::copy(records.join(name), scratch.dir().join(name)).unwrap();
     }
-    let args = [
-        "generate",
-        "viaduct",
-        "--spans",
-        "1",
-        "--span-length",
-        "5",
-        "--pier-height",
-        "2",
-        "--approach-length",
-        "1",
-        "--rail-divisions",
-        "1",
-        "--pier-elements",
-        "2",
-        "--out",
-        "via",
-    ];
-    crate::support::assert_exit(&crate::support::vbi(&args, scratch.dir()), 0);
+    generate_small_viaduct(&scratch);
     let beam = "bridge:\n  type: beam\n  spans: [25.0]\n  bending_stiffness: 8.323e9\n  \
                 mass_per_length: 2303.0\n  elements_per_span: 20\n  \
                 modes: {count: 40, static_correction: false}\n  \

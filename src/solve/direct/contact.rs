@@ -35,9 +35,8 @@ use crate::model::Model;
 use crate::solve::dense::lu_solve;
 use crate::solve::newmark::Newmark;
 use crate::solve::partition::Partition;
-use crate::solve::permanent::{ContactWheel, close_with_vehicles, vehicle_forces};
+use crate::solve::permanent::{ContactWheel, WheelSplit, close_with_vehicles, vehicle_forces};
 use crate::solve::{SolveError, VehicleState};
-use crate::vehicle::WheelKind;
 
 /// Columns of each block solve that forms the contact flexibility.
 pub const SOLVE_BLOCK: usize = 32;
@@ -105,25 +104,14 @@ impl DirectContacts {
         nm: &Newmark,
         effective: &Factor,
     ) -> Result<Self, SolveError> {
-        let mut contacts = Vec::new();
-        let mut wheel_dofs: Vec<Vec<usize>> = vec![Vec::new(); model.vehicles.len()];
-        for (flat, r) in model.wheels.iter().enumerate() {
-            let vehicle = &model.vehicles[r.vehicle];
-            if let WheelKind::Dof(dof) = vehicle.wheels[r.wheel].kind {
-                contacts.push(ContactWheel {
-                    wheel: flat,
-                    vehicle: r.vehicle,
-                    dof,
-                    y: model.wheel_y[flat],
-                    direction: vehicle.wheels[r.wheel].direction,
-                });
-                wheel_dofs[r.vehicle].push(dof);
-            }
-        }
+        // The moving loads are the stepper's own (`super::step`).
+        let WheelSplit {
+            contacts,
+            wheel_dofs,
+            contact_of,
+            ..
+        } = WheelSplit::of(model);
         let nc = contacts.len();
-        let contact_of: Vec<Vec<usize>> = (0..model.vehicles.len())
-            .map(|v| (0..nc).filter(|&c| contacts[c].vehicle == v).collect())
-            .collect();
         let mut partitions = Vec::with_capacity(model.vehicles.len());
         for (v, vehicle) in model.vehicles.iter().enumerate() {
             partitions.push(

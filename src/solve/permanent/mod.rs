@@ -164,10 +164,25 @@ pub struct PermanentContacts {
     pub follow_irregularity: bool,
 }
 
-impl PermanentContacts {
-    /// Splits the model's wheels and vehicles for a Newmark scheme `nm`.
-    pub fn new(model: &Model, nm: &Newmark) -> Result<Self, SolveError> {
-        let modes = model.bridge.mode_count();
+/// A model's wheels split by how they meet the surface: the contact wheels
+/// (a vehicle DOF rides it) and the moving loads, with each vehicle's
+/// wheel DOFs and contact indices (shared by the permanent-contact modal
+/// steppers and the direct one).
+#[derive(Debug, Clone)]
+pub struct WheelSplit {
+    /// Contact wheels in flattened order.
+    pub contacts: Vec<ContactWheel>,
+    /// Moving loads: (flattened wheel, load N).
+    pub load_wheels: Vec<(usize, f64)>,
+    /// Each vehicle's wheel DOFs, in contact order.
+    pub wheel_dofs: Vec<Vec<usize>>,
+    /// Each vehicle's contact indices.
+    pub contact_of: Vec<Vec<usize>>,
+}
+
+impl WheelSplit {
+    /// The split of `model`'s flattened wheels. Cost O(wheels · vehicles).
+    pub fn of(model: &Model) -> Self {
         let mut contacts = Vec::new();
         let mut load_wheels = Vec::new();
         let mut wheel_dofs: Vec<Vec<usize>> = vec![Vec::new(); model.vehicles.len()];
@@ -191,6 +206,26 @@ impl PermanentContacts {
         let contact_of: Vec<Vec<usize>> = (0..model.vehicles.len())
             .map(|v| (0..nc).filter(|&c| contacts[c].vehicle == v).collect())
             .collect();
+        Self {
+            contacts,
+            load_wheels,
+            wheel_dofs,
+            contact_of,
+        }
+    }
+}
+
+impl PermanentContacts {
+    /// Splits the model's wheels and vehicles for a Newmark scheme `nm`.
+    pub fn new(model: &Model, nm: &Newmark) -> Result<Self, SolveError> {
+        let modes = model.bridge.mode_count();
+        let WheelSplit {
+            contacts,
+            load_wheels,
+            wheel_dofs,
+            contact_of,
+        } = WheelSplit::of(model);
+        let nc = contacts.len();
         let mut states = Vec::with_capacity(model.vehicles.len());
         let mut partitions = Vec::with_capacity(model.vehicles.len());
         for (v, vehicle) in model.vehicles.iter().enumerate() {
