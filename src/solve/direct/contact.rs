@@ -114,17 +114,7 @@ impl DirectContacts {
         let nc = contacts.len();
         let mut partitions = Vec::with_capacity(model.vehicles.len());
         for (v, vehicle) in model.vehicles.iter().enumerate() {
-            partitions.push(
-                Partition::new(vehicle, wheel_dofs[v].clone(), nm).ok_or_else(|| {
-                    SolveError::SingularContact {
-                        time: 0.0,
-                        reason: format!(
-                            "vehicle {} has a singular effective stiffness once its wheels are held",
-                            v + 1
-                        ),
-                    }
-                })?,
-            );
+            partitions.push(WheelSplit::partition(vehicle, v, &wheel_dofs[v], nm)?);
         }
         let line = beam.line_dofs();
         let mut line_index = vec![0; beam.order()];

@@ -181,6 +181,30 @@ pub struct WheelSplit {
 }
 
 impl WheelSplit {
+    /// Vehicle `v`'s partition (`vehicle`, its wheel DOFs `wheel_dofs`)
+    /// for the Newmark scheme `nm`.
+    ///
+    /// # Errors
+    ///
+    /// [`SolveError::SingularContact`] when its free DOFs cannot be
+    /// condensed once its wheels are held.
+    pub fn partition(
+        vehicle: &crate::vehicle::VehicleModel,
+        v: usize,
+        wheel_dofs: &[usize],
+        nm: &Newmark,
+    ) -> Result<Partition, SolveError> {
+        Partition::new(vehicle, wheel_dofs.to_vec(), nm).ok_or_else(|| {
+            SolveError::SingularContact {
+                time: 0.0,
+                reason: format!(
+                    "vehicle {} has a singular effective stiffness once its wheels are held",
+                    v + 1
+                ),
+            }
+        })
+    }
+
     /// The split of `model`'s flattened wheels. Cost O(wheels · vehicles).
     pub fn of(model: &Model) -> Self {
         let mut contacts = Vec::new();
@@ -229,15 +253,7 @@ impl PermanentContacts {
         let mut states = Vec::with_capacity(model.vehicles.len());
         let mut partitions = Vec::with_capacity(model.vehicles.len());
         for (v, vehicle) in model.vehicles.iter().enumerate() {
-            let partition = Partition::new(vehicle, wheel_dofs[v].clone(), nm).ok_or_else(
-                || SolveError::SingularContact {
-                    time: 0.0,
-                    reason: format!(
-                        "vehicle {} has a singular effective stiffness once its wheels are held",
-                        v + 1
-                    ),
-                },
-            )?;
+            let partition = WheelSplit::partition(vehicle, v, &wheel_dofs[v], nm)?;
             states.push(VehicleState::at_rest(model, v));
             partitions.push(partition);
         }
