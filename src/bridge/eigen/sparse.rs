@@ -64,9 +64,24 @@ pub fn shifted(
     b: &SymmetricSparse,
     shift: f64,
 ) -> Result<SymmetricSparse, BridgeError> {
+    combination(a, 1.0, b, -shift)
+}
+
+/// c_a A + c_b B on the union of both patterns (entries in A's then B's
+/// order, summed where they meet). Cost O(nnz(A) + nnz(B)).
+///
+/// # Errors
+///
+/// [`BridgeError::OutOfMemory`] when the combined pattern cannot be held.
+pub fn combination(
+    a: &SymmetricSparse,
+    scale_a: f64,
+    b: &SymmetricSparse,
+    scale_b: f64,
+) -> Result<SymmetricSparse, BridgeError> {
     let n = a.nrows();
     let mut entries = Vec::with_capacity(a.compute_nnz() + b.compute_nnz());
-    for (matrix, scale) in [(a, 1.0), (b, -shift)] {
+    for (matrix, scale) in [(a, scale_a), (b, scale_b)] {
         let col_ptr = matrix.symbolic().col_ptr();
         let row_idx = matrix.symbolic().row_idx();
         let values = matrix.val();

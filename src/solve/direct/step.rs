@@ -2,7 +2,6 @@
 //! M ü + C u̇ + K u = F (see the module doc of [`super`] for the math).
 
 use faer::dyn_stack::MemBuffer;
-use faer::sparse::{SparseColMat, Triplet};
 
 use super::assembled::AssembledBridge;
 use crate::bridge::eigen::sparse::{Factor, SymmetricSparse, multiply};
@@ -58,27 +57,18 @@ impl std::fmt::Debug for DirectStep {
     }
 }
 
-/// c_a A + c_b B on the union of both patterns.
+/// c_a A + c_b B on the union of both patterns
+/// ([`crate::bridge::eigen::sparse::combination`]).
 fn combination(
     a: &SymmetricSparse,
     scale_a: f64,
     b: &SymmetricSparse,
     scale_b: f64,
 ) -> Result<SymmetricSparse, SolveError> {
-    let n = a.nrows();
-    let mut entries = Vec::with_capacity(a.compute_nnz() + b.compute_nnz());
-    for (matrix, scale) in [(a, scale_a), (b, scale_b)] {
-        let col_ptr = matrix.symbolic().col_ptr();
-        let row_idx = matrix.symbolic().row_idx();
-        let values = matrix.val();
-        for j in 0..n {
-            for p in col_ptr[j]..col_ptr[j + 1] {
-                entries.push(Triplet::new(row_idx[p], j, scale * values[p]));
-            }
+    crate::bridge::eigen::sparse::combination(a, scale_a, b, scale_b).map_err(|_| {
+        SolveError::Direct {
+            reason: "the assembled matrices do not fit in memory".into(),
         }
-    }
-    SparseColMat::try_new_from_triplets(n, n, &entries).map_err(|_| SolveError::Direct {
-        reason: "the assembled matrices do not fit in memory".into(),
     })
 }
 
