@@ -376,6 +376,9 @@ pub(crate) fn plan(
     }
 
     let method = resolve_method(solver_raw.method, &contact, ck);
+    if method == SolverMethod::Direct {
+        direct_supported(&modal, ck);
+    }
     let iteration = resolve_iteration(&solver_raw, method, ck);
     let embs = resolve_embs(&solver_raw, method, ck);
     ck.records_checked = true;
@@ -495,6 +498,32 @@ pub(crate) fn plan(
             .collect(),
     };
     Some((scenario, modal))
+}
+
+/// What `method: direct` cannot step, refused when the scene is checked
+/// (exit 2, at the key to change) rather than when the run starts: a
+/// bridge that is neither a plane beam nor an imported model, and damping
+/// that no C = c_M M + c_K K stands for (`solve::direct::assembled`).
+fn direct_supported(modal: &ModalBridge, ck: &mut Checker<'_>) {
+    if modal.beam_model().is_none() && modal.imported_shapes().is_none() {
+        ck.error(
+            "solver.method",
+            "`method: direct` steps a plane beam's or an imported model's assembled matrices; \
+             a 3D beam or a plate is not supported yet: use `method: coupled`",
+        );
+    } else if modal.rayleigh_damping.is_none() {
+        let path = if ck.has("bridge.damping") {
+            "bridge.damping"
+        } else {
+            "bridge"
+        };
+        ck.error(
+            path,
+            "`method: direct` needs a damping matrix C = c_M M + c_K K: a modal damping ratio \
+             (or a damping matrix file) has none; use `damping: {type: rayleigh, ratio: ζ, \
+             frequencies: [f₁, f₂]}`, or `method: coupled`",
+        );
+    }
 }
 
 /// The frequencies the scene's runs excite (each vehicle's axle passings,
