@@ -33,6 +33,25 @@
 //!   which the projection removes (Acary & Brogliato's projected
 //!   Moreau–Jean), so a wheel in contact has gap 0 and force > 0.
 //!
+//! - the residual (static-correction) flexibility R under a wheel with
+//!   mass is quasi-static where the wheel on it, ω_r = 1/√(m R), would
+//!   oscillate above the kept band (a beam at a few modes): it deflects
+//!   under the contact forces without inertia, so the wheel follows it
+//!   kinematically, not through its mass — the weight 1 − c of
+//!   [`residual_coupling`], as in the permanent-contact solver. The
+//!   displacement-level rows hold the gap with that share of the previous
+//!   step's residual deflection, s = (1 − c)Rλₙ (a known offset,
+//!   [`Impacts::residual_offset`]), and W − (1 − c)R as the compliance; at
+//!   the end of the step a wheel in contact is moved by the change of s
+//!   (its velocity and acceleration untouched), so its gap with the whole
+//!   compliance W is the LCP's. Coupled through its mass instead, the wheel
+//!   on the residual spring 1/R is a contact mode at √(1/(R m)) — 1.2 kHz
+//!   for the 1 t wheel on a 20 m beam keeping 10 modes, far above the
+//!   modes the correction stands for — which a landing (the force jumping
+//!   from 0 to the wheel load) set ringing, and which each halving of Δt
+//!   resolved further: the mid-span peak of the 4.5 mm hopping case grew by
+//!   1.1, 2.6 and 6.8 µm per halving from Δt = 5e-5 s (issue 43, point 4).
+//!
 //! Positions and velocities converge at first order in Δt through impacts
 //! and accumulations of impacts; with e = 1, θ = 1/2 and no damping the
 //! impacts conserve energy. The reported contact force is the impulse
@@ -46,6 +65,7 @@
 use nalgebra::DVector;
 
 use super::newmark::Newmark;
+use super::residual_rates::residual_coupling;
 use super::unilateral::{ContactWheel, block_inverse};
 use crate::model::{ContactLaw, Model};
 
@@ -93,6 +113,16 @@ pub(super) struct Impacts {
     cursor: usize,
     /// Free modal velocities q̇* = a₁q* − h_v of the step, 1/s·(modal units).
     pub free_modal_velocity: Vec<f64>,
+    /// The quasi-static residual deflection under each contact at the end
+    /// of the last step, m: s_c = (1 − c_c) Σ_d R_cd λ_d over the contacts
+    /// d held by the displacement-level law (a landing's multiplier is an
+    /// impulse and deflects no residual), 0 off the surface.
+    pub residual_offset: Vec<f64>,
+    /// The quasi-static share 1 − c_c of each contact's residual this step
+    /// ([`Impacts::weigh_residual`]).
+    pub quasi_static: Vec<f64>,
+    /// Each contact's DOF in its vehicle (the row of `inverse_mass`).
+    dof: Vec<usize>,
     /// Work arrays for the mode values and curvatures.
     values: Vec<f64>,
     curvatures: Vec<f64>,
@@ -151,9 +181,33 @@ impl Impacts {
             free_modal_velocity: vec![0.0; modes],
             window,
             cursor: 0,
+            residual_offset: vec![0.0; nc],
+            quasi_static: vec![0.0; nc],
+            dof: contacts.iter().map(|c| c.dof).collect(),
             values: vec![0.0; modes],
             curvatures: vec![0.0; modes],
         })
+    }
+
+    /// The quasi-static share 1 − c of each contact's residual flexibility
+    /// this step (see the module doc), c = [`residual_coupling`] of its
+    /// wheel's effective mass 1/(M⁻¹)_cc, its residual flexibility R_cc and
+    /// the highest kept mode ω_N (rad/s) — the weight with which the
+    /// permanent-contact solver lets a wheel's mass ride the residual, so
+    /// that the two agree: 1 on beams at a few modes (ω_r far above ω_N),
+    /// 0 where the residual is a track's compliance below the kept band;
+    /// 0 for a wheel without mass. `residual` is R, row-major nc × nc, m/N.
+    pub fn weigh_residual(&mut self, residual: &[f64], top_omega: f64) {
+        let nc = self.quasi_static.len();
+        for c in 0..nc {
+            self.quasi_static[c] = match &self.inverse_mass[c] {
+                Some(column) => {
+                    let mass = 1.0 / column[self.dof[c]];
+                    1.0 - residual_coupling(mass, residual[c * nc + c], top_omega)
+                }
+                None => 0.0,
+            };
+        }
     }
 
     /// Whether contact `c` takes Newton's law (its wheel has mass).

@@ -76,6 +76,9 @@ pub struct Unilateral<'a> {
     carried: Vec<f64>,
     /// Moreau–Jean impacts for rigid contact (wheels with mass).
     impacts: Option<Impacts>,
+    /// The highest kept mode's circular frequency ω_N, rad/s: where the
+    /// residual flexibility turns quasi-static ([`Impacts::weigh_residual`]).
+    top_omega: f64,
     rows: Vec<usize>,
     row_lambda: Vec<f64>,
     /// Whether each contact wheel was off the surface after the previous
@@ -169,6 +172,11 @@ impl<'a> Unilateral<'a> {
             landing: [vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]],
             carried,
             impacts,
+            top_omega: model
+                .bridge
+                .circular_frequencies
+                .iter()
+                .fold(0.0, |top: f64, &w| top.max(w)),
             rows: Vec::with_capacity(nc),
             row_lambda: vec![0.0; nc],
             was_apart: vec![false; nc],
@@ -334,11 +342,13 @@ impl<'a> Unilateral<'a> {
             lambda,
             previous,
             workspace,
+            top_omega,
             ..
         } = self
         else {
             unreachable!("rigid contact with impacts");
         };
+        impacts.weigh_residual(&geometry.residual, *top_omega);
         let compliance = &geometry.compliance;
         // With a landing in the problem, the gap rows are scaled by a₁
         // (1/s) to the velocity rows' size: the same LCP solution, a
@@ -356,6 +366,11 @@ impl<'a> Unilateral<'a> {
                         w - geometry.residual[a * nc + b],
                         &geometry.scaled[b * modes..(b + 1) * modes],
                     )
+                } else if impacts.quasi_static[a] > 0.0 {
+                    // The residual deflection's quasi-static share is the
+                    // offset below, not a spring the wheel's mass rides on
+                    // (impact.rs).
+                    gap_scale * (w - impacts.quasi_static[a] * geometry.residual[a * nc + b])
                 } else {
                     gap_scale * w
                 };
@@ -365,7 +380,7 @@ impl<'a> Unilateral<'a> {
                 impacts.free_velocity[a]
                     + impacts.restitution * impacts.relative_velocity[a].min(0.0)
             } else {
-                gap_scale * free_gap[a]
+                gap_scale * (free_gap[a] + impacts.residual_offset[a])
             };
             previous[ra] = lambda[a];
         }
@@ -610,6 +625,16 @@ impl<'a> Unilateral<'a> {
         for ((state, vs), vehicle) in states.iter_mut().zip(steps.iter_mut()).zip(&model.vehicles) {
             vs.finish(vehicle, state, nm, *gravity_ratio, ground.lateral_load);
         }
+        if let Some(impacts) = impacts.as_mut() {
+            follow_residual(
+                impacts,
+                contacts,
+                &geometry.residual,
+                lambda,
+                states,
+                contact_gaps,
+            );
+        }
     }
 
     /// Rigid landing is perfectly inelastic: a wheel that was off the
@@ -718,6 +743,49 @@ impl Stepper for Unilateral<'_> {
             &self.contact_gaps,
             &self.wheel_positions,
         )
+    }
+}
+
+/// The quasi-static residual deflection at the end of a rigid-contact step
+/// (see [`super::impact`]). A wheel with mass in contact (λ_a > 0) takes
+/// the offset s_a = (1 − c_a) Σ_b R_ab λ_b over the contacts b held by the
+/// displacement-level law (a landing's impulse deflects no residual), one
+/// off the surface none; the wheel is moved by the change, −(s_a − sₐ,ₙ)
+/// (the residual deflects the deck down under compression, which opens the
+/// gap), position only, so that its gap with the whole compliance W is the
+/// LCP's. At a lift-off the offset returns to 0 and the wheel leaves from
+/// the unloaded surface (left behind, it would start its flight inside the
+/// deck and the next step's contact force would push it out, a feedback
+/// that grew 27-fold every two steps). A landing wheel is put on the
+/// surface by the landing itself.
+fn follow_residual(
+    impacts: &mut Impacts,
+    contacts: &[ContactWheel],
+    residual: &[f64],
+    lambda: &[f64],
+    states: &mut [VehicleState],
+    contact_gaps: &mut [f64],
+) {
+    let nc = contacts.len();
+    for (a, contact) in contacts.iter().enumerate() {
+        if !impacts.takes_impacts(a) {
+            continue;
+        }
+        let offset: f64 = if lambda[a] > 0.0 {
+            impacts.quasi_static[a]
+                * (0..nc)
+                    .filter(|&b| !impacts.landing[b])
+                    .map(|b| residual[a * nc + b] * lambda[b])
+                    .sum::<f64>()
+        } else {
+            0.0
+        };
+        let change = offset - impacts.residual_offset[a];
+        impacts.residual_offset[a] = offset;
+        if !impacts.landing[a] {
+            states[contact.vehicle].displacement[contact.dof] -= change;
+            contact_gaps[contact.wheel] -= change;
+        }
     }
 }
 
