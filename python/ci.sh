@@ -5,16 +5,27 @@
 # built first. Both reuse what `cargo test --release` compiled (one target
 # folder, one profile, one feature set: tools/feature_sets.sh), so after the
 # tests only pyo3, numpy and the extension itself are compiled (~30 s, not
-# the whole library again). Usage: bash python/ci.sh [VENV]   (default: target/pyvenv)
+# the whole library again).
+#   bash python/ci.sh [VENV]             # default VENV: target/pyvenv
+#   bash python/ci.sh --prepare [VENV]   # only the venv and the test
+#                                        # dependencies (no compiling: .ci/run
+#                                        # fetches them while the tests compile)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 repo="$(dirname "$here")"
+prepare_only=
+if [ "${1:-}" = --prepare ]; then
+  prepare_only=1
+  shift
+fi
 venv="${1:-$repo/target/pyvenv}"
 cd "$repo"
-cargo build --release --bin vbi
-python3 -m venv "$venv"
+# A venv made by --prepare is kept (its packages are not fetched again).
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet --upgrade pip
 "$venv/bin/pip" install --quiet pytest pandas numpy matplotlib nbclient nbformat ipykernel
+[ -n "$prepare_only" ] && exit 0
+cargo build --release --bin vbi
 "$venv/bin/pip" install --quiet "$here"
 export VBI_BIN="$repo/target/release/vbi"
 # From the repository's root, not python/: `python -m` puts the working
