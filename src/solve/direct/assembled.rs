@@ -160,23 +160,39 @@ impl<'a> AssembledBridge<'a> {
     /// The free DOFs any N touches, ascending: every free DOF of a plane
     /// beam, the rails' displacement and rotation DOFs of an imported track.
     pub fn line_dofs(&self) -> Vec<usize> {
+        self.line_dofs_along().0
+    }
+
+    /// [`Self::line_dofs`] with their positions along the line: a plane
+    /// beam's in DOF order without positions (`None`); an imported track's
+    /// rail DOFs sorted by their node's x (m; then by DOF), the order in
+    /// which a banded contact flexibility keeps them
+    /// ([`super::line_flexibility`]).
+    pub fn line_dofs_along(&self) -> (Vec<usize>, Option<Vec<f64>>) {
         match self.line {
-            Line::Beam(_) => (0..self.order()).collect(),
+            Line::Beam(_) => ((0..self.order()).collect(), None),
             Line::Imported(imported) => {
                 let model = &imported.model;
-                let mut dofs: Vec<usize> = model
+                let mut along: Vec<(f64, usize)> = model
                     .track
                     .iter()
                     .flat_map(|&r| {
                         let rail = &model.rails[r];
-                        rail.displacement.iter().chain(&rail.rotation).flatten()
+                        rail.displacement
+                            .iter()
+                            .chain(&rail.rotation)
+                            .flat_map(move |dofs| {
+                                dofs.iter()
+                                    .zip(&rail.x)
+                                    .filter_map(|(dof, &x)| dof.map(|d| (x, d)))
+                            })
                     })
-                    .flatten()
-                    .copied()
                     .collect();
-                dofs.sort_unstable();
-                dofs.dedup();
-                dofs
+                along.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+                let mut seen = vec![false; self.order()];
+                along.retain(|&(_, d)| !std::mem::replace(&mut seen[d], true));
+                let positions = along.iter().map(|a| a.0).collect();
+                (along.into_iter().map(|a| a.1).collect(), Some(positions))
             }
         }
     }

@@ -15,20 +15,22 @@
 //! dense system (I − A)λ = b, solved by LU.
 //!
 //! **Cost and memory.** Once: Z on the deck line's DOFs (every free DOF
-//! of a plane beam, the rails' of an imported track), n_R solves with K̂'s factor in blocks of
-//! [`SOLVE_BLOCK`] columns, O(n_R·nnz(L)) time and n_R² × 8 bytes (a beam
-//! of 1,000 elements: 2,000² × 8 B = 32 MB; refused above
-//! [`MAX_LINE_DOFS`]). Per step: O(3·P² nc²) for the sensitivities (N has P
-//! ≤ 8 entries per contact, 4 on a beam or one rail: Z is read at P² entries
-//! per pair), the coupled
+//! of a plane beam, the rails' of an imported track,
+//! [`super::line_flexibility`]): on a track where it decays within a
+//! quarter of the line, a band found by coloured solves (a few hundred,
+//! whatever the line's length) and kept within 1e-10 of K̂⁻¹ ([`super::line_flexibility::BAND_TOLERANCE`]); otherwise
+//! n_R solves with K̂'s factor in blocks of [`SOLVE_BLOCK`] columns,
+//! O(n_R·nnz(L)) time and n_R² × 8 bytes (a beam of 1,000 elements:
+//! 2,000² × 8 B = 32 MB; refused above [`MAX_LINE_DOFS`]). Per step:
+//! O(3·P² nc²) for the sensitivities (N has P ≤ 8 entries per contact, 4
+//! on a beam or one rail: Z is read at P² entries per pair), the coupled
 //! method's O(nc² · wheels per vehicle + Σ dofᵥ²) for the vehicles and
 //! O(nc³) for the LU, and ONE extra solve with K̂'s factor for the
 //! correction u* → u_{n+1} of all contacts together (O(nnz(L))): nothing
 //! grows as contacts × model size. Nothing is allocated per step.
 
-use faer::MatMut;
-
 use super::assembled::{AssembledBridge, LinePoint, POINT_DOFS};
+use super::line_flexibility::{self, LineFlexibility};
 use super::step::DirectStep;
 use crate::bridge::eigen::sparse::Factor;
 use crate::model::Model;
@@ -60,10 +62,8 @@ pub struct DirectContacts {
     /// Index of each free DOF among the deck line's (0 off the line: such
     /// a DOF never carries weight in N).
     line_index: Vec<usize>,
-    /// n_R, the deck line's DOFs.
-    line_dofs: usize,
-    /// Z = wK̂⁻¹ on the deck line's DOFs, n_R × n_R column-major, m/N.
-    flexibility: Vec<f64>,
+    /// Z = wK̂⁻¹ on the deck line's DOFs, m/N, dense or banded.
+    flexibility: LineFlexibility,
     /// N at each contact this step.
     points: Vec<LinePoint>,
     /// Each contact's line indices of its N's DOFs.
@@ -84,14 +84,10 @@ pub struct DirectContacts {
     pub lambda: Vec<f64>,
 }
 
-/// Why the direct solver cannot hold the contacts.
-fn refused(reason: String) -> SolveError {
-    SolveError::Direct { reason }
-}
-
 impl DirectContacts {
     /// Splits `model`'s wheels and vehicles for Newmark `nm` and forms Z
-    /// with K̂'s factor `effective` (skipped without contacts).
+    /// with K̂'s factor `effective` (skipped without contacts), `dense`ly
+    /// whatever its decay if asked.
     ///
     /// # Errors
     ///
@@ -103,6 +99,7 @@ impl DirectContacts {
         beam: &AssembledBridge<'_>,
         nm: &Newmark,
         effective: &Factor,
+        dense: bool,
     ) -> Result<Self, SolveError> {
         // The moving loads are the stepper's own (`super::step`).
         let WheelSplit {
@@ -116,22 +113,29 @@ impl DirectContacts {
         for (v, vehicle) in model.vehicles.iter().enumerate() {
             partitions.push(WheelSplit::partition(vehicle, v, &wheel_dofs[v], nm)?);
         }
-        let line = beam.line_dofs();
+        let (line, positions) = beam.line_dofs_along();
         let mut line_index = vec![0; beam.order()];
         for (i, &dof) in line.iter().enumerate() {
             line_index[dof] = i;
         }
         let flexibility = if nc == 0 {
-            Vec::new()
+            LineFlexibility::Dense {
+                order: 0,
+                values: Vec::new(),
+            }
         } else {
-            line_flexibility(effective, &line, nm.weight())?
+            line_flexibility::form(
+                effective,
+                &line,
+                positions.as_deref().filter(|_| !dense),
+                nm.weight(),
+            )?
         };
         Ok(Self {
             states: (0..model.vehicles.len())
                 .map(|v| VehicleState::at_rest(model, v))
                 .collect(),
             line_index,
-            line_dofs: line.len(),
             flexibility,
             points: vec![LinePoint::default(); nc],
             line_points: vec![[0; POINT_DOFS]; nc],
@@ -152,47 +156,11 @@ impl DirectContacts {
     pub fn count(&self) -> usize {
         self.contacts.len()
     }
-}
 
-/// Z = w K̂⁻¹ on the deck line's DOFs `line` (n_R × n_R column-major,
-/// m/N): n_R solves with K̂'s factor, [`SOLVE_BLOCK`] columns at a time.
-fn line_flexibility(
-    effective: &Factor,
-    line: &[usize],
-    weight: f64,
-) -> Result<Vec<f64>, SolveError> {
-    let (n, nr) = (effective.order(), line.len());
-    if nr > MAX_LINE_DOFS {
-        return Err(refused(format!(
-            "the deck line has {nr} DOFs; its contact flexibility is kept densely up to {MAX_LINE_DOFS}"
-        )));
+    /// The banded flexibility's half-width along the line, m (`None`: dense).
+    pub fn band(&self) -> Option<f64> {
+        self.flexibility.band()
     }
-    let memory = || refused("the contact flexibility does not fit in memory".into());
-    let mut workspace = effective
-        .block_workspace(SOLVE_BLOCK)
-        .map_err(|_| memory())?;
-    let mut flexibility = Vec::new();
-    flexibility
-        .try_reserve_exact(nr * nr)
-        .map_err(|_| memory())?;
-    flexibility.resize(nr * nr, 0.0);
-    let mut block = vec![0.0; n * SOLVE_BLOCK];
-    for first in (0..nr).step_by(SOLVE_BLOCK) {
-        let width = SOLVE_BLOCK.min(nr - first);
-        block.fill(0.0);
-        for k in 0..width {
-            block[k * n + line[first + k]] = 1.0;
-        }
-        let rhs = MatMut::from_column_major_slice_mut(&mut block[..n * width], n, width);
-        effective.solve_block_in_place(rhs, &mut workspace);
-        for k in 0..width {
-            let column = &mut flexibility[(first + k) * nr..(first + k + 1) * nr];
-            for (i, &dof) in line.iter().enumerate() {
-                column[i] = weight * block[k * n + dof];
-            }
-        }
-    }
-    Ok(flexibility)
 }
 
 impl DirectContacts {
@@ -291,7 +259,7 @@ impl DirectContacts {
     ///
     /// [`SolveError::SingularContact`] if the condensed system is singular.
     pub fn solve(&mut self, t: f64) -> Result<(), SolveError> {
-        let (nc, nr) = (self.count(), self.line_dofs);
+        let nc = self.count();
         for c in 0..nc {
             for d in 0..nc {
                 let mut sums = [0.0; 3];
@@ -300,9 +268,8 @@ impl DirectContacts {
                     if weight == 0.0 {
                         continue;
                     }
-                    let column = &self.flexibility[j * nr..(j + 1) * nr];
                     for (a, &i) in self.line_points[c].iter().enumerate() {
-                        let z = column[i] * weight;
+                        let z = self.flexibility.get(i, j) * weight;
                         for k in 0..3 {
                             sums[k] += self.rows[c][k][a] * z;
                         }

@@ -35,7 +35,8 @@
 //! **Errors.** [`SolveError::Direct`] for a 3D beam or a plate, damping
 //! that is not Rayleigh's (a nonzero modal ratio, a damping matrix file),
 //! a matrix that cannot be factorised, or a deck
-//! line too long for the contacts' dense flexibility
+//! line too long for the contacts' flexibility (dense, or banded where it
+//! decays along a track: [`line_flexibility`])
 //! ([`contact::MAX_LINE_DOFS`]); [`SolveError::SingularContact`] as the
 //! coupled method's.
 //!
@@ -62,6 +63,7 @@
 
 pub mod assembled;
 pub mod contact;
+pub mod line_flexibility;
 pub mod step;
 
 use self::assembled::{AssembledBridge, LinePoint};
@@ -110,6 +112,21 @@ impl<'a> Direct<'a> {
     ///
     /// [`SolveError::Direct`]: see the module doc.
     pub fn new(model: &'a Model) -> Result<Self, SolveError> {
+        Self::with_contact_form(model, false)
+    }
+
+    /// [`Self::new`] with the contacts' flexibility formed densely whatever
+    /// its decay along the track: the reference the banded form
+    /// ([`line_flexibility`]) is checked against.
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::new`], and above [`contact::MAX_LINE_DOFS`] line DOFs.
+    pub fn with_dense_contacts(model: &'a Model) -> Result<Self, SolveError> {
+        Self::with_contact_form(model, true)
+    }
+
+    fn with_contact_form(model: &'a Model, dense: bool) -> Result<Self, SolveError> {
         let assembled = AssembledBridge::of(&model.bridge)?;
         let nm = Newmark::new(model.beta, model.gamma, model.alpha, model.time_step);
         let bridge = DirectStep::new(&assembled, &nm)?;
@@ -119,7 +136,8 @@ impl<'a> Direct<'a> {
                 loads.push((flat, load));
             }
         }
-        let contacts = DirectContacts::new(model, &assembled, &nm, bridge.effective_factor())?;
+        let contacts =
+            DirectContacts::new(model, &assembled, &nm, bridge.effective_factor(), dense)?;
         let projection = mass_times_modes(&model.bridge, &assembled)?;
         let ground_inertia = [Vertical, Lateral].map(|direction| {
             let moves = model.ground.as_ref().is_some_and(|g| match direction {
@@ -198,6 +216,13 @@ impl<'a> Direct<'a> {
     /// Each flattened wheel's position after the last step, m.
     pub fn wheel_positions(&self) -> &[f64] {
         &self.wheel_positions
+    }
+
+    /// The half-width along the line (m) of the contacts' banded
+    /// flexibility ([`line_flexibility`]), `None` when it is dense (or there
+    /// are no contacts).
+    pub fn contact_band(&self) -> Option<f64> {
+        self.contacts.band()
     }
 
     /// The deck's deflection at `x` (m, upward positive) after the last step.
