@@ -83,6 +83,11 @@ pub(super) fn ground_terms(
             (vertical, lateral) = (v, l);
         }
     }
+    if probe.reads_nodal() {
+        // A direct run's nodal reading is exact in space: no mode is left
+        // out, so no static share is added (the absolute term remains).
+        (vertical, lateral) = (0.0, 0.0);
+    }
     Ok((vertical, lateral, absolute))
 }
 

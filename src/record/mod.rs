@@ -27,7 +27,7 @@ use self::ground::GroundTerm;
 use self::probe::{ColumnStatics, DafProbe, Probe};
 use crate::bridge::BridgeError;
 use crate::model::Model;
-use crate::scene::{Envelopes, Quantity};
+use crate::scene::{Envelopes, Quantity, Record};
 
 /// What the summary reports as "position" of an extreme value: the position
 /// of a wheel (its vehicle's front axle minus its offset) at that time.
@@ -70,6 +70,21 @@ pub fn unit_of(quantity: Quantity) -> &'static str {
         Quantity::BridgeAcceleration | Quantity::VehicleAcceleration => "m/s^2",
         Quantity::BridgeMoment => "N*m",
         Quantity::BridgeShear | Quantity::BridgeReaction | Quantity::ContactForce => "N",
+    }
+}
+
+/// Whether a direct run (`solver.method: direct`) records `record` from
+/// its nodal state, N(x)ᵀu on the assembled free DOFs, exact in space
+/// whatever the modes kept ([`crate::solve::StepView::nodal`]), rather than
+/// from the projection of that state onto the kept modes: every bridge
+/// displacement and acceleration except an acceleration filtered at
+/// `max_frequency` (a modal low-pass: it keeps the projection). Vehicle and
+/// contact records are the direct solution's own either way.
+pub fn reads_nodal_state(record: &Record) -> bool {
+    match record.quantity {
+        Quantity::BridgeDisplacement => true,
+        Quantity::BridgeAcceleration => record.max_frequency.is_none(),
+        _ => false,
     }
 }
 

@@ -10,12 +10,17 @@ use super::probe::{
 use super::{Column, Flight, GirderDaf, History, PositionRef, Recorder, WheelSeparation};
 use crate::bridge::BridgeError;
 use crate::model::Model;
-use crate::scene::{Quantity, Record};
+use crate::scene::{Quantity, Record, SolverMethod};
+use crate::solve::direct::assembled::{AssembledBridge, LinePoint};
 
 impl<'m> Recorder<'m> {
     /// Prepares the probes of `records` (already validated against the model).
     pub fn new(model: &'m Model, records: &[Record]) -> Result<Self, BridgeError> {
         let modes = model.bridge.mode_count();
+        // A direct run's bridge records read its nodal state (issue 43.1):
+        // the assembled bridge's interpolation N at each record's point.
+        let assembled = nodal_bridge(model);
+        let assembled = assembled.as_ref();
         // Preallocate at most a million samples per column: the step count
         // comes from the input, and the budgets bound what a run may record,
         // but a history larger than that grows as it is recorded rather than
@@ -34,6 +39,9 @@ impl<'m> Recorder<'m> {
                     let x = record.x.unwrap_or(0.0);
                     let y = record.y.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
+                    // A direct run's nodal interpolation of the point (or
+                    // the DOF), when the record can read it.
+                    let nodal = assembled.filter(|_| super::reads_nodal_state(record));
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
@@ -51,9 +59,13 @@ impl<'m> Recorder<'m> {
                         } else {
                             (shape, "m")
                         };
+                        let nodal = nodal.map(|bridge| {
+                            bridge.point_in(crate::contact::ContactDirection::Lateral, x, y)
+                        });
                         let probe = Probe::Lateral {
                             shape,
                             acceleration,
+                            nodal,
                         };
                         let (ground_static, lateral_static, absolute) =
                             ground_terms(model, record, &probe)?;
@@ -88,6 +100,10 @@ impl<'m> Recorder<'m> {
                             None
                         }
                     };
+                    let nodal = nodal.map(|bridge| match dof {
+                        Some(dof) => LinePoint::of_dof(dof),
+                        None => bridge.point_in(crate::contact::ContactDirection::Vertical, x, y),
+                    });
                     if record.quantity == Quantity::BridgeDisplacement {
                         let statics = match dof {
                             Some(dof) => StaticProbe::of_dof(model, dof)?,
@@ -98,11 +114,12 @@ impl<'m> Recorder<'m> {
                             shape,
                             statics,
                             static_shape,
+                            nodal,
                         };
                         (probe, "m", lead)
                     } else {
                         let shape = filtered_shape(model, &shape, record.max_frequency);
-                        (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
+                        (Probe::BridgeAcceleration { shape, nodal }, "m/s^2", lead)
                     }
                 }
                 Quantity::BridgeMoment if record.component.is_some() => {
@@ -286,6 +303,9 @@ impl<'m> Recorder<'m> {
                     static_shape: static_shape(model, &shape),
                     shape,
                     statics: StaticProbe::new(model, x, y)?,
+                    nodal: assembled.map(|bridge| {
+                        bridge.point_in(crate::contact::ContactDirection::Vertical, x, y)
+                    }),
                 });
             }
         }
@@ -341,4 +361,13 @@ impl<'m> Recorder<'m> {
             spill: None,
         })
     }
+}
+
+/// The assembled bridge of a direct run (its records read the nodal
+/// state, [`super::reads_nodal_state`]); `None` for a modal method.
+fn nodal_bridge(model: &Model) -> Option<AssembledBridge<'_>> {
+    if model.method != SolverMethod::Direct {
+        return None;
+    }
+    AssembledBridge::of(&model.bridge).ok()
 }

@@ -138,7 +138,7 @@ fn direct_records_on_kept_modes(scenario: &Scenario, summary: &Summary) -> Optio
     let mut names: Vec<String> = scenario
         .record
         .iter()
-        .filter(|r| is_bridge_quantity(r.quantity))
+        .filter(|r| is_bridge_quantity(r.quantity) && !crate::record::reads_nodal_state(r))
         .map(|r| format!("`{}`", r.name))
         .collect();
     if scenario.envelopes.is_some() {

@@ -262,8 +262,9 @@ impl Stepper for Direct<'_> {
     }
 
     fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
-        // The records read modal coordinates: the nodal state's projection
-        // onto the kept modes (the module doc's "Records").
+        // The bridge records read the nodal state; the modal coordinates are
+        // its projection onto the kept modes, for the records that still
+        // read modes (the module doc's "Records").
         StepView {
             step,
             time: t,
@@ -274,6 +275,11 @@ impl Stepper for Direct<'_> {
             contact_gaps: &self.contact_gaps,
             wheel_positions: &self.wheel_positions,
             wheel_modes: None,
+            nodal: Some(super::NodalState {
+                displacement: &self.bridge.displacement,
+                velocity: &self.bridge.velocity,
+                acceleration: &self.bridge.acceleration,
+            }),
         }
     }
 }
