@@ -73,18 +73,78 @@ pub fn unit_of(quantity: Quantity) -> &'static str {
     }
 }
 
-/// Whether a direct run (`solver.method: direct`) records `record` from
-/// its nodal state, N(x)ᵀu on the assembled free DOFs, exact in space
-/// whatever the modes kept ([`crate::solve::StepView::nodal`]), rather than
-/// from the projection of that state onto the kept modes: every bridge
-/// displacement and acceleration except an acceleration filtered at
-/// `max_frequency` (a modal low-pass: it keeps the projection). Vehicle and
-/// contact records are the direct solution's own either way.
-pub fn reads_nodal_state(record: &Record) -> bool {
+/// The modes a run keeps, as [`direct_reading`] weighs them: their
+/// natural frequencies (Hz, ascending: the lowest of the model), the
+/// model's own mode count, and the plan's count of the modes up to the
+/// highest deck-acceleration filter when the kept modes stop below it
+/// ([`crate::bridge::AccelerationFilter`]).
+#[derive(Debug, Clone, Copy)]
+pub struct KeptModes<'a> {
+    /// Kept natural frequencies, Hz.
+    pub frequencies: &'a [f64],
+    /// The model's modes (its free DOFs).
+    pub available: usize,
+    /// The modes up to the acceleration filter, when more than are kept.
+    pub filter: Option<crate::bridge::AccelerationFilter>,
+}
+
+impl KeptModes<'_> {
+    /// Whether every mode of the model up to `cut` Hz is kept (the kept
+    /// modes are the lowest): all of them, or the cut within the kept top
+    /// (1e-8 relative, [`crate::bridge::CUT_OFF_TOLERANCE`]), or no mode
+    /// counted between the kept top and the highest filter.
+    fn hold_up_to(&self, cut: f64) -> bool {
+        let top = self.frequencies.last().copied().unwrap_or(0.0);
+        self.frequencies.len() >= self.available
+            || cut <= top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE)
+            || self.filter.is_none()
+    }
+
+    /// Whether a filter at `cut` Hz passes every mode of the model.
+    fn pass_all_at(&self, cut: f64) -> bool {
+        let top = self.frequencies.last().copied().unwrap_or(0.0);
+        let tolerance = 1.0 - crate::bridge::CUT_OFF_TOLERANCE;
+        (self.frequencies.len() >= self.available && cut >= top * tolerance)
+            || self
+                .filter
+                .is_some_and(|f| f.modes >= self.available && cut >= f.max_frequency * tolerance)
+    }
+}
+
+/// How a direct run (`solver.method: direct`) reads a bridge record.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DirectReading {
+    /// From the nodal state on the assembled free DOFs
+    /// ([`crate::solve::StepView::nodal`]): N(x)ᵀu, N(x)ᵀü, exact in space
+    /// whatever the modes kept, with no static correction.
+    Nodal,
+    /// From the nodal state's projection onto the kept modes, q = ΦᵀMu,
+    /// which holds every mode the record sums: a deck acceleration filtered
+    /// at `max_frequency` (EN 1990 A2.4.4.2.1(4): the modes up to the
+    /// filter, Σ φᵢ(x)φᵢᵀMü) with each of them kept. Exact in space too.
+    Filtered,
+    /// From that projection, but the record needs modes that are not kept:
+    /// it carries their truncation as a modal run's would (the
+    /// `direct-records-on-kept-modes` warning names it).
+    Truncated,
+}
+
+/// How a direct run reads `record` with `modes` kept: bridge displacements
+/// nodally; a deck acceleration nodally when its filter passes every mode
+/// of the model, else filtered on the kept modes (exact when they hold
+/// every mode up to the filter); any other bridge record still on the kept
+/// modes. Vehicle and contact records are the direct solution's own
+/// whatever this says.
+pub fn direct_reading(record: &Record, modes: &KeptModes<'_>) -> DirectReading {
     match record.quantity {
-        Quantity::BridgeDisplacement => true,
-        Quantity::BridgeAcceleration => record.max_frequency.is_none(),
-        _ => false,
+        Quantity::BridgeDisplacement => DirectReading::Nodal,
+        Quantity::BridgeAcceleration => match record.max_frequency {
+            None => DirectReading::Nodal,
+            Some(cut) if modes.pass_all_at(cut) => DirectReading::Nodal,
+            Some(cut) if modes.hold_up_to(cut) => DirectReading::Filtered,
+            Some(_) => DirectReading::Truncated,
+        },
+        _ => DirectReading::Truncated,
     }
 }
 

@@ -21,6 +21,12 @@ impl<'m> Recorder<'m> {
         // the assembled bridge's interpolation N at each record's point.
         let assembled = nodal_bridge(model);
         let assembled = assembled.as_ref();
+        let frequencies = model.bridge.frequencies();
+        let kept = super::KeptModes {
+            frequencies: &frequencies,
+            available: model.bridge.available_modes,
+            filter: model.bridge.acceleration_filter,
+        };
         // Preallocate at most a million samples per column: the step count
         // comes from the input, and the budgets bound what a run may record,
         // but a history larger than that grows as it is recorded rather than
@@ -41,7 +47,9 @@ impl<'m> Recorder<'m> {
                     let mut shape = vec![0.0; modes];
                     // A direct run's nodal interpolation of the point (or
                     // the DOF), when the record can read it.
-                    let nodal = assembled.filter(|_| super::reads_nodal_state(record));
+                    let nodal = assembled.filter(|_| {
+                        super::direct_reading(record, &kept) == super::DirectReading::Nodal
+                    });
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
@@ -364,7 +372,7 @@ impl<'m> Recorder<'m> {
 }
 
 /// The assembled bridge of a direct run (its records read the nodal
-/// state, [`super::reads_nodal_state`]); `None` for a modal method.
+/// state, [`super::direct_reading`]); `None` for a modal method.
 fn nodal_bridge(model: &Model) -> Option<AssembledBridge<'_>> {
     if model.method != SolverMethod::Direct {
         return None;

@@ -4,6 +4,7 @@
 //! ([`crate::plan::advice::scene_advice`]); only the front ends print it.
 
 use crate::advice::{self, Advice};
+use crate::record::DirectReading;
 use crate::report::summary::Summary;
 use crate::scene::{Quantity, Scenario, SolverMethod, Surface};
 
@@ -135,10 +136,18 @@ fn direct_records_on_kept_modes(scenario: &Scenario, summary: &Summary) -> Optio
     if scenario.solver.method != SolverMethod::Direct || run.modes_used >= run.modes_available {
         return None;
     }
+    let kept = crate::record::KeptModes {
+        frequencies: &run.frequencies,
+        available: run.modes_available,
+        filter: run.modes_to_acceleration_filter,
+    };
     let mut names: Vec<String> = scenario
         .record
         .iter()
-        .filter(|r| is_bridge_quantity(r.quantity) && !crate::record::reads_nodal_state(r))
+        .filter(|r| {
+            is_bridge_quantity(r.quantity)
+                && crate::record::direct_reading(r, &kept) == DirectReading::Truncated
+        })
         .map(|r| format!("`{}`", r.name))
         .collect();
     if scenario.envelopes.is_some() {
