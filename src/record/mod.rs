@@ -129,15 +129,20 @@ pub enum DirectReading {
     Truncated,
 }
 
-/// How a direct run reads `record` with `modes` kept: bridge displacements
-/// nodally; a deck acceleration nodally when its filter passes every mode
+/// How a direct run reads `record` with `modes` kept: bridge
+/// displacements, a beam's moments, shears and reactions and an imported
+/// model's support reactions nodally; a deck acceleration nodally when its filter passes every mode
 /// of the model, else filtered on the kept modes (exact when they hold
-/// every mode up to the filter); any other bridge record still on the kept
-/// modes. Vehicle and contact records are the direct solution's own
+/// every mode up to the filter). Vehicle and contact records are the direct solution's own
 /// whatever this says.
 pub fn direct_reading(record: &Record, modes: &KeptModes<'_>) -> DirectReading {
     match record.quantity {
-        Quantity::BridgeDisplacement => DirectReading::Nodal,
+        Quantity::BridgeDisplacement | Quantity::BridgeMoment | Quantity::BridgeShear => {
+            DirectReading::Nodal
+        }
+        // A beam's support (its shear jump), an imported model's
+        // constrained DOF (its rows of K and M).
+        Quantity::BridgeReaction => DirectReading::Nodal,
         Quantity::BridgeAcceleration => match record.max_frequency {
             None => DirectReading::Nodal,
             Some(cut) if modes.pass_all_at(cut) => DirectReading::Nodal,

@@ -258,7 +258,11 @@ impl Observer for Recorder<'_> {
                 // load at its current position, full stiffness, exact
                 // section forces): the reference of the dynamic factor, as
                 // for displacements (issue 40.1).
-                Probe::Section { section, shear } => {
+                Probe::Section {
+                    section,
+                    shear,
+                    nodal,
+                } => {
                     let statics = section.static_forces(
                         view.wheel_positions,
                         &model.static_wheel_loads,
@@ -270,19 +274,37 @@ impl Observer for Recorder<'_> {
                         statics.moment
                     };
                     reference = Some(static_value);
-                    let forces = section.forces(&section_loads, model.bridge.static_correction);
+                    let forces = match (nodal, &view.nodal) {
+                        (Some(nodal), Some(state)) => nodal.forces(
+                            section,
+                            state,
+                            view.wheel_positions,
+                            view.contact_forces,
+                            on_deck,
+                        ),
+                        _ => section.forces(&section_loads, model.bridge.static_correction),
+                    };
                     if *shear { forces.shear } else { forces.moment }
                 }
-                Probe::Reaction { probe } => {
+                Probe::Reaction { probe, nodal } => {
                     let static_value = probe.static_reaction(
                         view.wheel_positions,
                         &model.static_wheel_loads,
                         on_deck,
                     );
                     reference = Some(static_value);
-                    probe.reaction(&section_loads, model.bridge.static_correction)
+                    match &view.nodal {
+                        Some(state) if !nodal.is_empty() => probe.nodal_reaction(
+                            nodal,
+                            state,
+                            view.wheel_positions,
+                            view.contact_forces,
+                            on_deck,
+                        ),
+                        _ => probe.reaction(&section_loads, model.bridge.static_correction),
+                    }
                 }
-                Probe::SupportReaction { reaction } => {
+                Probe::SupportReaction { reaction, nodal } => {
                     let static_value = reaction.static_reaction(
                         view.wheel_positions,
                         &model.wheel_y,
@@ -290,7 +312,17 @@ impl Observer for Recorder<'_> {
                         on_deck,
                     );
                     reference = Some(static_value);
-                    if model.bridge.static_correction {
+                    if let (Some(damping), Some(state)) = (nodal, &view.nodal) {
+                        // The rows on the nodal state, and the load standing
+                        // on the support.
+                        reaction.nodal_reaction(state, *damping)
+                            + reaction.direct_load(
+                                view.wheel_positions,
+                                &model.wheel_y,
+                                view.contact_forces,
+                                on_deck,
+                            )
+                    } else if model.bridge.static_correction {
                         // The mode-acceleration form: exact statics plus
                         // the modes' dynamic share (reaction module doc).
                         reaction.static_reaction(

@@ -37,6 +37,11 @@ impl<'m> Recorder<'m> {
             offset: 0.0,
             wheel: None,
         };
+        // The assembled bridge when a direct run reads `record` nodally.
+        let nodal_for = |record: &Record| {
+            assembled
+                .filter(|_| super::direct_reading(record, &kept) == super::DirectReading::Nodal)
+        };
         let mut columns = Vec::with_capacity(records.len());
         for record in records {
             let vehicle = record.vehicle.map_or(0, |v| v - 1);
@@ -47,9 +52,7 @@ impl<'m> Recorder<'m> {
                     let mut shape = vec![0.0; modes];
                     // A direct run's nodal interpolation of the point (or
                     // the DOF), when the record can read it.
-                    let nodal = assembled.filter(|_| {
-                        super::direct_reading(record, &kept) == super::DirectReading::Nodal
-                    });
+                    let nodal = nodal_for(record);
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
@@ -153,9 +156,13 @@ impl<'m> Recorder<'m> {
                         .expect("moments and shears on a plate were refused when resolving");
                     let shear = record.quantity == Quantity::BridgeShear;
                     let unit = if shear { "N" } else { "N*m" };
+                    let nodal = nodal_for(record)
+                        .and_then(|_| model.bridge.nodal_section(&section))
+                        .map(Box::new);
                     let probe = Probe::Section {
                         section: Box::new(section),
                         shear,
+                        nodal,
                     };
                     (probe, unit, lead)
                 }
@@ -169,6 +176,7 @@ impl<'m> Recorder<'m> {
                     let unit = if direction.is_rotation() { "N*m" } else { "N" };
                     let probe = Probe::SupportReaction {
                         reaction: Box::new(reaction),
+                        nodal: nodal_for(record).and(model.bridge.rayleigh_damping),
                     };
                     (probe, unit, lead)
                 }
@@ -189,8 +197,17 @@ impl<'m> Recorder<'m> {
                         .bridge
                         .reaction_probe(record.x.unwrap_or(0.0))?
                         .expect("reactions on a plate were refused when resolving");
+                    let nodal = nodal_for(record)
+                        .and_then(|_| {
+                            probe
+                                .sides()
+                                .map(|(_, side)| model.bridge.nodal_section(side))
+                                .collect::<Option<Vec<_>>>()
+                        })
+                        .unwrap_or_default();
                     let probe = Probe::Reaction {
                         probe: Box::new(probe),
+                        nodal,
                     };
                     (probe, "N", lead)
                 }

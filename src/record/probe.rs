@@ -6,7 +6,7 @@
 use super::GirderDaf;
 use crate::bridge::BridgeError;
 use crate::bridge::InfluenceLine;
-use crate::bridge::section::SectionProbe;
+use crate::bridge::section::{NodalSection, SectionProbe};
 use crate::model::Model;
 use crate::solve::StepView;
 use crate::solve::direct::assembled::LinePoint;
@@ -50,20 +50,29 @@ pub(super) enum Probe {
         line_of: Vec<usize>,
     },
     /// Bending moment (or, with `shear`, shear force) of a beam section.
+    /// With `nodal`, from a direct run's nodal state ([`NodalSection`]).
     Section {
         section: Box<SectionProbe>,
         shear: bool,
+        nodal: Option<Box<NodalSection>>,
     },
     /// A beam support's vertical reaction at `x`, N: the shear on its right
     /// (none at the exit) minus the shear on its left (none at the
     /// entrance), plus the wheels standing exactly on it.
+    /// With `nodal` (one per side, [`ReactionProbe::sides`]' order), from a
+    /// direct run's nodal state: the support's row of the equations of
+    /// motion.
     Reaction {
         probe: Box<crate::bridge::section::ReactionProbe>,
+        nodal: Vec<NodalSection>,
     },
     /// An imported model's support reaction at a constrained DOF, N (or
     /// N·m): read from its rows of K and M ([`crate::bridge::fe_import::reaction`]).
+    /// With `nodal` (the Rayleigh coefficients c_M 1/s, c_K s), from a
+    /// direct run's nodal state: its rows applied to it.
     SupportReaction {
         reaction: Box<crate::bridge::fe_import::reaction::SupportReaction>,
+        nodal: Option<(f64, f64)>,
     },
     /// A plate deck's line reaction at a support, N; `line_of[w]` is the
     /// probe's influence line of flattened wheel w.
@@ -88,6 +97,9 @@ impl Probe {
             Self::BridgeDisplacement { nodal, .. }
             | Self::BridgeAcceleration { nodal, .. }
             | Self::Lateral { nodal, .. } => nodal.is_some(),
+            Self::Section { nodal, .. } => nodal.is_some(),
+            Self::Reaction { nodal, .. } => !nodal.is_empty(),
+            Self::SupportReaction { nodal, .. } => nodal.is_some(),
             _ => false,
         }
     }
