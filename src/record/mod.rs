@@ -112,7 +112,7 @@ impl KeptModes<'_> {
 }
 
 /// How a direct run (`solver.method: direct`) reads a bridge record.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum DirectReading {
     /// From the nodal state on the assembled free DOFs
     /// ([`crate::solve::StepView::nodal`]): N(x)ᵀu, N(x)ᵀü, exact in space
@@ -143,13 +143,37 @@ pub fn direct_reading(record: &Record, modes: &KeptModes<'_>) -> DirectReading {
         // A beam's support (its shear jump), an imported model's
         // constrained DOF (its rows of K and M).
         Quantity::BridgeReaction => DirectReading::Nodal,
-        Quantity::BridgeAcceleration => match record.max_frequency {
-            None => DirectReading::Nodal,
-            Some(cut) if modes.pass_all_at(cut) => DirectReading::Nodal,
-            Some(cut) if modes.hold_up_to(cut) => DirectReading::Filtered,
-            Some(_) => DirectReading::Truncated,
-        },
-        _ => DirectReading::Truncated,
+        Quantity::BridgeAcceleration => acceleration_reading(record.max_frequency, modes),
+        // The direct solution's own.
+        Quantity::ContactForce
+        | Quantity::ContactGap
+        | Quantity::VehicleDisplacement
+        | Quantity::VehicleAcceleration => DirectReading::Nodal,
+    }
+}
+
+/// [`direct_reading`] of a deck acceleration filtered at `cut` Hz (`None`:
+/// unfiltered).
+fn acceleration_reading(cut: Option<f64>, modes: &KeptModes<'_>) -> DirectReading {
+    match cut {
+        None => DirectReading::Nodal,
+        Some(cut) if modes.pass_all_at(cut) => DirectReading::Nodal,
+        Some(cut) if modes.hold_up_to(cut) => DirectReading::Filtered,
+        Some(_) => DirectReading::Truncated,
+    }
+}
+
+/// How a direct run reads `quantity` of the envelopes (`max_frequency`
+/// their acceleration filter): as the matching record
+/// ([`direct_reading`]).
+pub fn direct_envelope_reading(
+    quantity: Quantity,
+    max_frequency: Option<f64>,
+    modes: &KeptModes<'_>,
+) -> DirectReading {
+    match quantity {
+        Quantity::BridgeAcceleration => acceleration_reading(max_frequency, modes),
+        _ => DirectReading::Nodal,
     }
 }
 

@@ -334,18 +334,21 @@ impl<'m> Recorder<'m> {
                 });
             }
         }
+        // The mode values at the wheels serve the static correction of the
+        // records that read modes (a direct run's nodal ones have none).
         let corrected = model.bridge.static_correction
-            && (!daf_probes.is_empty()
+            && (daf_probes.iter().any(|p| p.nodal.is_none())
                 || columns.iter().any(|c| {
-                    matches!(
-                        c.probe,
-                        Probe::BridgeDisplacement { .. }
-                            | Probe::Section { .. }
-                            | Probe::Reaction { .. }
-                            | Probe::SupportReaction { .. }
-                            | Probe::PlateReaction { .. }
-                            | Probe::PlateMoment { .. }
-                    )
+                    !c.probe.reads_nodal()
+                        && matches!(
+                            c.probe,
+                            Probe::BridgeDisplacement { .. }
+                                | Probe::Section { .. }
+                                | Probe::Reaction { .. }
+                                | Probe::SupportReaction { .. }
+                                | Probe::PlateReaction { .. }
+                                | Probe::PlateMoment { .. }
+                        )
                 }));
         let wheel_modes = if corrected {
             vec![0.0; model.wheels.len() * modes]
