@@ -229,21 +229,24 @@ pub const RUN_ENDS_AT_PEAK: Kind = Kind {
     example: "a moving force above a beam's critical speed with `free_vibration: 0`",
 };
 
-/// A direct run whose bridge records read fewer modes than the model has.
+/// A direct run whose deck-acceleration filter reaches above its kept modes.
 pub const DIRECT_RECORDS_ON_KEPT_MODES: Kind = Kind {
     id: "direct-records-on-kept-modes",
     severity: Severity::Warning,
-    meaning: "`solver.method: direct` steps the assembled model, exact in space, but the \
-              bridge records (displacements, accelerations, moments, shears, reactions, \
-              envelopes) read its nodal state projected onto the kept modes, and \
-              `bridge.modes` keeps fewer modes than the model has",
-    why: "the vehicle and contact records are the direct solution's own, but each bridge \
-          record carries the truncation of the modes it is projected on (with the static \
-          correction where that is on), as a modal run's would",
-    fix: "keep every mode (`bridge.modes: {count: N}` with N the model's modes) for bridge \
-          records exact in space, or measure the truncation with `vbi converge`",
-    example: "scenarios/yang-yau-sprung-mass.yaml with `solver: {method: direct}` (10 of its \
-              40 modes kept)",
+    meaning: "`solver.method: direct` steps the assembled model, exact in space, and its \
+              bridge records read the nodal state itself (displacements, moments, shears, \
+              reactions, rail records, envelopes), but a deck acceleration filtered at \
+              `max_frequency` sums the modes up to the filter, read from the nodal state \
+              projected onto the kept modes, and the filter lies above the kept modes (below \
+              the model's highest)",
+    why: "that acceleration misses the modes between the kept top and its filter, as a modal \
+          run's would; the other records, the vehicles and the contact forces are exact in \
+          space whatever the modes kept",
+    fix: "keep the modes up to the filter (`bridge.modes: {max_frequency: F}`, or the \
+          automatic choice), or lower the record's `max_frequency` to the kept modes",
+    example: "scenarios/yang-yau-sprung-mass.yaml with `solver: {method: direct}` and a \
+              `bridge_acceleration` with `max_frequency: 1000` (10 of its 40 modes kept, up \
+              to 480 Hz)",
 };
 
 /// Every kind, in the order of the pipeline (scene, plan, run).

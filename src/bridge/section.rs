@@ -64,6 +64,8 @@ pub struct SectionProbe {
     element_start: f64,
     /// Length of the section's element, m.
     element_length: f64,
+    /// The section's element (index along the mesh).
+    element: usize,
     /// The left-hand limit at a node (the element on the left; a load
     /// exactly at the section is not yet passed).
     left: bool,
@@ -157,6 +159,7 @@ impl ModalBridge {
             x,
             element_start: start,
             element_length: h,
+            element,
             left,
             static_modal_moment: per_stiffness(&modal_moment),
             static_modal_shear: per_stiffness(&modal_shear),
@@ -419,5 +422,191 @@ impl ReactionProbe {
             .iter()
             .map(|s| (1.0, s))
             .chain(self.left.iter().map(|s| (-1.0, s)))
+    }
+}
+
+/// A beam section's moment and shear from the nodal state of the assembled
+/// beam (a direct run, [`crate::solve::direct`]): exact in space, no modal
+/// sum and no static correction.
+///
+/// The section's element carries its nodal values and, inside it, the
+/// loads of the equations of motion M ü + C u̇ + K u = F − Mδ üg with
+/// C = c_M M + c_K K: the distributed inertia and mass-proportional damping
+/// −m(ü + c_M u̇ + üg) (upward, consistent with M) and the wheels' point
+/// loads. Its exact solution is the Hermite cubic of the nodal values plus
+/// the clamped–clamped solution of those loads (the module doc), the
+/// stiffness-proportional damping acting with the stiffness (the element's
+/// forces are those of u + c_K u̇, a Kelvin–Voigt material):
+///
+/// M(x) = EI (w + c_K ẇ)″(x) + m ∫₀ʰ (ü + c_M u̇)(a) G_M(s; a) da
+///        + Σ_w P_w G_M(s; a_w) + üg m ∫₀ʰ G_M(s; a) da,
+///
+/// V likewise with w‴ and G_V, w and ü interpolated by the element's
+/// Hermite functions N(a) and G the clamped moment (shear) under a unit
+/// downward load. At the element's ends these are its end forces
+/// Kₑ(uₑ + c_K u̇ₑ) + Mₑ(üₑ + c_M u̇ₑ + δ üg) − Fₑ, so a support's reaction
+/// (the shear jump) is its row of the equations of motion, and the forces
+/// balance the loads and the deck's inertia at every step. With every mode
+/// kept and c_K = 0 this is the modal mode-acceleration form's value (the
+/// modes' inertia load Σ ωⱼ² m φⱼ qⱼ is then m(M⁻¹(F − Cu̇) − ü), the
+/// static correction trading M⁻¹F for the point loads); with c_K ≠ 0 the
+/// modal sum puts the stiffness damping inside the element as the load
+/// c_K m M⁻¹K u̇ where this puts it in the stiffness.
+///
+/// Cost per step O(1) plus the wheels on the deck (those inside the
+/// element add their clamped term); nothing is allocated.
+#[derive(Debug, Clone)]
+pub struct NodalSection {
+    /// Free DOF of each of the element's (wₐ, θₐ, w_b, θ_b), `None` where a
+    /// support holds it.
+    dofs: [Option<usize>; 4],
+    /// EI B(x) and EI B‴ (N·m and N per unit DOF).
+    moment: [f64; 4],
+    shear: [f64; 4],
+    /// m ∫ Nₖ(a) G(s; a) da for the moment (kg·m) and the shear (kg).
+    moment_inertia: [f64; 4],
+    shear_inertia: [f64; 4],
+    /// Rayleigh coefficients (c_M 1/s, c_K s).
+    damping: (f64, f64),
+    /// The section forces per unit upward ground acceleration,
+    /// m ∫ G(s; a) da (N·m and N per m/s²).
+    pub ground: SectionForces,
+}
+
+impl ModalBridge {
+    /// The nodal form of `section` ([`NodalSection`]) on this plane beam
+    /// with its Rayleigh damping; `None` on any other bridge, or damping
+    /// that no C = c_M M + c_K K stands for. Cost O(1).
+    pub fn nodal_section(&self, section: &SectionProbe) -> Option<NodalSection> {
+        let model = self.beam_model()?;
+        let damping = self.rayleigh_damping?;
+        let e = section.element;
+        let h = section.element_length;
+        let s = section.x - section.element_start;
+        let xi = (s / h).clamp(0.0, 1.0);
+        let ei = model.bending_stiffness;
+        let m = model.mass_per_length;
+        let (moment_inertia, shear_inertia) = clamped_shape_integrals(s, h);
+        let dofs = std::array::from_fn(|a| model.free_index[2 * e + a]);
+        let ground = SectionForces {
+            moment: m * (moment_inertia[0] + moment_inertia[2]),
+            shear: m * (shear_inertia[0] + shear_inertia[2]),
+        };
+        Some(NodalSection {
+            dofs,
+            moment: shape_curvatures(xi, h).map(|b| ei * b),
+            shear: shape_thirds(h).map(|b| ei * b),
+            moment_inertia: moment_inertia.map(|v| m * v),
+            shear_inertia: shear_inertia.map(|v| m * v),
+            damping,
+            ground,
+        })
+    }
+}
+
+/// ∫₀ʰ Nₖ(a) G(s; a) da of the element's four Hermite functions against
+/// the clamped moment and shear kernels at `s` (m) of an element of length
+/// `h` (m) ([`clamped_unit_load`]), by four-point Gauss–Legendre on each
+/// side of s (exact: degree 6 on each side), as the modal forces'
+/// ([`consistent_modal_forces`]): m·m and m.
+fn clamped_shape_integrals(s: f64, h: f64) -> ([f64; 4], [f64; 4]) {
+    let left_side = s >= h;
+    let (mut moment, mut shear) = ([0.0; 4], [0.0; 4]);
+    for (from, to) in [(0.0, s), (s, h)] {
+        let length = to - from;
+        if length <= 0.0 {
+            continue;
+        }
+        for (g, w) in GAUSS4 {
+            let a = from + g * length;
+            let (n, _) = shape_functions(a / h, h);
+            let (gm, gv) = clamped_unit_load(s, a, h, left_side);
+            for k in 0..4 {
+                moment[k] += w * length * n[k] * gm;
+                shear[k] += w * length * n[k] * gv;
+            }
+        }
+    }
+    (moment, shear)
+}
+
+impl NodalSection {
+    /// The moment and shear of `section` this step from the nodal state
+    /// `state` and the wheel forces `forces` (N, downward) at `positions`
+    /// (m) of the wheels `on_deck`, without the ground's share
+    /// ([`Self::ground`], per unit ground acceleration). Cost O(1) + the
+    /// wheels on the deck.
+    pub fn forces(
+        &self,
+        section: &SectionProbe,
+        state: &crate::solve::NodalState<'_>,
+        positions: &[f64],
+        forces: &[f64],
+        on_deck: &[usize],
+    ) -> SectionForces {
+        let (c_m, c_k) = self.damping;
+        let (mut moment, mut shear) = (0.0, 0.0);
+        for (k, dof) in self.dofs.iter().enumerate() {
+            let Some(i) = *dof else { continue };
+            let elastic = state.displacement[i] + c_k * state.velocity[i];
+            let inertia = state.acceleration[i] + c_m * state.velocity[i];
+            moment += self.moment[k] * elastic + self.moment_inertia[k] * inertia;
+            shear += self.shear[k] * elastic + self.shear_inertia[k] * inertia;
+        }
+        let loads = section.element_loads(positions, forces, on_deck);
+        SectionForces {
+            moment: moment + loads.moment,
+            shear: shear + loads.shear,
+        }
+    }
+}
+
+impl SectionProbe {
+    /// The clamped–clamped section forces of the downward point forces
+    /// `forces` (N) of the wheels `on_deck` at `positions` (m) inside the
+    /// section's element (the share [`Self::static_forces`] adds to its
+    /// influence lines). Cost O(wheels on the deck).
+    pub fn element_loads(
+        &self,
+        positions: &[f64],
+        forces: &[f64],
+        on_deck: &[usize],
+    ) -> SectionForces {
+        let (mut moment, mut shear) = (0.0, 0.0);
+        let h = self.element_length;
+        let s = self.x - self.element_start;
+        for &w in on_deck {
+            let a = positions[w] - self.element_start;
+            if (0.0..=h).contains(&a) {
+                let (m, v) = clamped_unit_load(s, a, h, self.left);
+                moment += forces[w] * m;
+                shear += forces[w] * v;
+            }
+        }
+        SectionForces { moment, shear }
+    }
+}
+
+impl ReactionProbe {
+    /// The reaction from the nodal sections `nodal` of [`Self::sides`]
+    /// (in that order) and the nodal state: the shear jump plus the loads
+    /// standing on the support, without the ground's share (N). Cost O(1)
+    /// + the wheels on the deck.
+    pub fn nodal_reaction(
+        &self,
+        nodal: &[NodalSection],
+        state: &crate::solve::NodalState<'_>,
+        positions: &[f64],
+        forces: &[f64],
+        on_deck: &[usize],
+    ) -> f64 {
+        let jump: f64 = self
+            .sides()
+            .zip(nodal)
+            .map(|((sign, section), n)| {
+                sign * n.forces(section, state, positions, forces, on_deck).shear
+            })
+            .sum();
+        jump + self.on_support(positions, forces, on_deck)
     }
 }

@@ -33,10 +33,11 @@ use super::unit_of;
 use crate::bridge::BridgeError;
 use crate::bridge::InfluenceLine;
 use crate::bridge::hermite::HermiteField;
-use crate::bridge::section::{SectionLoads, SectionProbe, Side};
+use crate::bridge::section::{NodalSection, SectionForces, SectionLoads, SectionProbe, Side};
 use crate::model::Model;
 use crate::scene::{Envelopes, Quantity};
-use crate::solve::StepView;
+use crate::solve::direct::assembled::{AssembledBridge, LinePoint};
+use crate::solve::{NodalState, StepView};
 
 /// The extremes of one quantity at one point.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -158,6 +159,11 @@ struct PointProbe {
     static_shape: Vec<f64>,
     acceleration_shape: Vec<f64>,
     section: Option<SectionProbe>,
+    /// A direct run's nodal readings ([`super::direct_envelope_reading`]):
+    /// N(x) of the deflection (for the displacement, and the acceleration
+    /// when it reads nodally) and the section's nodal form.
+    nodal_point: Option<LinePoint>,
+    nodal_section: Option<NodalSection>,
 }
 
 /// Tracks the envelopes during the run.
@@ -180,6 +186,10 @@ pub(super) struct EnvelopeTracker {
     /// from stacked lines and accelerations, no section), so that the
     /// columns are tracked from them alone.
     from_sums: bool,
+    /// A direct run's envelopes of displacement and of acceleration that
+    /// read the nodal state (the sections do where they have a nodal form).
+    nodal_displacement: bool,
+    nodal_acceleration: bool,
 }
 
 /// `extremes` updated with this step's `values`, one per point (pushed at
@@ -360,6 +370,64 @@ impl DeckSums {
                 }
             }
         }
+    }
+}
+
+/// A direct run's envelopes ([`super::direct_envelope_reading`]): the
+/// assembled bridge when its sections read the nodal state, and whether
+/// the displacement and the acceleration do; nothing for a modal method.
+fn nodal_envelopes<'m>(
+    model: &'m Model,
+    envelopes: &Envelopes,
+) -> (Option<AssembledBridge<'m>>, bool, bool) {
+    if model.method != crate::scene::SolverMethod::Direct {
+        return (None, false, false);
+    }
+    let Ok(bridge) = AssembledBridge::of(&model.bridge) else {
+        return (None, false, false);
+    };
+    let frequencies = model.bridge.frequencies();
+    let kept = super::KeptModes {
+        frequencies: &frequencies,
+        available: model.bridge.available_modes,
+        filter: model.bridge.acceleration_filter,
+    };
+    let nodal = |quantity| {
+        envelopes.quantities.contains(&quantity)
+            && super::direct_envelope_reading(quantity, envelopes.max_frequency, &kept)
+                == super::DirectReading::Nodal
+    };
+    let (displacement, acceleration) = (
+        nodal(Quantity::BridgeDisplacement),
+        nodal(Quantity::BridgeAcceleration),
+    );
+    (Some(bridge), displacement, acceleration)
+}
+
+/// A section's forces from the nodal state, with the ground's inertia
+/// share at `ground` (the vertical ground acceleration, m/s², under ground
+/// motion) as the matching record adds it.
+fn nodal_forces(
+    nodal: &NodalSection,
+    section: &SectionProbe,
+    state: &NodalState<'_>,
+    view: &StepView<'_>,
+    on_deck: &[usize],
+    ground: Option<f64>,
+) -> SectionForces {
+    let forces = nodal.forces(
+        section,
+        state,
+        view.wheel_positions,
+        view.contact_forces,
+        on_deck,
+    );
+    match ground {
+        None => forces,
+        Some(acceleration) => SectionForces {
+            moment: forces.moment + nodal.ground.moment * acceleration,
+            shear: forces.shear + nodal.ground.shear * acceleration,
+        },
     }
 }
 
@@ -569,6 +637,7 @@ impl EnvelopeTracker {
             .any(|q| matches!(q, Quantity::BridgeMoment | Quantity::BridgeShear));
         let (x, side, support) = envelope_points(model, envelopes, sections)?;
         let modes = model.bridge.mode_count();
+        let (nodal, nodal_displacement, nodal_acceleration) = nodal_envelopes(model, envelopes);
         let mut points = Vec::with_capacity(x.len());
         for (&at, &side) in x.iter().zip(&side) {
             let mut shape = vec![0.0; modes];
@@ -578,12 +647,18 @@ impl EnvelopeTracker {
             } else {
                 None
             };
+            let nodal_section = section
+                .as_ref()
+                .filter(|_| nodal.is_some())
+                .and_then(|s| model.bridge.nodal_section(s));
             points.push(PointProbe {
                 acceleration_shape: filtered_shape(model, &shape, envelopes.max_frequency),
                 static_shape: static_shape(model, &shape),
                 statics: StaticProbe::new(model, at, 0.0)?,
                 shape,
                 section,
+                nodal_point: nodal.map(|bridge| bridge.point(at)),
+                nodal_section,
             });
         }
         let columns = envelopes
@@ -599,6 +674,8 @@ impl EnvelopeTracker {
         let wheels = model.wheels.len();
         let sums = DeckSums::new(&points, modes);
         let from_sums = points.iter().all(|p| p.section.is_none())
+            && !nodal_displacement
+            && !nodal_acceleration
             && envelopes.quantities.iter().all(|q| match q {
                 Quantity::BridgeDisplacement => sums.lines.is_some(),
                 Quantity::BridgeAcceleration => true,
@@ -619,12 +696,19 @@ impl EnvelopeTracker {
             all_wheels: (0..wheels).collect(),
             sums,
             from_sums,
+            nodal_displacement,
+            nodal_acceleration,
         })
     }
 
-    /// Whether the tracker needs the mode values at the wheels.
+    /// Whether the tracker needs the mode values at the wheels (for the
+    /// static correction of a displacement or a section that reads modes).
     pub(super) fn needs_wheel_modes(&self) -> bool {
-        !self.points.is_empty()
+        let modal_sections = self
+            .points
+            .iter()
+            .any(|p| p.section.is_some() && p.nodal_section.is_none());
+        !self.points.is_empty() && (!self.nodal_displacement || modal_sections)
     }
 
     pub(super) fn observe(
@@ -654,13 +738,21 @@ impl EnvelopeTracker {
             has(Quantity::BridgeDisplacement),
             has(Quantity::BridgeAcceleration),
         );
+        // A direct run's nodal envelopes need no modal sums (the static
+        // crossing's displacement still comes from the stacked lines).
+        let nodal_state = view.nodal.as_ref();
+        let nodal = |on: bool| on && nodal_state.is_some();
+        let (nodal_displacement, nodal_acceleration) = (
+            nodal(self.nodal_displacement),
+            nodal(self.nodal_acceleration),
+        );
         self.sums.evaluate(
             view,
             static_loads,
-            wheel_modes,
+            if nodal_displacement { &[] } else { wheel_modes },
             on_deck,
             displacement,
-            acceleration,
+            acceleration && !nodal_acceleration,
         );
         let sums = &self.sums;
         if self.from_sums {
@@ -687,14 +779,54 @@ impl EnvelopeTracker {
                 }
             }
         }
+        let ground = model
+            .ground
+            .as_ref()
+            .map(|g| g.vertical_acceleration(view.time));
         for (p, point) in self.points.iter().enumerate().filter(|_| !self.from_sums) {
-            let section = point.section.as_ref().map(|s| s.forces(&loads, corrected));
+            let section =
+                point
+                    .section
+                    .as_ref()
+                    .map(|s| match (&point.nodal_section, nodal_state) {
+                        (Some(n), Some(state)) => nodal_forces(n, s, state, view, on_deck, ground),
+                        _ => s.forces(&loads, corrected),
+                    });
+            let nodal_value = |acceleration: bool| {
+                let (point, state) = (point.nodal_point.as_ref()?, nodal_state?);
+                Some(if acceleration {
+                    point.value(state.acceleration)
+                } else {
+                    point.value(state.displacement)
+                })
+            };
             let static_section = point
                 .section
                 .as_ref()
                 .map(|s| s.static_forces(view.wheel_positions, static_loads, on_deck));
             for column in &mut self.envelope.columns {
                 let (value, static_value) = match column.quantity {
+                    Quantity::BridgeDisplacement if nodal_displacement => {
+                        // N(x)ᵀu, no static correction (the record's).
+                        let statics = match sums.lines {
+                            Some(_) => sums.statics[p],
+                            None => {
+                                point
+                                    .statics
+                                    .deflections(
+                                        view.wheel_positions,
+                                        view.contact_forces,
+                                        static_loads,
+                                        on_deck,
+                                    )
+                                    .1
+                            }
+                        };
+                        (nodal_value(false).unwrap_or(0.0), Some(statics))
+                    }
+                    Quantity::BridgeAcceleration if nodal_acceleration => {
+                        (nodal_value(true).unwrap_or(0.0), None)
+                    }
                     Quantity::BridgeDisplacement => {
                         let modal = sums.modal[p];
                         // The record's formula (`corrected_displacement`).

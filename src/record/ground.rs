@@ -46,7 +46,7 @@ pub(super) fn ground_terms(
             .unwrap_or(0.0),
         _ => 0.0,
     };
-    if let Probe::SupportReaction { reaction } = probe
+    if let Probe::SupportReaction { reaction, .. } = probe
         && !ground.lateral.is_empty()
     {
         lateral = if model.bridge.static_correction {
@@ -83,7 +83,56 @@ pub(super) fn ground_terms(
             (vertical, lateral) = (v, l);
         }
     }
+    if probe.reads_nodal() {
+        (vertical, lateral) = nodal_ground_terms(ground, probe);
+    }
     Ok((vertical, lateral, absolute))
+}
+
+/// A direct run's nodal reading under ground motion: no static share of
+/// modes left out (none is), only the inertia of the ground's own motion
+/// where the record is a force: a section's clamped share of m üg
+/// ([`crate::bridge::section::NodalSection::ground`]), a support's jump of
+/// it, an imported support row's (M δ)_c. Per unit vertical and lateral
+/// ground acceleration.
+fn nodal_ground_terms(ground: &crate::ground::GroundExcitation, probe: &Probe) -> (f64, f64) {
+    match probe {
+        Probe::Section {
+            nodal: Some(nodal),
+            shear,
+            ..
+        } => {
+            let share = if *shear {
+                nodal.ground.shear
+            } else {
+                nodal.ground.moment
+            };
+            (share, 0.0)
+        }
+        Probe::Reaction { probe, nodal } => {
+            let jump = probe
+                .sides()
+                .zip(nodal)
+                .map(|((sign, _), n)| sign * n.ground.shear)
+                .sum();
+            (jump, 0.0)
+        }
+        Probe::SupportReaction { reaction, .. } => {
+            let [vertical, lateral] = reaction.plain_ground;
+            let vertical = if ground.vertical.is_empty() {
+                0.0
+            } else {
+                vertical
+            };
+            let lateral = if ground.lateral.is_empty() {
+                0.0
+            } else {
+                lateral
+            };
+            (vertical, lateral)
+        }
+        _ => (0.0, 0.0),
+    }
 }
 
 /// [`ground_terms`]' vertical static share and absolute term.
@@ -150,7 +199,9 @@ pub(super) fn vertical_ground_terms(
         // A plate's records under ground motion are modal sums (no
         // full-stiffness share of the inertia load; as its displacements).
         Probe::PlateMoment { .. } | Probe::PlateReaction { .. } => (0.0, None),
-        Probe::Section { ref section, shear } => {
+        Probe::Section {
+            ref section, shear, ..
+        } => {
             // Moments and shears are frame-independent (relative motion).
             let share = if model.bridge.static_correction {
                 let forces = model.bridge.ground_section_share(
@@ -164,7 +215,7 @@ pub(super) fn vertical_ground_terms(
             };
             (share, None)
         }
-        Probe::Reaction { ref probe } => {
+        Probe::Reaction { ref probe, .. } => {
             // The shear jump of the ground's inertia share, as for shears.
             let share = if model.bridge.static_correction {
                 probe
@@ -188,7 +239,7 @@ pub(super) fn vertical_ground_terms(
         // The ground's inertia load's static share through the support,
         // and the support rows' own inertia as they move with the ground
         // (reaction module doc): frame-independent forces.
-        Probe::SupportReaction { ref reaction } => {
+        Probe::SupportReaction { ref reaction, .. } => {
             let share = if model.bridge.static_correction {
                 reaction.vertical_ground
             } else {

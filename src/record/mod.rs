@@ -27,7 +27,7 @@ use self::ground::GroundTerm;
 use self::probe::{ColumnStatics, DafProbe, Probe};
 use crate::bridge::BridgeError;
 use crate::model::Model;
-use crate::scene::{Envelopes, Quantity};
+use crate::scene::{Envelopes, Quantity, Record};
 
 /// What the summary reports as "position" of an extreme value: the position
 /// of a wheel (its vehicle's front axle minus its offset) at that time.
@@ -70,6 +70,110 @@ pub fn unit_of(quantity: Quantity) -> &'static str {
         Quantity::BridgeAcceleration | Quantity::VehicleAcceleration => "m/s^2",
         Quantity::BridgeMoment => "N*m",
         Quantity::BridgeShear | Quantity::BridgeReaction | Quantity::ContactForce => "N",
+    }
+}
+
+/// The modes a run keeps, as [`direct_reading`] weighs them: their
+/// natural frequencies (Hz, ascending: the lowest of the model), the
+/// model's own mode count, and the plan's count of the modes up to the
+/// highest deck-acceleration filter when the kept modes stop below it
+/// ([`crate::bridge::AccelerationFilter`]).
+#[derive(Debug, Clone, Copy)]
+pub struct KeptModes<'a> {
+    /// Kept natural frequencies, Hz.
+    pub frequencies: &'a [f64],
+    /// The model's modes (its free DOFs).
+    pub available: usize,
+    /// The modes up to the acceleration filter, when more than are kept.
+    pub filter: Option<crate::bridge::AccelerationFilter>,
+}
+
+impl KeptModes<'_> {
+    /// Whether every mode of the model up to `cut` Hz is kept (the kept
+    /// modes are the lowest): all of them, or the cut within the kept top
+    /// (1e-8 relative, [`crate::bridge::CUT_OFF_TOLERANCE`]), or no mode
+    /// counted between the kept top and the highest filter.
+    fn hold_up_to(&self, cut: f64) -> bool {
+        let top = self.frequencies.last().copied().unwrap_or(0.0);
+        self.frequencies.len() >= self.available
+            || cut <= top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE)
+            || self.filter.is_none()
+    }
+
+    /// Whether a filter at `cut` Hz passes every mode of the model.
+    fn pass_all_at(&self, cut: f64) -> bool {
+        let top = self.frequencies.last().copied().unwrap_or(0.0);
+        let tolerance = 1.0 - crate::bridge::CUT_OFF_TOLERANCE;
+        (self.frequencies.len() >= self.available && cut >= top * tolerance)
+            || self
+                .filter
+                .is_some_and(|f| f.modes >= self.available && cut >= f.max_frequency * tolerance)
+    }
+}
+
+/// How a direct run (`solver.method: direct`) reads a bridge record.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum DirectReading {
+    /// From the nodal state on the assembled free DOFs
+    /// ([`crate::solve::StepView::nodal`]): N(x)ᵀu, N(x)ᵀü, exact in space
+    /// whatever the modes kept, with no static correction.
+    Nodal,
+    /// From the nodal state's projection onto the kept modes, q = ΦᵀMu,
+    /// which holds every mode the record sums: a deck acceleration filtered
+    /// at `max_frequency` (EN 1990 A2.4.4.2.1(4): the modes up to the
+    /// filter, Σ φᵢ(x)φᵢᵀMü) with each of them kept. Exact in space too.
+    Filtered,
+    /// From that projection, but the record needs modes that are not kept:
+    /// it carries their truncation as a modal run's would (the
+    /// `direct-records-on-kept-modes` warning names it).
+    Truncated,
+}
+
+/// How a direct run reads `record` with `modes` kept: bridge
+/// displacements, a beam's moments, shears and reactions and an imported
+/// model's support reactions nodally; a deck acceleration nodally when its filter passes every mode
+/// of the model, else filtered on the kept modes (exact when they hold
+/// every mode up to the filter). Vehicle and contact records are the direct solution's own
+/// whatever this says.
+pub fn direct_reading(record: &Record, modes: &KeptModes<'_>) -> DirectReading {
+    match record.quantity {
+        Quantity::BridgeDisplacement | Quantity::BridgeMoment | Quantity::BridgeShear => {
+            DirectReading::Nodal
+        }
+        // A beam's support (its shear jump), an imported model's
+        // constrained DOF (its rows of K and M).
+        Quantity::BridgeReaction => DirectReading::Nodal,
+        Quantity::BridgeAcceleration => acceleration_reading(record.max_frequency, modes),
+        // The direct solution's own.
+        Quantity::ContactForce
+        | Quantity::ContactGap
+        | Quantity::VehicleDisplacement
+        | Quantity::VehicleAcceleration => DirectReading::Nodal,
+    }
+}
+
+/// [`direct_reading`] of a deck acceleration filtered at `cut` Hz (`None`:
+/// unfiltered).
+fn acceleration_reading(cut: Option<f64>, modes: &KeptModes<'_>) -> DirectReading {
+    match cut {
+        None => DirectReading::Nodal,
+        Some(cut) if modes.pass_all_at(cut) => DirectReading::Nodal,
+        Some(cut) if modes.hold_up_to(cut) => DirectReading::Filtered,
+        Some(_) => DirectReading::Truncated,
+    }
+}
+
+/// How a direct run reads `quantity` of the envelopes (`max_frequency`
+/// their acceleration filter): as the matching record
+/// ([`direct_reading`]).
+pub fn direct_envelope_reading(
+    quantity: Quantity,
+    max_frequency: Option<f64>,
+    modes: &KeptModes<'_>,
+) -> DirectReading {
+    match quantity {
+        Quantity::BridgeAcceleration => acceleration_reading(max_frequency, modes),
+        _ => DirectReading::Nodal,
     }
 }
 

@@ -2,7 +2,7 @@
 //! girder DAFs, envelopes and wheel separation, and the written samples.
 
 use super::ground::GroundTerm;
-use super::probe::{Probe, StaticProbe, dot, static_share_beyond};
+use super::probe::{Probe, StaticProbe, dot, nodal_reading, static_share_beyond};
 use super::{Flight, Recorder, SEPARATION_GAP};
 use crate::bridge::section::SectionLoads;
 use crate::solve::{Observer, StepView};
@@ -91,7 +91,8 @@ impl Observer for Recorder<'_> {
             envelope.observe(model, view, &self.wheel_modes, on_deck);
         }
         for probe in &mut self.daf_probes {
-            let mut dynamic = dot(&probe.shape, view.modal_displacement);
+            let nodal = nodal_reading(probe.nodal.as_ref(), view, false);
+            let mut dynamic = nodal.unwrap_or_else(|| dot(&probe.shape, view.modal_displacement));
             // The full deflection under the wheel forces (the static
             // correction's) and the static crossing's, each influence value
             // read once.
@@ -101,7 +102,7 @@ impl Observer for Recorder<'_> {
                 &model.static_wheel_loads,
                 on_deck,
             );
-            if !self.wheel_modes.is_empty() {
+            if nodal.is_none() && !self.wheel_modes.is_empty() {
                 dynamic += static_share_beyond(
                     full,
                     &probe.static_shape,
@@ -172,6 +173,7 @@ impl Observer for Recorder<'_> {
                     shape,
                     statics,
                     static_shape,
+                    nodal,
                 } => {
                     // What does not depend on the run's state: the influence
                     // values at the wheels (for the static crossing — each
@@ -203,7 +205,11 @@ impl Observer for Recorder<'_> {
                     let static_w = part.static_w;
                     reference = Some(static_w);
                     let modal = dot(shape, view.modal_displacement);
-                    if self.wheel_modes.is_empty() {
+                    if let Some(exact) = nodal_reading(nodal.as_ref(), view, false) {
+                        // A direct run's N(x)ᵀu: nothing is left out, so no
+                        // static correction.
+                        exact
+                    } else if self.wheel_modes.is_empty() {
                         modal
                     } else {
                         // Σ_w F_w [G(x, x_w) − Σᵢ φᵢ(x)φᵢ(x_w)/ωᵢ²], as
@@ -221,18 +227,24 @@ impl Observer for Recorder<'_> {
                         modal + (full - modal_share)
                     }
                 }
-                Probe::BridgeAcceleration { shape } => dot(shape, view.modal_acceleration),
+                Probe::BridgeAcceleration { shape, nodal } => {
+                    nodal_reading(nodal.as_ref(), view, true)
+                        .unwrap_or_else(|| dot(shape, view.modal_acceleration))
+                }
                 Probe::Lateral {
                     shape,
                     acceleration,
-                } => dot(
-                    shape,
-                    if *acceleration {
-                        view.modal_acceleration
-                    } else {
-                        view.modal_displacement
-                    },
-                ),
+                    nodal,
+                } => nodal_reading(nodal.as_ref(), view, *acceleration).unwrap_or_else(|| {
+                    dot(
+                        shape,
+                        if *acceleration {
+                            view.modal_acceleration
+                        } else {
+                            view.modal_displacement
+                        },
+                    )
+                }),
                 Probe::PlateMoment { probe, line_of } => probe.moment(
                     view.modal_displacement,
                     model.bridge.static_correction,
@@ -246,7 +258,11 @@ impl Observer for Recorder<'_> {
                 // load at its current position, full stiffness, exact
                 // section forces): the reference of the dynamic factor, as
                 // for displacements (issue 40.1).
-                Probe::Section { section, shear } => {
+                Probe::Section {
+                    section,
+                    shear,
+                    nodal,
+                } => {
                     let statics = section.static_forces(
                         view.wheel_positions,
                         &model.static_wheel_loads,
@@ -258,19 +274,37 @@ impl Observer for Recorder<'_> {
                         statics.moment
                     };
                     reference = Some(static_value);
-                    let forces = section.forces(&section_loads, model.bridge.static_correction);
+                    let forces = match (nodal, &view.nodal) {
+                        (Some(nodal), Some(state)) => nodal.forces(
+                            section,
+                            state,
+                            view.wheel_positions,
+                            view.contact_forces,
+                            on_deck,
+                        ),
+                        _ => section.forces(&section_loads, model.bridge.static_correction),
+                    };
                     if *shear { forces.shear } else { forces.moment }
                 }
-                Probe::Reaction { probe } => {
+                Probe::Reaction { probe, nodal } => {
                     let static_value = probe.static_reaction(
                         view.wheel_positions,
                         &model.static_wheel_loads,
                         on_deck,
                     );
                     reference = Some(static_value);
-                    probe.reaction(&section_loads, model.bridge.static_correction)
+                    match &view.nodal {
+                        Some(state) if !nodal.is_empty() => probe.nodal_reaction(
+                            nodal,
+                            state,
+                            view.wheel_positions,
+                            view.contact_forces,
+                            on_deck,
+                        ),
+                        _ => probe.reaction(&section_loads, model.bridge.static_correction),
+                    }
                 }
-                Probe::SupportReaction { reaction } => {
+                Probe::SupportReaction { reaction, nodal } => {
                     let static_value = reaction.static_reaction(
                         view.wheel_positions,
                         &model.wheel_y,
@@ -278,7 +312,17 @@ impl Observer for Recorder<'_> {
                         on_deck,
                     );
                     reference = Some(static_value);
-                    if model.bridge.static_correction {
+                    if let (Some(damping), Some(state)) = (nodal, &view.nodal) {
+                        // The rows on the nodal state, and the load standing
+                        // on the support.
+                        reaction.nodal_reaction(state, *damping)
+                            + reaction.direct_load(
+                                view.wheel_positions,
+                                &model.wheel_y,
+                                view.contact_forces,
+                                on_deck,
+                            )
+                    } else if model.bridge.static_correction {
                         // The mode-acceleration form: exact statics plus
                         // the modes' dynamic share (reaction module doc).
                         reaction.static_reaction(

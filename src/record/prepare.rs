@@ -10,12 +10,23 @@ use super::probe::{
 use super::{Column, Flight, GirderDaf, History, PositionRef, Recorder, WheelSeparation};
 use crate::bridge::BridgeError;
 use crate::model::Model;
-use crate::scene::{Quantity, Record};
+use crate::scene::{Quantity, Record, SolverMethod};
+use crate::solve::direct::assembled::{AssembledBridge, LinePoint};
 
 impl<'m> Recorder<'m> {
     /// Prepares the probes of `records` (already validated against the model).
     pub fn new(model: &'m Model, records: &[Record]) -> Result<Self, BridgeError> {
         let modes = model.bridge.mode_count();
+        // A direct run's bridge records read its nodal state (issue 43.1):
+        // the assembled bridge's interpolation N at each record's point.
+        let assembled = nodal_bridge(model);
+        let assembled = assembled.as_ref();
+        let frequencies = model.bridge.frequencies();
+        let kept = super::KeptModes {
+            frequencies: &frequencies,
+            available: model.bridge.available_modes,
+            filter: model.bridge.acceleration_filter,
+        };
         // Preallocate at most a million samples per column: the step count
         // comes from the input, and the budgets bound what a run may record,
         // but a history larger than that grows as it is recorded rather than
@@ -26,6 +37,11 @@ impl<'m> Recorder<'m> {
             offset: 0.0,
             wheel: None,
         };
+        // The assembled bridge when a direct run reads `record` nodally.
+        let nodal_for = |record: &Record| {
+            assembled
+                .filter(|_| super::direct_reading(record, &kept) == super::DirectReading::Nodal)
+        };
         let mut columns = Vec::with_capacity(records.len());
         for record in records {
             let vehicle = record.vehicle.map_or(0, |v| v - 1);
@@ -34,6 +50,9 @@ impl<'m> Recorder<'m> {
                     let x = record.x.unwrap_or(0.0);
                     let y = record.y.unwrap_or(0.0);
                     let mut shape = vec![0.0; modes];
+                    // A direct run's nodal interpolation of the point (or
+                    // the DOF), when the record can read it.
+                    let nodal = nodal_for(record);
                     // A node's DOF of an imported model (validated when
                     // resolving), or a point along the track or deck.
                     if record.node.is_none()
@@ -51,9 +70,13 @@ impl<'m> Recorder<'m> {
                         } else {
                             (shape, "m")
                         };
+                        let nodal = nodal.map(|bridge| {
+                            bridge.point_in(crate::contact::ContactDirection::Lateral, x, y)
+                        });
                         let probe = Probe::Lateral {
                             shape,
                             acceleration,
+                            nodal,
                         };
                         let (ground_static, lateral_static, absolute) =
                             ground_terms(model, record, &probe)?;
@@ -88,6 +111,10 @@ impl<'m> Recorder<'m> {
                             None
                         }
                     };
+                    let nodal = nodal.map(|bridge| match dof {
+                        Some(dof) => LinePoint::of_dof(dof),
+                        None => bridge.point_in(crate::contact::ContactDirection::Vertical, x, y),
+                    });
                     if record.quantity == Quantity::BridgeDisplacement {
                         let statics = match dof {
                             Some(dof) => StaticProbe::of_dof(model, dof)?,
@@ -98,11 +125,12 @@ impl<'m> Recorder<'m> {
                             shape,
                             statics,
                             static_shape,
+                            nodal,
                         };
                         (probe, "m", lead)
                     } else {
                         let shape = filtered_shape(model, &shape, record.max_frequency);
-                        (Probe::BridgeAcceleration { shape }, "m/s^2", lead)
+                        (Probe::BridgeAcceleration { shape, nodal }, "m/s^2", lead)
                     }
                 }
                 Quantity::BridgeMoment if record.component.is_some() => {
@@ -128,9 +156,13 @@ impl<'m> Recorder<'m> {
                         .expect("moments and shears on a plate were refused when resolving");
                     let shear = record.quantity == Quantity::BridgeShear;
                     let unit = if shear { "N" } else { "N*m" };
+                    let nodal = nodal_for(record)
+                        .and_then(|_| model.bridge.nodal_section(&section))
+                        .map(Box::new);
                     let probe = Probe::Section {
                         section: Box::new(section),
                         shear,
+                        nodal,
                     };
                     (probe, unit, lead)
                 }
@@ -144,6 +176,7 @@ impl<'m> Recorder<'m> {
                     let unit = if direction.is_rotation() { "N*m" } else { "N" };
                     let probe = Probe::SupportReaction {
                         reaction: Box::new(reaction),
+                        nodal: nodal_for(record).and(model.bridge.rayleigh_damping),
                     };
                     (probe, unit, lead)
                 }
@@ -164,8 +197,17 @@ impl<'m> Recorder<'m> {
                         .bridge
                         .reaction_probe(record.x.unwrap_or(0.0))?
                         .expect("reactions on a plate were refused when resolving");
+                    let nodal = nodal_for(record)
+                        .and_then(|_| {
+                            probe
+                                .sides()
+                                .map(|(_, side)| model.bridge.nodal_section(side))
+                                .collect::<Option<Vec<_>>>()
+                        })
+                        .unwrap_or_default();
                     let probe = Probe::Reaction {
                         probe: Box::new(probe),
+                        nodal,
                     };
                     (probe, "N", lead)
                 }
@@ -286,21 +328,27 @@ impl<'m> Recorder<'m> {
                     static_shape: static_shape(model, &shape),
                     shape,
                     statics: StaticProbe::new(model, x, y)?,
+                    nodal: assembled.map(|bridge| {
+                        bridge.point_in(crate::contact::ContactDirection::Vertical, x, y)
+                    }),
                 });
             }
         }
+        // The mode values at the wheels serve the static correction of the
+        // records that read modes (a direct run's nodal ones have none).
         let corrected = model.bridge.static_correction
-            && (!daf_probes.is_empty()
+            && (daf_probes.iter().any(|p| p.nodal.is_none())
                 || columns.iter().any(|c| {
-                    matches!(
-                        c.probe,
-                        Probe::BridgeDisplacement { .. }
-                            | Probe::Section { .. }
-                            | Probe::Reaction { .. }
-                            | Probe::SupportReaction { .. }
-                            | Probe::PlateReaction { .. }
-                            | Probe::PlateMoment { .. }
-                    )
+                    !c.probe.reads_nodal()
+                        && matches!(
+                            c.probe,
+                            Probe::BridgeDisplacement { .. }
+                                | Probe::Section { .. }
+                                | Probe::Reaction { .. }
+                                | Probe::SupportReaction { .. }
+                                | Probe::PlateReaction { .. }
+                                | Probe::PlateMoment { .. }
+                        )
                 }));
         let wheel_modes = if corrected {
             vec![0.0; model.wheels.len() * modes]
@@ -341,4 +389,13 @@ impl<'m> Recorder<'m> {
             spill: None,
         })
     }
+}
+
+/// The assembled bridge of a direct run (its records read the nodal
+/// state, [`super::direct_reading`]); `None` for a modal method.
+fn nodal_bridge(model: &Model) -> Option<AssembledBridge<'_>> {
+    if model.method != SolverMethod::Direct {
+        return None;
+    }
+    AssembledBridge::of(&model.bridge).ok()
 }

@@ -6,9 +6,10 @@
 use super::GirderDaf;
 use crate::bridge::BridgeError;
 use crate::bridge::InfluenceLine;
-use crate::bridge::section::SectionProbe;
+use crate::bridge::section::{NodalSection, SectionProbe};
 use crate::model::Model;
 use crate::solve::StepView;
+use crate::solve::direct::assembled::LinePoint;
 
 /// How a column is computed each step.
 #[derive(Debug, Clone)]
@@ -21,14 +22,27 @@ pub(super) enum Probe {
         statics: StaticProbe,
         /// φᵢ(x, y)/ωᵢ² (static correction), m per unit modal force.
         static_shape: Vec<f64>,
+        /// N(x, y) on the assembled free DOFs, for a direct run: then
+        /// w = N(x, y)ᵀu of the view's nodal state, exact in space, with no
+        /// static correction ([`nodal_reading`]).
+        nodal: Option<LinePoint>,
     },
-    /// ẅ = Σ φᵢ q̈ᵢ.
-    BridgeAcceleration { shape: Vec<f64> },
+    /// ẅ = Σ φᵢ q̈ᵢ, or N(x, y)ᵀü with `nodal` (as for displacements).
+    BridgeAcceleration {
+        shape: Vec<f64>,
+        nodal: Option<LinePoint>,
+    },
     /// The rails' lateral displacement v = Σ φᵢ qᵢ (φ the modes' lateral
     /// components at the point), or with `acceleration` v̈: a modal sum,
     /// plus under a lateral record the lateral static share of the modes
     /// left out (`Column::lateral_static`; the static crossing is vertical).
-    Lateral { shape: Vec<f64>, acceleration: bool },
+    /// With `nodal`, N(x)ᵀu (or N(x)ᵀü) of the rails' lateral
+    /// interpolation in a direct run, and no static share.
+    Lateral {
+        shape: Vec<f64>,
+        acceleration: bool,
+        nodal: Option<LinePoint>,
+    },
     /// A plate deck's moment per unit width at a point; `line_of[w]` is
     /// the probe's influence line of flattened wheel w.
     PlateMoment {
@@ -36,20 +50,29 @@ pub(super) enum Probe {
         line_of: Vec<usize>,
     },
     /// Bending moment (or, with `shear`, shear force) of a beam section.
+    /// With `nodal`, from a direct run's nodal state ([`NodalSection`]).
     Section {
         section: Box<SectionProbe>,
         shear: bool,
+        nodal: Option<Box<NodalSection>>,
     },
     /// A beam support's vertical reaction at `x`, N: the shear on its right
     /// (none at the exit) minus the shear on its left (none at the
     /// entrance), plus the wheels standing exactly on it.
+    /// With `nodal` (one per side, [`ReactionProbe::sides`]' order), from a
+    /// direct run's nodal state: the support's row of the equations of
+    /// motion.
     Reaction {
         probe: Box<crate::bridge::section::ReactionProbe>,
+        nodal: Vec<NodalSection>,
     },
     /// An imported model's support reaction at a constrained DOF, N (or
     /// N·m): read from its rows of K and M ([`crate::bridge::fe_import::reaction`]).
+    /// With `nodal` (the Rayleigh coefficients c_M 1/s, c_K s), from a
+    /// direct run's nodal state: its rows applied to it.
     SupportReaction {
         reaction: Box<crate::bridge::fe_import::reaction::SupportReaction>,
+        nodal: Option<(f64, f64)>,
     },
     /// A plate deck's line reaction at a support, N; `line_of[w]` is the
     /// probe's influence line of flattened wheel w.
@@ -66,6 +89,22 @@ pub(super) enum Probe {
     /// Vehicle and DOF.
     VehicleAcceleration { vehicle: usize, dof: usize },
 }
+impl Probe {
+    /// Whether the probe reads a direct run's nodal state (its value then
+    /// carries no static share of modes left out).
+    pub(super) fn reads_nodal(&self) -> bool {
+        match self {
+            Self::BridgeDisplacement { nodal, .. }
+            | Self::BridgeAcceleration { nodal, .. }
+            | Self::Lateral { nodal, .. } => nodal.is_some(),
+            Self::Section { nodal, .. } => nodal.is_some(),
+            Self::Reaction { nodal, .. } => !nodal.is_empty(),
+            Self::SupportReaction { nodal, .. } => nodal.is_some(),
+            _ => false,
+        }
+    }
+}
+
 /// The distinct transverse positions y of the wheels (m), in order of
 /// first appearance, and the index of each flattened wheel's among them:
 /// one static influence line per such line serves every wheel on it.
@@ -209,6 +248,27 @@ pub(super) struct DafProbe {
     pub(super) shape: Vec<f64>,
     pub(super) statics: StaticProbe,
     pub(super) static_shape: Vec<f64>,
+    /// N(x, y) for a direct run's nodal deflection ([`Probe::BridgeDisplacement`]).
+    pub(super) nodal: Option<LinePoint>,
+}
+
+/// The value of a probe's `point` in the view's nodal state, `acceleration`
+/// selecting ü over u: N(x)ᵀu or N(x)ᵀü (m or m/s²), when the probe has a
+/// point (a direct run's) and the view a nodal state; `None` otherwise, and
+/// the record reads the modal coordinates. Cost O(1) (at most
+/// [`crate::solve::direct::assembled::POINT_DOFS`] products).
+#[inline]
+pub(super) fn nodal_reading(
+    point: Option<&LinePoint>,
+    view: &StepView<'_>,
+    acceleration: bool,
+) -> Option<f64> {
+    let (point, state) = (point?, view.nodal.as_ref()?);
+    Some(if acceleration {
+        point.value(state.acceleration)
+    } else {
+        point.value(state.displacement)
+    })
 }
 
 /// φᵢ/ωᵢ² of a point's mode values `shape` (the modal static flexibility).

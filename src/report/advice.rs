@@ -4,6 +4,7 @@
 //! ([`crate::plan::advice::scene_advice`]); only the front ends print it.
 
 use crate::advice::{self, Advice};
+use crate::record::DirectReading;
 use crate::report::summary::Summary;
 use crate::scene::{Quantity, Scenario, SolverMethod, Surface};
 
@@ -127,45 +128,74 @@ fn rails_left_out(summary: &Summary) -> Option<Advice> {
     })
 }
 
-/// A `direct` run whose bridge records are projections onto fewer modes
-/// than the model has (`src/solve/direct`: the record layer reads modal
-/// coordinates, q = ΦᵀMu of the nodal state).
+/// A `direct` run with bridge records that its kept modes truncate: deck
+/// accelerations (or the acceleration envelope) filtered above the kept
+/// modes yet below the model's top, read from the nodal state's projection
+/// q = ΦᵀMu onto the kept modes ([`crate::record::direct_reading`]); every
+/// other bridge record reads the nodal state itself, exact in space.
 fn direct_records_on_kept_modes(scenario: &Scenario, summary: &Summary) -> Option<Advice> {
     let run = &summary.run;
     if scenario.solver.method != SolverMethod::Direct || run.modes_used >= run.modes_available {
         return None;
     }
-    let mut names: Vec<String> = scenario
+    let kept = crate::record::KeptModes {
+        frequencies: &run.frequencies,
+        available: run.modes_available,
+        filter: run.modes_to_acceleration_filter,
+    };
+    // The truncated records' names and filters (Hz).
+    let mut truncated: Vec<(String, f64)> = scenario
         .record
         .iter()
-        .filter(|r| is_bridge_quantity(r.quantity))
-        .map(|r| format!("`{}`", r.name))
+        .filter(|r| {
+            is_bridge_quantity(r.quantity)
+                && crate::record::direct_reading(r, &kept) == DirectReading::Truncated
+        })
+        .map(|r| {
+            (
+                format!("`{}`", r.name),
+                r.max_frequency.unwrap_or(f64::INFINITY),
+            )
+        })
         .collect();
-    if scenario.envelopes.is_some() {
-        names.push("the envelopes".to_owned());
+    if let Some(envelopes) = &scenario.envelopes
+        && envelopes.quantities.iter().any(|&q| {
+            crate::record::direct_envelope_reading(q, envelopes.max_frequency, &kept)
+                == DirectReading::Truncated
+        })
+    {
+        let cut = envelopes.max_frequency.unwrap_or(f64::INFINITY);
+        truncated.push(("the acceleration envelope".to_owned(), cut));
     }
-    if names.is_empty() {
-        return None;
-    }
+    let cut = truncated.iter().map(|t| t.1).reduce(f64::max)?;
+    let names: Vec<&str> = truncated.iter().map(|t| t.0.as_str()).collect();
+    let top = run.frequencies.last().copied().unwrap_or(0.0);
     Some(
         Advice::new(
             &advice::DIRECT_RECORDS_ON_KEPT_MODES,
             format!(
-                "the direct solution is exact in space, but the bridge records ({}) read it \
-                 projected onto the {} kept modes of the model's {}: they carry the modes' \
-                 truncation as a modal run's would (the vehicle and contact records do not)",
-                names.join(", "),
+                "the direct solution is exact in space, but the deck accelerations filtered \
+                 above the {} kept modes of the model's {} ({}) read it projected onto the kept \
+                 modes: they miss the modes between the kept top ({} Hz) and their filter (up \
+                 to {} Hz); the other bridge records read the nodal state itself, and the \
+                 vehicle and contact records are the solution's own",
                 run.modes_used,
-                run.modes_available
+                run.modes_available,
+                names.join(", "),
+                hz(top),
+                hz(cut)
             ),
         )
         .at("bridge.modes")
         .help(format!(
-            "keep every mode for bridge records exact in space: `bridge.modes: {{count: {}}}`",
+            "keep the modes up to the filter (`bridge.modes: {{max_frequency: {}}}`), or every \
+             mode (`bridge.modes: {{count: {}}}`)",
+            (cut * 10.0).ceil() / 10.0,
             run.modes_available
         ))
         .figure("modes_used", run.modes_used as f64)
-        .figure("modes_available", run.modes_available as f64),
+        .figure("modes_available", run.modes_available as f64)
+        .figure("filter_hz", cut),
     )
 }
 

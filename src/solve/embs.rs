@@ -558,6 +558,7 @@ impl Stepper for Embs<'_> {
             contact_gaps: &self.contact_gaps,
             wheel_positions: &self.wheel_positions,
             wheel_modes: None,
+            nodal: None,
         }
     }
 }

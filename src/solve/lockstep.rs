@@ -553,6 +553,7 @@ impl Stepper for Batch<'_> {
             // Every wheel is a contact (eligible), in flattened order; at
             // t = 0 the geometry is not located yet.
             wheel_modes: (step > 0).then_some(&self.geometry.shapes[..]),
+            nodal: None,
         }
     }
 

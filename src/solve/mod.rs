@@ -151,6 +151,23 @@ pub struct StepView<'a> {
     /// `modes` per wheel), when the solver already has them this step; the
     /// recorder works them out itself otherwise.
     pub wheel_modes: Option<&'a [f64]>,
+    /// The bridge's own nodal state on its assembled free DOFs, when the
+    /// solver steps them ([`direct`]): the bridge records read it, exact in
+    /// space, rather than the modal coordinates; `None` for a modal method.
+    pub nodal: Option<NodalState<'a>>,
+}
+
+/// The nodal state u, u̇, ü of an assembled bridge after a step, on its free
+/// DOFs in the order of its assembled K and M
+/// ([`direct::assembled::AssembledBridge`]).
+#[derive(Debug, Clone, Copy)]
+pub struct NodalState<'a> {
+    /// u, m (rad).
+    pub displacement: &'a [f64],
+    /// u̇, m/s (rad/s).
+    pub velocity: &'a [f64],
+    /// ü, m/s² (rad/s²), relative to the ground's motion.
+    pub acceleration: &'a [f64],
 }
 
 impl<'a> StepView<'a> {
@@ -174,6 +191,7 @@ impl<'a> StepView<'a> {
             contact_gaps,
             wheel_positions,
             wheel_modes: None,
+            nodal: None,
         }
     }
 }

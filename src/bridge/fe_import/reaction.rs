@@ -73,6 +73,10 @@ pub struct SupportReaction {
     pub lateral_ground: f64,
     /// The same two without the static share (the plain modal form), kg.
     pub plain_ground: [f64; 2],
+    /// The support's rows K_cf and M_cf: (free DOF, entry), for the
+    /// reaction from a nodal state ([`Self::nodal_reaction`]).
+    stiffness_row: Vec<(usize, f64)>,
+    mass_row: Vec<(usize, f64)>,
 }
 
 impl SupportReaction {
@@ -100,6 +104,28 @@ impl SupportReaction {
         on_deck: &[usize],
     ) -> f64 {
         self.along(&self.direct, positions, y, forces, on_deck)
+    }
+
+    /// The reaction's rows applied to a nodal state (a direct run's, exact
+    /// in space): K_cf (u + c_K u̇) + M_cf (ü + c_M u̇), N (or N·m), with
+    /// the Rayleigh coefficients `damping` (c_M 1/s, c_K s): the support's
+    /// row of M ü + C u̇ + K u, as a beam support's shear jump
+    /// ([`crate::bridge::section::NodalSection`]). Without the loads
+    /// standing on the DOF ([`Self::direct_load`]) and the row's own
+    /// inertia under ground motion (`plain_ground`). Cost O(row entries).
+    pub fn nodal_reaction(&self, state: &crate::solve::NodalState<'_>, damping: (f64, f64)) -> f64 {
+        let (c_m, c_k) = damping;
+        let elastic: f64 = self
+            .stiffness_row
+            .iter()
+            .map(|&(f, k)| k * (state.displacement[f] + c_k * state.velocity[f]))
+            .sum();
+        let inertia: f64 = self
+            .mass_row
+            .iter()
+            .map(|&(f, m)| m * (state.acceleration[f] + c_m * state.velocity[f]))
+            .sum();
+        elastic + inertia
     }
 
     /// Σ_w F_w e_w f(x_w, y_w) for a field f along the track, e_w the entry
@@ -203,6 +229,8 @@ impl ImportedShapes {
             vertical_ground: row.vertical_inertia - dot(&g, &model.vertical_inertia),
             lateral_ground: row.lateral_inertia - dot(&g, &model.lateral_inertia),
             plain_ground: [row.vertical_inertia, row.lateral_inertia],
+            stiffness_row: row.stiffness.clone(),
+            mass_row: row.mass.clone(),
         })
     }
 }

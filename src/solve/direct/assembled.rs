@@ -44,6 +44,15 @@ impl LinePoint {
             .sum()
     }
 
+    /// The point of one free DOF itself: N = e_dof (an imported model's
+    /// node record).
+    pub fn of_dof(dof: usize) -> Self {
+        let mut point = Self::default();
+        point.dofs[0] = dof;
+        point.values[0] = 1.0;
+        point
+    }
+
     /// N′(x)ᵀu, the slope of the displacement (rad).
     #[inline]
     pub fn slope(&self, u: &[f64]) -> f64 {

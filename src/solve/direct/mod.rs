@@ -29,7 +29,7 @@
 //! memory each (a beam's band: O(n)). Per step: four sparse products with
 //! K or M (O(nnz(K) + nnz(M))), one solve with each factor (O(nnz(L))),
 //! the loads' O(log nodes) element searches, two products for the energy
-//! the divergence guard checks and the records' projection (below): O(n)
+//! the divergence guard checks and the modal projection (below): O(n)
 //! for a beam; each load adds O(1). Nothing is allocated in the step.
 //!
 //! **Errors.** [`SolveError::Direct`] for a 3D beam or a plate, damping
@@ -45,15 +45,16 @@
 //! of its direction; [`assembled::AssembledBridge::ground_inertia`]) and
 //! the vehicles by their weight's share ([`super::GroundStep`]).
 //!
-//! **Records.** The record layer reads modal coordinates
-//! ([`super::StepView`]); the direct stepper shows it the projection of its
-//! nodal state onto the scene's kept modes, q = ΦᵀM u and q̈ = ΦᵀM ü
-//! (O(n·modes) per step). With every mode kept the projection is exact
-//! (u = Φq); with fewer, a bridge record is what the modal records make of
-//! the kept modes (with the static correction of the rest when it is on),
-//! while the vehicles' DOFs and the contact forces are the direct
-//! solution's own. [`Direct::deflection_at`] reads N(x)ᵀu itself.
-//!
+//! **Records.** The view ([`super::StepView`]) carries the nodal state u,
+//! u̇, ü itself ([`super::NodalState`]), and the bridge records read it,
+//! exact in space whatever the modes kept, with no static correction
+//! ([`crate::record::direct_reading`]): N(x)ᵀu at a point, a beam
+//! section's forces from its element
+//! ([`crate::bridge::section::NodalSection`]), a support's row of the
+//! equations of motion. It also carries the projection of that state onto
+//! the scene's kept modes, q = ΦᵀM u and q̈ = ΦᵀM ü (O(n·modes) per step),
+//! for a deck acceleration's filter (the modes up to it, exact when they
+//! are all kept) and any observer that reads modes.
 //! **Vehicles** in permanent contact ([`contact`]): the coupled method's
 //! physics and vehicle condensation ([`super::partition`]) with N(x) for
 //! the mode values, the contact forces from one small dense system per
@@ -287,8 +288,9 @@ impl Stepper for Direct<'_> {
     }
 
     fn view(&self, _index: usize, step: usize, t: f64) -> StepView<'_> {
-        // The records read modal coordinates: the nodal state's projection
-        // onto the kept modes (the module doc's "Records").
+        // The bridge records read the nodal state; the modal coordinates are
+        // its projection onto the kept modes, for the records that still
+        // read modes (the module doc's "Records").
         StepView {
             step,
             time: t,
@@ -299,6 +301,11 @@ impl Stepper for Direct<'_> {
             contact_gaps: &self.contact_gaps,
             wheel_positions: &self.wheel_positions,
             wheel_modes: None,
+            nodal: Some(super::NodalState {
+                displacement: &self.bridge.displacement,
+                velocity: &self.bridge.velocity,
+                acceleration: &self.bridge.acceleration,
+            }),
         }
     }
 }
