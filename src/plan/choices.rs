@@ -293,10 +293,18 @@ pub(crate) fn plan(
         return None;
     }
 
-    // Default step: resolve the highest frequency kept or excited. A speed
-    // sweep's step serves its fastest run; its slowest run is the longest.
+    // Default step: resolve the highest frequency excited. A speed sweep's
+    // step serves its fastest run; its slowest run is the longest.
     let (fast, slow) = crate::scenario::sweep::extreme_vehicles(study.as_ref(), &vehicles);
-    let highest = modal.frequencies().last().copied().unwrap_or(1.0);
+    let frequencies = modal.frequencies();
+    let kept_top = frequencies.last().copied().unwrap_or(1.0);
+    // Wheels with a mass held on the deck, ground motion or an imported
+    // track read the deck's acceleration through every kept mode.
+    let held = matches!(contact, Contact::Permanent | Contact::Rigid { .. });
+    let every_mode = (held && (vertical_mass || lateral_mass))
+        || !ground_motion.is_empty()
+        || modal.is_imported();
+    let highest = content::excited_mode_top(&frequencies, &excitations, every_mode);
     let length = modal.length;
     let (shortest_crossing, shortest_run, longest_run) = time_step::run_lengths(
         study.as_ref(),
@@ -307,7 +315,7 @@ pub(crate) fn plan(
     );
     let (time_step, step_without_ground, time_step_selection) = time_step::choose(
         solver_raw.time_step,
-        highest,
+        (highest, kept_top),
         &excitations,
         history_cutoff,
         shortest_crossing,

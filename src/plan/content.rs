@@ -11,7 +11,8 @@
 //! point load converges like Σ 1/j⁴ over the modes of each span: 5 per span
 //! leave Σ_{j>5} 1/j⁴ ≈ 0.1 % of the deflection under a wheel anywhere on the
 //! span (3 would leave 0.6 %, felt in the vehicle's response). The default step resolves the highest
-//! frequency kept or excited with [`STEPS_PER_PERIOD`] steps.
+//! frequency excited with [`STEPS_PER_PERIOD`] steps ([`excited_mode_top`]: the
+//! modes kept only for the quasi-static shape need no resolution).
 
 use std::f64::consts::PI;
 
@@ -279,9 +280,36 @@ pub fn mode_reason(
     }
 }
 
+/// The highest bridge mode the default step resolves with
+/// [`STEPS_PER_PERIOD`] steps per period, Hz: the highest of the kept
+/// `frequencies` that the scene excites (up to [`SAFETY`] × its highest
+/// excitation frequency, the mode cut-off's own reasoning), and at least the
+/// first. The modes above, kept only for the quasi-static shape (the
+/// [`MODES_PER_SPAN`] floor), respond quasi-statically: Newmark's average
+/// acceleration is unconditionally stable and its error for a mode driven
+/// well below its frequency is set by the forcing's frequency (the
+/// trapezoidal rule's Ω̃ = (2/Δt) tan(ΩΔt/2)), not the mode's, so they need
+/// no resolution. Every kept mode is resolved (`every_mode`) when something
+/// reads the deck's acceleration through them: a wheel with a mass of its
+/// own held on the deck (permanent or rigid contact: its contact force
+/// follows the deck's acceleration under it), ground motion (its inertia
+/// load drives every mode that carries mass) or an imported model's track
+/// (the modes kept for the rails' flexibility under a wheel).
+pub fn excited_mode_top(frequencies: &[f64], excitations: &[Excitation], every_mode: bool) -> f64 {
+    let first = frequencies.first().copied().unwrap_or(1.0);
+    let top_excitation = excitations.iter().map(|e| e.frequency).fold(0.0, f64::max);
+    let cut = SAFETY * top_excitation * (1.0 + crate::bridge::CUT_OFF_TOLERANCE);
+    frequencies
+        .iter()
+        .copied()
+        .filter(|&f| every_mode || f <= cut)
+        .fold(first, f64::max)
+}
+
 /// The automatic time step: [`STEPS_PER_PERIOD`] steps per period of the
-/// highest frequency kept or excited, and at least [`CROSSING_STEPS`]
-/// steps over the shortest crossing, s.
+/// highest frequency excited (`highest_mode`, [`excited_mode_top`], or an
+/// excitation's), and at least [`CROSSING_STEPS`] steps over the shortest
+/// crossing, s.
 pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossing: f64) -> f64 {
     let top = excitations
         .iter()

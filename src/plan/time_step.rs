@@ -7,7 +7,8 @@ use super::content::{self, Excitation};
 
 /// The step of the run, s: `given` (the file's) or the smallest of the
 /// automatic rules — [`content::STEPS_PER_PERIOD`] steps per period of the
-/// highest frequency kept (`highest`, Hz) or excited, at least
+/// highest frequency excited (`highest`, Hz: the highest excited mode,
+/// [`content::excited_mode_top`], or an excitation's), at least
 /// [`content::CROSSING_STEPS`] over the `shortest_crossing` (s), the phase
 /// of the recorded accelerations' highest mode (`history_cutoff`, Hz) over
 /// the `longest_run` (s, [`content::phase_time_step`]), and each
@@ -16,7 +17,7 @@ use super::content::{self, Excitation};
 /// the selection's words with the governing rule.
 pub(super) fn choose(
     given: Option<f64>,
-    highest: f64,
+    (highest, kept_top): (f64, f64),
     excitations: &[Excitation],
     history_cutoff: Option<f64>,
     shortest_crossing: f64,
@@ -25,7 +26,9 @@ pub(super) fn choose(
 ) -> (f64, Option<f64>, String) {
     // Recorded deck accelerations: their highest mode keeps its phase over
     // the run (a history; a resonance check keeps only peaks).
-    let acceleration_top = history_cutoff.map_or(0.0, |cut| cut.min(highest));
+    let acceleration_top = history_cutoff.map_or(0.0, |cut| cut.min(kept_top));
+    // The modes they sum are excited and resolved too.
+    let highest = highest.max(acceleration_top);
     let step_without_ground = given.is_none().then(|| {
         content::time_step(highest, excitations, shortest_crossing)
             .min(content::phase_time_step(acceleration_top, longest_run))
@@ -51,7 +54,7 @@ pub(super) fn choose(
             (
                 1.0 / (content::STEPS_PER_PERIOD * top),
                 format!(
-                    "{} steps per period of {top:.4} Hz, the highest frequency kept or excited",
+                    "{} steps per period of {top:.4} Hz, the highest frequency excited",
                     content::STEPS_PER_PERIOD
                 ),
             ),
@@ -85,7 +88,7 @@ pub(super) fn choose(
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .map_or(String::new(), |(_, why)| format!("; governed by {why}"));
         format!(
-            "automatic: {} steps per period of the highest frequency kept or excited, at \
+            "automatic: {} steps per period of the highest frequency excited, at \
              least {} steps over the shortest crossing, and for deck accelerations a phase \
              drift of their highest mode below {} rad over the run{governing}",
             content::STEPS_PER_PERIOD,
