@@ -289,12 +289,9 @@ pub fn mode_reason(
 /// acceleration is unconditionally stable and its error for a mode driven
 /// well below its frequency is set by the forcing's frequency (the
 /// trapezoidal rule's Ω̃ = (2/Δt) tan(ΩΔt/2)), not the mode's, so they need
-/// no resolution. Every kept mode is resolved (`every_mode`) when something
-/// reads the deck's acceleration through them: a wheel with a mass of its
-/// own held on the deck (permanent or rigid contact: its contact force
-/// follows the deck's acceleration under it), ground motion (its inertia
-/// load drives every mode that carries mass) or an imported model's track
-/// (the modes kept for the rails' flexibility under a wheel).
+/// no resolution. Every kept mode is resolved (`every_mode`) when a result
+/// reads the deck's acceleration through them or a wheel's mass is held on
+/// the deck (the planning stage's `reads_every_mode`).
 pub fn excited_mode_top(frequencies: &[f64], excitations: &[Excitation], every_mode: bool) -> f64 {
     let first = frequencies.first().copied().unwrap_or(1.0);
     let top_excitation = excitations.iter().map(|e| e.frequency).fold(0.0, f64::max);
