@@ -331,7 +331,17 @@ pub(crate) fn plan(
     // step serves its fastest run; its slowest run is the longest.
     let (fast, slow) = crate::scenario::sweep::extreme_vehicles(study.as_ref(), &vehicles);
     let frequencies = modal.frequencies();
-    let kept_top = frequencies.last().copied().unwrap_or(1.0);
+    let modes_and_damping: Vec<(f64, f64)> = frequencies
+        .iter()
+        .copied()
+        .zip(
+            modal
+                .damping_ratios
+                .iter()
+                .copied()
+                .chain(std::iter::repeat(0.0)),
+        )
+        .collect();
     let every_mode = reads_every_mode(
         raw,
         &contact,
@@ -349,7 +359,7 @@ pub(crate) fn plan(
     );
     let (time_step, step_without_ground, time_step_selection) = time_step::choose(
         solver_raw.time_step,
-        (highest, kept_top),
+        (highest, &modes_and_damping),
         &excitations,
         history_cutoff,
         shortest_crossing,

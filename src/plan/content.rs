@@ -315,6 +315,50 @@ pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossin
     (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / CROSSING_STEPS)
 }
 
+/// The phase rule's step over the kept `modes` (frequency, Hz, and damping
+/// ratio ζ) up to `top` (Hz, the recorded accelerations' cut-off; 0 without
+/// one) and the run of `duration` (s): the smallest
+/// [`phase_time_step`] over each mode's time, the run or the decay time
+/// 1/(ζω) of its free vibration where that is shorter. A mode's free
+/// vibration (the entry and exit transients of each axle) carries its phase
+/// error only while it lasts, and a resonance's amplitude is off by the
+/// same (ωΔt)²/(12ζ) that its detuning by Newmark's period error gives.
+/// Without `decays`, every mode over the whole run. Returns the step, the
+/// governing mode's frequency and its time (s); an infinite step without
+/// accelerations; `top` itself, undamped, where no kept mode lies below it.
+pub fn phase_governing(
+    modes: &[(f64, f64)],
+    top: f64,
+    duration: f64,
+    decays: bool,
+) -> (f64, f64, f64) {
+    if top <= 0.0 {
+        return (f64::INFINITY, 0.0, duration);
+    }
+    let limit = top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE);
+    let mut summed: Vec<(f64, f64)> = modes
+        .iter()
+        .copied()
+        .filter(|&(f, _)| f > 0.0 && f <= limit)
+        .collect();
+    if summed.is_empty() {
+        summed.push((top, 0.0));
+    }
+    summed
+        .into_iter()
+        .map(|(f, ratio)| {
+            let decay = 1.0 / (ratio.max(0.0) * 2.0 * PI * f);
+            let time = if decays {
+                duration.min(decay)
+            } else {
+                duration
+            };
+            (phase_time_step(f, time), f, time)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap_or((f64::INFINITY, 0.0, duration))
+}
+
 /// The step that keeps the phase of a mode of `frequency` (Hz) accurate over
 /// a run of `duration` (s), s. Newmark's average acceleration lengthens a
 /// mode's period by (ωΔt)²/12 (Hughes 1987, §9.3), so its phase drifts by
