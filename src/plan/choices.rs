@@ -82,7 +82,18 @@ pub(crate) fn plan(
         data_read,
     } = described;
     let automatic = bridge.modes().count.is_none() && bridge.modes().max_frequency.is_none();
-    let minimum = content::minimum_modes(&bridge);
+    // Wheels with a mass of their own, an oscillator given by its groups
+    // (derived from the bridge below) included.
+    let wheel_mass = {
+        let (vertical, lateral) = track_flexibility::wheels_with_mass(&vehicles, gravity);
+        vertical
+            || lateral
+            || raw.vehicles.iter().any(|v| {
+                matches!(v, crate::scenario::raw::VehicleRaw::Oscillator(o)
+                    if o.dimensionless.as_ref().is_some_and(|d| d.unsprung_ratio.unwrap_or(0.0) > 0.0))
+            })
+    };
+    let minimum = content::floor_modes(&bridge, &vehicles, wheel_mass);
     // The modes the solve will at least compute, before it starts.
     let (asked, asked_path) = match bridge.modes().count {
         Some(count) => (count, "bridge.modes.count"),
