@@ -10,9 +10,13 @@
 //! [`MODES_PER_SPAN`] per span, because the static deflection under a moving
 //! point load converges like Σ 1/j⁴ over the modes of each span: 5 per span
 //! leave Σ_{j>5} 1/j⁴ ≈ 0.1 % of the deflection under a wheel anywhere on the
-//! span (3 would leave 0.6 %, felt in the vehicle's response). The default step resolves the highest
-//! frequency excited with [`STEPS_PER_PERIOD`] steps ([`excited_mode_top`]: the
-//! modes kept only for the quasi-static shape need no resolution).
+//! span (3 would leave 0.6 %, felt in the vehicle's response); on a beam
+//! whose static correction adds that share exactly and whose wheels have no
+//! mass of their own, [`MODES_PER_SPAN_CORRECTED`] ([`floor_modes`]). The
+//! default step resolves the highest frequency excited with
+//! [`STEPS_PER_PERIOD`] steps ([`excited_mode_top`]: the modes kept only for
+//! the quasi-static shape need no resolution) and keeps the phase of the
+//! modes deck accelerations sum ([`phase_governing`]).
 
 use std::f64::consts::PI;
 
