@@ -10,8 +10,13 @@
 //! [`MODES_PER_SPAN`] per span, because the static deflection under a moving
 //! point load converges like Σ 1/j⁴ over the modes of each span: 5 per span
 //! leave Σ_{j>5} 1/j⁴ ≈ 0.1 % of the deflection under a wheel anywhere on the
-//! span (3 would leave 0.6 %, felt in the vehicle's response). The default step resolves the highest
-//! frequency kept or excited with [`STEPS_PER_PERIOD`] steps.
+//! span (3 would leave 0.6 %, felt in the vehicle's response); on a beam
+//! whose static correction adds that share exactly and whose wheels have no
+//! mass of their own, [`MODES_PER_SPAN_CORRECTED`] ([`floor_modes`]). The
+//! default step resolves the highest frequency excited with
+//! [`STEPS_PER_PERIOD`] steps ([`excited_mode_top`]: the modes kept only for
+//! the quasi-static shape need no resolution) and keeps the phase of the
+//! modes deck accelerations sum ([`phase_governing`]).
 
 use std::f64::consts::PI;
 
@@ -22,8 +27,8 @@ use crate::scene::{Contact, Surface, Vehicle};
 use crate::vehicle::{VehicleModel, WheelKind};
 
 pub use crate::scene::automatic::{
-    CROSSING_STEPS, HEAVY_WHEEL_RATIO, MODES_PER_SPAN, PHASE_BUDGET, PLATE_FAMILIES, SAFETY,
-    STEPS_PER_PERIOD,
+    CROSSING_STEPS, HEAVY_WHEEL_RATIO, MODES_PER_SPAN, MODES_PER_SPAN_CORRECTED, PHASE_BUDGET,
+    PLATE_FAMILIES, SAFETY, STEPS_PER_PERIOD,
 };
 
 /// Where a scene loads an imported bridge, for leaving out the modes it
@@ -221,6 +226,40 @@ pub fn minimum_modes(bridge: &crate::scene::Bridge) -> usize {
         .max(1)
 }
 
+/// Fewest modes the automatic choice keeps for a scene's `vehicles`:
+/// [`MODES_PER_SPAN_CORRECTED`] per span on a beam in the vertical plane
+/// whose static correction reaches both the records and the wheels (at
+/// most [`crate::bridge::CONTACT_CORRECTION_DOFS`] free DOFs, or moving
+/// forces alone, which feel no flexibility) when no wheel has a mass of its
+/// own (`wheel_mass`), else [`minimum_modes`]; at most what the model offers. A wheel's
+/// mass on the deck is coupled to the modes left out, which the
+/// correction's massless spring does not hold: measured on the shipped
+/// lcp-oscillator-smooth scene (unsprung mass 2.5 % of the span's), 3
+/// modes put its body acceleration 0.67 % from 6. A plate (its moments and
+/// contact flexibility are modal), a 3D beam (its twist) and an imported
+/// model (its track's supports) keep [`minimum_modes`].
+pub fn floor_modes(bridge: &crate::scene::Bridge, vehicles: &[Vehicle], wheel_mass: bool) -> usize {
+    let corrected = match bridge {
+        crate::scene::Bridge::Beam(beam) => {
+            !wheel_mass
+                && beam.sway.is_none()
+                && bridge.modes().static_correction
+                && (ModalBridge::available_of(bridge) <= crate::bridge::CONTACT_CORRECTION_DOFS
+                    || vehicles
+                        .iter()
+                        .all(|v| matches!(v, Vehicle::MovingForce(_))))
+        }
+        _ => false,
+    };
+    if corrected {
+        (MODES_PER_SPAN_CORRECTED * floor_spans(bridge))
+            .min(ModalBridge::available_of(bridge))
+            .max(1)
+    } else {
+        minimum_modes(bridge)
+    }
+}
+
 /// The spans [`minimum_modes`] counts: a beam's and a plate's own; an
 /// imported model's between the supports its track finds
 /// ([`crate::scene::imported::ImportedModel::supported_spans`]), at least
@@ -279,15 +318,83 @@ pub fn mode_reason(
     }
 }
 
+/// The highest bridge mode the default step resolves with
+/// [`STEPS_PER_PERIOD`] steps per period, Hz: the highest of the kept
+/// `frequencies` that the scene excites (up to [`SAFETY`] × its highest
+/// excitation frequency, the mode cut-off's own reasoning), and at least the
+/// first. The modes above, kept only for the quasi-static shape (the
+/// [`MODES_PER_SPAN`] floor), respond quasi-statically: Newmark's average
+/// acceleration is unconditionally stable and its error for a mode driven
+/// well below its frequency is set by the forcing's frequency (the
+/// trapezoidal rule's Ω̃ = (2/Δt) tan(ΩΔt/2)), not the mode's, so they need
+/// no resolution. Every kept mode is resolved (`every_mode`) when a result
+/// reads the deck's acceleration through them or a wheel's mass is held on
+/// the deck (the planning stage's `reads_every_mode`).
+pub fn excited_mode_top(frequencies: &[f64], excitations: &[Excitation], every_mode: bool) -> f64 {
+    let first = frequencies.first().copied().unwrap_or(1.0);
+    let top_excitation = excitations.iter().map(|e| e.frequency).fold(0.0, f64::max);
+    let cut = SAFETY * top_excitation * (1.0 + crate::bridge::CUT_OFF_TOLERANCE);
+    frequencies
+        .iter()
+        .copied()
+        .filter(|&f| every_mode || f <= cut)
+        .fold(first, f64::max)
+}
+
 /// The automatic time step: [`STEPS_PER_PERIOD`] steps per period of the
-/// highest frequency kept or excited, and at least [`CROSSING_STEPS`]
-/// steps over the shortest crossing, s.
+/// highest frequency excited (`highest_mode`, [`excited_mode_top`], or an
+/// excitation's), and at least [`CROSSING_STEPS`] steps over the shortest
+/// crossing, s.
 pub fn time_step(highest_mode: f64, excitations: &[Excitation], shortest_crossing: f64) -> f64 {
     let top = excitations
         .iter()
         .map(|e| e.frequency)
         .fold(highest_mode, f64::max);
     (1.0 / (STEPS_PER_PERIOD * top)).min(shortest_crossing / CROSSING_STEPS)
+}
+
+/// The phase rule's step over the kept `modes` (frequency, Hz, and damping
+/// ratio ζ) up to `top` (Hz, the recorded accelerations' cut-off; 0 without
+/// one) and the run of `duration` (s): the smallest
+/// [`phase_time_step`] over each mode's time, the run or the decay time
+/// 1/(ζω) of its free vibration where that is shorter. A mode's free
+/// vibration (the entry and exit transients of each axle) carries its phase
+/// error only while it lasts, and a resonance's amplitude is off by the
+/// same (ωΔt)²/(12ζ) that its detuning by Newmark's period error gives.
+/// Without `decays`, every mode over the whole run. Returns the step, the
+/// governing mode's frequency and its time (s); an infinite step without
+/// accelerations; `top` itself, undamped, where no kept mode lies below it.
+pub fn phase_governing(
+    modes: &[(f64, f64)],
+    top: f64,
+    duration: f64,
+    decays: bool,
+) -> (f64, f64, f64) {
+    if top <= 0.0 {
+        return (f64::INFINITY, 0.0, duration);
+    }
+    let limit = top * (1.0 + crate::bridge::CUT_OFF_TOLERANCE);
+    let mut summed: Vec<(f64, f64)> = modes
+        .iter()
+        .copied()
+        .filter(|&(f, _)| f > 0.0 && f <= limit)
+        .collect();
+    if summed.is_empty() {
+        summed.push((top, 0.0));
+    }
+    summed
+        .into_iter()
+        .map(|(f, ratio)| {
+            let decay = 1.0 / (ratio.max(0.0) * 2.0 * PI * f);
+            let time = if decays {
+                duration.min(decay)
+            } else {
+                duration
+            };
+            (phase_time_step(f, time), f, time)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap_or((f64::INFINITY, 0.0, duration))
 }
 
 /// The step that keeps the phase of a mode of `frequency` (Hz) accurate over

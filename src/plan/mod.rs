@@ -6,9 +6,10 @@
 //!   decides; the excitations the vehicles and the surface bring; twice the
 //!   minimum under heavy wheels; 90 % of the mass under ground motion), its
 //!   reason in the bridge's `selection`;
-//! - the default time step (steps per period of the highest frequency kept
-//!   or excited, steps per crossing, the phase drift of deck accelerations,
-//!   the ground records' sampling), its reason in `solver.time_step_selection`;
+//! - the default time step (steps per period of the highest frequency
+//!   excited, steps per crossing, the phase drift of each mode deck
+//!   accelerations sum over the run or its free vibration's decay, the
+//!   ground records' sampling), its reason in `solver.time_step_selection`;
 //! - the budgets that need a mode count or the eigen solve's size;
 //! - oscillators given by dimensionless groups (they need f₁).
 //!

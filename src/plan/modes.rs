@@ -69,8 +69,9 @@ pub(super) fn automatic(
     // Heavy wheels feel the bridge's acceleration under them, which a
     // few modes resolve poorly: keep twice the minimum.
     let heavy = content::heavy_wheels(needs.vehicles, bridge, needs.gravity);
+    let heavy_floor = 2 * content::minimum_modes(bridge);
     let floor = if heavy {
-        (2 * needs.minimum).min(ModalBridge::available_of(bridge))
+        heavy_floor.min(ModalBridge::available_of(bridge))
     } else {
         needs.minimum
     };
@@ -109,7 +110,7 @@ pub(super) fn automatic(
              minimum because a wheel's mass exceeds {} of a span's (its contact force \
              follows the deck's acceleration under it)",
             modal.mode_count(),
-            needs.minimum,
+            content::minimum_modes(bridge),
             content::HEAVY_WHEEL_RATIO
         ),
         Some(cut) => format!(
@@ -118,13 +119,17 @@ pub(super) fn automatic(
              `max_frequency`)",
             modal.mode_count()
         ),
-        None => content::mode_reason(
-            modal.mode_count(),
-            cutoff,
-            dynamic,
-            &top,
-            content::modes_per_span(bridge),
-        ),
+        None => {
+            let per_span = needs.minimum / content::floor_spans(bridge).max(1);
+            let mut reason =
+                content::mode_reason(modal.mode_count(), cutoff, dynamic, &top, per_span);
+            if !dynamic && needs.minimum < content::minimum_modes(bridge) {
+                reason.push_str(
+                    "; the static correction adds the quasi-static share of the modes left out",
+                );
+            }
+            reason
+        }
     };
     // An imported track under wheels with mass: keep modes until they
     // carry the rails' static flexibility under a wheel (the static

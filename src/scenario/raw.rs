@@ -212,13 +212,20 @@ pub struct SolverRaw {
     #[serde(default)]
     pub method: Option<SolverMethod>,
     /// Time step, s. Default: 1 / ({{STEPS_PER_PERIOD}} f_max), f_max the
-    /// highest bridge mode kept or frequency excited (see `bridge.modes`); at
-    /// most 1/{{CROSSING_STEPS}} of the shortest crossing; with recorded deck
-    /// accelerations, short enough that their highest mode's phase drifts
-    /// less than {{PHASE_BUDGET}} rad over the run (Newmark's period error
-    /// (ωΔt)²/12); under ground motion, at most the record's shortest
-    /// sampling interval. The resolved scenario gives the step and the
-    /// summary says which rule set it.
+    /// highest frequency excited: the vehicles', axle passing, span crossing
+    /// and roughness frequencies (see `bridge.modes`) and the bridge modes up
+    /// to {{SAFETY}} × the highest of them (every mode kept under a wheel
+    /// with a mass of its own held on the deck, ground motion or a recorded
+    /// reaction or shear; the modes above, kept for the quasi-static shape,
+    /// respond quasi-statically and need no resolution); at most
+    /// 1/{{CROSSING_STEPS}} of the shortest crossing; with recorded deck
+    /// accelerations, short enough that the phase of each mode they sum
+    /// drifts less than {{PHASE_BUDGET}} rad (Newmark's period error
+    /// (ωΔt)²/12) over the run or, where shorter, the decay time 1/(ζω) of
+    /// its free vibration (the whole run under ground motion); under ground
+    /// motion, at most the record's shortest sampling interval. The
+    /// resolved scenario gives the step and the summary says which rule
+    /// set it.
     #[serde(default)]
     #[schemars(transform = crate::scene::schema_rules::positive)]
     #[serde(deserialize_with = "crate::scenario::raw::units::time::option")]

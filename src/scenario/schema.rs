@@ -65,6 +65,10 @@ pub fn documented_constants() -> Vec<(String, String)> {
         ),
         ("SAFETY", number(auto::SAFETY)),
         ("MODES_PER_SPAN", auto::MODES_PER_SPAN.to_string()),
+        (
+            "MODES_PER_SPAN_CORRECTED",
+            auto::MODES_PER_SPAN_CORRECTED.to_string(),
+        ),
         ("PLATE_FAMILIES", auto::PLATE_FAMILIES.to_string()),
         (
             "PLATE_MODES_PER_SPAN",

@@ -11,6 +11,15 @@
 pub const SAFETY: f64 = 4.0;
 /// Fewest modes kept per span.
 pub const MODES_PER_SPAN: usize = 5;
+/// Fewest modes kept per span of a beam whose wheels and records get the
+/// static (mode-acceleration) correction and whose wheels have no mass of
+/// their own (moving forces, a sprung mass or a truck's tyres on the
+/// deck): the correction adds the quasi-static share of the modes left
+/// out, so the floor only has to hold the modes a moving load drives near
+/// their frequency (the second of a span is forced at 2 v / 2L, a quarter
+/// of its own frequency at v = f₁ L). Measured on two-axle-moving-force:
+/// 1 mode within 0.04 % of 10.
+pub const MODES_PER_SPAN_CORRECTED: usize = 2;
 /// Mode families a plate deck's automatic cut-off keeps at least
 /// [`MODES_PER_SPAN`] per span of: bending, torsion, transverse bending.
 pub const PLATE_FAMILIES: usize = 3;

@@ -193,7 +193,9 @@ pub struct BeamRaw {
     /// (vehicle natural frequencies incl. wheel hop on an elastic contact,
     /// axle passing v/d, span crossing v/2L, roughness v/λ), and at least
     /// {{MODES_PER_SPAN}} per span (twice that under wheels heavier than
-    /// {{HEAVY_WHEEL_RATIO}} × the lightest span's mass); the
+    /// {{HEAVY_WHEEL_RATIO}} × the lightest span's mass; {{MODES_PER_SPAN_CORRECTED}}
+    /// on a beam with the static correction whose wheels have no mass of
+    /// their own: moving forces, a sprung mass or tyres on the deck); the
     /// resolved scenario gives the modes kept as `count` with the cut-off as
     /// `max_frequency` and the summary says why.
     #[serde(default)]
