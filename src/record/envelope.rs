@@ -701,6 +701,17 @@ impl EnvelopeTracker {
         })
     }
 
+    /// Whether the tracker reads the modal coordinates (anything it tracks
+    /// not read from a direct run's nodal state).
+    pub(super) fn reads_modes(&self) -> bool {
+        let modal_sections = self
+            .points
+            .iter()
+            .any(|p| p.section.is_some() && p.nodal_section.is_none());
+        !self.points.is_empty()
+            && (!self.nodal_displacement || !self.nodal_acceleration || modal_sections)
+    }
+
     /// Whether the tracker needs the mode values at the wheels (for the
     /// static correction of a displacement or a section that reads modes).
     pub(super) fn needs_wheel_modes(&self) -> bool {

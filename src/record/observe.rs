@@ -8,6 +8,12 @@ use crate::bridge::section::SectionLoads;
 use crate::solve::{Observer, StepView};
 
 impl Observer for Recorder<'_> {
+    fn reads_modal_coordinates(&self) -> bool {
+        self.history.columns.iter().any(|c| c.probe.reads_modes())
+            || self.daf_probes.iter().any(|p| p.nodal.is_none())
+            || self.envelope.as_ref().is_some_and(|e| e.reads_modes())
+    }
+
     fn observe(&mut self, view: &StepView<'_>) {
         let sampled = self.keep && view.step.is_multiple_of(self.history.every);
         if sampled {

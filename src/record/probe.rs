@@ -90,6 +90,19 @@ pub(super) enum Probe {
     VehicleAcceleration { vehicle: usize, dof: usize },
 }
 impl Probe {
+    /// Whether the probe reads the modal coordinates: a bridge probe
+    /// without a nodal reading (the vehicles' and contacts' own are read
+    /// from the view directly).
+    pub(super) fn reads_modes(&self) -> bool {
+        match self {
+            Self::ContactForce { .. }
+            | Self::ContactGap { .. }
+            | Self::VehicleDisplacement { .. }
+            | Self::VehicleAcceleration { .. } => false,
+            _ => !self.reads_nodal(),
+        }
+    }
+
     /// Whether the probe reads a direct run's nodal state (its value then
     /// carries no static share of modes left out).
     pub(super) fn reads_nodal(&self) -> bool {

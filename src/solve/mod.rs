@@ -200,6 +200,12 @@ impl<'a> StepView<'a> {
 pub trait Observer {
     /// Called at t = 0 and after every step.
     fn observe(&mut self, view: &StepView<'_>);
+
+    /// Whether it reads the view's modal coordinates (a direct run forms
+    /// them, q = ΦᵀM u, only if so: [`direct::Direct::projecting`]).
+    fn reads_modal_coordinates(&self) -> bool {
+        true
+    }
 }
 
 /// What a solver reports about its own work over a run.
@@ -256,7 +262,9 @@ pub fn run_method(
             progress,
         ),
         SolverMethod::Direct => {
-            drive_one(&mut direct::Direct::new(model)?, &mut [observer], progress)
+            let projecting = observer.reads_modal_coordinates();
+            let mut stepper = direct::Direct::new(model)?.projecting(projecting);
+            drive_one(&mut stepper, &mut [observer], progress)
         }
         SolverMethod::Embs => {
             let mut stepper = embs::Embs::new(model, zero_order.is_some())?;
