@@ -148,6 +148,7 @@ pub fn dominant(shares: &[f64; 4]) -> (ModeDirection, f64) {
 impl ImportedShapes {
     /// The kept `vectors` of `model`.
     pub fn new(model: Arc<ImportedModel>, pencil: Pencil, vectors: Mat<f64>) -> Self {
+        let _t = crate::timings::stage(|| "the modes along the track, energy shares".into());
         let count = vectors.ncols();
         let track = track_field(&model, RailDirection::Vertical, count, |dof, c| {
             vectors[(dof, c)]
@@ -277,6 +278,7 @@ impl ImportedShapes {
     pub fn static_flexibility_at(&self, points: &[ContactPoint]) -> Result<Vec<f64>, BridgeError> {
         let n = self.model.dofs.len();
         let factor = self.pencil.stiffness_factor()?;
+        let _t = crate::timings::stage(|| format!("static flexibility at {} points", points.len()));
         let chunks: Vec<&[ContactPoint]> = points.chunks(FLEXIBILITY_BLOCK).collect();
         // Each chunk of points is one block solve, the same whichever thread
         // runs it: the result does not depend on the thread count.
