@@ -44,6 +44,19 @@ pub fn stage(name: impl FnOnce() -> String) -> Option<Stage> {
     })
 }
 
+/// Prints a line of facts about the stage running now (sizes, counts)
+/// when timings are on.
+pub fn note(text: impl FnOnce() -> String) {
+    if enabled() {
+        eprintln!(
+            "timing: {:indent$}({})",
+            "",
+            text(),
+            indent = 2 * DEPTH.load(Ordering::Relaxed)
+        );
+    }
+}
+
 impl Drop for Stage {
     fn drop(&mut self) {
         DEPTH.fetch_sub(1, Ordering::Relaxed);
