@@ -81,6 +81,7 @@ pub mod solve;
 pub mod study;
 pub mod surface;
 pub mod text_table;
+pub mod timings;
 pub mod vehicle;
 
 #[cfg(test)]

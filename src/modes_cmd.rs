@@ -15,15 +15,21 @@ pub(super) fn modes(
     shapes: Option<&Path>,
     json: bool,
 ) -> ExitCode {
+    let _total = vbi::timings::stage(|| "vbi modes".into());
+    let loaded = {
+        let _t = vbi::timings::stage(|| "load and plan".into());
+        plan::load_file_for_modes(file, options)
+    };
     let vbi::plan::bridge_only::ModesScene {
         name,
         bridge,
         scenario,
         imported,
-    } = match plan::load_file_for_modes(file, options) {
+    } = match loaded {
         Ok(scene) => scene,
         Err(e) => return load_error(&e),
     };
+    let _output = vbi::timings::stage(|| "output".into());
     let plate = bridge.width().is_some();
     // An imported mode's direction by its kinetic energy (`vertical 2 (99.7 %)`).
     let named = plate || bridge.is_imported();

@@ -162,6 +162,7 @@ impl ModalBridge {
         par: faer::Par,
         loads: Option<fe_import::excited::SceneLoads>,
     ) -> Result<Self, BridgeError> {
+        let _t = crate::timings::stage(|| format!("modal bridge ({request:?})"));
         let selection = match request {
             ModeRequest::Lowest(n) => format!("requested: the lowest {n} modes"),
             ModeRequest::UpTo(f) => format!("requested: every mode up to {f} Hz"),
@@ -284,23 +285,29 @@ impl ModalBridge {
                 (omegas, shapes, check)
             }
             Bridge::FeImport(f) => {
-                let pencil = fe_import::modal::pencil(&f.model)?.with_parallelism(par);
+                let pencil = {
+                    let _t = crate::timings::stage(|| "the pencil (K, M compressed)".into());
+                    fe_import::modal::pencil(&f.model)?.with_parallelism(par)
+                };
                 let count = select_count(
                     request,
                     available,
                     |g| pencil.count_below(eigenvalue_of(g)),
                     || Ok(pencil.lowest(1)?.eigenvalues[0].sqrt() / (2.0 * PI)),
                 )?;
-                let solve = |count: usize| match cache {
-                    Some(folder) => {
-                        let cache = eigen::cache::ModesCache {
-                            folder: folder.to_path_buf(),
-                            kind: "fe_import".into(),
-                        };
-                        let (modes, outcome) = pencil.lowest_cached(count, &cache)?;
-                        Ok((modes, Some(outcome)))
+                let solve = |count: usize| {
+                    let _t = crate::timings::stage(|| format!("eigen solve, {count} modes"));
+                    match cache {
+                        Some(folder) => {
+                            let cache = eigen::cache::ModesCache {
+                                folder: folder.to_path_buf(),
+                                kind: "fe_import".into(),
+                            };
+                            let (modes, outcome) = pencil.lowest_cached(count, &cache)?;
+                            Ok((modes, Some(outcome)))
+                        }
+                        None => Ok::<_, BridgeError>((pencil.lowest(count)?, None)),
                     }
-                    None => Ok::<_, BridgeError>((pencil.lowest(count)?, None)),
                 };
                 let (modes, outcome, kept) = match loads {
                     None => {

@@ -136,6 +136,7 @@ pub(crate) fn plan(
             (path, e.to_string())
         })
     };
+    let modal_built = crate::timings::stage(|| "the modal bridge".into());
     let mut modal = match build(ModeRequest::of(
         bridge.modes(),
         ModeRequest::Lowest(minimum),
@@ -146,6 +147,7 @@ pub(crate) fn plan(
             return None;
         }
     };
+    drop(modal_built);
     // The deck-acceleration filter of EN 1990 A2.4.4.2.1(4) is the
     // bridge's own max(30 Hz, 1.5 f₁, f₃), whatever `bridge.modes` keeps
     // (a cap that keeps one mode must not lower it to the kept top).
@@ -297,8 +299,10 @@ pub(crate) fn plan(
         && (vertical_mass || lateral_mass)
         && (!modal.static_correction
             || ModalBridge::available_of(&bridge) > crate::bridge::CONTACT_CORRECTION_DOFS)
-        && let Err(e) =
+        && let Err(e) = {
+            let _t = crate::timings::stage(|| "the rails' flexibility measured".into());
             track_flexibility::measure_without_correction(&mut modal, &bridge, lateral_mass)
+        }
     {
         ck.error("bridge", e.to_string());
         return None;
@@ -508,6 +512,7 @@ pub(crate) fn plan(
     // An imported model's mass and static deflection under the vehicles'
     // weight: what an engineer checks first ([`super::imported_check`]).
     if let Bridge::FeImport(fe) = &mut bridge {
+        let _t = crate::timings::stage(|| "the imported model's totals".into());
         let weight = super::imported_check::static_weight(&vehicles, gravity);
         match super::imported_check::totals(&fe.model, &modal, weight) {
             Ok(totals) => fe.totals = Some(totals),

@@ -61,6 +61,7 @@ pub struct Loaded {
 /// went on past ([`Described::errors`]), in one round, located as the
 /// format locates its own.
 pub fn plan(described: Described) -> Result<Loaded, LoadError> {
+    let _t = crate::timings::stage(|| "plan".into());
     described
         .plan_with(choices::plan)
         .map(|(scenario, bridge)| Loaded { scenario, bridge })

@@ -48,12 +48,14 @@ pub(crate) fn resolve(
     let before = ck.diagnostics.len();
     let stiffness_file = locate(&raw.stiffness, "bridge.stiffness", ck);
     let mass_file = locate(&raw.mass, "bridge.mass", ck);
-    let stiffness = stiffness_file
-        .as_ref()
-        .and_then(|f| read_matrix(f, "bridge.stiffness", budget, ck));
-    let mass = mass_file
-        .as_ref()
-        .and_then(|f| read_matrix(f, "bridge.mass", budget, ck));
+    let stiffness = stiffness_file.as_ref().and_then(|f| {
+        let _t = crate::timings::stage(|| "read the stiffness matrix".into());
+        read_matrix(f, "bridge.stiffness", budget, ck)
+    });
+    let mass = mass_file.as_ref().and_then(|f| {
+        let _t = crate::timings::stage(|| "read the mass matrix".into());
+        read_matrix(f, "bridge.mass", budget, ck)
+    });
     let mut damping_shown: Option<String> = None;
     let (damping, damping_file) = match &raw.damping {
         None => (ImportDamping::Modal { ratio: 0.0 }, None),
@@ -102,6 +104,7 @@ pub(crate) fn resolve(
         .dof_map
         .as_deref()
         .map(|f| locate(f, "bridge.dof_map", ck));
+    let rails_read = crate::timings::stage(|| "read the rails".into());
     let mut rails = Vec::with_capacity(raw.rails.len());
     let mut rail_inputs = Vec::with_capacity(raw.rails.len());
     if raw.rails.is_empty() {
@@ -159,6 +162,7 @@ pub(crate) fn resolve(
             ),
         }
     }
+    drop(rails_read);
     let track = match &raw.track {
         Some(names) => names.clone(),
         None if (1..=2).contains(&raw.rails.len()) => {
@@ -206,6 +210,7 @@ pub(crate) fn resolve(
         Some(f) => Some(f?),
         None => None,
     };
+    let map_read = crate::timings::stage(|| "read the DOF map".into());
     let map = match &dof_map_file {
         Some(data) => {
             let shown = data.shown.clone();
@@ -225,6 +230,8 @@ pub(crate) fn resolve(
         }
         None => None,
     };
+    drop(map_read);
+    let assembly = crate::timings::stage(|| "assemble the model".into());
     let pairs: Vec<(u64, Direction)> = constrained.iter().map(|c| (c.node, c.direction)).collect();
     let mut model = match ImportedModel::assemble(
         stiffness,
@@ -271,6 +278,7 @@ pub(crate) fn resolve(
             return None;
         }
     };
+    drop(assembly);
     // A wheel's load enters the track over `entry_length` at each free rail
     // end (bridge::fe_import::entry), none where the support holds it.
     // The default keeps both ramps on the outer quarters of a short track.

@@ -170,8 +170,12 @@ pub fn load_str_with(
     file: &str,
     options: LoadOptions,
 ) -> Result<Described, LoadError> {
-    let parsed = parse_raw_all(source, file)?;
+    let parsed = {
+        let _t = crate::timings::stage(|| "parse the scene".into());
+        parse_raw_all(source, file)?
+    };
     let source = source.strip_prefix(BOM).unwrap_or(source);
+    let _t = crate::timings::stage(|| "resolve the scene (files read)".into());
     described(parsed, file, source, options, None)
 }
 

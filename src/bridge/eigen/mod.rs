@@ -143,6 +143,7 @@ impl Pencil {
     /// The factorisation of K, positive definite (a supported bridge).
     pub fn stiffness_factor(&self) -> Result<&Factor, BridgeError> {
         let factor = self.stiffness_factor.get_or_init(|| {
+            let _t = crate::timings::stage(|| "factor K".into());
             let factor = Factor::new(&self.stiffness).map_err(|e| match e {
                 BridgeError::SingularShift => BridgeError::StiffnessNotPositive,
                 other => other,
@@ -236,6 +237,7 @@ impl Pencil {
         if eigenvalue <= 0.0 {
             return Ok(0);
         }
+        let _t = crate::timings::stage(|| "inertia count (K - sigma M factored)".into());
         let matrix = shifted(&self.stiffness, &self.mass, eigenvalue)?;
         Ok(Factor::new(&matrix)?.negative_pivots())
     }
@@ -268,6 +270,7 @@ impl Pencil {
         stiffness: impl Fn(&[f64], &mut [f64]) + Sync,
     ) -> Result<(), BridgeError> {
         let factor = self.stiffness_factor()?;
+        let _t = crate::timings::stage(|| "verify the modes".into());
         let (largest_residual, largest_plain_residual, orthonormality_error) =
             checks::verify_parallel(
                 &stiffness,
@@ -351,6 +354,7 @@ impl Pencil {
                 // re-orthogonalisation, multi-right-hand-side solves;
                 // [`block`]), the single-vector run where it declines.
                 let blocked = if stiffness.is_none() && n > DENSE_SHARE_LIMIT {
+                    let _t = crate::timings::stage(|| format!("block Lanczos, {want} wanted"));
                     block::lowest(&self.mass, factor, want, self.par)?
                 } else {
                     None
@@ -366,6 +370,7 @@ impl Pencil {
                     // The assembled matrices are all there is: block
                     // Rayleigh–Ritz, by matrix products.
                     None => {
+                        let _t = crate::timings::stage(|| "block Rayleigh-Ritz polish".into());
                         lanczos::polish_block(&self.mass, &self.stiffness, factor, &ritz, self.par)?
                     }
                 }

@@ -148,6 +148,7 @@ pub fn dominant(shares: &[f64; 4]) -> (ModeDirection, f64) {
 impl ImportedShapes {
     /// The kept `vectors` of `model`.
     pub fn new(model: Arc<ImportedModel>, pencil: Pencil, vectors: Mat<f64>) -> Self {
+        let _t = crate::timings::stage(|| "the modes along the track, energy shares".into());
         let count = vectors.ncols();
         let track = track_field(&model, RailDirection::Vertical, count, |dof, c| {
             vectors[(dof, c)]
@@ -277,10 +278,40 @@ impl ImportedShapes {
     pub fn static_flexibility_at(&self, points: &[ContactPoint]) -> Result<Vec<f64>, BridgeError> {
         let n = self.model.dofs.len();
         let factor = self.pencil.stiffness_factor()?;
+        let _t = crate::timings::stage(|| format!("static flexibility at {} points", points.len()));
         let chunks: Vec<&[ContactPoint]> = points.chunks(FLEXIBILITY_BLOCK).collect();
-        // Each chunk of points is one block solve, the same whichever thread
-        // runs it: the result does not depend on the thread count.
+        // A contact couples to the model with its entry weight at a
+        // free rail end ([`super::entry`]), as in [`ImportedFlexibility::green`].
+        let entry = &self.model.entry;
+        let coupling = |point: &ContactPoint| {
+            if entry.is_active() {
+                entry.weight(point.1).0
+            } else {
+                1.0
+            }
+        };
+        // Each chunk of points is solved on its own, the same whichever
+        // thread runs it: the result does not depend on the thread count.
         let par = self.pencil.parallelism();
+        // A simplicial factor: each point's G = N(c)ᵀK⁻¹N(c) by a forward
+        // solve over the columns of L its few DOFs reach
+        // ([`Factor::inverse_form`]), a tiny share of a full solve.
+        if factor.is_simplicial() {
+            let parts = super::super::eigen::parallel::map(par, chunks.len(), |c| {
+                let mut scratch = factor.form_scratch();
+                chunks[c]
+                    .iter()
+                    .map(|point @ &(direction, x, y)| {
+                        let w = track_weights_at(&self.model, direction, x, y);
+                        let g = factor
+                            .inverse_form(w.as_slice(), &mut scratch)
+                            .expect("a simplicial factor");
+                        g * coupling(point) * coupling(point)
+                    })
+                    .collect::<Vec<f64>>()
+            });
+            return Ok(parts.concat());
+        }
         let parts = super::super::eigen::parallel::map(par, chunks.len(), |c| {
             let chunk = chunks[c];
             let mut workspace = factor.block_workspace(FLEXIBILITY_BLOCK)?;
@@ -296,9 +327,6 @@ impl ImportedShapes {
             }
             let columns = chunk.len();
             factor.solve_block_in_place(block.as_mut().subcols_mut(0, columns), &mut workspace);
-            // A contact couples to the model with its entry weight at a
-            // free rail end ([`super::entry`]), as in [`ImportedFlexibility::green`].
-            let entry = &self.model.entry;
             let mut out = Vec::with_capacity(columns);
             for ((j, w), point) in weights.iter().enumerate().zip(chunk) {
                 let g: f64 = w
@@ -306,12 +334,7 @@ impl ImportedShapes {
                     .iter()
                     .map(|&(dof, weight)| weight * block[(dof, j)])
                     .sum();
-                let coupling = if entry.is_active() {
-                    entry.weight(point.1).0
-                } else {
-                    1.0
-                };
-                out.push(g * coupling * coupling);
+                out.push(g * coupling(point) * coupling(point));
             }
             Ok::<_, BridgeError>(out)
         });

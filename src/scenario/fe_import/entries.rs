@@ -81,8 +81,12 @@ pub(super) fn both_triangles(
     // the same entry, a general file's are two. FE programs write assembled
     // matrices, so a repeated position is an editing or export error; its
     // values are not summed (a repeated 1.0 doubles a stiffness silently).
-    let mut first: HashMap<(usize, usize), usize> = HashMap::with_capacity(file.entries.len());
+    // The entries sorted by position (and file order within one) put the
+    // repeats of a position next to each other; the one reported is the
+    // first in file order that repeats an earlier entry.
     let (mut lower, mut upper) = (None, None);
+    let (mut renumbered_lower, mut renumbered_upper) = (false, false);
+    let mut keys: Vec<((usize, usize), usize)> = Vec::with_capacity(file.entries.len());
     for (e, &(r, c, _)) in file.entries.iter().enumerate() {
         if r > c {
             lower.get_or_insert(e);
@@ -90,44 +94,56 @@ pub(super) fn both_triangles(
             upper.get_or_insert(e);
         }
         let (a, b) = (at(r), at(c));
-        let key = if file.symmetric {
-            (a.min(b), a.max(b))
-        } else {
-            (a, b)
-        };
-        if let Some(&earlier) = first.get(&key) {
-            let (line, _) = place(earlier);
-            let (er, ec, _) = file.entries[earlier];
-            let how = if file.symmetric && (er, ec) != (r, c) {
-                "the file holds one triangle (`symmetric`), each off-diagonal entry once; this \
-                 one is given in both"
-            } else {
-                "an assembled matrix lists each entry once"
-            };
-            return fail_at(
-                source,
-                place(e),
-                format!(
-                    "entry ({}, {}) ({}, {}) repeats entry ({}, {}) of line {line}: {how}. \
-                     Repeated entries are refused rather than summed; remove one",
-                    r + 1,
-                    c + 1,
-                    name(a),
-                    name(b),
-                    er + 1,
-                    ec + 1
-                ),
-            );
-        }
-        first.insert(key, e);
+        renumbered_lower |= a > b;
+        renumbered_upper |= a < b;
+        keys.push(((a, b), e));
     }
-    let mut keys: Vec<((usize, usize), usize)> = file
-        .entries
-        .iter()
-        .enumerate()
-        .map(|(e, &(r, c, _))| ((at(r), at(c)), e))
-        .collect();
     keys.sort_unstable();
+    // A symmetric file with positions on both sides of the diagonal: its
+    // (i, j) and (j, i) meet only once each position is taken as i ≤ j.
+    let normalised: Option<Vec<((usize, usize), usize)>> =
+        (file.symmetric && renumbered_lower && renumbered_upper).then(|| {
+            let mut normalised: Vec<_> = keys
+                .iter()
+                .map(|&((a, b), e)| ((a.min(b), a.max(b)), e))
+                .collect();
+            normalised.sort_unstable();
+            normalised
+        });
+    let repeat = normalised
+        .as_ref()
+        .unwrap_or(&keys)
+        .windows(2)
+        .filter(|pair| pair[0].0 == pair[1].0)
+        .map(|pair| (pair[1].1, pair[0].1))
+        .min();
+    drop(normalised);
+    if let Some((e, earlier)) = repeat {
+        let (r, c, _) = file.entries[e];
+        let (a, b) = (at(r), at(c));
+        let (line, _) = place(earlier);
+        let (er, ec, _) = file.entries[earlier];
+        let how = if file.symmetric && (er, ec) != (r, c) {
+            "the file holds one triangle (`symmetric`), each off-diagonal entry once; this \
+             one is given in both"
+        } else {
+            "an assembled matrix lists each entry once"
+        };
+        return fail_at(
+            source,
+            place(e),
+            format!(
+                "entry ({}, {}) ({}, {}) repeats entry ({}, {}) of line {line}: {how}. \
+                 Repeated entries are refused rather than summed; remove one",
+                r + 1,
+                c + 1,
+                name(a),
+                name(b),
+                er + 1,
+                ec + 1
+            ),
+        );
+    }
     let mut out = Vec::with_capacity(2 * keys.len());
     if file.symmetric {
         if let (Some(l), Some(u)) = (lower, upper) {
@@ -159,9 +175,15 @@ pub(super) fn both_triangles(
         return Ok(out);
     }
     let largest = file.entries.iter().fold(0.0f64, |a, e| a.max(e.2.abs()));
-    for ((r, c), e) in keys {
+    // No position repeats: the entry at a position, by binary search.
+    let first = |position: (usize, usize)| {
+        keys.binary_search_by(|probe| probe.0.cmp(&position))
+            .ok()
+            .map(|k| keys[k].1)
+    };
+    for &((r, c), e) in &keys {
         let v = file.entries[e].2;
-        let mirror = first.get(&(c, r)).copied();
+        let mirror = first((c, r));
         let mirror_value = mirror.map_or(0.0, |m| file.entries[m].2);
         if (v - mirror_value).abs() > SYMMETRY_TOLERANCE * largest {
             let other = match mirror {

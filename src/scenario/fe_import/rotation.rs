@@ -91,14 +91,17 @@ pub fn program_sigma(plane: usize) -> f64 {
 /// the stiffness `k` (both triangles, free DOFs).
 pub fn rail_evidence(k: &[(usize, usize, f64)], rail: &RailDofs, plane: usize) -> Evidence {
     let (u, r) = (&rail.displacement[plane], &rail.rotation[plane]);
-    // The rail's free DOFs, and the entries of K among them.
-    let mut on_rail: HashMap<usize, ()> = HashMap::new();
-    for dof in u.iter().chain(r.iter()).flatten() {
-        on_rail.insert(*dof, ());
+    // The rail's free DOFs (a mask over the DOFs: K has millions of
+    // entries, each looked at twice), and the entries of K among them.
+    let dofs = u.iter().chain(r.iter()).flatten();
+    let mut on_rail = vec![false; dofs.clone().max().map_or(0, |&d| d + 1)];
+    for &dof in dofs {
+        on_rail[dof] = true;
     }
+    let on = |d: usize| on_rail.get(d).copied().unwrap_or(false);
     let mut entries: HashMap<(usize, usize), f64> = HashMap::new();
     for &(a, b, v) in k {
-        if on_rail.contains_key(&a) && on_rail.contains_key(&b) {
+        if on(a) && on(b) {
             *entries.entry((a, b)).or_insert(0.0) += v;
         }
     }
