@@ -15,7 +15,13 @@ use std::path::Path;
 /// (without a circle) and every layer below it. See ARCHITECTURE.md.
 const LAYERS: &[&[&str]] = &[
     // Plumbing that knows no physics and no format.
-    &["advice", "atomic_file", "guarded_file", "text_table"],
+    &[
+        "advice",
+        "atomic_file",
+        "guarded_file",
+        "text_table",
+        "timings",
+    ],
     // The scene description: the resolved, validated, SI scene, plain data.
     &["scene"],
     // The scenario format: YAML → raw types → the resolved scene, and its

@@ -573,3 +573,17 @@ impl ModalBridge {
         (0.0..=self.length).contains(&x)
     }
 }
+
+/// The nodal state u, u̇, ü of an assembled bridge after a step, on its free
+/// DOFs in the order of its assembled K and M (the direct solver's,
+/// `crate::solve::direct::assembled::AssembledBridge`): plain data the
+/// section and reaction readers of this layer take.
+#[derive(Debug, Clone, Copy)]
+pub struct NodalState<'a> {
+    /// u, m (rad).
+    pub displacement: &'a [f64],
+    /// u̇, m/s (rad/s).
+    pub velocity: &'a [f64],
+    /// ü, m/s² (rad/s²), relative to the ground's motion.
+    pub acceleration: &'a [f64],
+}

@@ -223,18 +223,7 @@ fn consistent_modal_forces(
     let third = shape_thirds(h);
     // Quadrature points on [0, s] and [s, h] (the kernel kinks at a = s),
     // with their weights and shape functions, shared by every mode.
-    let mut points: Vec<(f64, f64, [f64; 4])> = Vec::with_capacity(8);
-    for (from, to) in [(0.0, s), (s, h)] {
-        let length = to - from;
-        if length <= 0.0 {
-            continue;
-        }
-        for (g, w) in GAUSS4 {
-            let a = from + g * length;
-            let (n, _) = shape_functions(a / h, h);
-            points.push((a, w * length, n));
-        }
-    }
+    let points = kinked_quadrature(s, h);
     let left_side = xi >= 1.0;
     let kernels: Vec<(f64, f64)> = points
         .iter()
@@ -512,6 +501,21 @@ impl ModalBridge {
 fn clamped_shape_integrals(s: f64, h: f64) -> ([f64; 4], [f64; 4]) {
     let left_side = s >= h;
     let (mut moment, mut shear) = ([0.0; 4], [0.0; 4]);
+    for (a, weight, n) in kinked_quadrature(s, h) {
+        let (gm, gv) = clamped_unit_load(s, a, h, left_side);
+        for k in 0..4 {
+            moment[k] += weight * n[k] * gm;
+            shear[k] += weight * n[k] * gv;
+        }
+    }
+    (moment, shear)
+}
+
+/// Four-point Gauss on [0, s] and on [s, h] of an element of length `h`
+/// (m), the section at `s` where a clamped element's kernel kinks: each
+/// point's position a (m), weight (m) and Hermite shape functions N(a).
+fn kinked_quadrature(s: f64, h: f64) -> Vec<(f64, f64, [f64; 4])> {
+    let mut points = Vec::with_capacity(8);
     for (from, to) in [(0.0, s), (s, h)] {
         let length = to - from;
         if length <= 0.0 {
@@ -520,14 +524,10 @@ fn clamped_shape_integrals(s: f64, h: f64) -> ([f64; 4], [f64; 4]) {
         for (g, w) in GAUSS4 {
             let a = from + g * length;
             let (n, _) = shape_functions(a / h, h);
-            let (gm, gv) = clamped_unit_load(s, a, h, left_side);
-            for k in 0..4 {
-                moment[k] += w * length * n[k] * gm;
-                shear[k] += w * length * n[k] * gv;
-            }
+            points.push((a, w * length, n));
         }
     }
-    (moment, shear)
+    points
 }
 
 impl NodalSection {
@@ -539,7 +539,7 @@ impl NodalSection {
     pub fn forces(
         &self,
         section: &SectionProbe,
-        state: &crate::solve::NodalState<'_>,
+        state: &crate::bridge::NodalState<'_>,
         positions: &[f64],
         forces: &[f64],
         on_deck: &[usize],
@@ -595,7 +595,7 @@ impl ReactionProbe {
     pub fn nodal_reaction(
         &self,
         nodal: &[NodalSection],
-        state: &crate::solve::NodalState<'_>,
+        state: &crate::bridge::NodalState<'_>,
         positions: &[f64],
         forces: &[f64],
         on_deck: &[usize],

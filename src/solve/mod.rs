@@ -157,18 +157,7 @@ pub struct StepView<'a> {
     pub nodal: Option<NodalState<'a>>,
 }
 
-/// The nodal state u, u̇, ü of an assembled bridge after a step, on its free
-/// DOFs in the order of its assembled K and M
-/// ([`direct::assembled::AssembledBridge`]).
-#[derive(Debug, Clone, Copy)]
-pub struct NodalState<'a> {
-    /// u, m (rad).
-    pub displacement: &'a [f64],
-    /// u̇, m/s (rad/s).
-    pub velocity: &'a [f64],
-    /// ü, m/s² (rad/s²), relative to the ground's motion.
-    pub acceleration: &'a [f64],
-}
+pub use crate::bridge::NodalState;
 
 impl<'a> StepView<'a> {
     /// The view of a state: modal coordinates from `modal`, the rest as given.

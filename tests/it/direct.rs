@@ -409,16 +409,46 @@ fn direct_bridge_records_are_exact_in_space_at_the_kept_modes() {
     assert!(error > 1e-6, "{error:e}");
 }
 
+/// The wheels' forces on the 25 m beam's nodes (node positions `node_x`,
+/// m): −F·N(x) on (w, θ) of the element under each wheel on the deck,
+/// added to `load` (N, N·m, downward forces); returns the forces carried
+/// by the deck, N.
+fn wheel_loads(direct: &Direct<'_>, node_x: &[f64], load: &mut [f64]) -> f64 {
+    let mut carried = 0.0;
+    for (&x, &force) in direct.wheel_positions().iter().zip(direct.contact_forces()) {
+        if !(0.0..=25.0).contains(&x) {
+            continue;
+        }
+        carried += force;
+        let e = node_x
+            .partition_point(|&n| n <= x)
+            .clamp(1, node_x.len() - 1)
+            - 1;
+        let h = node_x[e + 1] - node_x[e];
+        let (n, _) = shape_functions(((x - node_x[e]) / h).clamp(0.0, 1.0), h);
+        for (j, nj) in n.iter().enumerate() {
+            load[2 * e + j] -= force * nj;
+        }
+    }
+    carried
+}
+
 /// `vbi generate viaduct` of one 5 m span on 2 m piers, 1 m approaches,
 /// one rail element per sleeper bay, into `via/` of `scratch` (300 DOFs).
 fn generate_small_viaduct(scratch: &crate::support::Scratch) {
+    generate_viaduct(scratch, "1", "5");
+}
+
+/// `vbi generate viaduct` of `spans` spans of `span_length` m on 2 m piers
+/// (1 m approaches, one rail division, two pier elements) into `via/`.
+fn generate_viaduct(scratch: &crate::support::Scratch, spans: &str, span_length: &str) {
     let args = [
         "generate",
         "viaduct",
         "--spans",
-        "1",
+        spans,
         "--span-length",
-        "5",
+        span_length,
         "--pier-height",
         "2",
         "--approach-length",
@@ -559,20 +589,7 @@ fn direct_reactions_are_the_support_rows_of_the_equations_of_motion() {
         symmetric_product(&m, &a, &mut ma);
         symmetric_product(&m, &v, &mut mv);
         let mut load = vec![0.0; dofs];
-        for (&x, &force) in direct.wheel_positions().iter().zip(direct.contact_forces()) {
-            if !(0.0..=25.0).contains(&x) {
-                continue;
-            }
-            let e = node_x
-                .partition_point(|&n| n <= x)
-                .clamp(1, node_x.len() - 1)
-                - 1;
-            let h = node_x[e + 1] - node_x[e];
-            let (n, _) = shape_functions(((x - node_x[e]) / h).clamp(0.0, 1.0), h);
-            for (j, nj) in n.iter().enumerate() {
-                load[2 * e + j] -= force * nj;
-            }
-        }
+        wheel_loads(&direct, &node_x, &mut load);
         let row = |d: usize| ma[d] + c_m * mv[d] + c_k * kv[d] + ku[d] - load[d];
         rows.push(support_rows.iter().map(|&d| row(d)).collect());
     }
@@ -866,22 +883,7 @@ fn direct_reactions_carry_the_contact_forces_and_the_inertia() {
         symmetric_product(&m, &a, &mut ma);
         symmetric_product(&m, &v, &mut mv);
         let mut load = vec![0.0; dofs];
-        let mut carried = 0.0;
-        for (&x, &force) in direct.wheel_positions().iter().zip(direct.contact_forces()) {
-            if !(0.0..=25.0).contains(&x) {
-                continue;
-            }
-            carried += force;
-            let e = node_x
-                .partition_point(|&n| n <= x)
-                .clamp(1, node_x.len() - 1)
-                - 1;
-            let h = node_x[e + 1] - node_x[e];
-            let (n, _) = shape_functions(((x - node_x[e]) / h).clamp(0.0, 1.0), h);
-            for (j, nj) in n.iter().enumerate() {
-                load[2 * e + j] -= force * nj;
-            }
-        }
+        let carried = wheel_loads(&direct, &node_x, &mut load);
         let row = |d: usize| ma[d] + c_m * mv[d] + c_k * kv[d] + ku[d] - load[d];
         let reactions: f64 = (0..dofs)
             .filter(|&d| beam.free_index[d].is_none())
@@ -1184,25 +1186,7 @@ fn method_direct_follows_the_ground_motion() {
 #[test]
 fn a_banded_contact_flexibility_keeps_direct_exact() {
     let scratch = crate::support::Scratch::new("direct", "banded");
-    let args = [
-        "generate",
-        "viaduct",
-        "--spans",
-        "16",
-        "--span-length",
-        "3",
-        "--pier-height",
-        "2",
-        "--approach-length",
-        "1",
-        "--rail-divisions",
-        "1",
-        "--pier-elements",
-        "2",
-        "--out",
-        "via",
-    ];
-    crate::support::assert_exit(&crate::support::vbi(&args, scratch.dir()), 0);
+    generate_viaduct(&scratch, "16", "3");
     let scene = |method: &str, vehicles: &str, records: &str| {
         format!(
             "name: banded-{method}\n\
