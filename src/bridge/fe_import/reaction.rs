@@ -113,7 +113,11 @@ impl SupportReaction {
     /// ([`crate::bridge::section::NodalSection`]). Without the loads
     /// standing on the DOF ([`Self::direct_load`]) and the row's own
     /// inertia under ground motion (`plain_ground`). Cost O(row entries).
-    pub fn nodal_reaction(&self, state: &crate::bridge::NodalState<'_>, damping: (f64, f64)) -> f64 {
+    pub fn nodal_reaction(
+        &self,
+        state: &crate::bridge::NodalState<'_>,
+        damping: (f64, f64),
+    ) -> f64 {
         let (c_m, c_k) = damping;
         let elastic: f64 = self
             .stiffness_row
