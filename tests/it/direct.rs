@@ -425,7 +425,8 @@ fn wheel_loads(direct: &Direct<'_>, node_x: &[f64], load: &mut [f64]) -> f64 {
             .clamp(1, node_x.len() - 1)
             - 1;
         let h = node_x[e + 1] - node_x[e];
-        let (n, _) = shape_functions(((x - node_x[e]) / h).clamp(0.0, 1.0), h);
+        let (n, _) =
+            vbi::bridge::hermite::shape_functions(((x - node_x[e]) / h).clamp(0.0, 1.0), h);
         for (j, nj) in n.iter().enumerate() {
             load[2 * e + j] -= force * nj;
         }
@@ -537,7 +538,6 @@ fn direct_section_forces_and_reactions_read_the_nodal_state() {
 /// [`direct_reactions_carry_the_contact_forces_and_the_inertia`].
 #[test]
 fn direct_reactions_are_the_support_rows_of_the_equations_of_motion() {
-    use vbi::bridge::hermite::shape_functions;
     let yaml = "name: direct-reactions\n\
          bridge:\n  type: beam\n  spans: [15.0, 10.0]\n  bending_stiffness: 8.323e9\n  \
          mass_per_length: 2303.0\n  elements_per_span: [15, 10]\n  modes: {count: 4}\n  \
@@ -845,7 +845,6 @@ fn symmetric_product(lower: &[(usize, usize, f64)], x: &[f64], y: &mut [f64]) {
 /// 2.6e-7 N of 1.82e5 N).
 #[test]
 fn direct_reactions_carry_the_contact_forces_and_the_inertia() {
-    use vbi::bridge::hermite::shape_functions;
     let model = scene_with(
         "{type: h20_44, speed: 20.0}",
         "{type: rayleigh, frequencies: [4.0, 60.0], ratio: 0.02}",
